@@ -1,0 +1,13 @@
+#pragma once
+#include <string>
+
+namespace cube::paths {
+
+/// The project root that holds shaders/, data/ and reactions/. Defaults to the source tree the
+/// binary was built from; the CUBE_ROOT environment variable overrides it (installed copies).
+std::string root();
+std::string shaders();    ///< root()/shaders, or CUBE_SHADER_DIR
+std::string data();       ///< root()/data
+std::string reactions();  ///< root()/reactions
+
+}  // namespace cube::paths

@@ -1,0 +1,65 @@
+#pragma once
+// A GL 3.3 core context plus, for windows, a surface and input. Three backends: OSMesa (headless,
+// the default: runs anywhere, llvmpipe), EGL surfaceless (headless on a real GPU) and GLFW (window).
+// The engine never draws to the default framebuffer directly: it renders into render targets and
+// presents by blitting (see rtt/), so a surfaceless context works the same as a window.
+#include <memory>
+#include <string>
+
+namespace cube {
+
+enum class Backend { OSMesa, EGL, GLFW };
+
+const char* backendName(Backend backend);
+/// Parses "osmesa" | "egl" | "glfw"; false on anything else.
+bool parseBackend(const std::string& text, Backend* out);
+
+/// Defaults: OSMesa, 1280x1024, hidden, debug context on.
+struct PlatformDesc {
+    Backend backend = Backend::OSMesa;
+    int width = 1280;
+    int height = 1024;
+    bool debugContext = true;
+    std::string title = "cube_game";
+};
+
+/// Keys the game reacts to in a window (prepass-EQUAL, quarter-res, mode switches...).
+enum class Key { P, Q, M, H, S, B, Escape, Count };
+
+class Platform {
+public:
+    /// Makes a context and loads GL. On failure returns null and says why in `error`
+    /// (no crash, no exit: the caller decides).
+    static std::unique_ptr<Platform> create(const PlatformDesc& desc, std::string* error);
+    virtual ~Platform() = default;
+
+    virtual Backend backend() const = 0;
+    /// Current framebuffer size; a minimised window reports 0x0.
+    virtual int width() const = 0;
+    virtual int height() const = 0;
+    /// Shows the default framebuffer (swap for windows; nothing headless).
+    virtual void present() = 0;
+    /// Pumps window events; false once the window was asked to close.
+    virtual bool pollEvents() = 0;
+    /// True once per press of `key` since the last poll (edge, not level).
+    virtual bool keyPressed(Key key) = 0;
+    /// Headless backends resize their default surface on request; windows follow the user.
+    virtual void resize(int width, int height) = 0;
+    /// GL_RENDERER string, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
+    virtual std::string rendererName() const = 0;
+    /// True when the driver renders in software (llvmpipe, softpipe, swrast): GPU timer
+    /// queries are then meaningless and timing uses a CPU clock around glFinish.
+    bool softwareRenderer() const;
+};
+
+// Backend factories, one translation unit each (GL/osmesa.h, EGL and glad must not meet).
+std::unique_ptr<Platform> createOSMesaPlatform(const PlatformDesc& desc, std::string* error);
+std::unique_ptr<Platform> createEGLPlatform(const PlatformDesc& desc, std::string* error);
+std::unique_ptr<Platform> createGLFWPlatform(const PlatformDesc& desc, std::string* error);
+
+/// Loads GL entry points through `getProc` (glad), checks for 3.3 core and hooks up KHR_debug.
+/// Defined in gl/GlLoader.cpp, the only engine file besides gl/ users that sees glad's gl.h.
+using GetProcFn = void* (*)(const char* name);
+bool loadGL(GetProcFn getProc, std::string* error);
+
+}  // namespace cube

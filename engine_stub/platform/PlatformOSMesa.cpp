@@ -1,0 +1,80 @@
+// OSMesa headless context. This file sees GL/osmesa.h (and through it the system GL/gl.h), so
+// it must never include glad; GL calls go through loadGL's function pointers elsewhere.
+#include <GL/osmesa.h>
+
+#include <vector>
+
+#include "platform/Platform.h"
+
+namespace cube {
+
+std::string glRendererString();  // gl/GlLoader.cpp
+
+namespace {
+
+class OSMesaPlatform final : public Platform {
+public:
+    ~OSMesaPlatform() override {
+        if (ctx_) {
+            OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0);
+            OSMesaDestroyContext(ctx_);
+        }
+    }
+
+    bool init(const PlatformDesc& desc, std::string* error) {
+        const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA,
+                               OSMESA_DEPTH_BITS, 24,
+                               OSMESA_STENCIL_BITS, 8,
+                               OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                               OSMESA_CONTEXT_MAJOR_VERSION, 3,
+                               OSMESA_CONTEXT_MINOR_VERSION, 3,
+                               0};
+        ctx_ = OSMesaCreateContextAttribs(attribs, nullptr);
+        if (!ctx_) {
+            *error = "OSMesa: could not create a 3.3 core context (is libosmesa6 installed?)";
+            return false;
+        }
+        if (!makeCurrent(desc.width, desc.height)) {
+            *error = "OSMesa: OSMesaMakeCurrent failed";
+            return false;
+        }
+        if (!loadGL(reinterpret_cast<GetProcFn>(&OSMesaGetProcAddress), error)) return false;
+        renderer_ = glRendererString();
+        return true;
+    }
+
+    Backend backend() const override { return Backend::OSMesa; }
+    int width() const override { return width_; }
+    int height() const override { return height_; }
+    void present() override {}
+    bool pollEvents() override { return true; }
+    bool keyPressed(Key) override { return false; }
+    void resize(int w, int h) override { makeCurrent(w, h); }
+    std::string rendererName() const override { return renderer_; }
+
+private:
+    // OSMesa needs a client colour buffer even though the engine renders into FBOs; a 0x0
+    // request (a "minimised" headless view) keeps a 1x1 buffer and reports 0x0.
+    bool makeCurrent(int w, int h) {
+        width_ = w;
+        height_ = h;
+        const int bw = w > 0 ? w : 1, bh = h > 0 ? h : 1;
+        buffer_.assign(size_t(bw) * size_t(bh) * 4u, 0);
+        return OSMesaMakeCurrent(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, bw, bh) == GL_TRUE;
+    }
+
+    OSMesaContext ctx_ = nullptr;
+    std::vector<unsigned char> buffer_;
+    int width_ = 0, height_ = 0;
+    std::string renderer_;
+};
+
+}  // namespace
+
+std::unique_ptr<Platform> createOSMesaPlatform(const PlatformDesc& desc, std::string* error) {
+    auto p = std::make_unique<OSMesaPlatform>();
+    if (!p->init(desc, error)) return nullptr;
+    return p;
+}
+
+}  // namespace cube
