@@ -1,11 +1,78 @@
+// cube_game: the stand-in racing game. Runs the scripted drive headless (OSMesa) by default,
+// in a window with --window, or on a GPU with --backend egl. See --help.
+#include <chrono>
 #include <cstdio>
-#include "platform/Platform.h"
+#include <string>
+
+#include "game/Game.h"
 #include "gl/Gl.h"
-int main() {
-    std::string err;
-    cube::PlatformDesc d;
-    auto p = cube::Platform::create(d, &err);
-    if (!p) { std::fprintf(stderr, "%s\n", err.c_str()); return 1; }
-    std::printf("%s soft=%d\n", p->rendererName().c_str(), int(p->softwareRenderer()));
-    return 0;
+#include "gl/Image.h"
+
+int main(int argc, char** argv) {
+    cube::Options options;
+    std::string error;
+    if (!cube::parseOptions(argc, argv, &options, &error)) {
+        std::fprintf(stderr, "cube_game: %s\n%s", error.c_str(), cube::usage().c_str());
+        return 2;
+    }
+    if (options.help) {
+        std::printf("%s", cube::usage().c_str());
+        return 0;
+    }
+    cube::Game game;
+    if (!game.Init(options, &error)) {
+        std::fprintf(stderr, "cube_game: %s\n", error.c_str());
+        return 1;
+    }
+    std::printf("cube_game: %s on %s, %dx%d, fx %s\n", cube::backendName(game.platform().backend()),
+                game.platform().rendererName().c_str(), options.width, options.height,
+                options.fx == cube::FxPath::Legacy ? "legacy" : "plugin");
+
+    auto last = std::chrono::steady_clock::now();
+    int status = 0;
+    for (long long f = 0; options.frames == 0 || f < options.frames; ++f) {
+        if (!game.platform().pollEvents()) break;
+        float dt = float(options.fixedDt);
+        if (options.fixedDt <= 0.0) {
+            const auto now = std::chrono::steady_clock::now();
+            dt = f == 0 ? 1.0f / 60.0f : std::chrono::duration<float>(now - last).count();
+            last = now;
+        }
+        const bool lastFrame = options.frames > 0 && f + 1 == options.frames;
+        const bool every = options.screenshotEvery > 0 && (f + 1) % options.screenshotEvery == 0;
+        if ((lastFrame && !options.screenshot.empty()) || every) game.captureNextFrame();
+        game.Dyn(dt);
+        if (every) {
+            char name[64];
+            std::snprintf(name, sizeof name, "/frame_%06lld.png", f + 1);
+            if (!cube::writePng(options.screenshotDir + name, game.lastFrame(), &error)) {
+                std::fprintf(stderr, "cube_game: %s\n", error.c_str());
+                status = 1;
+                break;
+            }
+        }
+    }
+    if (!options.screenshot.empty() && status == 0) {
+        if (!cube::writePng(options.screenshot, game.lastFrame(), &error)) {
+            std::fprintf(stderr, "cube_game: %s\n", error.c_str());
+            status = 1;
+        } else {
+            std::printf("cube_game: wrote %s\n", options.screenshot.c_str());
+        }
+    }
+    if (!options.statsJson.empty()) {
+        if (!game.writeStatsJson(options.statsJson, &error)) {
+            std::fprintf(stderr, "cube_game: %s\n", error.c_str());
+            status = 1;
+        } else {
+            std::printf("cube_game: wrote %s\n", options.statsJson.c_str());
+        }
+    }
+    if (cube::gl::errorCount() > 0) {
+        std::fprintf(stderr, "cube_game: %d GL error(s), last: %s\n", cube::gl::errorCount(),
+                     cube::gl::lastError().c_str());
+        status = status ? status : 3;
+    }
+    std::printf("cube_game: %lld frames, %d particles alive\n", game.frame(), game.specialFX().particlesAlive());
+    return status;
 }

@@ -1,0 +1,168 @@
+#include "game/Game.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "game/Trace.h"
+#include "gl/Paths.h"
+#include "scene/SceneLoader.h"
+
+namespace cube {
+
+Game::Game() = default;
+Game::~Game() {
+    // GL objects of the plugin and the pool go before the context.
+    graph_.reset();
+    pool_.reset();
+}
+
+bool Game::Init(const Options& options, std::string* error, std::unique_ptr<Platform> platform) {
+    Trace::call("Game::Init");
+    options_ = options;
+    platform_ = std::move(platform);
+    if (!platform_) {
+        PlatformDesc pd;
+        pd.backend = options_.backend;
+        pd.width = options_.width;
+        pd.height = options_.height;
+        platform_ = Platform::create(pd, error);
+        if (!platform_) return false;
+    }
+    // CUBE may run InitProc on a loader thread; this stand-in runs it inline.
+    return InitProc(error);
+}
+
+bool Game::InitProc(std::string* error) {
+    Trace::call("Game::InitProc");
+    const std::string scenePath = options_.scene.empty() ? paths::data() + "/race.gltf" : options_.scene;
+    SceneError sceneError;
+    if (!loadScene(scenePath, &sceneData_, &sceneError)) {
+        *error = sceneError.str();
+        return false;
+    }
+    if (!vehicle_.init(sceneData_, error)) {
+        *error = scenePath + ": " + *error;
+        return false;
+    }
+    if (!scene_.Init(sceneData_, error)) return false;
+    pool_ = std::make_unique<rtt::RenderTargetPool>();
+    graph_ = std::make_unique<rtt::FrameGraph>(*pool_, platform_->softwareRenderer());
+    time_ = options_.startTime;
+    vehicle_.update(sceneData_, time_);
+    cameraHeading_ = vehicle_.pose().heading;
+    updateCameras(0.0f);
+    fxHost_ = std::make_unique<EngineFxHost>(&vehicle_);
+    if (!specialFX_.Init(options_, scene_, fxHost_.get(), error)) return false;
+    return true;
+}
+
+void Game::updateCameras(float dt) {
+    constexpr float kPi = 3.14159265358979f;
+    const DrivePose& pose = vehicle_.pose();
+    // The chase camera's heading follows the car's with a lag (exact exponential smoothing, the
+    // same for any dt), taking the short way round.
+    const float diff = std::remainder(pose.heading - cameraHeading_, 2.0f * kPi);
+    cameraHeading_ += diff * (1.0f - std::exp(-2.5f * dt));
+    const glm::vec3 fwd(std::cos(cameraHeading_), 0.0f, -std::sin(cameraHeading_));
+    ViewCamera& c = chase_.camera();
+    c.eye = pose.position - 7.5f * fwd + glm::vec3(0.0f, 2.6f, 0.0f);
+    c.target = pose.position + 2.0f * fwd + glm::vec3(0.0f, 0.6f, 0.0f);
+    c.fovY = glm::radians(55.0f);
+    c.nearPlane = options_.nearPlane;
+    c.farPlane = options_.farPlane;
+
+    // Rear-view mirror: from the roof, looking back along the car.
+    const glm::vec3 carFwd(std::cos(pose.heading), 0.0f, -std::sin(pose.heading));
+    ViewCamera& m = mirror_.camera();
+    m.eye = pose.position + glm::vec3(0.0f, 1.45f, 0.0f) - 0.6f * carFwd;
+    m.target = m.eye - 10.0f * carFwd - glm::vec3(0.0f, 1.2f, 0.0f);
+    m.fovY = glm::radians(30.0f);
+    m.nearPlane = 0.1f;
+    m.farPlane = 500.0f;
+}
+
+void Game::Dyn(float dt) {
+    Trace::call("Game::Dyn");
+    const auto start = std::chrono::steady_clock::now();
+    if (!std::isfinite(dt) || dt < 0.0f) dt = 0.0f;
+    dt = std::min(dt, 10.0f);
+    if (options_.watch) specialFX_.pollHotReload(scene_);
+    // Update sequence.
+    time_ += dt;
+    vehicle_.update(sceneData_, time_);
+    updateCameras(dt);
+    specialFX_.Dyn(dt, vehicle_);
+    // Render sequence.
+    render_.Dyn(*this);
+    glFinish();
+    ++frame_;
+    frameMs_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+}
+
+namespace {
+std::string jsonString(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) < 0x20) continue;
+        out += c;
+    }
+    return out + "\"";
+}
+}  // namespace
+
+bool Game::writeStatsJson(const std::string& path, std::string* error) const {
+    std::vector<double> sorted = frameMs_;
+    std::sort(sorted.begin(), sorted.end());
+    const double median = sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
+    const rtt::RenderTargetPoolStats ps = pool_ ? pool_->stats() : rtt::RenderTargetPoolStats{};
+    const rtt::FrameGraphReport& r = graph_->report();
+    std::ofstream out(path);
+    if (!out) {
+        *error = path + ": cannot write stats (folder missing or not writable?)";
+        return false;
+    }
+    auto list = [&](const std::vector<std::string>& v) {
+        std::string s = "[";
+        for (size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + jsonString(v[i]);
+        return s + "]";
+    };
+    auto counts = [&](const std::map<std::string, int>& m) {
+        std::string s = "{";
+        bool first = true;
+        for (const auto& kv : m) {
+            s += (first ? "" : ", ") + jsonString(kv.first) + ": " + std::to_string(kv.second);
+            first = false;
+        }
+        return s + "}";
+    };
+    const fx::Stats fs = specialFX_.plugin() ? specialFX_.plugin()->stats() : fx::Stats{};
+    char median_s[64];
+    std::snprintf(median_s, sizeof median_s, "%.4f", median);
+    out << "{\n"
+        << "  \"frames\": " << frame_ << ",\n"
+        << "  \"renderer\": " << jsonString(platform_ ? platform_->rendererName() : "") << ",\n"
+        << "  \"backend\": " << jsonString(platform_ ? backendName(platform_->backend()) : "") << ",\n"
+        << "  \"fx\": " << jsonString(specialFX_.path() == FxPath::Legacy ? "legacy" : "plugin") << ",\n"
+        << "  \"reactions\": " << specialFX_.reactionCount() << ",\n"
+        << "  \"particles_alive\": " << specialFX_.particlesAlive() << ",\n"
+        << "  \"particles_drawn\": " << fs.particlesDrawn << ",\n"
+        << "  \"reloads\": " << fs.reloads << ",\n"
+        << "  \"reload_errors\": " << fs.reloadErrors << ",\n"
+        << "  \"passes_run\": " << list(r.executed) << ",\n"
+        << "  \"passes_culled\": " << list(r.culled) << ",\n"
+        << "  \"pass_run_frames\": " << counts(passRuns_) << ",\n"
+        << "  \"pass_culled_frames\": " << counts(passCulls_) << ",\n"
+        << "  \"render_targets_allocated\": " << ps.totalAllocations << ",\n"
+        << "  \"render_targets_live\": " << r.targetsLive << ",\n"
+        << "  \"render_targets_last_frame\": " << r.targetsAcquired << ",\n"
+        << "  \"timing_method\": " << jsonString(r.timingMethod) << ",\n"
+        << "  \"frame_ms_median\": " << median_s << "\n"
+        << "}\n";
+    return bool(out);
+}
+
+}  // namespace cube

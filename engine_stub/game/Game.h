@@ -1,0 +1,83 @@
+#pragma once
+// The stand-in game (CUBE's Game): Init -> InitProc builds every component; Dyn runs one frame
+// (the update sequence through SpecialFX::Dyn, then the render sequence through Render::Dyn).
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "game/EngineFxHost.h"
+#include "game/Options.h"
+#include "game/Render.h"
+#include "game/SpecialFX.h"
+#include "game/Vehicle.h"
+#include "gl/Image.h"
+#include "platform/Platform.h"
+#include "rtt/FrameGraph.h"
+#include "rtt/RenderTargetPool.h"
+#include "scene/cubeScene.h"
+#include "scene/cubeView.h"
+
+namespace cube {
+
+class Game {
+public:
+    Game();
+    ~Game();
+
+    /// Makes the context (unless `platform` is given), loads the scene and reactions.
+    /// False + a message naming the file / flag and what was expected.
+    bool Init(const Options& options, std::string* error, std::unique_ptr<Platform> platform = nullptr);
+    /// One frame: update by `dt` seconds of game time, then render. dt is clamped to [0, 10].
+    void Dyn(float dt);
+
+    /// Asks for a read-back of the next rendered frame (lastFrame()).
+    void captureNextFrame() { captureNext_ = true; }
+    const ImageRGBA8& lastFrame() const { return lastFrame_; }
+    bool writeStatsJson(const std::string& path, std::string* error) const;
+
+    Options& options() { return options_; }
+    const Options& options() const { return options_; }
+    Platform& platform() { return *platform_; }
+    SpecialFX& specialFX() { return specialFX_; }
+    cubeScene& scene() { return scene_; }
+    Vehicle& vehicle() { return vehicle_; }
+    rtt::RenderTargetPool& pool() { return *pool_; }
+    rtt::FrameGraph& graph() { return *graph_; }
+    cubeView& chaseView() { return chase_; }
+    cubeView& mirrorView() { return mirror_; }
+    double time() const { return time_; }
+    long long frame() const { return frame_; }
+    /// Frame wall times in ms (CPU clock including glFinish), one per rendered frame.
+    const std::vector<double>& frameMs() const { return frameMs_; }
+    /// How many frames each pass ran / was culled in.
+    const std::map<std::string, int>& passRuns() const { return passRuns_; }
+    const std::map<std::string, int>& passCulls() const { return passCulls_; }
+
+private:
+    friend class Render;
+    bool InitProc(std::string* error);
+    void updateCameras(float dt);
+
+    Options options_;
+    std::unique_ptr<Platform> platform_;
+    SceneData sceneData_;
+    cubeScene scene_;
+    Vehicle vehicle_;
+    std::unique_ptr<EngineFxHost> fxHost_;
+    SpecialFX specialFX_;
+    std::unique_ptr<rtt::RenderTargetPool> pool_;
+    std::unique_ptr<rtt::FrameGraph> graph_;
+    Render render_;
+    cubeView mirror_{"mirror", 0};
+    cubeView chase_{"chase", 1};
+    double time_ = 0.0;
+    long long frame_ = 0;
+    float cameraHeading_ = 0.0f;
+    bool captureNext_ = false;
+    ImageRGBA8 lastFrame_;
+    std::vector<double> frameMs_;
+    std::map<std::string, int> passRuns_, passCulls_;
+};
+
+}  // namespace cube

@@ -1,0 +1,207 @@
+#include "game/Options.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace cube {
+
+namespace {
+
+bool parseInt(const std::string& s, long long lo, long long hi, long long* out) {
+    if (s.empty()) return false;
+    errno = 0;
+    char* end = nullptr;
+    long long v = std::strtoll(s.c_str(), &end, 10);
+    if (errno != 0 || *end != '\0' || v < lo || v > hi) return false;
+    *out = v;
+    return true;
+}
+
+bool parseDouble(const std::string& s, double lo, double hi, double* out) {
+    if (s.empty()) return false;
+    errno = 0;
+    char* end = nullptr;
+    double v = std::strtod(s.c_str(), &end);
+    if (errno != 0 || *end != '\0' || !std::isfinite(v) || v < lo || v > hi) return false;
+    *out = v;
+    return true;
+}
+
+bool parseSize(const std::string& s, int* w, int* h) {
+    size_t x = s.find('x');
+    if (x == std::string::npos) return false;
+    long long a = 0, b = 0;
+    if (!parseInt(s.substr(0, x), 1, 16384, &a) || !parseInt(s.substr(x + 1), 1, 16384, &b)) return false;
+    *w = int(a);
+    *h = int(b);
+    return true;
+}
+
+}  // namespace
+
+std::string usage() {
+    return
+        "usage: cube_game [options]\n"
+        "  --help                 this text\n"
+        "  --frames N             frames to run (default 300; 0 = until the window closes)\n"
+        "  --size WxH             view size, 1..16384 each (default 1280x1024)\n"
+        "  --fixed-dt S           fixed time step in seconds, 0..10 (default: wall clock)\n"
+        "  --start S              seconds into the scripted drive at frame 0 (default 0)\n"
+        "  --seed N               random seed, 0..4294967295 (default 1)\n"
+        "  --screenshot PATH      PNG of the last frame\n"
+        "  --screenshot-every K DIR  PNG every K frames into DIR\n"
+        "  --scene PATH           glTF scene (default data/race.gltf)\n"
+        "  --reactions PATH       reaction .yaml file or folder (default reactions/)\n"
+        "  --legacy-reactions PATH  legacy smoke data file (default data/legacy_smoke.yaml)\n"
+        "  --fx legacy|plugin     old hard sprites or the plugin (default plugin)\n"
+        "  --mode hard|soft|spherical|reaction  technique override (default: each reaction's)\n"
+        "  --prepass-equal        opaque pass reuses the prepass z-buffer with depth test EQUAL\n"
+        "  --quarter-res          particles into a half x half target, depth-aware composite\n"
+        "  --bilinear-upsample    quarter-res with plain bilinear upsampling (comparison)\n"
+        "  --watch                reload changed reaction files while running\n"
+        "  --window               open a window (same as --backend glfw)\n"
+        "  --backend osmesa|egl|glfw  context backend (default osmesa)\n"
+        "  --near N --far F       chase camera clip planes (default 0.1, 2000)\n"
+        "  --no-mirror            leave out the rear-view mirror view\n"
+        "  --no-hud               leave out the HUD\n"
+        "  --stats-json PATH      write frame statistics at exit\n"
+        "Window keys: P prepass-EQUAL, Q quarter-res, M technique, B bilinear, Esc quit.\n";
+}
+
+bool parseOptions(int argc, const char* const* argv, Options* out, std::string* error) {
+    Options o;
+    auto need = [&](int& i, int count, const std::string& flag) -> bool {
+        if (i + count >= argc) {
+            *error = flag + ": missing value";
+            return false;
+        }
+        return true;
+    };
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        long long n = 0;
+        double d = 0.0;
+        if (a == "--help" || a == "-h") {
+            o.help = true;
+        } else if (a == "--frames") {
+            if (!need(i, 1, a)) return false;
+            if (!parseInt(argv[++i], 0, 100000000, &n)) {
+                *error = "--frames: expected a whole number 0..100000000, got '" + std::string(argv[i]) + "'";
+                return false;
+            }
+            o.frames = int(n);
+        } else if (a == "--size") {
+            if (!need(i, 1, a)) return false;
+            if (!parseSize(argv[++i], &o.width, &o.height)) {
+                *error = "--size: expected WxH with each 1..16384, got '" + std::string(argv[i]) + "'";
+                return false;
+            }
+        } else if (a == "--fixed-dt") {
+            if (!need(i, 1, a)) return false;
+            if (!parseDouble(argv[++i], 0.0, 10.0, &d)) {
+                *error = "--fixed-dt: expected seconds in 0..10, got '" + std::string(argv[i]) + "'";
+                return false;
+            }
+            o.fixedDt = d;
+        } else if (a == "--start") {
+            if (!need(i, 1, a)) return false;
+            if (!parseDouble(argv[++i], 0.0, 1e6, &d)) {
+                *error = "--start: expected seconds in 0..1e6, got '" + std::string(argv[i]) + "'";
+                return false;
+            }
+            o.startTime = d;
+        } else if (a == "--seed") {
+            if (!need(i, 1, a)) return false;
+            if (!parseInt(argv[++i], 0, 4294967295LL, &n)) {
+                *error = "--seed: expected a whole number 0..4294967295, got '" + std::string(argv[i]) + "'";
+                return false;
+            }
+            o.seed = unsigned(n);
+        } else if (a == "--screenshot") {
+            if (!need(i, 1, a)) return false;
+            o.screenshot = argv[++i];
+        } else if (a == "--screenshot-every") {
+            if (!need(i, 2, a)) return false;
+            if (!parseInt(argv[++i], 1, 100000000, &n)) {
+                *error = "--screenshot-every: expected K >= 1, got '" + std::string(argv[i]) + "'";
+                return false;
+            }
+            o.screenshotEvery = int(n);
+            o.screenshotDir = argv[++i];
+        } else if (a == "--scene") {
+            if (!need(i, 1, a)) return false;
+            o.scene = argv[++i];
+        } else if (a == "--reactions") {
+            if (!need(i, 1, a)) return false;
+            o.reactions = argv[++i];
+        } else if (a == "--legacy-reactions") {
+            if (!need(i, 1, a)) return false;
+            o.legacyReactions = argv[++i];
+        } else if (a == "--fx") {
+            if (!need(i, 1, a)) return false;
+            std::string v = argv[++i];
+            if (v == "legacy") o.fx = FxPath::Legacy;
+            else if (v == "plugin") o.fx = FxPath::Plugin;
+            else {
+                *error = "--fx: expected legacy or plugin, got '" + v + "'";
+                return false;
+            }
+        } else if (a == "--mode") {
+            if (!need(i, 1, a)) return false;
+            std::string v = argv[++i];
+            if (v != "hard" && v != "soft" && v != "spherical" && v != "reaction") {
+                *error = "--mode: expected hard, soft, spherical or reaction, got '" + v + "'";
+                return false;
+            }
+            o.mode = v;
+        } else if (a == "--prepass-equal") {
+            o.prepassEqual = true;
+        } else if (a == "--quarter-res") {
+            o.quarterRes = true;
+        } else if (a == "--bilinear-upsample") {
+            o.bilinearUpsample = true;
+        } else if (a == "--watch") {
+            o.watch = true;
+        } else if (a == "--window") {
+            o.window = true;
+            o.backend = Backend::GLFW;
+        } else if (a == "--backend") {
+            if (!need(i, 1, a)) return false;
+            if (!parseBackend(argv[++i], &o.backend)) {
+                *error = "--backend: expected osmesa, egl or glfw, got '" + std::string(argv[i]) + "'";
+                return false;
+            }
+            if (o.backend == Backend::GLFW) o.window = true;
+        } else if (a == "--near" || a == "--far") {
+            if (!need(i, 1, a)) return false;
+            if (!parseDouble(argv[++i], 1e-4, 1e9, &d)) {
+                *error = a + ": expected a distance in 1e-4..1e9 metres, got '" + std::string(argv[i]) + "'";
+                return false;
+            }
+            (a == "--near" ? o.nearPlane : o.farPlane) = float(d);
+        } else if (a == "--no-mirror") {
+            o.mirror = false;
+        } else if (a == "--no-hud") {
+            o.hud = false;
+        } else if (a == "--stats-json") {
+            if (!need(i, 1, a)) return false;
+            o.statsJson = argv[++i];
+        } else {
+            *error = "unknown option '" + a + "' (see --help)";
+            return false;
+        }
+    }
+    if (o.nearPlane >= o.farPlane) {
+        *error = "--near must be smaller than --far";
+        return false;
+    }
+    if (o.window && o.backend != Backend::GLFW) {
+        *error = "--window needs --backend glfw (or no --backend)";
+        return false;
+    }
+    *out = o;
+    return true;
+}
+
+}  // namespace cube

@@ -1,0 +1,47 @@
+#pragma once
+// cube_game's command line. Parsing is separate from main() so tests can feed it bad values.
+#include <string>
+
+#include "platform/Platform.h"
+
+namespace cube {
+
+enum class FxPath { Plugin, Legacy };
+
+/// Defaults: 300 frames at 1280x1024 on OSMesa, real-time dt, seed 1, the plugin with the
+/// reactions in reactions/, each reaction's own technique, prepass-EQUAL and quarter-res off.
+struct Options {
+    int frames = 300;
+    int width = 1280;
+    int height = 1024;
+    double fixedDt = 0.0;         ///< 0 = measure wall time per frame
+    double startTime = 0.0;       ///< seconds into the scripted drive at frame 0
+    unsigned seed = 1;
+    std::string screenshot;       ///< PNG of the last frame
+    int screenshotEvery = 0;      ///< with screenshotDir: a PNG every K frames
+    std::string screenshotDir;
+    std::string scene;            ///< empty = data/race.gltf
+    std::string reactions;        ///< empty = reactions/ (every *.yaml in it)
+    std::string legacyReactions;  ///< empty = data/legacy_smoke.yaml
+    Backend backend = Backend::OSMesa;
+    bool window = false;
+    std::string statsJson;
+    FxPath fx = FxPath::Plugin;
+    std::string mode = "reaction";  ///< hard | soft | spherical | reaction (each reaction's own)
+    bool prepassEqual = false;
+    bool quarterRes = false;
+    bool bilinearUpsample = false;
+    bool watch = false;
+    bool mirror = true;
+    bool hud = true;
+    float nearPlane = 0.1f;
+    float farPlane = 2000.0f;
+    bool help = false;
+};
+
+/// Parses argv. On a bad flag or value returns false with a message naming the flag and what
+/// was expected.
+bool parseOptions(int argc, const char* const* argv, Options* out, std::string* error);
+std::string usage();
+
+}  // namespace cube

@@ -1,0 +1,110 @@
+#include "game/Render.h"
+
+#include <cstdio>
+
+#include "game/Game.h"
+#include "game/Trace.h"
+#include "rtt/Blit.h"
+#include "rtt/Readback.h"
+#include "scene/Buckets.h"
+
+namespace cube {
+
+void Render::handleKeys(Game& game) {
+    Platform& p = game.platform();
+    Options& o = game.options();
+    fx::Plugin* plugin = game.specialFX().plugin();
+    if (p.keyPressed(Key::P)) o.prepassEqual = !o.prepassEqual;
+    fx::RenderOptions ro = plugin ? plugin->renderOptions() : fx::RenderOptions{};
+    if (p.keyPressed(Key::Q)) ro.quarterRes = !ro.quarterRes;
+    if (p.keyPressed(Key::B)) ro.bilinearUpsample = !ro.bilinearUpsample;
+    if (p.keyPressed(Key::M)) {
+        // FromReaction -> Hard -> Soft -> Spherical -> FromReaction
+        ro.techniqueOverride = fx::Technique((int(ro.techniqueOverride) + 1) % 4);
+    }
+    if (p.keyPressed(Key::H)) o.hud = !o.hud;
+    if (plugin) plugin->setRenderOptions(ro);
+}
+
+namespace {
+const char* techniqueLabel(fx::Technique t) {
+    switch (t) {
+        case fx::Technique::FromReaction: return "per reaction";
+        case fx::Technique::Hard: return "hard";
+        case fx::Technique::Soft: return "soft";
+        case fx::Technique::Spherical: return "spherical";
+    }
+    return "?";
+}
+}  // namespace
+
+void Render::Dyn(Game& game) {
+    Trace::call("Render::Dyn");
+    handleKeys(game);
+    Platform& platform = game.platform();
+    const int w = game.options().window ? platform.width() : game.options().width;
+    const int h = game.options().window ? platform.height() : game.options().height;
+    if (w <= 0 || h <= 0) return;  // minimised: nothing to draw, nothing allocated
+
+    game.scene_.setCarTransform(game.vehicle_.transform());
+    game.chase_.setSize(w, h);
+    game.mirror_.setSize(std::max(1, int(w * 0.30f)), std::max(1, int(h * 0.13f)));
+
+    rtt::RenderTargetPool& pool = *game.pool_;
+    rtt::FrameGraph& graph = *game.graph_;
+    pool.setViewSize(w, h);
+    pool.beginFrame();
+    graph.reset();
+
+    FrameSettings settings;
+    settings.prepassEqual = game.options_.prepassEqual;
+    settings.plugin = game.specialFX_.plugin();
+    settings.hud = game.options_.hud;
+    if (settings.hud) {
+        char text[160];
+        const fx::RenderOptions ro = settings.plugin ? settings.plugin->renderOptions() : fx::RenderOptions{};
+        std::snprintf(text, sizeof text, "%s  %s%s%s  t=%.2fs  particles %d",
+                      game.specialFX_.path() == FxPath::Legacy ? "legacy smoke" : "fx plugin",
+                      settings.plugin ? techniqueLabel(ro.techniqueOverride) : "hard sprites",
+                      settings.prepassEqual ? " +prepass-EQUAL" : "",
+                      ro.quarterRes ? (ro.bilinearUpsample ? " +quarter(bilinear)" : " +quarter") : "",
+                      game.time_, game.specialFX_.particlesAlive());
+        settings.hudText = text;
+    }
+    std::vector<cubeView*> views;
+    if (game.options_.mirror) views.push_back(&game.mirror_);
+    views.push_back(&game.chase_);
+    const rtt::FrameGraphResource color = game.scene_.Render(graph, views, settings);
+
+    // [present] the side effect every frame keeps: show the frame (window) and/or read it back.
+    const bool capture = game.captureNext_;
+    const bool window = platform.backend() == Backend::GLFW;
+    Game* g = &game;
+    graph.addPass("present", kPresentOrder,
+                  [&](rtt::PassBuilder& b) {
+                      b.read(color);
+                      b.sideEffect();
+                  },
+                  [g, color, capture, window, w, h](rtt::PassContext& ctx) {
+                      if (window) rtt::present(ctx.pool(), ctx.handle(color), 0, 0, 0, w, h);
+                      if (capture) {
+                          g->lastFrame_.width = w;
+                          g->lastFrame_.height = h;
+                          rtt::readRGBA8(ctx.pool(), ctx.handle(color), 0, &g->lastFrame_.pixels);
+                      }
+                  });
+    game.captureNext_ = false;
+    if (!graph.compile()) {
+        std::fprintf(stderr, "frame graph: %s\n", graph.report().error.c_str());
+        pool.endFrame();
+        return;
+    }
+    graph.execute();
+    if (!graph.report().error.empty()) std::fprintf(stderr, "frame graph: %s\n", graph.report().error.c_str());
+    pool.endFrame();
+    for (const std::string& n : graph.report().executed) ++game.passRuns_[n];
+    for (const std::string& n : graph.report().culled) ++game.passCulls_[n];
+    if (window) platform.present();
+}
+
+}  // namespace cube

@@ -1,0 +1,116 @@
+#include "game/SpecialFX.h"
+
+#include <cstdio>
+
+#include "game/Trace.h"
+#include "game/Vehicle.h"
+#include "gl/Paths.h"
+#include "scene/LegacySmokeDesc.h"
+#include "scene/cubeParticleSystem.h"
+#include "scene/cubeScene.h"
+
+namespace cube {
+
+void Reaction::Load(cubeScene& scene, const LegacySmokeDesc* legacy, uint32_t seed) {
+    Trace::call("Reaction::Load");
+    const bool isLegacy = owner_->path() == FxPath::Legacy;
+    system_ = scene.CreateParticleSystem(isLegacy ? cubeParticleSystem::Kind::Legacy
+                                                  : cubeParticleSystem::Kind::Plugin);
+    system_->Initialize(legacy, isLegacy ? -1 : index_, seed + uint32_t(index_));
+}
+
+void Reaction::Continue(float* currentVehicleCollisionAmount) {
+    Trace::call("Reaction::Continue");
+    // The CUBE switch on the reaction's behaviour.
+    switch (system_ ? system_->kind() : cubeParticleSystem::Kind::Plugin) {
+        case cubeParticleSystem::Kind::Legacy: ContinueLegacySmoke(); break;
+        case cubeParticleSystem::Kind::Plugin: ContinuePlugin(currentVehicleCollisionAmount); break;
+    }
+}
+
+void Reaction::ContinueLegacySmoke() {
+    const Vehicle* v = owner_->vehicle();
+    if (v) system_->Update(owner_->dt(), v->wheels().data(), int(v->wheels().size()));
+}
+
+void Reaction::ContinuePlugin(float* currentVehicleCollisionAmount) {
+    // The plugin's own per-type continue (wheel smoke, dust, collision burst).
+    owner_->plugin()->continueReaction(index_, owner_->dt(), currentVehicleCollisionAmount);
+}
+
+bool SpecialFX::Init(const Options& options, cubeScene& scene, fx::HostAdapter* host, std::string* error) {
+    Trace::call("SpecialFX::Init");
+    path_ = options.fx;
+    seed_ = options.seed;
+    if (path_ == FxPath::Legacy) {
+        const std::string file = options.legacyReactions.empty() ? paths::data() + "/legacy_smoke.yaml"
+                                                                 : options.legacyReactions;
+        if (!loadLegacySmoke(file, &legacyDescs_, error)) return false;
+    } else {
+        fx::PluginImports imports;
+        imports.host = host;
+        imports.shaderDir = paths::shaders();
+        plugin_ = fxCreatePlugin(imports);
+        if (!plugin_) {
+            *error = "fx_plugin: the plugin refused API version " + std::to_string(fx::kApiVersion);
+            return false;
+        }
+        const std::string path = options.reactions.empty() ? paths::reactions() : options.reactions;
+        fx::Diagnostics diags;
+        if (!plugin_->loadReactions(path, &diags)) {
+            error->clear();
+            for (const fx::Diagnostic& d : diags) *error += d.str() + "\n";
+            if (error->empty()) *error = path + ": reactions could not be loaded\n";
+            return false;
+        }
+        fx::RenderOptions ro;
+        ro.techniqueOverride = options.mode == "hard"        ? fx::Technique::Hard
+                               : options.mode == "soft"      ? fx::Technique::Soft
+                               : options.mode == "spherical" ? fx::Technique::Spherical
+                                                             : fx::Technique::FromReaction;
+        ro.quarterRes = options.quarterRes || options.bilinearUpsample;
+        ro.bilinearUpsample = options.bilinearUpsample;
+        plugin_->setRenderOptions(ro);
+    }
+    createReactions(scene);
+    return true;
+}
+
+void SpecialFX::createReactions(cubeScene& scene) {
+    scene.ClearParticleSystems();
+    reactions_.clear();
+    const int count = path_ == FxPath::Legacy ? int(legacyDescs_.size()) : plugin_->reactionCount();
+    reactions_.reserve(size_t(count));
+    for (int i = 0; i < count; ++i) {
+        reactions_.emplace_back(this, i);
+        reactions_.back().Load(scene, path_ == FxPath::Legacy ? &legacyDescs_[size_t(i)] : nullptr, seed_);
+    }
+}
+
+void SpecialFX::Dyn(float dt, const Vehicle& vehicle) {
+    Trace::call("SpecialFX::Dyn");
+    dt_ = dt;
+    vehicle_ = &vehicle;
+    float collision = vehicle.collisionAmount();
+    for (Reaction& r : reactions_) r.Continue(&collision);
+}
+
+void SpecialFX::pollHotReload(cubeScene& scene) {
+    if (!plugin_) return;
+    fx::Diagnostics diags;
+    const bool reloaded = plugin_->pollHotReload(&diags);
+    for (const fx::Diagnostic& d : diags) std::fprintf(stderr, "reload rejected: %s\n", d.str().c_str());
+    if (reloaded) {
+        std::fprintf(stderr, "reactions reloaded: %d live\n", plugin_->reactionCount());
+        createReactions(scene);
+    }
+}
+
+int SpecialFX::particlesAlive() const {
+    if (plugin_) return plugin_->stats().particlesAlive;
+    int n = 0;
+    for (const Reaction& r : reactions_) n += r.particleSystem() ? r.particleSystem()->alive() : 0;
+    return n;
+}
+
+}  // namespace cube

@@ -1,0 +1,68 @@
+#pragma once
+// The CUBE SpecialFX component: reads the reactions (SpecialFX::Init), creates one Reaction per
+// entry (Reaction::Load -> cubeScene::CreateParticleSystem), and advances them every update
+// (SpecialFX::Dyn -> Reaction::Continue(float* currentVehicleCollisionAmount)).
+// With --fx plugin the reactions and their particles live in fx_plugin; with --fx legacy they are
+// the old hard sprites from data/legacy_smoke.yaml.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fx/Plugin.h"
+#include "game/Options.h"
+
+namespace cube {
+
+class cubeScene;
+class cubeParticleSystem;
+class Vehicle;
+struct LegacySmokeDesc;
+
+class Reaction {
+public:
+    Reaction(class SpecialFX* owner, int index) : owner_(owner), index_(index) {}
+    /// Creates this reaction's particle system through the scene's factory.
+    void Load(cubeScene& scene, const LegacySmokeDesc* legacy, uint32_t seed);
+    /// Advances the reaction by the owner's current step; dispatches on the particle system kind.
+    void Continue(float* currentVehicleCollisionAmount);
+    cubeParticleSystem* particleSystem() const { return system_; }
+
+private:
+    void ContinueLegacySmoke();
+    void ContinuePlugin(float* currentVehicleCollisionAmount);
+
+    SpecialFX* owner_;
+    int index_;
+    cubeParticleSystem* system_ = nullptr;
+};
+
+class SpecialFX {
+public:
+    /// Reads reactions and loads them. False + error (file:line: ...) when the files are bad.
+    bool Init(const Options& options, cubeScene& scene, fx::HostAdapter* host, std::string* error);
+    /// One update step of every reaction.
+    void Dyn(float dt, const Vehicle& vehicle);
+    /// With --watch: reloads changed reaction files (plugin path). Errors are printed, the
+    /// running set stays.
+    void pollHotReload(cubeScene& scene);
+
+    fx::Plugin* plugin() const { return plugin_.get(); }
+    FxPath path() const { return path_; }
+    float dt() const { return dt_; }
+    const Vehicle* vehicle() const { return vehicle_; }
+    int reactionCount() const { return int(reactions_.size()); }
+    int particlesAlive() const;
+
+private:
+    void createReactions(cubeScene& scene);
+
+    FxPath path_ = FxPath::Plugin;
+    std::unique_ptr<fx::Plugin> plugin_;
+    std::vector<LegacySmokeDesc> legacyDescs_;
+    std::vector<Reaction> reactions_;
+    uint32_t seed_ = 1;
+    float dt_ = 0.0f;
+    const Vehicle* vehicle_ = nullptr;
+};
+
+}  // namespace cube

@@ -1,0 +1,23 @@
+#pragma once
+// The buckets ("phases" in CUBE) a view sorts its objects into, and their explicit order. Names
+// and order are data: they label GL debug groups, pass timings and the stats JSON.
+namespace cube {
+
+enum class Bucket : int { DepthPrepass = 0, Opaque, AlphaTested, Sky, Particles, Hud, Count };
+
+struct BucketInfo {
+    const char* name;
+    int order;  ///< pass order key within a view; views are spaced kViewOrderStride apart
+};
+
+constexpr BucketInfo kBuckets[int(Bucket::Count)] = {
+    {"depth_prepass", 10}, {"opaque", 20}, {"alpha_tested", 30},
+    {"sky", 40},           {"particles", 50}, {"hud", 90},
+};
+
+constexpr int kViewOrderStride = 1000;
+constexpr int kPresentOrder = 1000000;
+
+inline const BucketInfo& bucketInfo(Bucket b) { return kBuckets[int(b)]; }
+
+}  // namespace cube

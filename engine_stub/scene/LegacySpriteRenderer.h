@@ -1,0 +1,27 @@
+#pragma once
+// Draws the legacy smoke: CPU-aligned quads, depth-tested, no depth writes, straight alpha,
+// one untextured-rotation atlas frame. The baseline the plugin replaces.
+#include <string>
+#include <vector>
+
+#include "gl/Gl.h"
+#include "gl/Program.h"
+#include "scene/cubeParticleSystem.h"
+
+namespace cube {
+
+class LegacySpriteRenderer {
+public:
+    ~LegacySpriteRenderer();
+    bool init(std::string* error);
+    /// Draws `vertices` (triangles) with the view-projection matrix into the bound framebuffer.
+    void draw(const std::vector<cubeParticleSystem::SpriteVertex>& vertices, const float* viewProj,
+              const glm::vec3& tint);
+
+private:
+    gl::Program program_;
+    GLuint vao_ = 0, vbo_ = 0, atlas_ = 0;
+    size_t capacity_ = 0;
+};
+
+}  // namespace cube

@@ -1,0 +1,45 @@
+#include "scene/cubeScene.h"
+
+#include "game/Trace.h"
+
+namespace cube {
+
+bool cubeScene::Init(const SceneData& data, std::string* error) {
+    data_ = data;
+    carNode_ = data_.findNode("car");
+    gpu_.upload(data_);
+    if (!gl::Program::load("vs_mesh.glsl", "fs_mesh.glsl", &meshProgram, error)) return false;
+    if (!gl::Program::load("vs_mesh.glsl", "fs_mesh_prepass.glsl", &prepassProgram, error)) return false;
+    if (!gl::Program::load("vs_fullscreen.glsl", "fs_sky.glsl", &skyProgram, error)) return false;
+    if (!gl::Program::load("vs_fullscreen.glsl", "fs_blit.glsl", &blitProgram, error)) return false;
+    if (!legacySprites.init(error)) return false;
+    if (!hud.init(error)) return false;
+    if (!emptyVao) glGenVertexArrays(1, &emptyVao);
+    return true;
+}
+
+cubeParticleSystem* cubeScene::CreateParticleSystem(cubeParticleSystem::Kind kind) {
+    Trace::call("cubeScene::CreateParticleSystem");
+    particleSystems_.push_back(std::make_unique<cubeParticleSystem>(kind));
+    return particleSystems_.back().get();
+}
+
+rtt::FrameGraphResource cubeScene::Render(rtt::FrameGraph& graph, std::vector<cubeView*>& views,
+                                          FrameSettings settings) {
+    Trace::call("cubeScene::Render");
+    rtt::FrameGraphResource last;
+    for (size_t i = 0; i < views.size(); ++i) {
+        FrameSettings s = settings;
+        const bool main = i + 1 == views.size();
+        if (!main) {
+            s.hud = false;
+            s.inset = {};
+        } else {
+            s.inset = last;  // the previous view (mirror) is inset into the main view
+        }
+        last = views[i]->Render(*this, graph, s);
+    }
+    return last;
+}
+
+}  // namespace cube

@@ -1,0 +1,65 @@
+#pragma once
+// The CUBE scene: geometry on the GPU, the particle systems the factory created, and the views.
+// cubeScene::Render updates lights and animation (the car's transform), then renders each
+// cubeView into the frame graph.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fx/Plugin.h"
+#include "gl/Program.h"
+#include "rtt/FrameGraph.h"
+#include "scene/GpuScene.h"
+#include "scene/Hud.h"
+#include "scene/LegacySpriteRenderer.h"
+#include "scene/SceneData.h"
+#include "scene/cubeParticleSystem.h"
+#include "scene/cubeView.h"
+
+namespace cube {
+
+/// Per-frame switches the views read. Defaults: LESS opaque pass, no plugin, HUD on, no inset.
+struct FrameSettings {
+    bool prepassEqual = false;      ///< opaque reuses the prepass z-buffer, depth test EQUAL
+    fx::Plugin* plugin = nullptr;   ///< the particle-bucket hook (null: legacy or no effects)
+    bool hud = true;
+    std::string hudText;
+    rtt::FrameGraphResource inset;  ///< drawn into the chase view's HUD bucket (mirror)
+    bool insetFlipX = true;
+};
+
+class cubeScene {
+public:
+    /// Uploads the scene and builds the programs. False + error (shader file:line, ...).
+    bool Init(const SceneData& data, std::string* error);
+
+    /// The factory (cubeScene::CreateParticleSystem): a new system owned by the scene.
+    cubeParticleSystem* CreateParticleSystem(cubeParticleSystem::Kind kind);
+    void ClearParticleSystems() { particleSystems_.clear(); }
+    const std::vector<std::unique_ptr<cubeParticleSystem>>& particleSystems() const { return particleSystems_; }
+
+    /// Lights and animation: where the moving car is this frame.
+    void setCarTransform(const glm::mat4& m) { carTransform_ = m; }
+    /// Declares every view's passes; returns the colour target of the last view (the main one).
+    rtt::FrameGraphResource Render(rtt::FrameGraph& graph, std::vector<cubeView*>& views, FrameSettings settings);
+
+    const SceneData& data() const { return data_; }
+    const GpuScene& gpu() const { return gpu_; }
+    int carNode() const { return carNode_; }
+    const glm::mat4& carTransform() const { return carTransform_; }
+
+    // Back-end resources the views' passes draw with.
+    gl::Program meshProgram, prepassProgram, skyProgram, blitProgram;
+    LegacySpriteRenderer legacySprites;
+    Hud hud;
+    GLuint emptyVao = 0;  ///< for gl_VertexID full-screen triangles (core profile needs a VAO)
+
+private:
+    SceneData data_;
+    GpuScene gpu_;
+    int carNode_ = -1;
+    glm::mat4 carTransform_{1.0f};
+    std::vector<std::unique_ptr<cubeParticleSystem>> particleSystems_;
+};
+
+}  // namespace cube

@@ -1,0 +1,65 @@
+#pragma once
+// One viewport of the scene (CUBE's cubeView): a camera, a colour target, and the passes that
+// fill it. cubeView::Render -> RenderObjects: set camera parameters, sort the scene's objects into
+// buckets, and declare one pass per non-empty bucket in the bucket order (Buckets.h).
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "rtt/FrameGraph.h"
+#include "scene/GpuScene.h"
+
+namespace cube {
+
+class cubeScene;
+struct FrameSettings;
+
+/// Camera parameters of a view. Defaults: 60 degree vertical field of view, near 0.1, far 2000.
+struct ViewCamera {
+    glm::vec3 eye{0.0f, 2.0f, 8.0f};
+    glm::vec3 target{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fovY = glm::radians(60.0f);
+    float nearPlane = 0.1f;
+    float farPlane = 2000.0f;
+    glm::mat4 view() const;
+    glm::mat4 proj(float aspect) const;
+};
+
+class cubeView {
+public:
+    cubeView(std::string name, int index) : name_(std::move(name)), index_(index) {}
+
+    const std::string& name() const { return name_; }
+    ViewCamera& camera() { return camera_; }
+    const ViewCamera& camera() const { return camera_; }
+    void setSize(int width, int height) { width_ = width; height_ = height; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+    /// Declares this view's passes into `graph`; returns the view's colour target.
+    rtt::FrameGraphResource Render(cubeScene& scene, rtt::FrameGraph& graph, const FrameSettings& settings);
+
+    /// Draws recorded in the last RenderObjects, per bucket (for tests and stats).
+    size_t opaqueDraws() const { return opaque_.size(); }
+    bool prepassDeclared() const { return prepassDeclared_; }
+
+private:
+    rtt::FrameGraphResource RenderObjects(cubeScene& scene, rtt::FrameGraph& graph, const FrameSettings& settings);
+    void recordBuckets(cubeScene& scene);
+    std::string passName(const char* bucket) const { return name_ + "." + bucket; }
+    int order(int bucketOrder) const { return index_ * 1000 + bucketOrder; }
+
+    std::string name_;
+    int index_;
+    ViewCamera camera_;
+    int width_ = 0, height_ = 0;
+    glm::mat4 view_{1.0f}, proj_{1.0f};
+    // Buckets, recorded by the game side; the pass callbacks only draw them.
+    std::vector<MeshDraw> all_, opaque_, alphaTested_;
+    std::vector<std::string> names_;
+    bool prepassDeclared_ = false;
+};
+
+}  // namespace cube

@@ -1,0 +1,53 @@
+#version 330 core
+// Quarter-res step 3: the half-resolution premultiplied particle colour onto the scene,
+// blended (ONE, ONE_MINUS_SRC_ALPHA).
+//
+// Nearest-depth upsampling (Bavoil, NVIDIA "Opacity Mapping" 2011): take the four low-res texels
+// of the bilinear footprint; where all their depths are within a relative threshold of this
+// pixel's full-res depth, blend them bilinearly; otherwise (the pixel sits on a depth edge) take
+// the texel whose depth is closest to the pixel's, so smoke computed for a near surface never
+// smears onto a far one and vice versa. uBilinear = 1 keeps plain bilinear (for comparison).
+uniform sampler2D uHalfColor;   // premultiplied RGBA16F, half x half
+uniform sampler2D uHalfDepth;   // R32F min depth per 2x2 block
+uniform sampler2D uSceneDepth;  // full-res R32F
+uniform int uBilinear;
+uniform float uDepthThreshold;  // relative: |low - full| > threshold * full is an edge
+
+layout(location = 0) out vec4 oColor;
+
+void main() {
+    ivec2 fullSize = textureSize(uSceneDepth, 0);
+    ivec2 lowSize = textureSize(uHalfColor, 0);
+    vec2 lowPos = gl_FragCoord.xy * vec2(lowSize) / vec2(fullSize) - 0.5;
+    ivec2 base = ivec2(floor(lowPos));
+    vec2 f = lowPos - vec2(base);
+    ivec2 last = lowSize - 1;
+    ivec2 taps[4] = ivec2[4](clamp(base, ivec2(0), last), clamp(base + ivec2(1, 0), ivec2(0), last),
+                             clamp(base + ivec2(0, 1), ivec2(0), last), clamp(base + ivec2(1, 1), ivec2(0), last));
+    float weights[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+
+    vec4 colour[4];
+    vec4 bilinear = vec4(0.0);
+    for (int i = 0; i < 4; ++i) {
+        colour[i] = texelFetch(uHalfColor, taps[i], 0);
+        bilinear += weights[i] * colour[i];
+    }
+    if (uBilinear != 0) {
+        oColor = bilinear;
+        return;
+    }
+
+    float full = texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r;
+    float worst = 0.0;
+    float best = 3.4e38;
+    int nearest = 0;
+    for (int i = 0; i < 4; ++i) {
+        float diff = abs(texelFetch(uHalfDepth, taps[i], 0).r - full);
+        worst = max(worst, diff);
+        if (diff < best) {
+            best = diff;
+            nearest = i;
+        }
+    }
+    oColor = worst <= uDepthThreshold * full ? bilinear : colour[nearest];
+}

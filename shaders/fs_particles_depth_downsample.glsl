@@ -1,0 +1,20 @@
+#version 330 core
+// Quarter-res step 1: the half-resolution linear depth, one texel per 2x2 block of the scene
+// depth, taking the MINIMUM (nearest) depth of the block. Nearest keeps thin foreground
+// geometry (poles, barrier tops, a car's roof line) in the low-res depth, so particles behind
+// it are hidden in the half-res pass too; the composite then lets background pixels next to it
+// borrow a neighbouring low-res texel (see QuarterResPath.h for the choice and its measured effect).
+uniform sampler2D uSceneDepth;  // full resolution, R32F metres
+
+layout(location = 0) out vec4 oDepth;
+
+void main() {
+    ivec2 fullSize = textureSize(uSceneDepth, 0);
+    ivec2 last = fullSize - 1;
+    // Texel i covers full-res pixels 2i and 2i + 1 (an odd last row/column is clamped).
+    ivec2 p = min(ivec2(gl_FragCoord.xy) * 2, last);
+    ivec2 q = min(p + 1, last);
+    float d = min(min(texelFetch(uSceneDepth, p, 0).r, texelFetch(uSceneDepth, ivec2(q.x, p.y), 0).r),
+                  min(texelFetch(uSceneDepth, ivec2(p.x, q.y), 0).r, texelFetch(uSceneDepth, q, 0).r));
+    oDepth = vec4(d);
+}

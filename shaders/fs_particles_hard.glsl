@@ -1,0 +1,24 @@
+#version 330 core
+// Hard particles: the legacy look. Full resolution: the renderer depth-tests the quad against the
+// host's z-buffer (LEQUAL, no depth writes), so a particle is cut where it meets geometry.
+// FX_LINEAR_DEPTH_TEST (quarter-res target, which has no z-buffer): the same all-or-nothing test
+// made against the half-resolution linear depth instead.
+#include "particles_common.glsl"
+
+in vec3 vViewPos;
+in vec2 vLocal;
+flat in vec4 vRamp;
+flat in float vFade;
+flat in float vFrame;
+
+layout(location = 0) out vec4 oColor;
+
+void main() {
+    vec4 texel = texture(uAtlas, atlasUV(vLocal, vFrame));
+    float depth = -vViewPos.z;
+    float coverage = texel.a * nearFadeFactor(depth);
+#ifdef FX_LINEAR_DEPTH_TEST
+    coverage *= depth <= sceneDepthAt(gl_FragCoord.xy) ? 1.0 : 0.0;
+#endif
+    oColor = shadeOutput(vRamp, vFade, texel, coverage);
+}

@@ -1,0 +1,92 @@
+// Shared by the particle shaders (vs_particles + fs_particles_hard/soft/spherical).
+//
+// Conventions: view space is right-handed with the camera looking down -Z. "Depth" is always
+// the positive linear view-space distance along the view axis in metres: what the host's
+// FrameBuilder::sceneDepth() holds in its R32F attachment, and what the particle shaders
+// compute for their own fragments (no z-buffer values are compared, so precision does not
+// depend on the near/far ratio).
+//
+// Colour: the ramp and the atlas hold straight (not premultiplied) alpha. Every fragment shader
+// writes premultiplied colour through shadeOutput(), which the renderer blends with
+// (ONE, ONE_MINUS_SRC_ALPHA), or (ONE, ONE) for additive reactions.
+
+uniform mat4 uView;
+uniform mat4 uProj;
+uniform float uNear;          // metres, > 0
+uniform float uFar;           // metres
+uniform vec2 uSlopeMax;       // |x/depth|, |y/depth| just past the frustum edges (spherical quads)
+
+// Per reaction (per draw call).
+uniform float uRampRow;       // v coordinate of this reaction's row in uRamp (texel centre)
+uniform int uBlendMode;       // fx::BlendMode: 0 alpha, 1 premultiplied, 2 additive
+uniform float uSoftScale;     // 1 / render.softness, 1/m
+uniform float uContrastPower; // render.contrast_power, 1 = linear fade
+uniform float uNearFade;      // render.near_fade, metres in front of the near plane; 0 = off
+
+uniform sampler2D uAtlas;      // 2x2 smoke atlas, RGBA8, straight alpha, frames row-major from top-left
+uniform sampler2D uRamp;       // colour by life: one row per reaction, kRampTexels wide
+uniform sampler2D uSceneDepth; // linear depth (R32F, metres) of the target being drawn
+
+const float kRampTexels = 64.0;  // keep equal to ColorRampTexture::kTexels
+
+vec2 rotate2(vec2 v, float angle) {
+    float s = sin(angle), c = cos(angle);
+    return vec2(c * v.x - s * v.y, s * v.x + c * v.y);
+}
+
+// The ramp's u for a life fraction, hitting the first and last texel centres exactly at 0 and 1.
+float rampU(float life) {
+    return (clamp(life, 0.0, 1.0) * (kRampTexels - 1.0) + 0.5) / kRampTexels;
+}
+
+// Atlas coordinate of a particle-space point `local` in [-1, 1]^2 (+y up, already rotated) on
+// atlas frame `frame`. Rotated corners leave the unit square: they are clamped onto the cell
+// border, where the atlas alpha is exactly 0, so no neighbouring frame ever bleeds in.
+vec2 atlasUV(vec2 local, float frame) {
+    local = clamp(local, -1.0, 1.0);
+    int f = clamp(int(frame + 0.5), 0, 3);
+    vec2 cell = vec2(float(f & 1), float(f >> 1));
+    // The PNG is uploaded top row first, so t = 0 is the image's top: +y (up) goes to smaller t.
+    vec2 inCell = vec2(0.5 + 0.5 * local.x, 0.5 - 0.5 * local.y);
+    return (cell + inCell) * 0.5;
+}
+
+// NVIDIA's soft-particle contrast curve ("Soft Particles", Lorach 2007): symmetric S-curve
+// around 0.5; power 1 is the identity.
+float contrastCurve(float x, float power) {
+    float flip = x > 0.5 ? 1.0 - x : x;
+    float y = 0.5 * pow(clamp(2.0 * flip, 0.0, 1.0), power);
+    return x > 0.5 ? 1.0 - y : y;
+}
+
+// fade = saturate((scene_depth - particle_depth) * scale), through the contrast curve.
+float softFade(float sceneDepth, float particleDepth) {
+    float x = clamp((sceneDepth - particleDepth) * uSoftScale, 0.0, 1.0);
+    return contrastCurve(x, uContrastPower);
+}
+
+// 0 at the near plane, 1 from uNearFade metres in front of it on (no pop when a particle
+// reaches the near plane and is clipped).
+float nearFadeFactor(float depth) {
+    if (uNearFade <= 0.0) return 1.0;
+    return clamp((depth - uNear) / uNearFade, 0.0, 1.0);
+}
+
+float sceneDepthAt(vec2 fragCoord) {
+    return texelFetch(uSceneDepth, ivec2(fragCoord), 0).r;
+}
+
+// Premultiplied output. `ramp`: the ramp colour (straight alpha); `fade`: the particle's
+// life fade; `texel`: atlas sample; `coverage`: every per-pixel factor (atlas alpha, soft fade,
+// sphere visibility, near fade).
+//   alpha:         (rgb * a, a)        with a = ramp.a * fade * coverage
+//   premultiplied: (rgb * k, ramp.a * k) with k = fade * coverage (ramp rgb taken as premultiplied)
+//   additive:      (rgb * a, 0)        blended (ONE, ONE): adds light, leaves coverage alone
+vec4 shadeOutput(vec4 ramp, float fade, vec4 texel, float coverage) {
+    vec3 rgb = ramp.rgb * texel.rgb;
+    float k = fade * coverage;
+    if (uBlendMode == 1) return vec4(rgb * k, ramp.a * k);
+    float a = ramp.a * k;
+    if (uBlendMode == 2) return vec4(rgb * a, 0.0);
+    return vec4(rgb * a, a);
+}

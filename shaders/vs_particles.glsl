@@ -1,0 +1,76 @@
+#version 330 core
+// Instanced particle quads, billboarded here (000 section 2.5 / 3.3.3): stream 0 is the four
+// shared corners, stream 1 one record per particle (InstanceStream.h describes the layout).
+//
+// Billboards (hard, soft): a view-plane-aligned quad of edge `size` around the centre, built
+// from the camera right/up vectors read out of the view matrix. The texture coordinate is the
+// corner rotated by the particle's angle (000 section 3.3.6).
+//
+// FX_SPHERICAL: the quad only has to cover every view ray that meets the particle sphere
+// (radius size/2); the fragment shader intersects each ray with the sphere. Per screen axis the
+// exact range of ray slopes through the sphere is computed; where it is unbounded (camera inside
+// or beside the sphere) it extends to the frustum edge, so a camera inside a particle still gets
+// a screen-covering quad. The quad is placed inside the clip range (depth test is off for
+// spherical particles, so its depth only has to survive clipping).
+#include "particles_common.glsl"
+
+layout(location = 0) in vec2 aCorner;            // (+-1, +-1), triangle strip order
+layout(location = 1) in vec4 aPosSize;           // centre (world, m), size (m)
+layout(location = 2) in vec4 aLifeRotFadeFrame;  // life [0,1], rotation (rad), fade [0,1], frame
+
+out vec3 vViewPos;       // view-space position on the quad
+out vec2 vLocal;         // billboards: rotated particle-space coordinate, [-1,1]^2 inside the quad
+flat out vec4 vRamp;     // ramp colour at this particle's life, straight alpha
+flat out float vFade;    // life fade
+flat out float vFrame;   // atlas frame
+flat out vec4 vSphere;   // spherical: view-space centre, radius
+flat out float vRotation;
+
+#ifdef FX_SPHERICAL
+// Range [lo, hi] of slopes (offset / depth) of the rays that meet a disc of radius r centred
+// `a` across and `depth` ahead in one axis plane (a sphere's x/depth slopes are those of its
+// projection onto the xz plane, a disc of the same radius). Clamped to +-smax; an unbounded side
+// (camera inside the disc, tangent at or behind 90 degrees) is +-smax.
+vec2 slopeRange(float a, float depth, float r, float smax) {
+    float len2 = a * a + depth * depth;
+    if (len2 <= r * r * 1.0001) return vec2(-smax, smax);
+    const float kLimit = 1.5697963;  // just under pi/2
+    float centre = atan(a, depth);
+    float halfAngle = asin(clamp(r / sqrt(len2), 0.0, 1.0));
+    float lo = centre - halfAngle, hi = centre + halfAngle;
+    if (lo >= kLimit) return vec2(smax);   // wholly beside/behind the eye on this axis
+    if (hi <= -kLimit) return vec2(-smax);
+    float slo = lo <= -kLimit ? -smax : tan(lo);
+    float shi = hi >= kLimit ? smax : tan(hi);
+    return clamp(vec2(slo, shi), -smax, smax);
+}
+#endif
+
+void main() {
+    vRamp = texture(uRamp, vec2(rampU(aLifeRotFadeFrame.x), uRampRow));
+    vFade = aLifeRotFadeFrame.z;
+    vFrame = aLifeRotFadeFrame.w;
+    vRotation = aLifeRotFadeFrame.y;
+    float radius = 0.5 * aPosSize.w;
+
+#ifdef FX_SPHERICAL
+    vec3 centre = (uView * vec4(aPosSize.xyz, 1.0)).xyz;
+    float depth = -centre.z;
+    vec2 sx = slopeRange(centre.x, depth, radius, uSlopeMax.x);
+    vec2 sy = slopeRange(centre.y, depth, radius, uSlopeMax.y);
+    float quadDepth = clamp(depth, uNear * 1.01, uFar * 0.99);
+    vec2 slope = vec2(aCorner.x < 0.0 ? sx.x : sx.y, aCorner.y < 0.0 ? sy.x : sy.y);
+    vec3 viewPos = vec3(slope * quadDepth, -quadDepth);
+    vSphere = vec4(centre, radius);
+    vLocal = vec2(0.0);
+#else
+    vec3 right = normalize(vec3(uView[0][0], uView[1][0], uView[2][0]));
+    vec3 up = normalize(vec3(uView[0][1], uView[1][1], uView[2][1]));
+    vec3 world = aPosSize.xyz + (aCorner.x * right + aCorner.y * up) * radius;
+    vec3 viewPos = (uView * vec4(world, 1.0)).xyz;
+    vSphere = vec4(0.0);
+    vLocal = rotate2(aCorner, aLifeRotFadeFrame.y);
+#endif
+    vViewPos = viewPos;
+    gl_Position = uProj * vec4(viewPos, 1.0);
+}
