@@ -1,0 +1,372 @@
+#include "rtt/FrameGraph.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cstring>
+
+#include "gl/Gl.h"
+#include "rtt/RenderTargetPool.h"
+#include "rtt/ScopedTargetBinding.h"
+
+namespace cube::rtt {
+
+namespace {
+// Reuses the strings already in `v` so a steady frame does not reallocate them.
+void setAt(std::vector<std::string>& v, size_t i, const std::string& s) {
+    if (i < v.size())
+        v[i].assign(s);
+    else
+        v.push_back(s);
+}
+}  // namespace
+
+FrameGraph::FrameGraph(RenderTargetPool& pool, bool softwareRenderer, TimingMode timing)
+    : pool_(pool), timer_(softwareRenderer, timing) {
+    report_.timingMethod = timer_.method();
+}
+
+FrameGraph::~FrameGraph() {
+    // A graph destroyed mid-frame (execute() threw) must not keep pool targets in use.
+    for (uint32_t i = 0; i < resourceCount_; ++i)
+        if (!resources_[i].imported && pool_.isValid(resources_[i].handle)) pool_.release(resources_[i].handle);
+}
+
+void FrameGraph::reset() {
+    for (uint32_t i = 0; i < passCount_; ++i) passes_[i].execute = nullptr;  // drop captures now
+    passCount_ = 0;
+    resourceCount_ = 0;
+    declared_.clear();
+    compiled_ = false;
+    declError_.clear();
+    report_.error.clear();
+}
+
+FrameGraphResource FrameGraph::create(const char* name, const RenderTargetDesc& desc) {
+    TargetDesc d;
+    static_cast<RenderTargetDesc&>(d) = desc;
+    return create(name, d);
+}
+
+FrameGraphResource FrameGraph::create(const char* name, const TargetDesc& desc) {
+    if (resourceCount_ == resources_.size()) resources_.emplace_back();
+    Resource& r = resources_[resourceCount_];
+    r.name.assign(name ? name : "");
+    r.desc = desc;
+    r.desc.name = "";
+    r.sharedDepthOf = desc.sharedDepthOf.valid() ? resourceIndex(desc.sharedDepthOf) : -1;
+    if (desc.sharedDepthOf.valid() && r.sharedDepthOf < 0 && declError_.empty())
+        declError_ = "target '" + r.name + "': sharedDepthOf is not a target of this frame";
+    r.imported = r.persistent = r.sampledDepth = r.failed = false;
+    r.handle = {};
+    r.first = r.last = -1;
+    return {++resourceCount_};
+}
+
+FrameGraphResource FrameGraph::import(const char* name, RenderTargetHandle handle, bool persistent) {
+    if (resourceCount_ == resources_.size()) resources_.emplace_back();
+    Resource& r = resources_[resourceCount_];
+    r.name.assign(name ? name : "");
+    const RenderTargetDesc* d = pool_.desc(handle);
+    r.desc = d ? *d : RenderTargetDesc{};
+    r.desc.name = "";
+    r.sharedDepthOf = -1;
+    r.imported = true;
+    r.persistent = persistent;
+    r.sampledDepth = r.failed = false;
+    r.handle = handle;
+    r.first = r.last = -1;
+    return {++resourceCount_};
+}
+
+int FrameGraph::resourceIndex(FrameGraphResource target) const {
+    return target.id >= 1 && target.id <= resourceCount_ ? int(target.id - 1) : -1;
+}
+
+PassBuilder FrameGraph::beginPass(const char* name, int order, ExecuteFn execute) {
+    if (passCount_ == passes_.size()) passes_.emplace_back();
+    Pass& p = passes_[passCount_];
+    p.name.assign(name ? name : "");
+    p.order = order;
+    p.declaredBegin = p.declaredEnd = uint32_t(declared_.size());
+    p.sideEffect = p.kept = p.skipped = false;
+    p.execute = std::move(execute);
+    compiled_ = false;
+    return PassBuilder(*this, passCount_++);
+}
+
+void FrameGraph::addPass(const char* name, int order, std::initializer_list<FrameGraphResource> reads,
+                         std::initializer_list<FrameGraphResource> writes, ExecuteFn execute, bool sideEffect) {
+    addPass(name, order, reads.begin(), reads.size(), writes.begin(), writes.size(), std::move(execute),
+            sideEffect);
+}
+
+void FrameGraph::addPass(const char* name, int order, const FrameGraphResource* reads, size_t readCount,
+                         const FrameGraphResource* writes, size_t writeCount, ExecuteFn execute,
+                         bool sideEffect) {
+    PassBuilder b = beginPass(name, order, std::move(execute));
+    for (size_t i = 0; i < readCount; ++i) b.read(reads[i]);
+    for (size_t i = 0; i < writeCount; ++i) b.write(writes[i]);
+    if (sideEffect) b.sideEffect();
+}
+
+void FrameGraph::addAccess(uint32_t pass, FrameGraphResource target, uint8_t access) {
+    // Accesses of a pass are contiguous: passes are declared one at a time.
+    assert(pass + 1 == passCount_ && "PassBuilder used after the next pass was declared");
+    const int r = resourceIndex(target);
+    if (r < 0) {
+        if (declError_.empty())
+            declError_ = "pass '" + passes_[pass].name + "' uses a target that is not part of this frame";
+        return;
+    }
+    declared_.push_back({uint32_t(r), access});
+    passes_[pass].declaredEnd = uint32_t(declared_.size());
+}
+
+void FrameGraph::expandAccesses() {
+    // Done at compile time so a target's shared depth may be set after passes declared it.
+    accesses_.clear();
+    for (uint32_t pi = 0; pi < passCount_; ++pi) {
+        Pass& p = passes_[pi];
+        p.accessBegin = uint32_t(accesses_.size());
+        for (uint32_t i = p.declaredBegin; i < p.declaredEnd; ++i) {
+            const AccessRecord a = declared_[i];
+            accesses_.push_back(a);
+            // The shared depth is the owner's storage: depth testing reads it, depth writes change it.
+            const int owner = resources_[a.resource].sharedDepthOf;
+            if (owner >= 0 && (a.access & (kWrite | kReadDepth)))
+                accesses_.push_back({uint32_t(owner),
+                                     uint8_t((a.access & kWrite ? kRead | kWrite : 0) | (a.access & kReadDepth))});
+        }
+        p.accessEnd = uint32_t(accesses_.size());
+    }
+}
+
+void FrameGraph::setSharedDepth(FrameGraphResource target, FrameGraphResource owner) {
+    const int r = resourceIndex(target);
+    const int o = owner.valid() ? resourceIndex(owner) : -1;
+    if (r < 0 || resources_[size_t(r)].imported || (owner.valid() && (o < 0 || o == r))) {
+        if (declError_.empty()) declError_ = "setSharedDepth: not a virtual target of this frame";
+        return;
+    }
+    resources_[size_t(r)].sharedDepthOf = o;
+    if (o >= 0) resources_[size_t(r)].desc.depth = DepthFormat::None;
+    compiled_ = false;
+}
+
+bool FrameGraph::declared(uint32_t pass, int resource) const {
+    const Pass& p = passes_[pass];
+    for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i)
+        if (int(accesses_[i].resource) == resource) return true;
+    return false;
+}
+
+bool FrameGraph::fail(std::string message) {
+    if (report_.error.empty()) report_.error = std::move(message);
+    compiled_ = false;
+    return false;
+}
+
+bool FrameGraph::compile() {
+    compiled_ = false;
+    report_.error.assign(declError_);
+    if (!report_.error.empty()) return false;  // a declaration already failed
+    expandAccesses();
+
+    for (uint32_t i = 0; i < resourceCount_; ++i) {
+        const Resource& r = resources_[i];
+        if (r.imported) {
+            if (!pool_.isValid(r.handle)) return fail("imported target '" + r.name + "': stale or invalid handle");
+            continue;
+        }
+        if (r.desc.sharedDepth.valid())
+            return fail("target '" + r.name + "': use TargetDesc::sharedDepthOf, not a pool handle");
+        RenderTargetDesc check = r.desc;
+        if (r.sharedDepthOf >= 0) {
+            check.sharedDepth = {0, 1};  // stands in for the owner's handle, acquired later
+            const Resource& o = resources_[size_t(r.sharedDepthOf)];
+            if (o.desc.depth == DepthFormat::None || o.desc.sharedDepth.valid() || o.sharedDepthOf >= 0)
+                return fail("target '" + r.name + "': shares the depth of '" + o.name +
+                            "', which does not own a depth attachment");
+            if (!sameSizeRule(r.desc, o.desc))
+                return fail("target '" + r.name + "': SharedDepthSizeMismatch: '" + o.name +
+                            "' has a different width/height/scale rule");
+        }
+        std::string message;
+        if (RttError e = validateDesc(check, pool_.limits(), &message); e != RttError::None)
+            return fail("target '" + r.name + "': " + rttErrorName(e) + ": " + message);
+    }
+
+    order_.resize(passCount_);
+    for (uint32_t i = 0; i < passCount_; ++i) order_[i] = i;
+    std::sort(order_.begin(), order_.end(), [this](uint32_t a, uint32_t b) {
+        return passes_[a].order != passes_[b].order ? passes_[a].order < passes_[b].order : a < b;
+    });
+
+    // Cull: walk back from side effects; a pass lives if a live later pass reads what it writes.
+    needed_.assign(resourceCount_, 0);
+    for (size_t pos = passCount_; pos-- > 0;) {
+        Pass& p = passes_[order_[pos]];
+        bool kept = p.sideEffect;
+        for (uint32_t i = p.accessBegin; i < p.accessEnd && !kept; ++i) {
+            const AccessRecord& a = accesses_[i];
+            kept = (a.access & kWrite) && (needed_[a.resource] || resources_[a.resource].persistent);
+        }
+        p.kept = kept;
+        if (!kept) continue;
+        for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i)
+            if (accesses_[i].access & (kRead | kReadDepth)) needed_[accesses_[i].resource] = 1;
+    }
+
+    // Lifetimes over kept passes; reuse needed_ as "written so far".
+    std::fill(needed_.begin(), needed_.end(), uint8_t(0));
+    for (uint32_t i = 0; i < resourceCount_; ++i) {
+        resources_[i].first = resources_[i].last = -1;
+        resources_[i].sampledDepth = false;
+    }
+    for (size_t pos = 0; pos < passCount_; ++pos) {
+        const Pass& p = passes_[order_[pos]];
+        if (!p.kept) continue;
+        for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i) {
+            const AccessRecord& a = accesses_[i];
+            Resource& r = resources_[a.resource];
+            if (r.first < 0) r.first = int(pos);
+            r.last = int(pos);
+            if (a.access & kReadDepth) r.sampledDepth = true;
+        }
+        for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i) {
+            const AccessRecord& a = accesses_[i];
+            const Resource& r = resources_[a.resource];
+            bool writesHere = false;
+            for (uint32_t j = p.accessBegin; j < p.accessEnd; ++j)
+                writesHere |= accesses_[j].resource == a.resource && (accesses_[j].access & kWrite);
+            if ((a.access & (kRead | kReadDepth)) && !r.imported && !needed_[a.resource] && !writesHere)
+                return fail("pass '" + p.name + "' reads '" + r.name + "', which no earlier kept pass writes");
+        }
+        for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i)
+            if (accesses_[i].access & kWrite) needed_[accesses_[i].resource] = 1;
+    }
+    for (uint32_t i = 0; i < resourceCount_; ++i) {
+        Resource& r = resources_[i];
+        if (r.sharedDepthOf < 0 || r.first < 0) continue;
+        Resource& o = resources_[size_t(r.sharedDepthOf)];  // the owner must be live when r is made
+        if (o.first < 0 || o.first > r.first) o.first = r.first;
+        if (o.last < 0) o.last = r.first;
+    }
+    for (uint32_t i = 0; i < resourceCount_; ++i) {
+        const Resource& r = resources_[i];
+        if (r.imported && r.sampledDepth && pool_.depthTexture(r.handle) == 0)
+            return fail("imported target '" + r.name + "' is read as depth but its depth is not a texture");
+    }
+
+    size_t culled = 0;
+    for (size_t pos = 0; pos < passCount_; ++pos)
+        if (!passes_[order_[pos]].kept) setAt(report_.culled, culled++, passes_[order_[pos]].name);
+    report_.culled.resize(culled);
+    culledAtCompile_ = culled;
+    compiled_ = true;
+    return true;
+}
+
+void FrameGraph::acquire(Resource& r) {
+    RenderTargetDesc d = r.desc;
+    d.name = r.name.c_str();
+    if (r.sampledDepth) d.sampledDepth = true;
+    if (r.sharedDepthOf >= 0) d.sharedDepth = resources_[size_t(r.sharedDepthOf)].handle;
+    RttError e = RttError::None;
+    r.handle = pool_.acquire(d, &e);
+    r.failed = e != RttError::None;
+    if (r.failed && report_.error.empty())
+        report_.error = "target '" + r.name + "': " + rttErrorName(e) + ": " + pool_.lastErrorMessage();
+    if (!r.failed) ++acquired_;
+}
+
+bool FrameGraph::execute() {
+    if (!compiled_) {
+        if (report_.error.empty()) report_.error = "execute() without a successful compile()";
+        return false;
+    }
+    acquired_ = 0;
+    size_t executed = 0, culled = culledAtCompile_;
+    ScopedTargetBinding saved;
+    timer_.beginFrame();
+    for (size_t pos = 0; pos < passCount_; ++pos) {
+        Pass& p = passes_[order_[pos]];
+        if (!p.kept) continue;
+        for (int sharers = 0; sharers < 2; ++sharers) {  // depth owners first
+            for (uint32_t i = 0; i < resourceCount_; ++i) {
+                Resource& r = resources_[i];
+                if (!r.imported && r.first == int(pos) && (r.sharedDepthOf >= 0) == (sharers == 1)) acquire(r);
+            }
+        }
+        p.skipped = false;
+        for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i) p.skipped |= resources_[accesses_[i].resource].failed;
+        if (!p.skipped && p.execute) {
+            gl::DebugGroup group(p.name.c_str());
+            timer_.beginPass(p.name.c_str());
+            PassContext ctx(*this, order_[pos]);
+            p.execute(ctx);
+            timer_.endPass();
+            saved.restore();
+            setAt(report_.executed, executed++, p.name);
+        } else if (p.skipped) {
+            setAt(report_.culled, culled++, p.name);
+        }
+        for (uint32_t i = 0; i < resourceCount_; ++i) {
+            Resource& r = resources_[i];
+            if (!r.imported && r.last == int(pos) && r.handle.valid()) {
+                pool_.release(r.handle);
+                r.handle = {};
+            }
+        }
+    }
+    timer_.endFrame();
+    report_.executed.resize(executed);
+    report_.culled.resize(culled);
+    buildReport();
+    bool ok = true;
+    for (uint32_t i = 0; i < resourceCount_; ++i) ok &= !resources_[i].failed;
+    return ok;
+}
+
+void FrameGraph::buildReport() {
+    report_.timings.resize(report_.executed.size());
+    for (size_t i = 0; i < report_.executed.size(); ++i) {
+        PassTiming& t = report_.timings[i];
+        t.name.assign(report_.executed[i]);
+        t.lastMs = t.medianMs = -1.0;
+        t.samples = 0;
+        timer_.stats(t.name.c_str(), &t.lastMs, &t.medianMs, &t.samples);
+    }
+    const RenderTargetPoolStats st = pool_.stats();
+    report_.targetsAcquired = acquired_;
+    report_.targetsAllocatedThisFrame = st.allocationsThisFrame;
+    report_.targetsLive = st.targetsInUse + st.targetsFree;
+    report_.timingMethod = timer_.method();
+}
+
+bool FrameGraph::isKept(const char* name) const {
+    for (uint32_t i = 0; i < passCount_; ++i)
+        if (passes_[i].name == name) return compiled_ && passes_[i].kept;
+    return false;
+}
+
+// --- PassBuilder -------------------------------------------------------------------------------
+
+FrameGraphResource PassBuilder::read(FrameGraphResource target) {
+    graph_.addAccess(pass_, target, FrameGraph::kRead);
+    return target;
+}
+
+FrameGraphResource PassBuilder::readDepth(FrameGraphResource target) {
+    graph_.addAccess(pass_, target, FrameGraph::kReadDepth);
+    return target;
+}
+
+FrameGraphResource PassBuilder::write(FrameGraphResource target) {
+    graph_.addAccess(pass_, target, FrameGraph::kWrite);
+    return target;
+}
+
+void PassBuilder::sideEffect() { graph_.passes_[pass_].sideEffect = true; }
+
+}  // namespace cube::rtt

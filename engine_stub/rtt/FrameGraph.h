@@ -1,0 +1,157 @@
+#pragma once
+// Declared render passes for one frame (Filament-style, with bgfx-style names and order keys).
+//
+//   graph.reset();
+//   auto depth = graph.create("scene_depth", depthDesc);
+//   graph.addPass("depth_prepass", 100, [&](PassBuilder& b) { b.write(depth); },
+//                 [&](PassContext& ctx) { ctx.bindForDraw(depth); ... });
+//   ...
+//   graph.compile();   // culls
+//   graph.execute();   // acquires, runs, releases, times
+//
+// Passes run sorted by (order, declaration index). compile() walks back from side-effect passes
+// (and writers of persistent imports): a pass is kept only if a kept pass after it reads a
+// target it writes. Culled passes never run; virtual targets only kept passes use are acquired
+// from the pool right before their first use and released right after their last use, so
+// later passes can reuse them in the same frame. Writes are not versioned: every kept-later
+// reader of a target keeps every earlier writer of it (passes may blend onto earlier results).
+//
+// Rebuild it every frame: reset() keeps the graph's storage, and the pool hands back the same
+// GL objects, so a steady frame creates no GL objects and allocates little on the heap
+// (std::function may for large captures).
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+#include "rtt/FrameGraphReport.h"
+#include "rtt/FrameGraphResource.h"
+#include "rtt/PassBuilder.h"
+#include "rtt/PassContext.h"
+#include "rtt/PassTimer.h"
+#include "rtt/RenderTargetDesc.h"
+
+namespace cube::rtt {
+
+class RenderTargetPool;
+
+class FrameGraph {
+public:
+    using ExecuteFn = std::function<void(PassContext&)>;
+
+    /// A virtual target: a RenderTargetDesc (whose sharedDepth pool handle must stay unset) plus
+    /// the virtual target whose depth it uses. Defaults: as RenderTargetDesc, no shared depth.
+    struct TargetDesc : RenderTargetDesc {
+        FrameGraphResource sharedDepthOf;  ///< that target must own its depth (depth != None)
+    };
+
+    /// `softwareRenderer`: Platform::softwareRenderer(), picks the timing method under Auto.
+    FrameGraph(RenderTargetPool& pool, bool softwareRenderer, TimingMode timing = TimingMode::Auto);
+    ~FrameGraph();
+    FrameGraph(const FrameGraph&) = delete;
+    FrameGraph& operator=(const FrameGraph&) = delete;
+
+    /// Forgets the declared passes and targets (keeps storage and timing history).
+    void reset();
+
+    /// A virtual target, allocated only if a kept pass uses it.
+    FrameGraphResource create(const char* name, const RenderTargetDesc& desc);
+    FrameGraphResource create(const char* name, const TargetDesc& desc);
+    /// Makes a virtual target use `owner`'s depth (or, with an invalid owner, stop sharing and
+    /// keep desc.depth None) any time before compile(): a host can declare its scene colour
+    /// first and decide once the plugin has declared its passes whether it shares the prepass
+    /// z-buffer. Clears the target's own depth format.
+    void setSharedDepth(FrameGraphResource target, FrameGraphResource owner);
+    /// An existing pool target (the host's scene colour, a mirror texture kept across frames).
+    /// `persistent`: its contents outlive the frame, so passes writing it are never culled.
+    FrameGraphResource import(const char* name, RenderTargetHandle handle, bool persistent = false);
+
+    /// Declares a pass; `setup(PassBuilder&)` runs now and declares reads and writes.
+    template <class Setup>
+    void addPass(const char* name, int order, Setup&& setup, ExecuteFn execute) {
+        PassBuilder builder = beginPass(name, order, std::move(execute));
+        setup(builder);
+    }
+    /// Same, from lists (what a host adapter forwarding fx::FrameBuilder::addPass needs).
+    void addPass(const char* name, int order, std::initializer_list<FrameGraphResource> reads,
+                 std::initializer_list<FrameGraphResource> writes, ExecuteFn execute,
+                 bool sideEffect = false);
+    /// Same, from arrays.
+    void addPass(const char* name, int order, const FrameGraphResource* reads, size_t readCount,
+                 const FrameGraphResource* writes, size_t writeCount, ExecuteFn execute,
+                 bool sideEffect = false);
+
+    /// Sorts and culls. False (report().error says why) on a broken graph: a bad descriptor,
+    /// a shared depth whose owner has no depth, a kept pass reading a virtual target that no
+    /// earlier kept pass writes, readDepth on an imported renderbuffer depth.
+    bool compile();
+    /// Runs the kept passes (compile() first). Framebuffer bindings and viewport are restored
+    /// after each pass. Returns false when not compiled or a target could not be allocated (the
+    /// passes using it are skipped and reported as culled; report().error says why).
+    bool execute();
+
+    const FrameGraphReport& report() const { return report_; }
+    const char* timingMethod() const { return timer_.method(); }
+    const PassTimer& timer() const { return timer_; }
+    RenderTargetPool& pool() const { return pool_; }
+    /// True when the pass named `name` was kept by the last compile().
+    bool isKept(const char* name) const;
+
+private:
+    friend class PassBuilder;
+    friend class PassContext;
+    enum Access : uint8_t { kRead = 1, kWrite = 2, kReadDepth = 4 };
+    struct Pass {
+        std::string name;
+        int order = 0;
+        uint32_t declaredBegin = 0, declaredEnd = 0;  // in declared_
+        uint32_t accessBegin = 0, accessEnd = 0;      // in accesses_ (compile: with implicit ones)
+        bool sideEffect = false;
+        bool kept = false;
+        bool skipped = false;
+        ExecuteFn execute;
+    };
+    struct Resource {
+        std::string name;
+        RenderTargetDesc desc;
+        int sharedDepthOf = -1;
+        bool imported = false;
+        bool persistent = false;
+        bool sampledDepth = false;
+        bool failed = false;
+        RenderTargetHandle handle;
+        int first = -1, last = -1;  // positions in order_ of the first and last kept use
+    };
+    struct AccessRecord {
+        uint32_t resource;
+        uint8_t access;
+    };
+
+    PassBuilder beginPass(const char* name, int order, ExecuteFn execute);
+    void addAccess(uint32_t pass, FrameGraphResource target, uint8_t access);
+    void expandAccesses();
+    int resourceIndex(FrameGraphResource target) const;
+    bool declared(uint32_t pass, int resource) const;
+    bool fail(std::string message);
+    void acquire(Resource& r);
+    void buildReport();
+
+    RenderTargetPool& pool_;
+    PassTimer timer_;
+    std::vector<Pass> passes_;
+    uint32_t passCount_ = 0;
+    std::vector<Resource> resources_;
+    uint32_t resourceCount_ = 0;
+    std::vector<AccessRecord> declared_;
+    std::vector<AccessRecord> accesses_;
+    std::vector<uint32_t> order_;  // pass indices sorted by (order, declaration)
+    std::vector<uint8_t> needed_;
+    bool compiled_ = false;
+    size_t culledAtCompile_ = 0;
+    int acquired_ = 0;
+    std::string declError_;
+    FrameGraphReport report_;
+};
+
+}  // namespace cube::rtt

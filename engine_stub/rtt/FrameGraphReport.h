@@ -1,0 +1,27 @@
+#pragma once
+// What the last FrameGraph::execute did, for logs, HUDs and benchmark tables.
+#include <string>
+#include <vector>
+
+namespace cube::rtt {
+
+struct PassTiming {
+    std::string name;
+    double lastMs = -1.0;    ///< latest sample (-1 until one arrived: GPU results lag a few frames)
+    double medianMs = -1.0;  ///< running median over the timer's history
+    int samples = 0;
+};
+
+/// Defaults: empty, nothing run.
+struct FrameGraphReport {
+    std::vector<std::string> executed;  ///< passes run, in run order
+    std::vector<std::string> culled;    ///< passes culled, in run order
+    std::vector<PassTiming> timings;    ///< one per executed pass, same order
+    int targetsAcquired = 0;            ///< virtual targets the frame took from the pool
+    int targetsAllocatedThisFrame = 0;  ///< pool creations since RenderTargetPool::beginFrame
+    int targetsLive = 0;                ///< pool targets holding GL objects (in use + free)
+    const char* timingMethod = "off";   ///< "cpu-glfinish" | "gpu-timer-query" | "off"
+    std::string error;                  ///< compile/allocation problem (empty when none)
+};
+
+}  // namespace cube::rtt
