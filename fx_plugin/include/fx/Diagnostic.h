@@ -20,6 +20,9 @@ enum class ErrorCode {
     NegativeCount,   ///< a count (capacity, frames) below zero
     InvalidEnum,     ///< a word not in the key's list (type, technique, blend, surface)
     DuplicateName,   ///< two reactions with one name
+    DuplicateKey,    ///< one key twice in the same map (YAML would silently keep one)
+    FileTooLarge,    ///< a file or text past the loader's size limit (read nothing of it)
+    TooManyErrors,   ///< the per-file diagnostic limit was reached; the rest were not listed
 };
 
 const char* errorCodeName(ErrorCode code);

@@ -53,6 +53,8 @@ struct PluginImports {
     uint32_t apiVersion = kApiVersion;
     HostAdapter* host = nullptr;
     std::string shaderDir;   ///< where shaders/ lives; empty = the build's source tree
+    std::string dataDir;     ///< where data/ (smoke atlas) lives; empty = the build's source tree
+    uint64_t seed = 0;       ///< global random seed for the reactions; 0 = the plugin's default
 };
 
 }  // namespace fx

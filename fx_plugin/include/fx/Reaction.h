@@ -1,0 +1,138 @@
+#pragma once
+// Reaction descriptions: what a reactions/*.yaml file says, after validation. Plain data, no YAML.
+// Every field carries its default, unit and the range the loader enforces; reactions/README.md is
+// the user-facing copy of these tables. Defaults that depend on the reaction type are resolved in
+// one place, defaultReaction() below; the member initialisers are the wheel_smoke defaults.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "fx/Plugin.h"  // Technique
+#include "fx/Types.h"   // Surface
+
+namespace fx {
+
+/// Which per-type behaviour ("continue") a reaction runs.
+enum class ReactionType : uint8_t { WheelSmoke = 0, Dust, CollisionBurst };
+/// Which wheels a wheel-driven reaction watches.
+enum class WheelSet : uint8_t { Rear = 0, Front, All };
+/// How particles combine with what is behind them. Additive is order-independent (never sorted).
+enum class BlendMode : uint8_t { Alpha = 0, Premultiplied, Additive };
+
+constexpr uint32_t surfaceBit(Surface s) { return 1u << static_cast<uint32_t>(s); }
+
+/// When a reaction emits. Defaults (wheel_smoke): slip >= 0.35 on asphalt or kerb, rear wheels.
+struct TriggerDesc {
+    float slipThreshold = 0.35f;   ///< [0, 1] combined slip where emission starts
+    uint32_t surfaces = surfaceBit(Surface::Asphalt) | surfaceBit(Surface::Kerb);  ///< surfaceBit() mask
+    WheelSet wheels = WheelSet::Rear;
+    float minSpeed = 0.0f;         ///< [0, 200] m/s hub speed below which nothing is emitted
+    float collisionThreshold = 0.2f;  ///< [0, 1] collision amount that fires a collision_burst
+};
+
+/// How many particles. Defaults: 80/s at full slip, no burst, 1024 slots.
+struct EmissionDesc {
+    float rate = 80.0f;            ///< [0, 100000] particles/s at full strength (wheel_smoke, dust)
+    int burst = 0;                 ///< [0, capacity] particles per collision at amount 1 (collision_burst)
+    int capacity = 1024;           ///< [1, 1000000] pool slots, allocated once at load
+    float spawnHeight = 0.15f;     ///< [-10, 10] m above the contact point
+    float jitterRadius = 0.25f;    ///< [0, 10] m, spawn points uniform in a horizontal disc
+};
+
+/// One stop of the colour ramp: colour at life fraction t, piecewise linear in between.
+struct ColorStop {
+    float t = 0.0f;                ///< [0, 1] life fraction, non-decreasing along the ramp
+    glm::vec4 rgba{1.0f};          ///< each channel [0, 1], straight (not premultiplied) alpha
+};
+
+/// One particle's life. Defaults: 2-3.5 s, grows 0.4 m -> 3 m, rises at 0.6 m/s.
+struct ParticleDesc {
+    float lifetimeMin = 2.0f;      ///< [0.01, 60] s
+    float lifetimeMax = 3.5f;      ///< [0.01, 60] s, >= lifetimeMin
+    float startSize = 0.4f;        ///< [0.001, 100] m, billboard edge length at birth
+    float endSize = 3.0f;          ///< [0.001, 100] m, at death (growth curve: see sim/Lifecycle.h)
+    float sizeVariation = 0.2f;    ///< [0, 0.9] each particle's sizes scaled by 1 +- this
+    float riseSpeed = 0.6f;        ///< [-50, 50] m/s terminal upward speed (buoyancy)
+    float drag = 1.2f;             ///< [0, 1000] 1/s, rate at which velocity relaxes to terminal
+    float windFactor = 1.0f;       ///< [0, 10] share of the ambient wind in the terminal velocity
+    float spreadSpeed = 0.5f;      ///< [0, 100] m/s random initial speed, random upward-hemisphere direction
+    float inheritVelocity = 0.3f;  ///< [0, 2] share of the wheel hub velocity at birth
+    float spinMin = -0.6f;         ///< [-50, 50] rad/s
+    float spinMax = 0.6f;          ///< [-50, 50] rad/s, >= spinMin
+    float fadeIn = 0.08f;          ///< [0, 1] life fraction over which alpha rises 0 -> 1
+    float fadeOut = 0.6f;          ///< [0, 1] life fraction over which alpha falls 1 -> 0; fadeIn + fadeOut <= 1
+    std::vector<ColorStop> colorRamp{ColorStop{0.0f, glm::vec4(1.0f)}, ColorStop{1.0f, glm::vec4(1.0f)}};
+    int atlasFirst = 0;            ///< [0, 3] first frame of the 2x2 atlas (row-major from top-left)
+    int atlasCount = 4;            ///< [1, 4] frames picked at random per particle; first + count <= 4
+};
+
+/// How it is drawn. Defaults: soft particles, alpha blending, sorted.
+struct RenderDesc {
+    Technique technique = Technique::Soft;  ///< Hard, Soft or Spherical (never FromReaction)
+    BlendMode blend = BlendMode::Alpha;
+    float softness = 0.5f;         ///< [0.001, 100] m of depth difference over which the soft fade reaches 1
+    float contrastPower = 1.0f;    ///< [0.1, 16] exponent of the soft-fade contrast curve, 1 = linear
+    float nearFade = 0.5f;         ///< [0, 100] m in front of the near plane over which particles fade out
+    bool sortBackToFront = true;   ///< ignored (never sorted) for additive blending
+};
+
+/// One reaction. `name` and `type` are required in the file; the rest default per type.
+struct ReactionDesc {
+    std::string name;              ///< unique across every loaded file, 1-64 of [A-Za-z0-9_.-]
+    ReactionType type = ReactionType::WheelSmoke;
+    TriggerDesc trigger;
+    EmissionDesc emission;
+    ParticleDesc particle;
+    RenderDesc render;
+    std::string sourceFile;        ///< where it was read, for messages
+    int sourceLine = 0;            ///< 1-based line of the reaction's first key
+};
+
+/// The defaults for one type; the loader starts from these and overlays the file's keys.
+/// dust: slip >= 0, grass/gravel/sand, all wheels, min_speed 2 m/s.
+/// collision_burst: burst 24, all wheels (wheels and surfaces are not used by bursts).
+inline ReactionDesc defaultReaction(ReactionType type) {
+    ReactionDesc d;
+    d.type = type;
+    switch (type) {
+    case ReactionType::WheelSmoke:
+        break;
+    case ReactionType::Dust:
+        d.trigger.slipThreshold = 0.0f;
+        d.trigger.surfaces = surfaceBit(Surface::Grass) | surfaceBit(Surface::Gravel) |
+                             surfaceBit(Surface::Sand);
+        d.trigger.wheels = WheelSet::All;
+        d.trigger.minSpeed = 2.0f;
+        break;
+    case ReactionType::CollisionBurst:
+        d.trigger.wheels = WheelSet::All;
+        d.emission.burst = 24;
+        break;
+    }
+    return d;
+}
+
+/// Every reaction of one load (a file, or a directory of files in sorted order).
+struct ReactionSet {
+    std::vector<ReactionDesc> reactions;
+    std::vector<std::string> files;  ///< the files the set was read from, in load order
+};
+
+/// Limits the loader enforces beyond per-key ranges (guards against hostile input).
+constexpr int kMaxCapacity = 1000000;            ///< per reaction
+constexpr long long kMaxTotalCapacity = 4000000; ///< summed over one set (about 250 MB of pools)
+constexpr int kMaxReactionsPerFile = 256;
+constexpr int kMaxColorStops = 16;
+constexpr int kMaxNesting = 16;                  ///< collection levels in a file
+constexpr size_t kMaxFileBytes = 4u << 20;       ///< 4 MiB
+constexpr size_t kMaxDiagnosticsPerFile = 100;   ///< then one TooManyErrors
+
+const char* reactionTypeName(ReactionType type);
+const char* wheelSetName(WheelSet wheels);
+const char* blendModeName(BlendMode blend);
+const char* techniqueName(Technique technique);
+const char* surfaceName(Surface surface);
+
+}  // namespace fx

@@ -1,0 +1,366 @@
+#include "ReactionLoader.h"
+
+#include <algorithm>
+#include <climits>
+#include <cstddef>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <new>
+#include <sstream>
+#include <system_error>
+
+#include <yaml-cpp/depthguard.h>    // YAML::DeepRecursion (not included by yaml.h)
+#include <yaml-cpp/eventhandler.h>  // YAML::EventHandler (idem)
+#include <yaml-cpp/yaml.h>
+
+#include "ReactionSchema.h"
+#include "YamlCheck.h"
+
+namespace fx {
+namespace {
+
+namespace fs = std::filesystem;
+
+void add(Diagnostics* diags, ErrorCode code, const std::string& file, int line, int column,
+         const std::string& key, const std::string& message) {
+    if (!diags) return;
+    Diagnostic d;
+    d.code = code;
+    d.file = file;
+    d.line = line;
+    d.column = column;
+    d.key = key;
+    d.message = message;
+    diags->push_back(std::move(d));
+}
+
+// Records where each document starts; builds nothing.
+class DocumentCounter : public YAML::EventHandler {
+public:
+    explicit DocumentCounter(std::vector<YAML::Mark>* starts) : starts_(starts) {}
+    void OnDocumentStart(const YAML::Mark& mark) override { starts_->push_back(mark); }
+    void OnDocumentEnd() override {}
+    void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  const std::string&) override {}
+    void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                         YAML::EmitterStyle::value) override {}
+    void OnSequenceEnd() override {}
+    void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                    YAML::EmitterStyle::value) override {}
+    void OnMapEnd() override {}
+
+private:
+    std::vector<YAML::Mark>* starts_;
+};
+
+YAML::Mark markAt(int line0, int column0) {
+    YAML::Mark m = YAML::Mark::null_mark();
+    m.line = line0;
+    m.column = column0;
+    return m;
+}
+
+// YAML text is Unicode; C0 controls other than tab/LF/CR, DEL, and malformed UTF-8 cannot occur
+// in a YAML file. Rejecting them here gives binary garbage a clear message and keeps bytes the
+// parser was never meant to see away from it. Reports the first offending byte only.
+bool checkEncoding(YamlCheck& check, const std::string& text) {
+    const auto* s = reinterpret_cast<const unsigned char*>(text.data());
+    const size_t n = text.size();
+    int line = 0, column = 0;
+    size_t i = (n >= 3 && s[0] == 0xEF && s[1] == 0xBB && s[2] == 0xBF) ? 3 : 0;  // UTF-8 BOM
+    while (i < n) {
+        unsigned char c = s[i];
+        size_t len = 0;
+        bool ok = true;
+        if (c < 0x80) {
+            len = 1;
+            ok = c >= 0x20 || c == '\t' || c == '\n' || c == '\r';
+            ok = ok && c != 0x7F;
+        } else if (c >= 0xC2 && c <= 0xDF) {
+            len = 2;
+        } else if (c >= 0xE0 && c <= 0xEF) {
+            len = 3;
+        } else if (c >= 0xF0 && c <= 0xF4) {
+            len = 4;
+        } else {
+            ok = false;
+        }
+        if (ok && len > 1) {
+            ok = i + len <= n;
+            for (size_t k = 1; ok && k < len; ++k) ok = (s[i + k] & 0xC0) == 0x80;
+            if (ok && len == 3) {
+                ok = !(c == 0xE0 && s[i + 1] < 0xA0) && !(c == 0xED && s[i + 1] >= 0xA0);
+            } else if (ok && len == 4) {
+                ok = !(c == 0xF0 && s[i + 1] < 0x90) && !(c == 0xF4 && s[i + 1] >= 0x90);
+            }
+        }
+        if (!ok) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "0x%02X", c);
+            check.report(ErrorCode::SyntaxError, markAt(line, column), "",
+                         std::string("binary data: byte ") + buf +
+                             " cannot appear in a YAML text file (expected UTF-8 text)");
+            return false;
+        }
+        if (c == '\n') {
+            ++line;
+            column = 0;
+        } else {
+            ++column;
+        }
+        i += len;
+    }
+    return true;
+}
+
+bool loadTextChecked(const std::string& text, YamlCheck& check, ReactionSet* set) {
+    if (text.size() > kMaxFileBytes) {
+        check.report(ErrorCode::FileTooLarge, YAML::Mark::null_mark(), "",
+                     "file is " + std::to_string(text.size()) + " bytes; expected at most " +
+                         std::to_string(kMaxFileBytes));
+        return false;
+    }
+    if (!checkEncoding(check, text)) return false;
+
+    // Pass 1, events only: syntax errors anywhere in the text, and the document count. Not
+    // YAML::LoadAll: on some malformed input (a stray ',' at document level) yaml-cpp 0.7's
+    // parser yields empty documents forever without consuming anything, and LoadAll collects
+    // them until memory runs out. Counting with a cap and checking for progress avoids that.
+    std::vector<YAML::Mark> starts;
+    try {
+        std::istringstream stream(text);
+        YAML::Parser parser(stream);
+        DocumentCounter counter(&starts);
+        while (starts.size() < 2 && parser.HandleNextDocument(counter)) {
+        }
+    } catch (const YAML::DeepRecursion& e) {
+        check.report(ErrorCode::TooDeep, e.mark, "",
+                     "nesting deeper than " + std::to_string(kMaxNesting) + " levels (" + e.msg +
+                         ")");
+        return false;
+    } catch (const YAML::Exception& e) {
+        check.report(ErrorCode::SyntaxError, e.mark, "", "malformed YAML: " + e.msg);
+        return false;
+    }
+    if (starts.size() >= 2) {
+        if (starts[1].pos == starts[0].pos) {
+            const size_t at = static_cast<size_t>(std::max(starts[0].pos, 0));
+            const char c = at < text.size() ? text[at] : ' ';
+            check.report(ErrorCode::SyntaxError, starts[0], "",
+                         c > ' ' ? std::string("malformed YAML: unexpected '") + c + "'"
+                                 : std::string("malformed YAML: the parser cannot continue here"));
+        } else {
+            check.report(ErrorCode::SyntaxError, starts[1], "",
+                         "expected one YAML document, found a second one");
+        }
+        return false;
+    }
+
+    // Pass 2: the node tree of the one document.
+    YAML::Node root;
+    try {
+        root = YAML::Load(text);
+    } catch (const YAML::Exception& e) {  // pass 1 accepted it, so this is not expected
+        check.report(ErrorCode::SyntaxError, e.mark, "", "malformed YAML: " + e.msg);
+        return false;
+    }
+    if (starts.empty() || root.IsNull()) {
+        check.report(ErrorCode::EmptyFile, starts.empty() ? markAt(0, 0) : root.Mark(), "",
+                     "the file holds no reactions; expected 'reactions:' with a list "
+                     "('reactions: []' for none)");
+        return false;
+    }
+    readReactionDocument(check, root, &set->reactions);
+    return check.errors() == 0;
+}
+
+}  // namespace
+
+bool loadReactionText(const std::string& text, const std::string& nameForMessages,
+                      ReactionSet* out, Diagnostics* diags) {
+    YamlCheck check(nameForMessages, diags);
+    const size_t firstDiag = diags ? diags->size() : 0;
+    ReactionSet set;
+    bool ok = false;
+    // Nothing may escape to the caller (the fuzzer, a hot reload in the middle of a frame):
+    // yaml-cpp reports through exceptions, and allocation can fail.
+    try {
+        ok = loadTextChecked(text, check, &set);
+    } catch (const std::bad_alloc&) {
+        check.report(ErrorCode::FileTooLarge, YAML::Mark::null_mark(), "",
+                     "out of memory while reading the file");
+    } catch (const std::exception& e) {
+        check.report(ErrorCode::SyntaxError, YAML::Mark::null_mark(), "",
+                     std::string("unreadable YAML: ") + e.what());
+    } catch (...) {
+        check.report(ErrorCode::SyntaxError, YAML::Mark::null_mark(), "", "unreadable YAML");
+    }
+    if (!ok || check.errors() != 0) {
+        // In file order (the schema reads keys in its own order), the overflow note last.
+        if (diags) {
+            std::stable_sort(diags->begin() + static_cast<std::ptrdiff_t>(firstDiag), diags->end(),
+                             [](const Diagnostic& a, const Diagnostic& b) {
+                                 auto rank = [](const Diagnostic& d) {
+                                     return d.code == ErrorCode::TooManyErrors ? INT_MAX : d.line;
+                                 };
+                                 return rank(a) != rank(b) ? rank(a) < rank(b) : a.column < b.column;
+                             });
+        }
+        return false;
+    }
+    set.files.push_back(nameForMessages);
+    if (out) *out = std::move(set);
+    return true;
+}
+
+bool readReactionFileText(const std::string& path, std::string* text, Diagnostics* diags) {
+    std::error_code ec;
+    fs::file_status st = fs::status(path, ec);
+    if (ec || !fs::exists(st)) {
+        add(diags, ErrorCode::FileNotFound, path, 0, 0, "", "cannot open: no such file");
+        return false;
+    }
+    if (!fs::is_regular_file(st)) {
+        add(diags, ErrorCode::FileNotFound, path, 0, 0, "", "cannot open: not a regular file");
+        return false;
+    }
+    uintmax_t size = fs::file_size(path, ec);
+    if (ec) {
+        add(diags, ErrorCode::FileNotFound, path, 0, 0, "", "cannot open: " + ec.message());
+        return false;
+    }
+    if (size > kMaxFileBytes) {
+        add(diags, ErrorCode::FileTooLarge, path, 0, 0, "",
+            "file is " + std::to_string(size) + " bytes; expected at most " +
+                std::to_string(kMaxFileBytes));
+        return false;
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        add(diags, ErrorCode::FileNotFound, path, 0, 0, "", "cannot open for reading");
+        return false;
+    }
+    // Read at most one byte past the limit: the file may have grown since file_size().
+    std::string data(static_cast<size_t>(size), '\0');
+    in.read(data.data(), static_cast<std::streamsize>(data.size()));
+    data.resize(static_cast<size_t>(in.gcount()));
+    char extra = 0;
+    while (data.size() <= kMaxFileBytes && in.get(extra)) data.push_back(extra);
+    if (data.size() > kMaxFileBytes) {
+        add(diags, ErrorCode::FileTooLarge, path, 0, 0, "",
+            "file grew past " + std::to_string(kMaxFileBytes) + " bytes while being read");
+        return false;
+    }
+    *text = std::move(data);
+    return true;
+}
+
+bool listReactionFiles(const std::string& dir, std::vector<std::string>* files,
+                       Diagnostics* diags) {
+    std::error_code ec;
+    std::vector<std::string> found;
+    fs::directory_iterator it(dir, ec), end;
+    if (ec) {
+        add(diags, ErrorCode::FileNotFound, dir, 0, 0, "", "cannot list directory: " + ec.message());
+        return false;
+    }
+    for (; it != end; it.increment(ec)) {
+        if (ec) break;
+        const fs::path& p = it->path();
+        std::error_code fileEc;
+        if (p.extension() == ".yaml" && it->is_regular_file(fileEc)) found.push_back(p.string());
+    }
+    if (ec) {
+        add(diags, ErrorCode::FileNotFound, dir, 0, 0, "", "cannot list directory: " + ec.message());
+        return false;
+    }
+    std::sort(found.begin(), found.end());
+    *files = std::move(found);
+    return true;
+}
+
+bool loadReactionSources(const std::vector<ReactionSource>& sources, ReactionSet* out,
+                         Diagnostics* diags) {
+    ReactionSet merged;
+    bool ok = true;
+    long long totalCapacity = 0;
+    bool capacityReported = false;
+    for (const ReactionSource& src : sources) {
+        ReactionSet one;
+        if (!loadReactionText(src.text, src.name, &one, diags)) {
+            ok = false;
+            continue;
+        }
+        for (size_t i = 0; i < one.reactions.size(); ++i) {
+            const ReactionDesc& d = one.reactions[i];
+            const std::string key = "reactions[" + std::to_string(i) + "]";
+            for (const ReactionDesc& earlier : merged.reactions) {
+                if (earlier.name == d.name) {
+                    add(diags, ErrorCode::DuplicateName, d.sourceFile, d.sourceLine, 0,
+                        key + ".name",
+                        "reaction name '" + d.name + "' is already used at " +
+                            earlier.sourceFile + ":" + std::to_string(earlier.sourceLine));
+                    ok = false;
+                    break;
+                }
+            }
+            totalCapacity += d.emission.capacity;
+            if (totalCapacity > kMaxTotalCapacity && !capacityReported) {
+                add(diags, ErrorCode::OutOfRange, d.sourceFile, d.sourceLine, 0,
+                    key + ".emission.capacity",
+                    "the loaded reactions' capacities add up to more than " +
+                        std::to_string(kMaxTotalCapacity) + " particles");
+                capacityReported = true;
+                ok = false;
+            }
+            merged.reactions.push_back(d);
+        }
+        merged.files.push_back(src.name);
+    }
+    if (!ok) return false;
+    if (out) *out = std::move(merged);
+    return true;
+}
+
+bool loadReactionFile(const std::string& path, ReactionSet* out, Diagnostics* diags) {
+    std::string text;
+    if (!readReactionFileText(path, &text, diags)) return false;
+    return loadReactionText(text, path, out, diags);
+}
+
+bool loadReactionDirectory(const std::string& dir, ReactionSet* out, Diagnostics* diags) {
+    std::vector<std::string> files;
+    if (!listReactionFiles(dir, &files, diags)) return false;
+    if (files.empty()) {
+        add(diags, ErrorCode::FileNotFound, dir, 0, 0, "", "directory holds no *.yaml file");
+        return false;
+    }
+    std::vector<ReactionSource> sources;
+    bool ok = true;
+    for (const std::string& f : files) {
+        ReactionSource src;
+        src.name = f;
+        if (readReactionFileText(f, &src.text, diags)) {
+            sources.push_back(std::move(src));
+        } else {
+            ok = false;
+        }
+    }
+    // Validate what could be read even when a file could not, so every error is reported.
+    ReactionSet set;
+    ok = loadReactionSources(sources, &set, diags) && ok;
+    if (!ok) return false;
+    if (out) *out = std::move(set);
+    return true;
+}
+
+bool loadReactionPath(const std::string& path, ReactionSet* out, Diagnostics* diags) {
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) return loadReactionDirectory(path, out, diags);
+    return loadReactionFile(path, out, diags);
+}
+
+}  // namespace fx

@@ -1,0 +1,300 @@
+#include "ReactionSchema.h"
+
+#include <string>
+
+namespace fx {
+namespace {
+
+using YAML::Node;
+
+constexpr std::initializer_list<const char*> kTypeWords = {"wheel_smoke", "dust",
+                                                           "collision_burst"};
+constexpr std::initializer_list<const char*> kSurfaceWords = {"asphalt", "kerb", "grass",
+                                                              "gravel", "sand"};
+
+std::string indexed(const std::string& path, size_t i) {
+    return path + "[" + std::to_string(i) + "]";
+}
+
+// An optional number: absent keeps the default; returns false only when given and invalid.
+bool optNumber(YamlCheck& c, const MapReader& m, const char* key, double lo, double hi,
+               float* out) {
+    const Node* n = m.get(key);
+    return !n || c.number(*n, m.path(key), lo, hi, out);
+}
+
+bool optInteger(YamlCheck& c, const MapReader& m, const char* key, long long lo, long long hi,
+                int* out) {
+    const Node* n = m.get(key);
+    return !n || c.integer(*n, m.path(key), lo, hi, out);
+}
+
+// `[min, max]` (or one number meaning [v, v]), each in [lo, hi], min <= max.
+void optRange(YamlCheck& c, const MapReader& m, const char* key, double lo, double hi,
+              float* outMin, float* outMax) {
+    const Node* n = m.get(key);
+    if (!n) return;
+    const std::string p = m.path(key);
+    if (n->IsScalar()) {
+        float v = 0.0f;
+        if (c.number(*n, p, lo, hi, &v)) *outMin = *outMax = v;
+        return;
+    }
+    if (!c.isList(*n, p, 2, 2)) return;
+    float v[2] = {*outMin, *outMax};
+    bool ok = true;
+    size_t i = 0;
+    for (auto it = n->begin(); it != n->end(); ++it, ++i) ok = c.number(*it, indexed(p, i), lo, hi, &v[i]) && ok;
+    if (!ok) return;
+    if (v[0] > v[1]) {
+        c.report(ErrorCode::OutOfRange, n->Mark(), p,
+                 "expected [min, max] with min <= max, got [" + std::to_string(v[0]) + ", " +
+                     std::to_string(v[1]) + "]");
+        return;
+    }
+    *outMin = v[0];
+    *outMax = v[1];
+}
+
+template <class Enum>
+void optChoice(YamlCheck& c, const MapReader& m, const char* key,
+               std::initializer_list<const char*> words, Enum first, Enum* out) {
+    const Node* n = m.get(key);
+    int i = 0;
+    if (n && c.choice(*n, m.path(key), words, &i)) {
+        *out = static_cast<Enum>(static_cast<int>(first) + i);
+    }
+}
+
+void readTrigger(YamlCheck& c, const Node& node, const std::string& path, TriggerDesc* t) {
+    if (!c.isMap(node, path)) return;
+    MapReader m(c, node, path,
+                {"slip_threshold", "surfaces", "wheels", "min_speed", "collision_threshold"});
+    optNumber(c, m, "slip_threshold", 0.0, 1.0, &t->slipThreshold);
+    optNumber(c, m, "min_speed", 0.0, 200.0, &t->minSpeed);
+    optNumber(c, m, "collision_threshold", 0.0, 1.0, &t->collisionThreshold);
+    optChoice(c, m, "wheels", {"rear", "front", "all"}, WheelSet::Rear, &t->wheels);
+    if (const Node* n = m.get("surfaces")) {
+        const std::string p = m.path("surfaces");
+        if (c.isList(*n, p, 1, 8)) {
+            uint32_t mask = 0;
+            bool ok = true;
+            size_t i = 0;
+            for (auto it = n->begin(); it != n->end(); ++it, ++i) {
+                int s = 0;
+                if (c.choice(*it, indexed(p, i), kSurfaceWords, &s)) {
+                    mask |= surfaceBit(static_cast<Surface>(s));
+                } else {
+                    ok = false;
+                }
+            }
+            if (ok) t->surfaces = mask;
+        }
+    }
+}
+
+void readEmission(YamlCheck& c, const Node& node, const std::string& path, EmissionDesc* e) {
+    if (!c.isMap(node, path)) return;
+    MapReader m(c, node, path, {"rate", "burst", "capacity", "spawn_height", "jitter_radius"});
+    optNumber(c, m, "rate", 0.0, 100000.0, &e->rate);
+    optNumber(c, m, "spawn_height", -10.0, 10.0, &e->spawnHeight);
+    optNumber(c, m, "jitter_radius", 0.0, 10.0, &e->jitterRadius);
+    // Capacity is validated here, long before anything is allocated for it.
+    bool capOk = optInteger(c, m, "capacity", 1, kMaxCapacity, &e->capacity);
+    bool burstOk = optInteger(c, m, "burst", 0, kMaxCapacity, &e->burst);
+    if (capOk && burstOk && e->burst > e->capacity) {
+        const char* key = m.get("burst") ? "burst" : "capacity";
+        c.report(ErrorCode::OutOfRange, m.get(key) ? m.get(key)->Mark() : node.Mark(),
+                 m.path(key),
+                 "expected burst <= capacity, got burst " + std::to_string(e->burst) +
+                     " and capacity " + std::to_string(e->capacity));
+    }
+}
+
+void readColorRamp(YamlCheck& c, const Node& node, const std::string& p,
+                   std::vector<ColorStop>* out) {
+    if (!c.isList(node, p, 1, kMaxColorStops)) return;
+    std::vector<ColorStop> stops;
+    std::vector<YAML::Mark> tMarks;
+    bool ok = true;
+    size_t i = 0;
+    for (auto it = node.begin(); it != node.end(); ++it, ++i) {
+        const std::string sp = indexed(p, i);
+        ColorStop stop;
+        if (!c.isMap(*it, sp)) {
+            ok = false;
+            continue;
+        }
+        MapReader m(c, *it, sp, {"t", "rgba"});
+        const Node* t = m.get("t");
+        const Node* rgba = m.get("rgba");
+        if (!t) {
+            c.report(ErrorCode::MissingKey, it->Mark(), m.path("t"),
+                     "missing required key 't' (life fraction in [0, 1])");
+            ok = false;
+        } else {
+            ok = c.number(*t, m.path("t"), 0.0, 1.0, &stop.t) && ok;
+        }
+        if (!rgba) {
+            c.report(ErrorCode::MissingKey, it->Mark(), m.path("rgba"),
+                     "missing required key 'rgba' ([r, g, b, a], each in [0, 1])");
+            ok = false;
+        } else if (c.isList(*rgba, m.path("rgba"), 4, 4)) {
+            size_t j = 0;
+            for (auto ct = rgba->begin(); ct != rgba->end(); ++ct, ++j) {
+                ok = c.number(*ct, indexed(m.path("rgba"), j), 0.0, 1.0, &stop.rgba[int(j)]) && ok;
+            }
+        } else {
+            ok = false;
+        }
+        stops.push_back(stop);
+        tMarks.push_back(t ? t->Mark() : it->Mark());
+    }
+    if (!ok) return;
+    for (size_t k = 1; k < stops.size(); ++k) {
+        if (stops[k].t < stops[k - 1].t) {
+            c.report(ErrorCode::OutOfRange, tMarks[k], indexed(p, k) + ".t",
+                     "expected t >= the previous stop's " + std::to_string(stops[k - 1].t) +
+                         " (stops in order of life), got " + std::to_string(stops[k].t));
+            ok = false;
+        }
+    }
+    if (ok) *out = std::move(stops);
+}
+
+void readParticle(YamlCheck& c, const Node& node, const std::string& path, ParticleDesc* d) {
+    if (!c.isMap(node, path)) return;
+    MapReader m(c, node, path,
+                {"lifetime", "start_size", "end_size", "size_variation", "rise_speed", "drag",
+                 "wind_factor", "spread_speed", "inherit_velocity", "spin", "fade_in", "fade_out",
+                 "colour_ramp", "atlas"});
+    optRange(c, m, "lifetime", 0.01, 60.0, &d->lifetimeMin, &d->lifetimeMax);
+    optNumber(c, m, "start_size", 0.001, 100.0, &d->startSize);
+    optNumber(c, m, "end_size", 0.001, 100.0, &d->endSize);
+    optNumber(c, m, "size_variation", 0.0, 0.9, &d->sizeVariation);
+    optNumber(c, m, "rise_speed", -50.0, 50.0, &d->riseSpeed);
+    optNumber(c, m, "drag", 0.0, 1000.0, &d->drag);
+    optNumber(c, m, "wind_factor", 0.0, 10.0, &d->windFactor);
+    optNumber(c, m, "spread_speed", 0.0, 100.0, &d->spreadSpeed);
+    optNumber(c, m, "inherit_velocity", 0.0, 2.0, &d->inheritVelocity);
+    optRange(c, m, "spin", -50.0, 50.0, &d->spinMin, &d->spinMax);
+    bool fadeOk = optNumber(c, m, "fade_in", 0.0, 1.0, &d->fadeIn);
+    fadeOk = optNumber(c, m, "fade_out", 0.0, 1.0, &d->fadeOut) && fadeOk;
+    if (fadeOk && d->fadeIn + d->fadeOut > 1.0f + 1e-6f) {
+        const char* key = m.get("fade_out") ? "fade_out" : "fade_in";
+        c.report(ErrorCode::OutOfRange, m.get(key) ? m.get(key)->Mark() : node.Mark(),
+                 m.path(key),
+                 "expected fade_in + fade_out <= 1, got " + std::to_string(d->fadeIn) + " + " +
+                     std::to_string(d->fadeOut));
+    }
+    if (const Node* n = m.get("colour_ramp")) readColorRamp(c, *n, m.path("colour_ramp"), &d->colorRamp);
+    if (const Node* n = m.get("atlas")) {
+        const std::string p = m.path("atlas");
+        if (c.isList(*n, p, 2, 2)) {
+            int first = d->atlasFirst, count = d->atlasCount;
+            bool ok = c.integer((*n)[0], p + "[0]", 0, 3, &first);
+            ok = c.integer((*n)[1], p + "[1]", 1, 4, &count) && ok;
+            if (ok && first + count > 4) {
+                c.report(ErrorCode::OutOfRange, n->Mark(), p,
+                         "expected [first, count] inside the 4 frames of the 2x2 atlas, got [" +
+                             std::to_string(first) + ", " + std::to_string(count) + "]");
+            } else if (ok) {
+                d->atlasFirst = first;
+                d->atlasCount = count;
+            }
+        }
+    }
+}
+
+void readRender(YamlCheck& c, const Node& node, const std::string& path, RenderDesc* r) {
+    if (!c.isMap(node, path)) return;
+    MapReader m(c, node, path,
+                {"technique", "blend", "softness", "contrast_power", "near_fade",
+                 "sort_back_to_front"});
+    optChoice(c, m, "technique", {"hard", "soft", "spherical"}, Technique::Hard, &r->technique);
+    optChoice(c, m, "blend", {"alpha", "premultiplied", "additive"}, BlendMode::Alpha, &r->blend);
+    optNumber(c, m, "softness", 0.001, 100.0, &r->softness);
+    optNumber(c, m, "contrast_power", 0.1, 16.0, &r->contrastPower);
+    optNumber(c, m, "near_fade", 0.0, 100.0, &r->nearFade);
+    if (const Node* n = m.get("sort_back_to_front")) {
+        c.boolean(*n, m.path("sort_back_to_front"), &r->sortBackToFront);
+    }
+}
+
+// Returns the mark of the name (for duplicate reports), or the map's mark when it has none.
+YAML::Mark readReaction(YamlCheck& c, const Node& node, const std::string& path,
+                        ReactionDesc* out) {
+    if (!c.isMap(node, path)) return node.Mark();
+    MapReader m(c, node, path, {"name", "type", "trigger", "emission", "particle", "render"});
+
+    // The type decides the defaults, so it is read first; an invalid type validates the rest
+    // against the wheel_smoke defaults (the reaction is rejected either way).
+    ReactionType type = ReactionType::WheelSmoke;
+    if (const Node* n = m.get("type")) {
+        int i = 0;
+        if (c.choice(*n, m.path("type"), kTypeWords, &i)) type = static_cast<ReactionType>(i);
+    } else {
+        c.report(ErrorCode::MissingKey, node.Mark(), m.path("type"),
+                 "missing required key 'type'; expected one of wheel_smoke|dust|collision_burst");
+    }
+    ReactionDesc d = defaultReaction(type);
+    d.sourceFile = c.file();
+    d.sourceLine = node.Mark().line + 1;
+
+    YAML::Mark nameMark = node.Mark();
+    if (const Node* n = m.get("name")) {
+        c.name(*n, m.path("name"), &d.name);
+        nameMark = n->Mark();
+    } else {
+        c.report(ErrorCode::MissingKey, node.Mark(), m.path("name"),
+                 "missing required key 'name' (a unique name for the reaction)");
+    }
+    if (const Node* n = m.get("trigger")) readTrigger(c, *n, m.path("trigger"), &d.trigger);
+    if (const Node* n = m.get("emission")) readEmission(c, *n, m.path("emission"), &d.emission);
+    if (const Node* n = m.get("particle")) readParticle(c, *n, m.path("particle"), &d.particle);
+    if (const Node* n = m.get("render")) readRender(c, *n, m.path("render"), &d.render);
+    *out = std::move(d);
+    return nameMark;
+}
+
+}  // namespace
+
+void readReactionDocument(YamlCheck& c, const YAML::Node& root, std::vector<ReactionDesc>* out) {
+    if (!c.isMap(root, "")) return;
+    MapReader m(c, root, "", {"reactions"});
+    const Node* list = m.get("reactions");
+    if (!list) {
+        c.report(ErrorCode::MissingKey, root.Mark(), "reactions",
+                 "missing required key 'reactions' (a list of reactions, [] for none)");
+        return;
+    }
+    if (!c.isList(*list, "reactions", 0, kMaxReactionsPerFile)) return;
+
+    long long totalCapacity = 0;
+    bool capacityReported = false;
+    size_t i = 0;
+    for (auto it = list->begin(); it != list->end(); ++it, ++i) {
+        const std::string path = indexed("reactions", i);
+        ReactionDesc d;
+        YAML::Mark nameMark = readReaction(c, *it, path, &d);
+        if (d.name.empty()) continue;  // not a map, or no valid name: already reported
+        for (const ReactionDesc& earlier : *out) {
+            if (earlier.name == d.name) {
+                c.report(ErrorCode::DuplicateName, nameMark, path + ".name",
+                         "reaction name '" + d.name + "' is already used at line " +
+                             std::to_string(earlier.sourceLine));
+                break;
+            }
+        }
+        totalCapacity += d.emission.capacity;
+        if (totalCapacity > kMaxTotalCapacity && !capacityReported) {
+            c.report(ErrorCode::OutOfRange, it->Mark(), path + ".emission.capacity",
+                     "the reactions' capacities add up to more than " +
+                         std::to_string(kMaxTotalCapacity) + " particles");
+            capacityReported = true;
+        }
+        out->push_back(std::move(d));
+    }
+}
+
+}  // namespace fx

@@ -1,0 +1,39 @@
+#pragma once
+// Draw order for one pool and one view: indices of live particles from far to near, for
+// alpha-blended (non-commutative) blending. A renderer keeps one sorter per (reaction, view);
+// its buffers grow to the pool's capacity on first use and are reused, so after warm-up a
+// sort allocates nothing. LSD radix sort on the view depth (3 passes of 11 bits): O(n),
+// stable (equal depths keep pool order), deterministic.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "ParticlePool.h"
+
+namespace fx {
+
+class ParticleSorter {
+public:
+    struct Order {
+        const uint32_t* indices = nullptr;  ///< into the pool's streams; valid until the next update
+        int count = 0;                       ///< = pool.alive() at update time
+    };
+
+    /// Allocates for pools of up to `capacity` particles (update() does it when needed).
+    void reserve(int capacity);
+
+    /// With `sort` true: particles ordered by decreasing depth dot(p - eye, viewDir) (viewDir
+    /// need not be normalised), i.e. back to front. With `sort` false (additive blending, or
+    /// render.sort_back_to_front off: see ReactionRuntime::needsSorting) the identity order,
+    /// without computing depths.
+    Order update(const ParticlePool& pool, glm::vec3 eye, glm::vec3 viewDir, bool sort);
+
+    Order order() const { return order_; }
+
+private:
+    std::vector<uint32_t> keys_, keysTmp_, indices_, indicesTmp_, histogram_;
+    Order order_;
+};
+
+}  // namespace fx

@@ -1,0 +1,212 @@
+#include "ReactionRuntime.h"
+
+#include <cassert>
+#include <cmath>
+#include <utility>
+
+#include "Integrator.h"
+#include "Lifecycle.h"
+
+namespace fx {
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+constexpr float kTwoPi = 6.28318530717959f;
+
+bool finite3(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+float wrapAngle(float a) {
+    if (a > kPi || a < -kPi) a = std::remainder(a, kTwoPi);
+    return a;
+}
+
+bool wheelSelected(WheelSet set, const WheelContact& w) {
+    switch (set) {
+    case WheelSet::Rear: return w.rear;
+    case WheelSet::Front: return !w.rear;
+    case WheelSet::All: return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+ReactionRuntime::ReactionRuntime(ReactionDesc desc, uint64_t globalSeed)
+    : desc_(std::move(desc)),
+      pool_(desc_.emission.capacity),
+      rng_(reactionRng(globalSeed, desc_.name)) {}
+
+void ReactionRuntime::setDesc(ReactionDesc desc) {
+    assert(desc.emission.capacity == desc_.emission.capacity);
+    if (desc.type != desc_.type) burstArmed_ = true;
+    desc_ = std::move(desc);
+}
+
+bool ReactionRuntime::needsSorting() const {
+    return desc_.render.sortBackToFront && desc_.render.blend != BlendMode::Additive;
+}
+
+float ReactionRuntime::wheelStrength(const ReactionDesc& desc, const WheelContact& w) {
+    const TriggerDesc& t = desc.trigger;
+    if (desc.type == ReactionType::CollisionBurst || !w.grounded) return 0.0f;
+    if (!wheelSelected(t.wheels, w)) return 0.0f;
+    if (w.surface >= Surface::Count || !(t.surfaces & surfaceBit(w.surface))) return 0.0f;
+    const float speed = glm::length(w.velocity);
+    if (!std::isfinite(speed) || speed < t.minSpeed) return 0.0f;
+    if (!(w.slip >= t.slipThreshold)) return 0.0f;  // also rejects NaN slip
+    if (desc.type == ReactionType::WheelSmoke) {
+        if (t.slipThreshold >= 1.0f) return 1.0f;
+        return glm::clamp((w.slip - t.slipThreshold) / (1.0f - t.slipThreshold), 0.0f, 1.0f);
+    }
+    return glm::clamp((speed - t.minSpeed) / kDustFullRateSpan, 0.0f, 1.0f);
+}
+
+void ReactionRuntime::step(float dt, const WheelContact* wheels, int wheelCount,
+                           float collisionAmount, glm::vec3 collisionPoint, glm::vec3 wind) {
+    dt = sanitizeDt(dt);
+    if (dt == 0.0f) return;
+    if (!finite3(wind)) wind = glm::vec3(0.0f);
+    const ParticleDesc& p = desc_.particle;
+    const glm::vec3 terminal = terminalVelocity(wind, p.windFactor, p.riseSpeed);
+
+    advanceParticles(dt, terminal);
+
+    if (desc_.type == ReactionType::CollisionBurst) {
+        emitBurst(collisionAmount, collisionPoint, terminal);
+        return;
+    }
+    const int n = wheels ? glm::min(wheelCount, kMaxWheels) : 0;
+    for (int i = 0; i < n; ++i) emitFromWheel(i, wheels[i], dt, terminal);
+}
+
+void ReactionRuntime::advanceParticles(float dt, glm::vec3 u) {
+    const ParticleDesc& p = desc_.particle;
+    const DragStep s = makeDragStep(p.drag, dt);
+    float* px = pool_.stream(ParticlePool::PosX);
+    float* py = pool_.stream(ParticlePool::PosY);
+    float* pz = pool_.stream(ParticlePool::PosZ);
+    float* vx = pool_.stream(ParticlePool::VelX);
+    float* vy = pool_.stream(ParticlePool::VelY);
+    float* vz = pool_.stream(ParticlePool::VelZ);
+    float* age = pool_.stream(ParticlePool::Age);
+    const float* lifetime = pool_.stream(ParticlePool::Lifetime);
+    const float* start = pool_.stream(ParticlePool::StartSize);
+    const float* end = pool_.stream(ParticlePool::EndSize);
+    float* rot = pool_.stream(ParticlePool::Rotation);
+    const float* spin = pool_.stream(ParticlePool::Spin);
+    float* size = pool_.stream(ParticlePool::Size);
+    float* life = pool_.stream(ParticlePool::Life);
+    float* fade = pool_.stream(ParticlePool::Fade);
+
+    for (int i = 0; i < pool_.alive();) {
+        age[i] += dt;
+        if (age[i] >= lifetime[i]) {
+            pool_.kill(i);  // slot i now holds the last particle, not yet advanced: revisit i
+            continue;
+        }
+        const float dx = vx[i] - u.x, dy = vy[i] - u.y, dz = vz[i] - u.z;
+        px[i] += u.x * s.dt + dx * s.reach;
+        py[i] += u.y * s.dt + dy * s.reach;
+        pz[i] += u.z * s.dt + dz * s.reach;
+        vx[i] = u.x + dx * s.decay;
+        vy[i] = u.y + dy * s.decay;
+        vz[i] = u.z + dz * s.decay;
+        rot[i] = wrapAngle(rot[i] + spin[i] * dt);
+        const float f = age[i] / lifetime[i];
+        life[i] = f;
+        size[i] = sizeAt(start[i], end[i], f);
+        fade[i] = fadeAt(f, p.fadeIn, p.fadeOut);
+        ++i;
+    }
+}
+
+void ReactionRuntime::emitFromWheel(int index, const WheelContact& wheel, float dt,
+                                    glm::vec3 terminal) {
+    if (!finite3(wheel.position) || !finite3(wheel.velocity)) return;
+    const float strength = wheelStrength(desc_, wheel);
+    EmissionClock& clock = clocks_[static_cast<size_t>(index)];
+    const int64_t due = clock.advance(static_cast<double>(desc_.emission.rate) * strength, dt);
+    if (due <= 0) return;
+    const glm::vec3 base = wheel.velocity * desc_.particle.inheritVelocity;
+    for (int64_t k = clock.firstYoungerThan(desc_.particle.lifetimeMax); k < due; ++k) {
+        if (pool_.full()) {
+            counters_.dropped += static_cast<uint64_t>(due - k);
+            return;
+        }
+        const float age = static_cast<float>(clock.ageOf(k));
+        spawn(wheel.position - wheel.velocity * age, base, age, terminal);
+    }
+}
+
+void ReactionRuntime::emitBurst(float amount, glm::vec3 point, glm::vec3 terminal) {
+    if (!std::isfinite(amount)) amount = 0.0f;
+    const float threshold = desc_.trigger.collisionThreshold;
+    if (!burstArmed_) {
+        if (amount <= 0.5f * threshold) burstArmed_ = true;
+        return;
+    }
+    if (amount <= 0.0f || amount < threshold || !finite3(point)) return;
+    burstArmed_ = false;
+    ++counters_.bursts;
+    const float scaled = static_cast<float>(desc_.emission.burst) * glm::min(amount, 1.0f);
+    const int count = glm::max(1, static_cast<int>(std::lround(scaled)));
+    for (int k = 0; k < count; ++k) {
+        if (pool_.full()) {
+            counters_.dropped += static_cast<uint64_t>(count - k);
+            return;
+        }
+        spawn(point, glm::vec3(0.0f), 0.0f, terminal);
+    }
+}
+
+void ReactionRuntime::spawn(glm::vec3 origin, glm::vec3 baseVelocity, float age,
+                            glm::vec3 terminal) {
+    const ParticleDesc& p = desc_.particle;
+    const EmissionDesc& e = desc_.emission;
+    // Every random draw happens whether or not the particle survives, so the sequence of
+    // draws (and so every later particle) does not depend on which ones were dead on arrival.
+    const float lifetime = rng_.uniform(p.lifetimeMin, p.lifetimeMax);
+    const float jr = e.jitterRadius * std::sqrt(rng_.uniform());
+    const float ja = kTwoPi * rng_.uniform();
+    const float cosUp = rng_.uniform();  // uniform over the upper hemisphere
+    const float azimuth = kTwoPi * rng_.uniform();
+    const float speed = p.spreadSpeed * rng_.uniform();
+    const float sizeScale = 1.0f + p.sizeVariation * (2.0f * rng_.uniform() - 1.0f);
+    const float rotation = rng_.uniform(-kPi, kPi);
+    const float spin = rng_.uniform(p.spinMin, p.spinMax);
+    const uint32_t frame = static_cast<uint32_t>(p.atlasFirst) +
+                           rng_.below(static_cast<uint32_t>(glm::max(p.atlasCount, 1)));
+    if (!(age < lifetime)) return;
+    const int i = pool_.spawn();
+    if (i < 0) {
+        ++counters_.dropped;
+        return;
+    }
+    ++counters_.emitted;
+
+    const float sinUp = std::sqrt(glm::max(0.0f, 1.0f - cosUp * cosUp));
+    glm::vec3 x = origin + glm::vec3(jr * std::cos(ja), e.spawnHeight, jr * std::sin(ja));
+    glm::vec3 v = baseVelocity +
+                  speed * glm::vec3(sinUp * std::cos(azimuth), cosUp, sinUp * std::sin(azimuth));
+    if (age > 0.0f) applyDragStep(makeDragStep(p.drag, age), terminal, x, v);
+
+    pool_.stream(ParticlePool::PosX)[i] = x.x;
+    pool_.stream(ParticlePool::PosY)[i] = x.y;
+    pool_.stream(ParticlePool::PosZ)[i] = x.z;
+    pool_.stream(ParticlePool::VelX)[i] = v.x;
+    pool_.stream(ParticlePool::VelY)[i] = v.y;
+    pool_.stream(ParticlePool::VelZ)[i] = v.z;
+    pool_.stream(ParticlePool::Age)[i] = age;
+    pool_.stream(ParticlePool::Lifetime)[i] = lifetime;
+    pool_.stream(ParticlePool::StartSize)[i] = p.startSize * sizeScale;
+    pool_.stream(ParticlePool::EndSize)[i] = p.endSize * sizeScale;
+    pool_.stream(ParticlePool::Rotation)[i] = wrapAngle(rotation + spin * age);
+    pool_.stream(ParticlePool::Spin)[i] = spin;
+    const float f = age / lifetime;
+    pool_.stream(ParticlePool::Life)[i] = f;
+    pool_.stream(ParticlePool::Size)[i] = sizeAt(p.startSize * sizeScale, p.endSize * sizeScale, f);
+    pool_.stream(ParticlePool::Fade)[i] = fadeAt(f, p.fadeIn, p.fadeOut);
+    pool_.frame()[i] = static_cast<uint8_t>(frame);
+}
+
+}  // namespace fx

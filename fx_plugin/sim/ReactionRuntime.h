@@ -1,0 +1,89 @@
+#pragma once
+// One loaded reaction while the game runs: its description, its particle pool (allocated once,
+// here), the emission carry of each wheel and its random generator. step() is
+// Reaction::Continue for every type (wheel smoke, dust, collision burst).
+//
+// Per-type behaviour (the "continue"):
+//  - wheel_smoke: each wheel in trigger.wheels that is grounded, on a listed surface, at
+//    >= min_speed and at slip >= slip_threshold emits rate * s particles/s with
+//    s = clamp((slip - threshold) / (1 - threshold), 0, 1): none at the threshold, full rate at
+//    slip 1 (and beyond);
+//  - dust: same gates, strength s = clamp((speed - min_speed) / kDustFullRateSpan, 0, 1), speed
+//    = |hub velocity|, so dust thickens with speed up to full rate 15 m/s above min_speed;
+//  - collision_burst: when the collision amount rises to >= collision_threshold (and > 0) it
+//    emits max(1, round(burst * min(amount, 1))) particles at once at the collision point; it
+//    fires again only after the amount fell to <= threshold / 2 (edge-triggered, with hysteresis
+//    so a noisy contact does not machine-gun).
+// Spawn point = contact + spawn_height * up + a point uniform in a horizontal disc of
+// jitter_radius. A particle that fell due `a` seconds before the end of the step starts where
+// the wheel was then (contact - hub velocity * a) and is advanced by `a` exactly, so a trail is
+// continuous at any frame rate. Initial velocity = inherit_velocity * hub velocity + a random
+// spread_speed in the upper hemisphere.
+//
+// Nothing here allocates after construction; a full pool drops what does not fit and counts it.
+#include <array>
+#include <cstdint>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "EmissionClock.h"
+#include "ParticlePool.h"
+#include "Rng.h"
+#include "fx/Reaction.h"
+#include "fx/Types.h"
+
+namespace fx {
+
+class ReactionRuntime {
+public:
+    static constexpr int kMaxWheels = 16;            ///< wheels past this are ignored
+    static constexpr float kDustFullRateSpan = 15.0f;  ///< m/s above min_speed for full dust
+    static constexpr uint64_t kDefaultSeed = 0x5EEDC0DEull;
+
+    struct Counters {
+        uint64_t emitted = 0;  ///< particles that went into the pool
+        uint64_t dropped = 0;  ///< particles due while the pool was full
+        uint64_t bursts = 0;   ///< collision bursts fired
+    };
+
+    /// Allocates the pool (desc.emission.capacity, validated by the loader) and seeds the
+    /// generator from `globalSeed` and the reaction's name.
+    explicit ReactionRuntime(ReactionDesc desc, uint64_t globalSeed = kDefaultSeed);
+
+    /// Advances every particle by dt and emits for this step. dt <= 0, NaN or Inf: no-op.
+    /// `wheels` may be null when wheelCount is 0. Non-finite inputs are ignored, not propagated.
+    void step(float dt, const WheelContact* wheels, int wheelCount, float collisionAmount,
+              glm::vec3 collisionPoint, glm::vec3 wind);
+
+    /// Hot reload of a reaction whose name and capacity did not change: new parameters, same
+    /// particles, carries and generator (the smoke on screen stays).
+    void setDesc(ReactionDesc desc);
+
+    const ReactionDesc& desc() const { return desc_; }
+    const std::string& name() const { return desc_.name; }
+    const ParticlePool& pool() const { return pool_; }
+    const Counters& counters() const { return counters_; }
+    /// Whether draw order matters: render.sort_back_to_front and a blend that is not additive.
+    bool needsSorting() const;
+
+    /// Emission strength in [0, 1] of one wheel for this reaction (0 = the trigger is not met).
+    static float wheelStrength(const ReactionDesc& desc, const WheelContact& wheel);
+
+private:
+    void advanceParticles(float dt, glm::vec3 terminal);
+    void emitFromWheel(int index, const WheelContact& wheel, float dt, glm::vec3 terminal);
+    void emitBurst(float amount, glm::vec3 point, glm::vec3 terminal);
+    /// Draws one particle's randoms and, unless it is already dead at `age`, puts it in the
+    /// pool at `origin` (+ jitter) with `baseVelocity` (+ spread), advanced by `age` seconds.
+    void spawn(glm::vec3 origin, glm::vec3 baseVelocity, float age, glm::vec3 terminal);
+
+    ReactionDesc desc_;
+    ParticlePool pool_;
+    Pcg32 rng_;
+    std::array<EmissionClock, kMaxWheels> clocks_{};
+    bool burstArmed_ = true;
+    Counters counters_;
+};
+
+}  // namespace fx

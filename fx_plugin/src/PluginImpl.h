@@ -1,0 +1,83 @@
+#pragma once
+// The plugin behind fx::Plugin: the running reactions (ReactionLibrary: load + hot reload), one
+// ReactionRuntime per reaction, render options and stats. It records; it draws nothing itself.
+//
+// Drawing is delegated to a render hook that the particle renderer (fx_plugin/render/,
+// installParticleRenderer(), called by fxCreatePlugin) installs with setRenderHook().
+// declarePasses() hands it the view, the host's frame
+// builder, every runtime (read-only: pool streams, desc().render, needsSorting()) and the
+// current options; the renderer declares its passes (or none when nothing is visible) and may
+// report how many particles it drew with setParticlesDrawn(). With no hook installed,
+// declarePasses declares nothing, so the host allocates nothing for particles.
+//
+// Runtimes live in a std::vector that is rebuilt when a new reaction set goes live
+// (loadReactions / pollHotReload): references and indices into it are valid until then;
+// runtimeGeneration() changes each time. A reaction whose name and capacity survive a reload
+// keeps its particles (the smoke on screen does not vanish).
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fx/HostAdapter.h"
+#include "fx/Plugin.h"
+#include "../reactions/ReactionLibrary.h"
+#include "../sim/ReactionRuntime.h"
+
+namespace fx {
+
+class PluginImpl final : public Plugin {
+public:
+    using RenderHook = std::function<void(const ViewInfo&, FrameBuilder&,
+                                          const std::vector<ReactionRuntime>&,
+                                          const RenderOptions&)>;
+
+    /// `imports.host` must be non-null (fxCreatePlugin checks it).
+    explicit PluginImpl(const PluginImports& imports);
+
+    // fx::Plugin
+    bool loadReactions(const std::string& path, Diagnostics* out) override;
+    bool pollHotReload(Diagnostics* out) override;
+    int reactionCount() const override { return static_cast<int>(runtimes_.size()); }
+    std::string reactionName(int index) const override;
+    void continueReaction(int index, float dt, float* currentVehicleCollisionAmount) override;
+    void setRenderOptions(const RenderOptions& options) override { options_ = options; }
+    RenderOptions renderOptions() const override { return options_; }
+    void declarePasses(const ViewInfo& view, FrameBuilder& frame) override;
+    Stats stats() const override;
+
+    /// The renderer's entry; pass an empty function to remove it.
+    void setRenderHook(RenderHook hook) { renderHook_ = std::move(hook); }
+    /// Called by the render hook: particles drawn in the last declared view (Stats::particlesDrawn).
+    void setParticlesDrawn(int count) { particlesDrawn_ = count; }
+
+    const std::vector<ReactionRuntime>& runtimes() const { return runtimes_; }
+    int runtimeGeneration() const { return runtimeGeneration_; }
+    const ReactionLibrary& library() const { return library_; }
+    ReactionLibrary& library() { return library_; }
+    HostAdapter& host() const { return *host_; }
+    const std::string& shaderDir() const { return shaderDir_; }
+
+    /// Seed for reactions created from now on (a reaction kept across a reload keeps its
+    /// generator). Default: PluginImports::seed, or ReactionRuntime::kDefaultSeed when that is 0.
+    void setSeed(uint64_t seed) { seed_ = seed; }
+
+private:
+    /// Builds runtimes for the library's current set, moving over those that keep their pool.
+    void adoptCurrentSet();
+    void logDiagnostics(const Diagnostics& diags, const char* what);
+
+    HostAdapter* host_;
+    std::string shaderDir_;
+    uint64_t seed_;
+    ReactionLibrary library_;
+    std::vector<ReactionRuntime> runtimes_;
+    int runtimeGeneration_ = 0;
+    RenderOptions options_;
+    RenderHook renderHook_;
+    int particlesDrawn_ = 0;
+    int reloads_ = 0;
+    int reloadErrors_ = 0;
+};
+
+}  // namespace fx

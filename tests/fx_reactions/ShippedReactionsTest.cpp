@@ -1,0 +1,96 @@
+// The reaction files the game ships: each loads with zero diagnostics and says what its name
+// promises (the tuning is data, but the type, technique and trigger are part of the contract).
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "../../fx_plugin/reactions/ReactionLoader.h"
+
+namespace {
+
+const std::string kReactionsDir = std::string(CUBE_SOURCE_DIR) + "/reactions";
+
+std::string dump(const fx::Diagnostics& d) {
+    std::string s;
+    for (const auto& x : d) s += x.str() + "\n";
+    return s;
+}
+
+TEST(ShippedReactions, EveryFileLoadsWithoutDiagnostics) {
+    int files = 0;
+    for (const auto& e : std::filesystem::directory_iterator(kReactionsDir)) {
+        if (e.path().extension() != ".yaml") continue;
+        ++files;
+        fx::ReactionSet set;
+        fx::Diagnostics diags;
+        EXPECT_TRUE(fx::loadReactionFile(e.path().string(), &set, &diags)) << e.path();
+        EXPECT_TRUE(diags.empty()) << dump(diags);
+    }
+    EXPECT_EQ(files, 4);
+}
+
+TEST(ShippedReactions, DirectoryLoadsThreeReactionsInFileOrder) {
+    fx::ReactionSet set;
+    fx::Diagnostics diags;
+    ASSERT_TRUE(fx::loadReactionDirectory(kReactionsDir, &set, &diags)) << dump(diags);
+    EXPECT_TRUE(diags.empty());
+    ASSERT_EQ(set.reactions.size(), 3u);
+    // Sorted file names: barrier_burst, burnout_smoke, none, offtrack_dust.
+    EXPECT_EQ(set.reactions[0].name, "barrier_burst");
+    EXPECT_EQ(set.reactions[1].name, "burnout_smoke");
+    EXPECT_EQ(set.reactions[2].name, "offtrack_dust");
+    EXPECT_EQ(set.files.size(), 4u);
+}
+
+TEST(ShippedReactions, NoneIsAValidEmptySet) {
+    fx::ReactionSet set;
+    set.reactions.resize(2);  // must be replaced by the empty set
+    fx::Diagnostics diags;
+    ASSERT_TRUE(fx::loadReactionFile(kReactionsDir + "/none.yaml", &set, &diags)) << dump(diags);
+    EXPECT_TRUE(set.reactions.empty());
+}
+
+TEST(ShippedReactions, BurnoutSmokeIsSoftRearWheelSmokeThatGrowsToMetres) {
+    fx::ReactionSet set;
+    fx::Diagnostics diags;
+    ASSERT_TRUE(fx::loadReactionFile(kReactionsDir + "/burnout_smoke.yaml", &set, &diags));
+    ASSERT_EQ(set.reactions.size(), 1u);
+    const fx::ReactionDesc& r = set.reactions[0];
+    EXPECT_EQ(r.type, fx::ReactionType::WheelSmoke);
+    EXPECT_EQ(r.trigger.wheels, fx::WheelSet::Rear);
+    EXPECT_EQ(r.render.technique, fx::Technique::Soft);
+    EXPECT_GE(r.particle.endSize, 3.0f);  // "a few metres" next to a 4.4 m car
+    EXPECT_GT(r.particle.endSize, r.particle.startSize);
+    EXPECT_TRUE(r.trigger.surfaces & fx::surfaceBit(fx::Surface::Asphalt));
+    // Grey-white: every stop nearly neutral and bright.
+    for (const fx::ColorStop& s : r.particle.colorRamp) {
+        EXPECT_GT(s.rgba.r, 0.7f);
+        EXPECT_NEAR(s.rgba.r, s.rgba.b, 0.05f);
+    }
+    EXPECT_EQ(r.sourceLine, 6);
+}
+
+TEST(ShippedReactions, DustIsOffTrackOnlyOnAnyWheel) {
+    fx::ReactionSet set;
+    ASSERT_TRUE(fx::loadReactionFile(kReactionsDir + "/offtrack_dust.yaml", &set, nullptr));
+    const fx::ReactionDesc& r = set.reactions.at(0);
+    EXPECT_EQ(r.type, fx::ReactionType::Dust);
+    EXPECT_EQ(r.trigger.wheels, fx::WheelSet::All);
+    const uint32_t offTrack = fx::surfaceBit(fx::Surface::Grass) |
+                              fx::surfaceBit(fx::Surface::Gravel) | fx::surfaceBit(fx::Surface::Sand);
+    EXPECT_EQ(r.trigger.surfaces, offTrack);
+    // Brownish: red above blue.
+    EXPECT_GT(r.particle.colorRamp.front().rgba.r, r.particle.colorRamp.front().rgba.b + 0.1f);
+}
+
+TEST(ShippedReactions, BarrierBurstFitsItsBurstInItsPool) {
+    fx::ReactionSet set;
+    ASSERT_TRUE(fx::loadReactionFile(kReactionsDir + "/barrier_burst.yaml", &set, nullptr));
+    const fx::ReactionDesc& r = set.reactions.at(0);
+    EXPECT_EQ(r.type, fx::ReactionType::CollisionBurst);
+    EXPECT_GT(r.emission.burst, 0);
+    EXPECT_LE(r.emission.burst, r.emission.capacity);
+}
+
+}  // namespace

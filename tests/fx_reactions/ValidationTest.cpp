@@ -1,0 +1,462 @@
+// One test per validation rule: each asserts the ErrorCode, the 1-based line (and column where
+// it is unambiguous) and the dotted key, not the wording (the wording is checked only where the
+// "expected ..., got ..." contract is the point).
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "../../fx_plugin/reactions/ReactionLoader.h"
+
+namespace {
+
+using fx::ErrorCode;
+
+struct Loaded {
+    bool ok = false;
+    fx::ReactionSet set;
+    fx::Diagnostics diags;
+};
+
+Loaded load(const std::string& text) {
+    Loaded r;
+    r.ok = fx::loadReactionText(text, "test.yaml", &r.set, &r.diags);
+    return r;
+}
+
+std::string dump(const fx::Diagnostics& d) {
+    std::string s;
+    for (const auto& x : d) s += x.str() + "\n";
+    return s;
+}
+
+// Exactly one diagnostic, with this code, place and key.
+void expectOnly(const Loaded& r, ErrorCode code, int line, int column, const std::string& key) {
+    EXPECT_FALSE(r.ok);
+    ASSERT_EQ(r.diags.size(), 1u) << dump(r.diags);
+    const fx::Diagnostic& d = r.diags[0];
+    EXPECT_EQ(d.code, code) << d.str();
+    EXPECT_EQ(d.file, "test.yaml");
+    EXPECT_EQ(d.line, line) << d.str();
+    if (column > 0) {
+        EXPECT_EQ(d.column, column) << d.str();
+    }
+    EXPECT_EQ(d.key, key) << d.str();
+}
+
+// A valid reaction with one particle key replaced: line 5, value at column 13 for short keys.
+std::string withParticleKey(const std::string& keyAndValue) {
+    return "reactions:\n"
+           "  - name: a\n"
+           "    type: dust\n"
+           "    particle:\n"
+           "      " + keyAndValue + "\n";
+}
+
+TEST(Validation, MinimalReactionIsValidAndTakesTypeDefaults) {
+    Loaded r = load("reactions:\n  - name: a\n    type: dust\n");
+    ASSERT_TRUE(r.ok) << dump(r.diags);
+    ASSERT_EQ(r.set.reactions.size(), 1u);
+    const fx::ReactionDesc& d = r.set.reactions[0];
+    EXPECT_EQ(d.trigger.wheels, fx::WheelSet::All);  // dust default, not the wheel_smoke one
+    EXPECT_EQ(d.emission.capacity, fx::EmissionDesc{}.capacity);
+    EXPECT_EQ(d.sourceLine, 2);
+}
+
+TEST(Validation, UnknownKey) {
+    Loaded r = load(withParticleKey("dragg: 2"));
+    expectOnly(r, ErrorCode::UnknownKey, 5, 7, "reactions[0].particle.dragg");
+    EXPECT_NE(r.diags[0].message.find("drag"), std::string::npos);  // lists the real keys
+}
+
+TEST(Validation, WrongTypeSaysWhatWasExpected) {
+    Loaded r = load(withParticleKey("drag: fast"));
+    expectOnly(r, ErrorCode::WrongType, 5, 13, "reactions[0].particle.drag");
+    EXPECT_NE(r.diags[0].message.find("expected a number in [0, 1000], got 'fast'"), std::string::npos)
+        << r.diags[0].message;
+}
+
+TEST(Validation, QuotedNumberIsTextNotANumber) {
+    expectOnly(load(withParticleKey("drag: \"1.5\"")), ErrorCode::WrongType, 5, 13,
+               "reactions[0].particle.drag");
+}
+
+TEST(Validation, MapWhereASectionWasExpectedIsWrongType) {
+    Loaded r = load("reactions:\n  - name: a\n    type: dust\n    render: soft\n");
+    expectOnly(r, ErrorCode::WrongType, 4, 13, "reactions[0].render");
+}
+
+TEST(Validation, OutOfRange) {
+    Loaded r = load(
+        "reactions:\n"
+        "  - name: a\n"
+        "    type: wheel_smoke\n"
+        "    trigger:\n"
+        "      slip_threshold: 1.5\n");
+    expectOnly(r, ErrorCode::OutOfRange, 5, 23, "reactions[0].trigger.slip_threshold");
+    EXPECT_NE(r.diags[0].message.find("[0, 1]"), std::string::npos);
+}
+
+TEST(Validation, NaN) {
+    expectOnly(load(withParticleKey("drag: .nan")), ErrorCode::NotFinite, 5, 13,
+               "reactions[0].particle.drag");
+    expectOnly(load(withParticleKey("drag: .NaN")), ErrorCode::NotFinite, 5, 13,
+               "reactions[0].particle.drag");
+}
+
+TEST(Validation, Inf) {
+    expectOnly(load(withParticleKey("rise_speed: -.inf")), ErrorCode::NotFinite, 5, 19,
+               "reactions[0].particle.rise_speed");
+    expectOnly(load(withParticleKey("drag: .Inf")), ErrorCode::NotFinite, 5, 13,
+               "reactions[0].particle.drag");
+}
+
+TEST(Validation, NumberTooLargeForADoubleIsOutOfRange) {
+    expectOnly(load(withParticleKey("drag: 1e999")), ErrorCode::OutOfRange, 5, 13,
+               "reactions[0].particle.drag");
+}
+
+TEST(Validation, NegativeCapacity) {
+    Loaded r = load(
+        "reactions:\n"
+        "  - name: a\n"
+        "    type: dust\n"
+        "    emission:\n"
+        "      capacity: -5\n");
+    expectOnly(r, ErrorCode::NegativeCount, 5, 17, "reactions[0].emission.capacity");
+    EXPECT_NE(r.diags[0].message.find("-5"), std::string::npos);
+}
+
+TEST(Validation, NegativeBurstAndAtlasCountAreNegativeCounts) {
+    Loaded r = load(
+        "reactions:\n"
+        "  - name: a\n"
+        "    type: collision_burst\n"
+        "    emission: {burst: -1}\n"
+        "    particle: {atlas: [0, -2]}\n");
+    EXPECT_FALSE(r.ok);
+    ASSERT_EQ(r.diags.size(), 2u) << dump(r.diags);
+    EXPECT_EQ(r.diags[0].code, ErrorCode::NegativeCount);
+    EXPECT_EQ(r.diags[0].key, "reactions[0].emission.burst");
+    EXPECT_EQ(r.diags[1].code, ErrorCode::NegativeCount);
+    EXPECT_EQ(r.diags[1].key, "reactions[0].particle.atlas[1]");
+    EXPECT_EQ(r.diags[1].line, 5);
+}
+
+TEST(Validation, CapacityIsBoundedAndIntegral) {
+    Loaded big = load("reactions:\n  - name: a\n    type: dust\n    emission: {capacity: 1000001}\n");
+    expectOnly(big, ErrorCode::OutOfRange, 4, 0, "reactions[0].emission.capacity");
+    Loaded huge = load("reactions:\n  - name: a\n    type: dust\n    emission: {capacity: 99999999999999999999999}\n");
+    expectOnly(huge, ErrorCode::OutOfRange, 4, 0, "reactions[0].emission.capacity");
+    Loaded zero = load("reactions:\n  - name: a\n    type: dust\n    emission: {capacity: 0}\n");
+    expectOnly(zero, ErrorCode::OutOfRange, 4, 0, "reactions[0].emission.capacity");
+    Loaded frac = load("reactions:\n  - name: a\n    type: dust\n    emission: {capacity: 2.5}\n");
+    expectOnly(frac, ErrorCode::WrongType, 4, 0, "reactions[0].emission.capacity");
+    Loaded max = load("reactions:\n  - name: a\n    type: dust\n    emission: {capacity: 1000000}\n");
+    EXPECT_TRUE(max.ok) << dump(max.diags);
+}
+
+TEST(Validation, InvalidEnum) {
+    Loaded r = load(
+        "reactions:\n"
+        "  - name: a\n"
+        "    type: dust\n"
+        "    render:\n"
+        "      technique: fluffy\n");
+    expectOnly(r, ErrorCode::InvalidEnum, 5, 18, "reactions[0].render.technique");
+    EXPECT_NE(r.diags[0].message.find("hard|soft|spherical"), std::string::npos);
+}
+
+TEST(Validation, InvalidEnumInAListNamesTheEntry) {
+    Loaded r = load(
+        "reactions:\n"
+        "  - name: a\n"
+        "    type: dust\n"
+        "    trigger:\n"
+        "      surfaces: [grass, mud]\n");
+    expectOnly(r, ErrorCode::InvalidEnum, 5, 25, "reactions[0].trigger.surfaces[1]");
+}
+
+TEST(Validation, InvalidType) {
+    expectOnly(load("reactions:\n  - name: a\n    type: smoke\n"), ErrorCode::InvalidEnum, 3, 11,
+               "reactions[0].type");
+}
+
+TEST(Validation, MissingName) {
+    Loaded r = load(
+        "reactions:\n"
+        "  - type: dust\n"
+        "    emission: {rate: 10}\n");
+    expectOnly(r, ErrorCode::MissingKey, 2, 5, "reactions[0].name");
+}
+
+TEST(Validation, MissingType) {
+    expectOnly(load("reactions:\n  - name: a\n"), ErrorCode::MissingKey, 2, 5, "reactions[0].type");
+}
+
+TEST(Validation, MissingReactionsKey) {
+    Loaded typo = load("reaction: []\n");
+    ASSERT_EQ(typo.diags.size(), 2u) << dump(typo.diags);  // the typo, and what it hides
+    EXPECT_EQ(typo.diags[0].code, ErrorCode::UnknownKey);
+    EXPECT_EQ(typo.diags[0].key, "reaction");
+    EXPECT_EQ(typo.diags[1].code, ErrorCode::MissingKey);
+    EXPECT_EQ(typo.diags[1].key, "reactions");
+    Loaded r = load("{}\n");
+    expectOnly(r, ErrorCode::MissingKey, 1, 0, "reactions");
+}
+
+TEST(Validation, InvalidName) {
+    expectOnly(load("reactions:\n  - name: 'two words'\n    type: dust\n"), ErrorCode::WrongType, 2,
+               11, "reactions[0].name");
+}
+
+TEST(Validation, DuplicateName) {
+    Loaded r = load(
+        "reactions:\n"
+        "  - name: a\n"
+        "    type: dust\n"
+        "  - name: a\n"
+        "    type: wheel_smoke\n");
+    expectOnly(r, ErrorCode::DuplicateName, 4, 11, "reactions[1].name");
+    EXPECT_NE(r.diags[0].message.find("line 2"), std::string::npos) << r.diags[0].message;
+}
+
+TEST(Validation, DuplicateKey) {
+    Loaded r = load(
+        "reactions:\n"
+        "  - name: a\n"
+        "    type: dust\n"
+        "    particle:\n"
+        "      drag: 1\n"
+        "      drag: 2\n");
+    expectOnly(r, ErrorCode::DuplicateKey, 6, 7, "reactions[0].particle.drag");
+}
+
+TEST(Validation, EmptyFile) {
+    expectOnly(load(""), ErrorCode::EmptyFile, 1, 1, "");
+    expectOnly(load("# only a comment\n\n   \n"), ErrorCode::EmptyFile, 1, 1, "");
+}
+
+TEST(Validation, TooDeepInsideTheSchema) {
+    // 16 levels of list where a number belongs: the bound is 16 levels in the whole file.
+    Loaded r = load(withParticleKey("drag: [[[[[[[[[[[[[[[[1]]]]]]]]]]]]]]]]"));
+    expectOnly(r, ErrorCode::TooDeep, 5, 13, "reactions[0].particle.drag");
+    // A shallow wrong value at the same place is only a wrong type.
+    expectOnly(load(withParticleKey("drag: [[1]]")), ErrorCode::WrongType, 5, 13,
+               "reactions[0].particle.drag");
+}
+
+TEST(Validation, TooDeepForTheParser) {
+    // Far past yaml-cpp's own recursion guard: reported, not a stack overflow.
+    std::string deep = "reactions: " + std::string(5000, '[') + std::string(5000, ']') + "\n";
+    Loaded r = load(deep);
+    EXPECT_FALSE(r.ok);
+    ASSERT_EQ(r.diags.size(), 1u) << dump(r.diags);
+    EXPECT_EQ(r.diags[0].code, ErrorCode::TooDeep);
+    EXPECT_EQ(r.diags[0].line, 1);
+}
+
+TEST(Validation, TruncatedYaml) {
+    Loaded r = load(
+        "reactions:\n"
+        "  - name: a\n"
+        "    type: dust\n"
+        "    particle: {drag: 1.0, lifetime: [1, 2");
+    EXPECT_FALSE(r.ok);
+    ASSERT_EQ(r.diags.size(), 1u) << dump(r.diags);
+    EXPECT_EQ(r.diags[0].code, ErrorCode::SyntaxError);
+    EXPECT_EQ(r.diags[0].line, 4) << r.diags[0].str();
+    EXPECT_EQ(r.diags[0].key, "");
+}
+
+TEST(Validation, MalformedIndentationIsASyntaxError) {
+    Loaded r = load("reactions:\n- name: a\n  type: dust\n    drag: 1\n");
+    expectOnly(r, ErrorCode::SyntaxError, 4, 9, "");
+}
+
+TEST(Validation, BinaryGarbage) {
+    std::string text = "reactions:\n  - name: a";
+    text += std::string("\x00\xff\xfe\x01garbage", 11);
+    Loaded r = load(text);
+    expectOnly(r, ErrorCode::SyntaxError, 2, 12, "");
+    EXPECT_NE(r.diags[0].message.find("0x00"), std::string::npos) << r.diags[0].message;
+}
+
+TEST(Validation, InvalidUtf8IsBinary) {
+    expectOnly(load("reactions:\n  - name: a\xc3\x28\n"), ErrorCode::SyntaxError, 2, 12, "");
+    // Valid UTF-8 (in a comment) and a byte-order mark are fine.
+    Loaded ok = load("\xEF\xBB\xBF# r\xC3\xA9" "action\nreactions: []\n");
+    EXPECT_TRUE(ok.ok) << dump(ok.diags);
+}
+
+TEST(Validation, TwoDocumentsAreASyntaxError) {
+    Loaded r = load("reactions: []\n---\nreactions: []\n");
+    EXPECT_FALSE(r.ok);
+    ASSERT_EQ(r.diags.size(), 1u) << dump(r.diags);
+    EXPECT_EQ(r.diags[0].code, ErrorCode::SyntaxError);
+    EXPECT_EQ(r.diags[0].line, 2);  // where the second document starts
+}
+
+TEST(Validation, StrayCommaAtDocumentLevelIsASyntaxError) {
+    // yaml-cpp 0.7 yields empty documents forever here (YAML::LoadAll would eat all memory).
+    Loaded r = load("# comment\n, defaults\nreactions: []\n");
+    EXPECT_FALSE(r.ok);
+    ASSERT_EQ(r.diags.size(), 1u) << dump(r.diags);
+    EXPECT_EQ(r.diags[0].code, ErrorCode::SyntaxError);
+    EXPECT_EQ(r.diags[0].line, 2) << r.diags[0].str();
+    EXPECT_EQ(r.diags[0].column, 1) << r.diags[0].str();
+}
+
+TEST(Validation, CrossFieldRules) {
+    Loaded r = load(
+        "reactions:\n"
+        "  - name: a\n"
+        "    type: collision_burst\n"
+        "    emission: {burst: 300, capacity: 200}\n"       // burst > capacity
+        "    particle:\n"
+        "      lifetime: [3, 1]\n"                           // min > max
+        "      fade_in: 0.6\n"
+        "      fade_out: 0.6\n"                              // sum > 1
+        "      atlas: [2, 3]\n"                              // past frame 3
+        "      colour_ramp:\n"
+        "        - {t: 0.5, rgba: [1, 1, 1, 1]}\n"
+        "        - {t: 0.2, rgba: [1, 1, 1, 1]}\n");         // t going back
+    EXPECT_FALSE(r.ok);
+    ASSERT_EQ(r.diags.size(), 5u) << dump(r.diags);
+    for (const auto& d : r.diags) EXPECT_EQ(d.code, ErrorCode::OutOfRange) << d.str();
+    EXPECT_EQ(r.diags[0].key, "reactions[0].emission.burst");
+    EXPECT_EQ(r.diags[1].key, "reactions[0].particle.lifetime");
+    EXPECT_EQ(r.diags[1].line, 6);
+    EXPECT_EQ(r.diags[2].key, "reactions[0].particle.fade_out");
+    EXPECT_EQ(r.diags[2].line, 8);
+    EXPECT_EQ(r.diags[3].key, "reactions[0].particle.atlas");
+    EXPECT_EQ(r.diags[4].key, "reactions[0].particle.colour_ramp[1].t");
+    EXPECT_EQ(r.diags[4].line, 12);
+}
+
+TEST(Validation, ColourRampShape) {
+    Loaded r = load(
+        "reactions:\n"
+        "  - name: a\n"
+        "    type: dust\n"
+        "    particle:\n"
+        "      colour_ramp:\n"
+        "        - {t: 0, rgba: [1, 1, 1]}\n"
+        "        - {rgba: [1, 1, 1, 2]}\n");
+    EXPECT_FALSE(r.ok);
+    ASSERT_EQ(r.diags.size(), 3u) << dump(r.diags);
+    EXPECT_EQ(r.diags[0].code, ErrorCode::OutOfRange);  // 3 channels, 4 expected
+    EXPECT_EQ(r.diags[0].key, "reactions[0].particle.colour_ramp[0].rgba");
+    EXPECT_EQ(r.diags[1].code, ErrorCode::MissingKey);
+    EXPECT_EQ(r.diags[1].key, "reactions[0].particle.colour_ramp[1].t");
+    EXPECT_EQ(r.diags[2].code, ErrorCode::OutOfRange);
+    EXPECT_EQ(r.diags[2].key, "reactions[0].particle.colour_ramp[1].rgba[3]");
+}
+
+TEST(Validation, ThreeErrorsReportThree) {
+    Loaded r = load(
+        "reactions:\n"
+        "  - name: a\n"
+        "    type: smoke\n"
+        "    emission:\n"
+        "      capacity: -1\n"
+        "    particle:\n"
+        "      drag: .inf\n");
+    EXPECT_FALSE(r.ok);
+    ASSERT_EQ(r.diags.size(), 3u) << dump(r.diags);
+    EXPECT_EQ(r.diags[0].code, ErrorCode::InvalidEnum);
+    EXPECT_EQ(r.diags[0].line, 3);
+    EXPECT_EQ(r.diags[1].code, ErrorCode::NegativeCount);
+    EXPECT_EQ(r.diags[1].line, 5);
+    EXPECT_EQ(r.diags[2].code, ErrorCode::NotFinite);
+    EXPECT_EQ(r.diags[2].line, 7);
+}
+
+TEST(Validation, ErrorsInSeveralReactionsAreAllReported) {
+    Loaded r = load(
+        "reactions:\n"
+        "  - name: a\n"
+        "    type: dust\n"
+        "    emission: {rate: -1}\n"
+        "  - name: b\n"
+        "    type: dust\n"
+        "    render: {blend: multiply}\n");
+    ASSERT_EQ(r.diags.size(), 2u) << dump(r.diags);
+    EXPECT_EQ(r.diags[0].key, "reactions[0].emission.rate");
+    EXPECT_EQ(r.diags[1].key, "reactions[1].render.blend");
+}
+
+TEST(Validation, BadFileLeavesTheOutputUntouched) {
+    fx::ReactionSet set;
+    set.reactions.resize(1);
+    set.reactions[0].name = "sentinel";
+    set.files.push_back("earlier.yaml");
+    fx::Diagnostics diags;
+    EXPECT_FALSE(fx::loadReactionText(withParticleKey("drag: fast"), "bad.yaml", &set, &diags));
+    ASSERT_EQ(set.reactions.size(), 1u);
+    EXPECT_EQ(set.reactions[0].name, "sentinel");
+    ASSERT_EQ(set.files.size(), 1u);
+    EXPECT_EQ(set.files[0], "earlier.yaml");
+    // A null diagnostics list is allowed.
+    EXPECT_FALSE(fx::loadReactionText("reactions: 5", "bad.yaml", &set, nullptr));
+    EXPECT_EQ(set.reactions[0].name, "sentinel");
+}
+
+TEST(Validation, TooManyReactionsAndTooMuchCapacity) {
+    std::string many = "reactions:\n";
+    for (int i = 0; i < fx::kMaxReactionsPerFile + 1; ++i) {
+        many += "  - {name: r" + std::to_string(i) + ", type: dust}\n";
+    }
+    expectOnly(load(many), ErrorCode::OutOfRange, 2, 0, "reactions");
+
+    std::string heavy = "reactions:\n";
+    for (int i = 0; i < 5; ++i) {
+        heavy += "  - {name: r" + std::to_string(i) + ", type: dust, emission: {capacity: 1000000}}\n";
+    }
+    expectOnly(load(heavy), ErrorCode::OutOfRange, 6, 0, "reactions[4].emission.capacity");
+}
+
+TEST(Validation, DiagnosticsPerFileAreCapped) {
+    std::string text = "reactions:\n  - name: a\n    type: dust\n    particle:\n";
+    for (int i = 0; i < 300; ++i) text += "      k" + std::to_string(i) + ": 1\n";
+    Loaded r = load(text);
+    EXPECT_FALSE(r.ok);
+    ASSERT_EQ(r.diags.size(), fx::kMaxDiagnosticsPerFile + 1);
+    EXPECT_EQ(r.diags.back().code, ErrorCode::TooManyErrors);
+}
+
+TEST(Validation, SelfReferencingAliasTerminates) {
+    // yaml-cpp registers an anchor before its children, so this node contains itself.
+    Loaded r = load("reactions: &a [*a]\n");
+    EXPECT_FALSE(r.ok);
+    ASSERT_FALSE(r.diags.empty());
+    Loaded deep = load("reactions:\n  - name: a\n    type: dust\n    particle: {drag: &d [*d]}\n");
+    EXPECT_FALSE(deep.ok);
+    ASSERT_EQ(deep.diags.size(), 1u) << dump(deep.diags);
+    EXPECT_EQ(deep.diags[0].code, ErrorCode::TooDeep);
+}
+
+TEST(Validation, AliasExpansionIsNotExpanded) {
+    // "Billion laughs": 9 levels of 10 aliases each would be 10^9 nodes if walked.
+    std::string text = "l0: &l0 [x, x, x, x, x, x, x, x, x, x]\n";
+    for (int i = 1; i < 10; ++i) {
+        std::string p = "*l" + std::to_string(i - 1);
+        text += "l" + std::to_string(i) + ": &l" + std::to_string(i) + " [" + p;
+        for (int k = 1; k < 10; ++k) text += ", " + p;
+        text += "]\n";
+    }
+    text += "reactions: [*l9]\n";
+    Loaded r = load(text);
+    EXPECT_FALSE(r.ok);
+    EXPECT_FALSE(r.diags.empty());
+}
+
+TEST(Validation, DiagnosticStrFormat) {
+    Loaded r = load(withParticleKey("drag: fast"));
+    ASSERT_EQ(r.diags.size(), 1u);
+    EXPECT_EQ(r.diags[0].str(),
+              "test.yaml:5:13: error[WrongType] reactions[0].particle.drag: expected a number in "
+              "[0, 1000], got 'fast'");
+    EXPECT_STREQ(fx::errorCodeName(ErrorCode::NegativeCount), "NegativeCount");
+}
+
+}  // namespace

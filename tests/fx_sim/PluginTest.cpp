@@ -1,0 +1,240 @@
+// The plugin glue (PluginImpl) driven by a fake host: entry-point version check, loading,
+// Reaction::Continue with the host's wheels and collision amount, the render hook, stats, and
+// hot reload that keeps the particles of reactions whose name and capacity did not change.
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "../../fx_plugin/src/PluginImpl.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+class FakeHost : public fx::HostAdapter {
+public:
+    void* getProcAddress(const char*) override { return nullptr; }
+    int wheelCount() const override { return static_cast<int>(wheels.size()); }
+    fx::WheelContact wheel(int i) const override { return wheels.at(static_cast<size_t>(i)); }
+    glm::vec3 wind() const override { return glm::vec3(1.0f, 0.0f, 0.0f); }
+    glm::vec3 collisionPoint() const override { return glm::vec3(2.0f, 0.5f, 0.0f); }
+    void log(fx::LogLevel level, const char* message) override {
+        if (level == fx::LogLevel::Error) errors.push_back(message);
+    }
+    std::vector<fx::WheelContact> wheels;
+    std::vector<std::string> errors;
+};
+
+class FakeFrame : public fx::FrameBuilder {
+public:
+    fx::Target sceneColor() override { return fx::Target{1}; }
+    fx::Target sceneDepth() override { return fx::Target{2}; }
+    fx::Target createTarget(const char*, const fx::TargetDesc&) override { return fx::Target{3}; }
+    void addPass(const char*, std::initializer_list<fx::Target>, std::initializer_list<fx::Target>,
+                 std::function<void(fx::PassContext&)>) override {
+        ++passes;
+    }
+    int passes = 0;
+};
+
+const std::string kReactions = std::string(CUBE_SOURCE_DIR) + "/reactions";
+
+std::unique_ptr<fx::Plugin> create(FakeHost* host) {
+    fx::PluginImports imports;
+    imports.host = host;
+    return fxCreatePlugin(imports);
+}
+
+void burnout(FakeHost* host) {
+    host->wheels.assign(4, fx::WheelContact{});
+    for (int i = 0; i < 4; ++i) {
+        fx::WheelContact& w = host->wheels[static_cast<size_t>(i)];
+        w.grounded = true;
+        w.rear = i >= 2;
+        w.slip = w.rear ? 1.0f : 0.0f;
+        w.position = glm::vec3(i % 2 ? 0.8f : -0.8f, 0.0f, w.rear ? -1.4f : 1.4f);
+    }
+}
+
+int indexOf(const fx::Plugin& p, const std::string& name) {
+    for (int i = 0; i < p.reactionCount(); ++i) {
+        if (p.reactionName(i) == name) return i;
+    }
+    return -1;
+}
+
+TEST(Plugin, EntryPointChecksVersionAndHost) {
+    FakeHost host;
+    fx::PluginImports imports;
+    imports.host = &host;
+    imports.apiVersion = fx::kApiVersion + 1;
+    EXPECT_EQ(fxCreatePlugin(imports), nullptr);
+    imports.apiVersion = fx::kApiVersion;
+    imports.host = nullptr;
+    EXPECT_EQ(fxCreatePlugin(imports), nullptr);
+    imports.host = &host;
+    EXPECT_NE(fxCreatePlugin(imports), nullptr);
+}
+
+TEST(Plugin, ContinueEmitsFromTheHostsWheelsAndCollisions) {
+    FakeHost host;
+    auto plugin = create(&host);
+    fx::Diagnostics diags;
+    ASSERT_TRUE(plugin->loadReactions(kReactions, &diags));
+    ASSERT_EQ(plugin->reactionCount(), 3);
+    EXPECT_EQ(plugin->reactionName(7), "");
+    burnout(&host);
+    const int smoke = indexOf(*plugin, "burnout_smoke");
+    const int dust = indexOf(*plugin, "offtrack_dust");
+    const int burst = indexOf(*plugin, "barrier_burst");
+    float amount = 0.0f;
+    for (int i = 0; i < 60; ++i) {
+        amount = i == 30 ? 1.0f : 0.0f;
+        for (int r = 0; r < plugin->reactionCount(); ++r) plugin->continueReaction(r, 1.0f / 60.0f, &amount);
+    }
+    const auto& impl = static_cast<const fx::PluginImpl&>(*plugin);
+    EXPECT_NEAR(impl.runtimes()[static_cast<size_t>(smoke)].pool().alive(), 180, 1);  // 2 x 90/s x 1 s
+    EXPECT_EQ(impl.runtimes()[static_cast<size_t>(dust)].pool().alive(), 0);          // on asphalt
+    EXPECT_EQ(impl.runtimes()[static_cast<size_t>(burst)].counters().bursts, 1u);
+    EXPECT_EQ(impl.runtimes()[static_cast<size_t>(burst)].counters().emitted, 40u);
+    plugin->continueReaction(burst, 1.0f / 60.0f, nullptr);  // null amount = no collision
+    EXPECT_EQ(plugin->stats().reactions, 3);
+    int alive = 0;
+    for (const auto& rt : impl.runtimes()) alive += rt.pool().alive();
+    EXPECT_EQ(plugin->stats().particlesAlive, alive);
+}
+
+TEST(Plugin, DeclarePassesCallsTheRenderHookWithTheRuntimes) {
+    // PluginImpl directly: fxCreatePlugin installs the GL particle renderer as the hook, and
+    // this test has no GL context (the engine-free GL host tests cover that path).
+    FakeHost host;
+    fx::PluginImports imports;
+    imports.host = &host;
+    auto plugin = std::make_unique<fx::PluginImpl>(imports);
+    ASSERT_TRUE(plugin->loadReactions(kReactions + "/burnout_smoke.yaml", nullptr));
+    fx::PluginImpl& impl = *plugin;
+    FakeFrame frame;
+    fx::ViewInfo view;
+    plugin->declarePasses(view, frame);  // no renderer installed: nothing declared
+    EXPECT_EQ(frame.passes, 0);
+
+    fx::RenderOptions opts;
+    opts.quarterRes = true;
+    plugin->setRenderOptions(opts);
+    EXPECT_TRUE(plugin->renderOptions().quarterRes);
+    int calls = 0;
+    impl.setRenderHook([&](const fx::ViewInfo&, fx::FrameBuilder& fb,
+                           const std::vector<fx::ReactionRuntime>& runtimes,
+                           const fx::RenderOptions& o) {
+        ++calls;
+        EXPECT_EQ(runtimes.size(), 1u);
+        EXPECT_EQ(runtimes[0].name(), "burnout_smoke");
+        EXPECT_TRUE(o.quarterRes);
+        fb.addPass("particles", {fb.sceneDepth()}, {fb.sceneColor()}, [](fx::PassContext&) {});
+        impl.setParticlesDrawn(12);
+    });
+    plugin->declarePasses(view, frame);
+    EXPECT_EQ(calls, 1);
+    EXPECT_EQ(frame.passes, 1);
+    EXPECT_EQ(plugin->stats().particlesDrawn, 12);
+}
+
+TEST(Plugin, ImportedSeedPicksTheParticles) {
+    auto run = [](uint64_t seed) {
+        FakeHost host;
+        burnout(&host);
+        fx::PluginImports imports;
+        imports.host = &host;
+        imports.seed = seed;
+        auto plugin = fxCreatePlugin(imports);
+        EXPECT_TRUE(plugin->loadReactions(kReactions + "/burnout_smoke.yaml", nullptr));
+        for (int i = 0; i < 20; ++i) plugin->continueReaction(0, 1.0f / 60.0f, nullptr);
+        const auto& impl = static_cast<const fx::PluginImpl&>(*plugin);
+        return impl.runtimes()[0].pool().posX()[0];
+    };
+    EXPECT_EQ(run(0), run(fx::ReactionRuntime::kDefaultSeed));  // 0 = the default seed
+    EXPECT_EQ(run(5), run(5));
+    EXPECT_NE(run(5), run(6));
+}
+
+TEST(Plugin, FailedLoadKeepsTheRunningSet) {
+    FakeHost host;
+    auto plugin = create(&host);
+    ASSERT_TRUE(plugin->loadReactions(kReactions + "/burnout_smoke.yaml", nullptr));
+    fx::Diagnostics diags;
+    EXPECT_FALSE(plugin->loadReactions("/nonexistent/reactions", &diags));
+    ASSERT_EQ(diags.size(), 1u);
+    EXPECT_EQ(diags[0].code, fx::ErrorCode::FileNotFound);
+    EXPECT_FALSE(host.errors.empty());  // and the host's log heard about it
+    EXPECT_EQ(plugin->reactionCount(), 1);
+}
+
+class PluginReload : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("fx_plugin_reload_" + std::to_string(::getpid()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override {
+        std::error_code ec;
+        fs::remove_all(dir_, ec);
+    }
+    void write(const std::string& drag, int capacity, const char* extraName = nullptr) {
+        std::string text = "reactions:\n  - name: smoke\n    type: wheel_smoke\n"
+                           "    emission: {rate: 100, capacity: " + std::to_string(capacity) +
+                           "}\n    particle: {drag: " + drag + ", lifetime: [8, 8]}\n";
+        if (extraName) text += "  - {name: " + std::string(extraName) + ", type: dust}\n";
+        std::ofstream(dir_ / "smoke.yaml", std::ios::binary | std::ios::trunc) << text;
+    }
+    bool pollFor(fx::Plugin& plugin, fx::Diagnostics* diags) {
+        // The library polls the disk at most every 0.1 s; 1.5 s is the deadline.
+        for (int i = 0; i < 100; ++i) {
+            if (plugin.pollHotReload(diags)) return true;
+            if (diags && !diags->empty()) return false;
+            usleep(15000);
+        }
+        return false;
+    }
+    fs::path dir_;
+};
+
+TEST_F(PluginReload, KeepsParticlesWhenNameAndCapacityAreUnchanged) {
+    FakeHost host;
+    burnout(&host);
+    auto plugin = create(&host);
+    write("1.0", 500);
+    ASSERT_TRUE(plugin->loadReactions(dir_.string(), nullptr));
+    for (int i = 0; i < 30; ++i) plugin->continueReaction(0, 1.0f / 60.0f, nullptr);
+    const int alive = plugin->stats().particlesAlive;
+    ASSERT_EQ(alive, 100);  // 2 rear wheels x 100/s x 0.5 s
+
+    write("3.0", 500, "dust");  // new drag, one more reaction
+    ASSERT_TRUE(pollFor(*plugin, nullptr));
+    ASSERT_EQ(plugin->reactionCount(), 2);
+    const auto& impl = static_cast<const fx::PluginImpl&>(*plugin);
+    const int smoke = indexOf(*plugin, "smoke");
+    EXPECT_EQ(impl.runtimes()[static_cast<size_t>(smoke)].pool().alive(), alive);  // the smoke stays
+    EXPECT_EQ(impl.runtimes()[static_cast<size_t>(smoke)].desc().particle.drag, 3.0f);
+    EXPECT_EQ(plugin->stats().reloads, 1);
+
+    write("fast", 500);  // bad edit: reported, running set kept
+    fx::Diagnostics diags;
+    EXPECT_FALSE(pollFor(*plugin, &diags));
+    ASSERT_EQ(diags.size(), 1u);
+    EXPECT_EQ(diags[0].code, fx::ErrorCode::WrongType);
+    EXPECT_EQ(plugin->stats().reloadErrors, 1);
+    EXPECT_EQ(plugin->reactionCount(), 2);
+
+    write("3.0", 800);  // capacity changed: a fresh pool
+    ASSERT_TRUE(pollFor(*plugin, nullptr));
+    ASSERT_EQ(plugin->reactionCount(), 1);
+    EXPECT_EQ(impl.runtimes()[0].pool().alive(), 0);
+    EXPECT_EQ(impl.runtimes()[0].pool().capacity(), 800);
+}
+
+}  // namespace
