@@ -7,10 +7,23 @@
 #include <fstream>
 
 #include "game/Trace.h"
+#include "gl/Gl.h"
 #include "gl/Paths.h"
 #include "scene/SceneLoader.h"
 
 namespace cube {
+
+namespace {
+long residentKb() {
+    long pages = 0, resident = 0;
+    if (FILE* f = std::fopen("/proc/self/statm", "r")) {
+        if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2) resident = 0;
+        std::fclose(f);
+    }
+    return resident * 4;  // 4 KiB pages on x86-64 Linux
+}
+}  // namespace
+
 
 Game::Game() = default;
 Game::~Game() {
@@ -70,15 +83,19 @@ void Game::updateCameras(float dt) {
     ViewCamera& c = chase_.camera();
     c.eye = pose.position - 7.5f * fwd + glm::vec3(0.0f, 2.6f, 0.0f);
     c.target = pose.position + 2.0f * fwd + glm::vec3(0.0f, 0.6f, 0.0f);
+    if (options_.fixedCamera) {
+        c.eye = glm::vec3(options_.cameraEye[0], options_.cameraEye[1], options_.cameraEye[2]);
+        c.target = glm::vec3(options_.cameraTarget[0], options_.cameraTarget[1], options_.cameraTarget[2]);
+    }
     c.fovY = glm::radians(55.0f);
     c.nearPlane = options_.nearPlane;
     c.farPlane = options_.farPlane;
 
-    // Rear-view mirror: from the roof, looking back along the car.
+    // Rear-view mirror: from just behind the car, looking back along it.
     const glm::vec3 carFwd(std::cos(pose.heading), 0.0f, -std::sin(pose.heading));
     ViewCamera& m = mirror_.camera();
-    m.eye = pose.position + glm::vec3(0.0f, 1.45f, 0.0f) - 0.6f * carFwd;
-    m.target = m.eye - 10.0f * carFwd - glm::vec3(0.0f, 1.2f, 0.0f);
+    m.eye = pose.position + glm::vec3(0.0f, 1.1f, 0.0f) - 2.5f * carFwd;
+    m.target = m.eye - 10.0f * carFwd - glm::vec3(0.0f, 0.9f, 0.0f);
     m.fovY = glm::radians(30.0f);
     m.nearPlane = 0.1f;
     m.farPlane = 500.0f;
@@ -86,20 +103,31 @@ void Game::updateCameras(float dt) {
 
 void Game::Dyn(float dt) {
     Trace::call("Game::Dyn");
-    const auto start = std::chrono::steady_clock::now();
+    Update(dt);
+    RenderFrame();
+    ++frame_;
+}
+
+void Game::Update(float dt) {
     if (!std::isfinite(dt) || dt < 0.0f) dt = 0.0f;
     dt = std::min(dt, 10.0f);
     if (options_.watch) specialFX_.pollHotReload(scene_);
-    // Update sequence.
     time_ += dt;
     vehicle_.update(sceneData_, time_);
     updateCameras(dt);
     specialFX_.Dyn(dt, vehicle_);
-    // Render sequence.
+}
+
+double Game::RenderFrame() {
+    const auto start = std::chrono::steady_clock::now();
     render_.Dyn(*this);
     glFinish();
-    ++frame_;
-    frameMs_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    // Memory probes for the soak test: after warm-up, and at every frame from then on.
+    if (frameMs_.size() == 300) rssWarmKb_ = residentKb();
+    rssLastKb_ = residentKb();
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    frameMs_.push_back(ms);
+    return ms;
 }
 
 namespace {
@@ -160,6 +188,11 @@ bool Game::writeStatsJson(const std::string& path, std::string* error) const {
         << "  \"render_targets_live\": " << r.targetsLive << ",\n"
         << "  \"render_targets_last_frame\": " << r.targetsAcquired << ",\n"
         << "  \"timing_method\": " << jsonString(r.timingMethod) << ",\n"
+        << "  \"rss_kb_after_300_frames\": " << rssWarmKb_ << ",\n"
+        << "  \"rss_kb_end\": " << rssLastKb_ << ",\n"
+        << "  \"pool_live_textures\": " << ps.liveTextures << ",\n"
+        << "  \"pool_live_framebuffers\": " << ps.liveFramebuffers << ",\n"
+        << "  \"gl_errors\": " << gl::errorCount() << ",\n"
         << "  \"frame_ms_median\": " << median_s << "\n"
         << "}\n";
     return bool(out);

@@ -30,6 +30,11 @@ public:
     bool Init(const Options& options, std::string* error, std::unique_ptr<Platform> platform = nullptr);
     /// One frame: update by `dt` seconds of game time, then render. dt is clamped to [0, 10].
     void Dyn(float dt);
+    /// The two halves of Dyn, for harnesses that render one simulated frame several ways
+    /// (fxbench): Update advances the drive and the effects; RenderFrame draws the current state
+    /// with the current options and waits for the GPU (glFinish). RenderFrame returns its wall ms.
+    void Update(float dt);
+    double RenderFrame();
 
     /// Asks for a read-back of the next rendered frame (lastFrame()).
     void captureNextFrame() { captureNext_ = true; }
@@ -77,6 +82,7 @@ private:
     bool captureNext_ = false;
     ImageRGBA8 lastFrame_;
     std::vector<double> frameMs_;
+    long rssWarmKb_ = 0, rssLastKb_ = 0;
     std::map<std::string, int> passRuns_, passCulls_;
 };
 

@@ -37,6 +37,13 @@ struct Options {
     float nearPlane = 0.1f;
     float farPlane = 2000.0f;
     bool help = false;
+    // Harness switches (fxbench; no command-line flag in cube_game).
+    bool effects = true;          ///< false: the bare engine, no particle passes at all
+    int overdrawLayers = 0;       ///< opaque costly panels stacked in front of the chase camera
+    int overdrawCost = 16;
+    bool fixedCamera = false;     ///< chase view from cameraEye towards cameraTarget (world space)
+    float cameraEye[3] = {0.0f, 2.0f, 8.0f};
+    float cameraTarget[3] = {0.0f, 0.0f, 0.0f};
 };
 
 /// Parses argv. On a bad flag or value returns false with a message naming the flag and what

@@ -42,8 +42,7 @@ void Render::Dyn(Game& game) {
     Trace::call("Render::Dyn");
     handleKeys(game);
     Platform& platform = game.platform();
-    const int w = game.options().window ? platform.width() : game.options().width;
-    const int h = game.options().window ? platform.height() : game.options().height;
+    const int w = platform.width(), h = platform.height();
     if (w <= 0 || h <= 0) return;  // minimised: nothing to draw, nothing allocated
 
     game.scene_.setCarTransform(game.vehicle_.transform());
@@ -58,7 +57,10 @@ void Render::Dyn(Game& game) {
 
     FrameSettings settings;
     settings.prepassEqual = game.options_.prepassEqual;
-    settings.plugin = game.specialFX_.plugin();
+    settings.plugin = game.options_.effects ? game.specialFX_.plugin() : nullptr;
+    settings.drawLegacy = game.options_.effects;
+    settings.overdrawLayers = game.options_.overdrawLayers;
+    settings.overdrawCost = game.options_.overdrawCost;
     settings.hud = game.options_.hud;
     if (settings.hud) {
         char text[160];

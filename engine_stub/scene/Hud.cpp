@@ -47,6 +47,8 @@ void Hud::draw(int viewportWidth, int viewportHeight) {
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(triangles_.size() * sizeof(float)), triangles_.data(),
                  GL_STREAM_DRAW);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glUniform4f(program_.uniform("uColor"), 0.0f, 0.0f, 0.0f, 0.55f);

@@ -72,6 +72,7 @@ void LegacySpriteRenderer::draw(const std::vector<cubeParticleSystem::SpriteVert
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
     glBindTexture(GL_TEXTURE_2D, 0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     glUseProgram(0);

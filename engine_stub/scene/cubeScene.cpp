@@ -12,10 +12,33 @@ bool cubeScene::Init(const SceneData& data, std::string* error) {
     if (!gl::Program::load("vs_mesh.glsl", "fs_mesh_prepass.glsl", &prepassProgram, error)) return false;
     if (!gl::Program::load("vs_fullscreen.glsl", "fs_sky.glsl", &skyProgram, error)) return false;
     if (!gl::Program::load("vs_fullscreen.glsl", "fs_blit.glsl", &blitProgram, error)) return false;
+    if (!gl::Program::load("vs_mesh.glsl", "fs_mesh_costly.glsl", &costlyProgram, error)) return false;
+    if (!panelVao) {
+        // Two triangles, position + normal, as GpuScene lays out vertices.
+        const float v[] = {-1, -1, 0, 0, 0, 1, 1, -1, 0, 0, 0, 1, 1, 1, 0, 0, 0, 1,
+                           -1, -1, 0, 0, 0, 1, 1, 1,  0, 0, 0, 1, -1, 1, 0, 0, 0, 1};
+        glGenVertexArrays(1, &panelVao);
+        glGenBuffers(1, &panelVbo);
+        glBindVertexArray(panelVao);
+        glBindBuffer(GL_ARRAY_BUFFER, panelVbo);
+        glBufferData(GL_ARRAY_BUFFER, sizeof v, v, GL_STATIC_DRAW);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
+        glBindVertexArray(0);
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
+    }
     if (!legacySprites.init(error)) return false;
     if (!hud.init(error)) return false;
     if (!emptyVao) glGenVertexArrays(1, &emptyVao);
     return true;
+}
+
+cubeScene::~cubeScene() {
+    if (panelVbo) glDeleteBuffers(1, &panelVbo);
+    if (panelVao) glDeleteVertexArrays(1, &panelVao);
+    if (emptyVao) glDeleteVertexArrays(1, &emptyVao);
 }
 
 cubeParticleSystem* cubeScene::CreateParticleSystem(cubeParticleSystem::Kind kind) {
@@ -34,6 +57,7 @@ rtt::FrameGraphResource cubeScene::Render(rtt::FrameGraph& graph, std::vector<cu
         if (!main) {
             s.hud = false;
             s.inset = {};
+            s.overdrawLayers = 0;
         } else {
             s.inset = last;  // the previous view (mirror) is inset into the main view
         }

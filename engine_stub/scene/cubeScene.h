@@ -22,14 +22,21 @@ namespace cube {
 struct FrameSettings {
     bool prepassEqual = false;      ///< opaque reuses the prepass z-buffer, depth test EQUAL
     fx::Plugin* plugin = nullptr;   ///< the particle-bucket hook (null: legacy or no effects)
+    bool drawLegacy = true;         ///< draw legacy particle systems (false: the bare engine)
     bool hud = true;
     std::string hudText;
     rtt::FrameGraphResource inset;  ///< drawn into the chase view's HUD bucket (mirror)
     bool insetFlipX = true;
+    int overdrawLayers = 0;         ///< fxbench: opaque panels stacked in front of the camera
+    int overdrawCost = 16;          ///< noise octaves per panel pixel
 };
 
 class cubeScene {
 public:
+    cubeScene() = default;
+    ~cubeScene();
+    cubeScene(const cubeScene&) = delete;
+    cubeScene& operator=(const cubeScene&) = delete;
     /// Uploads the scene and builds the programs. False + error (shader file:line, ...).
     bool Init(const SceneData& data, std::string* error);
 
@@ -49,7 +56,8 @@ public:
     const glm::mat4& carTransform() const { return carTransform_; }
 
     // Back-end resources the views' passes draw with.
-    gl::Program meshProgram, prepassProgram, skyProgram, blitProgram;
+    gl::Program meshProgram, prepassProgram, skyProgram, blitProgram, costlyProgram;
+    GLuint panelVao = 0, panelVbo = 0;  ///< one unit quad (z = 0, normal +Z) for the overdraw panels
     LegacySpriteRenderer legacySprites;
     Hud hud;
     GLuint emptyVao = 0;  ///< for gl_VertexID full-screen triangles (core profile needs a VAO)

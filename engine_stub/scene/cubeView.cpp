@@ -1,6 +1,7 @@
 #include "scene/cubeView.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -17,6 +18,30 @@ glm::mat4 ViewCamera::view() const { return glm::lookAt(eye, target, up); }
 glm::mat4 ViewCamera::proj(float aspect) const {
     return glm::perspective(fovY, aspect > 0.0f ? aspect : 1.0f, nearPlane, farPlane);
 }
+
+namespace {
+
+// fxbench's overdraw panels: `layers` opaque quads facing the camera at 40 m down to 20 m,
+// drawn back to front (the worst order for depth test LESS) over the upper 70% of the view.
+void drawPanels(const cubeScene& sc, const gl::Program& p, int layers, const glm::mat4& view, float fovY,
+                float aspect) {
+    if (layers <= 0) return;
+    const glm::mat4 camToWorld = glm::inverse(view);
+    const GLint uModel = p.uniform("uModel"), uColor = p.uniform("uBaseColor");
+    glBindVertexArray(sc.panelVao);
+    for (int i = 0; i < layers; ++i) {
+        const float d = 40.0f - 20.0f * float(i) / float(std::max(1, layers - 1));
+        const float halfH = d * std::tan(0.5f * fovY), halfW = halfH * aspect;
+        glm::mat4 m = glm::translate(camToWorld, glm::vec3(0.0f, 0.3f * halfH, -d));
+        m = glm::scale(m, glm::vec3(0.95f * halfW, 0.7f * halfH, 1.0f));
+        glUniformMatrix4fv(uModel, 1, GL_FALSE, glm::value_ptr(m));
+        if (uColor >= 0) glUniform4f(uColor, 0.3f + 0.05f * float(i % 8), 0.35f, 0.5f - 0.03f * float(i % 8), 1.0f);
+        glDrawArrays(GL_TRIANGLES, 0, 6);
+    }
+    glBindVertexArray(0);
+}
+
+}  // namespace
 
 rtt::FrameGraphResource cubeView::Render(cubeScene& scene, rtt::FrameGraph& graph, const FrameSettings& settings) {
     Trace::call("cubeView::Render");
@@ -105,12 +130,14 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
     const glm::mat4 view = view_, proj = proj_;
     const glm::vec3 eye = camera_.eye;
     cubeScene* sc = &scene;
+    const int layers = settings.overdrawLayers, cost = settings.overdrawCost;
+    const float fovY = camera_.fovY, aspect = height_ > 0 ? float(width_) / float(height_) : 1.0f;
 
     // [depth prepass] linear view depth + z-buffer; culled unless a particle reads scene depth.
     graph.addPass((name_ + "." + bucketInfo(Bucket::DepthPrepass).name).c_str(),
                   order(bucketInfo(Bucket::DepthPrepass).order),
                   [&](rtt::PassBuilder& b) { b.write(sceneDepth); },
-                  [this, sc, sceneDepth, view, proj](rtt::PassContext& ctx) {
+                  [this, sc, sceneDepth, view, proj, layers, fovY, aspect](rtt::PassContext& ctx) {
                       rtt::ClearValues cv;
                       cv.color[0] = {1e30f, 0.0f, 0.0f, 0.0f};  // "infinitely far" where nothing is drawn
                       ctx.clear(sceneDepth, cv);
@@ -125,6 +152,7 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
                       glUniformMatrix4fv(p.uniform("uProj"), 1, GL_FALSE, glm::value_ptr(proj));
                       sc->gpu().draw(opaque_, p.uniform("uModel"), -1);
                       sc->gpu().draw(alphaTested_, p.uniform("uModel"), -1);
+                      drawPanels(*sc, p, layers, view, fovY, aspect);
                       glDisable(GL_CULL_FACE);
                       glDisable(GL_DEPTH_TEST);
                       glUseProgram(0);
@@ -133,7 +161,7 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
     // [opaque] LESS with its own z-buffer, or EQUAL on the prepass z-buffer without depth writes.
     graph.addPass((name_ + "." + bucketInfo(Bucket::Opaque).name).c_str(), order(bucketInfo(Bucket::Opaque).order),
                   [&](rtt::PassBuilder& b) { b.write(color); },
-                  [this, sc, color, view, proj, equal](rtt::PassContext& ctx) {
+                  [this, sc, color, view, proj, equal, layers, cost, fovY, aspect](rtt::PassContext& ctx) {
                       rtt::ClearValues cv;
                       cv.color[0] = {0.0f, 0.0f, 0.0f, 1.0f};
                       cv.clearDepth = !equal;
@@ -149,6 +177,14 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
                       glUniformMatrix4fv(p.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
                       glUniformMatrix4fv(p.uniform("uProj"), 1, GL_FALSE, glm::value_ptr(proj));
                       sc->gpu().draw(opaque_, p.uniform("uModel"), p.uniform("uBaseColor"));
+                      if (layers > 0) {
+                          const gl::Program& c = sc->costlyProgram;
+                          glUseProgram(c.id());
+                          glUniformMatrix4fv(c.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+                          glUniformMatrix4fv(c.uniform("uProj"), 1, GL_FALSE, glm::value_ptr(proj));
+                          glUniform1i(c.uniform("uCost"), cost);
+                          drawPanels(*sc, c, layers, view, fovY, aspect);
+                      }
                       glDisable(GL_CULL_FACE);
                       glDepthMask(GL_TRUE);
                       glDepthFunc(GL_LESS);
@@ -202,7 +238,7 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
     // [particles] legacy sprites (the old CUBE path) ...
     bool anyLegacy = false;
     for (const auto& ps : scene.particleSystems())
-        anyLegacy |= ps->kind() == cubeParticleSystem::Kind::Legacy && ps->alive() > 0;
+        anyLegacy |= settings.drawLegacy && ps->kind() == cubeParticleSystem::Kind::Legacy && ps->alive() > 0;
     if (anyLegacy) {
         const glm::mat4 inv = glm::inverse(view);
         const glm::vec3 right(inv[0]), up(inv[1]);

@@ -85,8 +85,8 @@ TEST(Render, CarAndGroundAppearWhereTheCameraSays) {
     const ImageRGBA8& img = game.lastFrame();
     const DrivePose& pose = game.vehicle().pose();
     const glm::vec3 fwd(std::cos(pose.heading), 0.0f, -std::sin(pose.heading));
-    // The car body's side (blue paint) at the projected body centre.
-    const glm::ivec2 car = project(game, pose.position + glm::vec3(0.0f, 0.55f, 0.0f));
+    // The car body's rear face (blue paint), which faces the chase camera.
+    const glm::ivec2 car = project(game, pose.position - 2.15f * fwd + glm::vec3(0.0f, 0.5f, 0.0f));
     ASSERT_TRUE(car.x > 0 && car.x < img.width && car.y > 0 && car.y < img.height);
     const auto c = pixel(img, car.x, car.y);
     EXPECT_GT(c.b, c.r + 15) << "car paint is blue; got " << c.r << "," << c.g << "," << c.b;

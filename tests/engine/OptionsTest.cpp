@@ -57,8 +57,9 @@ TEST(Options, BadValuesAreRejectedNamingTheFlag) {
         std::string err;
         EXPECT_FALSE(parse(args, &o, &err)) << args[0];
         EXPECT_FALSE(err.empty());
-        if (std::string(args[0]).rfind("--", 0) == 0 && std::string(args[0]) != "--bogus" &&
-            std::string(args[0]) != "--window" && std::string(args[0]) != "--near")
-            EXPECT_NE(err.find(args[0]), std::string::npos) << err;
+        const std::string flag = args[0];
+        if (flag != "--bogus" && flag != "--window" && flag != "--near") {
+            EXPECT_NE(err.find(flag), std::string::npos) << err;
+        }
     }
 }

@@ -1,0 +1,57 @@
+#pragma once
+// The interleaved measurement: one Game, one simulation; every simulated frame is rendered in
+// every mode (rounds x, mode order rotated), and a few frames also get image error, coverage
+// and the fill limit. Raw samples only; fxbench_summary turns them into figures.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "fxbench_image_error.h"
+#include "fxbench_modes.h"
+#include "fxbench_scenarios.h"
+#include "game/Options.h"
+
+namespace fxbench {
+
+/// Defaults: nothing to run.
+struct RunConfig {
+    const Scenario* scenario = nullptr;
+    cube::Options game;                  ///< from gameOptions()
+    int frames = 0, rounds = 1, warmup = 0, errorFrames = 0;
+    std::vector<std::string> selected;   ///< modes asked for (empty = all)
+    std::string imagesDir;               ///< PNGs of the last error frame (empty = none)
+    std::string progressLabel;           ///< prefix of the stderr progress line
+};
+
+/// Every sample one mode produced.
+struct ModeRun {
+    const Mode* mode = nullptr;
+    bool selected = false;                          ///< asked for (else measured as a reference)
+    std::vector<double> frameMs;                    ///< one per timed render (RenderFrame wall ms)
+    std::vector<double> particleMs;                 ///< per timed render: passes named *particles*
+    std::map<std::string, std::vector<double>> passMs;
+    std::vector<std::string> passOrder;             ///< pass names in first-run order
+    std::vector<double> particlesDrawn;
+    int allocatingRenders = 0;                      ///< timed renders that created pool targets
+    ErrorAccum error;
+    std::vector<double> fillMs, fillRatio, coveragePct;  ///< one per error frame
+    std::vector<double> frameParticleMs;            ///< scratch: this simulated frame's rounds
+};
+
+struct RunResult {
+    std::string renderer, backend, timingMethod;
+    std::vector<ModeRun> modes;        ///< measured modes in table order (selected + references)
+    double particlesAlive = 0.0;       ///< median over timed frames
+    double edgePixelPct = 0.0;         ///< share of pixels next to depth edges (error frames)
+    double simMsPerFrame = 0.0;        ///< median Game::Update wall ms
+    int glErrors = 0;
+};
+
+/// The modes a run measures for `selected`: those plus nofx (coverage), hard (ratio base) and
+/// each selected mode's reference, in table order.
+std::vector<const Mode*> measuredModes(const std::vector<std::string>& selected);
+
+/// Runs it. False + error when the game cannot start.
+bool runBench(const RunConfig& config, RunResult* out, std::string* error);
+
+}  // namespace fxbench

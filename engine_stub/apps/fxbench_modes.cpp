@@ -1,0 +1,73 @@
+#include "fxbench_modes.h"
+
+#include <algorithm>
+
+#include "game/Game.h"
+
+namespace fxbench {
+
+const std::vector<Mode>& allModes() {
+    using fx::Technique;
+    // name, setup, effects, technique, prepassEqual, quarterRes, reference
+    static const std::vector<Mode> modes = {
+        {"nofx", "No particles (bare engine)", false, Technique::Hard, false, false, "nofx"},
+        {"hard", "Hard particles", true, Technique::Hard, false, false, "hard"},
+        {"soft", "Soft particles, no optimizations", true, Technique::Soft, false, false, "soft"},
+        {"soft+equal", "Soft particles, utilize prepass z-buffer (EQUAL)", true, Technique::Soft, true, false,
+         "soft"},
+        {"soft+quarter", "Soft particles, 1/4-size texture", true, Technique::Soft, false, true, "soft"},
+        {"soft+equal+quarter", "Soft particles, prepass EQUAL + 1/4-size texture", true, Technique::Soft, true,
+         true, "soft"},
+        {"spherical", "Spherical billboards", true, Technique::Spherical, false, false, "spherical"},
+        {"spherical+quarter", "Spherical billboards, 1/4-size texture", true, Technique::Spherical, false, true,
+         "spherical"},
+    };
+    return modes;
+}
+
+const Mode* findMode(const std::string& name) {
+    for (const Mode& m : allModes())
+        if (name == m.name) return &m;
+    return nullptr;
+}
+
+std::string modeNameList() {
+    std::string s;
+    for (const Mode& m : allModes()) s += (s.empty() ? "" : ", ") + std::string(m.name);
+    return s;
+}
+
+bool parseModeList(const std::string& text, std::vector<std::string>* out, std::string* error) {
+    out->clear();
+    size_t start = 0;
+    while (true) {
+        const size_t comma = text.find(',', start);
+        const std::string name = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        if (!findMode(name)) {
+            *error = "--modes: unknown mode '" + name + "'; valid modes: " + modeNameList();
+            return false;
+        }
+        if (std::find(out->begin(), out->end(), name) != out->end()) {
+            *error = "--modes: mode '" + name + "' given twice";
+            return false;
+        }
+        out->push_back(name);
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return true;
+}
+
+void applyMode(cube::Game& game, const Mode& mode) {
+    game.options().effects = mode.effects;
+    game.options().prepassEqual = mode.prepassEqual;
+    fx::Plugin* plugin = game.specialFX().plugin();
+    if (!plugin) return;
+    fx::RenderOptions ro = plugin->renderOptions();
+    ro.techniqueOverride = mode.technique;
+    ro.quarterRes = mode.quarterRes;
+    ro.bilinearUpsample = false;  // the depth-aware composite is the one under test
+    plugin->setRenderOptions(ro);
+}
+
+}  // namespace fxbench

@@ -1,0 +1,43 @@
+#pragma once
+// The rendering modes fxbench compares. Each is a set of run-time switches applied to one Game
+// before RenderFrame, so every mode renders the same simulated frame without re-init.
+#include <string>
+#include <vector>
+
+#include "fx/Plugin.h"
+
+namespace cube {
+class Game;
+}
+
+namespace fxbench {
+
+/// One mode. Defaults: the bare engine (effects off).
+struct Mode {
+    const char* name = "nofx";
+    const char* setup = "";            ///< Table 1's "Method" wording
+    bool effects = false;              ///< false: no particle passes at all
+    fx::Technique technique = fx::Technique::Hard;
+    bool prepassEqual = false;
+    bool quarterRes = false;
+    /// The mode whose frames this mode's image error is measured against (itself for the
+    /// full-resolution techniques: then error is between two renders of the same frame, which
+    /// checks that rendering is deterministic and must be 0).
+    const char* reference = "nofx";
+};
+
+/// Every mode, in table order: nofx, hard, soft, soft+equal, soft+quarter, soft+equal+quarter,
+/// spherical, spherical+quarter.
+const std::vector<Mode>& allModes();
+/// Null when `name` is not a mode.
+const Mode* findMode(const std::string& name);
+/// "nofx, hard, ..." for messages.
+std::string modeNameList();
+/// Parses "a,b,c": known, distinct names. False + message listing the valid ones otherwise.
+bool parseModeList(const std::string& text, std::vector<std::string>* out, std::string* error);
+
+/// Sets the game's and the plugin's switches for `mode` (HUD text does not depend on them: the
+/// harness runs with the HUD off).
+void applyMode(cube::Game& game, const Mode& mode);
+
+}  // namespace fxbench

@@ -1,0 +1,203 @@
+#include "fxbench_options.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
+#include "fxbench_modes.h"
+#include "fxbench_scenarios.h"
+
+namespace fxbench {
+
+namespace {
+
+bool parseInt(const std::string& s, long long lo, long long hi, long long* out) {
+    if (s.empty()) return false;
+    errno = 0;
+    char* end = nullptr;
+    const long long v = std::strtoll(s.c_str(), &end, 10);
+    if (errno != 0 || *end != '\0' || v < lo || v > hi) return false;
+    *out = v;
+    return true;
+}
+
+bool parseSize(const std::string& s, int* w, int* h) {
+    const size_t x = s.find('x');
+    long long a = 0, b = 0;
+    if (x == std::string::npos || !parseInt(s.substr(0, x), 16, 8192, &a) || !parseInt(s.substr(x + 1), 16, 8192, &b))
+        return false;
+    *w = int(a);
+    *h = int(b);
+    return true;
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+    std::vector<std::string> out;
+    size_t start = 0;
+    while (true) {
+        const size_t p = s.find(sep, start);
+        out.push_back(s.substr(start, p == std::string::npos ? std::string::npos : p - start));
+        if (p == std::string::npos) return out;
+        start = p + 1;
+    }
+}
+
+bool parseSweep(const std::string& text, Sweep* out, std::string* error) {
+    const size_t eq = text.find('=');
+    const std::string kind = text.substr(0, eq);
+    if (eq == std::string::npos || (kind != "particles" && kind != "size")) {
+        *error = "--sweep: expected particles=N,N,... or size=WxH,WxH,..., got '" + text + "'";
+        return false;
+    }
+    *out = Sweep{};
+    for (const std::string& item : split(text.substr(eq + 1), ',')) {
+        if (kind == "particles") {
+            long long n = 0;
+            if (!parseInt(item, 1, 1000000, &n)) {
+                *error = "--sweep particles: expected particle counts 1..1000000, got '" + item + "'";
+                return false;
+            }
+            out->kind = Sweep::Kind::Particles;
+            out->counts.push_back(int(n));
+        } else {
+            int w = 0, h = 0;
+            if (!parseSize(item, &w, &h)) {
+                *error = "--sweep size: expected WxH with each 16..8192, got '" + item + "'";
+                return false;
+            }
+            out->kind = Sweep::Kind::Size;
+            out->sizes.emplace_back(w, h);
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+std::string benchUsage() {
+    return "usage: fxbench [options]\n"
+           "Renders every simulated frame of a scripted drive in several particle modes, interleaved,\n"
+           "and prints Table 1 of the thesis (min/max/average FPS) with frame-time percentiles, per-pass\n"
+           "times, the fill limit and image error against a reference mode.\n"
+           "  --help                 this text\n"
+           "  --quick                small configuration: 320x256, 8 frames, 2 rounds, 2 warm-up, 2 error frames\n"
+           "                         (later flags still override it)\n"
+           "  --scenario NAME        " + scenarioNameList() + " (default standard)\n"
+           "  --modes a,b,...        subset of: " + modeNameList() + " (default all)\n"
+           "  --size WxH             view size, 16..8192 each (default 1280x1024)\n"
+           "  --frames N             timed simulated frames, 1..100000 (default 60)\n"
+           "  --rounds R             renders of each simulated frame per mode, 1..1000 (default 3)\n"
+           "  --warmup N             untimed frames rendered in every mode first, 0..10000 (default 10)\n"
+           "  --error-frames N       frames that also get image error and the fill limit, 0..1000 (default 4)\n"
+           "  --seed N               random seed, 0..4294967295 (default 1)\n"
+           "  --backend osmesa|egl   GL context (default osmesa: llvmpipe)\n"
+           "  --mirror               draw the rear-view mirror (default off)\n"
+           "  --json PATH            results as JSON\n"
+           "  --csv PATH             results as CSV (one row per mode)\n"
+           "  --chart PATH           SVG: frame time per mode and error vs time (sweeps: cost curves)\n"
+           "  --images DIR           PNG of every mode's last error frame, and the depth-edge mask\n"
+           "  --sweep particles=N,N,...   cost curve over live particle counts (generated reaction)\n"
+           "  --sweep size=WxH,WxH,...    cost curve over view sizes (a new game per size)\n"
+           "  --integrators          integrator error vs the analytic drag solution, and CPU cost\n";
+}
+
+bool parseBenchOptions(int argc, const char* const* argv, BenchOptions* out, std::string* error) {
+    *out = BenchOptions{};
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--quick") == 0) {
+            out->quick = true;
+            out->width = 320;
+            out->height = 256;
+            out->frames = 8;
+            out->rounds = 2;
+            out->warmup = 2;
+            out->errorFrames = 2;
+        }
+    }
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto value = [&](std::string* v) {
+            if (i + 1 >= argc || argv[i + 1][0] == '\0') {
+                *error = a + ": missing value";
+                return false;
+            }
+            *v = argv[++i];
+            return true;
+        };
+        auto integer = [&](long long lo, long long hi, long long* v) {
+            std::string s;
+            if (!value(&s)) return false;
+            if (!parseInt(s, lo, hi, v)) {
+                *error = a + ": expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got '" +
+                         s + "'";
+                return false;
+            }
+            return true;
+        };
+        std::string s;
+        long long n = 0;
+        if (a == "--help" || a == "-h") {
+            out->help = true;
+        } else if (a == "--quick") {
+            // applied above
+        } else if (a == "--integrators") {
+            out->integrators = true;
+        } else if (a == "--mirror") {
+            out->mirror = true;
+        } else if (a == "--scenario") {
+            if (!value(&s)) return false;
+            if (!findScenario(s)) {
+                *error = "--scenario: unknown scenario '" + s + "'; valid scenarios: " + scenarioNameList();
+                return false;
+            }
+            out->scenario = s;
+        } else if (a == "--modes") {
+            if (!value(&s) || !parseModeList(s, &out->modes, error)) return false;
+        } else if (a == "--size") {
+            if (!value(&s)) return false;
+            if (!parseSize(s, &out->width, &out->height)) {
+                *error = "--size: expected WxH with each 16..8192, got '" + s + "'";
+                return false;
+            }
+        } else if (a == "--frames") {
+            if (!integer(1, 100000, &n)) return false;
+            out->frames = int(n);
+        } else if (a == "--rounds") {
+            if (!integer(1, 1000, &n)) return false;
+            out->rounds = int(n);
+        } else if (a == "--warmup") {
+            if (!integer(0, 10000, &n)) return false;
+            out->warmup = int(n);
+        } else if (a == "--error-frames") {
+            if (!integer(0, 1000, &n)) return false;
+            out->errorFrames = int(n);
+        } else if (a == "--seed") {
+            if (!integer(0, 4294967295LL, &n)) return false;
+            out->seed = unsigned(n);
+        } else if (a == "--backend") {
+            if (!value(&s)) return false;
+            if (s == "osmesa") out->backend = cube::Backend::OSMesa;
+            else if (s == "egl") out->backend = cube::Backend::EGL;
+            else {
+                *error = "--backend: expected osmesa or egl, got '" + s + "'";
+                return false;
+            }
+        } else if (a == "--json") {
+            if (!value(&out->json)) return false;
+        } else if (a == "--csv") {
+            if (!value(&out->csv)) return false;
+        } else if (a == "--chart") {
+            if (!value(&out->chart)) return false;
+        } else if (a == "--images") {
+            if (!value(&out->imagesDir)) return false;
+        } else if (a == "--sweep") {
+            if (!value(&s) || !parseSweep(s, &out->sweep, error)) return false;
+        } else {
+            *error = "unknown option '" + a + "' (see --help)";
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace fxbench

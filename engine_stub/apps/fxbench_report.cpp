@@ -1,0 +1,218 @@
+#include "fxbench_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "fxbench_image_error.h"
+
+namespace fxbench {
+
+std::string num(double v, int precision) {
+    if (!std::isfinite(v)) v = 0.0;
+    char b[64];
+    std::snprintf(b, sizeof b, "%.*g", precision, v);
+    return b;
+}
+
+std::string jsonQuote(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (static_cast<unsigned char>(c) < 0x20) {
+            char b[8];
+            std::snprintf(b, sizeof b, "\\u%04x", unsigned(static_cast<unsigned char>(c)));
+            out += b;
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+namespace {
+
+std::string fmt(const char* f, double v) {
+    char b[64];
+    std::snprintf(b, sizeof b, f, std::isfinite(v) ? v : 0.0);
+    return b;
+}
+
+std::string psnrText(double db) { return db >= kPsnrCapDb ? "cap (identical)" : fmt("%.1f", db); }
+
+}  // namespace
+
+std::string markdownReport(const Report& r) {
+    std::string o;
+    char line[512];
+    std::snprintf(line, sizeof line, "## fxbench: %s, %dx%d\n\n", r.scenario.c_str(), r.width, r.height);
+    o += line;
+    o += "- scenario: " + r.description + "\n";
+    o += "- renderer: " + r.renderer + " (" + r.backend + "); timing: " + r.timingMethod +
+         " (frame = Game::RenderFrame wall ms, CPU clock around glFinish)\n";
+    std::snprintf(line, sizeof line,
+                  "- %d timed simulated frames x %d rounds per mode (dt 1/60 s, seed %u), after %d warm-up "
+                  "frames; modes interleaved per frame, order rotated each round; HUD off, mirror %s\n",
+                  r.frames, r.rounds, r.seed, r.warmup, r.mirror ? "on" : "off");
+    o += line;
+    std::snprintf(line, sizeof line,
+                  "- particles alive (median): %.0f; simulation %.3f ms/frame (not in frame times)\n",
+                  r.particlesAlive, r.simMsPerFrame);
+    o += line;
+    std::snprintf(line, sizeof line,
+                  "- image error over %d frames per mode against the reference's render of the same simulated "
+                  "frame (soft modes vs soft, spherical+quarter vs spherical, the full-res techniques vs a "
+                  "second render of themselves: 0 = deterministic); PSNR over RGB 8-bit, capped at %.0f dB\n",
+                  r.modes.empty() ? 0 : r.modes[0].errorFrames, kPsnrCapDb);
+    o += line;
+    o += "\n| Method | Setup | Min FPS | Max FPS | Average FPS | p50 ms | p95 ms | p99 ms | vs hard | "
+         "particle ms | fill-limit x | RMSE | PSNR dB | max abs | edge % |\n";
+    o += "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const ModeSummary& m : r.modes) {
+        std::snprintf(line, sizeof line, "| %s (`%s`) | %dx%d, %s | ", m.setup.c_str(), m.name.c_str(), r.width,
+                      r.height, r.scenario.c_str());
+        o += line;
+        o += fmt("%.1f", m.fpsMin) + " | " + fmt("%.1f", m.fpsMax) + " | " + fmt("%.1f", m.fpsAvg) + " | ";
+        o += fmt("%.2f", m.p50) + " | " + fmt("%.2f", m.p95) + " | " + fmt("%.2f", m.p99) + " | ";
+        o += fmt("%.3f", m.ratioVsHard) + " | " + fmt("%.2f", m.particleMs) + " | ";
+        o += (m.fillLimitRatio > 0 ? fmt("%.1f", m.fillLimitRatio) : std::string("-")) + " | ";
+        o += fmt("%.2f", m.rmse) + " | " + psnrText(m.psnrDb) + " | " + fmt("%.0f", m.maxAbs) + " | " +
+             fmt("%.1f", m.edgePct) + " |\n";
+    }
+
+    // Per-pass medians: one column per mode.
+    std::vector<std::string> passNames;
+    for (const ModeSummary& m : r.modes)
+        for (const auto& p : m.passes)
+            if (std::find(passNames.begin(), passNames.end(), p.first) == passNames.end()) passNames.push_back(p.first);
+    if (!passNames.empty()) {
+        o += "\nPer-pass median ms (" + r.timingMethod + "); '-' = pass not run in that mode\n\n| pass |";
+        for (const ModeSummary& m : r.modes) o += " " + m.name + " |";
+        o += "\n|---|";
+        for (size_t i = 0; i < r.modes.size(); ++i) o += "---:|";
+        o += "\n";
+        for (const std::string& p : passNames) {
+            o += "| " + p + " |";
+            for (const ModeSummary& m : r.modes) {
+                std::string cell = " - |";
+                for (const auto& q : m.passes)
+                    if (q.first == p) cell = " " + fmt("%.3f", q.second) + " |";
+                o += cell;
+            }
+            o += "\n";
+        }
+    }
+
+    o += "\nParticle work vs the fill limit (trivial textured quad blended once over the covered pixels)\n\n"
+         "| mode | particles drawn | coverage % | particle ms | fill-limit ms | ratio | vs nofx | allocating renders |\n"
+         "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const ModeSummary& m : r.modes) {
+        o += "| " + m.name + " | " + fmt("%.0f", m.particles) + " | " + fmt("%.1f", m.coveragePct) + " | " +
+             fmt("%.2f", m.particleMs) + " | " + fmt("%.3f", m.fillLimitMs) + " | " +
+             (m.fillLimitRatio > 0 ? fmt("%.1f", m.fillLimitRatio) : std::string("-")) + " | " +
+             fmt("%.3f", m.ratioVsNofx) + " | " + std::to_string(m.allocatingRenders) + " |\n";
+    }
+    o += "\n- vs hard / vs nofx: median frame ms / that mode's median frame ms (same run)\n";
+    o += std::string("- coverage: ") + coverageDefinition() + "; fill-limit x = particle ms / fill-limit ms "
+         "(median over error frames; '-' = no particle pass)\n";
+    o += std::string("- edge %: ") + edgeDefinition() + "\n";
+    std::snprintf(line, sizeof line, "- pixels next to depth edges: %.1f%% of the frame\n", r.edgePixelPct);
+    o += line;
+    for (const std::string& n : r.notes) o += "- note: " + n + "\n";
+    return o;
+}
+
+std::string jsonReport(const Report& r, const std::string& in) {
+    std::string o;
+    o += in + "{\n";
+    o += in + "  \"scenario\": " + jsonQuote(r.scenario) + ",\n";
+    o += in + "  \"description\": " + jsonQuote(r.description) + ",\n";
+    o += in + "  \"size\": [" + std::to_string(r.width) + ", " + std::to_string(r.height) + "],\n";
+    o += in + "  \"frames\": " + std::to_string(r.frames) + ",\n";
+    o += in + "  \"rounds\": " + std::to_string(r.rounds) + ",\n";
+    o += in + "  \"warmup\": " + std::to_string(r.warmup) + ",\n";
+    o += in + "  \"seed\": " + std::to_string(r.seed) + ",\n";
+    o += in + "  \"renderer\": " + jsonQuote(r.renderer) + ",\n";
+    o += in + "  \"backend\": " + jsonQuote(r.backend) + ",\n";
+    o += in + "  \"timing_method\": " + jsonQuote(r.timingMethod) + ",\n";
+    o += in + "  \"mirror\": " + std::string(r.mirror ? "true" : "false") + ",\n";
+    o += in + "  \"hud\": false,\n";
+    o += in + "  \"ratio_base\": \"hard\",\n";
+    o += in + "  \"psnr_cap_db\": " + num(kPsnrCapDb) + ",\n";
+    o += in + "  \"particles_alive\": " + num(r.particlesAlive) + ",\n";
+    o += in + "  \"sim_ms_per_frame\": " + num(r.simMsPerFrame) + ",\n";
+    o += in + "  \"edge_pixel_pct\": " + num(r.edgePixelPct) + ",\n";
+    o += in + "  \"edge_definition\": " + jsonQuote(edgeDefinition()) + ",\n";
+    o += in + "  \"coverage_definition\": " + jsonQuote(coverageDefinition()) + ",\n";
+    o += in + "  \"notes\": [";
+    for (size_t i = 0; i < r.notes.size(); ++i) o += (i ? ", " : "") + jsonQuote(r.notes[i]);
+    o += "],\n";
+    o += in + "  \"modes\": [\n";
+    for (size_t i = 0; i < r.modes.size(); ++i) {
+        const ModeSummary& m = r.modes[i];
+        const std::string p = in + "    ";
+        o += p + "{\n";
+        o += p + "  \"name\": " + jsonQuote(m.name) + ",\n";
+        o += p + "  \"setup\": " + jsonQuote(m.setup) + ",\n";
+        o += p + "  \"samples\": " + std::to_string(m.samples) + ",\n";
+        o += p + "  \"fps\": {\"min\": " + num(m.fpsMin) + ", \"avg\": " + num(m.fpsAvg) + ", \"max\": " + num(m.fpsMax) + "},\n";
+        o += p + "  \"frame_ms\": {\"p50\": " + num(m.p50) + ", \"p95\": " + num(m.p95) + ", \"p99\": " + num(m.p99) + "},\n";
+        o += p + "  \"ratio_vs_hard\": " + num(m.ratioVsHard) + ",\n";
+        o += p + "  \"ratio_vs_nofx\": " + num(m.ratioVsNofx) + ",\n";
+        o += p + "  \"passes_ms\": {";
+        for (size_t k = 0; k < m.passes.size(); ++k)
+            o += (k ? ", " : "") + jsonQuote(m.passes[k].first) + ": " + num(m.passes[k].second);
+        o += "},\n";
+        o += p + "  \"particle_pass_ms\": " + num(m.particleMs) + ",\n";
+        o += p + "  \"particles\": " + num(m.particles) + ",\n";
+        o += p + "  \"coverage_pct\": " + num(m.coveragePct) + ",\n";
+        o += p + "  \"fill_limit_ms\": " + num(m.fillLimitMs) + ",\n";
+        o += p + "  \"fill_limit_ratio\": " + num(m.fillLimitRatio) + ",\n";
+        o += p + "  \"allocating_renders\": " + std::to_string(m.allocatingRenders) + ",\n";
+        o += p + "  \"error\": {\"reference\": " + jsonQuote(m.reference) + ", \"rmse\": " + num(m.rmse) +
+             ", \"psnr_db\": " + num(m.psnrDb) + ", \"max_abs\": " + num(m.maxAbs) + ", \"edge_pct\": " +
+             num(m.edgePct) + ", \"frames\": " + std::to_string(m.errorFrames) + "}\n";
+        o += p + "}" + (i + 1 < r.modes.size() ? "," : "") + "\n";
+    }
+    o += in + "  ]\n";
+    o += in + "}";
+    return o;
+}
+
+std::string csvRows(const Report& r, const std::string& point, bool header) {
+    std::string o;
+    if (header)
+        o += "point,scenario,width,height,mode,fps_min,fps_avg,fps_max,p50_ms,p95_ms,p99_ms,ratio_vs_hard,"
+             "ratio_vs_nofx,particle_pass_ms,particles,coverage_pct,fill_limit_ms,fill_limit_ratio,reference,"
+             "rmse,psnr_db,max_abs,edge_pct,passes_ms\n";
+    for (const ModeSummary& m : r.modes) {
+        std::string passes;
+        for (const auto& p : m.passes) passes += (passes.empty() ? "" : ";") + p.first + "=" + num(p.second);
+        o += point + "," + r.scenario + "," + std::to_string(r.width) + "," + std::to_string(r.height) + "," + m.name +
+             "," + num(m.fpsMin) + "," + num(m.fpsAvg) + "," + num(m.fpsMax) + "," + num(m.p50) + "," + num(m.p95) +
+             "," + num(m.p99) + "," + num(m.ratioVsHard) + "," + num(m.ratioVsNofx) + "," + num(m.particleMs) + "," +
+             num(m.particles) + "," + num(m.coveragePct) + "," + num(m.fillLimitMs) + "," + num(m.fillLimitRatio) +
+             "," + m.reference + "," + num(m.rmse) + "," + num(m.psnrDb) + "," + num(m.maxAbs) + "," +
+             num(m.edgePct) + ",\"" + passes + "\"\n";
+    }
+    return o;
+}
+
+bool writeText(const std::string& path, const std::string& text, std::string* error) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) {
+        *error = path + ": cannot write (folder missing or not writable?)";
+        return false;
+    }
+    out << text;
+    if (!out) {
+        *error = path + ": write failed";
+        return false;
+    }
+    return true;
+}
+
+}  // namespace fxbench

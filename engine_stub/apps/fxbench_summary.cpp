@@ -1,0 +1,108 @@
+#include "fxbench_summary.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "fxbench_stats.h"
+
+namespace fxbench {
+
+const char* edgeDefinition() {
+    return "pixels within 1 px of a depth edge of the chase view (second difference of inverse linear "
+           "depth > 10% of the pixel's, along x or y; fxbench renders the depth with the engine's prepass "
+           "program); edge % = share of those whose max RGB error > 8/255";
+}
+
+const char* coverageDefinition() {
+    return "pixels whose RGB differs from the nofx frame of the same simulated frame";
+}
+
+ModeSummary summarise(const ModeRun& run, const ModeRun* hard, const ModeRun* nofx) {
+    ModeSummary s;
+    s.name = run.mode->name;
+    s.setup = run.mode->setup;
+    s.reference = run.mode->reference;
+    s.selected = run.selected;
+    s.samples = int(run.frameMs.size());
+    if (!run.frameMs.empty()) {
+        s.fpsMin = 1000.0 / maxOf(run.frameMs);
+        s.fpsMax = 1000.0 / minOf(run.frameMs);
+        s.fpsAvg = 1000.0 / mean(run.frameMs);
+        s.p50 = median(run.frameMs);
+        s.p95 = quantile(run.frameMs, 0.95);
+        s.p99 = quantile(run.frameMs, 0.99);
+    }
+    const double hardP50 = hard ? median(hard->frameMs) : 0.0;
+    const double nofxP50 = nofx ? median(nofx->frameMs) : 0.0;
+    s.ratioVsHard = hardP50 > 0.0 ? s.p50 / hardP50 : 0.0;
+    s.ratioVsNofx = nofxP50 > 0.0 ? s.p50 / nofxP50 : 0.0;
+    for (const std::string& name : run.passOrder) s.passes.emplace_back(name, median(run.passMs.at(name)));
+    s.particleMs = median(run.particleMs);
+    s.particles = median(run.particlesDrawn);
+    s.coveragePct = median(run.coveragePct);
+    s.fillLimitMs = median(run.fillMs);
+    s.fillLimitRatio = median(run.fillRatio);
+    s.rmse = run.error.rmse();
+    s.psnrDb = run.error.frames ? run.error.psnrDb() : kPsnrCapDb;
+    s.maxAbs = run.error.maxAbs;
+    s.edgePct = run.error.edgePct();
+    s.errorFrames = run.error.frames;
+    s.allocatingRenders = run.allocatingRenders;
+    return s;
+}
+
+Report makeReport(const RunConfig& config, const RunResult& result, unsigned seed) {
+    Report r;
+    r.scenario = config.scenario->name;
+    r.description = config.scenario->description;
+    r.width = config.game.width;
+    r.height = config.game.height;
+    r.frames = config.frames;
+    r.rounds = config.rounds;
+    r.warmup = config.warmup;
+    r.errorFrames = config.errorFrames;
+    r.seed = seed;
+    r.mirror = config.game.mirror;
+    r.renderer = result.renderer;
+    r.backend = result.backend;
+    r.timingMethod = result.timingMethod;
+    r.particlesAlive = result.particlesAlive;
+    r.edgePixelPct = result.edgePixelPct;
+    r.simMsPerFrame = result.simMsPerFrame;
+    const ModeRun* hard = nullptr;
+    const ModeRun* nofx = nullptr;
+    for (const ModeRun& m : result.modes) {
+        if (std::string(m.mode->name) == "hard") hard = &m;
+        if (std::string(m.mode->name) == "nofx") nofx = &m;
+    }
+    std::string added;
+    for (const ModeRun& m : result.modes) {
+        ModeSummary s = summarise(m, hard, nofx);
+        if (m.selected) {
+            r.modes.push_back(std::move(s));
+        } else {
+            added += (added.empty() ? "" : ", ") + s.name;
+            r.internal.push_back(std::move(s));
+        }
+    }
+    if (!added.empty())
+        r.notes.push_back("also measured (not shown) as reference / base: " + added);
+    if (r.timingMethod != std::string("cpu-glfinish"))
+        r.notes.push_back(std::string("per-pass times come from ") + r.timingMethod +
+                          ", whose results arrive frames late: with modes interleaved they mix modes; "
+                          "trust frame times (CPU clock around glFinish) first");
+    int allocs = 0;
+    for (const ModeRun& m : result.modes) allocs += m.allocatingRenders;
+    if (allocs > 0) {
+        char line[200];
+        std::snprintf(line, sizeof line,
+                      "%d timed renders created render targets (pool frees targets unused for 3 frames; "
+                      "interleaving modes can evict a mode's targets): see allocating_renders in the JSON",
+                      allocs);
+        r.notes.push_back(line);
+    }
+    if (result.glErrors > 0) r.notes.push_back("GL errors were reported during the run: " + std::to_string(result.glErrors));
+    return r;
+}
+
+}  // namespace fxbench

@@ -1,0 +1,50 @@
+#pragma once
+// Figures from a run's raw samples: what the table, JSON, CSV and chart print.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fxbench_measure.h"
+
+namespace fxbench {
+
+/// One mode's figures. Every number is finite (ratios without a base are 0, PSNR is capped).
+struct ModeSummary {
+    std::string name, setup, reference;
+    bool selected = true;
+    int samples = 0;
+    double fpsMin = 0, fpsAvg = 0, fpsMax = 0;  ///< avg = 1000 / mean frame ms
+    double p50 = 0, p95 = 0, p99 = 0;           ///< frame ms
+    double ratioVsHard = 0, ratioVsNofx = 0;    ///< median frame ms / base's median
+    std::vector<std::pair<std::string, double>> passes;  ///< median ms per pass, run order
+    double particleMs = 0;                      ///< median of the per-frame sum of particle passes
+    double particles = 0;                       ///< median particles drawn (0 for nofx)
+    double coveragePct = 0;                     ///< share of pixels the particles changed
+    double fillLimitMs = 0;                     ///< median fill-limit draw over that coverage
+    double fillLimitRatio = 0;                  ///< median of particleMs / fillLimitMs; 0 = none
+    double rmse = 0, psnrDb = 0, maxAbs = 0, edgePct = 0;
+    int errorFrames = 0;
+    int allocatingRenders = 0;
+};
+
+/// Defaults: empty.
+struct Report {
+    std::string scenario, description;
+    int width = 0, height = 0, frames = 0, rounds = 0, warmup = 0, errorFrames = 0;
+    unsigned seed = 0;
+    bool mirror = false;
+    std::string renderer, backend, timingMethod;
+    double particlesAlive = 0, edgePixelPct = 0, simMsPerFrame = 0;
+    std::vector<ModeSummary> modes;     ///< the selected modes, table order
+    std::vector<ModeSummary> internal;  ///< measured only as references / bases
+    std::vector<std::string> notes;
+};
+
+ModeSummary summarise(const ModeRun& run, const ModeRun* hard, const ModeRun* nofx);
+Report makeReport(const RunConfig& config, const RunResult& result, unsigned seed);
+
+/// The edge, coverage and timing definitions, for the table's footer and the JSON.
+const char* edgeDefinition();
+const char* coverageDefinition();
+
+}  // namespace fxbench

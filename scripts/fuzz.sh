@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang and runs each for a bounded time (FUZZ_SECONDS, default
+# 60) on a seed corpus from reactions/ and data/. Any crash, leak or sanitizer report fails the
+# script; the crashing input is copied into fuzz/regressions/<target>/ so it becomes a test.
+# Then every file in fuzz/regressions/ is replayed once (the regression tests).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+CUBE_WITH_CLANG=1 bash scripts/deps.sh
+seconds="${FUZZ_SECONDS:-60}"
+build=build-fuzz
+CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCUBE_FUZZ=ON >/dev/null
+cmake --build "$build" -j"$(nproc)" --target fuzz_reactions fuzz_scene
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$work/corpus_reactions" "$work/corpus_scene"
+cp reactions/*.yaml data/legacy_smoke.yaml "$work/corpus_reactions/"
+cp data/race.gltf data/race.glb "$work/corpus_scene/"
+
+status=0
+for target in reactions scene; do
+  echo "fuzz: $target for ${seconds}s"
+  mkdir -p "fuzz/regressions/$target"
+  if ! ASAN_OPTIONS=detect_leaks=1 "$build/bin/fuzz_$target" -max_total_time="$seconds" -timeout=10 \
+       -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 -artifact_prefix="$work/crash_${target}_" \
+       "$work/corpus_$target" >"$work/log_$target" 2>&1; then
+    tail -40 "$work/log_$target"
+    for f in "$work"/crash_${target}_*; do
+      [ -e "$f" ] && cp "$f" "fuzz/regressions/$target/" && echo "fuzz: kept $(basename "$f") as a regression input"
+    done
+    status=1
+  else
+    grep -E "^(stat::number_of_executed_units|stat::new_units_added|Done)" "$work/log_$target" || true
+  fi
+  # Regression inputs: each must run clean.
+  shopt -s nullglob
+  inputs=(fuzz/regressions/$target/*)
+  if [ ${#inputs[@]} -gt 0 ]; then
+    "$build/bin/fuzz_$target" "${inputs[@]}" >"$work/replay_$target" 2>&1 || { tail -20 "$work/replay_$target"; status=1; }
+    echo "fuzz: replayed ${#inputs[@]} regression input(s) for $target"
+  fi
+done
+exit $status
