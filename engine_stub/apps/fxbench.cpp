@@ -3,6 +3,7 @@
 // with frame-time percentiles, per-pass times, the fill limit and image error against a
 // reference mode. See --help; the pieces live in fxbench_*.cpp, one concept each.
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "fxbench_chart.h"
@@ -27,8 +28,16 @@ int runSingle(const fxbench::BenchOptions& o) {
     cfg.selected = o.modes;
     cfg.imagesDir = o.imagesDir;
     cfg.progressLabel = o.scenario;
-    fxbench::RunResult result;
     std::string err;
+    if (!o.imagesDir.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(o.imagesDir, ec);
+        if (ec) {
+            std::fprintf(stderr, "fxbench: --images %s: %s\n", o.imagesDir.c_str(), ec.message().c_str());
+            return 1;
+        }
+    }
+    fxbench::RunResult result;
     if (!fxbench::runBench(cfg, &result, &err)) {
         std::fprintf(stderr, "fxbench: %s\n", err.c_str());
         return 1;

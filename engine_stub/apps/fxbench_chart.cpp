@@ -100,7 +100,7 @@ std::string chartSvg(const Report& r) {
     s += text((lx0 + lx1) / 2, barBottom + 34, "ms", "middle", 11);
 
     // Right: error vs time scatter.
-    const double sx0 = 580, sx1 = 960, sy0 = top - 6, sy1 = H - 60;
+    const double sx0 = 580, sx1 = 880, sy0 = top - 6, sy1 = H - 60;
     double maxT = 0, maxE = 0;
     for (const ModeSummary& m : r.modes) {
         maxT = std::max(maxT, m.p50);

@@ -4,7 +4,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "gl/Image.h"
+// Relative on purpose: tests/fxbench compiles this file without engine_stub's include folder
+// (tests/CMakeLists.txt links areas named fx* against fx_plugin only).
+#include "../gl/Image.h"
 
 namespace fxbench {
 

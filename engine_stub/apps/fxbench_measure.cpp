@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <memory>
 
@@ -134,13 +135,32 @@ private:
         return v;
     }
 
+    /// True when the last render created or destroyed pool targets.
+    bool poolChurned(const cube::rtt::RenderTargetPoolStats& before) {
+        const cube::rtt::RenderTargetPoolStats now = game_.pool().stats();
+        return now.totalAllocations != before.totalAllocations ||
+               now.liveFramebuffers != before.liveFramebuffers + int(now.totalAllocations - before.totalAllocations);
+    }
+
     void renderOnce(ModeRun& m, bool timed) {
         applyMode(game_, *m.mode);
-        const uint64_t allocsBefore = game_.pool().stats().totalAllocations;
-        const double ms = game_.RenderFrame();
+        if (timed) {
+            // Settle: the pool frees targets unused for 3 frames, so with modes interleaved a mode
+            // finds its targets evicted (and evicts others'). A game that stays in one mode never
+            // pays that, so every timed render follows an untimed render of the same mode and
+            // frame that re-creates them; all modes get the same treatment (and warm caches).
+            game_.RenderFrame();
+        }
+        cube::rtt::RenderTargetPoolStats before = game_.pool().stats();
+        double ms = game_.RenderFrame();
         if (!timed) return;
+        for (int retry = 0; retry < 3 && poolChurned(before); ++retry) {
+            // Rare: this render's frame-end still freed another mode's stale target. Time a repeat.
+            ++m.allocatingRenders;
+            before = game_.pool().stats();
+            ms = game_.RenderFrame();
+        }
         m.frameMs.push_back(ms);
-        if (game_.pool().stats().totalAllocations != allocsBefore) ++m.allocatingRenders;
         double particles = 0.0;
         for (const cube::rtt::PassTiming& t : game_.graph().report().timings) {
             if (t.lastMs < 0.0) continue;
@@ -190,14 +210,6 @@ private:
             std::fprintf(stderr, "%s\n", err.c_str());
         }
 
-        // Self-referenced modes render the frame a second time after every other mode did:
-        // their error is then between two renders of one frame (0 unless state leaks).
-        for (ModeRun& m : out_->modes) {
-            const std::string ref = m.mode->reference;
-            if (ref == m.mode->name) m.error.add(capture(m), images[ref], edges);
-            else if (images.count(ref)) m.error.add(images[m.mode->name], images[ref], edges);
-        }
-
         const ModeRun* bare = find("nofx");
         std::vector<uint8_t> mask;
         for (ModeRun& m : out_->modes) {
@@ -215,6 +227,15 @@ private:
             m.coveragePct.push_back(100.0 * double(covered) / double(size_t(w) * size_t(h)));
         }
 
+        // Self-referenced modes render the frame a second time after every other mode and both
+        // probes ran: their error is then between two renders of one frame, 0 unless rendering
+        // is not deterministic or some GL state leaked (from a mode or from fxbench's probes).
+        for (ModeRun& m : out_->modes) {
+            const std::string ref = m.mode->reference;
+            if (ref == m.mode->name) m.error.add(capture(m), images[ref], edges);
+            else if (images.count(ref)) m.error.add(images[m.mode->name], images[ref], edges);
+        }
+
         if (last && !config_.imagesDir.empty()) writeImages(images, edges, w, h);
     }
 
@@ -225,6 +246,17 @@ private:
         for (const auto& kv : images)
             if (!cube::writePng(prefix + fileSafe(kv.first) + ".png", kv.second, &err))
                 std::fprintf(stderr, "fxbench: %s\n", err.c_str());
+        // |mode - reference| x 4 for every mode with another reference: where the error is.
+        for (const ModeRun& m : out_->modes) {
+            const std::string ref = m.mode->reference;
+            if (ref == m.mode->name || !images.count(ref)) continue;
+            cube::ImageRGBA8 diff = images.at(m.mode->name);
+            const cube::ImageRGBA8& r = images.at(ref);
+            for (size_t i = 0; i < diff.pixels.size(); ++i)
+                diff.pixels[i] = i % 4 == 3 ? 255 : uint8_t(std::min(255, 4 * std::abs(int(diff.pixels[i]) - int(r.pixels[i]))));
+            if (!cube::writePng(prefix + "diff_" + fileSafe(m.mode->name) + ".png", diff, &err))
+                std::fprintf(stderr, "fxbench: %s\n", err.c_str());
+        }
         if (edges.size() == size_t(w) * size_t(h)) {
             // The edge mask over the soft frame, edges in red.
             cube::ImageRGBA8 img = images.count("soft") ? images.at("soft") : images.begin()->second;

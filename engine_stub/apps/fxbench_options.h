@@ -17,8 +17,9 @@ struct Sweep {
     std::vector<std::pair<int, int>> sizes;      ///< Size: (width, height) per point
 };
 
-/// Defaults: the standard scenario at 1280x1024 on OSMesa, every mode, 60 timed frames with
-/// 3 rounds each after 10 warm-up frames, seed 1, 4 error frames, mirror off, HUD off.
+/// Defaults: the standard scenario at 1280x1024 on OSMesa, every mode, 30 timed frames with
+/// 2 rounds each after 5 warm-up frames, seed 1, 3 error frames, mirror off, HUD off (about
+/// 3 minutes for standard on 2 llvmpipe cores).
 /// `--quick` (applied before the other flags, which still override it): 320x256, 8 frames,
 /// 2 rounds, 2 warm-up frames, 2 error frames.
 struct BenchOptions {
@@ -26,10 +27,10 @@ struct BenchOptions {
     std::vector<std::string> modes;  ///< empty = every mode, in the table order
     int width = 1280;
     int height = 1024;
-    int frames = 60;       ///< timed simulated frames
-    int rounds = 3;        ///< renders of each simulated frame per mode (order rotated)
-    int warmup = 10;       ///< rendered in every mode, not timed
-    int errorFrames = 4;   ///< simulated frames (evenly spaced) that also get image error + fill limit
+    int frames = 30;       ///< timed simulated frames
+    int rounds = 2;        ///< renders of each simulated frame per mode (order rotated)
+    int warmup = 5;        ///< rendered in every mode, not timed
+    int errorFrames = 3;   ///< simulated frames (evenly spaced) that also get image error + fill limit
     unsigned seed = 1;
     cube::Backend backend = cube::Backend::OSMesa;
     bool mirror = false;   ///< the rear-view mirror view and its inset

@@ -94,10 +94,10 @@ Report makeReport(const RunConfig& config, const RunResult& result, unsigned see
     int allocs = 0;
     for (const ModeRun& m : result.modes) allocs += m.allocatingRenders;
     if (allocs > 0) {
-        char line[200];
+        char line[320];
         std::snprintf(line, sizeof line,
-                      "%d timed renders created render targets (pool frees targets unused for 3 frames; "
-                      "interleaving modes can evict a mode's targets): see allocating_renders in the JSON",
+                      "%d timed renders still created or freed render targets after the settle render; each "
+                      "was repeated and the repeat timed (see allocating_renders)",
                       allocs);
         r.notes.push_back(line);
     }

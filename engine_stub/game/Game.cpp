@@ -113,7 +113,7 @@ void Game::Update(float dt) {
     dt = std::min(dt, 10.0f);
     if (options_.watch) specialFX_.pollHotReload(scene_);
     time_ += dt;
-    vehicle_.update(sceneData_, time_);
+    vehicle_.update(sceneData_, options_.stationaryCar ? options_.startTime : time_, options_.stationaryCar);
     updateCameras(dt);
     specialFX_.Dyn(dt, vehicle_);
 }

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <vector>
 
 namespace cube {
 
@@ -63,6 +64,7 @@ std::string usage() {
         "  --window               open a window (same as --backend glfw)\n"
         "  --backend osmesa|egl|glfw  context backend (default osmesa)\n"
         "  --near N --far F       chase camera clip planes (default 0.1, 2000)\n"
+        "  --camera ex,ey,ez,tx,ty,tz  pin the main camera (world metres) instead of chasing the car\n"
         "  --no-mirror            leave out the rear-view mirror view\n"
         "  --no-hud               leave out the HUD\n"
         "  --stats-json PATH      write frame statistics at exit\n"
@@ -180,6 +182,28 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
                 return false;
             }
             (a == "--near" ? o.nearPlane : o.farPlane) = float(d);
+        } else if (a == "--camera") {
+            if (!need(i, 1, a)) return false;
+            const std::string text = argv[++i];
+            std::vector<std::string> parts;
+            for (size_t start = 0;;) {
+                const size_t comma = text.find(',', start);
+                parts.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+                if (comma == std::string::npos) break;
+                start = comma + 1;
+            }
+            double v[6] = {};
+            bool ok = parts.size() == 6;
+            for (size_t k = 0; ok && k < 6; ++k) ok = parseDouble(parts[k], -1e6, 1e6, &v[k]);
+            if (!ok) {
+                *error = "--camera: expected ex,ey,ez,tx,ty,tz (six numbers in metres), got '" + text + "'";
+                return false;
+            }
+            o.fixedCamera = true;
+            for (int k = 0; k < 3; ++k) {
+                o.cameraEye[k] = float(v[k]);
+                o.cameraTarget[k] = float(v[3 + k]);
+            }
         } else if (a == "--no-mirror") {
             o.mirror = false;
         } else if (a == "--no-hud") {

@@ -29,52 +29,73 @@ glm::vec3 aroundFrontAxle(glm::vec3 pivot, float heading) {
 }  // namespace
 
 // The drive, in phases (times in seconds within one loop):
-//  0-3   straight along +X at 15 m/s, rolling
+//  0-3   along +X at 15 m/s, moving over to z = 4 (near the barrier side), rolling
 //  3-4   hard braking
-//  4-9   burnout donut: two turns about the front axle, rear wheels spinning
+//  4-9   burnout donut at z = 4: two turns about the front axle, rear wheels spinning; the
+//        smoke spreads over the track and the kerb and reaches the barrier at z = 8.5
 //  9-11  launch along +X with the rear wheels still slipping
-//  11-16 drift right onto the kerb and grass and brush the barrier at z = 8.5
+//  11-16 drift right onto the kerb and grass and brush the barrier (car side at z = 8.4)
 //  16-18 back to the track centre
+namespace {
+
+constexpr float kLane = 4.0f;          // z of the donut and the launch
+constexpr float kBrush = 7.5f;         // z of the car centre while brushing the barrier
+constexpr float kX3 = -60.0f + 45.0f;  // x at t = 3
+constexpr float kX4 = kX3 + 7.5f;      // x at t = 4 (15 m/s to 0 over 1 s)
+constexpr float kX11 = kX4 + 12.0f;    // x at t = 11
+
+// Position on the path outside the donut (which turns in place).
+glm::vec3 pathPoint(float t) {
+    if (t < 3.0f) return {-60.0f + 15.0f * t, 0.0f, kLane * smoothstep01((t - 0.5f) / 2.5f)};
+    if (t < 4.0f) {
+        const float u = t - 3.0f;
+        return {kX3 + 15.0f * u - 7.5f * u * u, 0.0f, kLane};
+    }
+    if (t < 11.0f) {
+        const float u = std::max(0.0f, t - 9.0f);
+        return {kX4 + 3.0f * u * u, 0.0f, kLane};
+    }
+    const float u = t - 11.0f;
+    float z = kLane + (kBrush - kLane) * smoothstep01(u / 2.5f);
+    if (t > 16.0f) z = kBrush * (1.0f - smoothstep01((t - 16.0f) / 2.0f));
+    return {kX11 + 12.0f * u, 0.0f, z};
+}
+
+// Heading along the path's direction of travel (+Z is to the right, hence the minus).
+float pathHeading(float t) {
+    const float h = 1e-3f;
+    const glm::vec3 d = pathPoint(t + h) - pathPoint(t - h);
+    return (std::abs(d.x) + std::abs(d.z) < 1e-9f) ? 0.0f : -std::atan2(d.z, d.x);
+}
+
+}  // namespace
+
 DrivePose Vehicle::scriptPose(double tIn) {
     double t = std::fmod(tIn, kLoopSeconds);
     if (t < 0.0) t += kLoopSeconds;
     const float tf = float(t);
     DrivePose p;
-    const float x3 = -60.0f + 15.0f * 3.0f;            // -15 at t=3
-    const float x4 = x3 + 15.0f * 1.0f - 7.5f * 1.0f;  // -7.5 at t=4 (15 m/s to 0 over 1 s)
-    if (tf < 3.0f) {
-        p.position = {-60.0f + 15.0f * tf, 0.0f, 0.0f};
-        p.rearSlip = p.frontSlip = 0.02f;
-    } else if (tf < 4.0f) {
-        const float u = tf - 3.0f;
-        p.position = {x3 + 15.0f * u - 7.5f * u * u, 0.0f, 0.0f};
-        p.rearSlip = 0.25f;
-        p.frontSlip = 0.3f;
-    } else if (tf < 9.0f) {
+    if (tf >= 4.0f && tf < 9.0f) {
         const float u = (tf - 4.0f) / 5.0f;
         // Counter-clockwise seen from above: heading grows. Two full turns, smooth start/stop.
         p.heading = 4.0f * kPi * smoothstep01(u);
-        const glm::vec3 pivot{x4 + kFrontAxle, 0.0f, 0.0f};
-        p.position = aroundFrontAxle(pivot, p.heading);
+        p.position = aroundFrontAxle(glm::vec3(kX4 + kFrontAxle, 0.0f, kLane), p.heading);
         const float omega = 4.0f * kPi * 6.0f * u * (1.0f - u) / 5.0f;  // d heading / dt
         p.rearSlip = std::clamp(0.35f + omega / 4.0f, 0.0f, 1.0f);
         p.frontSlip = 0.1f;
+        return p;
+    }
+    p.position = pathPoint(tf);
+    p.heading = pathHeading(tf);
+    if (tf < 3.0f) {
+        p.rearSlip = p.frontSlip = 0.02f;
+    } else if (tf < 4.0f) {
+        p.rearSlip = 0.25f;
+        p.frontSlip = 0.3f;
     } else if (tf < 11.0f) {
-        const float u = tf - 9.0f;
-        p.position = {x4 + 3.0f * u * u, 0.0f, 0.0f};
-        p.rearSlip = std::max(0.05f, 0.9f - 0.4f * u);
+        p.rearSlip = std::max(0.05f, 0.9f - 0.4f * (tf - 9.0f));
         p.frontSlip = 0.03f;
     } else {
-        const float x11 = x4 + 12.0f;
-        const float u = tf - 11.0f;
-        float z = 7.5f * smoothstep01(u / 2.5f);
-        if (tf > 16.0f) z = 7.5f * (1.0f - smoothstep01((tf - 16.0f) / 2.0f));
-        p.position = {x11 + 12.0f * u, 0.0f, z};
-        // Heading follows the path's direction (dz/dx), negative because +Z is to the right.
-        const float dt = 1e-3f;
-        float z2 = 7.5f * smoothstep01((u + dt) / 2.5f);
-        if (tf + dt > 16.0f) z2 = 7.5f * (1.0f - smoothstep01((tf + dt - 16.0f) / 2.0f));
-        p.heading = -std::atan2(z2 - z, 12.0f * dt);
         p.rearSlip = 0.15f;
         p.frontSlip = 0.08f;
     }
@@ -106,11 +127,11 @@ glm::mat4 Vehicle::transform() const {
     return glm::rotate(m, pose_.heading, glm::vec3(0.0f, 1.0f, 0.0f));
 }
 
-void Vehicle::update(const SceneData& scene, double t) {
+void Vehicle::update(const SceneData& scene, double t, bool stationary) {
     pose_ = scriptPose(t);
     constexpr double h = 1.0 / 1000.0;  // central difference of the script, deterministic
     const DrivePose a = scriptPose(t - h), b = scriptPose(t + h);
-    const bool wrapped = glm::length(b.position - a.position) > 1.0f;
+    const bool wrapped = stationary || glm::length(b.position - a.position) > 1.0f;
     velocity_ = wrapped ? glm::vec3(0.0f) : (b.position - a.position) / float(2.0 * h);
     // Headings are compared modulo a turn: the donut ends at 4*pi, the next phase starts at 0.
     const float dHeading = std::remainder(b.heading - a.heading, 2.0f * kPi);

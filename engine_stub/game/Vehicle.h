@@ -36,7 +36,8 @@ public:
     /// Reads the wheel offsets from the scene's "car" subtree. False + error if a wheel is missing.
     bool init(const SceneData& scene, std::string* error);
     /// Moves to script time t (seconds, wraps every kLoopSeconds) and refreshes wheels and collision.
-    void update(const SceneData& scene, double t);
+    /// `stationary`: the car holds the pose of time t with zero velocity (wheels still slip).
+    void update(const SceneData& scene, double t, bool stationary = false);
 
     static DrivePose scriptPose(double t);
 

@@ -169,11 +169,11 @@ void readParticle(YamlCheck& c, const Node& node, const std::string& path, Parti
                  "wind_factor", "spread_speed", "inherit_velocity", "spin", "fade_in", "fade_out",
                  "colour_ramp", "atlas"});
     optRange(c, m, "lifetime", 0.01, 60.0, &d->lifetimeMin, &d->lifetimeMax);
-    optNumber(c, m, "start_size", 0.001, 100.0, &d->startSize);
-    optNumber(c, m, "end_size", 0.001, 100.0, &d->endSize);
+    optNumber(c, m, "start_size", 0.0, 10000.0, &d->startSize);
+    optNumber(c, m, "end_size", 0.0, 10000.0, &d->endSize);
     optNumber(c, m, "size_variation", 0.0, 0.9, &d->sizeVariation);
     optNumber(c, m, "rise_speed", -50.0, 50.0, &d->riseSpeed);
-    optNumber(c, m, "drag", 0.0, 1000.0, &d->drag);
+    optNumber(c, m, "drag", 0.0, 1.0e6, &d->drag);
     optNumber(c, m, "wind_factor", 0.0, 10.0, &d->windFactor);
     optNumber(c, m, "spread_speed", 0.0, 100.0, &d->spreadSpeed);
     optNumber(c, m, "inherit_velocity", 0.0, 2.0, &d->inheritVelocity);
@@ -213,7 +213,7 @@ void readRender(YamlCheck& c, const Node& node, const std::string& path, RenderD
                  "sort_back_to_front"});
     optChoice(c, m, "technique", {"hard", "soft", "spherical"}, Technique::Hard, &r->technique);
     optChoice(c, m, "blend", {"alpha", "premultiplied", "additive"}, BlendMode::Alpha, &r->blend);
-    optNumber(c, m, "softness", 0.001, 100.0, &r->softness);
+    optNumber(c, m, "softness", 1.0e-6, 1.0e6, &r->softness);
     optNumber(c, m, "contrast_power", 0.1, 16.0, &r->contrastPower);
     optNumber(c, m, "near_fade", 0.0, 100.0, &r->nearFade);
     if (const Node* n = m.get("sort_back_to_front")) {

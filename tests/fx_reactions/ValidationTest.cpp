@@ -71,7 +71,7 @@ TEST(Validation, UnknownKey) {
 TEST(Validation, WrongTypeSaysWhatWasExpected) {
     Loaded r = load(withParticleKey("drag: fast"));
     expectOnly(r, ErrorCode::WrongType, 5, 13, "reactions[0].particle.drag");
-    EXPECT_NE(r.diags[0].message.find("expected a number in [0, 1000], got 'fast'"), std::string::npos)
+    EXPECT_NE(r.diags[0].message.find("expected a number in [0, 1e+06], got 'fast'"), std::string::npos)
         << r.diags[0].message;
 }
 
@@ -455,7 +455,7 @@ TEST(Validation, DiagnosticStrFormat) {
     ASSERT_EQ(r.diags.size(), 1u);
     EXPECT_EQ(r.diags[0].str(),
               "test.yaml:5:13: error[WrongType] reactions[0].particle.drag: expected a number in "
-              "[0, 1000], got 'fast'");
+              "[0, 1e+06], got 'fast'");
     EXPECT_STREQ(fx::errorCodeName(ErrorCode::NegativeCount), "NegativeCount");
 }
 

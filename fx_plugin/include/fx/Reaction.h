@@ -51,11 +51,11 @@ struct ColorStop {
 struct ParticleDesc {
     float lifetimeMin = 2.0f;      ///< [0.01, 60] s
     float lifetimeMax = 3.5f;      ///< [0.01, 60] s, >= lifetimeMin
-    float startSize = 0.4f;        ///< [0.001, 100] m, billboard edge length at birth
-    float endSize = 3.0f;          ///< [0.001, 100] m, at death (growth curve: see sim/Lifecycle.h)
+    float startSize = 0.4f;        ///< [0, 10000] m, billboard edge length at birth
+    float endSize = 3.0f;          ///< [0, 10000] m, at death (growth curve: see sim/Lifecycle.h)
     float sizeVariation = 0.2f;    ///< [0, 0.9] each particle's sizes scaled by 1 +- this
     float riseSpeed = 0.6f;        ///< [-50, 50] m/s terminal upward speed (buoyancy)
-    float drag = 1.2f;             ///< [0, 1000] 1/s, rate at which velocity relaxes to terminal
+    float drag = 1.2f;             ///< [0, 1e6] 1/s, rate at which velocity relaxes to terminal
     float windFactor = 1.0f;       ///< [0, 10] share of the ambient wind in the terminal velocity
     float spreadSpeed = 0.5f;      ///< [0, 100] m/s random initial speed, random upward-hemisphere direction
     float inheritVelocity = 0.3f;  ///< [0, 2] share of the wheel hub velocity at birth
@@ -72,7 +72,7 @@ struct ParticleDesc {
 struct RenderDesc {
     Technique technique = Technique::Soft;  ///< Hard, Soft or Spherical (never FromReaction)
     BlendMode blend = BlendMode::Alpha;
-    float softness = 0.5f;         ///< [0.001, 100] m of depth difference over which the soft fade reaches 1
+    float softness = 0.5f;         ///< [1e-6, 1e6] m of depth difference over which the soft fade reaches 1
     float contrastPower = 1.0f;    ///< [0.1, 16] exponent of the soft-fade contrast curve, 1 = linear
     float nearFade = 0.5f;         ///< [0, 100] m in front of the near plane over which particles fade out
     bool sortBackToFront = true;   ///< ignored (never sorted) for additive blending
