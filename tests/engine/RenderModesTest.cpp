@@ -1,0 +1,159 @@
+// The plugin's techniques and optimizations inside the real engine frame (issue: soft-particle
+// renderer): prepass-EQUAL must not change a pixel; quarter-res must stay close to full res and
+// its depth-aware upsample must beat plain bilinear next to depth edges; passes and targets
+// exist only when needed.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "GameTestUtil.h"
+#include "gl/Gl.h"
+
+using namespace cube;
+
+namespace {
+
+// The standard frame: 1.5 s into the burnout, chase camera, no HUD, no mirror.
+Options standard(int w = 320, int h = 256) {
+    Options o = cubetest::smallOptions(w, h);
+    o.startTime = 4.5;
+    o.mirror = false;
+    return o;
+}
+
+// Renders the same simulated frame in several configurations of one game.
+struct Frames {
+    Game game;
+    explicit Frames(const Options& o, int warm = 90) {
+        std::string err;
+        ok = game.Init(o, &err);
+        EXPECT_TRUE(ok) << err;
+        for (int i = 0; ok && i < warm; ++i) game.Update(1.0f / 60.0f);
+    }
+    ImageRGBA8 render(bool equal, fx::Technique t, bool quarter, bool bilinear = false) {
+        game.options().prepassEqual = equal;
+        fx::RenderOptions ro = game.specialFX().plugin()->renderOptions();
+        ro.techniqueOverride = t;
+        ro.quarterRes = quarter;
+        ro.bilinearUpsample = bilinear;
+        game.specialFX().plugin()->setRenderOptions(ro);
+        game.captureNextFrame();
+        game.RenderFrame();
+        return game.lastFrame();
+    }
+    bool ok = false;
+};
+
+double rmse(const ImageRGBA8& a, const ImageRGBA8& b, const std::vector<uint8_t>* mask = nullptr) {
+    double se = 0.0;
+    size_t n = 0;
+    for (size_t p = 0; p < a.pixels.size() / 4; ++p) {
+        if (mask && !(*mask)[p]) continue;
+        for (int c = 0; c < 3; ++c) {
+            const double d = double(a.pixels[p * 4 + c]) - double(b.pixels[p * 4 + c]);
+            se += d * d;
+            ++n;
+        }
+    }
+    return n ? std::sqrt(se / double(n)) : 0.0;
+}
+
+}  // namespace
+
+TEST(RenderModes, PrepassEqualIsPixelIdenticalToLess) {
+    Frames f(standard());
+    ASSERT_TRUE(f.ok);
+    for (fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical}) {
+        const ImageRGBA8 less = f.render(false, t, false);
+        const ImageRGBA8 equal = f.render(true, t, false);
+        ASSERT_FALSE(less.pixels.empty());
+        EXPECT_TRUE(less.pixels == equal.pixels) << "technique " << int(t) << ": EQUAL differs from LESS";
+        EXPECT_TRUE(f.game.graph().isKept("chase.depth_prepass"));
+    }
+    // With quarter-res too.
+    EXPECT_TRUE(f.render(false, fx::Technique::Soft, true).pixels == f.render(true, fx::Technique::Soft, true).pixels);
+    EXPECT_EQ(gl::errorCount(), 0) << gl::lastError();
+}
+
+TEST(RenderModes, PrepassEqualIsPixelIdenticalWithOverdrawPanels) {
+    Options o = standard();
+    o.overdrawLayers = 6;
+    o.overdrawCost = 4;
+    Frames f(o);
+    ASSERT_TRUE(f.ok);
+    EXPECT_TRUE(f.render(false, fx::Technique::Soft, false).pixels == f.render(true, fx::Technique::Soft, false).pixels);
+}
+
+TEST(RenderModes, QuarterResStaysCloseAndDepthAwareBeatsBilinearAtEdges) {
+    Options o = standard(640, 512);
+    Frames f(o);
+    ASSERT_TRUE(f.ok);
+    const ImageRGBA8 full = f.render(false, fx::Technique::Soft, false);
+    const ImageRGBA8 aware = f.render(false, fx::Technique::Soft, true, false);
+    const ImageRGBA8 bilinear = f.render(false, fx::Technique::Soft, true, true);
+    const double psnrAware = cubetest::psnr(full, aware);
+    EXPECT_GE(psnrAware, 35.0) << "quarter-res (depth-aware) vs full res";
+    const int w = full.width, h = full.height;
+    // Pixels next to depth edges where smoke is involved: geometry silhouettes (a strong colour
+    // gradient in the frame without effects: car body, wheels, barrier top, kerb against grass)
+    // where the full-res frame shows smoke (it differs from the bare frame).
+    f.game.options().effects = false;
+    f.game.captureNextFrame();
+    f.game.RenderFrame();
+    const ImageRGBA8 bare = f.game.lastFrame();
+    f.game.options().effects = true;
+    std::vector<uint8_t> edge(size_t(w) * size_t(h), 0);
+    int edges = 0;
+    for (int y = 1; y + 1 < h; ++y)
+        for (int x = 1; x + 1 < w; ++x) {
+            auto lum = [&](int px, int py) {
+                const auto p = cubetest::pixel(bare, px, py);
+                return 0.3 * p.r + 0.59 * p.g + 0.11 * p.b;
+            };
+            const double g = std::max(std::abs(lum(x + 1, y) - lum(x - 1, y)), std::abs(lum(x, y + 1) - lum(x, y - 1)));
+            const auto s = cubetest::pixel(full, x, y), b = cubetest::pixel(bare, x, y);
+            const bool smoke = std::abs(s.r - b.r) + std::abs(s.g - b.g) + std::abs(s.b - b.b) > 12;
+            if (g > 40.0 && smoke) {
+                edge[size_t(y) * size_t(w) + size_t(x)] = 1;
+                ++edges;
+            }
+        }
+    ASSERT_GT(edges, 50) << "the standard frame has smoke passing geometry silhouettes";
+    const double eAware = rmse(full, aware, &edge), eBilinear = rmse(full, bilinear, &edge);
+    RecordProperty("psnr_quarter_depth_aware_db", std::to_string(psnrAware));
+    RecordProperty("edge_rmse_depth_aware", std::to_string(eAware));
+    RecordProperty("edge_rmse_bilinear", std::to_string(eBilinear));
+    std::printf("quarter-res: PSNR %.2f dB (depth-aware) / %.2f dB (bilinear); edge RMSE %.2f vs %.2f over %d px\n",
+                psnrAware, cubetest::psnr(full, bilinear), eAware, eBilinear, edges);
+    EXPECT_LT(eAware, eBilinear);
+    EXPECT_EQ(gl::errorCount(), 0) << gl::lastError();
+}
+
+TEST(RenderModes, PassesAndTargetsExistOnlyWhenNeeded) {
+    Frames f(standard());
+    ASSERT_TRUE(f.ok);
+    // Hard particles need no scene depth: no prepass.
+    f.render(false, fx::Technique::Hard, false);
+    EXPECT_FALSE(f.game.graph().isKept("chase.depth_prepass"));
+    EXPECT_TRUE(f.game.graph().isKept("chase.particles"));
+    // Soft: prepass; quarter-res targets only while quarter-res is on.
+    f.render(false, fx::Technique::Soft, false);
+    EXPECT_TRUE(f.game.graph().isKept("chase.depth_prepass"));
+    EXPECT_FALSE(f.game.graph().isKept("chase.particles_quarter"));
+    f.render(false, fx::Technique::Soft, true);
+    EXPECT_TRUE(f.game.graph().isKept("chase.particles_quarter"));
+    EXPECT_TRUE(f.game.graph().isKept("chase.particles_composite"));
+    // No visible particle (camera looking at the empty sky): no particle pass, no prepass.
+    f.game.options().fixedCamera = true;
+    const float eye[3] = {0.0f, 5.0f, -80.0f}, target[3] = {0.0f, 60.0f, -200.0f};
+    for (int k = 0; k < 3; ++k) {
+        f.game.options().cameraEye[k] = eye[k];
+        f.game.options().cameraTarget[k] = target[k];
+    }
+    f.game.Update(0.0f);
+    f.render(false, fx::Technique::Soft, true);
+    EXPECT_FALSE(f.game.graph().isKept("chase.depth_prepass"));
+    EXPECT_FALSE(f.game.graph().isKept("chase.particles_quarter"));
+    for (const std::string& n : f.game.graph().report().executed) EXPECT_EQ(n.find("particles"), std::string::npos) << n;
+}
