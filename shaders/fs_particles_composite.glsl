@@ -2,11 +2,14 @@
 // Quarter-res step 3: the half-resolution premultiplied particle colour onto the scene,
 // blended (ONE, ONE_MINUS_SRC_ALPHA).
 //
-// Nearest-depth upsampling (Bavoil, NVIDIA "Opacity Mapping" 2011): take the four low-res texels
-// of the bilinear footprint; where all their depths are within a relative threshold of this
-// pixel's full-res depth, blend them bilinearly; otherwise (the pixel sits on a depth edge) take
-// the texel whose depth is closest to the pixel's, so smoke computed for a near surface never
-// smears onto a far one and vice versa. uBilinear = 1 keeps plain bilinear (for comparison).
+// Depth-aware upsampling, after NVIDIA's nearest-depth upsampling (Bavoil, "Opacity Mapping",
+// 2011): take the four low-res texels of the bilinear footprint. Where all their depths are within
+// a relative threshold of this pixel's full-res depth, blend them bilinearly. Otherwise the pixel
+// sits on a depth edge: blend, with renormalised bilinear weights, only the texels on this
+// pixel's side (depth within the threshold), and when there is none take the single texel whose
+// depth is closest. Smoke computed for a near surface then never smears onto a far one and vice
+// versa, and along an edge the result stays as smooth as bilinear. uBilinear = 1 keeps plain
+// bilinear (for comparison).
 uniform sampler2D uHalfColor;   // premultiplied RGBA16F, half x half
 uniform sampler2D uHalfDepth;   // R32F min depth per 2x2 block
 uniform sampler2D uSceneDepth;  // full-res R32F
@@ -37,17 +40,33 @@ void main() {
         return;
     }
 
+    // On an edge, keep the bilinear weights of the texels on this pixel's side of it (depth
+    // within the threshold), renormalised; only when none is, the single nearest-depth texel.
     float full = texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r;
-    float worst = 0.0;
+    float limit = uDepthThreshold * full;
     float best = 3.4e38;
     int nearest = 0;
+    vec4 matched = vec4(0.0);
+    float matchedWeight = 0.0;
+    bool edge = false;
     for (int i = 0; i < 4; ++i) {
         float diff = abs(texelFetch(uHalfDepth, taps[i], 0).r - full);
-        worst = max(worst, diff);
+        if (diff <= limit) {
+            matched += weights[i] * colour[i];
+            matchedWeight += weights[i];
+        } else {
+            edge = true;
+        }
         if (diff < best) {
             best = diff;
             nearest = i;
         }
     }
-    oColor = worst <= uDepthThreshold * full ? bilinear : colour[nearest];
+    if (!edge) {
+        oColor = bilinear;
+    } else if (matchedWeight > 1e-3) {
+        oColor = matched / matchedWeight;
+    } else {
+        oColor = colour[nearest];
+    }
 }

@@ -1,0 +1,76 @@
+#include "DrawList.h"
+
+#include <cmath>
+
+#include "ViewFrustum.h"
+
+namespace fx {
+
+Technique resolveTechnique(Technique override, Technique fromReaction) {
+    const Technique t = override != Technique::FromReaction ? override : fromReaction;
+    return t == Technique::FromReaction ? Technique::Soft : t;
+}
+
+void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, int batchCount,
+                            Technique techniqueOverride, uint32_t usableTechniques,
+                            DrawList* out) {
+    out->clear();
+    if (batchCount <= 0) return;
+    if (sorters_.size() < size_t(batchCount)) sorters_.resize(size_t(batchCount));
+    const ViewFrustum frustum(view.view, view.proj, view.nearPlane, view.farPlane);
+    // Camera forward in world space: minus the third row of the view rotation.
+    const glm::vec3 forward(-view.view[0][2], -view.view[1][2], -view.view[2][2]);
+    constexpr float kHalfDiagonal = 0.70710678f;
+
+    for (int b = 0; b < batchCount; ++b) {
+        const ParticleBatch& in = batches[b];
+        if (!in.pool || !in.desc || in.pool->alive() == 0) continue;
+        const RenderDesc& render = in.desc->render;
+        const Technique technique = resolveTechnique(techniqueOverride, render.technique);
+        if (!(usableTechniques & techniqueBit(technique))) continue;
+
+        const ParticlePool& pool = *in.pool;
+        const ParticleSorter::Order order =
+            sorters_[size_t(b)].update(pool, view.eye, forward, in.sortBackToFront);
+        const float* x = pool.posX();
+        const float* y = pool.posY();
+        const float* z = pool.posZ();
+        const float* size = pool.size();
+        const float* life = pool.life();
+        const float* rotation = pool.rotation();
+        const float* fade = pool.fade();
+        const uint8_t* frame = pool.frame();
+
+        DrawBatch batch;
+        batch.first = static_cast<int>(out->instances.size());
+        for (int k = 0; k < order.count; ++k) {
+            const uint32_t i = order.indices[k];
+            if (!(size[i] > 0.0f) || !(fade[i] > 0.0f)) continue;  // also drops NaN
+            if (!frustum.intersectsSphere(glm::vec3(x[i], y[i], z[i]), size[i] * kHalfDiagonal)) {
+                continue;
+            }
+            ParticleInstance p;
+            p.x = x[i];
+            p.y = y[i];
+            p.z = z[i];
+            p.size = size[i];
+            p.life = life[i];
+            p.rotation = rotation[i];
+            p.fade = fade[i] < 1.0f ? fade[i] : 1.0f;
+            p.frame = float(frame[i] & 3u);
+            out->instances.push_back(p);
+        }
+        batch.count = static_cast<int>(out->instances.size()) - batch.first;
+        if (batch.count == 0) continue;
+        batch.rampRow = b;
+        batch.technique = technique;
+        batch.blend = render.blend;
+        batch.softScale = 1.0f / std::fmax(render.softness, 1e-6f);  // the loader allows [1e-6, 1e6] m
+        batch.contrastPower = render.contrastPower;
+        batch.nearFade = render.nearFade;
+        out->batches.push_back(batch);
+        if (technique != Technique::Hard) out->needsSceneDepth = true;
+    }
+}
+
+}  // namespace fx

@@ -1,0 +1,71 @@
+#pragma once
+// What one view draws, recorded while passes are declared (no GL): the visible particles of every
+// reaction packed into one instance array in draw order, one DrawBatch per reaction that has any,
+// and whether any of them needs the scene depth. DrawListBuilder fills it from the pools:
+//  - culling: each particle's bounding sphere (radius = half the quad diagonal, size / sqrt 2,
+//    which also holds the spherical technique's sphere) against the view frustum;
+//  - order: back to front (sim/ParticleSorter) for reactions that need it
+//    (ReactionRuntime::needsSorting: sorted alpha blending), pool order otherwise (additive);
+//    reactions are drawn in reaction order (no sorting across reactions);
+//  - technique: RenderOptions::techniqueOverride, else the reaction's render.technique;
+//    batches whose technique has no working program are left out.
+#include <cstdint>
+#include <vector>
+
+#include "InstanceStream.h"
+#include "fx/Plugin.h"
+#include "fx/Reaction.h"
+#include "fx/Types.h"
+#include "../sim/ParticlePool.h"
+#include "../sim/ParticleSorter.h"
+
+namespace fx {
+
+/// One reaction's particles as the renderer takes them (what the render hook hands over).
+struct ParticleBatch {
+    const ParticlePool* pool = nullptr;
+    const ReactionDesc* desc = nullptr;  ///< render settings and particle.colorRamp
+    bool sortBackToFront = true;         ///< ReactionRuntime::needsSorting()
+};
+
+/// One draw call: a reaction's visible particles and how to draw them.
+struct DrawBatch {
+    int first = 0;         ///< first instance in DrawList::instances
+    int count = 0;
+    int rampRow = 0;       ///< row in the colour-ramp texture (= index of the ParticleBatch)
+    Technique technique = Technique::Soft;  ///< resolved: Hard, Soft or Spherical
+    BlendMode blend = BlendMode::Alpha;
+    float softScale = 2.0f;      ///< 1 / render.softness
+    float contrastPower = 1.0f;
+    float nearFade = 0.5f;
+};
+
+struct DrawList {
+    std::vector<ParticleInstance> instances;
+    std::vector<DrawBatch> batches;
+    bool needsSceneDepth = false;  ///< a soft or spherical batch is visible
+
+    void clear() {
+        instances.clear();
+        batches.clear();
+        needsSceneDepth = false;
+    }
+    int particleCount() const { return static_cast<int>(instances.size()); }
+};
+
+/// The technique a reaction is drawn with under `override`.
+Technique resolveTechnique(Technique override, Technique fromReaction);
+inline uint32_t techniqueBit(Technique t) { return 1u << static_cast<uint32_t>(t); }
+
+class DrawListBuilder {
+public:
+    /// Fills `out` for one view. `usableTechniques`: techniqueBit() mask of techniques whose
+    /// programs built. Keeps one sorter per batch index; after warm-up it allocates nothing.
+    void build(const ViewInfo& view, const ParticleBatch* batches, int batchCount,
+               Technique techniqueOverride, uint32_t usableTechniques, DrawList* out);
+
+private:
+    std::vector<ParticleSorter> sorters_;
+};
+
+}  // namespace fx

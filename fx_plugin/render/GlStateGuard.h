@@ -1,0 +1,54 @@
+#pragma once
+// Scoped snapshot of every piece of GL state the particle renderer changes: taken on
+// construction, put back on destruction. The plugin promises its host that GL state after any
+// of its passes (and after its lazy GL loading) equals the state before; every GL call of
+// fx_plugin/render/ runs inside one of these guards.
+//
+// Who restores what: the guard restores everything below, including the framebuffer bindings and
+// the viewport that PassContext::bindForDraw() changes, so a host needs no assumptions about the
+// plugin's passes. Captured:
+//   program, vertex array, GL_ARRAY_BUFFER (the element buffer is vertex-array state: the
+//   renderer never binds one, and restoring the VAO restores it), active texture unit, the
+//   GL_TEXTURE_2D binding and sampler object of units 0..kTextureUnits-1, blend enable, blend
+//   func and equation (separate RGB/alpha), depth test, depth func, depth mask, cull-face
+//   enable, stencil-test enable, scissor-test enable, colour mask, clear colour, viewport,
+//   draw and read framebuffers, GL_PIXEL_UNPACK_BUFFER and the unpack alignment / row length /
+//   skip values (texture uploads).
+// Not captured (the renderer neither changes nor depends on them): per-draw-buffer blend state
+// (glEnablei), polygon mode/offset, depth range and clamp, stencil func/ops, sample coverage.
+#include <cstdint>
+
+namespace fx {
+
+class GlStateGuard {
+public:
+    /// Texture units the renderer may bind (0 .. kTextureUnits-1).
+    static constexpr int kTextureUnits = 4;
+
+    GlStateGuard();
+    ~GlStateGuard();
+    GlStateGuard(const GlStateGuard&) = delete;
+    GlStateGuard& operator=(const GlStateGuard&) = delete;
+
+private:
+    struct State {
+        int program = 0, vertexArray = 0, arrayBuffer = 0, activeTexture = 0;
+        int texture2D[kTextureUnits] = {};
+        int sampler[kTextureUnits] = {};
+        bool blend = false;
+        int blendSrcRgb = 0, blendDstRgb = 0, blendSrcAlpha = 0, blendDstAlpha = 0;
+        int blendEqRgb = 0, blendEqAlpha = 0;
+        bool depthTest = false, depthMask = true;
+        int depthFunc = 0;
+        bool cullFace = false, stencilTest = false, scissorTest = false;
+        bool colorMask[4] = {true, true, true, true};
+        float clearColor[4] = {};
+        int viewport[4] = {};
+        int drawFramebuffer = 0, readFramebuffer = 0;
+        int unpackBuffer = 0, unpackAlignment = 4, unpackRowLength = 0, unpackSkipRows = 0,
+            unpackSkipPixels = 0, unpackImageHeight = 0, unpackSkipImages = 0;
+    };
+    State saved_;
+};
+
+}  // namespace fx

@@ -1,0 +1,31 @@
+#include "InstallParticleRenderer.h"
+
+#include <memory>
+#include <vector>
+
+#include "ParticleRenderer.h"
+#include "../src/PluginImpl.h"
+
+namespace fx {
+
+void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
+    ParticleRendererConfig config;
+    config.host = &plugin.host();
+    config.shaderDir = plugin.shaderDir();
+    config.dataDir = dataDir;
+    auto renderer = std::make_shared<ParticleRenderer>(std::move(config));
+    auto batches = std::make_shared<std::vector<ParticleBatch>>();
+    PluginImpl* owner = &plugin;  // the hook is owned by the plugin: it never outlives it
+    plugin.setRenderHook([renderer, batches, owner](const ViewInfo& view, FrameBuilder& frame,
+                                                    const std::vector<ReactionRuntime>& runtimes,
+                                                    const RenderOptions& options) {
+        batches->clear();
+        for (const ReactionRuntime& r : runtimes) {
+            batches->push_back(ParticleBatch{&r.pool(), &r.desc(), r.needsSorting()});
+        }
+        owner->setParticlesDrawn(renderer->declarePasses(view, frame, batches->data(),
+                                                         static_cast<int>(batches->size()), options));
+    });
+}
+
+}  // namespace fx

@@ -1,0 +1,54 @@
+#pragma once
+// The two vertex streams of the instanced particle draw (000 section 3.3.3):
+//   stream 0 (static, shared): the 4 quad corners (+-1, +-1) as a triangle strip, attribute 0;
+//   stream 1 (per particle, divisor 1): ParticleInstance, attributes 1 and 2.
+// The instance buffer is refilled per view with orphaning (glBufferData(null) at the current
+// capacity, then glBufferSubData), so the driver never waits for a draw still reading the old
+// contents; its capacity only grows (doubling), never shrinks.
+//
+// All reactions of a view share one upload; each draw points attributes 1 and 2 at its own
+// range with bindRange() (GL 3.3 has no base-instance draw).
+#include <cstddef>
+#include <cstdint>
+
+namespace fx {
+
+/// One particle as the vertex shader reads it. 32 bytes.
+struct ParticleInstance {
+    float x = 0.0f, y = 0.0f, z = 0.0f;  ///< centre, world space, m
+    float size = 0.0f;                   ///< billboard edge / sphere diameter, m
+    float life = 0.0f;                   ///< age / lifetime, [0, 1): colour ramp lookup
+    float rotation = 0.0f;               ///< texture rotation, rad
+    float fade = 1.0f;                   ///< life fade (alpha factor), [0, 1]
+    float frame = 0.0f;                  ///< atlas frame 0..3
+};
+static_assert(sizeof(ParticleInstance) == 32, "the vertex layout assumes 8 packed floats");
+
+class InstanceStream {
+public:
+    InstanceStream() = default;
+    ~InstanceStream();
+    InstanceStream(const InstanceStream&) = delete;
+    InstanceStream& operator=(const InstanceStream&) = delete;
+
+    /// Creates the vertex array and both buffers. Changes the VAO and GL_ARRAY_BUFFER bindings.
+    void create();
+    bool created() const { return vao_ != 0; }
+    /// Orphans and refills the instance buffer; grows it when `count` does not fit.
+    /// Leaves GL_ARRAY_BUFFER bound to it.
+    void upload(const ParticleInstance* data, int count);
+    /// Binds the vertex array with the instance attributes starting at instance `first`.
+    void bindRange(int first);
+    size_t capacityBytes() const { return capacityBytes_; }
+    /// Uploads that had to grow the buffer (a warm stream stops growing).
+    int growCount() const { return growCount_; }
+
+private:
+    uint32_t vao_ = 0;
+    uint32_t cornerBuffer_ = 0;
+    uint32_t instanceBuffer_ = 0;
+    size_t capacityBytes_ = 0;
+    int growCount_ = 0;
+};
+
+}  // namespace fx

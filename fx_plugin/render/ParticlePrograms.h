@@ -1,0 +1,45 @@
+#pragma once
+// The particle programs, one per technique and target kind, built from shaders/ by ShaderLoader:
+//   HardZBuffer     vs_particles + fs_particles_hard                        (full res, z-buffer test)
+//   HardLinearDepth vs_particles + fs_particles_hard, FX_LINEAR_DEPTH_TEST  (quarter res)
+//   Soft            vs_particles + fs_particles_soft
+//   Spherical       vs_particles + fs_particles_spherical, FX_SPHERICAL
+// A program that fails to build stays 0 and its technique is not drawn (the failure is reported
+// by the caller); the others still work.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "fx/Plugin.h"
+
+namespace fx {
+
+/// Uniform locations shared by every particle program (-1 where a program does not use one).
+struct ParticleProgram {
+    uint32_t program = 0;
+    int view = -1, proj = -1, nearPlane = -1, farPlane = -1, slopeMax = -1;
+    int rampRow = -1, blendMode = -1, softScale = -1, contrastPower = -1, nearFade = -1;
+    int atlas = -1, ramp = -1, sceneDepth = -1;
+};
+
+class ParticlePrograms {
+public:
+    enum Variant : int { HardZBuffer = 0, HardLinearDepth, Soft, Spherical, VariantCount };
+
+    ParticlePrograms() = default;
+    ~ParticlePrograms();
+    ParticlePrograms(const ParticlePrograms&) = delete;
+    ParticlePrograms& operator=(const ParticlePrograms&) = delete;
+
+    /// Builds every variant; appends one "file:line: message" block per failed one to *errors.
+    void build(const std::string& shaderDir, std::vector<std::string>* errors);
+    const ParticleProgram& get(Variant v) const { return programs_[v]; }
+    static Variant variantFor(Technique technique, bool quarterRes);
+    /// techniqueBit() mask of the techniques drawable on a full-res or a quarter-res target.
+    uint32_t usableTechniques(bool quarterRes) const;
+
+private:
+    ParticleProgram programs_[VariantCount];
+};
+
+}  // namespace fx

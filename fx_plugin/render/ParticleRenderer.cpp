@@ -1,0 +1,251 @@
+#include "ParticleRenderer.h"
+
+#include <cmath>
+#include <utility>
+
+#include <glad/gl.h>
+
+#include "GlStateGuard.h"
+
+namespace fx {
+namespace {
+
+// Texture units of the particle draws (all below GlStateGuard::kTextureUnits).
+constexpr int kAtlasUnit = 0, kRampUnit = 1, kSceneDepthUnit = 2;
+
+class DebugGroup {
+public:
+    explicit DebugGroup(const char* name) : active_(GLAD_GL_KHR_debug != 0) {
+        if (active_) glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name);
+    }
+    ~DebugGroup() {
+        if (active_) glPopDebugGroup();
+    }
+    DebugGroup(const DebugGroup&) = delete;
+    DebugGroup& operator=(const DebugGroup&) = delete;
+
+private:
+    bool active_;
+};
+
+GLADapiproc loadThroughHost(void* host, const char* name) {
+    return reinterpret_cast<GLADapiproc>(static_cast<HostAdapter*>(host)->getProcAddress(name));
+}
+
+void bindTextureUnit(int unit, GLuint texture) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glBindSampler(GLuint(unit), 0);  // a host sampler object would override our filtering
+}
+
+// |x/depth| and |y/depth| slightly past the frustum edges, from a perspective projection.
+glm::vec2 frustumSlopes(const glm::mat4& proj) {
+    const float sx = (1.0f + std::fabs(proj[2][0])) / std::fmax(std::fabs(proj[0][0]), 1e-6f);
+    const float sy = (1.0f + std::fabs(proj[2][1])) / std::fmax(std::fabs(proj[1][1]), 1e-6f);
+    return glm::vec2(sx, sy) * 1.02f;
+}
+
+const std::vector<ColorStop>& whiteRamp() {
+    static const std::vector<ColorStop> kWhite{ColorStop{0.0f, glm::vec4(1.0f)}};
+    return kWhite;
+}
+
+}  // namespace
+
+ParticleRenderer::ParticleRenderer(ParticleRendererConfig config) : config_(std::move(config)) {
+    if (config_.shaderDir.empty()) config_.shaderDir = CUBE_SOURCE_DIR "/shaders";
+    if (config_.dataDir.empty()) config_.dataDir = CUBE_SOURCE_DIR "/data";
+}
+
+ParticleRenderer::~ParticleRenderer() = default;
+
+void ParticleRenderer::log(LogLevel level, const std::string& message) const {
+    if (config_.host) config_.host->log(level, message.c_str());
+}
+
+bool ParticleRenderer::ensureLoaded() {
+    if (state_ != State::Unloaded) return state_ == State::Ready;
+    state_ = State::Failed;
+    // The host normally shares its glad loader with us; a host with another loader hands us
+    // its getProcAddress instead.
+    if (!glad_glCreateShader && config_.host && config_.host->getProcAddress("glCreateShader")) {
+        gladLoadGLUserPtr(loadThroughHost, config_.host);
+    }
+    if (!glad_glCreateShader) {
+        log(LogLevel::Error, "fx: particle renderer disabled: no GL entry points (the host neither "
+                             "loaded glad nor offers getProcAddress)");
+        return false;
+    }
+
+    GlStateGuard guard;
+    glActiveTexture(GL_TEXTURE0);  // every texture we touch goes through a guarded unit
+    std::string error;
+    if (!atlas_.load(config_.dataDir, &error)) {
+        log(LogLevel::Error, "fx: particle renderer disabled: " + error);
+        return false;
+    }
+    std::vector<std::string> errors;
+    programs_.build(config_.shaderDir, &errors);
+    quarter_.build(config_.shaderDir, &errors);
+    for (const std::string& e : errors) log(LogLevel::Error, "fx: shader build failed:\n" + e);
+    if (programs_.usableTechniques(false) == 0) {
+        log(LogLevel::Error, "fx: particle renderer disabled: no particle program built");
+        return false;
+    }
+    stream_.create();
+    ramp_.upload();
+    state_ = State::Ready;
+    return true;
+}
+
+std::shared_ptr<ParticleRenderer::ViewRecord> ParticleRenderer::acquireRecord() {
+    // A record whose passes the host has dropped is only held here: reuse it (and its buffers).
+    for (const std::shared_ptr<ViewRecord>& r : records_) {
+        if (r.use_count() == 1) return r;
+    }
+    records_.push_back(std::make_shared<ViewRecord>());
+    return records_.back();
+}
+
+int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
+                                    const ParticleBatch* batches, int batchCount,
+                                    const RenderOptions& options) {
+    if (state_ == State::Failed) return 0;
+    std::shared_ptr<ViewRecord> record = acquireRecord();
+    record->view = view;
+    record->view.name = "";  // the host's string is not ours to keep
+
+    // Until something is visible nothing is loaded: a scene without smoke never compiles a shader.
+    const uint32_t allTechniques = techniqueBit(Technique::Hard) | techniqueBit(Technique::Soft) |
+                                   techniqueBit(Technique::Spherical);
+    const bool wasReady = state_ == State::Ready;
+    bool quarterRes = options.quarterRes && (!wasReady || quarter_.ok());
+    uint32_t usable = wasReady ? programs_.usableTechniques(quarterRes) : allTechniques;
+    builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list);
+    if (record->list.particleCount() == 0) return 0;
+    if (!wasReady) {
+        if (!ensureLoaded()) return 0;
+        quarterRes = options.quarterRes && quarter_.ok();
+        if (programs_.usableTechniques(quarterRes) != usable) {
+            usable = programs_.usableTechniques(quarterRes);
+            builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list);
+        }
+    }
+    if (options.quarterRes && !quarterRes && !quarterFallbackLogged_) {
+        log(LogLevel::Warning, "fx: quarter-res programs failed to build; drawing particles at full res");
+        quarterFallbackLogged_ = true;
+    }
+    const int drawn = record->list.particleCount();
+    if (drawn == 0) return 0;
+
+    rampInputs_.clear();
+    for (int b = 0; b < batchCount; ++b) {
+        rampInputs_.push_back(batches[b].desc ? &batches[b].desc->particle.colorRamp : &whiteRamp());
+    }
+    ramp_.setRows(rampInputs_);
+
+    const Target color = frame.sceneColor();
+    if (!quarterRes) {
+        if (record->list.needsSceneDepth) {
+            const Target depth = frame.sceneDepth();
+            frame.addPass(kFullResPass, {depth}, {color},
+                          [this, record, depth, color](PassContext& ctx) {
+                              GlStateGuard guard;
+                              DebugGroup group(kFullResPass);
+                              ctx.bindForDraw(color);
+                              drawBatches(*record, ctx.texture(depth, 0), false);
+                          });
+        } else {
+            frame.addPass(kFullResPass, {}, {color}, [this, record, color](PassContext& ctx) {
+                GlStateGuard guard;
+                DebugGroup group(kFullResPass);
+                ctx.bindForDraw(color);
+                drawBatches(*record, 0, false);
+            });
+        }
+        return drawn;
+    }
+
+    const Target depth = frame.sceneDepth();
+    const Target halfDepth = frame.createTarget(QuarterResPath::kDepthTarget,
+                                                QuarterResPath::depthTargetDesc());
+    const Target halfColor = frame.createTarget(QuarterResPath::kColorTarget,
+                                                QuarterResPath::colorTargetDesc());
+    frame.addPass(QuarterResPath::kDownsamplePass, {depth}, {halfDepth},
+                  [this, depth, halfDepth](PassContext& ctx) {
+                      GlStateGuard guard;
+                      DebugGroup group(QuarterResPath::kDownsamplePass);
+                      quarter_.downsampleDepth(ctx, depth, halfDepth);
+                  });
+    frame.addPass(QuarterResPath::kQuarterPass, {halfDepth}, {halfColor},
+                  [this, record, halfDepth, halfColor](PassContext& ctx) {
+                      GlStateGuard guard;
+                      DebugGroup group(QuarterResPath::kQuarterPass);
+                      quarter_.beginQuarter(ctx, halfColor);
+                      drawBatches(*record, ctx.texture(halfDepth, 0), true);
+                  });
+    const bool bilinear = options.bilinearUpsample;
+    frame.addPass(QuarterResPath::kCompositePass, {halfColor, halfDepth, depth}, {color},
+                  [this, color, halfColor, halfDepth, depth, bilinear](PassContext& ctx) {
+                      GlStateGuard guard;
+                      DebugGroup group(QuarterResPath::kCompositePass);
+                      quarter_.composite(ctx, color, halfColor, halfDepth, depth, bilinear);
+                  });
+    return drawn;
+}
+
+void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes) {
+    const DrawList& list = record.list;
+    const ViewInfo& view = record.view;
+    glActiveTexture(GL_TEXTURE0);
+    ramp_.upload();
+    stream_.upload(list.instances.data(), list.particleCount());
+
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glDepthMask(GL_FALSE);
+    glDepthFunc(GL_LEQUAL);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    bindTextureUnit(kAtlasUnit, atlas_.texture());
+    bindTextureUnit(kRampUnit, ramp_.texture());
+    bindTextureUnit(kSceneDepthUnit, sceneDepth);
+
+    const glm::vec2 slopes = frustumSlopes(view.proj);
+    for (const DrawBatch& batch : list.batches) {
+        const ParticleProgram& p =
+            programs_.get(ParticlePrograms::variantFor(batch.technique, quarterRes));
+        if (!p.program) continue;
+        const bool zTest = batch.technique == Technique::Hard && !quarterRes;
+        if (zTest) {
+            glEnable(GL_DEPTH_TEST);
+        } else {
+            glDisable(GL_DEPTH_TEST);
+        }
+        if (batch.blend == BlendMode::Additive) {
+            glBlendFunc(GL_ONE, GL_ONE);
+        } else {
+            glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        }
+        glUseProgram(p.program);
+        glUniformMatrix4fv(p.view, 1, GL_FALSE, &view.view[0][0]);
+        glUniformMatrix4fv(p.proj, 1, GL_FALSE, &view.proj[0][0]);
+        glUniform1f(p.nearPlane, view.nearPlane);
+        glUniform1f(p.farPlane, view.farPlane);
+        glUniform2f(p.slopeMax, slopes.x, slopes.y);
+        glUniform1f(p.rampRow, ramp_.rowV(batch.rampRow));
+        glUniform1i(p.blendMode, static_cast<int>(batch.blend));
+        glUniform1f(p.softScale, batch.softScale);
+        glUniform1f(p.contrastPower, batch.contrastPower);
+        glUniform1f(p.nearFade, batch.nearFade);
+        glUniform1i(p.atlas, kAtlasUnit);
+        glUniform1i(p.ramp, kRampUnit);
+        glUniform1i(p.sceneDepth, kSceneDepthUnit);
+        stream_.bindRange(batch.first);
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, batch.count);
+    }
+}
+
+}  // namespace fx

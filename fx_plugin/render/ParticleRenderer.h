@@ -1,0 +1,97 @@
+#pragma once
+// The particle renderer behind PluginImpl's render hook: per view it records what is visible
+// (DrawList: culled, sorted, packed instances) and declares its passes through the host's
+// FrameBuilder; the pass bodies upload the instances and draw when the host executes them.
+//
+// Passes (names are data: they show in the host's pass list, debug groups and timings):
+//   nothing at all when no particle is visible in the view (the host allocates nothing);
+//   full res:    "particles"  reads sceneDepth only if a visible batch is soft or spherical,
+//                             writes sceneColor;
+//   quarter res: "particles_depth_downsample", "particles_quarter", "particles_composite"
+//                with targets "particles_half_depth" (R32F) and "particles_half_color"
+//                (RGBA16F), both half x half, created through FrameBuilder::createTarget
+//                (see QuarterResPath.h).
+//
+// GL: loaded lazily by the first declarePasses() that finds a visible particle (the host has a
+// context current by then; a scene without smoke never compiles a shader):
+// shaders from Config::shaderDir, the atlas from Config::dataDir. Every shader compile/link
+// error and a missing atlas is reported through HostAdapter::log as "file:line: message"; a
+// technique whose program failed is not drawn, a missing atlas draws nothing, a failed
+// quarter-res program falls back to full res. Every GL call runs inside a GlStateGuard, so the
+// host's GL state after each pass (and after loading) equals the state before.
+// Destroy the renderer with its GL context current (it deletes its GL objects).
+//
+// Depth testing: hard particles at full res test the host's z-buffer (LEQUAL, no writes), the
+// legacy look. Soft and spherical particles do not: they compare linear depths in the shader,
+// which stays exact at near 0.01 / far 100 km where a 24-bit z-buffer cannot resolve 100 m at
+// 10 km, and a spherical particle's front may be visible where its quad is behind geometry.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ColorRampTexture.h"
+#include "DrawList.h"
+#include "InstanceStream.h"
+#include "ParticlePrograms.h"
+#include "QuarterResPath.h"
+#include "SmokeAtlas.h"
+#include "fx/HostAdapter.h"
+#include "fx/Plugin.h"
+
+namespace fx {
+
+/// Defaults: no host (nothing is logged), shaders from CUBE_SOURCE_DIR "/shaders", the atlas
+/// from CUBE_SOURCE_DIR "/data".
+struct ParticleRendererConfig {
+    HostAdapter* host = nullptr;
+    std::string shaderDir;  ///< empty = the build's source tree
+    std::string dataDir;    ///< empty = the build's source tree
+};
+
+class ParticleRenderer {
+public:
+    static constexpr const char* kFullResPass = "particles";
+    enum class State { Unloaded, Ready, Failed };
+
+    explicit ParticleRenderer(ParticleRendererConfig config);
+    ~ParticleRenderer();
+    ParticleRenderer(const ParticleRenderer&) = delete;
+    ParticleRenderer& operator=(const ParticleRenderer&) = delete;
+
+    /// Declares this view's particle passes (or none) and returns how many particles they draw.
+    /// `batches` must stay valid for this call only (instances are copied out).
+    int declarePasses(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
+                      int batchCount, const RenderOptions& options);
+
+    State state() const { return state_; }
+    const std::string& shaderDir() const { return config_.shaderDir; }
+    const InstanceStream& instanceStream() const { return stream_; }
+
+private:
+    /// One view's recorded draw, shared with the pass bodies until the host has run them.
+    struct ViewRecord {
+        ViewInfo view;
+        DrawList list;
+    };
+
+    bool ensureLoaded();
+    std::shared_ptr<ViewRecord> acquireRecord();
+    void log(LogLevel level, const std::string& message) const;
+    /// Draws every batch of `record` into the bound target. `sceneDepth` is the linear depth
+    /// texture of that target's size (0 when no batch needs it).
+    void drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes);
+
+    ParticleRendererConfig config_;
+    State state_ = State::Unloaded;
+    bool quarterFallbackLogged_ = false;
+    SmokeAtlas atlas_;
+    ColorRampTexture ramp_;
+    InstanceStream stream_;
+    ParticlePrograms programs_;
+    QuarterResPath quarter_;
+    DrawListBuilder builder_;
+    std::vector<std::shared_ptr<ViewRecord>> records_;
+    std::vector<const std::vector<ColorStop>*> rampInputs_;
+};
+
+}  // namespace fx

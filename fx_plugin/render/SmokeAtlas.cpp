@@ -1,0 +1,52 @@
+#include "SmokeAtlas.h"
+
+#include <glad/gl.h>
+#include <stb_image.h>
+
+namespace fx {
+
+SmokeAtlas::~SmokeAtlas() {
+    if (texture_) glDeleteTextures(1, &texture_);
+}
+
+bool SmokeAtlas::load(const std::string& dataDir, std::string* error) {
+    const std::string path = dataDir + "/" + kFileName;
+    int w = 0, h = 0, channels = 0;
+    stbi_uc* pixels = stbi_load(path.c_str(), &w, &h, &channels, 4);
+    if (!pixels) {
+        const char* why = stbi_failure_reason();
+        *error = path + ": cannot load the smoke atlas (" + (why ? why : "unknown reason") + ")";
+        return false;
+    }
+    if (w < 2 || h < 2 || (w % 2) || (h % 2)) {
+        stbi_image_free(pixels);
+        *error = path + ": expected a 2x2 atlas with even width and height, got " +
+                 std::to_string(w) + "x" + std::to_string(h);
+        return false;
+    }
+    if (!texture_) glGenTextures(1, &texture_);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+    stbi_image_free(pixels);
+    // Stop the mip chain while a frame is still 8 texels wide: below that, the 2x2 frames would
+    // average into each other.
+    int maxLevel = 0;
+    for (int cell = (w < h ? w : h) / 2; cell > 8; cell /= 2) ++maxLevel;
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, maxLevel);
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    width_ = w;
+    height_ = h;
+    return true;
+}
+
+}  // namespace fx

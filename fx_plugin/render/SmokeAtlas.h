@@ -1,0 +1,34 @@
+#pragma once
+// The smoke texture atlas (000 sections 2.12 and 3.3.6): data/smoke_atlas.png, 2x2 frames of
+// straight-alpha RGBA8 puffs, row-major from the top-left. Uploaded unflipped (t = 0 is the
+// image's top row; particles_common.glsl's atlasUV() accounts for it) with a full mip chain,
+// trilinear filtering, clamp to edge. Every cell's border has alpha exactly 0, so neither
+// filtering nor the rotated texture coordinates pull a neighbouring frame in.
+#include <cstdint>
+#include <string>
+
+namespace fx {
+
+class SmokeAtlas {
+public:
+    static constexpr const char* kFileName = "smoke_atlas.png";
+
+    SmokeAtlas() = default;
+    ~SmokeAtlas();
+    SmokeAtlas(const SmokeAtlas&) = delete;
+    SmokeAtlas& operator=(const SmokeAtlas&) = delete;
+
+    /// Loads `dataDir`/smoke_atlas.png (stb_image) and uploads it. Changes GL_TEXTURE_2D on the
+    /// active unit and the unpack state: call inside a GlStateGuard. On failure returns false
+    /// with "path: reason" in *error and holds no texture.
+    bool load(const std::string& dataDir, std::string* error);
+    uint32_t texture() const { return texture_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+private:
+    uint32_t texture_ = 0;
+    int width_ = 0, height_ = 0;
+};
+
+}  // namespace fx

@@ -1,0 +1,282 @@
+#pragma once
+// fx_host: a second, engine-free host for the plugin. Its own OSMesa context (OsMesaContext.cpp,
+// the only file that sees GL/osmesa.h), its own frame graph (TestFrameGraph.cpp: FBO targets, a
+// linear-depth R32F sceneDepth with a z-buffer filled by a "prepass" that runs only when a later
+// pass reads it, pass culling), its own scene of flat quads (ground, walls) with its own shaders,
+// and its own HostAdapter with scripted wheels (TestScene.cpp). Nothing here includes
+// engine_stub: the build links this area with fx_plugin, glad, yaml-cpp and OSMesa only.
+//
+// GL errors: every test checks glGetError after each pass and counts KHR_debug messages of HIGH
+// and MEDIUM severity through a callback (GlTestSupport.cpp).
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <gtest/gtest.h>
+
+#include "fx/HostAdapter.h"
+#include "fx/Plugin.h"
+#include "../../fx_plugin/render/ParticleRenderer.h"
+#include "../../fx_plugin/sim/ParticlePool.h"
+
+namespace fxtest {
+
+// ---- context (OsMesaContext.cpp) -------------------------------------------------------------
+
+using ProcAddressFn = void (*(*)(const char*))();
+/// Creates the process's OSMesa 3.3 core context once and makes it current; false + *error when
+/// it cannot. The proc-address function is what glad loads the entry points with.
+bool createOsMesaContext(std::string* error);
+ProcAddressFn osMesaProcAddress();
+
+// ---- GL support (GlTestSupport.cpp) ----------------------------------------------------------
+
+/// Context + glad + the debug callback, once per process. Tests call it in SetUp.
+bool ensureGl(std::string* error);
+/// GL errors seen since the last reset: glGetError codes drained by drainGlErrors() plus
+/// KHR_debug messages of HIGH or MEDIUM severity.
+int glErrorCount();
+std::string glErrorLog();
+/// Also disallows shader-compiler messages again (see below).
+void resetGlErrors();
+/// For tests that break a shader on purpose: KHR_debug messages from the shader compiler are
+/// counted apart (shaderCompilerMessages()) until the next resetGlErrors().
+void allowShaderCompilerMessages();
+int shaderCompilerMessages();
+/// Drains glGetError into the count; returns how many were pending.
+int drainGlErrors(const char* where);
+bool hasKhrDebug();
+
+/// The GL state a host cares about after a plugin pass (24 values, some of them arrays).
+struct GlStateSnapshot {
+    int program = 0, vertexArray = 0, arrayBuffer = 0, elementBuffer = 0, activeTexture = 0;
+    int texture2D[8] = {};
+    int sampler[8] = {};
+    int blend = 0, blendSrcRgb = 0, blendDstRgb = 0, blendSrcAlpha = 0, blendDstAlpha = 0;
+    int blendEqRgb = 0, blendEqAlpha = 0;
+    int depthTest = 0, depthFunc = 0, depthMask = 0, cullFace = 0, scissorTest = 0, stencilTest = 0;
+    int colorMask[4] = {};
+    int viewport[4] = {};
+    int drawFramebuffer = 0, readFramebuffer = 0;
+    float clearColor[4] = {};
+    int unpackBuffer = 0, unpackAlignment = 0;
+
+    /// "name: before -> after" for each differing value; empty when equal.
+    std::string diff(const GlStateSnapshot& after) const;
+};
+GlStateSnapshot captureGlState();
+
+/// Puts the context into an unusual but valid host state (its own program, VAO with an element
+/// buffer, textures on units 0-7, sampler objects, blending, depth GREATER, culling, scissor,
+/// stencil, a colour mask, an odd viewport, other framebuffers, a bound pixel-unpack buffer...).
+/// Creates its objects once.
+void applyDirtyHostState();
+/// GL's initial values for everything applyDirtyHostState() touches (each test starts here).
+void applyDefaultHostState();
+
+// ---- images (GlTestSupport.cpp) --------------------------------------------------------------
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<uint8_t> rgba;  ///< bottom row first (GL order)
+    const uint8_t* at(int x, int y) const { return &rgba[(size_t(y) * size_t(width) + size_t(x)) * 4]; }
+    /// Channel c of pixel (x, y) in [0, 1].
+    float value(int x, int y, int c) const { return at(x, y)[c] / 255.0f; }
+};
+/// Writes a PNG (top row first) for looking at; returns false when it cannot.
+bool writePng(const std::string& path, const Image& image);
+/// PSNR over RGB, in dB (infinity when equal); `mask` (optional, width*height) selects pixels.
+double psnr(const Image& a, const Image& b, const std::vector<uint8_t>* mask = nullptr);
+/// Largest |a - b| over RGB channels, in 1/255 units.
+int maxAbsDiff(const Image& a, const Image& b);
+
+// ---- frame graph (TestFrameGraph.cpp) --------------------------------------------------------
+
+/// The host's render-to-texture layer, as the plugin sees it through fx::FrameBuilder.
+/// Per frame: beginFrame(), the host's and the plugin's addPass calls, execute(). Culling: a
+/// pass runs when it writes sceneColor (the presented target) or a target that a later running
+/// pass reads; targets are allocated (from a pool kept across frames) only for running passes.
+class TestFrameGraph final : public fx::FrameBuilder {
+public:
+    TestFrameGraph(int width, int height);
+    ~TestFrameGraph() override;
+
+    void beginFrame();
+    /// Passes declared from now on count as the plugin's (for the state checks).
+    void beginPluginPasses() { pluginPasses_ = true; }
+    void endPluginPasses() { pluginPasses_ = false; }
+    void execute();
+
+    // fx::FrameBuilder
+    fx::Target sceneColor() override { return fx::Target{kSceneColor}; }
+    fx::Target sceneDepth() override { return fx::Target{kSceneDepth}; }
+    fx::Target createTarget(const char* name, const fx::TargetDesc& desc) override;
+    void addPass(const char* name, std::initializer_list<fx::Target> reads,
+                 std::initializer_list<fx::Target> writes,
+                 std::function<void(fx::PassContext&)> execute) override;
+
+    // What the last frame did.
+    const std::vector<std::string>& declared() const { return declared_; }
+    const std::vector<std::string>& executed() const { return executed_; }
+    bool ran(const std::string& pass) const;
+    int targetsCreated() const { return targetsCreated_; }      ///< createTarget calls
+    int targetsAllocated() const { return targetsAllocated_; }  ///< created targets backed by GL
+    std::vector<std::string> allocatedTargetNames() const;
+    bool sceneDepthUsed() const { return sceneDepthUsed_; }
+
+    /// When set, runs before every plugin pass; the state is snapshotted after it and compared
+    /// after the pass. Mismatches are collected in stateMismatches().
+    std::function<void()> beforePluginPass;
+    bool checkPluginState = false;
+    const std::vector<std::string>& stateMismatches() const { return stateMismatches_; }
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    Image readColor() const;
+    std::vector<float> readLinearDepth() const;
+    /// GL objects for the host's own passes.
+    unsigned colorFramebuffer() const { return colorFbo_; }
+    unsigned depthFramebuffer() const { return depthFbo_; }
+
+    static constexpr uint32_t kSceneColor = 1, kSceneDepth = 2;
+
+private:
+    struct Pass {
+        std::string name;
+        std::vector<uint32_t> reads, writes;
+        std::function<void(fx::PassContext&)> execute;
+        bool plugin = false;
+    };
+    struct TargetSlot {
+        std::string name;
+        fx::TargetDesc desc;
+        int width = 0, height = 0;
+        unsigned texture = 0, framebuffer = 0, depth = 0;
+        bool inUse = false;
+    };
+    class Context;
+
+    TargetSlot* slotFor(uint32_t id);
+    void allocate(uint32_t id);
+
+    int width_, height_;
+    unsigned colorTex_ = 0, colorDepth_ = 0, colorFbo_ = 0;
+    unsigned depthTex_ = 0, depthDepth_ = 0, depthFbo_ = 0;
+    std::vector<Pass> passes_;
+    std::vector<TargetSlot> pool_;              ///< GL targets kept across frames
+    std::map<uint32_t, size_t> frameTargets_;   ///< created id -> pool slot (this frame)
+    std::vector<std::pair<std::string, fx::TargetDesc>> created_;  ///< id - 3 -> request
+    std::vector<std::string> declared_, executed_, stateMismatches_;
+    int targetsCreated_ = 0, targetsAllocated_ = 0;
+    bool sceneDepthUsed_ = false;
+    bool pluginPasses_ = false;
+};
+
+// ---- scene and host (TestScene.cpp) ----------------------------------------------------------
+
+/// A flat-coloured parallelogram: origin + s * edgeU + t * edgeV, s, t in [0, 1].
+struct SceneQuad {
+    glm::vec3 origin{0.0f}, edgeU{1.0f, 0.0f, 0.0f}, edgeV{0.0f, 0.0f, 1.0f};
+    glm::vec3 colour{0.5f};
+};
+
+/// The host's opaque world. declareHostPasses() adds "prepass" (linear depth + z into
+/// sceneDepth; culled unless a particle pass reads it) and "opaque" (colour into sceneColor).
+class TestScene {
+public:
+    std::vector<SceneQuad> quads;
+    glm::vec3 sky{0.35f, 0.45f, 0.6f};
+
+    void declareHostPasses(TestFrameGraph& graph, const fx::ViewInfo& view);
+
+    static SceneQuad ground(float halfExtent, glm::vec3 colour, float y = 0.0f);
+    /// A wall in the plane z = `z`, facing +z, spanning x in [x0, x1] and y in [y0, y1].
+    static SceneQuad wallZ(float z, float x0, float x1, float y0, float y1, glm::vec3 colour);
+};
+
+/// A view for a camera at `eye` looking at `target`, 60 degree vertical field of view.
+fx::ViewInfo makeView(glm::vec3 eye, glm::vec3 target, int width, int height,
+                      float nearPlane = 0.1f, float farPlane = 1000.0f);
+/// Pixel (x, y from the bottom) where a world point lands; z is the NDC depth.
+glm::vec3 projectToPixel(const fx::ViewInfo& view, glm::vec3 world);
+
+/// Scripted car: four wheels of a car at `position` (rear axle at +z), all grounded on asphalt.
+class TestHostAdapter final : public fx::HostAdapter {
+public:
+    TestHostAdapter();
+    void* getProcAddress(const char*) override { return nullptr; }  // glad is shared
+    int wheelCount() const override { return 4; }
+    fx::WheelContact wheel(int index) const override { return wheels_[size_t(index & 3)]; }
+    void log(fx::LogLevel level, const char* message) override;
+
+    void setRearSlip(float slip);
+    const std::vector<std::string>& errors() const { return errors_; }
+    const std::vector<std::string>& messages() const { return messages_; }
+    bool logged(const std::string& fragment) const;
+
+private:
+    fx::WheelContact wheels_[4];
+    std::vector<std::string> errors_, messages_;
+};
+
+/// Renders one frame: the scene's host passes, then `declareParticles` (the plugin's hook, or
+/// nothing), then execute. The graph is reset first.
+void renderFrame(TestFrameGraph& graph, TestScene& scene, const fx::ViewInfo& view,
+                 const std::function<void(fx::FrameBuilder&)>& declareParticles);
+
+/// A writable directory under /tmp for this test run (created on first use).
+std::string scratchDir();
+
+// ---- hand-placed particles (TestParticles.cpp) ------------------------------------------------
+
+/// One particle put straight into a pool (no simulation).
+struct HandParticle {
+    glm::vec3 position{0.0f};
+    float size = 1.0f;
+    float life = 0.5f;
+    float rotation = 0.0f;
+    float fade = 1.0f;
+    int frame = 0;
+};
+
+/// The plugin's renderer drawing one hand-filled pool: the targeted technique tests use it to
+/// place a particle exactly. `desc` starts as the wheel_smoke defaults with an opaque white ramp.
+class DirectParticles {
+public:
+    explicit DirectParticles(fx::HostAdapter* host, std::string shaderDir = std::string(),
+                             std::string dataDir = std::string(), int capacity = 4096);
+    void set(const std::vector<HandParticle>& particles);
+    /// The plugin's hook body for one view: declares the renderer's passes into `frame`.
+    int declare(const fx::ViewInfo& view, fx::FrameBuilder& frame);
+
+    fx::ReactionDesc desc;
+    fx::RenderOptions options;
+    fx::ParticleRenderer renderer;
+    fx::ParticlePool pool;
+};
+
+/// Base fixture: GL up, errors reset before and checked (0) after every test.
+/// GL comes up in the constructor, so fixture members may create GL objects.
+class FxHostTest : public ::testing::Test {
+protected:
+    FxHostTest() { glReady_ = ensureGl(&glError_); }
+    void SetUp() override {
+        ASSERT_TRUE(glReady_) << glError_;
+        applyDefaultHostState();
+        resetGlErrors();
+    }
+    void TearDown() override {
+        drainGlErrors("end of test");
+        EXPECT_EQ(glErrorCount(), 0) << glErrorLog();
+    }
+
+private:
+    bool glReady_ = false;
+    std::string glError_;
+};
+
+}  // namespace fxtest

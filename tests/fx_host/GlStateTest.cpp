@@ -1,0 +1,105 @@
+// The plugin restores every GL state it touches: the host puts the context into an unusual
+// state before each plugin pass (and before declarePasses, where the renderer loads its GL
+// objects lazily), and ~24 state values are compared after it: for every technique, at full
+// res and at quarter res with both upsamples. The picture must not depend on that host state.
+#include <glad/gl.h>
+
+#include "FxTestHost.h"
+
+namespace fxtest {
+namespace {
+
+constexpr int kW = 160, kH = 120;
+
+class GlStateTest : public FxHostTest {
+protected:
+    void SetUp() override {
+        FxHostTest::SetUp();
+        fx::PluginImports imports;
+        imports.host = &host;
+        plugin = fxCreatePlugin(imports);
+        ASSERT_TRUE(plugin);
+        ASSERT_TRUE(plugin->loadReactions(CUBE_SOURCE_DIR "/reactions", nullptr));
+        host.setRearSlip(1.0f);
+        for (int s = 0; s < 60; ++s) {
+            for (int r = 0; r < plugin->reactionCount(); ++r) plugin->continueReaction(r, 1.0f / 60.0f, nullptr);
+        }
+        scene.quads = {TestScene::ground(40.0f, glm::vec3(0.2f)),
+                       TestScene::wallZ(-5.0f, -20.0f, 20.0f, 0.0f, 3.0f, glm::vec3(0.4f, 0.3f, 0.3f))};
+    }
+
+    // One frame; with `dirty`, the host state is scrambled before declarePasses and before every
+    // plugin pass, and compared after each.
+    Image frame(bool dirty, std::string* mismatches) {
+        graph.checkPluginState = dirty;
+        graph.beforePluginPass = dirty ? std::function<void()>(applyDirtyHostState) : nullptr;
+        renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) {
+            if (!dirty) {
+                plugin->declarePasses(view, f);
+                return;
+            }
+            applyDirtyHostState();
+            const GlStateSnapshot before = captureGlState();
+            plugin->declarePasses(view, f);
+            const std::string d = before.diff(captureGlState());
+            if (!d.empty()) *mismatches += "declarePasses: " + d + "\n";
+        });
+        for (const std::string& m : graph.stateMismatches()) *mismatches += m + "\n";
+        return graph.readColor();
+    }
+
+    TestHostAdapter host;
+    std::unique_ptr<fx::Plugin> plugin;
+    TestScene scene;
+    fx::ViewInfo view = makeView(glm::vec3(4.0f, 2.0f, 7.0f), glm::vec3(0.0f, 0.8f, 1.0f), kW, kH);
+    TestFrameGraph graph{kW, kH};
+};
+
+TEST_F(GlStateTest, EveryPassRestoresTheHostState) {
+    struct Mode {
+        fx::Technique technique;
+        bool quarter, bilinear;
+    };
+    const Mode modes[] = {{fx::Technique::Hard, false, false},      {fx::Technique::Soft, false, false},
+                          {fx::Technique::Spherical, false, false}, {fx::Technique::Hard, true, false},
+                          {fx::Technique::Soft, true, false},       {fx::Technique::Spherical, true, false},
+                          {fx::Technique::Soft, true, true}};
+    for (const Mode& m : modes) {
+        fx::RenderOptions o;
+        o.techniqueOverride = m.technique;
+        o.quarterRes = m.quarter;
+        o.bilinearUpsample = m.bilinear;
+        plugin->setRenderOptions(o);
+        const std::string label = std::to_string(int(m.technique)) + (m.quarter ? " quarter" : " full") +
+                                  (m.bilinear ? " bilinear" : "");
+        std::string mismatches;
+        const Image dirtyImage = frame(true, &mismatches);
+        EXPECT_TRUE(mismatches.empty()) << label << ":\n" << mismatches;
+        size_t pluginPasses = 0;
+        for (const std::string& pass : graph.executed()) pluginPasses += pass.rfind("particles", 0) == 0;
+        EXPECT_EQ(pluginPasses, m.quarter ? 3u : 1u) << label;
+        const Image cleanImage = frame(false, &mismatches);
+        EXPECT_EQ(maxAbsDiff(dirtyImage, cleanImage), 0) << label << ": the picture depends on host state";
+    }
+    EXPECT_GT(plugin->stats().particlesDrawn, 0);
+}
+
+// The snapshot catches a change (so the test above can fail).
+TEST_F(GlStateTest, SnapshotSeesAChangedValue) {
+    applyDirtyHostState();
+    const GlStateSnapshot before = captureGlState();
+    glBlendFunc(GL_ONE, GL_ONE);
+    EXPECT_NE(before.diff(captureGlState()).find("blendSrcRgb"), std::string::npos);
+}
+
+// The KHR_debug callback counts (so "no GL error anywhere" can fail); cleared afterwards.
+TEST_F(GlStateTest, DebugCallbackCountsErrors) {
+    if (!hasKhrDebug()) GTEST_SKIP() << "no KHR_debug";
+    glEnable(GLenum(0xDEAD));
+    drainGlErrors("deliberate error");
+    EXPECT_GE(glErrorCount(), 1);
+    resetGlErrors();
+}
+
+}  // namespace
+}  // namespace fxtest

@@ -1,0 +1,53 @@
+// The fx_host's OSMesa context. This file sees GL/osmesa.h (and through it the system GL/gl.h),
+// so it must never include glad: GL is called through glad's pointers elsewhere.
+#include <GL/osmesa.h>
+
+#include <string>
+#include <vector>
+
+#include "FxTestHost.h"
+
+namespace fxtest {
+
+namespace {
+
+struct OsMesa {
+    OSMesaContext context = nullptr;
+    std::vector<unsigned char> buffer;  // OSMesa wants a client colour buffer; we draw into FBOs
+};
+
+OsMesa& instance() {
+    static OsMesa m;
+    return m;
+}
+
+}  // namespace
+
+bool createOsMesaContext(std::string* error) {
+    OsMesa& m = instance();
+    if (m.context) return true;
+    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA,
+                           OSMESA_DEPTH_BITS, 24,
+                           OSMESA_STENCIL_BITS, 8,
+                           OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                           OSMESA_CONTEXT_MAJOR_VERSION, 3,
+                           OSMESA_CONTEXT_MINOR_VERSION, 3,
+                           0};
+    m.context = OSMesaCreateContextAttribs(attribs, nullptr);
+    if (!m.context) {
+        *error = "OSMesa: cannot create a 3.3 core context";
+        return false;
+    }
+    m.buffer.assign(4 * 4 * 4, 0);
+    if (!OSMesaMakeCurrent(m.context, m.buffer.data(), GL_UNSIGNED_BYTE, 4, 4)) {
+        *error = "OSMesa: OSMesaMakeCurrent failed";
+        OSMesaDestroyContext(m.context);
+        m.context = nullptr;
+        return false;
+    }
+    return true;
+}
+
+ProcAddressFn osMesaProcAddress() { return &OSMesaGetProcAddress; }
+
+}  // namespace fxtest

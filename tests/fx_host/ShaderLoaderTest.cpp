@@ -1,0 +1,209 @@
+// The plugin's shader loader: #include from the shader directory, errors as "file:line: message"
+// naming the file the line is really in, and a renderer that reports a broken shader through
+// HostAdapter::log and draws nothing with it instead of crashing.
+#include <glad/gl.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "FxTestHost.h"
+#include "../../fx_plugin/render/ShaderLoader.h"
+
+namespace fxtest {
+namespace {
+
+const std::string kShaders = CUBE_SOURCE_DIR "/shaders";
+
+std::string readText(const std::string& path) {
+    std::ifstream in(path);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+void writeText(const std::string& path, const std::string& text) {
+    std::ofstream out(path);
+    out << text;
+}
+
+// Copies every particle shader into a fresh directory; returns it.
+std::string copyShaders(const std::string& name) {
+    const std::string dir = scratchDir() + "/" + name;
+    std::system(("mkdir -p '" + dir + "'").c_str());
+    for (const char* f : {"particles_common.glsl", "vs_particles.glsl", "fs_particles_hard.glsl",
+                          "fs_particles_soft.glsl", "fs_particles_spherical.glsl",
+                          "vs_particles_fullscreen.glsl", "fs_particles_depth_downsample.glsl",
+                          "fs_particles_composite.glsl"}) {
+        writeText(dir + "/" + f, readText(kShaders + "/" + f));
+    }
+    return dir;
+}
+
+// Replaces line `line` (1-based) of `path` with `text`.
+void replaceLine(const std::string& path, int line, const std::string& text) {
+    std::istringstream in(readText(path));
+    std::string out, l;
+    for (int n = 1; std::getline(in, l); ++n) out += (n == line ? text : l) + "\n";
+    writeText(path, out);
+}
+
+// The 1-based line of the first occurrence of `needle` in `path`.
+int lineOf(const std::string& path, const std::string& needle) {
+    std::istringstream in(readText(path));
+    std::string l;
+    for (int n = 1; std::getline(in, l); ++n) {
+        if (l.find(needle) != std::string::npos) return n;
+    }
+    return -1;
+}
+
+class ShaderLoaderTest : public FxHostTest {};
+class BrokenShaderTest : public FxHostTest {
+protected:
+    void SetUp() override {
+        FxHostTest::SetUp();
+        allowShaderCompilerMessages();
+    }
+};
+
+TEST_F(ShaderLoaderTest, ExpandsIncludesOnceAndKeepsTheFileTable) {
+    fx::ShaderSource src;
+    std::string error;
+    ASSERT_TRUE(fx::loadShaderSource(kShaders, "fs_particles_soft.glsl", "#define FX_X 1\n", &src, &error))
+        << error;
+    EXPECT_EQ(src.files, (std::vector<std::string>{"fs_particles_soft.glsl", "particles_common.glsl"}));
+    EXPECT_EQ(src.text.rfind("#version 330 core\n#define FX_X 1\n", 0), 0u);
+    EXPECT_NE(src.text.find("float contrastCurve("), std::string::npos);
+    EXPECT_EQ(src.text.find("#include"), std::string::npos);
+}
+
+TEST_F(ShaderLoaderTest, EveryParticleProgramBuilds) {
+    for (const char* fs : {"fs_particles_hard.glsl", "fs_particles_soft.glsl"}) {
+        std::string error;
+        const uint32_t p = fx::buildProgram(kShaders, "vs_particles.glsl", fs, "", &error);
+        EXPECT_NE(p, 0u) << error;
+        glDeleteProgram(p);
+    }
+    std::string error;
+    uint32_t p = fx::buildProgram(kShaders, "vs_particles.glsl", "fs_particles_spherical.glsl",
+                                  "#define FX_SPHERICAL 1\n", &error);
+    EXPECT_NE(p, 0u) << error;
+    glDeleteProgram(p);
+    for (const char* fs : {"fs_particles_depth_downsample.glsl", "fs_particles_composite.glsl"}) {
+        p = fx::buildProgram(kShaders, "vs_particles_fullscreen.glsl", fs, "", &error);
+        EXPECT_NE(p, 0u) << error;
+        glDeleteProgram(p);
+    }
+}
+
+TEST_F(BrokenShaderTest, CompileErrorNamesTheFileAndLine) {
+    const std::string dir = copyShaders("error_in_main");
+    const int line = lineOf(dir + "/fs_particles_soft.glsl", "float depth = -vViewPos.z;");
+    ASSERT_GT(line, 0);
+    replaceLine(dir + "/fs_particles_soft.glsl", line, "    float depth = -vViewPos.z +;");
+    std::string error;
+    EXPECT_EQ(fx::buildProgram(dir, "vs_particles.glsl", "fs_particles_soft.glsl", "", &error), 0u);
+    EXPECT_NE(error.find("fs_particles_soft.glsl:" + std::to_string(line) + ":"), std::string::npos)
+        << error;
+}
+
+TEST_F(BrokenShaderTest, CompileErrorInAnIncludeNamesTheInclude) {
+    const std::string dir = copyShaders("error_in_include");
+    const int line = lineOf(dir + "/particles_common.glsl", "float rampU(float life) {");
+    ASSERT_GT(line, 0);
+    replaceLine(dir + "/particles_common.glsl", line + 1, "    return undeclaredThing;");
+    std::string error;
+    EXPECT_EQ(fx::buildProgram(dir, "vs_particles.glsl", "fs_particles_hard.glsl", "", &error), 0u);
+    EXPECT_NE(error.find("particles_common.glsl:" + std::to_string(line + 1) + ":"), std::string::npos)
+        << error;
+    EXPECT_EQ(error.find("fs_particles_hard.glsl:"), std::string::npos) << error;
+}
+
+TEST_F(ShaderLoaderTest, MissingIncludeIsReportedWhereItIsIncluded) {
+    const std::string dir = copyShaders("missing_include");
+    const int line = lineOf(dir + "/fs_particles_hard.glsl", "#include \"particles_common.glsl\"");
+    replaceLine(dir + "/fs_particles_hard.glsl", line, "#include \"no_such_file.glsl\"");
+    std::string error;
+    EXPECT_EQ(fx::buildProgram(dir, "vs_particles.glsl", "fs_particles_hard.glsl", "", &error), 0u);
+    EXPECT_NE(error.find("fs_particles_hard.glsl:" + std::to_string(line) + ": cannot open"),
+              std::string::npos)
+        << error;
+}
+
+TEST_F(ShaderLoaderTest, IncludeCycleStopsAtTheDepthLimit) {
+    const std::string dir = scratchDir() + "/cycle";
+    std::system(("mkdir -p '" + dir + "'").c_str());
+    writeText(dir + "/a.glsl", "#version 330 core\n#include \"b.glsl\"\n");
+    // Each file is expanded once, so a cycle ends without an error.
+    writeText(dir + "/b.glsl", "#include \"a.glsl\"\nvoid main() {}\n");
+    fx::ShaderSource src;
+    std::string error;
+    EXPECT_TRUE(fx::loadShaderSource(dir, "a.glsl", "", &src, &error)) << error;
+    std::string deep = "#version 330 core\n";
+    for (int i = 0; i <= fx::kMaxIncludeDepth + 1; ++i) {
+        writeText(dir + "/d" + std::to_string(i) + ".glsl", "#include \"d" + std::to_string(i + 1) + ".glsl\"\n");
+    }
+    writeText(dir + "/deep.glsl", deep + "#include \"d0.glsl\"\n");
+    EXPECT_FALSE(fx::loadShaderSource(dir, "deep.glsl", "", &src, &error));
+    EXPECT_NE(error.find("nested deeper"), std::string::npos) << error;
+}
+
+TEST_F(ShaderLoaderTest, TranslatesTheCommonDriverLogFormats) {
+    const std::vector<std::string> files{"main.glsl", "common.glsl"};
+    EXPECT_EQ(fx::translateInfoLog("1:12(5): error: `x' undeclared", files, "main.glsl"),
+              "common.glsl:12: error: `x' undeclared");
+    EXPECT_EQ(fx::translateInfoLog("0(7) : error C1008: undefined variable", files, "main.glsl"),
+              "main.glsl:7: error C1008: undefined variable");
+    EXPECT_EQ(fx::translateInfoLog("ERROR: 1:3: 'y' : undeclared identifier", files, "main.glsl"),
+              "common.glsl:3: 'y' : undeclared identifier");
+    EXPECT_EQ(fx::translateInfoLog("something odd", files, "main.glsl"), "main.glsl:0: something odd");
+    // The loader's own markers put file k's line n at k * 10000 + n, whatever source number comes back.
+    EXPECT_EQ(fx::translateInfoLog("0:10039(9): error: `z' undeclared", files, "main.glsl"),
+              "common.glsl:39: error: `z' undeclared");
+}
+
+// A broken soft shader: the renderer logs file:line, draws no soft particle and still draws hard ones.
+TEST_F(BrokenShaderTest, RendererReportsABrokenShaderAndDrawsNothingWithIt) {
+    const std::string dir = copyShaders("broken_soft");
+    const int line = lineOf(dir + "/fs_particles_soft.glsl", "float depth = -vViewPos.z;");
+    replaceLine(dir + "/fs_particles_soft.glsl", line, "    float depth = vViewPos;");
+    TestHostAdapter host;
+    DirectParticles particles(&host, dir);
+    particles.set({HandParticle{glm::vec3(0.0f, 1.0f, 0.0f), 2.0f}});
+    TestScene scene;
+    scene.quads = {TestScene::ground(20.0f, glm::vec3(0.2f))};
+    const fx::ViewInfo view = makeView(glm::vec3(0, 2, 6), glm::vec3(0, 1, 0), 128, 96);
+    TestFrameGraph graph(128, 96);
+
+    int drawn = -1;
+    renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = particles.declare(view, f); });
+    EXPECT_EQ(drawn, 0);
+    EXPECT_EQ(graph.executed(), std::vector<std::string>{"opaque"});
+    EXPECT_TRUE(host.logged("fs_particles_soft.glsl:" + std::to_string(line) + ":"))
+        << (host.errors().empty() ? std::string("no error logged") : host.errors().front());
+    EXPECT_EQ(particles.renderer.state(), fx::ParticleRenderer::State::Ready);
+
+    particles.options.techniqueOverride = fx::Technique::Hard;
+    renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = particles.declare(view, f); });
+    EXPECT_EQ(drawn, 1);
+    EXPECT_TRUE(graph.ran("particles"));
+}
+
+TEST_F(ShaderLoaderTest, MissingAtlasDisablesTheRendererWithAMessage) {
+    TestHostAdapter host;
+    DirectParticles particles(&host, std::string(), scratchDir() + "/no_data_here");
+    particles.set({HandParticle{glm::vec3(0.0f, 1.0f, 0.0f), 2.0f}});
+    TestScene scene;
+    const fx::ViewInfo view = makeView(glm::vec3(0, 2, 6), glm::vec3(0, 1, 0), 64, 48);
+    TestFrameGraph graph(64, 48);
+    int drawn = -1;
+    renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = particles.declare(view, f); });
+    EXPECT_EQ(drawn, 0);
+    EXPECT_EQ(graph.executed(), std::vector<std::string>{"opaque"});
+    EXPECT_EQ(particles.renderer.state(), fx::ParticleRenderer::State::Failed);
+    EXPECT_TRUE(host.logged("smoke_atlas.png"));
+}
+
+}  // namespace
+}  // namespace fxtest

@@ -1,0 +1,218 @@
+// The fx_host's world (flat-coloured quads with the host's own two small shaders), its scripted
+// car (fx::HostAdapter) and the one-frame driver.
+#include <glad/gl.h>
+
+#include <cassert>
+#include <cstdio>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "FxTestHost.h"
+
+namespace fxtest {
+
+namespace {
+
+const char* kSceneVs = R"(#version 330 core
+layout(location = 0) in vec3 aPos;
+uniform mat4 uView;
+uniform mat4 uProj;
+out float vDepth;
+void main() {
+    vec4 v = uView * vec4(aPos, 1.0);
+    vDepth = -v.z;
+    gl_Position = uProj * v;
+}
+)";
+const char* kColourFs = R"(#version 330 core
+uniform vec3 uColour;
+out vec4 oColour;
+void main() { oColour = vec4(uColour, 1.0); }
+)";
+const char* kDepthFs = R"(#version 330 core
+in float vDepth;
+out vec4 oDepth;
+void main() { oDepth = vec4(vDepth); }
+)";
+
+GLuint compileProgram(const char* vs, const char* fs) {
+    GLuint v = glCreateShader(GL_VERTEX_SHADER), f = glCreateShader(GL_FRAGMENT_SHADER);
+    glShaderSource(v, 1, &vs, nullptr);
+    glShaderSource(f, 1, &fs, nullptr);
+    glCompileShader(v);
+    glCompileShader(f);
+    GLuint p = glCreateProgram();
+    glAttachShader(p, v);
+    glAttachShader(p, f);
+    glLinkProgram(p);
+    GLint ok = 0;
+    glGetProgramiv(p, GL_LINK_STATUS, &ok);
+    assert(ok && "fx_host scene shader failed to link");
+    glDeleteShader(v);
+    glDeleteShader(f);
+    return p;
+}
+
+struct SceneGl {
+    GLuint colour = 0, depth = 0, vao = 0, vbo = 0;
+};
+
+SceneGl& sceneGl() {
+    static SceneGl g;
+    if (!g.colour) {
+        g.colour = compileProgram(kSceneVs, kColourFs);
+        g.depth = compileProgram(kSceneVs, kDepthFs);
+        glGenVertexArrays(1, &g.vao);
+        glGenBuffers(1, &g.vbo);
+        glBindVertexArray(g.vao);
+        glBindBuffer(GL_ARRAY_BUFFER, g.vbo);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+        glBindVertexArray(0);
+    }
+    return g;
+}
+
+// The state every host pass starts from (a previous plugin test may have left anything).
+void hostPassState() {
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+}
+
+void drawQuads(GLuint program, const std::vector<SceneQuad>& quads, const fx::ViewInfo& view,
+               bool colour) {
+    SceneGl& g = sceneGl();
+    std::vector<glm::vec3> verts;
+    for (const SceneQuad& q : quads) {
+        const glm::vec3 a = q.origin, b = q.origin + q.edgeU, c = q.origin + q.edgeU + q.edgeV,
+                        d = q.origin + q.edgeV;
+        verts.insert(verts.end(), {a, b, c, a, c, d});
+    }
+    glUseProgram(program);
+    glUniformMatrix4fv(glGetUniformLocation(program, "uView"), 1, GL_FALSE, &view.view[0][0]);
+    glUniformMatrix4fv(glGetUniformLocation(program, "uProj"), 1, GL_FALSE, &view.proj[0][0]);
+    glBindVertexArray(g.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, g.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(verts.size() * sizeof(glm::vec3)), verts.data(),
+                 GL_STREAM_DRAW);
+    const GLint colourLoc = glGetUniformLocation(program, "uColour");
+    for (size_t i = 0; i < quads.size(); ++i) {
+        if (colour) glUniform3fv(colourLoc, 1, &quads[i].colour[0]);
+        glDrawArrays(GL_TRIANGLES, GLint(i * 6), 6);
+    }
+    glBindVertexArray(0);
+    glUseProgram(0);
+}
+
+}  // namespace
+
+void TestScene::declareHostPasses(TestFrameGraph& graph, const fx::ViewInfo& view) {
+    const std::vector<SceneQuad> q = quads;
+    const glm::vec3 skyColour = sky;
+    const float farPlane = view.farPlane;
+    graph.addPass("prepass", {}, {graph.sceneDepth()}, [q, view, farPlane](fx::PassContext& ctx) {
+        ctx.bindForDraw(fx::Target{TestFrameGraph::kSceneDepth});
+        hostPassState();
+        glClearColor(farPlane, farPlane, farPlane, farPlane);  // sky: as far as the view goes
+        glClearDepth(1.0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        drawQuads(sceneGl().depth, q, view, false);
+    });
+    graph.addPass("opaque", {}, {graph.sceneColor()}, [q, view, skyColour](fx::PassContext& ctx) {
+        ctx.bindForDraw(fx::Target{TestFrameGraph::kSceneColor});
+        hostPassState();
+        glClearColor(skyColour.r, skyColour.g, skyColour.b, 1.0f);
+        glClearDepth(1.0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        drawQuads(sceneGl().colour, q, view, true);
+    });
+}
+
+SceneQuad TestScene::ground(float halfExtent, glm::vec3 colour, float y) {
+    SceneQuad q;
+    q.origin = glm::vec3(-halfExtent, y, halfExtent);
+    q.edgeU = glm::vec3(2.0f * halfExtent, 0.0f, 0.0f);
+    q.edgeV = glm::vec3(0.0f, 0.0f, -2.0f * halfExtent);
+    q.colour = colour;
+    return q;
+}
+
+SceneQuad TestScene::wallZ(float z, float x0, float x1, float y0, float y1, glm::vec3 colour) {
+    SceneQuad q;
+    q.origin = glm::vec3(x0, y0, z);
+    q.edgeU = glm::vec3(x1 - x0, 0.0f, 0.0f);
+    q.edgeV = glm::vec3(0.0f, y1 - y0, 0.0f);
+    q.colour = colour;
+    return q;
+}
+
+fx::ViewInfo makeView(glm::vec3 eye, glm::vec3 target, int width, int height, float nearPlane,
+                      float farPlane) {
+    fx::ViewInfo v;
+    v.name = "fx_host";
+    v.eye = eye;
+    v.view = glm::lookAt(eye, target, glm::vec3(0.0f, 1.0f, 0.0f));
+    v.proj = glm::perspective(glm::radians(60.0f), float(width) / float(height), nearPlane, farPlane);
+    v.nearPlane = nearPlane;
+    v.farPlane = farPlane;
+    v.width = width;
+    v.height = height;
+    return v;
+}
+
+glm::vec3 projectToPixel(const fx::ViewInfo& view, glm::vec3 world) {
+    const glm::vec4 clip = view.proj * view.view * glm::vec4(world, 1.0f);
+    const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+    return glm::vec3((ndc.x * 0.5f + 0.5f) * float(view.width),
+                     (ndc.y * 0.5f + 0.5f) * float(view.height), ndc.z);
+}
+
+TestHostAdapter::TestHostAdapter() {
+    // A car at the origin facing -z: front axle at z = -1.3, rear axle at z = +1.3.
+    const float xs[4] = {-0.8f, 0.8f, -0.8f, 0.8f};
+    const float zs[4] = {-1.3f, -1.3f, 1.3f, 1.3f};
+    for (int i = 0; i < 4; ++i) {
+        wheels_[i].position = glm::vec3(xs[i], 0.0f, zs[i]);
+        wheels_[i].velocity = glm::vec3(0.0f);
+        wheels_[i].surface = fx::Surface::Asphalt;
+        wheels_[i].grounded = true;
+        wheels_[i].rear = i >= 2;
+        wheels_[i].slip = 0.0f;
+    }
+}
+
+void TestHostAdapter::setRearSlip(float slip) {
+    wheels_[2].slip = wheels_[3].slip = slip;
+}
+
+void TestHostAdapter::log(fx::LogLevel level, const char* message) {
+    messages_.push_back(message ? message : "");
+    if (level == fx::LogLevel::Error) errors_.push_back(messages_.back());
+}
+
+bool TestHostAdapter::logged(const std::string& fragment) const {
+    for (const std::string& m : messages_) {
+        if (m.find(fragment) != std::string::npos) return true;
+    }
+    return false;
+}
+
+void renderFrame(TestFrameGraph& graph, TestScene& scene, const fx::ViewInfo& view,
+                 const std::function<void(fx::FrameBuilder&)>& declareParticles) {
+    graph.beginFrame();
+    scene.declareHostPasses(graph, view);
+    if (declareParticles) {
+        graph.beginPluginPasses();
+        declareParticles(graph);
+        graph.endPluginPasses();
+    }
+    graph.execute();
+}
+
+}  // namespace fxtest
