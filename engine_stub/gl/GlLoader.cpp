@@ -13,7 +13,9 @@ bool g_hasDebug = false;
 
 void GLAD_API_PTR onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei,
                              const GLchar* message, const void*) {
-    (void)source;
+    // Compile errors arrive through the info log with file:line (gl/Program.cpp); the driver's
+    // copy of them is not an API error.
+    if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
     if (severity == GL_DEBUG_SEVERITY_NOTIFICATION || severity == GL_DEBUG_SEVERITY_LOW) return;
     if (type == GL_DEBUG_TYPE_PUSH_GROUP || type == GL_DEBUG_TYPE_POP_GROUP) return;
     // Performance remarks are advice, not errors.
