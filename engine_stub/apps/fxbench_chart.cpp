@@ -74,7 +74,7 @@ std::string chartSvg(const Report& r) {
     s += text(W / 2, 24, title, "middle", 15, "font-weight=\"bold\"");
 
     // Left: bars.
-    const double lx0 = 150, lx1 = 470;
+    const double lx0 = 150, lx1 = 440;
     double maxMs = 0;
     for (const ModeSummary& m : r.modes) maxMs = std::max(maxMs, m.p95);
     const double step = niceStep(maxMs, 5);
@@ -94,7 +94,9 @@ std::string chartSvg(const Report& r) {
         s += rect(lx0, y + 5, bx(std::min(m.particleMs, m.p50)) - lx0, rowH - 10, "#3b5b92");
         s += line(bx(m.p50), y + rowH / 2, bx(m.p95), y + rowH / 2, "#333333");
         s += line(bx(m.p95), y + 9, bx(m.p95), y + rowH - 9, "#333333");
-        s += text(bx(m.p95) + 4, y + rowH * 0.62, tickLabel(m.p50) + " ms", "start", 10);
+        char label[64];
+        std::snprintf(label, sizeof label, "%s ms, %.2fx hard", tickLabel(m.p50).c_str(), m.ratioVsHard);
+        s += text(bx(m.p95) + 4, y + rowH * 0.62, label, "start", 10);
     }
     s += line(lx0, top - 6, lx0, barBottom, "#333333");
     s += text((lx0 + lx1) / 2, barBottom + 34, "ms", "middle", 11);
@@ -125,13 +127,31 @@ std::string chartSvg(const Report& r) {
     s += text((sx0 + sx1) / 2, sy1 + 34, "median frame ms", "middle", 11);
     s += text(sx0 - 40, (sy0 + sy1) / 2, "RMSE", "middle", 11,
               ("transform=\"rotate(-90 " + f(sx0 - 40) + " " + f((sy0 + sy1) / 2) + ")\"").c_str());
+    // Points first, then labels placed greedily: right of the point, moved down (or up near the
+    // axis) until they clear every label already placed.
+    struct Box {
+        double x0, y0, x1, y1;
+    };
+    std::vector<Box> placed;
     for (int i = 0; i < n; ++i) {
         const ModeSummary& m = r.modes[size_t(i)];
-        const char* c = kPalette[i % 8];
-        s += "<circle cx=\"" + f(px(m.p50)) + "\" cy=\"" + f(py(m.rmse)) + "\" r=\"5\" fill=\"" + c + "\"/>\n";
-        // Labels alternate above/below so modes with equal error stay readable.
-        const double dy = (i % 2) ? 16.0 : -9.0;
-        s += text(px(m.p50) + 7, py(m.rmse) + dy, m.name, "start", 11, (std::string("fill=\"") + c + "\"").c_str());
+        s += "<circle cx=\"" + f(px(m.p50)) + "\" cy=\"" + f(py(m.rmse)) + "\" r=\"5\" fill=\"" + kPalette[i % 8] + "\"/>\n";
+        placed.push_back({px(m.p50) - 5, py(m.rmse) - 5, px(m.p50) + 5, py(m.rmse) + 5});
+    }
+    for (int i = 0; i < n; ++i) {
+        const ModeSummary& m = r.modes[size_t(i)];
+        const double w = 6.2 * double(m.name.size()), x = px(m.p50) + 8;
+        double y = py(m.rmse) - 7;  // baseline
+        const double step = (y + 20 > sy1) ? -13.0 : 13.0;
+        for (int tries = 0; tries < 12; ++tries) {
+            bool hit = false;
+            for (const Box& b : placed)
+                hit |= x < b.x1 && x + w > b.x0 && y - 10 < b.y1 && y + 2 > b.y0;
+            if (!hit) break;
+            y += step;
+        }
+        placed.push_back({x, y - 10, x + w, y + 2});
+        s += text(x, y, m.name, "start", 11, (std::string("fill=\"") + kPalette[i % 8] + "\"").c_str());
     }
     s += text(10, H - 12,
               "error vs the reference render of the same simulated frames (soft modes vs soft, spherical+quarter vs "
@@ -142,33 +162,48 @@ std::string chartSvg(const Report& r) {
 }
 
 std::string sweepChartSvg(const std::string& title, const std::string& xLabel, const std::vector<SweepSeries>& series,
-                          bool logX) {
+                          bool logScale) {
     const double W = 760, H = 440, x0 = 80, x1 = 600, y0 = 50, y1 = 380;
-    double xmin = 1e300, xmax = -1e300, ymax = 0;
+    double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = 0;
     for (const SweepSeries& sr : series)
         for (size_t i = 0; i < sr.x.size(); ++i) {
             xmin = std::min(xmin, sr.x[i]);
             xmax = std::max(xmax, sr.x[i]);
+            ymin = std::min(ymin, sr.y[i]);
             ymax = std::max(ymax, sr.y[i]);
         }
-    if (xmin > xmax) xmin = 0, xmax = 1;
-    if (logX && xmin <= 0) logX = false;
-    const double lx0 = logX ? std::floor(std::log10(xmin)) : 0.0;
-    const double lx1 = logX ? std::ceil(std::log10(xmax) + 1e-9) : xmax * 1.05;
+    if (xmin > xmax) xmin = 0, xmax = 1, ymin = 0;
+    // Log-log: a cost proportional to the work is a line of slope 1.
+    const bool logX = logScale && xmin > 0, logY = logScale && ymin > 0;
+    const double lx0 = logX ? std::floor(std::log10(xmin) + 1e-9) : 0.0;
+    const double lx1 = logX ? std::max(lx0 + 1, std::ceil(std::log10(xmax) - 1e-9)) : xmax * 1.05;
     auto px = [&](double v) {
         const double t = logX ? (std::log10(v) - lx0) / std::max(1e-9, lx1 - lx0) : v / std::max(1e-9, lx1);
         return x0 + (x1 - x0) * t;
     };
     const double yStep = niceStep(ymax, 5);
     const double yMax = std::max(yStep, std::ceil(ymax * 1.05 / yStep) * yStep);
-    auto py = [&](double v) { return y1 - (y1 - y0) * v / yMax; };
+    const double ly0 = logY ? std::floor(std::log10(ymin) + 1e-9) : 0.0;
+    const double ly1 = logY ? std::max(ly0 + 1, std::ceil(std::log10(ymax) - 1e-9)) : 0.0;
+    auto py = [&](double v) {
+        const double t = logY ? (std::log10(v) - ly0) / (ly1 - ly0) : v / yMax;
+        return y1 - (y1 - y0) * t;
+    };
     std::string s = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + f(W) + "\" height=\"" + f(H) +
                     "\" viewBox=\"0 0 " + f(W) + " " + f(H) + "\" font-family=\"sans-serif\">\n";
     s += rect(0, 0, W, H, "#ffffff");
     s += text(W / 2, 26, title, "middle", 15, "font-weight=\"bold\"");
-    for (double v = 0; v <= yMax + 1e-9; v += yStep) {
-        s += line(x0, py(v), x1, py(v), "#eeeeee");
-        s += text(x0 - 6, py(v) + 4, tickLabel(v), "end", 11);
+    if (logY) {
+        for (double e = ly0; e <= ly1 + 1e-9; e += 1.0) {
+            const double v = std::pow(10.0, e);
+            s += line(x0, py(v), x1, py(v), "#eeeeee");
+            s += text(x0 - 6, py(v) + 4, tickLabel(v), "end", 11);
+        }
+    } else {
+        for (double v = 0; v <= yMax + 1e-9; v += yStep) {
+            s += line(x0, py(v), x1, py(v), "#eeeeee");
+            s += text(x0 - 6, py(v) + 4, tickLabel(v), "end", 11);
+        }
     }
     if (logX) {
         for (double e = lx0; e <= lx1 + 1e-9; e += 1.0) {
@@ -186,7 +221,7 @@ std::string sweepChartSvg(const std::string& title, const std::string& xLabel, c
     s += line(x0, y0, x0, y1, "#333333");
     s += line(x0, y1, x1, y1, "#333333");
     s += text((x0 + x1) / 2, y1 + 36, xLabel + (logX ? " (log scale)" : ""), "middle", 12);
-    s += text(24, (y0 + y1) / 2, "median frame ms", "middle", 12,
+    s += text(24, (y0 + y1) / 2, std::string("median frame ms") + (logY ? " (log scale)" : ""), "middle", 12,
               ("transform=\"rotate(-90 24 " + f((y0 + y1) / 2) + ")\"").c_str());
     for (size_t k = 0; k < series.size(); ++k) {
         const SweepSeries& sr = series[k];

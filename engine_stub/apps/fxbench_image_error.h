@@ -4,9 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-// Relative on purpose: tests/fxbench compiles this file without engine_stub's include folder
-// (tests/CMakeLists.txt links areas named fx* against fx_plugin only).
-#include "../gl/Image.h"
+#include "gl/Image.h"
 
 namespace fxbench {
 

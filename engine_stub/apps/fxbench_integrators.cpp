@@ -9,7 +9,7 @@
 
 // The plugin's integrators are internal to fx_plugin (no public header): fxbench reaches the
 // header by path, and links the functions through fx_plugin as engine_stub does.
-#include "../../fx_plugin/sim/Integrator.h"
+#include "sim/Integrator.h"
 
 namespace fxbench {
 

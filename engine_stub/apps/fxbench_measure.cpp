@@ -144,13 +144,9 @@ private:
 
     void renderOnce(ModeRun& m, bool timed) {
         applyMode(game_, *m.mode);
-        if (timed) {
-            // Settle: the pool frees targets unused for 3 frames, so with modes interleaved a mode
-            // finds its targets evicted (and evicts others'). A game that stays in one mode never
-            // pays that, so every timed render follows an untimed render of the same mode and
-            // frame that re-creates them; all modes get the same treatment (and warm caches).
-            game_.RenderFrame();
-        }
+        // Targets of every mode stay pooled across a round (Options::poolFramesUntilFree is set
+        // in gameOptions), so a timed render normally allocates nothing; the warm-up frames
+        // created them. A render that still allocated is repeated below.
         cube::rtt::RenderTargetPoolStats before = game_.pool().stats();
         double ms = game_.RenderFrame();
         if (!timed) return;

@@ -80,7 +80,7 @@ std::string markdownReport(const Report& r) {
         o += fmt("%.3f", m.ratioVsHard) + " | " + fmt("%.2f", m.particleMs) + " | ";
         o += (m.fillLimitRatio > 0 ? fmt("%.1f", m.fillLimitRatio) : std::string("-")) + " | ";
         o += fmt("%.2f", m.rmse) + " | " + psnrText(m.psnrDb) + " | " + fmt("%.0f", m.maxAbs) + " | " +
-             fmt("%.1f", m.edgePct) + " |\n";
+             fmt("%.2f", m.edgePct) + " |\n";
     }
 
     // Per-pass medians: one column per mode.
@@ -147,6 +147,12 @@ std::string jsonReport(const Report& r, const std::string& in) {
     o += in + "  \"edge_pixel_pct\": " + num(r.edgePixelPct) + ",\n";
     o += in + "  \"edge_definition\": " + jsonQuote(edgeDefinition()) + ",\n";
     o += in + "  \"coverage_definition\": " + jsonQuote(coverageDefinition()) + ",\n";
+    o += in + "  \"fill_limit_definition\": " + jsonQuote(std::string(
+        "median over error frames of particle-pass ms / ms of one alpha-blended textured quad span per run of covered "
+        "pixels; 0 = no particle pass or nothing covered")) + ",\n";
+    o += in + "  \"frame_ms_definition\": " + jsonQuote(std::string(
+        "Game::RenderFrame wall ms (CPU clock around glFinish) of the timed render; each follows an untimed render of "
+        "the same mode and simulated frame (settle)")) + ",\n";
     o += in + "  \"notes\": [";
     for (size_t i = 0; i < r.notes.size(); ++i) o += (i ? ", " : "") + jsonQuote(r.notes[i]);
     o += "],\n";

@@ -1,5 +1,6 @@
 #include "fxbench_summary.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -100,6 +101,21 @@ Report makeReport(const RunConfig& config, const RunResult& result, unsigned see
                       "was repeated and the repeat timed (see allocating_renders)",
                       allocs);
         r.notes.push_back(line);
+    }
+    if (r.scenario == "empty") {
+        // The claim this scenario checks: a frame with no reactions costs what the bare engine costs.
+        double lo = 1e300, hi = 0.0;
+        for (const ModeSummary& m : r.modes) {
+            if (m.name == "nofx") continue;
+            lo = std::min(lo, m.ratioVsNofx);
+            hi = std::max(hi, m.ratioVsNofx);
+        }
+        if (hi > 0.0) {
+            char line[200];
+            std::snprintf(line, sizeof line, "empty scenario: median frame ms / nofx's ranges %.3f .. %.3f over the "
+                                             "particle modes (1 = costs what the bare engine costs)", lo, hi);
+            r.notes.push_back(line);
+        }
     }
     if (result.glErrors > 0) r.notes.push_back("GL errors were reported during the run: " + std::to_string(result.glErrors));
     return r;

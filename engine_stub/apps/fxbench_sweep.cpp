@@ -182,7 +182,8 @@ int runSweep(const BenchOptions& options) {
                 it->x.push_back(p.work);
                 it->y.push_back(m.p50);
             }
-        const std::string title = std::string("fxbench cost curve: ") + kind + " (" + options.scenario + ")";
+        const std::string title = particles ? "fxbench cost curve: live particles (fixed donut camera, generated reaction)"
+                                            : "fxbench cost curve: view size (" + options.scenario + ")";
         const std::string svg =
             sweepChartSvg(title, particles ? "live particles" : "megapixels", series, particles);
         if (!writeText(options.chart, svg, &err)) std::fprintf(stderr, "fxbench: %s\n", err.c_str()), status = 1;

@@ -61,7 +61,9 @@ bool Game::InitProc(std::string* error) {
         return false;
     }
     if (!scene_.Init(sceneData_, error)) return false;
-    pool_ = std::make_unique<rtt::RenderTargetPool>();
+    rtt::RenderTargetPoolDesc poolDesc;
+    poolDesc.framesUntilFree = std::max(1, options_.poolFramesUntilFree);
+    pool_ = std::make_unique<rtt::RenderTargetPool>(poolDesc);
     graph_ = std::make_unique<rtt::FrameGraph>(*pool_, platform_->softwareRenderer());
     time_ = options_.startTime;
     vehicle_.update(sceneData_, time_);

@@ -169,7 +169,10 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
                       ctx.clear(color, cv);
                       ctx.bindForDraw(color);
                       glEnable(GL_DEPTH_TEST);
-                      glDepthFunc(equal ? GL_EQUAL : GL_LESS);
+                      // LEQUAL, not LESS: where two surfaces meet at exactly the same depth the
+                      // last drawn wins, which is what EQUAL on the prepass z-buffer does too.
+                      // So the two paths give the same pixel even at coplanar seams.
+                      glDepthFunc(equal ? GL_EQUAL : GL_LEQUAL);
                       glDepthMask(equal ? GL_FALSE : GL_TRUE);
                       glEnable(GL_CULL_FACE);
                       const gl::Program& p = sc->meshProgram;
@@ -199,7 +202,7 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
                       [this, sc, color, view, proj, equal](rtt::PassContext& ctx) {
                           ctx.bindForDraw(color);
                           glEnable(GL_DEPTH_TEST);
-                          glDepthFunc(equal ? GL_EQUAL : GL_LESS);
+                          glDepthFunc(equal ? GL_EQUAL : GL_LEQUAL);
                           glDepthMask(equal ? GL_FALSE : GL_TRUE);
                           const gl::Program& p = sc->meshProgram;
                           glUseProgram(p.id());

@@ -62,14 +62,21 @@ double rmse(const ImageRGBA8& a, const ImageRGBA8& b, const std::vector<uint8_t>
 }  // namespace
 
 TEST(RenderModes, PrepassEqualIsPixelIdenticalToLess) {
-    Frames f(standard());
+    // Full size: silhouette and coplanar-seam pixels are where a depth-test mismatch shows
+    // (an earlier LESS-vs-EQUAL tie rule differed on 1-5 pixels per frame at 1280x1024 only).
+    Frames f(standard(1280, 1024));
     ASSERT_TRUE(f.ok);
-    for (fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical}) {
-        const ImageRGBA8 less = f.render(false, t, false);
-        const ImageRGBA8 equal = f.render(true, t, false);
-        ASSERT_FALSE(less.pixels.empty());
-        EXPECT_TRUE(less.pixels == equal.pixels) << "technique " << int(t) << ": EQUAL differs from LESS";
-        EXPECT_TRUE(f.game.graph().isKept("chase.depth_prepass"));
+    for (int frame = 0; frame < 3; ++frame) {
+        for (fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical}) {
+            const ImageRGBA8 less = f.render(false, t, false);
+            const ImageRGBA8 equal = f.render(true, t, false);
+            ASSERT_FALSE(less.pixels.empty());
+            size_t differing = 0;
+            for (size_t i = 0; i < less.pixels.size(); ++i) differing += less.pixels[i] != equal.pixels[i];
+            EXPECT_EQ(differing, 0u) << "frame " << frame << ", technique " << int(t) << ": EQUAL differs from LESS";
+            EXPECT_TRUE(f.game.graph().isKept("chase.depth_prepass"));
+        }
+        for (int i = 0; i < 20; ++i) f.game.Update(1.0f / 60.0f);
     }
     // With quarter-res too.
     EXPECT_TRUE(f.render(false, fx::Technique::Soft, true).pixels == f.render(true, fx::Technique::Soft, true).pixels);

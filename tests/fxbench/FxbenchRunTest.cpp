@@ -1,0 +1,274 @@
+// fxbench end to end: tiny runs of the real binary (64x64, a few frames, two rounds) and checks
+// of its JSON, exit codes and messages. Figures here are correctness, not speed: timings are
+// only checked to be present and finite.
+#include <gtest/gtest.h>
+
+#include <yaml-cpp/yaml.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct RunOutput {
+    int exitCode = -1;
+    std::string output;  ///< stdout and stderr
+};
+
+RunOutput runFxbench(const std::string& args) {
+    const std::string cmd = std::string(CUBE_TEST_BIN_DIR) + "/fxbench " + args + " 2>&1";
+    RunOutput r;
+    FILE* p = popen(cmd.c_str(), "r");
+    if (!p) return r;
+    std::array<char, 4096> buf{};
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.output.append(buf.data(), n);
+    const int status = pclose(p);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+std::string tempPath(const std::string& name) {
+    return (std::filesystem::temp_directory_path() / ("fxbench_test_" + std::to_string(getpid()) + "_" + name)).string();
+}
+
+std::string readFile(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+/// One tiny run per scenario, shared by the tests that look at it (the runs are the slow part).
+const YAML::Node& tinyRun(const std::string& scenario) {
+    static std::map<std::string, YAML::Node> cache;
+    auto it = cache.find(scenario);
+    if (it != cache.end()) return it->second;
+    const std::string json = tempPath(scenario + ".json");
+    const RunOutput r = runFxbench("--scenario " + scenario +
+                                   " --size 64x64 --frames 3 --rounds 2 --warmup 1 --error-frames 1 --json " + json);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    YAML::Node node;
+    try {
+        node = YAML::Load(readFile(json));  // JSON is YAML
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << json << ": " << e.what();
+    }
+    std::filesystem::remove(json);
+    return cache.emplace(scenario, node).first->second;
+}
+
+double finite(const YAML::Node& n, const std::string& what) {
+    EXPECT_TRUE(n.IsDefined() && n.IsScalar()) << what << " missing";
+    if (!n.IsDefined() || !n.IsScalar()) return 0.0;
+    const double v = n.as<double>();
+    EXPECT_TRUE(std::isfinite(v)) << what << " = " << n.as<std::string>();
+    return v;
+}
+
+const YAML::Node modeNode(const YAML::Node& run, const std::string& name) {
+    for (const YAML::Node& m : run["modes"])
+        if (m["name"].as<std::string>() == name) return m;
+    ADD_FAILURE() << "mode " << name << " not in the JSON";
+    return YAML::Node();
+}
+
+bool hasParticlePass(const YAML::Node& mode) {
+    for (const auto& kv : mode["passes_ms"])
+        if (kv.first.as<std::string>().find("particles") != std::string::npos) return true;
+    return false;
+}
+
+class FxbenchScenario : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(FxbenchScenario, TinyRunWritesEveryKeyWithFiniteValues) {
+    const YAML::Node& run = tinyRun(GetParam());
+    ASSERT_TRUE(run.IsMap());
+    EXPECT_EQ(run["scenario"].as<std::string>(), GetParam());
+    ASSERT_TRUE(run["size"].IsSequence());
+    EXPECT_EQ(run["size"][0].as<int>(), 64);
+    EXPECT_EQ(run["size"][1].as<int>(), 64);
+    EXPECT_EQ(run["frames"].as<int>(), 3);
+    EXPECT_EQ(run["rounds"].as<int>(), 2);
+    EXPECT_FALSE(run["renderer"].as<std::string>().empty());
+    ASSERT_TRUE(run["modes"].IsSequence());
+    EXPECT_EQ(run["modes"].size(), 8u);  // every mode by default
+    for (const YAML::Node& m : run["modes"]) {
+        const std::string name = m["name"].as<std::string>();
+        SCOPED_TRACE(name);
+        for (const char* k : {"min", "avg", "max"}) EXPECT_GT(finite(m["fps"][k], std::string("fps.") + k), 0.0);
+        EXPECT_LE(m["fps"]["min"].as<double>(), m["fps"]["max"].as<double>());
+        for (const char* k : {"p50", "p95", "p99"}) EXPECT_GT(finite(m["frame_ms"][k], std::string("frame_ms.") + k), 0.0);
+        EXPECT_LE(m["frame_ms"]["p50"].as<double>(), m["frame_ms"]["p99"].as<double>());
+        EXPECT_GT(finite(m["ratio_vs_hard"], "ratio_vs_hard"), 0.0);
+        ASSERT_TRUE(m["passes_ms"].IsMap());
+        EXPECT_GT(m["passes_ms"].size(), 0u);
+        for (const auto& kv : m["passes_ms"]) finite(kv.second, "passes_ms." + kv.first.as<std::string>());
+        EXPECT_GE(finite(m["particles"], "particles"), 0.0);
+        EXPECT_GE(finite(m["fill_limit_ratio"], "fill_limit_ratio"), 0.0);
+        const YAML::Node e = m["error"];
+        ASSERT_TRUE(e.IsMap());
+        EXPECT_FALSE(e["reference"].as<std::string>().empty());
+        for (const char* k : {"rmse", "psnr_db", "max_abs", "edge_pct"})
+            EXPECT_GE(finite(e[k], std::string("error.") + k), 0.0);
+    }
+    EXPECT_DOUBLE_EQ(modeNode(run, "hard")["ratio_vs_hard"].as<double>(), 1.0);
+    // The bare engine never declares a particle pass.
+    EXPECT_FALSE(hasParticlePass(modeNode(run, "nofx")));
+}
+
+INSTANTIATE_TEST_SUITE_P(All, FxbenchScenario, ::testing::Values("standard", "fill", "overdraw", "empty"));
+
+TEST(Fxbench, ParticleModesDrawParticlesInTheStandardScenario) {
+    // The positive control for the "no particle pass" checks.
+    const YAML::Node& run = tinyRun("standard");
+    for (const char* name : {"hard", "soft", "soft+quarter", "spherical"}) {
+        SCOPED_TRACE(name);
+        const YAML::Node m = modeNode(run, name);
+        EXPECT_TRUE(hasParticlePass(m));
+        EXPECT_GT(m["particles"].as<double>(), 0.0);
+        EXPECT_GT(m["fill_limit_ratio"].as<double>(), 0.0);
+    }
+    EXPECT_EQ(modeNode(run, "nofx")["particles"].as<double>(), 0.0);
+}
+
+TEST(Fxbench, EmptyScenarioHasNoParticlePassInAnyMode) {
+    const YAML::Node& run = tinyRun("empty");
+    for (const YAML::Node& m : run["modes"]) {
+        SCOPED_TRACE(m["name"].as<std::string>());
+        EXPECT_FALSE(hasParticlePass(m));
+        EXPECT_EQ(m["particles"].as<double>(), 0.0);
+        EXPECT_EQ(m["fill_limit_ratio"].as<double>(), 0.0);
+        // Nothing to draw: every mode's image equals its reference.
+        EXPECT_EQ(m["error"]["rmse"].as<double>(), 0.0);
+    }
+}
+
+TEST(Fxbench, ErrorOfAModeAgainstItselfIsZero) {
+    const YAML::Node& run = tinyRun("standard");
+    const double cap = run["psnr_cap_db"].as<double>();
+    for (const char* name : {"nofx", "hard", "soft", "spherical"}) {
+        SCOPED_TRACE(name);
+        const YAML::Node e = modeNode(run, name)["error"];
+        EXPECT_EQ(e["reference"].as<std::string>(), name);
+        EXPECT_EQ(e["rmse"].as<double>(), 0.0);
+        EXPECT_EQ(e["max_abs"].as<double>(), 0.0);
+        EXPECT_EQ(e["edge_pct"].as<double>(), 0.0);
+        EXPECT_EQ(e["psnr_db"].as<double>(), cap);
+    }
+}
+
+TEST(Fxbench, QuarterResolutionHasFiniteErrorBelowFullResolution) {
+    const YAML::Node& run = tinyRun("standard");
+    const double cap = run["psnr_cap_db"].as<double>();
+    const double full = modeNode(run, "soft")["error"]["psnr_db"].as<double>();
+    EXPECT_EQ(full, cap);
+    for (const char* name : {"soft+quarter", "spherical+quarter"}) {
+        SCOPED_TRACE(name);
+        const YAML::Node e = modeNode(run, name)["error"];
+        const double psnr = e["psnr_db"].as<double>();
+        EXPECT_TRUE(std::isfinite(psnr));
+        EXPECT_GT(psnr, 10.0);  // the same picture, not noise
+        EXPECT_LT(psnr, full);
+        EXPECT_GT(e["rmse"].as<double>(), 0.0);
+    }
+    EXPECT_EQ(modeNode(run, "soft+quarter")["error"]["reference"].as<std::string>(), "soft");
+    EXPECT_EQ(modeNode(run, "spherical+quarter")["error"]["reference"].as<std::string>(), "spherical");
+}
+
+TEST(Fxbench, ModeSubsetKeepsOnlyTheAskedModesAndCsvAndChartAreWritten) {
+    const std::string json = tempPath("subset.json"), csv = tempPath("subset.csv"), svg = tempPath("subset.svg");
+    const RunOutput r = runFxbench("--modes soft+quarter,soft --size 48x48 --frames 2 --rounds 2 --warmup 0 "
+                                   "--error-frames 1 --json " + json + " --csv " + csv + " --chart " + svg);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const YAML::Node run = YAML::Load(readFile(json));
+    ASSERT_EQ(run["modes"].size(), 2u);
+    EXPECT_EQ(run["modes"][0]["name"].as<std::string>(), "soft");  // table order, not argument order
+    EXPECT_EQ(run["modes"][1]["name"].as<std::string>(), "soft+quarter");
+    // hard was measured internally as the ratio base.
+    EXPECT_GT(run["modes"][0]["ratio_vs_hard"].as<double>(), 0.0);
+    const std::string csvText = readFile(csv);
+    EXPECT_EQ(std::count(csvText.begin(), csvText.end(), '\n'), 3);  // header + 2 modes
+    const std::string svgText = readFile(svg);
+    EXPECT_EQ(svgText.rfind("<svg", 0), 0u);
+    EXPECT_NE(svgText.find("soft+quarter"), std::string::npos);
+    EXPECT_NE(svgText.find("</svg>"), std::string::npos);
+    EXPECT_NE(r.output.find("| Method | Setup | Min FPS | Max FPS | Average FPS |"), std::string::npos);
+    for (const std::string& p : {json, csv, svg}) std::filesystem::remove(p);
+}
+
+TEST(Fxbench, ParticleSweepKeepsTheAskedParticleCountsAlive) {
+    const std::string json = tempPath("sweep.json");
+    const RunOutput r = runFxbench("--sweep particles=200,2000 --modes soft --size 48x48 --frames 2 --rounds 1 "
+                                   "--warmup 0 --error-frames 0 --json " + json);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("Cost curve: live particles"), std::string::npos);
+    const YAML::Node sweep = YAML::Load(readFile(json));
+    EXPECT_EQ(sweep["sweep"].as<std::string>(), "particles");
+    ASSERT_EQ(sweep["points"].size(), 2u);
+    for (size_t i = 0; i < 2; ++i) {
+        const double asked = sweep["points"][i]["point"].as<double>();
+        const double alive = sweep["points"][i]["work"].as<double>();
+        EXPECT_GE(alive, 0.9 * asked);
+        EXPECT_LE(alive, asked);
+    }
+    std::filesystem::remove(json);
+}
+
+TEST(Fxbench, UnknownModeIsRejectedWithTheValidNames) {
+    const RunOutput r = runFxbench("--modes soft,sofft");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("unknown mode 'sofft'"), std::string::npos) << r.output;
+    for (const char* name : {"nofx", "hard", "soft+equal", "soft+equal+quarter", "spherical+quarter"})
+        EXPECT_NE(r.output.find(name), std::string::npos) << name;
+}
+
+TEST(Fxbench, BadValuesAreRejectedWithTheFlagName) {
+    struct Case {
+        const char* args;
+        const char* mentions;
+    };
+    for (const Case& c : {Case{"--size 1280", "--size"}, Case{"--size 8x8", "--size"}, Case{"--frames 0", "--frames"},
+                          Case{"--rounds x", "--rounds"}, Case{"--scenario fast", "valid scenarios"},
+                          Case{"--backend vulkan", "--backend"}, Case{"--sweep particles=0", "--sweep"},
+                          Case{"--sweep depth=3", "--sweep"}, Case{"--json", "missing value"},
+                          Case{"--bogus", "unknown option"}}) {
+        SCOPED_TRACE(c.args);
+        const RunOutput r = runFxbench(c.args);
+        EXPECT_EQ(r.exitCode, 2);
+        EXPECT_NE(r.output.find(c.mentions), std::string::npos) << r.output;
+    }
+    EXPECT_EQ(runFxbench("--help").exitCode, 0);
+}
+
+TEST(Fxbench, IntegratorReportShowsEulerDivergingAndExactStable) {
+    const RunOutput r = runFxbench("--integrators");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    // Stiff row k*dt = 10000: both Euler variants diverge, the exact step does not.
+    const size_t row = r.output.find("| 10000 |");
+    ASSERT_NE(row, std::string::npos) << r.output;
+    const std::string line = r.output.substr(row, r.output.find('\n', row) - row);
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, '|');) {
+        const size_t a = cell.find_first_not_of(' '), b = cell.find_last_not_of(' ');
+        if (a != std::string::npos) cells.push_back(cell.substr(a, b - a + 1));
+    }
+    ASSERT_EQ(cells.size(), 5u) << line;  // k*dt, k, explicit, semi-implicit, exact
+    EXPECT_EQ(cells[2], "diverged");
+    EXPECT_EQ(cells[3], "diverged");
+    EXPECT_LT(std::stod(cells[4]), 1e-3) << line;
+}
+
+}  // namespace
