@@ -47,9 +47,14 @@ if grow > 16 * 1024: problems.append("resident memory grew by %d KiB (bound 1638
 if s["reloads"] < 3: problems.append("only %d reloads went live" % s["reloads"])
 if s["reload_errors"] < 3: problems.append("only %d bad edits were rejected" % s["reload_errors"])
 if s["reactions"] != 3: problems.append("%d reactions live at the end (expected 3)" % s["reactions"])
+if (s["pool_live_textures"], s["pool_live_framebuffers"]) != (s["pool_live_textures_after_300_frames"], s["pool_live_framebuffers_after_300_frames"]):
+    problems.append("render-target pool not flat: textures %d -> %d, framebuffers %d -> %d" % (
+        s["pool_live_textures_after_300_frames"], s["pool_live_textures"],
+        s["pool_live_framebuffers_after_300_frames"], s["pool_live_framebuffers"]))
 print("soak: frames %d, rss after 300 frames %d KiB, at end %d KiB (growth %d KiB), reloads %d, rejected %d, "
-      "pool textures %d, framebuffers %d" % (s["frames"], s["rss_kb_after_300_frames"], s["rss_kb_end"], grow,
-      s["reloads"], s["reload_errors"], s["pool_live_textures"], s["pool_live_framebuffers"]))
+      "pool textures %d -> %d, framebuffers %d -> %d" % (s["frames"], s["rss_kb_after_300_frames"], s["rss_kb_end"], grow,
+      s["reloads"], s["reload_errors"], s["pool_live_textures_after_300_frames"], s["pool_live_textures"],
+      s["pool_live_framebuffers_after_300_frames"], s["pool_live_framebuffers"]))
 if problems:
     print("soak: FAILED: " + "; ".join(problems)); sys.exit(1)
 print("soak: passed")

@@ -151,8 +151,8 @@ std::string jsonReport(const Report& r, const std::string& in) {
         "median over error frames of particle-pass ms / ms of one alpha-blended textured quad span per run of covered "
         "pixels; 0 = no particle pass or nothing covered")) + ",\n";
     o += in + "  \"frame_ms_definition\": " + jsonQuote(std::string(
-        "Game::RenderFrame wall ms (CPU clock around glFinish) of the timed render; each follows an untimed render of "
-        "the same mode and simulated frame (settle)")) + ",\n";
+        "Game::RenderFrame wall ms (CPU clock around glFinish) of the timed render; every mode's render targets stay "
+        "pooled across a round, and a render that still created or freed targets is repeated and the repeat timed")) + ",\n";
     o += in + "  \"notes\": [";
     for (size_t i = 0; i < r.notes.size(); ++i) o += (i ? ", " : "") + jsonQuote(r.notes[i]);
     o += "],\n";

@@ -97,7 +97,7 @@ Report makeReport(const RunConfig& config, const RunResult& result, unsigned see
     if (allocs > 0) {
         char line[320];
         std::snprintf(line, sizeof line,
-                      "%d timed renders still created or freed render targets after the settle render; each "
+                      "%d timed renders created or freed render targets (a target's first use or a pool trim); each "
                       "was repeated and the repeat timed (see allocating_renders)",
                       allocs);
         r.notes.push_back(line);

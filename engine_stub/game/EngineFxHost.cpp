@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "game/Vehicle.h"
+#include "platform/Platform.h"
 
 namespace cube {
 
@@ -12,6 +13,10 @@ fx::Surface EngineFxHost::surfaceFromTag(const std::string& tag) {
     if (tag == "gravel") return fx::Surface::Gravel;
     if (tag == "sand") return fx::Surface::Sand;
     return fx::Surface::Grass;  // grass and off the map
+}
+
+void* EngineFxHost::getProcAddress(const char* name) {
+    return platform_ ? platform_->getProcAddress(name) : nullptr;
 }
 
 fx::WheelContact EngineFxHost::wheel(int index) const {

@@ -8,11 +8,12 @@
 namespace cube {
 
 class Vehicle;
+class Platform;
 
 class EngineFxHost final : public fx::HostAdapter {
 public:
-    explicit EngineFxHost(const Vehicle* vehicle) : vehicle_(vehicle) {}
-    void* getProcAddress(const char*) override { return nullptr; }  // the plugin shares our loader
+    EngineFxHost(const Vehicle* vehicle, const Platform* platform) : vehicle_(vehicle), platform_(platform) {}
+    void* getProcAddress(const char* name) override;
     int wheelCount() const override { return 4; }
     fx::WheelContact wheel(int index) const override;
     glm::vec3 wind() const override { return glm::vec3(1.2f, 0.0f, 0.4f); }
@@ -23,6 +24,7 @@ public:
 
 private:
     const Vehicle* vehicle_;
+    const Platform* platform_;
 };
 
 }  // namespace cube

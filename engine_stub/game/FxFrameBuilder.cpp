@@ -1,6 +1,9 @@
 #include "game/FxFrameBuilder.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include "rtt/RenderTargetPool.h"
 
 namespace cube {
 
@@ -54,7 +57,12 @@ rtt::RenderTargetDesc FxFrameBuilder::toRenderTargetDesc(const fx::TargetDesc& d
 
 fx::Target FxFrameBuilder::createTarget(const char* name, const fx::TargetDesc& desc) {
     names_.push_back(prefix_ + (name ? name : "fx_target"));
-    const rtt::FrameGraphResource r = graph_.create(names_.back().c_str(), toRenderTargetDesc(desc, nullptr));
+    rtt::RenderTargetDesc d = toRenderTargetDesc(desc, nullptr);
+    if (rtt::isRelative(d) && d.scale > 0.0f && std::isfinite(d.scale)) {
+        // Relative to this view (a mirror inset is smaller than the main view the pool follows).
+        rtt::resolveSize(d, viewWidth_, viewHeight_, graph_.pool().limits().maxTextureSize, &d.width, &d.height);
+    }
+    const rtt::FrameGraphResource r = graph_.create(names_.back().c_str(), d);
     return {r.id};
 }
 
@@ -79,13 +87,12 @@ rtt::FrameGraphResource FxFrameBuilder::map(fx::Target t) const {
 void FxFrameBuilder::replay(rtt::FrameGraphResource sceneColor, rtt::FrameGraphResource sceneDepth) {
     color_ = sceneColor;
     depth_ = sceneDepth;
-    int order = order_;
     for (Recorded& p : passes_) {
         std::vector<rtt::FrameGraphResource> reads, writes;
         for (fx::Target t : p.reads) reads.push_back(map(t));
         for (fx::Target t : p.writes) writes.push_back(map(t));
         auto execute = std::move(p.execute);
-        graph_.addPass(p.name.c_str(), order++, reads.data(), reads.size(), writes.data(), writes.size(),
+        graph_.addPass(p.name.c_str(), order_, reads.data(), reads.size(), writes.data(), writes.size(),
                        [execute, sceneColor, sceneDepth](rtt::PassContext& ctx) {
                            FxPassContext fxCtx(ctx, sceneColor, sceneDepth, kSceneColor, kSceneDepth);
                            execute(fxCtx);

@@ -17,9 +17,12 @@ namespace cube {
 
 class FxFrameBuilder final : public fx::FrameBuilder {
 public:
-    /// `prefix` names this view's passes ("chase."); passes get order keys from `order` up.
-    FxFrameBuilder(rtt::FrameGraph& graph, const std::string& prefix, int order)
-        : graph_(graph), prefix_(prefix), order_(order) {}
+    /// `prefix` names this view's passes ("chase."); every pass gets the order key `order` (the
+    /// particle bucket's) and runs in declaration order after the host's own particle passes.
+    /// `viewWidth` x `viewHeight` is the view's colour target: the plugin's relative sizes
+    /// ("half the view") are resolved against it, not against the pool's main view size.
+    FxFrameBuilder(rtt::FrameGraph& graph, const std::string& prefix, int order, int viewWidth, int viewHeight)
+        : graph_(graph), prefix_(prefix), order_(order), viewWidth_(viewWidth), viewHeight_(viewHeight) {}
 
     fx::Target sceneColor() override { return {kSceneColor}; }
     fx::Target sceneDepth() override { return {kSceneDepth}; }
@@ -49,6 +52,7 @@ private:
     rtt::FrameGraph& graph_;
     std::string prefix_;
     int order_;
+    int viewWidth_, viewHeight_;
     std::vector<Recorded> passes_;
     std::vector<std::string> names_;  // keeps createTarget names alive for the frame
     rtt::FrameGraphResource color_, depth_;

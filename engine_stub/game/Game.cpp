@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <fstream>
 
+#include <unistd.h>
+
 #include "game/Trace.h"
 #include "gl/Gl.h"
 #include "gl/Paths.h"
@@ -20,7 +22,7 @@ long residentKb() {
         if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2) resident = 0;
         std::fclose(f);
     }
-    return resident * 4;  // 4 KiB pages on x86-64 Linux
+    return resident * (sysconf(_SC_PAGESIZE) / 1024);
 }
 }  // namespace
 
@@ -69,7 +71,7 @@ bool Game::InitProc(std::string* error) {
     vehicle_.update(sceneData_, time_);
     cameraHeading_ = vehicle_.pose().heading;
     updateCameras(0.0f);
-    fxHost_ = std::make_unique<EngineFxHost>(&vehicle_);
+    fxHost_ = std::make_unique<EngineFxHost>(&vehicle_, platform_.get());
     if (!specialFX_.Init(options_, scene_, fxHost_.get(), error)) return false;
     return true;
 }
@@ -124,11 +126,17 @@ double Game::RenderFrame() {
     const auto start = std::chrono::steady_clock::now();
     render_.Dyn(*this);
     glFinish();
-    // Memory probes for the soak test: after warm-up, and at every frame from then on.
-    if (frameMs_.size() == 300) rssWarmKb_ = residentKb();
-    rssLastKb_ = residentKb();
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     frameMs_.push_back(ms);
+    // Memory and pool probes for the soak test (outside the timed window): after warm-up, and
+    // the latest frame.
+    if (options_.watch || !options_.statsJson.empty()) {
+        if (frameMs_.size() == 300) {
+            rssWarmKb_ = residentKb();
+            poolWarm_ = pool_->stats();
+        }
+        rssLastKb_ = residentKb();
+    }
     return ms;
 }
 
@@ -192,6 +200,8 @@ bool Game::writeStatsJson(const std::string& path, std::string* error) const {
         << "  \"timing_method\": " << jsonString(r.timingMethod) << ",\n"
         << "  \"rss_kb_after_300_frames\": " << rssWarmKb_ << ",\n"
         << "  \"rss_kb_end\": " << rssLastKb_ << ",\n"
+        << "  \"pool_live_textures_after_300_frames\": " << poolWarm_.liveTextures << ",\n"
+        << "  \"pool_live_framebuffers_after_300_frames\": " << poolWarm_.liveFramebuffers << ",\n"
         << "  \"pool_live_textures\": " << ps.liveTextures << ",\n"
         << "  \"pool_live_framebuffers\": " << ps.liveFramebuffers << ",\n"
         << "  \"gl_errors\": " << gl::errorCount() << ",\n"

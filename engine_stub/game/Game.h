@@ -83,6 +83,7 @@ private:
     ImageRGBA8 lastFrame_;
     std::vector<double> frameMs_;
     long rssWarmKb_ = 0, rssLastKb_ = 0;
+    rtt::RenderTargetPoolStats poolWarm_;
     std::map<std::string, int> passRuns_, passCulls_;
 };
 

@@ -68,7 +68,7 @@ std::string usage() {
         "  --no-mirror            leave out the rear-view mirror view\n"
         "  --no-hud               leave out the HUD\n"
         "  --stats-json PATH      write frame statistics at exit\n"
-        "Window keys: P prepass-EQUAL, Q quarter-res, M technique, B bilinear, Esc quit.\n";
+        "Window keys: P prepass-EQUAL, Q quarter-res, M technique, B bilinear, H HUD, Esc quit.\n";
 }
 
 bool parseOptions(int argc, const char* const* argv, Options* out, std::string* error) {

@@ -50,6 +50,8 @@ bool SpecialFX::Init(const Options& options, cubeScene& scene, fx::HostAdapter* 
         fx::PluginImports imports;
         imports.host = host;
         imports.shaderDir = paths::shaders();
+        imports.dataDir = paths::data();
+        imports.seed = uint64_t(options.seed) + 1;  // the plugin reads 0 as "its default seed"
         plugin_ = fxCreatePlugin(imports);
         if (!plugin_) {
             *error = "fx_plugin: the plugin refused API version " + std::to_string(fx::kApiVersion);

@@ -45,6 +45,8 @@ public:
     virtual bool keyPressed(Key key) = 0;
     /// Headless backends resize their default surface on request; windows follow the user.
     virtual void resize(int width, int height) = 0;
+    /// The context's GL entry point lookup (for a plugin that loads GL itself).
+    virtual void* getProcAddress(const char* name) const = 0;
     /// GL_RENDERER string, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
     virtual std::string rendererName() const = 0;
     /// True when the driver renders in software (llvmpipe, softpipe, swrast): GPU timer

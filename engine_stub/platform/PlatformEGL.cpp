@@ -87,6 +87,7 @@ public:
     bool keyPressed(Key) override { return false; }
     void resize(int w, int h) override { width_ = w; height_ = h; }
     std::string rendererName() const override { return renderer_; }
+    void* getProcAddress(const char* name) const override { return reinterpret_cast<void*>(eglGetProcAddress(name)); }
 
 private:
     static std::string hex(EGLint v) {

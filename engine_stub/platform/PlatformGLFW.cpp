@@ -83,6 +83,7 @@ public:
         else { glfwRestoreWindow(window_); glfwSetWindowSize(window_, w, h); }
     }
     std::string rendererName() const override { return renderer_; }
+    void* getProcAddress(const char* name) const override { return reinterpret_cast<void*>(glfwGetProcAddress(name)); }
 
 private:
     GLFWwindow* window_ = nullptr;

@@ -51,6 +51,7 @@ public:
     bool keyPressed(Key) override { return false; }
     void resize(int w, int h) override { makeCurrent(w, h); }
     std::string rendererName() const override { return renderer_; }
+    void* getProcAddress(const char* name) const override { return reinterpret_cast<void*>(OSMesaGetProcAddress(name)); }
 
 private:
     // OSMesa needs a client colour buffer even though the engine renders into FBOs; a 0x0

@@ -56,6 +56,7 @@ void Hud::draw(int viewportWidth, int viewportHeight) {
     glUniform4f(program_.uniform("uColor"), 1.0f, 1.0f, 1.0f, 1.0f);
     glDrawArrays(GL_TRIANGLES, GLsizei(panelFloats / 2), GLsizei((triangles_.size() - panelFloats) / 2));
     glDisable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ZERO);
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     glUseProgram(0);

@@ -33,6 +33,12 @@ bool readFloat(const std::string& file, const YAML::Node& n, const char* key, fl
 
 }  // namespace
 
+namespace {
+// Reads every reaction of the 'reactions' list; may throw YAML::Exception (caught by the caller).
+bool readReactions(const std::string& path, const YAML::Node& list, std::vector<LegacySmokeDesc>* out,
+                   std::string* error);
+}  // namespace
+
 bool loadLegacySmoke(const std::string& path, std::vector<LegacySmokeDesc>* out, std::string* error) {
     YAML::Node root;
     try {
@@ -44,11 +50,26 @@ bool loadLegacySmoke(const std::string& path, std::vector<LegacySmokeDesc>* out,
         *error = path + ":" + std::to_string(e.mark.line + 1) + ": " + e.msg;
         return false;
     }
-    const YAML::Node list = root["reactions"];
-    if (!root.IsMap() || !list || !list.IsSequence()) {
+    if (!root.IsMap()) {
         *error = path + ": expected a map with a 'reactions' list";
         return false;
     }
+    const YAML::Node list = root["reactions"];
+    if (!list || !list.IsSequence()) {
+        *error = path + ": expected a map with a 'reactions' list";
+        return false;
+    }
+    try {
+        return readReactions(path, list, out, error);
+    } catch (const YAML::Exception& e) {
+        *error = path + ":" + std::to_string(e.mark.line + 1) + ": " + e.msg;
+        return false;
+    }
+}
+
+namespace {
+bool readReactions(const std::string& path, const YAML::Node& list, std::vector<LegacySmokeDesc>* out,
+                   std::string* error) {
     std::vector<LegacySmokeDesc> result;
     for (const YAML::Node& r : list) {
         if (!r.IsMap()) {
@@ -108,5 +129,6 @@ bool loadLegacySmoke(const std::string& path, std::vector<LegacySmokeDesc>* out,
     *out = std::move(result);
     return true;
 }
+}  // namespace
 
 }  // namespace cube

@@ -70,6 +70,7 @@ void LegacySpriteRenderer::draw(const std::vector<cubeParticleSystem::SpriteVert
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertices.size()));
     glBindVertexArray(0);
     glDisable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ZERO);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
     glDisable(GL_DEPTH_TEST);

@@ -37,6 +37,7 @@ public:
     int pluginReaction() const { return pluginReaction_; }
     const std::string& name() const { return desc_.name; }
     int alive() const { return int(age_.size()); }
+    const glm::vec3& tint() const { return desc_.tint; }
 
     /// Legacy only: emits at the wheels that slip and moves the sprites.
     void Update(float dt, const WheelState* wheels, int wheelCount);

@@ -88,7 +88,7 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
     recordBuckets(scene);
 
     // Particle bucket first, on paper: what it needs decides whether a depth prepass exists.
-    FxFrameBuilder fxPasses(graph, name_ + ".", order(bucketInfo(Bucket::Particles).order) + 1);
+    FxFrameBuilder fxPasses(graph, name_ + ".", order(bucketInfo(Bucket::Particles).order), width_, height_);
     if (settings.plugin) {
         fx::ViewInfo info;
         info.name = name_.c_str();
@@ -204,11 +204,13 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
                           glEnable(GL_DEPTH_TEST);
                           glDepthFunc(equal ? GL_EQUAL : GL_LEQUAL);
                           glDepthMask(equal ? GL_FALSE : GL_TRUE);
+                          glEnable(GL_CULL_FACE);  // as in the prepass, or EQUAL would differ
                           const gl::Program& p = sc->meshProgram;
                           glUseProgram(p.id());
                           glUniformMatrix4fv(p.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
                           glUniformMatrix4fv(p.uniform("uProj"), 1, GL_FALSE, glm::value_ptr(proj));
                           sc->gpu().draw(alphaTested_, p.uniform("uModel"), p.uniform("uBaseColor"));
+                          glDisable(GL_CULL_FACE);
                           glDepthMask(GL_TRUE);
                           glDepthFunc(GL_LESS);
                           glDisable(GL_DEPTH_TEST);
@@ -254,7 +256,7 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
                           for (const auto& ps : sc->particleSystems()) {
                               if (ps->kind() != cubeParticleSystem::Kind::Legacy) continue;
                               ps->BuildQuads(eye, right, up, &quads);
-                              sc->legacySprites.draw(quads, glm::value_ptr(vp), glm::vec3(1.0f));
+                              sc->legacySprites.draw(quads, glm::value_ptr(vp), ps->tint());
                           }
                       });
     }
@@ -281,8 +283,8 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
                               glViewport(x - 3, y - 3, iw + 6, ih + 6);  // frame
                               glEnable(GL_SCISSOR_TEST);
                               glScissor(x - 3, y - 3, iw + 6, ih + 6);
-                              glClearColor(0.05f, 0.05f, 0.05f, 1.0f);
-                              glClear(GL_COLOR_BUFFER_BIT);
+                              const GLfloat frame[4] = {0.05f, 0.05f, 0.05f, 1.0f};
+                              glClearBufferfv(GL_COLOR, 0, frame);
                               glDisable(GL_SCISSOR_TEST);
                               glViewport(x, y, iw, ih);
                               const gl::Program& p = sc->blitProgram;

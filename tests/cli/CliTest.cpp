@@ -70,6 +70,16 @@ TEST(Cli, FixedDtGivesByteIdenticalPngs) {
     std::remove(b.c_str());
 }
 
+TEST(Cli, DifferentSeedsGiveDifferentSmoke) {
+    const std::string a = tmp("seed1.png"), b = tmp("seed2.png");
+    const std::string common = " --frames 30 --size 200x160 --fixed-dt 0.0166667 --start 5 --no-hud --screenshot ";
+    ASSERT_EQ(runGame("--seed 1" + common + a).status, 0);
+    ASSERT_EQ(runGame("--seed 2" + common + b).status, 0);
+    EXPECT_NE(slurp(a), slurp(b)) << "--seed reaches the plugin's particle randomness";
+    std::remove(a.c_str());
+    std::remove(b.c_str());
+}
+
 TEST(Cli, StatsJsonReportsPassesTargetsAndTimes) {
     const std::string s = tmp("s.json");
     ASSERT_EQ(runGame("--frames 10 --size 160x128 --fixed-dt 0.0166667 --start 5 --stats-json " + s).status, 0);

@@ -72,6 +72,16 @@ TEST(HostileInput, ReactionFiles) {
     }
 }
 
+TEST(HostileInput, LegacySmokeFiles) {
+    for (const auto& c : {std::make_pair(std::string("scalar.yaml"), std::string("hello\n")),
+                          std::make_pair(std::string("list.yaml"), std::string("- 1\n- 2\n")),
+                          std::make_pair(std::string("badsize.yaml"), std::string("reactions:\n  - {name: a, size: {x: 1}}\n")),
+                          std::make_pair(std::string("garbage.yaml"), std::string("\x01\x02{{{[[[\n"))}) {
+        const std::string path = write("legacy_" + c.first, c.second);
+        expectRejected(launch("--fx legacy --legacy-reactions " + path), "legacy_" + c.first, c.first.c_str());
+    }
+}
+
 TEST(HostileInput, SceneFiles) {
     std::ifstream in(std::string(CUBE_SOURCE_DIR) + "/data/race.glb", std::ios::binary);
     const std::string glb((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

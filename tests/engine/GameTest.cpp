@@ -117,15 +117,16 @@ TEST(Render, LegacySmokeAppearsOnceTheRearWheelsSlip) {
         EXPECT_EQ(game.specialFX().particlesAlive(), 0);
         EXPECT_EQ(game.passRuns().count("chase.legacy_smoke"), 0u);
     }
-    // In the donut (t = 5.5 s): sprites alive and drawn, and the frame differs from a run
-    // without them only where the smoke is.
+    // In the donut (t = 5.5 s): sprites alive and drawn every frame once the first exist.
     Game game;
     std::string err;
     o.startTime = 5.5;
     ASSERT_TRUE(game.Init(o, &err)) << err;
     ASSERT_TRUE(cubetest::runFrames(game, 45));
     EXPECT_GT(game.specialFX().particlesAlive(), 10);
-    EXPECT_EQ(game.passRuns().at("chase.legacy_smoke"), 45 - game.passCulls().count("chase.legacy_smoke"));
+    ASSERT_EQ(game.passRuns().count("chase.legacy_smoke"), 1u);
+    EXPECT_GE(game.passRuns().at("chase.legacy_smoke"), 44) << "drawn in every frame after the first emission";
+    EXPECT_EQ(game.passCulls().count("chase.legacy_smoke"), 0u);
     EXPECT_EQ(gl::errorCount(), 0) << gl::lastError();
 }
 

@@ -164,3 +164,4 @@ TEST(RenderModes, PassesAndTargetsExistOnlyWhenNeeded) {
     EXPECT_FALSE(f.game.graph().isKept("chase.particles_quarter"));
     for (const std::string& n : f.game.graph().report().executed) EXPECT_EQ(n.find("particles"), std::string::npos) << n;
 }
+

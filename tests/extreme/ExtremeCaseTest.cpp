@@ -44,7 +44,11 @@ struct Check {
 Check checkParticles(Game& game) {
     Check c;
     auto* impl = dynamic_cast<fx::PluginImpl*>(game.specialFX().plugin());
-    if (!impl) return c;
+    if (!impl) {
+        ADD_FAILURE() << "the game runs no fx plugin";
+        c.finite = false;
+        return c;
+    }
     for (const fx::ReactionRuntime& r : impl->runtimes()) {
         const fx::ParticlePool& pool = r.pool();
         c.alive += pool.alive();
@@ -77,7 +81,10 @@ void runAndCheck(Options o, int frames, float dt, const char* what, bool expectP
     if (expectParticles) {
         EXPECT_GT(checkParticles(game).alive, 0) << what;
     }
+    EXPECT_TRUE(game.graph().report().error.empty()) << what << ": " << game.graph().report().error;
     const ImageRGBA8& img = game.lastFrame();
+    ASSERT_EQ(img.width, o.width) << what << ": the last frame was rendered and read back";
+    ASSERT_EQ(img.pixels.size(), size_t(o.width) * size_t(o.height) * 4u) << what;
     if (img.width >= 8 && img.height >= 8 && !o.fixedCamera) {
         // The top row of the chase view is sky: blue above red, not black, not white.
         const auto s = cubetest::pixel(img, img.width / 2, 0);
