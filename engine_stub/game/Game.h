@@ -83,7 +83,8 @@ private:
     ImageRGBA8 lastFrame_;
     std::vector<double> frameMs_;
     long rssWarmKb_ = 0, rssLastKb_ = 0;
-    rtt::RenderTargetPoolStats poolWarm_;
+    int poolFirstLoopMaxTextures_ = 0, poolFirstLoopMaxFramebuffers_ = 0;
+    int poolMaxTextures_ = 0, poolMaxFramebuffers_ = 0;
     std::map<std::string, int> passRuns_, passCulls_;
 };
 
