@@ -36,6 +36,11 @@ std::string slurp(const std::string& path) {
     return ss.str();
 }
 
+// Mesa's EGL and GLX paths dlopen a DRI driver and unload it at exit; LeakSanitizer then finds
+// 240 bytes it allocated with no symbol to suppress them by ("<unknown module>"). Under the
+// sanitizer stage those two backends run with leak detection off; ASan's other checks stay on.
+const std::string kDriverLeaksOff = "ASAN_OPTIONS=\"$ASAN_OPTIONS:detect_leaks=0\"";
+
 std::string tmp(const std::string& name) { return "/tmp/cube_cli_" + std::to_string(::getpid()) + "_" + name; }
 
 }  // namespace
@@ -115,7 +120,7 @@ TEST(Cli, EglSurfacelessBackendRendersTheSameFrame) {
     const std::string a = tmp("osmesa.png"), b = tmp("egl.png");
     const std::string common = " --frames 3 --size 128x96 --fixed-dt 0.0166667 --mode soft --screenshot ";
     ASSERT_EQ(runGame("--backend osmesa" + common + a).status, 0);
-    const Result egl = runGame("--backend egl" + common + b);
+    const Result egl = runGame("--backend egl" + common + b, kDriverLeaksOff);
     if (egl.status != 0) {
         // No EGL driver: the message must say so, and the exit must be clean.
         EXPECT_EQ(egl.status, 1);
@@ -141,7 +146,8 @@ TEST(Cli, WindowWithoutADisplayFailsCleanly) {
 TEST(Cli, WindowUnderXvfbRendersAndSavesAFrame) {
     if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run not installed";
     const std::string a = tmp("win.png");
-    const Result r = runGame("--window --frames 10 --size 160x120 --fixed-dt 0.0166667 --screenshot " + a, "xvfb-run -a");
+    const Result r = runGame("--window --frames 10 --size 160x120 --fixed-dt 0.0166667 --screenshot " + a,
+                             kDriverLeaksOff + " xvfb-run -a");
     EXPECT_EQ(r.status, 0) << r.output;
     EXPECT_GT(slurp(a).size(), 500u);
     std::remove(a.c_str());
