@@ -15,16 +15,9 @@
 namespace cube::rtt {
 namespace {
 
-class BindingTest : public test::GlTest {};
+using testutil::fixed;
 
-RenderTargetDesc fixed(int w, int h, ColorFormat c = ColorFormat::RGBA8, DepthFormat d = DepthFormat::None) {
-    RenderTargetDesc desc;
-    desc.width = w;
-    desc.height = h;
-    desc.color[0] = c;
-    desc.depth = d;
-    return desc;
-}
+class BindingTest : public test::GlTest {};
 
 GLint getInt(GLenum e) {
     GLint v = 0;

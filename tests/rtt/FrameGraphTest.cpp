@@ -16,6 +16,8 @@
 namespace cube::rtt {
 namespace {
 
+using testutil::fixed;
+
 using testutil::TestProgram;
 
 class FrameGraphTest : public test::GlTest {
@@ -38,15 +40,6 @@ private:
     std::unique_ptr<RenderTargetPool> poolStorage_;
     std::unique_ptr<FrameGraph> graphStorage_;
 };
-
-RenderTargetDesc fixed(int w, int h, ColorFormat c = ColorFormat::RGBA8, DepthFormat d = DepthFormat::None) {
-    RenderTargetDesc desc;
-    desc.width = w;
-    desc.height = h;
-    desc.color[0] = c;
-    desc.depth = d;
-    return desc;
-}
 
 ClearValues clearTo(float r, float g, float b, float a) {
     ClearValues cv;

@@ -17,18 +17,11 @@
 namespace cube::rtt {
 namespace {
 
+using testutil::fixed;
+
 using testutil::TestProgram;
 
 class RenderTargetPoolTest : public test::GlTest {};
-
-RenderTargetDesc fixed(int w, int h, ColorFormat c = ColorFormat::RGBA8, DepthFormat d = DepthFormat::None) {
-    RenderTargetDesc desc;
-    desc.width = w;
-    desc.height = h;
-    desc.color[0] = c;
-    desc.depth = d;
-    return desc;
-}
 
 RenderTargetDesc relative(float scale) {
     RenderTargetDesc desc;

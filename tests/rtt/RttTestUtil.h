@@ -6,6 +6,7 @@
 #include <string>
 
 #include "gl/Gl.h"
+#include "rtt/RenderTargetDesc.h"
 
 namespace cube::rtt::testutil {
 
@@ -102,5 +103,15 @@ private:
     GLuint program_ = 0;
     GLuint vao_ = 0;
 };
+
+/// An absolute-size descriptor with one colour attachment and an optional depth.
+inline RenderTargetDesc fixed(int w, int h, ColorFormat c = ColorFormat::RGBA8, DepthFormat d = DepthFormat::None) {
+    RenderTargetDesc desc;
+    desc.width = w;
+    desc.height = h;
+    desc.color[0] = c;
+    desc.depth = d;
+    return desc;
+}
 
 }  // namespace cube::rtt::testutil
