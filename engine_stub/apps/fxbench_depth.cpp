@@ -15,26 +15,6 @@
 
 namespace fxbench {
 
-namespace {
-
-// The overdraw panels exactly as cubeView places them (scene/cubeView.cpp, drawPanels): `layers`
-// camera-facing quads from 40 m to 20 m over the upper 70% of the view.
-void drawPanels(const cube::cubeScene& sc, GLint uModel, int layers, const glm::mat4& view, float fovY, float aspect) {
-    if (layers <= 0) return;
-    const glm::mat4 camToWorld = glm::inverse(view);
-    glBindVertexArray(sc.panelVao);
-    for (int i = 0; i < layers; ++i) {
-        const float d = 40.0f - 20.0f * float(i) / float(std::max(1, layers - 1));
-        const float halfH = d * std::tan(0.5f * fovY), halfW = halfH * aspect;
-        glm::mat4 m = glm::translate(camToWorld, glm::vec3(0.0f, 0.3f * halfH, -d));
-        m = glm::scale(m, glm::vec3(0.95f * halfW, 0.7f * halfH, 1.0f));
-        glUniformMatrix4fv(uModel, 1, GL_FALSE, glm::value_ptr(m));
-        glDrawArrays(GL_TRIANGLES, 0, 6);
-    }
-    glBindVertexArray(0);
-}
-
-}  // namespace
 
 bool renderChaseDepth(cube::Game& game, std::vector<float>* depth, std::string* error) {
     const int w = game.chaseView().width(), h = game.chaseView().height();
@@ -75,7 +55,7 @@ bool renderChaseDepth(cube::Game& game, std::vector<float>* depth, std::string* 
         std::vector<cube::MeshDraw> draws;
         sc.gpu().record(sc.data(), sc.carNode(), sc.carTransform(), &draws);
         sc.gpu().draw(draws, p.uniform("uModel"), -1);
-        drawPanels(sc, p.uniform("uModel"), game.options().overdrawLayers, view, cam.fovY, aspect);
+        sc.drawOverdrawPanels(p, game.options().overdrawLayers, view, cam.fovY, aspect);
     }
     const cube::rtt::RttError re = cube::rtt::readFloat(pool, target, 0, cube::rtt::FloatLayout::Native, depth);
     pool.release(target);

@@ -1,5 +1,11 @@
 #include "scene/cubeScene.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
 #include "game/Trace.h"
 
 namespace cube {
@@ -39,6 +45,24 @@ cubeScene::~cubeScene() {
     if (panelVbo) glDeleteBuffers(1, &panelVbo);
     if (panelVao) glDeleteVertexArrays(1, &panelVao);
     if (emptyVao) glDeleteVertexArrays(1, &emptyVao);
+}
+
+void cubeScene::drawOverdrawPanels(const gl::Program& p, int layers, const glm::mat4& view, float fovY,
+                                   float aspect) const {
+    if (layers <= 0) return;
+    const glm::mat4 camToWorld = glm::inverse(view);
+    const GLint uModel = p.uniform("uModel"), uColor = p.uniform("uBaseColor");
+    glBindVertexArray(panelVao);
+    for (int i = 0; i < layers; ++i) {
+        const float d = 40.0f - 20.0f * float(i) / float(std::max(1, layers - 1));
+        const float halfH = d * std::tan(0.5f * fovY), halfW = halfH * aspect;
+        glm::mat4 m = glm::translate(camToWorld, glm::vec3(0.0f, 0.3f * halfH, -d));
+        m = glm::scale(m, glm::vec3(0.95f * halfW, 0.7f * halfH, 1.0f));
+        glUniformMatrix4fv(uModel, 1, GL_FALSE, glm::value_ptr(m));
+        if (uColor >= 0) glUniform4f(uColor, 0.3f + 0.05f * float(i % 8), 0.35f, 0.5f - 0.03f * float(i % 8), 1.0f);
+        glDrawArrays(GL_TRIANGLES, 0, 6);
+    }
+    glBindVertexArray(0);
 }
 
 cubeParticleSystem* cubeScene::CreateParticleSystem(cubeParticleSystem::Kind kind) {

@@ -50,6 +50,11 @@ public:
     /// Declares every view's passes; returns the colour target of the last view (the main one).
     rtt::FrameGraphResource Render(rtt::FrameGraph& graph, std::vector<cubeView*>& views, FrameSettings settings);
 
+    /// fxbench's overdraw panels: `layers` opaque quads facing the camera from 40 m down to 20 m,
+    /// drawn back to front (the worst order for depth test LESS) over the upper 70% of the view,
+    /// with `p` (uses its uModel and, if present, uBaseColor).
+    void drawOverdrawPanels(const gl::Program& p, int layers, const glm::mat4& view, float fovY, float aspect) const;
+
     const SceneData& data() const { return data_; }
     const GpuScene& gpu() const { return gpu_; }
     int carNode() const { return carNode_; }

@@ -19,29 +19,6 @@ glm::mat4 ViewCamera::proj(float aspect) const {
     return glm::perspective(fovY, aspect > 0.0f ? aspect : 1.0f, nearPlane, farPlane);
 }
 
-namespace {
-
-// fxbench's overdraw panels: `layers` opaque quads facing the camera at 40 m down to 20 m,
-// drawn back to front (the worst order for depth test LESS) over the upper 70% of the view.
-void drawPanels(const cubeScene& sc, const gl::Program& p, int layers, const glm::mat4& view, float fovY,
-                float aspect) {
-    if (layers <= 0) return;
-    const glm::mat4 camToWorld = glm::inverse(view);
-    const GLint uModel = p.uniform("uModel"), uColor = p.uniform("uBaseColor");
-    glBindVertexArray(sc.panelVao);
-    for (int i = 0; i < layers; ++i) {
-        const float d = 40.0f - 20.0f * float(i) / float(std::max(1, layers - 1));
-        const float halfH = d * std::tan(0.5f * fovY), halfW = halfH * aspect;
-        glm::mat4 m = glm::translate(camToWorld, glm::vec3(0.0f, 0.3f * halfH, -d));
-        m = glm::scale(m, glm::vec3(0.95f * halfW, 0.7f * halfH, 1.0f));
-        glUniformMatrix4fv(uModel, 1, GL_FALSE, glm::value_ptr(m));
-        if (uColor >= 0) glUniform4f(uColor, 0.3f + 0.05f * float(i % 8), 0.35f, 0.5f - 0.03f * float(i % 8), 1.0f);
-        glDrawArrays(GL_TRIANGLES, 0, 6);
-    }
-    glBindVertexArray(0);
-}
-
-}  // namespace
 
 rtt::FrameGraphResource cubeView::Render(cubeScene& scene, rtt::FrameGraph& graph, const FrameSettings& settings) {
     Trace::call("cubeView::Render");
@@ -152,7 +129,7 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
                       glUniformMatrix4fv(p.uniform("uProj"), 1, GL_FALSE, glm::value_ptr(proj));
                       sc->gpu().draw(opaque_, p.uniform("uModel"), -1);
                       sc->gpu().draw(alphaTested_, p.uniform("uModel"), -1);
-                      drawPanels(*sc, p, layers, view, fovY, aspect);
+                      sc->drawOverdrawPanels(p, layers, view, fovY, aspect);
                       glDisable(GL_CULL_FACE);
                       glDisable(GL_DEPTH_TEST);
                       glUseProgram(0);
@@ -186,7 +163,7 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
                           glUniformMatrix4fv(c.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
                           glUniformMatrix4fv(c.uniform("uProj"), 1, GL_FALSE, glm::value_ptr(proj));
                           glUniform1i(c.uniform("uCost"), cost);
-                          drawPanels(*sc, c, layers, view, fovY, aspect);
+                          sc->drawOverdrawPanels(c, layers, view, fovY, aspect);
                       }
                       glDisable(GL_CULL_FACE);
                       glDepthMask(GL_TRUE);
