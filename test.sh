@@ -29,7 +29,7 @@ for stage in $stages; do
   echo "=== test.sh: $stage"
   case $stage in
     unit) (cd build && ctest --output-on-failure -j"$(nproc)" -LE soak) 2>&1 | tee "$log"; count "$log" ;;
-    soak) (cd build && ctest --output-on-failure -L soak) 2>&1 | tee "$log"; count "$log" ;;
+    soak) (cd build && ctest -V -L soak) 2>&1 | tee "$log"; count "$log" ;;
     sanitize) bash scripts/sanitize.sh 2>&1 | tee "$log"; count "$log" ;;
     fuzz) if bash scripts/fuzz.sh; then passed=$((passed + 1)); else failed=$((failed + 1)); fi ;;
     *) echo "test.sh: unknown stage '$stage'"; failed=$((failed + 1)) ;;
