@@ -19,7 +19,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "fx/Reaction.h"
+#include "reactions/ReactionDesc.h"
 #include "sim/Integrator.h"
 #include "sim/ParticlePool.h"
 #include "sim/ReactionRuntime.h"

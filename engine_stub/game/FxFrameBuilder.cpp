@@ -9,6 +9,17 @@ namespace cube {
 
 namespace {
 
+fx::TargetFormat toTargetFormat(rtt::ColorFormat f) {
+    switch (f) {
+        case rtt::ColorFormat::RGBA16F: return fx::TargetFormat::RGBA16F;
+        case rtt::ColorFormat::R32F: return fx::TargetFormat::R32F;
+        case rtt::ColorFormat::RG32F: return fx::TargetFormat::RG32F;
+        case rtt::ColorFormat::RGBA8:
+        case rtt::ColorFormat::None: break;
+    }
+    return fx::TargetFormat::RGBA8;
+}
+
 // fx::PassContext over rtt::PassContext, translating fx targets to graph resources.
 class FxPassContext final : public fx::PassContext {
 public:
@@ -16,7 +27,19 @@ public:
                   uint32_t colorId, uint32_t depthId)
         : ctx_(ctx), color_(color), depth_(depth), colorId_(colorId), depthId_(depthId) {}
     void bindForDraw(fx::Target t) override { ctx_.bindForDraw(map(t)); }
-    uint32_t texture(fx::Target t, int attachment) override { return ctx_.texture(map(t), attachment); }
+    fx::TextureRef texture(fx::Target t, int attachment) override {
+        const rtt::FrameGraphResource r = map(t);
+        fx::TextureRef ref;
+        ref.name = ctx_.texture(r, attachment);
+        if (ref.name == 0) return fx::TextureRef{};
+        const rtt::RenderTargetDesc* d = ctx_.pool().desc(ctx_.handle(r));
+        if (d && attachment >= 0 && attachment < rtt::kMaxColorAttachments) {
+            ref.format = toTargetFormat(d->color[size_t(attachment)]);
+        }
+        ref.width = ctx_.width(r);
+        ref.height = ctx_.height(r);
+        return ref;
+    }
     int width(fx::Target t) override { return ctx_.width(map(t)); }
     int height(fx::Target t) override { return ctx_.height(map(t)); }
 

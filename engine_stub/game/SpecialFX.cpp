@@ -47,22 +47,31 @@ bool SpecialFX::Init(const Options& options, cubeScene& scene, fx::HostAdapter* 
                                                                  : options.legacyReactions;
         if (!loadLegacySmoke(file, &legacyDescs_, error)) return false;
     } else {
+        // The plugin carries its shaders and atlas; the engine hands it a shader folder only
+        // when the user points CUBE_SHADER_DIR at one (live shader edits).
         fx::PluginImports imports;
         imports.host = host;
-        imports.shaderDir = paths::shaders();
-        imports.dataDir = paths::data();
+        imports.shaderDir = paths::shaderOverride();
         imports.seed = uint64_t(options.seed) + 1;  // the plugin reads 0 as "its default seed"
-        plugin_ = fxCreatePlugin(imports);
+        fx::ErrorCode code = fx::ErrorCode::None;
+        plugin_ = fxCreatePlugin(imports, &code);
         if (!plugin_) {
-            *error = "fx_plugin: the plugin refused API version " + std::to_string(fx::kApiVersion);
+            *error = std::string("fx_plugin: not created (") + fx::errorCodeName(code) +
+                     "; details in the fx log above)";
             return false;
         }
+        // Every diagnostic has already gone through the host's log (stderr) once; the error
+        // says only what failed, so nothing is printed twice.
         const std::string path = options.reactions.empty() ? paths::reactions() : options.reactions;
-        fx::Diagnostics diags;
-        if (!plugin_->loadReactions(path, &diags)) {
-            error->clear();
-            for (const fx::Diagnostic& d : diags) *error += d.str() + "\n";
-            if (error->empty()) *error = path + ": reactions could not be loaded\n";
+        if (!plugin_->loadReactions(path, nullptr)) {
+            *error = path + ": reactions could not be loaded (errors above)";
+            return false;
+        }
+        // Compile the particle programs now, so a broken shader stops start-up with file:line
+        // instead of surfacing at the first frame with smoke. A set with no reaction never
+        // draws a particle and compiles nothing.
+        if (plugin_->reactionCount() > 0 && !plugin_->prepareGl(nullptr)) {
+            *error = "fx_plugin: particle shaders or atlas failed to load (errors above)";
             return false;
         }
         fx::RenderOptions ro;
@@ -99,9 +108,8 @@ void SpecialFX::Dyn(float dt, const Vehicle& vehicle) {
 
 void SpecialFX::pollHotReload(cubeScene& scene) {
     if (!plugin_) return;
-    fx::Diagnostics diags;
-    const bool reloaded = plugin_->pollHotReload(&diags);
-    for (const fx::Diagnostic& d : diags) std::fprintf(stderr, "reload rejected: %s\n", d.str().c_str());
+    // A rejected reload is reported once, by the plugin through the host's log.
+    const bool reloaded = plugin_->pollHotReload(nullptr);
     if (reloaded) {
         std::fprintf(stderr, "reactions reloaded: %d live\n", plugin_->reactionCount());
         createReactions(scene);

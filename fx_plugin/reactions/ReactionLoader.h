@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "fx/Diagnostic.h"
-#include "fx/Reaction.h"
+#include "reactions/ReactionDesc.h"
 
 namespace fx {
 

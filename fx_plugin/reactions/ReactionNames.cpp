@@ -1,5 +1,5 @@
 // Spellings of the enum words, shared by the loader (parsing), messages and README examples.
-#include "fx/Reaction.h"
+#include "reactions/ReactionDesc.h"
 
 namespace fx {
 

@@ -6,7 +6,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "YamlCheck.h"
-#include "fx/Reaction.h"
+#include "reactions/ReactionDesc.h"
 
 namespace fx {
 

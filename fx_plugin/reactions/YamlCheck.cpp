@@ -7,7 +7,7 @@
 #include <cstring>
 #include <sstream>
 
-#include "fx/Reaction.h"
+#include "reactions/ReactionDesc.h"
 
 namespace fx {
 namespace {

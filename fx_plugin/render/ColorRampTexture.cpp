@@ -1,6 +1,6 @@
 #include "ColorRampTexture.h"
 
-#include <glad/gl.h>
+#include "render/PrivateGl.h"
 
 #include "../sim/Lifecycle.h"
 

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "fx/Reaction.h"
+#include "reactions/ReactionDesc.h"
 
 namespace fx {
 

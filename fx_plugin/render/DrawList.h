@@ -14,7 +14,7 @@
 
 #include "InstanceStream.h"
 #include "fx/Plugin.h"
-#include "fx/Reaction.h"
+#include "reactions/ReactionDesc.h"
 #include "fx/Types.h"
 #include "../sim/ParticlePool.h"
 #include "../sim/ParticleSorter.h"

@@ -1,6 +1,6 @@
 #include "GlStateGuard.h"
 
-#include <glad/gl.h>
+#include "render/PrivateGl.h"
 
 namespace fx {
 namespace {

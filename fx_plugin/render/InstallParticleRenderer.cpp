@@ -13,6 +13,7 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
     config.host = &plugin.host();
     config.shaderDir = plugin.shaderDir();
     config.dataDir = dataDir;
+    config.errors = &plugin.apiErrors();
     auto renderer = std::make_shared<ParticleRenderer>(std::move(config));
     auto batches = std::make_shared<std::vector<ParticleBatch>>();
     PluginImpl* owner = &plugin;  // the hook is owned by the plugin: it never outlives it
@@ -26,6 +27,7 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
         owner->setParticlesDrawn(renderer->declarePasses(view, frame, batches->data(),
                                                          static_cast<int>(batches->size()), options));
     });
+    plugin.setPrepareHook([renderer](Diagnostics* out) { return renderer->prepare(out); });
 }
 
 }  // namespace fx

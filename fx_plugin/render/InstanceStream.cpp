@@ -1,6 +1,6 @@
 #include "InstanceStream.h"
 
-#include <glad/gl.h>
+#include "render/PrivateGl.h"
 
 namespace fx {
 namespace {

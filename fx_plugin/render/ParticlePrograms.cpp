@@ -1,6 +1,6 @@
 #include "ParticlePrograms.h"
 
-#include <glad/gl.h>
+#include "render/PrivateGl.h"
 
 #include "DrawList.h"
 #include "ShaderLoader.h"

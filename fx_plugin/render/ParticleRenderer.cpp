@@ -1,11 +1,13 @@
 #include "ParticleRenderer.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <utility>
 
-#include <glad/gl.h>
+#include "render/PrivateGl.h"
 
 #include "GlStateGuard.h"
+#include "src/ApiErrors.h"
 
 namespace fx {
 namespace {
@@ -15,7 +17,7 @@ constexpr int kAtlasUnit = 0, kRampUnit = 1, kSceneDepthUnit = 2;
 
 class DebugGroup {
 public:
-    explicit DebugGroup(const char* name) : active_(GLAD_GL_KHR_debug != 0) {
+    explicit DebugGroup(const char* name) : active_(FXGLAD_GL_KHR_debug != 0) {
         if (active_) glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name);
     }
     ~DebugGroup() {
@@ -28,8 +30,29 @@ private:
     bool active_;
 };
 
-GLADapiproc loadThroughHost(void* host, const char* name) {
-    return reinterpret_cast<GLADapiproc>(static_cast<HostAdapter*>(host)->getProcAddress(name));
+// "file:line: message" lines of a shader build error, as diagnostics.
+void addShaderDiagnostics(const std::string& text, Diagnostics* out) {
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        const std::string line = text.substr(start, end - start);
+        start = end + 1;
+        if (line.empty()) continue;
+        Diagnostic d;
+        d.code = ErrorCode::ShaderBuild;
+        d.message = line;
+        const size_t c1 = line.find(':');
+        const size_t c2 = c1 == std::string::npos ? c1 : line.find(':', c1 + 1);
+        if (c2 != std::string::npos && c2 > c1 + 1 &&
+            line.find_first_not_of("0123456789", c1 + 1) == c2) {
+            d.file = line.substr(0, c1);
+            d.line = std::atoi(line.c_str() + c1 + 1);
+            d.message = line.substr(line.find_first_not_of(' ', c2 + 1) == std::string::npos
+                                        ? line.size() : line.find_first_not_of(' ', c2 + 1));
+        }
+        out->push_back(d);
+    }
 }
 
 void bindTextureUnit(int unit, GLuint texture) {
@@ -52,10 +75,7 @@ const std::vector<ColorStop>& whiteRamp() {
 
 }  // namespace
 
-ParticleRenderer::ParticleRenderer(ParticleRendererConfig config) : config_(std::move(config)) {
-    if (config_.shaderDir.empty()) config_.shaderDir = CUBE_SOURCE_DIR "/shaders";
-    if (config_.dataDir.empty()) config_.dataDir = CUBE_SOURCE_DIR "/data";
-}
+ParticleRenderer::ParticleRenderer(ParticleRendererConfig config) : config_(std::move(config)) {}
 
 ParticleRenderer::~ParticleRenderer() = default;
 
@@ -66,28 +86,29 @@ void ParticleRenderer::log(LogLevel level, const std::string& message) const {
 bool ParticleRenderer::ensureLoaded() {
     if (state_ != State::Unloaded) return state_ == State::Ready;
     state_ = State::Failed;
-    // The host normally shares its glad loader with us; a host with another loader hands us
-    // its getProcAddress instead.
-    if (!glad_glCreateShader && config_.host && config_.host->getProcAddress("glCreateShader")) {
-        gladLoadGLUserPtr(loadThroughHost, config_.host);
-    }
-    if (!glad_glCreateShader) {
-        log(LogLevel::Error, "fx: particle renderer disabled: no GL entry points (the host neither "
-                             "loaded glad nor offers getProcAddress)");
+    // The plugin's private GL table, filled through the host (never a global loader).
+    std::string error;
+    if (!config_.host || !loadPrivateGl(*config_.host, &error)) {
+        if (error.empty()) error = "no host to load GL entry points through";
+        log(LogLevel::Error, "fx: particle renderer disabled: " + error);
+        loadDiagnostics_.push_back(Diagnostic{ErrorCode::NoGlContext, "", 0, 0, "", error});
         return false;
     }
 
     GlStateGuard guard;
     glActiveTexture(GL_TEXTURE0);  // every texture we touch goes through a guarded unit
-    std::string error;
     if (!atlas_.load(config_.dataDir, &error)) {
         log(LogLevel::Error, "fx: particle renderer disabled: " + error);
+        loadDiagnostics_.push_back(Diagnostic{ErrorCode::ResourceMissing, "", 0, 0, "", error});
         return false;
     }
     std::vector<std::string> errors;
     programs_.build(config_.shaderDir, &errors);
     quarter_.build(config_.shaderDir, &errors);
-    for (const std::string& e : errors) log(LogLevel::Error, "fx: shader build failed:\n" + e);
+    for (const std::string& e : errors) {
+        log(LogLevel::Error, "fx: shader build failed:\n" + e);
+        addShaderDiagnostics(e, &loadDiagnostics_);
+    }
     if (programs_.usableTechniques(false) == 0) {
         log(LogLevel::Error, "fx: particle renderer disabled: no particle program built");
         return false;
@@ -96,6 +117,29 @@ bool ParticleRenderer::ensureLoaded() {
     ramp_.upload();
     state_ = State::Ready;
     return true;
+}
+
+bool ParticleRenderer::prepare(Diagnostics* out) {
+    const bool ready = ensureLoaded();
+    if (out) out->insert(out->end(), loadDiagnostics_.begin(), loadDiagnostics_.end());
+    return ready && loadDiagnostics_.empty();
+}
+
+bool ParticleRenderer::sizesAgree(PassContext& ctx, const ViewInfo& view, Target color, Target depth) {
+    const int w = ctx.width(color), h = ctx.height(color);
+    const bool depthOk = !depth.valid() || (ctx.width(depth) == w && ctx.height(depth) == h);
+    if (w == view.width && h == view.height && depthOk) return true;
+    if (config_.errors) {
+        std::string what = "sceneColor is " + std::to_string(w) + "x" + std::to_string(h);
+        if (depth.valid()) {
+            what += ", sceneDepth " + std::to_string(ctx.width(depth)) + "x" +
+                    std::to_string(ctx.height(depth));
+        }
+        what += ", ViewInfo " + std::to_string(view.width) + "x" + std::to_string(view.height) +
+                "; they must be equal; nothing drawn";
+        config_.errors->refuse(ErrorCode::SizeMismatch, "particle pass", what);
+    }
+    return false;
 }
 
 std::shared_ptr<ParticleRenderer::ViewRecord> ParticleRenderer::acquireRecord() {
@@ -150,13 +194,15 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
             const Target depth = frame.sceneDepth();
             frame.addPass(kFullResPass, {depth}, {color},
                           [this, record, depth, color](PassContext& ctx) {
+                              if (!sizesAgree(ctx, record->view, color, depth)) return;
                               GlStateGuard guard;
                               DebugGroup group(kFullResPass);
                               ctx.bindForDraw(color);
-                              drawBatches(*record, ctx.texture(depth, 0), false);
+                              drawBatches(*record, ctx.texture(depth, 0).name, false);
                           });
         } else {
             frame.addPass(kFullResPass, {}, {color}, [this, record, color](PassContext& ctx) {
+                if (!sizesAgree(ctx, record->view, color, Target{})) return;
                 GlStateGuard guard;
                 DebugGroup group(kFullResPass);
                 ctx.bindForDraw(color);
@@ -172,7 +218,8 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     const Target halfColor = frame.createTarget(QuarterResPath::kColorTarget,
                                                 QuarterResPath::colorTargetDesc());
     frame.addPass(QuarterResPath::kDownsamplePass, {depth}, {halfDepth},
-                  [this, depth, halfDepth](PassContext& ctx) {
+                  [this, record, color, depth, halfDepth](PassContext& ctx) {
+                      if (!sizesAgree(ctx, record->view, color, depth)) return;
                       GlStateGuard guard;
                       DebugGroup group(QuarterResPath::kDownsamplePass);
                       quarter_.downsampleDepth(ctx, depth, halfDepth);
@@ -182,7 +229,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
                       GlStateGuard guard;
                       DebugGroup group(QuarterResPath::kQuarterPass);
                       quarter_.beginQuarter(ctx, halfColor);
-                      drawBatches(*record, ctx.texture(halfDepth, 0), true);
+                      drawBatches(*record, ctx.texture(halfDepth, 0).name, true);
                   });
     const bool bilinear = options.bilinearUpsample;
     frame.addPass(QuarterResPath::kCompositePass, {halfColor, halfDepth, depth}, {color},
@@ -204,7 +251,6 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glDepthMask(GL_FALSE);
-    glDepthFunc(GL_LEQUAL);
     glDisable(GL_CULL_FACE);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_SCISSOR_TEST);
@@ -221,6 +267,7 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         const bool zTest = batch.technique == Technique::Hard && !quarterRes;
         if (zTest) {
             glEnable(GL_DEPTH_TEST);
+            glDepthFunc(view.depth == DepthConvention::ReversedZ ? GL_GEQUAL : GL_LEQUAL);
         } else {
             glDisable(GL_DEPTH_TEST);
         }

@@ -12,17 +12,18 @@
 //                (RGBA16F), both half x half, created through FrameBuilder::createTarget
 //                (see QuarterResPath.h).
 //
-// GL: loaded lazily by the first declarePasses() that finds a visible particle (the host has a
-// context current by then; a scene without smoke never compiles a shader):
-// shaders from Config::shaderDir, the atlas from Config::dataDir. Every shader compile/link
-// error and a missing atlas is reported through HostAdapter::log as "file:line: message"; a
-// technique whose program failed is not drawn, a missing atlas draws nothing, a failed
-// quarter-res program falls back to full res. Every GL call runs inside a GlStateGuard, so the
+// GL: loaded by prepare() (Plugin::prepareGl), or else lazily by the first declarePasses() that
+// finds a visible particle (the host has a context current by then; a scene without smoke never
+// compiles a shader): the private GL table through the host's getProcAddress, shaders and atlas
+// from inside the library, or from Config::shaderDir / Config::dataDir when set. Every shader
+// compile/link error and a missing atlas is reported through HostAdapter::log as
+// "file:line: message" (and as Diagnostics by prepare()); a technique whose program failed is
+// not drawn, a missing atlas draws nothing, a failed quarter-res program falls back to full res. Every GL call runs inside a GlStateGuard, so the
 // host's GL state after each pass (and after loading) equals the state before.
 // Destroy the renderer with its GL context current (it deletes its GL objects).
 //
-// Depth testing: hard particles at full res test the host's z-buffer (LEQUAL, no writes), the
-// legacy look. Soft and spherical particles do not: they compare linear depths in the shader,
+// Depth testing: hard particles at full res test the host's z-buffer (no writes; LEQUAL, or
+// GEQUAL when ViewInfo::depth is ReversedZ), the legacy look. Soft and spherical particles do not: they compare linear depths in the shader,
 // which stays exact at near 0.01 / far 100 km where a 24-bit z-buffer cannot resolve 100 m at
 // 10 km, and a spherical particle's front may be visible where its quad is behind geometry.
 #include <memory>
@@ -35,17 +36,21 @@
 #include "ParticlePrograms.h"
 #include "QuarterResPath.h"
 #include "SmokeAtlas.h"
+#include "fx/Diagnostic.h"
 #include "fx/HostAdapter.h"
 #include "fx/Plugin.h"
 
 namespace fx {
 
-/// Defaults: no host (nothing is logged), shaders from CUBE_SOURCE_DIR "/shaders", the atlas
-/// from CUBE_SOURCE_DIR "/data".
+class ApiErrors;
+
+/// Defaults: no host (nothing is logged, and GL cannot be loaded), shaders and atlas embedded in
+/// the library, refused calls not counted.
 struct ParticleRendererConfig {
     HostAdapter* host = nullptr;
-    std::string shaderDir;  ///< empty = the build's source tree
-    std::string dataDir;    ///< empty = the build's source tree
+    std::string shaderDir;  ///< empty = the shaders embedded in the library
+    std::string dataDir;    ///< empty = the atlas embedded in the library
+    ApiErrors* errors = nullptr;  ///< where SizeMismatch is reported (may be null)
 };
 
 class ParticleRenderer {
@@ -63,6 +68,10 @@ public:
     int declarePasses(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
                       int batchCount, const RenderOptions& options);
 
+    /// Loads GL resources now (Plugin::prepareGl). True when everything built; otherwise false
+    /// with every problem appended to `out` (the technique that did build still draws).
+    bool prepare(Diagnostics* out);
+
     State state() const { return state_; }
     const std::string& shaderDir() const { return config_.shaderDir; }
     const InstanceStream& instanceStream() const { return stream_; }
@@ -75,6 +84,8 @@ private:
     };
 
     bool ensureLoaded();
+    /// True when the pass's targets agree with the view on its size; logs SizeMismatch if not.
+    bool sizesAgree(PassContext& ctx, const ViewInfo& view, Target color, Target depth);
     std::shared_ptr<ViewRecord> acquireRecord();
     void log(LogLevel level, const std::string& message) const;
     /// Draws every batch of `record` into the bound target. `sceneDepth` is the linear depth
@@ -84,6 +95,7 @@ private:
     ParticleRendererConfig config_;
     State state_ = State::Unloaded;
     bool quarterFallbackLogged_ = false;
+    Diagnostics loadDiagnostics_;  ///< what went wrong while loading (prepare() hands them out)
     SmokeAtlas atlas_;
     ColorRampTexture ramp_;
     InstanceStream stream_;

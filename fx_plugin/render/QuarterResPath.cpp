@@ -1,6 +1,6 @@
 #include "QuarterResPath.h"
 
-#include <glad/gl.h>
+#include "render/PrivateGl.h"
 
 #include "ShaderLoader.h"
 
@@ -78,7 +78,7 @@ void QuarterResPath::downsampleDepth(PassContext& ctx, Target sceneDepth, Target
     fullscreenState();
     glDisable(GL_BLEND);
     glUseProgram(downsample_);
-    bindTextureUnit(0, ctx.texture(sceneDepth, 0));
+    bindTextureUnit(0, ctx.texture(sceneDepth, 0).name);
     glUniform1i(downsampleDepthLoc_, 0);
     glBindVertexArray(emptyVao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -100,9 +100,9 @@ void QuarterResPath::composite(PassContext& ctx, Target sceneColor, Target halfC
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glUseProgram(composite_);
-    bindTextureUnit(0, ctx.texture(halfColor, 0));
-    bindTextureUnit(1, ctx.texture(halfDepth, 0));
-    bindTextureUnit(2, ctx.texture(sceneDepth, 0));
+    bindTextureUnit(0, ctx.texture(halfColor, 0).name);
+    bindTextureUnit(1, ctx.texture(halfDepth, 0).name);
+    bindTextureUnit(2, ctx.texture(sceneDepth, 0).name);
     glUniform1i(halfColorLoc_, 0);
     glUniform1i(halfDepthLoc_, 1);
     glUniform1i(sceneDepthLoc_, 2);

@@ -6,13 +6,21 @@
 #include <set>
 #include <sstream>
 
-#include <glad/gl.h>
+#include "render/EmbeddedResources.h"
+#include "render/PrivateGl.h"
 
 namespace fx {
 namespace {
 
-bool readFile(const std::string& path, std::string* out) {
-    std::ifstream in(path, std::ios::binary);
+// `dir` empty: the copy embedded in the library; else the file `dir`/`name` (live edits).
+bool readShader(const std::string& dir, const std::string& name, std::string* out) {
+    if (dir.empty()) {
+        const embedded::Resource* r = embedded::find(name.c_str());
+        if (!r) return false;
+        out->assign(reinterpret_cast<const char*>(r->data), r->size);
+        return true;
+    }
+    std::ifstream in(dir + "/" + name, std::ios::binary);
     if (!in) return false;
     std::ostringstream ss;
     ss << in.rdbuf();
@@ -54,8 +62,9 @@ struct Expander {
         }
         if (!seen.insert(name).second) return true;
         std::string text;
-        if (!readFile(dir + "/" + name, &text)) {
-            *error = prefix + ": cannot open shader file \"" + dir + "/" + name + "\"";
+        if (!readShader(dir, name, &text)) {
+            *error = prefix + (dir.empty() ? ": no shader \"" + name + "\" is embedded in the plugin"
+                                           : ": cannot open shader file \"" + dir + "/" + name + "\"");
             return false;
         }
         const int index = static_cast<int>(files->size());

@@ -1,6 +1,7 @@
 #pragma once
-// The plugin's own GLSL loader (it does not share the host's): reads shaders/<name>, expands
-// `#include "file"` from the same directory, inserts `#define`s after `#version`, compiles and
+// The plugin's own GLSL loader (it does not share the host's): reads <name> from the shaders
+// embedded in the library (dir empty) or from a folder (dir, for live edits), expands
+// `#include "file"` from the same place, inserts `#define`s after `#version`, compiles and
 // links, and reports every failure as "file:line: message" lines naming the file the line is
 // really in (an error inside particles_common.glsl names particles_common.glsl).
 //
@@ -23,7 +24,8 @@ struct ShaderSource {
 
 constexpr int kMaxIncludeDepth = 8;
 
-/// Reads `dir`/`name`, expanding includes. `defines` is inserted verbatim right after #version
+/// Reads `dir`/`name` (or the embedded `name` when `dir` is empty), expanding includes.
+/// `defines` is inserted verbatim right after #version
 /// (e.g. "#define FX_SPHERICAL 1\n"). Returns false with "file:line: message" in *error when a
 /// file cannot be read, an #include is malformed or nested too deep, or #version is missing.
 bool loadShaderSource(const std::string& dir, const std::string& name, const std::string& defines,

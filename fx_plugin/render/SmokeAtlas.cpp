@@ -1,7 +1,9 @@
 #include "SmokeAtlas.h"
 
-#include <glad/gl.h>
+#include "render/PrivateGl.h"
 #include <stb_image.h>
+
+#include "render/EmbeddedResources.h"
 
 namespace fx {
 
@@ -10,9 +12,17 @@ SmokeAtlas::~SmokeAtlas() {
 }
 
 bool SmokeAtlas::load(const std::string& dataDir, std::string* error) {
-    const std::string path = dataDir + "/" + kFileName;
     int w = 0, h = 0, channels = 0;
-    stbi_uc* pixels = stbi_load(path.c_str(), &w, &h, &channels, 4);
+    stbi_uc* pixels = nullptr;
+    std::string path;
+    if (dataDir.empty()) {
+        path = std::string("<embedded>/") + kFileName;
+        const embedded::Resource* r = embedded::find(kFileName);
+        if (r) pixels = stbi_load_from_memory(r->data, int(r->size), &w, &h, &channels, 4);
+    } else {
+        path = dataDir + "/" + kFileName;
+        pixels = stbi_load(path.c_str(), &w, &h, &channels, 4);
+    }
     if (!pixels) {
         const char* why = stbi_failure_reason();
         *error = path + ": cannot load the smoke atlas (" + (why ? why : "unknown reason") + ")";

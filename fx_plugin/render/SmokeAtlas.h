@@ -18,7 +18,8 @@ public:
     SmokeAtlas(const SmokeAtlas&) = delete;
     SmokeAtlas& operator=(const SmokeAtlas&) = delete;
 
-    /// Loads `dataDir`/smoke_atlas.png (stb_image) and uploads it. Changes GL_TEXTURE_2D on the
+    /// Loads `dataDir`/smoke_atlas.png, or the copy embedded in the library when `dataDir` is
+    /// empty (stb_image), and uploads it. Changes GL_TEXTURE_2D on the
     /// active unit and the unpack state: call inside a GlStateGuard. On failure returns false
     /// with "path: reason" in *error and holds no texture.
     bool load(const std::string& dataDir, std::string* error);

@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-#include "fx/Reaction.h"
+#include "reactions/ReactionDesc.h"
 
 namespace fx {
 

@@ -30,7 +30,7 @@
 #include "EmissionClock.h"
 #include "ParticlePool.h"
 #include "Rng.h"
-#include "fx/Reaction.h"
+#include "reactions/ReactionDesc.h"
 #include "fx/Types.h"
 
 namespace fx {

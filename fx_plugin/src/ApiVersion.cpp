@@ -1,6 +1,5 @@
-// Keeps the library non-empty while its parts are written; holds the API version string.
-#include "fx/Plugin.h"
+#include "fx/Api.h"
 
-namespace fx {
-const char* apiVersionString() { return "fx_plugin api 1"; }
-}  // namespace fx
+// The version of this library, as opposed to fx::kApiVersion, which is the version of the headers
+// a host was compiled against.
+extern "C" uint32_t fxApiVersion() { return fx::kApiVersion; }

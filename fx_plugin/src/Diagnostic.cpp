@@ -20,6 +20,15 @@ const char* errorCodeName(ErrorCode code) {
     case ErrorCode::DuplicateKey: return "DuplicateKey";
     case ErrorCode::FileTooLarge: return "FileTooLarge";
     case ErrorCode::TooManyErrors: return "TooManyErrors";
+    case ErrorCode::VersionMismatch: return "VersionMismatch";
+    case ErrorCode::NullArgument: return "NullArgument";
+    case ErrorCode::IndexOutOfRange: return "IndexOutOfRange";
+    case ErrorCode::InvalidValue: return "InvalidValue";
+    case ErrorCode::InvalidView: return "InvalidView";
+    case ErrorCode::SizeMismatch: return "SizeMismatch";
+    case ErrorCode::NoGlContext: return "NoGlContext";
+    case ErrorCode::ShaderBuild: return "ShaderBuild";
+    case ErrorCode::ResourceMissing: return "ResourceMissing";
     }
     return "Unknown";
 }

@@ -1,5 +1,6 @@
 #include <array>
 #include <cassert>
+#include <cmath>
 
 #include "PluginImpl.h"
 #include "../render/InstallParticleRenderer.h"
@@ -9,7 +10,8 @@ namespace fx {
 PluginImpl::PluginImpl(const PluginImports& imports)
     : host_(imports.host),
       shaderDir_(imports.shaderDir),
-      seed_(imports.seed != 0 ? imports.seed : ReactionRuntime::kDefaultSeed) {
+      seed_(imports.seed != 0 ? imports.seed : ReactionRuntime::kDefaultSeed),
+      errors_(imports.host) {
     assert(host_);
 }
 
@@ -21,12 +23,14 @@ void PluginImpl::logDiagnostics(const Diagnostics& diags, const char* what) {
 bool PluginImpl::loadReactions(const std::string& path, Diagnostics* out) {
     Diagnostics diags;
     if (!library_.load(path, &diags)) {
+        // "Kept" only when there is something to keep: at start-up nothing is running yet.
         logDiagnostics(diags, ("fx: reactions not loaded from " + path +
-                               "; the running set is kept").c_str());
+                               (everLoaded_ ? "; the running set is kept" : "")).c_str());
         if (out) out->insert(out->end(), diags.begin(), diags.end());
         return false;
     }
     adoptCurrentSet();
+    everLoaded_ = true;
     host_->log(LogLevel::Info, ("fx: " + std::to_string(runtimes_.size()) +
                                 " reactions loaded from " + path).c_str());
     return true;
@@ -74,25 +78,88 @@ void PluginImpl::adoptCurrentSet() {
     ++runtimeGeneration_;
 }
 
+namespace {
+
+std::string indexRange(int index, int count) {
+    return "index " + std::to_string(index) + (count > 0 ? " is outside 0.." + std::to_string(count - 1)
+                                                         : std::string(" given, but no reaction is loaded")) +
+           " (" + std::to_string(count) + " reactions loaded)";
+}
+
+bool finiteMatrix(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) {
+            if (!std::isfinite(m[c][r])) return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
 std::string PluginImpl::reactionName(int index) const {
-    if (index < 0 || index >= reactionCount()) return std::string();
+    if (index < 0 || index >= reactionCount()) {
+        errors_.refuse(ErrorCode::IndexOutOfRange, "reactionName", indexRange(index, reactionCount()));
+        return std::string();
+    }
     return runtimes_[static_cast<size_t>(index)].name();
 }
 
-void PluginImpl::continueReaction(int index, float dt, float* currentVehicleCollisionAmount) {
-    assert(index >= 0 && index < reactionCount());
-    if (index < 0 || index >= reactionCount()) return;
+ErrorCode PluginImpl::continueReaction(int index, float dt, float* currentVehicleCollisionAmount) {
+    if (index < 0 || index >= reactionCount()) {
+        return errors_.refuse(ErrorCode::IndexOutOfRange, "continueReaction", indexRange(index, reactionCount()));
+    }
+    if (!std::isfinite(dt) || dt < 0.0f) {
+        return errors_.refuse(ErrorCode::InvalidValue, "continueReaction",
+                              "dt = " + std::to_string(dt) + " s; expected a finite value >= 0");
+    }
     std::array<WheelContact, ReactionRuntime::kMaxWheels> wheels;
     const int count = glm::clamp(host_->wheelCount(), 0, ReactionRuntime::kMaxWheels);
     for (int i = 0; i < count; ++i) wheels[static_cast<size_t>(i)] = host_->wheel(i);
     const float amount = currentVehicleCollisionAmount ? *currentVehicleCollisionAmount : 0.0f;
     runtimes_[static_cast<size_t>(index)].step(dt, wheels.data(), count, amount,
                                                host_->collisionPoint(), host_->wind());
+    return ErrorCode::None;
 }
 
-void PluginImpl::declarePasses(const ViewInfo& view, FrameBuilder& frame) {
+ErrorCode PluginImpl::setRenderOptions(const RenderOptions& options) {
+    const auto t = static_cast<uint8_t>(options.techniqueOverride);
+    if (t > static_cast<uint8_t>(Technique::Spherical)) {
+        return errors_.refuse(ErrorCode::InvalidValue, "setRenderOptions",
+                              "techniqueOverride = " + std::to_string(t) +
+                                  "; expected FromReaction, Hard, Soft or Spherical");
+    }
+    options_ = options;
+    return ErrorCode::None;
+}
+
+bool PluginImpl::prepareGl(Diagnostics* out) {
+    return prepareHook_ ? prepareHook_(out) : true;
+}
+
+ErrorCode PluginImpl::declarePasses(const ViewInfo& view, FrameBuilder& frame) {
+    std::string bad;
+    if (view.width <= 0 || view.height <= 0) {
+        bad = "size " + std::to_string(view.width) + "x" + std::to_string(view.height) +
+              "; expected width and height > 0";
+    } else if (!std::isfinite(view.nearPlane) || !std::isfinite(view.farPlane) ||
+               !(view.nearPlane > 0.0f) || !(view.farPlane > view.nearPlane)) {
+        bad = "near " + std::to_string(view.nearPlane) + ", far " + std::to_string(view.farPlane) +
+              "; expected 0 < near < far, both finite";
+    } else if (!finiteMatrix(view.view) || !finiteMatrix(view.proj) || !std::isfinite(view.eye.x) ||
+               !std::isfinite(view.eye.y) || !std::isfinite(view.eye.z)) {
+        bad = "non-finite view or projection matrix or eye; expected finite values";
+    } else if (static_cast<uint8_t>(view.depth) > static_cast<uint8_t>(DepthConvention::ReversedZ)) {
+        bad = "depth convention " + std::to_string(static_cast<int>(view.depth)) +
+              "; expected Standard or ReversedZ";
+    }
+    if (!bad.empty()) {
+        particlesDrawn_ = 0;
+        return errors_.refuse(ErrorCode::InvalidView, "declarePasses", bad);
+    }
     // >>> The particle renderer (fx_plugin/render/) plugs in here, through setRenderHook(). <<<
     if (renderHook_) renderHook_(view, frame, runtimes_, options_);
+    return ErrorCode::None;
 }
 
 Stats PluginImpl::stats() const {
@@ -102,13 +169,52 @@ Stats PluginImpl::stats() const {
     s.particlesDrawn = particlesDrawn_;
     s.reloads = reloads_;
     s.reloadErrors = reloadErrors_;
+    s.apiErrors = errors_.count();
+    for (const ReactionRuntime& r : runtimes_) s.particleCapacity += r.pool().capacity();
     return s;
+}
+
+ParticleCheck PluginImpl::checkParticles() const {
+    ParticleCheck c;
+    for (const ReactionRuntime& r : runtimes_) {
+        const ParticlePool& pool = r.pool();
+        c.alive += pool.alive();
+        c.capacity += pool.capacity();
+        for (int s = 0; s < ParticlePool::StreamCount; ++s) {
+            const float* v = pool.stream(ParticlePool::Stream(s));
+            for (int i = 0; i < pool.alive(); ++i) {
+                if (!std::isfinite(v[i])) ++c.nonFinite;
+            }
+        }
+    }
+    return c;
 }
 
 }  // namespace fx
 
-std::unique_ptr<fx::Plugin> fxCreatePlugin(const fx::PluginImports& imports) {
-    if (imports.apiVersion != fx::kApiVersion || !imports.host) return nullptr;
+std::unique_ptr<fx::Plugin> fxCreatePlugin(const fx::PluginImports& imports, fx::ErrorCode* error) {
+    using fx::ErrorCode;
+    auto refuse = [&](ErrorCode code, const std::string& what) -> std::unique_ptr<fx::Plugin> {
+        if (error) *error = code;
+        if (imports.host) {
+            const std::string line = std::string("fx: error[") + fx::errorCodeName(code) +
+                                     "] fxCreatePlugin: " + what;
+            imports.host->log(fx::LogLevel::Error, line.c_str());
+        }
+        return nullptr;
+    };
+    const uint32_t want = imports.apiVersion;
+    if (fx::apiVersionMajor(want) != fx::apiVersionMajor(fx::kApiVersion) ||
+        fx::apiVersionMinor(want) > fx::apiVersionMinor(fx::kApiVersion)) {
+        auto str = [](uint32_t v) {
+            return std::to_string(fx::apiVersionMajor(v)) + "." + std::to_string(fx::apiVersionMinor(v));
+        };
+        return refuse(ErrorCode::VersionMismatch, "the host asks for API " + str(want) +
+                                                      "; this plugin offers " + str(fx::kApiVersion) +
+                                                      " (same major, minor up to the plugin's)");
+    }
+    if (!imports.host) return refuse(ErrorCode::NullArgument, "PluginImports::host is null; expected the host's HostAdapter");
+    if (error) *error = ErrorCode::None;
     auto plugin = std::make_unique<fx::PluginImpl>(imports);
     fx::installParticleRenderer(*plugin, imports.dataDir);  // the particle renderer's hook
     return plugin;

@@ -23,6 +23,7 @@
 #include "fx/Plugin.h"
 #include "../reactions/ReactionLibrary.h"
 #include "../sim/ReactionRuntime.h"
+#include "ApiErrors.h"
 
 namespace fx {
 
@@ -31,6 +32,7 @@ public:
     using RenderHook = std::function<void(const ViewInfo&, FrameBuilder&,
                                           const std::vector<ReactionRuntime>&,
                                           const RenderOptions&)>;
+    using PrepareHook = std::function<bool(Diagnostics*)>;
 
     /// `imports.host` must be non-null (fxCreatePlugin checks it).
     explicit PluginImpl(const PluginImports& imports);
@@ -40,14 +42,20 @@ public:
     bool pollHotReload(Diagnostics* out) override;
     int reactionCount() const override { return static_cast<int>(runtimes_.size()); }
     std::string reactionName(int index) const override;
-    void continueReaction(int index, float dt, float* currentVehicleCollisionAmount) override;
-    void setRenderOptions(const RenderOptions& options) override { options_ = options; }
+    ErrorCode continueReaction(int index, float dt, float* currentVehicleCollisionAmount) override;
+    ErrorCode setRenderOptions(const RenderOptions& options) override;
     RenderOptions renderOptions() const override { return options_; }
-    void declarePasses(const ViewInfo& view, FrameBuilder& frame) override;
+    bool prepareGl(Diagnostics* out) override;
+    ErrorCode declarePasses(const ViewInfo& view, FrameBuilder& frame) override;
     Stats stats() const override;
+    ParticleCheck checkParticles() const override;
 
     /// The renderer's entry; pass an empty function to remove it.
     void setRenderHook(RenderHook hook) { renderHook_ = std::move(hook); }
+    /// The renderer's Plugin::prepareGl.
+    void setPrepareHook(PrepareHook hook) { prepareHook_ = std::move(hook); }
+    /// Where refused calls are reported (the renderer reports SizeMismatch here).
+    ApiErrors& apiErrors() const { return errors_; }
     /// Called by the render hook: particles drawn in the last declared view (Stats::particlesDrawn).
     void setParticlesDrawn(int count) { particlesDrawn_ = count; }
 
@@ -75,9 +83,12 @@ private:
     int runtimeGeneration_ = 0;
     RenderOptions options_;
     RenderHook renderHook_;
+    PrepareHook prepareHook_;
+    mutable ApiErrors errors_;  // mutable: a const query (reactionName) may refuse too
     int particlesDrawn_ = 0;
     int reloads_ = 0;
     int reloadErrors_ = 0;
+    bool everLoaded_ = false;
 };
 
 }  // namespace fx

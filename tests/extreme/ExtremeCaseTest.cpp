@@ -13,7 +13,6 @@
 #include "../engine/GameTestUtil.h"
 #include "gl/Gl.h"
 #include "gl/Paths.h"
-#include "src/PluginImpl.h"
 
 using namespace cube;
 
@@ -43,22 +42,17 @@ struct Check {
 
 Check checkParticles(Game& game) {
     Check c;
-    auto* impl = dynamic_cast<fx::PluginImpl*>(game.specialFX().plugin());
-    if (!impl) {
+    fx::Plugin* plugin = game.specialFX().plugin();
+    if (!plugin) {
         ADD_FAILURE() << "the game runs no fx plugin";
         c.finite = false;
         return c;
     }
-    for (const fx::ReactionRuntime& r : impl->runtimes()) {
-        const fx::ParticlePool& pool = r.pool();
-        c.alive += pool.alive();
-        c.capacity += pool.capacity();
-        for (int s = 0; s < fx::ParticlePool::StreamCount; ++s) {
-            const float* v = pool.stream(fx::ParticlePool::Stream(s));
-            for (int i = 0; i < pool.alive(); ++i)
-                if (!std::isfinite(v[i])) c.finite = false;
-        }
-    }
+    // The plugin's own health check reads every live particle's state streams.
+    const fx::ParticleCheck check = plugin->checkParticles();
+    c.alive = check.alive;
+    c.capacity = check.capacity;
+    c.finite = check.nonFinite == 0;
     return c;
 }
 

@@ -208,7 +208,8 @@ glm::vec3 projectToPixel(const fx::ViewInfo& view, glm::vec3 world);
 class TestHostAdapter final : public fx::HostAdapter {
 public:
     TestHostAdapter();
-    void* getProcAddress(const char*) override { return nullptr; }  // glad is shared
+    /// The OSMesa context's entry points: the plugin fills its private GL table from these.
+    void* getProcAddress(const char* name) override;
     int wheelCount() const override { return 4; }
     fx::WheelContact wheel(int index) const override { return wheels_[size_t(index & 3)]; }
     void log(fx::LogLevel level, const char* message) override;

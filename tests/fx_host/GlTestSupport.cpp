@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "FxTestHost.h"
+#include "render/PrivateGlLoader.h"
 
 namespace fxtest {
 
@@ -39,7 +40,13 @@ void GLAD_API_PTR onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum s
     g_log += '\n';
 }
 
+void* procAddressAsPointer(const char* name) {
+    return reinterpret_cast<void*>(osMesaProcAddress()(name));
+}
+
 }  // namespace
+
+void* TestHostAdapter::getProcAddress(const char* name) { return procAddressAsPointer(name); }
 
 bool ensureGl(std::string* error) {
     static bool loaded = false;
@@ -50,6 +57,9 @@ bool ensureGl(std::string* error) {
         *error = "glad: no OpenGL 3.3 core entry points";
         return false;
     }
+    // The plugin's own (renamed) GL table, for tests that call plugin internals directly before
+    // any plugin instance has loaded it through a host.
+    if (!fx::loadPrivateGl(&procAddressAsPointer, error)) return false;
     g_khrDebug = GLAD_GL_KHR_debug != 0;
     if (g_khrDebug) {
         glEnable(GL_DEBUG_OUTPUT);

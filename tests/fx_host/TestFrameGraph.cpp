@@ -76,11 +76,12 @@ public:
             glViewport(0, 0, s->width, s->height);
         }
     }
-    uint32_t texture(fx::Target t, int) override {
-        if (t.id == kSceneColor) return g_.colorTex_;
-        if (t.id == kSceneDepth) return g_.depthTex_;
+    fx::TextureRef texture(fx::Target t, int) override {
+        if (t.id == kSceneColor) return {g_.colorTex_, fx::TargetFormat::RGBA8, g_.width_, g_.height_};
+        if (t.id == kSceneDepth) return {g_.depthTex_, fx::TargetFormat::R32F, g_.width_, g_.height_};
         TargetSlot* s = g_.slotFor(t.id);
-        return s ? s->texture : 0;
+        if (!s) return fx::TextureRef{};
+        return {s->texture, s->desc.format, s->width, s->height};
     }
     int width(fx::Target t) override {
         TargetSlot* s = t.id > kSceneDepth ? g_.slotFor(t.id) : nullptr;

@@ -119,6 +119,8 @@ TEST(Plugin, DeclarePassesCallsTheRenderHookWithTheRuntimes) {
     fx::PluginImpl& impl = *plugin;
     FakeFrame frame;
     fx::ViewInfo view;
+    view.width = 64;   // a valid view (the default size 0 is refused as InvalidView)
+    view.height = 48;
     plugin->declarePasses(view, frame);  // no renderer installed: nothing declared
     EXPECT_EQ(frame.passes, 0);
 

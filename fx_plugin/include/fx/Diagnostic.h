@@ -1,8 +1,13 @@
 #pragma once
-// Errors found in data (reaction files). Each rule has its own code so tests assert the code,
-// not the wording; the message says where and what was expected.
+// Named errors. Two families share one enum: errors in data (reaction files), each rule with its
+// own code so tests assert the code, not the wording, and the message says where and what was
+// expected; and invalid calls of the API (an index out of range, a null pointer, a zero-size
+// view ...), which are refused in every build type: the call has no effect, returns the code
+// and the host's log gets "fx: error[Code] function: what was expected".
 #include <string>
 #include <vector>
+
+#include "fx/Api.h"
 
 namespace fx {
 
@@ -23,11 +28,22 @@ enum class ErrorCode {
     DuplicateKey,    ///< one key twice in the same map (YAML would silently keep one)
     FileTooLarge,    ///< a file or text past the loader's size limit (read nothing of it)
     TooManyErrors,   ///< the per-file diagnostic limit was reached; the rest were not listed
+
+    // Invalid API calls (no effect; reported through the host's log and the return value).
+    VersionMismatch, ///< PluginImports::apiVersion is not compatible with the plugin (see Api.h)
+    NullArgument,    ///< a required pointer is null (PluginImports::host)
+    IndexOutOfRange, ///< a reaction index outside 0 .. reactionCount() - 1
+    InvalidValue,    ///< a non-finite or negative time step, an enum value the API does not have
+    InvalidView,     ///< zero or negative view size, near/far planes not 0 < near < far, non-finite matrices
+    SizeMismatch,    ///< sceneColor / sceneDepth / ViewInfo disagree on the view's size
+    NoGlContext,     ///< the host's getProcAddress gave no GL entry points (no context current?)
+    ShaderBuild,     ///< a particle program failed to compile or link (message has file:line)
+    ResourceMissing, ///< the smoke atlas or a shader could not be read (from an override folder)
 };
 
-const char* errorCodeName(ErrorCode code);
+FX_API const char* errorCodeName(ErrorCode code);
 
-struct Diagnostic {
+struct FX_API Diagnostic {
     ErrorCode code = ErrorCode::None;
     std::string file;
     int line = 0;     ///< 1-based; 0 when unknown

@@ -1,48 +1,66 @@
 #pragma once
 // The one header through which the plugin sees its host. A host (engine_stub, or any other engine)
 // implements HostAdapter for the simulation side and FrameBuilder/PassContext for its
-// render-to-texture layer, then drives the plugin through fx/Plugin.h.
+// render-to-texture layer, then drives the plugin through fx/Plugin.h (which states the order of
+// calls, the GL context rules and the GL state the plugin touches).
 #include <functional>
 #include <initializer_list>
 
+#include "fx/Api.h"
 #include "fx/Types.h"
 
 namespace fx {
 
-/// Valid only while a pass declared through FrameBuilder::addPass executes.
-class PassContext {
+/// Valid only while a pass declared through FrameBuilder::addPass executes, on the thread that
+/// runs the host's frame, with the host's GL context current.
+class FX_API PassContext {
 public:
     virtual ~PassContext() = default;
-    /// Binds the target's framebuffer for drawing and sets the viewport to its size.
+    /// Binds the target's framebuffer (GL_DRAW_FRAMEBUFFER) for drawing and sets the viewport to
+    /// its size. For sceneColor that framebuffer carries the scene's z-buffer as its depth
+    /// attachment (ViewInfo::depth says its convention).
     virtual void bindForDraw(Target target) = 0;
-    /// GL texture name of a colour attachment (attachment 0 unless stated) of a target.
-    virtual uint32_t texture(Target target, int attachment = 0) = 0;
+    /// A colour attachment of a target (attachment 0 unless stated); TextureRef::name 0 when the
+    /// target has no such attachment.
+    virtual TextureRef texture(Target target, int attachment = 0) = 0;
     virtual int width(Target target) = 0;
     virtual int height(Target target) = 0;
 };
 
 /// The host's frame graph as the plugin sees it while declaring passes for one view.
-/// Passes run in declaration order inside the host's particle bucket; a pass whose writes no
-/// later pass reads is culled and its targets are never allocated.
-class FrameBuilder {
+/// Passes run in declaration order inside the host's particle bucket, after the opaque scene and
+/// the sky; a pass whose writes no later pass reads is culled and its targets are never allocated.
+class FX_API FrameBuilder {
 public:
     virtual ~FrameBuilder() = default;
-    /// The view's colour target with its z-buffer. A pass that writes it draws into the frame.
+    /// The view's colour target (RGBA8 or better, ViewInfo::width x height) with the scene's
+    /// z-buffer attached. A pass that writes it draws into the frame.
     virtual Target sceneColor() = 0;
-    /// Linear view-space depth (R32F, attachment 0, metres, positive) plus the scene z-buffer.
-    /// Reading it is what makes the host run its depth prepass; nobody reading it means no prepass.
+    /// The scene depth. Contract:
+    ///  - attachment 0: linear view-space depth, R32F, metres, positive (distance along -Z of
+    ///    the view), the same size as sceneColor (ViewInfo::width x height);
+    ///  - where no geometry was drawn: any value >= ViewInfo::farPlane (engine_stub clears to
+    ///    1e30), or 0; the plugin reads values <= 0 as "nothing drawn" too, so a host that clears
+    ///    to 0 does not lose its smoke against the sky;
+    ///  - it holds the opaque scene (everything particles may hide behind), complete before the
+    ///    first plugin pass that reads it runs.
+    /// Reading it is what makes the host produce it (a depth prepass, or a copy of the opaque
+    /// pass's depth); a frame where no plugin pass reads it needs none.
     virtual Target sceneDepth() = 0;
+    /// A transient target for this view's passes; TargetDesc's relative sizes follow the view.
     virtual Target createTarget(const char* name, const TargetDesc& desc) = 0;
     virtual void addPass(const char* name, std::initializer_list<Target> reads,
                          std::initializer_list<Target> writes,
                          std::function<void(PassContext&)> execute) = 0;
 };
 
-/// The simulation-side services of the host.
-class HostAdapter {
+/// The simulation-side services of the host. Called on the thread that calls the plugin.
+class FX_API HostAdapter {
 public:
     virtual ~HostAdapter() = default;
-    /// GL entry points, for a plugin that loads GL itself (may return null when the host shares its loader).
+    /// GL entry points of the host's context (the plugin's private loader fills its own table
+    /// from this; it never uses a global loader). Must return non-null for the GL 3.3 core
+    /// entry points while a context is current; may return null before one exists.
     virtual void* getProcAddress(const char* name) = 0;
     virtual int wheelCount() const = 0;
     virtual WheelContact wheel(int index) const = 0;
@@ -50,6 +68,8 @@ public:
     virtual glm::vec3 wind() const { return glm::vec3(0.0f); }
     /// Where the car last touched a wall, world space (meaningful while the collision amount > 0).
     virtual glm::vec3 collisionPoint() const { return glm::vec3(0.0f); }
+    /// Messages from the plugin: load results, data errors ("file:line:col: error[Code] ..."),
+    /// refused calls ("fx: error[Code] function: ...").
     virtual void log(LogLevel level, const char* message) = 0;
 };
 

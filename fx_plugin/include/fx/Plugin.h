@@ -1,17 +1,43 @@
 #pragma once
 // The plugin's versioned entry point (one exported function taking the host's imports and
 // returning the plugin, or null on a version mismatch) and the interface the host drives.
+//
+// What a host does, in order:
+//   1. fxApiVersion() (optional): which plugin library was loaded.
+//   2. fxCreatePlugin(imports) with apiVersion = kApiVersion and its HostAdapter. No GL needed.
+//   3. loadReactions(path) (a .yaml file or a folder of them). No GL needed.
+//   4. prepareGl() with its GL context current (optional but recommended: compiles every
+//      particle program and uploads the atlas now, so a broken shader fails start-up instead of
+//      the first frame with smoke).
+//   5. Each simulation step: continueReaction(i, dt, &collision) for i in 0 .. reactionCount()-1.
+//   6. Each frame, each view, while building its frame graph: declarePasses(view, frame); then
+//      the host executes the declared passes (in order, after its opaque scene and sky) with its
+//      context current.
+//   7. pollHotReload() whenever it likes (e.g. once a second); no GL needed.
+//   8. Destroy the plugin with the same GL context current (it deletes its GL objects).
+//
+// Threading: the plugin is not thread-safe. Call it from one thread at a time; the calls that
+// touch GL (prepareGl, declarePasses, the pass callbacks, destruction) from the thread where the
+// host's context is current. Several plugin instances may live in one process if they share a
+// GL context family (the private loader's entry points are process-wide).
+//
+// GL state: every GL call of the plugin runs inside a scoped guard that captures and restores
+// what it changes: current program, vertex array, GL_ARRAY_BUFFER, active texture, the
+// GL_TEXTURE_2D binding and sampler object of texture units 0..3, blend enable/func/equation,
+// depth test/func/mask, cull face, stencil and scissor test enables, colour mask, clear colour,
+// viewport, draw and read framebuffers, the pixel-unpack buffer and unpack alignment/row
+// length/skips. After any plugin call or pass, that state equals the state before. The plugin
+// creates its own textures, buffers, vertex arrays and programs and deletes them on destruction.
 #include <cstdint>
 #include <memory>
 #include <string>
 
+#include "fx/Api.h"
 #include "fx/Diagnostic.h"
 #include "fx/HostAdapter.h"
 #include "fx/Types.h"
 
 namespace fx {
-
-constexpr uint32_t kApiVersion = 1;
 
 /// How particles are drawn. `FromReaction` uses each reaction's own `render.technique`.
 enum class Technique : uint8_t { FromReaction = 0, Hard, Soft, Spherical };
@@ -23,41 +49,63 @@ struct RenderOptions {
     bool bilinearUpsample = false; ///< quarter-res composite with plain bilinear (for comparison only)
 };
 
-class Plugin {
+class FX_API Plugin {
 public:
     virtual ~Plugin() = default;
 
     /// SpecialFX::Init: loads every reaction from a .yaml file or a directory of them. On error
-    /// nothing running is replaced, every problem is appended to `out`, and false is returned.
+    /// nothing running is replaced, every problem is appended to `out` (may be null) and logged,
+    /// and false is returned.
     virtual bool loadReactions(const std::string& path, Diagnostics* out) = 0;
     /// Checks the loaded files for changes and reloads them; a bad edit keeps the running set.
     /// Returns true when a new set went live.
     virtual bool pollHotReload(Diagnostics* out) = 0;
 
     virtual int reactionCount() const = 0;
+    /// "" (and IndexOutOfRange in the log) for an index outside 0 .. reactionCount() - 1.
     virtual std::string reactionName(int index) const = 0;
-    /// Reaction::Continue: advances reaction `index` by dt seconds. `currentVehicleCollisionAmount`
-    /// (may be null) is the host's collision impulse this step, 0..1.
-    virtual void continueReaction(int index, float dt, float* currentVehicleCollisionAmount) = 0;
+    /// Reaction::Continue: advances reaction `index` by dt seconds (finite, >= 0).
+    /// `currentVehicleCollisionAmount` (may be null = no collision) is the host's collision
+    /// impulse this step, 0..1. Refused: IndexOutOfRange, InvalidValue (dt NaN, Inf or < 0).
+    virtual ErrorCode continueReaction(int index, float dt, float* currentVehicleCollisionAmount) = 0;
 
-    virtual void setRenderOptions(const RenderOptions& options) = 0;
+    /// Refused (InvalidValue) when the technique is not one of the enum's values.
+    virtual ErrorCode setRenderOptions(const RenderOptions& options) = 0;
     virtual RenderOptions renderOptions() const = 0;
+
+    /// Compiles and links every particle program and uploads the atlas now. Needs the host's GL
+    /// context current. Returns false with ShaderBuild ("file:line: message"), ResourceMissing or
+    /// NoGlContext diagnostics in `out` (also logged); the plugin then draws what did build.
+    /// Without this call the same work happens at the first declarePasses() that sees a
+    /// particle (a scene without smoke never compiles a shader).
+    virtual bool prepareGl(Diagnostics* out) = 0;
+
     /// The hook into the host's particle bucket: declares this view's particle passes. Declares
-    /// nothing when no particle is visible, so the host allocates nothing for it.
-    virtual void declarePasses(const ViewInfo& view, FrameBuilder& frame) = 0;
+    /// nothing when no particle is visible, so the host allocates nothing for it. Needs the
+    /// host's context current (the first visible particle may load GL resources). Refused:
+    /// InvalidView (see ViewInfo). A pass that finds sceneColor, sceneDepth and the view
+    /// disagreeing on the size draws nothing and logs SizeMismatch.
+    virtual ErrorCode declarePasses(const ViewInfo& view, FrameBuilder& frame) = 0;
 
     virtual Stats stats() const = 0;
+    /// Counts live particles, capacity and non-finite state values (O(particles)).
+    virtual ParticleCheck checkParticles() const = 0;
 };
 
+/// What the host hands the plugin at creation. Defaults: this header's API version, no host
+/// (refused), shaders and atlas from inside the library, the plugin's default seed.
 struct PluginImports {
     uint32_t apiVersion = kApiVersion;
-    HostAdapter* host = nullptr;
-    std::string shaderDir;   ///< where shaders/ lives; empty = the build's source tree
-    std::string dataDir;     ///< where data/ (smoke atlas) lives; empty = the build's source tree
+    HostAdapter* host = nullptr;  ///< required; must outlive the plugin
+    std::string shaderDir;   ///< empty = the shaders embedded in the library; a folder = read the
+                             ///< particle shaders from there instead (live shader edits)
+    std::string dataDir;     ///< empty = the embedded smoke atlas; a folder = its smoke_atlas.png
     uint64_t seed = 0;       ///< global random seed for the reactions; 0 = the plugin's default
 };
 
 }  // namespace fx
 
-/// The entry point. Returns null when `imports.apiVersion` differs from the plugin's or host is null.
-std::unique_ptr<fx::Plugin> fxCreatePlugin(const fx::PluginImports& imports);
+/// The entry point. Returns null, sets *error (when given) and logs through imports.host (when
+/// there is one) on VersionMismatch (see fx/Api.h) or NullArgument (no host).
+FX_API std::unique_ptr<fx::Plugin> fxCreatePlugin(const fx::PluginImports& imports,
+                                                  fx::ErrorCode* error = nullptr);

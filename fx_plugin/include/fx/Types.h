@@ -22,17 +22,28 @@ struct WheelContact {
 /// Severity of a message the plugin hands to the host's log.
 enum class LogLevel : uint8_t { Info, Warning, Error };
 
+/// How the host's z-buffer (the depth attachment of sceneColor / sceneDepth) maps distance.
+/// The plugin's depth-tested passes follow it: Standard tests LEQUAL (near = 0, cleared to 1),
+/// ReversedZ tests GEQUAL (near = 1, cleared to 0; glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)
+/// with a float depth buffer). The linear depth texture is the same under both.
+enum class DepthConvention : uint8_t { Standard = 0, ReversedZ };
+
 /// One view the host is rendering (chase camera, mirror...). Matrices are OpenGL conventions
-/// (right-handed view space, camera looks down -Z, clip depth -1..1).
+/// (right-handed view space, camera looks down -Z). `proj` is the projection the host draws its
+/// scene with, so it matches `depth`. Valid: width, height > 0; 0 < nearPlane < farPlane, all
+/// finite; finite matrices (declarePasses refuses anything else with ErrorCode::InvalidView).
+/// Defaults: an identity camera at the origin, near 0.1 m, far 1 km, standard depth, size 0
+/// (which the host must set).
 struct ViewInfo {
-    const char* name = "";
+    const char* name = "";  ///< for pass names and debug groups; may be null (read as "")
     glm::mat4 view{1.0f};
     glm::mat4 proj{1.0f};
     glm::vec3 eye{0.0f};
     float nearPlane = 0.1f;
     float farPlane = 1000.0f;
-    int width = 0;   ///< pixels of the view's colour target
+    int width = 0;   ///< pixels of the view's colour target (sceneColor), > 0
     int height = 0;
+    DepthConvention depth = DepthConvention::Standard;
 };
 
 /// Colour formats the host's render-to-texture layer must offer to the plugin.
@@ -55,13 +66,33 @@ struct Target {
     bool valid() const { return id != 0; }
 };
 
+/// A texture of the host's, lent to the plugin for the pass being executed: the GL texture
+/// name (GL_TEXTURE_2D, in the host's context) and what it holds. `name` 0 = no such texture.
+struct TextureRef {
+    uint32_t name = 0;
+    TargetFormat format = TargetFormat::RGBA8;
+    int width = 0;
+    int height = 0;
+    bool valid() const { return name != 0; }
+};
+
 /// Counters the plugin reports to the host (stats JSON, benchmarks).
 struct Stats {
     int reactions = 0;
     int particlesAlive = 0;
+    int particleCapacity = 0; ///< pool slots over every reaction (allocated once per load)
     int particlesDrawn = 0;   ///< in the last declared view, after culling
     int reloads = 0;          ///< successful hot reloads
     int reloadErrors = 0;     ///< rejected hot reloads (old set kept)
+    int apiErrors = 0;        ///< calls refused with an API error code since creation
+};
+
+/// Result of Plugin::checkParticles(): a health check a host or test runs on stiff or extreme
+/// input (it reads every live particle, so it costs O(particles)).
+struct ParticleCheck {
+    int alive = 0;
+    int capacity = 0;
+    int nonFinite = 0;  ///< NaN or Inf values in any live particle's state (0 when healthy)
 };
 
 }  // namespace fx

@@ -1,0 +1,19 @@
+#pragma once
+// Filling the plugin's private GL table (render/PrivateGl.h). Kept apart from the table's header
+// so a test that has its own glad can load the plugin's table too: the two gl.h never meet.
+#include <string>
+
+namespace fx {
+
+class HostAdapter;
+
+/// Loads the table through `host.getProcAddress` if it is not loaded yet. Needs the host's
+/// context current. Returns false with the reason in *error when the host hands out no GL 3.3
+/// core entry points.
+bool loadPrivateGl(HostAdapter& host, std::string* error);
+/// Same, from a plain proc-address function (tests and tools that have no HostAdapter).
+bool loadPrivateGl(void* (*getProcAddress)(const char* name), std::string* error);
+/// True once a load succeeded.
+bool privateGlLoaded();
+
+}  // namespace fx
