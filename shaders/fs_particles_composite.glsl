@@ -43,6 +43,7 @@ void main() {
     // On an edge, keep the bilinear weights of the texels on this pixel's side of it (depth
     // within the threshold), renormalised; only when none is, the single nearest-depth texel.
     float full = texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r;
+    if (full <= 0.0) full = 3.0e38;  // nothing drawn (fx/HostAdapter.h), as in the downsample
     float limit = uDepthThreshold * full;
     float best = 3.4e38;
     int nearest = 0;

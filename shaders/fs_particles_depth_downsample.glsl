@@ -8,13 +8,19 @@ uniform sampler2D uSceneDepth;  // full resolution, R32F metres
 
 layout(location = 0) out vec4 oDepth;
 
+// <= 0 means nothing was drawn (fx/HostAdapter.h), read as infinitely far.
+float sceneDepth(ivec2 p) {
+    float d = texelFetch(uSceneDepth, p, 0).r;
+    return d > 0.0 ? d : 3.0e38;
+}
+
 void main() {
     ivec2 fullSize = textureSize(uSceneDepth, 0);
     ivec2 last = fullSize - 1;
     // Texel i covers full-res pixels 2i and 2i + 1 (an odd last row/column is clamped).
     ivec2 p = min(ivec2(gl_FragCoord.xy) * 2, last);
     ivec2 q = min(p + 1, last);
-    float d = min(min(texelFetch(uSceneDepth, p, 0).r, texelFetch(uSceneDepth, ivec2(q.x, p.y), 0).r),
-                  min(texelFetch(uSceneDepth, ivec2(p.x, q.y), 0).r, texelFetch(uSceneDepth, q, 0).r));
+    float d = min(min(sceneDepth(p), sceneDepth(ivec2(q.x, p.y))),
+                  min(sceneDepth(ivec2(p.x, q.y)), sceneDepth(q)));
     oDepth = vec4(d);
 }

@@ -72,8 +72,11 @@ float nearFadeFactor(float depth) {
     return clamp((depth - uNear) / uNearFade, 0.0, 1.0);
 }
 
+// The host's linear depth; <= 0 means nothing was drawn there, like a value past the far plane
+// (fx/HostAdapter.h: a host may clear its depth to 0 or to a large value).
 float sceneDepthAt(vec2 fragCoord) {
-    return texelFetch(uSceneDepth, ivec2(fragCoord), 0).r;
+    float d = texelFetch(uSceneDepth, ivec2(fragCoord), 0).r;
+    return d > 0.0 ? d : 3.0e38;
 }
 
 // Premultiplied output. `ramp`: the ramp colour (straight alpha); `fade`: the particle's

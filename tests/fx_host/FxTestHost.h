@@ -190,6 +190,12 @@ class TestScene {
 public:
     std::vector<SceneQuad> quads;
     glm::vec3 sky{0.35f, 0.45f, 0.6f};
+    /// Linear depth where nothing is drawn; negative = the view's far plane. fx/HostAdapter.h
+    /// allows any value >= far, or 0.
+    float depthBackground = -1.0f;
+    /// Draw the opaque pass with reversed-Z (glClipControl ZERO_TO_ONE, clear 0, GEQUAL); the
+    /// view's proj must then be a reversed-Z projection (reversedZProjection()).
+    bool reversedZ = false;
 
     void declareHostPasses(TestFrameGraph& graph, const fx::ViewInfo& view);
 
@@ -201,6 +207,9 @@ public:
 /// A view for a camera at `eye` looking at `target`, 60 degree vertical field of view.
 fx::ViewInfo makeView(glm::vec3 eye, glm::vec3 target, int width, int height,
                       float nearPlane = 0.1f, float farPlane = 1000.0f);
+/// The view's projection with near mapped to depth 1 and far to 0 (for glClipControl's
+/// ZERO_TO_ONE range); sets view->depth to ReversedZ.
+void useReversedZ(fx::ViewInfo* view);
 /// Pixel (x, y from the bottom) where a world point lands; z is the NDC depth.
 glm::vec3 projectToPixel(const fx::ViewInfo& view, glm::vec3 world);
 

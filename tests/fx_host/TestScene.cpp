@@ -3,6 +3,7 @@
 #include <glad/gl.h>
 
 #include <cassert>
+#include <cmath>
 #include <cstdio>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -110,29 +111,57 @@ void drawQuads(GLuint program, const std::vector<SceneQuad>& quads, const fx::Vi
     glUseProgram(0);
 }
 
+// glClipControl is GL 4.5 (the tests' glad is 3.3 core): fetched by hand where it is used.
+void clipControl(bool zeroToOne) {
+    using ClipControlFn = void (*)(GLenum, GLenum);
+    static const auto fn = reinterpret_cast<ClipControlFn>(osMesaProcAddress()("glClipControl"));
+    constexpr GLenum kLowerLeft = 0x8CA1, kNegativeOneToOne = 0x935E, kZeroToOne = 0x935F;
+    if (fn) fn(kLowerLeft, zeroToOne ? kZeroToOne : kNegativeOneToOne);
+}
+
 }  // namespace
 
 void TestScene::declareHostPasses(TestFrameGraph& graph, const fx::ViewInfo& view) {
     const std::vector<SceneQuad> q = quads;
     const glm::vec3 skyColour = sky;
-    const float farPlane = view.farPlane;
-    graph.addPass("prepass", {}, {graph.sceneDepth()}, [q, view, farPlane](fx::PassContext& ctx) {
+    const float background = depthBackground < 0.0f ? view.farPlane : depthBackground;
+    const bool reversed = reversedZ;
+    graph.addPass("prepass", {}, {graph.sceneDepth()}, [q, view, background, reversed](fx::PassContext& ctx) {
         ctx.bindForDraw(fx::Target{TestFrameGraph::kSceneDepth});
         hostPassState();
-        glClearColor(farPlane, farPlane, farPlane, farPlane);  // sky: as far as the view goes
-        glClearDepth(1.0);
+        glClearColor(background, background, background, background);  // sky: nothing drawn
+        glClearDepth(reversed ? 0.0 : 1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        clipControl(reversed);
+        if (reversed) glDepthFunc(GL_GEQUAL);
         drawQuads(sceneGl().depth, q, view, false);
+        clipControl(false);
+        glDepthFunc(GL_LESS);
     });
-    graph.addPass("opaque", {}, {graph.sceneColor()}, [q, view, skyColour](fx::PassContext& ctx) {
+    graph.addPass("opaque", {}, {graph.sceneColor()}, [q, view, skyColour, reversed](fx::PassContext& ctx) {
         ctx.bindForDraw(fx::Target{TestFrameGraph::kSceneColor});
         hostPassState();
         glClearColor(skyColour.r, skyColour.g, skyColour.b, 1.0f);
-        glClearDepth(1.0);
+        glClearDepth(reversed ? 0.0 : 1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        clipControl(reversed);
+        if (reversed) glDepthFunc(GL_GEQUAL);
         drawQuads(sceneGl().colour, q, view, true);
+        // The particle passes run with the host's clip control still set (as in a real
+        // reversed-Z engine); the graph's executor resets it after the frame.
+        if (reversed) glDepthFunc(GL_LESS);
     });
 }
+
+void useReversedZ(fx::ViewInfo* view) {
+    // glm's zero-to-one projection with near and far swapped maps near to 1 and far to 0.
+    const float fovY = 2.0f * std::atan(1.0f / view->proj[1][1]);
+    const float aspect = view->proj[1][1] / view->proj[0][0];
+    view->proj = glm::perspectiveRH_ZO(fovY, aspect, view->farPlane, view->nearPlane);
+    view->depth = fx::DepthConvention::ReversedZ;
+}
+
+
 
 SceneQuad TestScene::ground(float halfExtent, glm::vec3 colour, float y) {
     SceneQuad q;
@@ -213,6 +242,7 @@ void renderFrame(TestFrameGraph& graph, TestScene& scene, const fx::ViewInfo& vi
         graph.endPluginPasses();
     }
     graph.execute();
+    clipControl(false);  // a reversed-Z scene leaves it set for the particle passes
 }
 
 }  // namespace fxtest
