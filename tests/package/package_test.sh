@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# The plugin as a foreign engine gets it (ctest label "package"):
+#   1. copy the plugin's sources (fx_plugin/, its shaders, the atlas) to a scratch folder and
+#      build them ALONE: cmake -S fx_plugin (no top-level project, no GTest/GLFW/TinyGLTF/EGL);
+#   2. install into a prefix, then delete the copied sources and the build tree;
+#   3. check that no installed file names a path of the source or build tree;
+#   4. move the prefix elsewhere;
+#   5. configure examples/minimal_host with only CMAKE_PREFIX_PATH pointing at the moved prefix
+#      (find_package(CubeFx 1.0 CONFIG REQUIRED)), build it with its own global glad, and run it:
+#      it renders hard and soft smoke to PNG and checks smoke, soft != hard at the ground, GL
+#      state and GL errors (--verify);
+#   6. a non-CMake host: compile against the moved prefix with pkg-config only;
+#   7. find_package with an incompatible version (2.0) must fail.
+#   package_test.sh <source root> <scratch folder>
+set -euo pipefail
+src=$(cd "$1" && pwd)
+work=$2
+rm -rf "$work"
+mkdir -p "$work"
+work=$(cd "$work" && pwd)
+log() { echo "package_test: $*"; }
+
+copy=$work/src
+mkdir -p "$copy/data"
+cp -r "$src/fx_plugin" "$src/shaders" "$copy/"
+cp "$src/data/smoke_atlas.png" "$copy/data/"
+
+log "standalone plugin build (cmake -S fx_plugin)"
+cmake -S "$copy/fx_plugin" -B "$work/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >"$work/configure.log"
+cmake --build "$work/build" -j"$(nproc)" >"$work/build.log"
+cmake --install "$work/build" --prefix "$work/prefix" >"$work/install.log"
+rm -rf "$copy" "$work/build"
+
+log "installed files name no source or build path"
+bad=$(grep -rlF -e "$copy" -e "$work/build" -e "$src" "$work/prefix" || true)
+if [ -n "$bad" ]; then
+  echo "package_test: FAIL: these installed files contain a source or build path:"; echo "$bad"; exit 1
+fi
+for f in lib/libcubefx.so include/fx/Plugin.h include/fx/Api.h lib/cmake/CubeFx/CubeFxConfig.cmake \
+         lib/cmake/CubeFx/CubeFxConfigVersion.cmake lib/pkgconfig/cubefx.pc; do
+  [ -e "$work/prefix/$f" ] || { echo "package_test: FAIL: $f was not installed"; exit 1; }
+done
+# The reaction internals stay private.
+[ ! -e "$work/prefix/include/fx/Reaction.h" ] || { echo "package_test: FAIL: Reaction.h is public"; exit 1; }
+
+mv "$work/prefix" "$work/moved"
+prefix=$work/moved
+
+log "examples/minimal_host against the moved prefix"
+cmake -S "$src/examples/minimal_host" -B "$work/example" -DCMAKE_PREFIX_PATH="$prefix" \
+      -DCMAKE_BUILD_TYPE=RelWithDebInfo >"$work/example-configure.log"
+cmake --build "$work/example" -j"$(nproc)" >"$work/example-build.log"
+# The host carries its own, global glad next to the plugin's private one.
+nm "$work/example/minimal_host" >"$work/example-symbols.txt"
+grep -q " [BD] glad_glCreateShader$" "$work/example-symbols.txt" ||
+  { echo "package_test: FAIL: the example has no global glad of its own"; exit 1; }
+mkdir -p "$work/out"
+LD_LIBRARY_PATH="$prefix/lib" "$work/example/minimal_host" "$work/example/smoke.yaml" "$work/out" --verify
+[ -s "$work/out/hard.png" ] && [ -s "$work/out/soft.png" ] || { echo "package_test: FAIL: no PNG"; exit 1; }
+
+log "pkg-config host"
+cat >"$work/pc_host.cpp" <<'CPP'
+#include <fx/Plugin.h>
+#include <cstdio>
+int main() {
+    std::printf("fxApiVersion %u, headers %u\n", fxApiVersion(), fx::kApiVersion);
+    fx::PluginImports imports;  // no host: refused with a named error, no crash
+    fx::ErrorCode code = fx::ErrorCode::None;
+    const bool refused = !fxCreatePlugin(imports, &code) && code == fx::ErrorCode::NullArgument;
+    return fxApiVersion() == fx::kApiVersion && refused ? 0 : 1;
+}
+CPP
+flags=$(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --cflags --libs cubefx)
+case "$flags" in *"$prefix"*) ;; *) echo "package_test: FAIL: pkg-config flags miss the moved prefix: $flags"; exit 1 ;; esac
+# shellcheck disable=SC2086
+c++ -std=c++17 "$work/pc_host.cpp" -o "$work/pc_host" $flags
+LD_LIBRARY_PATH="$prefix/lib" "$work/pc_host"
+
+log "an incompatible version is refused by find_package"
+mkdir -p "$work/v2"
+cat >"$work/v2/CMakeLists.txt" <<'CM'
+cmake_minimum_required(VERSION 3.20)
+project(v2 LANGUAGES CXX)
+find_package(CubeFx 2.0 CONFIG REQUIRED)
+CM
+if cmake -S "$work/v2" -B "$work/v2/b" -DCMAKE_PREFIX_PATH="$prefix" >"$work/v2.log" 2>&1; then
+  echo "package_test: FAIL: find_package(CubeFx 2.0) accepted version 1.x"; exit 1
+fi
+log "passed"
