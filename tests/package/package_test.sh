@@ -25,6 +25,36 @@ mkdir -p "$copy/data"
 cp -r "$src/fx_plugin" "$src/shaders" "$copy/"
 cp "$src/data/smoke_atlas.png" "$copy/data/"
 
+log "add_subdirectory(fx_plugin) from a foreign project that has a 'glad' target of its own"
+mkdir -p "$work/foreign"
+cat >"$work/foreign/CMakeLists.txt" <<CM
+cmake_minimum_required(VERSION 3.20)
+project(foreign LANGUAGES C CXX)
+set(CMAKE_CXX_STANDARD 17)
+add_library(glad INTERFACE)  # most engines have one; the plugin's own is named apart
+add_subdirectory($copy/fx_plugin cubefx)
+add_executable(foreign_host host.cpp)
+target_link_libraries(foreign_host PRIVATE CubeFx::fx_plugin glad)
+CM
+cat >"$work/foreign/host.cpp" <<'CPP'
+#include <fx/Plugin.h>
+int main() { return fxApiVersion() == fx::kApiVersion ? 0 : 1; }
+CPP
+cmake -S "$work/foreign" -B "$work/foreign/b" -DCMAKE_BUILD_TYPE=Release >"$work/foreign-configure.log"
+cmake --build "$work/foreign/b" -j"$(nproc)" --target foreign_host >"$work/foreign-build.log"
+"$work/foreign/b/foreign_host"
+rm -rf "$work/foreign"
+
+log "CUBE_PLUGIN_ONLY: the top level configures the plugin without the engine's dependencies"
+cmake -S "$src" -B "$work/only" -DCUBE_PLUGIN_ONLY=ON >"$work/only.log"
+for dep in GTest_DIR glfw3_DIR TinyGLTF_DIR OSMESA_FOUND; do
+  if grep -q "^$dep" "$work/only/CMakeCache.txt"; then
+    echo "package_test: FAIL: CUBE_PLUGIN_ONLY still looks up $dep"; exit 1
+  fi
+done
+grep -q "fx_plugin" "$work/only/Makefile" || { echo "package_test: FAIL: no fx_plugin target"; exit 1; }
+rm -rf "$work/only"
+
 log "standalone plugin build (cmake -S fx_plugin)"
 cmake -S "$copy/fx_plugin" -B "$work/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >"$work/configure.log"
 cmake --build "$work/build" -j"$(nproc)" >"$work/build.log"
