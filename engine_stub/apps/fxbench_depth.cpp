@@ -36,26 +36,20 @@ bool renderChaseDepth(cube::Game& game, std::vector<float>* depth, std::string* 
     cv.color[0] = {1e30f, 0.0f, 0.0f, 0.0f};
     cube::rtt::clear(pool, target, cv);
     {
+        // The engine's own depth-prepass drawing (the back end), into this target.
         cube::rtt::ScopedTargetBinding bind(pool, target);
         GlStateGuard guard;
-        glDisable(GL_BLEND);
-        glDisable(GL_SCISSOR_TEST);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
-        glDepthMask(GL_TRUE);
-        glEnable(GL_CULL_FACE);
         cube::cubeScene& sc = game.scene();
         const cube::ViewCamera& cam = game.chaseView().camera();
-        const float aspect = float(w) / float(h);
-        const glm::mat4 view = cam.view(), proj = cam.proj(aspect);
-        const cube::gl::Program& p = sc.prepassProgram;
-        glUseProgram(p.id());
-        glUniformMatrix4fv(p.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
-        glUniformMatrix4fv(p.uniform("uProj"), 1, GL_FALSE, glm::value_ptr(proj));
+        cube::CameraMatrices m;
+        m.aspect = float(w) / float(h);
+        m.fovY = cam.fovY;
+        m.view = cam.view();
+        m.proj = cam.proj(m.aspect);
         std::vector<cube::MeshDraw> draws;
-        sc.gpu().record(sc.data(), sc.carNode(), sc.carTransform(), &draws);
-        sc.gpu().draw(draws, p.uniform("uModel"), -1);
-        sc.drawOverdrawPanels(p, game.options().overdrawLayers, view, cam.fovY, aspect);
+        sc.renderer().meshes().record(sc.data(), sc.carNode(), sc.carTransform(), &draws);
+        const cube::OverdrawPanels panels{game.options().overdrawLayers, game.options().overdrawCost};
+        sc.renderer().depthPrepass(draws, {}, m, panels);
     }
     const cube::rtt::RttError re = cube::rtt::readFloat(pool, target, 0, cube::rtt::FloatLayout::Native, depth);
     pool.release(target);

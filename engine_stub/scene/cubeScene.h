@@ -7,11 +7,8 @@
 #include <vector>
 
 #include "fx/Plugin.h"
-#include "gl/Program.h"
+#include "render/SceneRenderer.h"
 #include "rtt/FrameGraph.h"
-#include "scene/GpuScene.h"
-#include "scene/Hud.h"
-#include "scene/LegacySpriteRenderer.h"
 #include "scene/SceneData.h"
 #include "scene/cubeParticleSystem.h"
 #include "scene/cubeView.h"
@@ -34,10 +31,9 @@ struct FrameSettings {
 class cubeScene {
 public:
     cubeScene() = default;
-    ~cubeScene();
     cubeScene(const cubeScene&) = delete;
     cubeScene& operator=(const cubeScene&) = delete;
-    /// Uploads the scene and builds the programs. False + error (shader file:line, ...).
+    /// Uploads the scene and builds the back end's programs. False + error (shader file:line, ...).
     bool Init(const SceneData& data, std::string* error);
 
     /// The factory (cubeScene::CreateParticleSystem): a new system owned by the scene.
@@ -50,26 +46,16 @@ public:
     /// Declares every view's passes; returns the colour target of the last view (the main one).
     rtt::FrameGraphResource Render(rtt::FrameGraph& graph, std::vector<cubeView*>& views, FrameSettings settings);
 
-    /// fxbench's overdraw panels: `layers` opaque quads facing the camera from 40 m down to 20 m,
-    /// drawn back to front (the worst order for depth test LESS) over the upper 70% of the view,
-    /// with `p` (uses its uModel and, if present, uBaseColor).
-    void drawOverdrawPanels(const gl::Program& p, int layers, const glm::mat4& view, float fovY, float aspect) const;
-
     const SceneData& data() const { return data_; }
-    const GpuScene& gpu() const { return gpu_; }
     int carNode() const { return carNode_; }
     const glm::mat4& carTransform() const { return carTransform_; }
-
-    // Back-end resources the views' passes draw with.
-    gl::Program meshProgram, prepassProgram, skyProgram, blitProgram, costlyProgram;
-    GLuint panelVao = 0, panelVbo = 0;  ///< one unit quad (z = 0, normal +Z) for the overdraw panels
-    LegacySpriteRenderer legacySprites;
-    Hud hud;
-    GLuint emptyVao = 0;  ///< for gl_VertexID full-screen triangles (core profile needs a VAO)
+    /// The GL back end the views' passes draw with (scene/ itself calls no GL).
+    SceneRenderer& renderer() { return renderer_; }
+    const SceneRenderer& renderer() const { return renderer_; }
 
 private:
     SceneData data_;
-    GpuScene gpu_;
+    SceneRenderer renderer_;
     int carNode_ = -1;
     glm::mat4 carTransform_{1.0f};
     std::vector<std::unique_ptr<cubeParticleSystem>> particleSystems_;

@@ -1,14 +1,16 @@
 #pragma once
 // One viewport of the scene (CUBE's cubeView): a camera, a colour target, and the passes that
 // fill it. cubeView::Render -> RenderObjects: set camera parameters, sort the scene's objects into
-// buckets, and declare one pass per non-empty bucket in the bucket order (Buckets.h).
+// buckets, and declare the view's frame in pipeline order (RenderObjects reads top to bottom:
+// depth prepass, opaque, alpha-tested, sky, legacy sprites, the plugin's passes, HUD). The passes
+// describe what to draw; the GL work is the back end's (render/SceneRenderer).
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "render/SceneRenderer.h"
 #include "rtt/FrameGraph.h"
-#include "scene/GpuScene.h"
 
 namespace cube {
 
@@ -46,7 +48,20 @@ public:
     bool prepassDeclared() const { return prepassDeclared_; }
 
 private:
+    struct Targets {
+        rtt::FrameGraphResource sceneDepth;  ///< R32F linear depth + z-buffer (the prepass's)
+        rtt::FrameGraphResource color;       ///< RGBA8 + its own z-buffer, or the prepass's (EQUAL)
+    };
     rtt::FrameGraphResource RenderObjects(cubeScene& scene, rtt::FrameGraph& graph, const FrameSettings& settings);
+    Targets declareTargets(rtt::FrameGraph& graph);
+    void declareDepthPrepass(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
+    void declareOpaque(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
+    void declareAlphaTested(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t);
+    void declareSky(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t);
+    void declareLegacySprites(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
+    void declarePluginPasses(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
+    void declareHud(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
+    CameraMatrices cameraMatrices() const;
     void recordBuckets(cubeScene& scene);
     std::string passName(const char* bucket) const { return name_ + "." + bucket; }
     int order(int bucketOrder) const { return index_ * 1000 + bucketOrder; }
@@ -60,6 +75,7 @@ private:
     std::vector<MeshDraw> all_, opaque_, alphaTested_;
     std::vector<std::string> names_;
     bool prepassDeclared_ = false;
+    bool equal_ = false;  ///< this frame's opaque pass tests EQUAL on the prepass z-buffer
 };
 
 }  // namespace cube

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "GlTestContext.h"
-#include "game/FxFrameBuilder.h"
+#include "scene/FxFrameBuilder.h"
 #include "rtt/RenderTargetPool.h"
 
 using namespace cube;
@@ -21,19 +21,20 @@ TEST_F(FxFrameBuilderTest, RelativePluginTargetsFollowTheViewNotThePoolsMainView
     const rtt::FrameGraphResource color = graph.create("mirror.color", colorDesc);
     const rtt::FrameGraphResource depth = graph.create("mirror.scene_depth", colorDesc);
 
-    FxFrameBuilder fx(graph, "mirror.", 50, 96, 33);
+    graph.addPass("depth", 10, {}, {depth}, [](rtt::PassContext&) {});
+    FxFrameBuilder fx(graph, color, depth, "mirror.", 50, 96, 33);
     fx::TargetDesc half;
     half.scale = 0.5f;
     const fx::Target t = fx.createTarget("particles_half", half);
     int seenW = 0, seenH = 0;
+    fx::TextureRef ref;
     fx.addPass("particles_quarter", {fx.sceneDepth()}, {t}, [&](fx::PassContext& ctx) {
         seenW = ctx.width(t);
         seenH = ctx.height(t);
+        ref = ctx.texture(t, 0);
     });
     fx.addPass("particles_composite", {t}, {fx.sceneColor()}, [](fx::PassContext&) {});
     EXPECT_TRUE(fx.readsSceneDepth());
-    fx.replay(color, depth);
-    graph.addPass("depth", 10, {}, {depth}, [](rtt::PassContext&) {});
     graph.addPass("present", 100, {color}, {}, [](rtt::PassContext&) {}, true);
     ASSERT_TRUE(graph.compile()) << graph.report().error;
     ASSERT_TRUE(graph.execute()) << graph.report().error;
@@ -41,4 +42,10 @@ TEST_F(FxFrameBuilderTest, RelativePluginTargetsFollowTheViewNotThePoolsMainView
     EXPECT_EQ(seenW, 48);
     EXPECT_EQ(seenH, 17);  // ceil(33 / 2)
     EXPECT_TRUE(graph.isKept("mirror.particles_quarter"));
+    EXPECT_TRUE(graph.isKept("depth"));  // kept because the plugin's pass reads scene depth
+    // Textures cross the boundary typed: name, format and size.
+    EXPECT_NE(ref.name, 0u);
+    EXPECT_EQ(ref.format, fx::TargetFormat::RGBA8);
+    EXPECT_EQ(ref.width, 48);
+    EXPECT_EQ(ref.height, 17);
 }

@@ -1,4 +1,4 @@
-#include "game/FxFrameBuilder.h"
+#include "scene/FxFrameBuilder.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,12 +20,10 @@ fx::TargetFormat toTargetFormat(rtt::ColorFormat f) {
     return fx::TargetFormat::RGBA8;
 }
 
-// fx::PassContext over rtt::PassContext, translating fx targets to graph resources.
+// fx::PassContext over rtt::PassContext (fx target ids are graph resource ids).
 class FxPassContext final : public fx::PassContext {
 public:
-    FxPassContext(rtt::PassContext& ctx, rtt::FrameGraphResource color, rtt::FrameGraphResource depth,
-                  uint32_t colorId, uint32_t depthId)
-        : ctx_(ctx), color_(color), depth_(depth), colorId_(colorId), depthId_(depthId) {}
+    explicit FxPassContext(rtt::PassContext& ctx) : ctx_(ctx) {}
     void bindForDraw(fx::Target t) override { ctx_.bindForDraw(map(t)); }
     fx::TextureRef texture(fx::Target t, int attachment) override {
         const rtt::FrameGraphResource r = map(t);
@@ -44,14 +42,8 @@ public:
     int height(fx::Target t) override { return ctx_.height(map(t)); }
 
 private:
-    rtt::FrameGraphResource map(fx::Target t) const {
-        if (t.id == colorId_) return color_;
-        if (t.id == depthId_) return depth_;
-        return rtt::FrameGraphResource{t.id};
-    }
+    static rtt::FrameGraphResource map(fx::Target t) { return rtt::FrameGraphResource{t.id}; }
     rtt::PassContext& ctx_;
-    rtt::FrameGraphResource color_, depth_;
-    uint32_t colorId_, depthId_;
 };
 
 rtt::ColorFormat toColorFormat(fx::TargetFormat f) {
@@ -92,36 +84,19 @@ fx::Target FxFrameBuilder::createTarget(const char* name, const fx::TargetDesc& 
 void FxFrameBuilder::addPass(const char* name, std::initializer_list<fx::Target> reads,
                              std::initializer_list<fx::Target> writes,
                              std::function<void(fx::PassContext&)> execute) {
-    passes_.push_back({prefix_ + (name ? name : "fx_pass"), reads, writes, std::move(execute)});
-}
-
-bool FxFrameBuilder::readsSceneDepth() const {
-    return std::any_of(passes_.begin(), passes_.end(), [](const Recorded& p) {
-        return std::any_of(p.reads.begin(), p.reads.end(), [](fx::Target t) { return t.id == kSceneDepth; });
-    });
-}
-
-rtt::FrameGraphResource FxFrameBuilder::map(fx::Target t) const {
-    if (t.id == kSceneColor) return color_;
-    if (t.id == kSceneDepth) return depth_;
-    return rtt::FrameGraphResource{t.id};
-}
-
-void FxFrameBuilder::replay(rtt::FrameGraphResource sceneColor, rtt::FrameGraphResource sceneDepth) {
-    color_ = sceneColor;
-    depth_ = sceneDepth;
-    for (Recorded& p : passes_) {
-        std::vector<rtt::FrameGraphResource> reads, writes;
-        for (fx::Target t : p.reads) reads.push_back(map(t));
-        for (fx::Target t : p.writes) writes.push_back(map(t));
-        auto execute = std::move(p.execute);
-        graph_.addPass(p.name.c_str(), order_, reads.data(), reads.size(), writes.data(), writes.size(),
-                       [execute, sceneColor, sceneDepth](rtt::PassContext& ctx) {
-                           FxPassContext fxCtx(ctx, sceneColor, sceneDepth, kSceneColor, kSceneDepth);
-                           execute(fxCtx);
-                       });
+    reads_.clear();
+    writes_.clear();
+    for (fx::Target t : reads) {
+        reads_.push_back(rtt::FrameGraphResource{t.id});
+        readsDepth_ = readsDepth_ || t.id == depth_.id;
     }
-    passes_.clear();
+    for (fx::Target t : writes) writes_.push_back(rtt::FrameGraphResource{t.id});
+    const std::string passName = prefix_ + (name ? name : "fx_pass");
+    graph_.addPass(passName.c_str(), order_, reads_.data(), reads_.size(), writes_.data(), writes_.size(),
+                   [execute = std::move(execute)](rtt::PassContext& ctx) {
+                       FxPassContext fxCtx(ctx);
+                       execute(fxCtx);
+                   });
 }
 
 }  // namespace cube

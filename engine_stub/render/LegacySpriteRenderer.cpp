@@ -1,4 +1,4 @@
-#include "scene/LegacySpriteRenderer.h"
+#include "render/LegacySpriteRenderer.h"
 
 #include "gl/Image.h"
 #include "gl/Paths.h"

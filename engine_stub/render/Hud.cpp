@@ -1,4 +1,4 @@
-#include "scene/Hud.h"
+#include "render/Hud.h"
 
 #include <stb_easy_font.h>
 

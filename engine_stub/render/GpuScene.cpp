@@ -1,4 +1,4 @@
-#include "scene/GpuScene.h"
+#include "render/GpuScene.h"
 
 #include <glm/gtc/type_ptr.hpp>
 

@@ -1,0 +1,151 @@
+#include "render/SceneRenderer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "render/RenderState.h"
+
+namespace cube {
+namespace {
+
+void setCamera(const gl::Program& p, const CameraMatrices& cam) {
+    glUseProgram(p.id());
+    glUniformMatrix4fv(p.uniform("uView"), 1, GL_FALSE, glm::value_ptr(cam.view));
+    glUniformMatrix4fv(p.uniform("uProj"), 1, GL_FALSE, glm::value_ptr(cam.proj));
+}
+
+}  // namespace
+
+bool SceneRenderer::init(const SceneData& data, std::string* error) {
+    gpu_.upload(data);
+    if (!gl::Program::load("vs_mesh.glsl", "fs_mesh.glsl", &meshProgram_, error)) return false;
+    if (!gl::Program::load("vs_mesh.glsl", "fs_mesh_prepass.glsl", &prepassProgram_, error)) return false;
+    if (!gl::Program::load("vs_fullscreen.glsl", "fs_sky.glsl", &skyProgram_, error)) return false;
+    if (!gl::Program::load("vs_fullscreen.glsl", "fs_blit.glsl", &blitProgram_, error)) return false;
+    if (!gl::Program::load("vs_mesh.glsl", "fs_mesh_costly.glsl", &costlyProgram_, error)) return false;
+    if (!panelVao_) {
+        // Two triangles, position + normal, as GpuScene lays out vertices.
+        const float v[] = {-1, -1, 0, 0, 0, 1, 1, -1, 0, 0, 0, 1, 1, 1, 0, 0, 0, 1,
+                           -1, -1, 0, 0, 0, 1, 1, 1,  0, 0, 0, 1, -1, 1, 0, 0, 0, 1};
+        glGenVertexArrays(1, &panelVao_);
+        glGenBuffers(1, &panelVbo_);
+        glBindVertexArray(panelVao_);
+        glBindBuffer(GL_ARRAY_BUFFER, panelVbo_);
+        glBufferData(GL_ARRAY_BUFFER, sizeof v, v, GL_STATIC_DRAW);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
+        glBindVertexArray(0);
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
+    }
+    if (!legacySprites_.init(error)) return false;
+    if (!hud_.init(error)) return false;
+    if (!emptyVao_) glGenVertexArrays(1, &emptyVao_);
+    return true;
+}
+
+SceneRenderer::~SceneRenderer() {
+    if (panelVbo_) glDeleteBuffers(1, &panelVbo_);
+    if (panelVao_) glDeleteVertexArrays(1, &panelVao_);
+    if (emptyVao_) glDeleteVertexArrays(1, &emptyVao_);
+}
+
+void SceneRenderer::drawOverdrawPanels(const gl::Program& p, const OverdrawPanels& panels,
+                                       const CameraMatrices& cam) const {
+    const int layers = panels.layers;
+    if (layers <= 0) return;
+    const glm::mat4 camToWorld = glm::inverse(cam.view);
+    const GLint uModel = p.uniform("uModel"), uColor = p.uniform("uBaseColor");
+    glBindVertexArray(panelVao_);
+    for (int i = 0; i < layers; ++i) {
+        const float d = 40.0f - 20.0f * float(i) / float(std::max(1, layers - 1));
+        const float halfH = d * std::tan(0.5f * cam.fovY), halfW = halfH * cam.aspect;
+        glm::mat4 m = glm::translate(camToWorld, glm::vec3(0.0f, 0.3f * halfH, -d));
+        m = glm::scale(m, glm::vec3(0.95f * halfW, 0.7f * halfH, 1.0f));
+        glUniformMatrix4fv(uModel, 1, GL_FALSE, glm::value_ptr(m));
+        if (uColor >= 0) glUniform4f(uColor, 0.3f + 0.05f * float(i % 8), 0.35f, 0.5f - 0.03f * float(i % 8), 1.0f);
+        glDrawArrays(GL_TRIANGLES, 0, 6);
+    }
+    glBindVertexArray(0);
+}
+
+void SceneRenderer::depthPrepass(const std::vector<MeshDraw>& opaque, const std::vector<MeshDraw>& alphaTested,
+                                 const CameraMatrices& cam, const OverdrawPanels& panels) const {
+    ScopedPassState state({true, GL_LESS, true, true});
+    setCamera(prepassProgram_, cam);
+    const GLint uModel = prepassProgram_.uniform("uModel");
+    gpu_.draw(opaque, uModel, -1);
+    gpu_.draw(alphaTested, uModel, -1);
+    drawOverdrawPanels(prepassProgram_, panels, cam);
+}
+
+void SceneRenderer::opaque(const std::vector<MeshDraw>& draws, const CameraMatrices& cam, bool equal,
+                           const OverdrawPanels& panels) const {
+    // LEQUAL, not LESS: where two surfaces meet at exactly the same depth the last drawn wins,
+    // which is what EQUAL on the prepass z-buffer does too. So the two paths give the same
+    // pixel even at coplanar seams.
+    ScopedPassState state({true, GLenum(equal ? GL_EQUAL : GL_LEQUAL), !equal, true});
+    setCamera(meshProgram_, cam);
+    gpu_.draw(draws, meshProgram_.uniform("uModel"), meshProgram_.uniform("uBaseColor"));
+    if (panels.layers > 0) {
+        setCamera(costlyProgram_, cam);
+        glUniform1i(costlyProgram_.uniform("uCost"), panels.cost);
+        drawOverdrawPanels(costlyProgram_, panels, cam);
+    }
+}
+
+void SceneRenderer::alphaTested(const std::vector<MeshDraw>& draws, const CameraMatrices& cam, bool equal) const {
+    // Culling as in the prepass, or EQUAL would differ.
+    ScopedPassState state({true, GLenum(equal ? GL_EQUAL : GL_LEQUAL), !equal, true});
+    setCamera(meshProgram_, cam);
+    gpu_.draw(draws, meshProgram_.uniform("uModel"), meshProgram_.uniform("uBaseColor"));
+}
+
+void SceneRenderer::sky(const CameraMatrices& cam) const {
+    ScopedPassState state({true, GL_LEQUAL, false, false});
+    glUseProgram(skyProgram_.id());
+    const glm::mat4 inv = glm::inverse(cam.proj * glm::mat4(glm::mat3(cam.view)));
+    glUniformMatrix4fv(skyProgram_.uniform("uInvViewProj"), 1, GL_FALSE, glm::value_ptr(inv));
+    glUniform1f(skyProgram_.uniform("uDepth"), 1.0f);
+    glBindVertexArray(emptyVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void SceneRenderer::sprites(const std::vector<cubeParticleSystem::SpriteVertex>& vertices,
+                            const glm::mat4& viewProj, const glm::vec3& tint) {
+    legacySprites_.draw(vertices, glm::value_ptr(viewProj), tint);
+}
+
+void SceneRenderer::inset(uint32_t texture, int iw, int ih, bool flipX, int w, int h) const {
+    const int x = (w - iw) / 2, y = h - ih - 12;
+    glViewport(x - 3, y - 3, iw + 6, ih + 6);  // frame
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x - 3, y - 3, iw + 6, ih + 6);
+    const GLfloat frame[4] = {0.05f, 0.05f, 0.05f, 1.0f};
+    glClearBufferfv(GL_COLOR, 0, frame);
+    glDisable(GL_SCISSOR_TEST);
+    glViewport(x, y, iw, ih);
+    glUseProgram(blitProgram_.id());
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glUniform1i(blitProgram_.uniform("uSource"), 0);
+    glUniform1f(blitProgram_.uniform("uFlipX"), flipX ? 1.0f : 0.0f);
+    glUniform1f(blitProgram_.uniform("uDepth"), 0.0f);
+    glBindVertexArray(emptyVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glUseProgram(0);
+    glViewport(0, 0, w, h);
+}
+
+void SceneRenderer::text(const std::string& text, int w, int h) {
+    hud_.setText(text);
+    hud_.draw(w, h);
+}
+
+}  // namespace cube

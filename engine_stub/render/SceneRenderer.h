@@ -1,0 +1,80 @@
+#pragma once
+// The engine's GL back end for the scene: the only engine code (with gl/, rtt/ and platform/)
+// that calls GL. The game side (scene/, game/, apps/) describes what to draw (MeshDraw lists, a
+// camera, sprite vertices, text) and calls these functions from inside its frame-graph passes,
+// with the pass's target bound. Each function sets the GL state it needs through RenderState
+// and leaves the context in the engine's default state (RenderState::defaults()) afterwards.
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/Program.h"
+#include "render/GpuScene.h"
+#include "render/Hud.h"
+#include "render/LegacySpriteRenderer.h"
+#include "scene/SceneData.h"
+
+namespace cube {
+
+/// What a scene pass draws with: the camera's matrices and the view's shape.
+/// Defaults: identity matrices, 60 degree field of view, square.
+struct CameraMatrices {
+    glm::mat4 view{1.0f};
+    glm::mat4 proj{1.0f};
+    float fovY = glm::radians(60.0f);
+    float aspect = 1.0f;
+};
+
+/// The benchmark's opaque panels in front of the camera (fxbench --overdraw): `layers` quads
+/// from 40 m down to 20 m, drawn back to front (the worst order for depth test LESS) over the
+/// upper 70 % of the view; `cost` noise octaves per pixel in the opaque pass. Default: none.
+struct OverdrawPanels {
+    int layers = 0;
+    int cost = 16;
+};
+
+class SceneRenderer {
+public:
+    SceneRenderer() = default;
+    ~SceneRenderer();
+    SceneRenderer(const SceneRenderer&) = delete;
+    SceneRenderer& operator=(const SceneRenderer&) = delete;
+
+    /// Uploads the scene's meshes and builds every program. False + error (shader file:line ...).
+    bool init(const SceneData& data, std::string* error);
+
+    /// The mesh table (records MeshDraws for the game side; no GL).
+    const GpuScene& meshes() const { return gpu_; }
+
+    /// [depth prepass] linear view depth (R32F, cleared by the caller) + z-buffer, LESS.
+    void depthPrepass(const std::vector<MeshDraw>& opaque, const std::vector<MeshDraw>& alphaTested,
+                      const CameraMatrices& cam, const OverdrawPanels& panels) const;
+    /// [opaque] LEQUAL with depth writes, or EQUAL on the prepass z-buffer without them.
+    void opaque(const std::vector<MeshDraw>& draws, const CameraMatrices& cam, bool equal,
+                const OverdrawPanels& panels) const;
+    /// [alpha-tested] as opaque, culling as in the prepass.
+    void alphaTested(const std::vector<MeshDraw>& draws, const CameraMatrices& cam, bool equal) const;
+    /// [sky] a full-screen triangle at the far plane where nothing was drawn.
+    void sky(const CameraMatrices& cam) const;
+    /// [legacy smoke] CPU-aligned sprites, depth-tested without writes.
+    void sprites(const std::vector<cubeParticleSystem::SpriteVertex>& vertices, const glm::mat4& viewProj,
+                 const glm::vec3& tint);
+    /// [HUD] `texture` (another view's colour) inset at the top centre of a w x h target, with a
+    /// dark 3-pixel frame, mirrored horizontally when `flipX`.
+    void inset(uint32_t texture, int insetWidth, int insetHeight, bool flipX, int w, int h) const;
+    /// [HUD] one line of text on a dark panel.
+    void text(const std::string& text, int w, int h);
+
+private:
+    void drawOverdrawPanels(const gl::Program& p, const OverdrawPanels& panels, const CameraMatrices& cam) const;
+
+    GpuScene gpu_;
+    gl::Program meshProgram_, prepassProgram_, skyProgram_, blitProgram_, costlyProgram_;
+    GLuint panelVao_ = 0, panelVbo_ = 0;  // one unit quad (z = 0, normal +Z) for the overdraw panels
+    GLuint emptyVao_ = 0;                 // for gl_VertexID full-screen triangles
+    LegacySpriteRenderer legacySprites_;
+    Hud hud_;
+};
+
+}  // namespace cube
