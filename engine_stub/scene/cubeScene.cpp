@@ -10,9 +10,9 @@
 
 namespace cube {
 
-bool cubeScene::Init(const SceneData& data, std::string* error) {
+bool cubeScene::Init(const SceneData& data, std::string* error, const std::string& carNode) {
     data_ = data;
-    carNode_ = data_.findNode("car");
+    carNode_ = carNode.empty() ? -1 : data_.findNode(carNode);
     gpu_.upload(data_);
     if (!gl::Program::load("vs_mesh.glsl", "fs_mesh.glsl", &meshProgram, error)) return false;
     if (!gl::Program::load("vs_mesh.glsl", "fs_mesh_prepass.glsl", &prepassProgram, error)) return false;
