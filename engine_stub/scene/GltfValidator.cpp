@@ -77,7 +77,8 @@ public:
 
 private:
     bool bad(SceneErrorCode code, const char* rule, const std::string& detail) {
-        return fail(path_, error_, code, detail + " [" + rule + "]");
+        // `rule`: the Khronos glTF-Validator issue code, or "" for this loader's own limits.
+        return fail(path_, error_, code, *rule ? detail + " [" + rule + "]" : detail);
     }
     void warn(const std::string& text) {
         if (warnings_) warnings_->push_back(path_ + ": " + text);
@@ -94,7 +95,7 @@ private:
         int major = -1, minor = -1;
         char tail = 0;
         if (std::sscanf(s.c_str(), "%d.%d%c", &major, &minor, &tail) != 2 || major < 0 || minor < 0)
-            return bad(SceneErrorCode::InvalidGltf, "INVALID_PATTERN", "asset.version is '" + s + "', expected <major>.<minor> such as \"2.0\"");
+            return bad(SceneErrorCode::InvalidGltf, "PATTERN_MISMATCH", "asset.version is '" + s + "', expected <major>.<minor> such as \"2.0\"");
         if (major != 2)
             return bad(SceneErrorCode::InvalidGltf, "UNKNOWN_ASSET_MAJOR_VERSION",
                        "asset.version is '" + s + "': this loader reads glTF 2.x only");
@@ -112,7 +113,7 @@ private:
             if (it == root.end()) continue;
             if (!it->is_array()) return bad(SceneErrorCode::InvalidGltf, "TYPE_MISMATCH", std::string(key) + " is not an array of names");
             for (const Json& e : *it) {
-                if (!e.is_string()) return bad(SceneErrorCode::InvalidGltf, "TYPE_MISMATCH", std::string(key) + " holds a non-string " + show(e));
+                if (!e.is_string()) return bad(SceneErrorCode::InvalidGltf, "ARRAY_TYPE_MISMATCH", std::string(key) + " holds a non-string " + show(e));
                 (key[10] == 'U' ? used : required).push_back(e.get<std::string>());
             }
         }
@@ -154,7 +155,7 @@ private:
                                                                                 std::to_string(want));
         for (size_t k = 0; k < it->size(); ++k) {
             if (!(*it)[k].is_number())
-                return bad(SceneErrorCode::BadNode, "TYPE_MISMATCH", label + " " + field + "[" + std::to_string(k) + "] is " +
+                return bad(SceneErrorCode::BadNode, "ARRAY_TYPE_MISMATCH", label + " " + field + "[" + std::to_string(k) + "] is " +
                                                                          show((*it)[k]) + ", expected a number");
         }
         return true;
@@ -164,8 +165,9 @@ private:
         const auto it = root.find("nodes");
         if (it == root.end()) return true;
         if (it->size() > kMaxNodes)
-            return bad(SceneErrorCode::TooLarge, "NODE_COUNT", "has " + std::to_string(it->size()) +
+            return bad(SceneErrorCode::TooLarge, "", "has " + std::to_string(it->size()) +
                                                                    " nodes, expected at most " + std::to_string(kMaxNodes));
+        if (!hierarchyDepth(*it)) return false;
         for (size_t i = 0; i < it->size(); ++i) {
             const Json& n = (*it)[i];
             const auto name = n.find("name");
@@ -183,7 +185,7 @@ private:
                     return bad(SceneErrorCode::BadNode, "TYPE_MISMATCH", label + " children is not an array of node indices");
                 for (const Json& c : *children) {
                     if (!c.is_number_integer())
-                        return bad(SceneErrorCode::BadNode, "TYPE_MISMATCH",
+                        return bad(SceneErrorCode::BadNode, "ARRAY_TYPE_MISMATCH",
                                    label + " children holds " + show(c) + ", expected node indices");
                 }
             }
@@ -192,6 +194,51 @@ private:
                 if (r != n.end() && !r->is_number_integer())
                     return bad(SceneErrorCode::BadNode, "TYPE_MISMATCH",
                                label + " " + ref + " is " + show(*r) + ", expected an index");
+            }
+        }
+        return true;
+    }
+
+    // The depth limit before tinygltf builds a model of a 100,000-level chain. Linear: each node's
+    // depth is set once, from the first ancestor whose depth is known. Bad indices, second
+    // parents and cycles are left to SceneAssembler, which names them.
+    bool hierarchyDepth(const Json& nodes) {
+        const size_t count = nodes.size();
+        std::vector<int> parent(count, -1);
+        for (size_t i = 0; i < count; ++i) {
+            const auto children = nodes[i].find("children");
+            if (children == nodes[i].end() || !children->is_array()) continue;
+            for (const Json& c : *children) {
+                if (!c.is_number_integer()) continue;
+                const long long k = c.get<long long>();
+                if (k >= 0 && size_t(k) < count && parent[size_t(k)] == -1 && size_t(k) != i) parent[size_t(k)] = int(i);
+            }
+        }
+        std::vector<int> depth(count, 0);  // 0 = not known yet; roots are 1
+        std::vector<char> onChain(count, 0);
+        std::vector<size_t> chain;
+        for (size_t i = 0; i < count; ++i) {
+            chain.clear();
+            int j = int(i);
+            while (j >= 0 && depth[size_t(j)] == 0 && !onChain[size_t(j)]) {
+                onChain[size_t(j)] = 1;
+                chain.push_back(size_t(j));
+                j = parent[size_t(j)];
+            }
+            // Reached a node on this chain (a cycle) or one known to be in or under a cycle (-1):
+            // no depth to give; SceneAssembler reports the cycle.
+            const bool cycle = j >= 0 && (depth[size_t(j)] == 0 || depth[size_t(j)] < 0);
+            int d = j >= 0 && !cycle ? depth[size_t(j)] : 0;
+            for (auto k = chain.rbegin(); k != chain.rend(); ++k) {
+                d = cycle ? -1 : d + 1;
+                depth[*k] = d;
+                onChain[*k] = 0;
+                if (d > kMaxHierarchyDepth) {
+                    return bad(SceneErrorCode::TooDeep, "",
+                               "node " + std::to_string(*k) + " is " + std::to_string(d) +
+                                   " levels below its root; expected at most " + std::to_string(kMaxHierarchyDepth) +
+                                   " levels of node hierarchy");
+                }
             }
         }
         return true;

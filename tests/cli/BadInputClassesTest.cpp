@@ -183,7 +183,7 @@ TEST(BadInputClasses, GltfFiles) {
         {"chain.gltf", triangleGltf(chain), "TooDeep", "4096 levels"},
         {"matrix_trs.gltf", triangleGltf(R"([{"mesh":0,"matrix":[1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1],"translation":[1,2,3]}])"),
          "BadNode", "NODE_MATRIX_TRS"},
-        {"text_translation.gltf", triangleGltf(R"([{"mesh":0,"translation":[1,"two",3]}])"), "BadNode", "TYPE_MISMATCH"},
+        {"text_translation.gltf", triangleGltf(R"([{"mesh":0,"translation":[1,"two",3]}])"), "BadNode", "ARRAY_TYPE_MISMATCH"},
         {"version3.gltf", triangleGltf(R"([{"mesh":0}])", "", R"({"version":"3.0"})"), "InvalidGltf", "UNKNOWN_ASSET_MAJOR_VERSION"},
         {"draco.gltf", triangleGltf(R"([{"mesh":0}])", R"(,"extensionsUsed":["KHR_draco_mesh_compression"],"extensionsRequired":["KHR_draco_mesh_compression"])"),
          "Unsupported", "KHR_draco_mesh_compression"},
