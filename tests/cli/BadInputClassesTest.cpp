@@ -152,7 +152,7 @@ TEST(BadInputClasses, LegacyDataFile) {
         const Outcome r = runSmall("--fx legacy --legacy-reactions " + c.path);
         expectRejected(r, {fs::path(c.path).filename().string(), c.also}, c.path);
         if (!c.code.empty()) {
-            EXPECT_NE(r.output.find("error[" + c.code + "]"), std::string::npos) << c.path << "\n" << r.output;
+            EXPECT_EQ(count(r.output, "error[" + c.code + "]"), 1u) << c.path << ": printed once\n" << r.output;
         }
     }
     // The legacy sprites' atlas goes through the same opener: a FIFO in its place is named.
