@@ -3,7 +3,7 @@
 # Sourced by run.sh and test.sh; safe to run again (idempotent), works as root with no stdin.
 set -euo pipefail
 CUBE_PACKAGES=(build-essential cmake pkg-config python3-glad
-  libglfw3-dev libglm-dev libtinygltf-dev libyaml-cpp-dev libosmesa6-dev libegl-dev
+  libglfw3-dev libglm-dev libtinygltf-dev nlohmann-json3-dev libyaml-cpp-dev libosmesa6-dev libegl-dev
   libstb-dev libgtest-dev libbenchmark-dev xvfb xauth python3)
 # Extra tools for the robustness jobs (sanitizers, fuzzing), only when asked for.
 if [ "${CUBE_WITH_CLANG:-0}" = 1 ]; then CUBE_PACKAGES+=(clang libclang-rt-14-dev); fi

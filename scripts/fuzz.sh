@@ -9,16 +9,29 @@ CUBE_WITH_CLANG=1 bash scripts/deps.sh
 seconds="${FUZZ_SECONDS:-60}"
 build=build-fuzz
 CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCUBE_FUZZ=ON >/dev/null
-cmake --build "$build" -j"$(nproc)" --target fuzz_reactions fuzz_scene
+cmake --build "$build" -j"$(nproc)" --target fuzz_reactions fuzz_scene fuzz_legacy
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-mkdir -p "$work/corpus_reactions" "$work/corpus_scene"
+mkdir -p "$work/corpus_reactions" "$work/corpus_scene" "$work/corpus_legacy"
 cp reactions/*.yaml data/legacy_smoke.yaml "$work/corpus_reactions/"
+cp data/legacy_smoke.yaml "$work/corpus_legacy/"
 cp data/race.gltf data/race.glb "$work/corpus_scene/"
+# Seeds for the limits: JSON nested past the pre-scan's depth (in extras) and a long node chain.
+python3 - "$work/corpus_scene" <<'PY'
+import json, sys
+d = sys.argv[1]
+race = open("data/race.gltf").read().rstrip()
+open(d + "/deep_extras.gltf", "w").write(race[:-1] + ', "extras": ' + "[" * 3000 + "]" * 3000 + "}")
+m = json.loads(race)
+n = len(m["nodes"])
+m["nodes"] += [{"children": [n + i + 1]} for i in range(199)] + [{"name": "leaf"}]
+m["scenes"][0]["nodes"].append(n)
+open(d + "/chain.gltf", "w").write(json.dumps(m))
+PY
 
 status=0
-for target in reactions scene; do
+for target in reactions scene legacy; do
   echo "fuzz: $target for ${seconds}s"
   mkdir -p "fuzz/regressions/$target"
   if ! ASAN_OPTIONS=detect_leaks=1 "$build/bin/fuzz_$target" -max_total_time="$seconds" -timeout=10 \

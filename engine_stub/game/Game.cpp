@@ -58,11 +58,30 @@ bool Game::InitProc(std::string* error) {
         *error = sceneError.str();
         return false;
     }
-    if (!vehicle_.init(sceneData_, error)) {
-        *error = scenePath + ": " + *error;
-        return false;
+    warnings_ = sceneData_.warnings;
+    // Any glTF renders: a model without the car node is shown whole, with nothing driving.
+    const std::string carName = options_.carNode.empty() ? "car" : options_.carNode;
+    std::string carNode = carName;
+    if (sceneData_.findNode(carName) < 0) {
+        if (!options_.carNode.empty()) {
+            *error = "--car-node: " + scenePath + " has no node named '" + carName + "'";
+            return false;
+        }
+        warnings_.push_back(scenePath + ": no node named 'car': the scripted drive, the wheel reactions and "
+                            "the mirror are off and the camera frames the model (--car-node NAME picks a car)");
+        vehicle_.disable();
+        options_.mirror = false;
+        carNode.clear();
+    } else {
+        std::string warning;
+        if (!vehicle_.init(sceneData_, error, carName, &warning)) {
+            *error = scenePath + ": " + *error;
+            return false;
+        }
+        if (!warning.empty()) warnings_.push_back(scenePath + ": " + warning);
     }
-    if (!scene_.Init(sceneData_, error)) return false;
+    if (!vehicle_.active()) frameSceneBounds();
+    if (!scene_.Init(sceneData_, error, carNode)) return false;
     rtt::RenderTargetPoolDesc poolDesc;
     poolDesc.framesUntilFree = std::max(1, options_.poolFramesUntilFree);
     pool_ = std::make_unique<rtt::RenderTargetPool>(poolDesc);
@@ -76,6 +95,28 @@ bool Game::InitProc(std::string* error) {
     return true;
 }
 
+// A camera that shows the whole model: from front-right and above, far enough that the bounding
+// sphere fits the 55-degree view, clip planes widened to hold it.
+void Game::frameSceneBounds() {
+    bool any = false;
+    glm::vec3 lo(0.0f), hi(0.0f);
+    for (const SceneNode& n : sceneData_.nodes) {
+        if (n.meshes.empty()) continue;
+        lo = any ? glm::min(lo, n.aabbMin) : n.aabbMin;
+        hi = any ? glm::max(hi, n.aabbMax) : n.aabbMax;
+        any = true;
+    }
+    const glm::vec3 centre = 0.5f * (lo + hi);
+    const float radius = std::max(0.5f * glm::length(hi - lo), 1e-3f);
+    const float distance = radius / std::sin(glm::radians(55.0f) * 0.5f) * 1.1f;
+    framedTarget_ = centre;
+    framedEye_ = centre + distance * glm::normalize(glm::vec3(0.6f, 0.45f, 0.8f));
+    if (!options_.fixedCamera) {
+        options_.farPlane = std::max(options_.farPlane, distance + 2.0f * radius);
+        options_.nearPlane = std::max(options_.nearPlane, std::min(options_.farPlane * 1e-5f, 0.5f * (distance - radius)));
+    }
+}
+
 void Game::updateCameras(float dt) {
     constexpr float kPi = 3.14159265358979f;
     const DrivePose& pose = vehicle_.pose();
@@ -87,6 +128,10 @@ void Game::updateCameras(float dt) {
     ViewCamera& c = chase_.camera();
     c.eye = pose.position - 7.5f * fwd + glm::vec3(0.0f, 2.6f, 0.0f);
     c.target = pose.position + 2.0f * fwd + glm::vec3(0.0f, 0.6f, 0.0f);
+    if (!vehicle_.active()) {
+        c.eye = framedEye_;
+        c.target = framedTarget_;
+    }
     if (options_.fixedCamera) {
         c.eye = glm::vec3(options_.cameraEye[0], options_.cameraEye[1], options_.cameraEye[2]);
         c.target = glm::vec3(options_.cameraTarget[0], options_.cameraTarget[1], options_.cameraTarget[2]);

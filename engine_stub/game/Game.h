@@ -51,6 +51,11 @@ public:
     rtt::FrameGraph& graph() { return *graph_; }
     cubeView& chaseView() { return chase_; }
     cubeView& mirrorView() { return mirror_; }
+    /// Things Init read past (scene features ignored, no car node, ...), one line each, for the
+    /// app to print once.
+    const std::vector<std::string>& warnings() const { return warnings_; }
+    /// False when the scene has no car node: nothing drives and the camera frames the model.
+    bool driving() const { return vehicle_.active(); }
     double time() const { return time_; }
     long long frame() const { return frame_; }
     /// Frame wall times in ms (CPU clock including glFinish), one per rendered frame.
@@ -63,6 +68,7 @@ private:
     friend class Render;
     bool InitProc(std::string* error);
     void updateCameras(float dt);
+    void frameSceneBounds();
 
     Options options_;
     std::unique_ptr<Platform> platform_;
@@ -79,6 +85,8 @@ private:
     double time_ = 0.0;
     long long frame_ = 0;
     float cameraHeading_ = 0.0f;
+    glm::vec3 framedEye_{0.0f, 2.0f, 8.0f}, framedTarget_{0.0f};  ///< no car: the whole model
+    std::vector<std::string> warnings_;
     bool captureNext_ = false;
     ImageRGBA8 lastFrame_;
     std::vector<double> frameMs_;

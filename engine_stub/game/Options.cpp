@@ -5,6 +5,10 @@
 #include <cstdlib>
 #include <vector>
 
+#include <unistd.h>
+
+#include <glm/glm.hpp>
+
 namespace cube {
 
 namespace {
@@ -39,13 +43,62 @@ bool parseSize(const std::string& s, int* w, int* h) {
     return true;
 }
 
+// The folder an output file goes into ("." for a bare name).
+std::string folderOf(const std::string& file) {
+    const size_t slash = file.rfind('/');
+    if (slash == std::string::npos) return ".";
+    return slash == 0 ? "/" : file.substr(0, slash);
+}
+
+bool writableFolder(const std::string& flag, const std::string& folder, std::string* error) {
+    if (::access(folder.c_str(), F_OK) != 0) {
+        *error = flag + ": folder '" + folder + "' does not exist; create it first";
+        return false;
+    }
+    if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+        *error = flag + ": folder '" + folder + "' is not writable";
+        return false;
+    }
+    return true;
+}
+
 }  // namespace
+
+bool checkOptions(const Options& o, std::string* error) {
+    if (o.frames == 0 && !o.window) {
+        *error = "--frames 0 runs until the window closes, and without --window there is none; "
+                 "give --frames N (N >= 1) or add --window";
+        return false;
+    }
+    if (o.fixedCamera) {
+        const glm::vec3 eye(o.cameraEye[0], o.cameraEye[1], o.cameraEye[2]);
+        const glm::vec3 target(o.cameraTarget[0], o.cameraTarget[1], o.cameraTarget[2]);
+        const glm::vec3 d = target - eye;
+        const float len = glm::length(d);
+        if (!(len > 1e-3f)) {
+            *error = "--camera: the eye is on the target (distance " + std::to_string(len) +
+                     " m); expected them at least 1 mm apart";
+            return false;
+        }
+        // The camera's up is +Y: a view along Y leaves its roll undefined.
+        if (glm::length(glm::cross(d / len, glm::vec3(0.0f, 1.0f, 0.0f))) < 1e-3f) {
+            *error = "--camera: the view from eye to target is parallel to the up axis (+Y); "
+                     "expected a view that is not straight up or down";
+            return false;
+        }
+    }
+    if (!o.screenshot.empty() && !writableFolder("--screenshot", folderOf(o.screenshot), error)) return false;
+    if (!o.statsJson.empty() && !writableFolder("--stats-json", folderOf(o.statsJson), error)) return false;
+    if (o.screenshotEvery > 0 && !writableFolder("--screenshot-every", o.screenshotDir, error)) return false;
+    return true;
+}
 
 std::string usage() {
     return
         "usage: cube_game [options]\n"
         "  --help                 this text\n"
-        "  --frames N             frames to run (default 300; 0 = until the window closes)\n"
+        "  --frames N             frames to run (default 300; 0 = until the window closes,\n"
+        "                         with --window only)\n"
         "  --size WxH             view size, 1..16384 each (default 1280x1024)\n"
         "  --fixed-dt S           fixed time step in seconds, 0..10 (default: wall clock)\n"
         "  --start S              seconds into the scripted drive at frame 0 (default 0)\n"
@@ -55,6 +108,8 @@ std::string usage() {
         "  --scene PATH           glTF scene (default data/race.gltf)\n"
         "  --reactions PATH       reaction .yaml file or folder (default reactions/)\n"
         "  --legacy-reactions PATH  legacy smoke data file (default data/legacy_smoke.yaml)\n"
+        "  --car-node NAME        the scene node that drives (default car; without one the\n"
+        "                         camera frames the model and nothing drives)\n"
         "  --fx legacy|plugin     old hard sprites or the plugin (default plugin)\n"
         "  --mode hard|soft|spherical|reaction  technique override (default: each reaction's)\n"
         "  --prepass-equal        opaque pass reuses the prepass z-buffer with depth test EQUAL\n"
@@ -68,6 +123,7 @@ std::string usage() {
         "  --no-mirror            leave out the rear-view mirror view\n"
         "  --no-hud               leave out the HUD\n"
         "  --stats-json PATH      write frame statistics at exit\n"
+        "SIGINT/SIGTERM finish the current frame, write --screenshot and --stats-json, exit 130/143.\n"
         "Window keys: P prepass-EQUAL, Q quarter-res, M technique, B bilinear, H HUD, Esc quit.\n";
 }
 
@@ -78,6 +134,17 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
             *error = flag + ": missing value";
             return false;
         }
+        return true;
+    };
+    // A path flag given an empty value would silently mean "the default": refuse it.
+    auto path = [&](int& i, const std::string& flag, std::string* dst) -> bool {
+        if (!need(i, 1, flag)) return false;
+        const std::string v = argv[++i];
+        if (v.empty()) {
+            *error = flag + ": expected a path, got an empty string";
+            return false;
+        }
+        *dst = v;
         return true;
     };
     for (int i = 1; i < argc; ++i) {
@@ -121,8 +188,7 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
             }
             o.seed = unsigned(n);
         } else if (a == "--screenshot") {
-            if (!need(i, 1, a)) return false;
-            o.screenshot = argv[++i];
+            if (!path(i, a, &o.screenshot)) return false;
         } else if (a == "--screenshot-every") {
             if (!need(i, 2, a)) return false;
             if (!parseInt(argv[++i], 1, 100000000, &n)) {
@@ -130,16 +196,20 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
                 return false;
             }
             o.screenshotEvery = int(n);
-            o.screenshotDir = argv[++i];
+            if (!path(i, a, &o.screenshotDir)) return false;
         } else if (a == "--scene") {
-            if (!need(i, 1, a)) return false;
-            o.scene = argv[++i];
+            if (!path(i, a, &o.scene)) return false;
         } else if (a == "--reactions") {
-            if (!need(i, 1, a)) return false;
-            o.reactions = argv[++i];
+            if (!path(i, a, &o.reactions)) return false;
         } else if (a == "--legacy-reactions") {
+            if (!path(i, a, &o.legacyReactions)) return false;
+        } else if (a == "--car-node") {
             if (!need(i, 1, a)) return false;
-            o.legacyReactions = argv[++i];
+            o.carNode = argv[++i];
+            if (o.carNode.empty()) {
+                *error = "--car-node: expected a node name, got an empty string";
+                return false;
+            }
         } else if (a == "--fx") {
             if (!need(i, 1, a)) return false;
             std::string v = argv[++i];
@@ -209,8 +279,7 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
         } else if (a == "--no-hud") {
             o.hud = false;
         } else if (a == "--stats-json") {
-            if (!need(i, 1, a)) return false;
-            o.statsJson = argv[++i];
+            if (!path(i, a, &o.statsJson)) return false;
         } else {
             *error = "unknown option '" + a + "' (see --help)";
             return false;
@@ -224,6 +293,7 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
         *error = "--window needs --backend glfw (or no --backend)";
         return false;
     }
+    if (!o.help && !checkOptions(o, error)) return false;
     *out = o;
     return true;
 }

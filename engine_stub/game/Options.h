@@ -23,6 +23,7 @@ struct Options {
     std::string scene;            ///< empty = data/race.gltf
     std::string reactions;        ///< empty = reactions/ (every *.yaml in it)
     std::string legacyReactions;  ///< empty = data/legacy_smoke.yaml
+    std::string carNode;          ///< empty = "car", and a scene without it still renders
     Backend backend = Backend::OSMesa;
     bool window = false;
     std::string statsJson;
@@ -48,9 +49,13 @@ struct Options {
     float cameraTarget[3] = {0.0f, 0.0f, 0.0f};
 };
 
-/// Parses argv. On a bad flag or value returns false with a message naming the flag and what
-/// was expected.
+/// Parses argv and checks every value before a run starts (checkOptions). On a bad flag or
+/// value returns false with a message naming the flag and what was expected.
 bool parseOptions(int argc, const char* const* argv, Options* out, std::string* error);
+/// The checks that need more than one flag or the file system: --frames 0 needs a window; a
+/// pinned camera is not degenerate (eye on its target, looking straight up or down); every
+/// output folder exists and is writable. False + a message naming the flag.
+bool checkOptions(const Options& options, std::string* error);
 std::string usage();
 
 }  // namespace cube

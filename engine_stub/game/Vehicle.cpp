@@ -102,23 +102,30 @@ DrivePose Vehicle::scriptPose(double tIn) {
     return p;
 }
 
-bool Vehicle::init(const SceneData& scene, std::string* error) {
-    const int car = scene.findNode("car");
+bool Vehicle::init(const SceneData& scene, std::string* error, const std::string& carNode,
+                   std::string* warning) {
+    const int car = scene.findNode(carNode);
     if (car < 0) {
-        *error = "scene has no node named 'car'";
+        *error = "scene has no node named '" + carNode + "'";
         return false;
     }
+    active_ = true;
+    hasWheels_ = true;
     const glm::mat4 carInv = glm::inverse(scene.nodes[size_t(car)].world);
     for (int i = 0; i < 4; ++i) {
         const int n = scene.findNode(kWheelNames[i]);
         if (n < 0 || !scene.isDescendant(n, car)) {
-            *error = std::string("scene has no wheel node '") + kWheelNames[i] + "' under 'car'";
-            return false;
+            hasWheels_ = false;
+            if (warning)
+                *warning = std::string("no wheel node '") + kWheelNames[i] + "' under '" + carNode +
+                           "': the car drives, wheel reactions are off";
+            wheelOffsets_ = {};
+            break;
         }
         glm::vec3 centre = glm::vec3(carInv * scene.nodes[size_t(n)].world[3]);
         wheelOffsets_[size_t(i)] = {centre.x, 0.0f, centre.z};  // contact patch below the hub
-        wheels_[size_t(i)].rear = i >= 2;
     }
+    for (int i = 0; i < 4; ++i) wheels_[size_t(i)].rear = i >= 2;
     return true;
 }
 
@@ -128,6 +135,13 @@ glm::mat4 Vehicle::transform() const {
 }
 
 void Vehicle::update(const SceneData& scene, double t, bool stationary) {
+    if (!active_) {
+        pose_ = DrivePose{};
+        velocity_ = glm::vec3(0.0f);
+        for (WheelState& w : wheels_) w = WheelState{w.contact, glm::vec3(0.0f), 0.0f, "", w.rear};
+        collisionAmount_ = 0.0f;
+        return;
+    }
     pose_ = scriptPose(t);
     constexpr double h = 1.0 / 1000.0;  // central difference of the script, deterministic
     const DrivePose a = scriptPose(t - h), b = scriptPose(t + h);
@@ -142,7 +156,7 @@ void Vehicle::update(const SceneData& scene, double t, bool stationary) {
         w.contact = glm::vec3(m * glm::vec4(wheelOffsets_[i], 1.0f));
         const glm::vec3 r = w.contact - pose_.position;
         w.velocity = velocity_ + glm::cross(glm::vec3(0.0f, omega, 0.0f), r);
-        w.slip = w.rear ? pose_.rearSlip : pose_.frontSlip;
+        w.slip = !hasWheels_ ? 0.0f : w.rear ? pose_.rearSlip : pose_.frontSlip;
         w.surface = scene.surfaceAt(w.contact.x, w.contact.z);
     }
     // Body corners and side midpoints at bumper height against solid nodes.

@@ -33,8 +33,14 @@ public:
     static constexpr double kLoopSeconds = 18.0;
     static const char* const kWheelNames[4];  ///< wheel_FL, wheel_FR, wheel_RL, wheel_RR
 
-    /// Reads the wheel offsets from the scene's "car" subtree. False + error if a wheel is missing.
-    bool init(const SceneData& scene, std::string* error);
+    /// Reads the wheel offsets from the subtree of the node named `carNode`. False + error when
+    /// that node is absent. Wheels (kWheelNames) missing under it: `*warning` says so, the car
+    /// still drives and its wheels never slip (no wheel reactions).
+    bool init(const SceneData& scene, std::string* error, const std::string& carNode = "car",
+              std::string* warning = nullptr);
+    /// A scene without a car: the pose stays at the origin, nothing slips or collides.
+    void disable() { active_ = false; }
+    bool active() const { return active_; }
     /// Moves to script time t (seconds, wraps every kLoopSeconds) and refreshes wheels and collision.
     /// `stationary`: the car holds the pose of time t with zero velocity (wheels still slip).
     void update(const SceneData& scene, double t, bool stationary = false);
@@ -51,6 +57,8 @@ public:
 
 private:
     std::array<glm::vec3, 4> wheelOffsets_{};  ///< car-local contact points
+    bool active_ = true;
+    bool hasWheels_ = true;
     DrivePose pose_;
     glm::vec3 velocity_{0.0f};
     std::array<WheelState, 4> wheels_{};

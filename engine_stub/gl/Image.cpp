@@ -3,6 +3,11 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <climits>
+#include <vector>
+
+#include "io/SafeFile.h"
+
 namespace cube {
 
 bool writePng(const std::string& path, const ImageRGBA8& image, std::string* error) {
@@ -19,8 +24,17 @@ bool writePng(const std::string& path, const ImageRGBA8& image, std::string* err
 }
 
 bool readPng(const std::string& path, ImageRGBA8* image, std::string* error) {
+    // Through the shared opener: regular files only, never blocking on a FIFO, 64 MiB at most.
+    std::vector<unsigned char> bytes;
+    std::string why;
+    if (!fxio::readFileBounded(path, size_t(64) << 20, &bytes, nullptr, &why)) {
+        *error = path + ": cannot read image: " + why;
+        return false;
+    }
     int w = 0, h = 0, n = 0;
-    unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, 4);
+    unsigned char* data = bytes.size() > size_t(INT_MAX)
+                              ? nullptr
+                              : stbi_load_from_memory(bytes.data(), int(bytes.size()), &w, &h, &n, 4);
     if (!data) {
         *error = path + ": cannot read image (" + (stbi_failure_reason() ? stbi_failure_reason() : "?") + ")";
         return false;

@@ -1,23 +1,21 @@
 #include "gl/Program.h"
 
 #include <cctype>
-#include <fstream>
 #include <set>
 #include <sstream>
 
 #include "gl/Paths.h"
+#include "io/SafeFile.h"
 
 namespace cube::gl {
 
 namespace {
 
-bool readFile(const std::string& path, std::string* out) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return false;
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    *out = ss.str();
-    return true;
+// Shaders are small text files; the shared opener never blocks on a FIFO and refuses more.
+constexpr size_t kMaxShaderBytes = 1u << 20;
+
+bool readFile(const std::string& path, std::string* out, std::string* why) {
+    return fxio::readFileBounded(path, kMaxShaderBytes, out, nullptr, why);
 }
 
 bool expand(const std::string& dir, const std::string& name, int depth, std::string* out,
@@ -29,10 +27,10 @@ bool expand(const std::string& dir, const std::string& name, int depth, std::str
     }
     if (seen->count(name)) return true;  // each file once (include guard by name)
     seen->insert(name);
-    std::string text;
-    if (!readFile(dir + "/" + name, &text)) {
+    std::string text, why;
+    if (!readFile(dir + "/" + name, &text, &why)) {
         *error = (includedFrom.empty() ? std::string() : includedFrom + ": ") + "cannot open shader '" +
-                 dir + "/" + name + "'";
+                 dir + "/" + name + "': " + why;
         return false;
     }
     const int fileIndex = int(files->size());

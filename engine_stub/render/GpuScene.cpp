@@ -45,9 +45,15 @@ void GpuScene::upload(const SceneData& scene) {
 void GpuScene::record(const SceneData& scene, int movingRoot, const glm::mat4& movingTransform,
                       std::vector<MeshDraw>* out) const {
     out->clear();
+    // Nodes are in pre-order (a parent precedes its children), so "under the moving root" is one
+    // pass: linear in the node count, however deep the hierarchy.
+    moving_.assign(scene.nodes.size(), 0);
     for (size_t n = 0; n < scene.nodes.size(); ++n) {
         const SceneNode& node = scene.nodes[n];
-        const bool moving = movingRoot >= 0 && (int(n) == movingRoot || scene.isDescendant(int(n), movingRoot));
+        const int parent = node.parent;
+        moving_[n] = movingRoot >= 0 && (int(n) == movingRoot ||
+                                         (parent >= 0 && size_t(parent) < n && moving_[size_t(parent)]));
+        const bool moving = moving_[n] != 0;
         const glm::mat4 model = moving ? movingTransform * node.world : node.world;
         for (int mi : node.meshes) {
             if (mi < 0 || size_t(mi) >= ranges_.size()) continue;

@@ -44,6 +44,7 @@ private:
     };
     GLuint vao_ = 0, vbo_ = 0, ibo_ = 0;
     std::vector<Range> ranges_;
+    mutable std::vector<char> moving_;  ///< record() scratch: node is under the moving root
 };
 
 }  // namespace cube

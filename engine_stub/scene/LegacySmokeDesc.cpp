@@ -1,134 +1,408 @@
 #include "scene/LegacySmokeDesc.h"
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
-#include <set>
+#include <cstdio>
+#include <map>
+#include <sstream>
 
+#include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
+
+#include "io/SafeFile.h"
 
 namespace cube {
 
 namespace {
 
-std::string where(const std::string& file, const YAML::Node& n) {
-    const YAML::Mark m = n.Mark();
-    return file + ":" + std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1);
-}
+using fx::ErrorCode;
 
-bool readFloat(const std::string& file, const YAML::Node& n, const char* key, float lo, float hi,
-               float* out, std::string* error) {
-    try {
-        double v = n.as<double>();
-        if (!std::isfinite(v) || v < lo || v > hi) {
-            *error = where(file, n) + ": " + key + ": expected a number in [" + std::to_string(lo) +
-                     ", " + std::to_string(hi) + "]";
+// Collects diagnostics for one file, capped like the reaction loader's.
+class Report {
+public:
+    Report(const std::string& file, fx::Diagnostics* diags) : file_(file), diags_(diags) {}
+    void add(ErrorCode code, const YAML::Mark& mark, const std::string& key, const std::string& message) {
+        ++errors_;
+        if (!diags_) return;
+        if (errors_ > kMaxListed) {
+            if (errors_ == kMaxListed + 1) push(ErrorCode::TooManyErrors, YAML::Mark::null_mark(), "",
+                                                "more errors follow; fix these first");
+            return;
+        }
+        push(code, mark, key, message);
+    }
+    int errors() const { return errors_; }
+
+private:
+    static constexpr int kMaxListed = 100;
+    void push(ErrorCode code, const YAML::Mark& mark, const std::string& key, const std::string& message) {
+        fx::Diagnostic d;
+        d.code = code;
+        d.file = file_;
+        d.line = mark.line >= 0 ? mark.line + 1 : 0;
+        d.column = mark.column >= 0 ? mark.column + 1 : 0;
+        d.key = key;
+        d.message = message;
+        diags_->push_back(std::move(d));
+    }
+    std::string file_;
+    fx::Diagnostics* diags_;
+    int errors_ = 0;
+};
+
+// Counts documents without building nodes (YAML::LoadAll can loop forever on some garbage).
+class DocumentCounter : public YAML::EventHandler {
+public:
+    explicit DocumentCounter(std::vector<YAML::Mark>* starts) : starts_(starts) {}
+    void OnDocumentStart(const YAML::Mark& mark) override { starts_->push_back(mark); }
+    void OnDocumentEnd() override {}
+    void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
+    void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+    void OnSequenceEnd() override {}
+    void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+    void OnMapEnd() override {}
+
+private:
+    std::vector<YAML::Mark>* starts_;
+};
+
+// Control bytes and malformed UTF-8 are not YAML text; first offending byte reported.
+bool checkText(const std::string& text, Report& r) {
+    int line = 0, column = 0;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        const bool bad = (c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7F;
+        if (bad) {
+            YAML::Mark m = YAML::Mark::null_mark();
+            m.line = line;
+            m.column = column;
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "0x%02X", c);
+            r.add(ErrorCode::SyntaxError, m, "", std::string("binary data: byte ") + buf +
+                                                     " cannot appear in a YAML text file (expected UTF-8 text)");
             return false;
         }
-        *out = float(v);
-        return true;
-    } catch (const YAML::Exception&) {
-        *error = where(file, n) + ": " + key + ": expected a number";
-        return false;
+        if (c == '\n') {
+            ++line;
+            column = 0;
+        } else {
+            ++column;
+        }
     }
+    return true;
 }
 
-}  // namespace
+int nesting(const YAML::Node& n, int depth) {
+    if (depth > kLegacyMaxNesting) return depth;
+    int deepest = depth;
+    if (n.IsSequence()) {
+        for (const YAML::Node& c : n) deepest = std::max(deepest, nesting(c, depth + 1));
+    } else if (n.IsMap()) {
+        for (const auto& kv : n) deepest = std::max(deepest, nesting(kv.second, depth + 1));
+    }
+    return deepest;
+}
 
-namespace {
-// Reads every reaction of the 'reactions' list; may throw YAML::Exception (caught by the caller).
-bool readReactions(const std::string& path, const YAML::Node& list, std::vector<LegacySmokeDesc>* out,
-                   std::string* error);
-}  // namespace
+// Every map must name each key once: yaml-cpp would silently keep one of them.
+bool checkUniqueKeys(const YAML::Node& map, const std::string& path, Report& r) {
+    std::map<std::string, YAML::Mark> seen;
+    bool ok = true;
+    for (const auto& kv : map) {
+        const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
+        const auto [it, inserted] = seen.emplace(key, kv.first.Mark());
+        if (!inserted) {
+            r.add(ErrorCode::DuplicateKey, kv.first.Mark(), path.empty() ? key : path + "." + key,
+                  "key '" + key + "' appears twice in this map (first at line " +
+                      std::to_string(it->second.line + 1) + "); expected each key once");
+            ok = false;
+        }
+    }
+    return ok;
+}
 
-bool loadLegacySmoke(const std::string& path, std::vector<LegacySmokeDesc>* out, std::string* error) {
-    YAML::Node root;
+class Reader {
+public:
+    Reader(Report& r) : r_(r) {}
+
+    bool number(const YAML::Node& n, const std::string& key, double lo, double hi, double* out) {
+        if (!n.IsScalar()) {
+            r_.add(ErrorCode::WrongType, n.Mark(), key, "expected a number in [" + fmt(lo) + ", " + fmt(hi) + "]");
+            return false;
+        }
+        double v = 0.0;
+        std::istringstream s(n.Scalar());
+        s.imbue(std::locale::classic());
+        const std::string& t = n.Scalar();
+        if (t == ".nan" || t == ".NaN" || t == ".NAN" || t == ".inf" || t == "-.inf" || t == "+.inf" ||
+            t == ".Inf" || t == "-.Inf") {
+            r_.add(ErrorCode::NotFinite, n.Mark(), key, "'" + t + "' is not finite; expected a number in [" +
+                                                            fmt(lo) + ", " + fmt(hi) + "]");
+            return false;
+        }
+        if (!(s >> v) || !s.eof()) {
+            r_.add(ErrorCode::WrongType, n.Mark(), key, "'" + t + "' is not a number; expected a number in [" +
+                                                            fmt(lo) + ", " + fmt(hi) + "]");
+            return false;
+        }
+        if (!std::isfinite(v)) {
+            r_.add(ErrorCode::NotFinite, n.Mark(), key, "'" + t + "' is not finite");
+            return false;
+        }
+        if (v < lo || v > hi) {
+            r_.add(ErrorCode::OutOfRange, n.Mark(), key, fmt(v) + " is outside [" + fmt(lo) + ", " + fmt(hi) + "]");
+            return false;
+        }
+        *out = v;
+        return true;
+    }
+
+    bool real(const YAML::Node& n, const std::string& key, float lo, float hi, float* out) {
+        double v = 0.0;
+        if (!number(n, key, lo, hi, &v)) return false;
+        *out = float(v);
+        return true;
+    }
+
+    bool count(const YAML::Node& n, const std::string& key, int lo, int hi, int* out) {
+        if (n.IsScalar()) {
+            const std::string& t = n.Scalar();
+            const bool whole = !t.empty() && t.find_first_not_of("+-0123456789") == std::string::npos;
+            if (!whole) {
+                double v = 0.0;
+                std::istringstream s(t);
+                if ((s >> v) && s.eof() && std::isfinite(v) && v < 0) {
+                    r_.add(ErrorCode::NegativeCount, n.Mark(), key, "'" + t + "' is negative; expected a whole number in [" +
+                                                                        std::to_string(lo) + ", " + std::to_string(hi) + "]");
+                } else {
+                    r_.add(ErrorCode::WrongType, n.Mark(), key,
+                           "'" + t + "' is not a whole number; expected a whole number in [" + std::to_string(lo) +
+                               ", " + std::to_string(hi) + "]");
+                }
+                return false;
+            }
+        }
+        double v = 0.0;
+        if (n.IsScalar() && !n.Scalar().empty() && n.Scalar()[0] == '-' && n.Scalar() != "-0") {
+            r_.add(ErrorCode::NegativeCount, n.Mark(), key, "'" + n.Scalar() + "' is negative; expected a whole number in [" +
+                                                                std::to_string(lo) + ", " + std::to_string(hi) + "]");
+            return false;
+        }
+        if (!number(n, key, lo, hi, &v)) return false;
+        *out = int(v);
+        return true;
+    }
+
+    bool vec(const YAML::Node& n, const std::string& key, size_t size, float lo, float hi, float* out,
+             const char* expected) {
+        if (!n.IsSequence() || n.size() != size) {
+            r_.add(ErrorCode::WrongType, n.Mark(), key, std::string("expected ") + expected);
+            return false;
+        }
+        bool ok = true;
+        for (size_t i = 0; i < size; ++i)
+            ok = real(n[i], key + "[" + std::to_string(i) + "]", lo, hi, &out[i]) && ok;
+        return ok;
+    }
+
+    void reaction(const YAML::Node& r, const std::string& at, LegacySmokeDesc* d) {
+        if (!r.IsMap()) {
+            r_.add(ErrorCode::WrongType, r.Mark(), at, "expected a reaction map (name, wheels, rate, ...)");
+            return;
+        }
+        checkUniqueKeys(r, at, r_);
+        bool named = false;
+        for (const auto& kv : r) {
+            const std::string k = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
+            const std::string key = at + "." + k;
+            const YAML::Node& v = kv.second;
+            float pair[2] = {d->startSize, d->endSize};
+            if (k == "name") {
+                if (!v.IsScalar() || v.Scalar().empty()) {
+                    r_.add(ErrorCode::WrongType, v.Mark(), key, "expected a non-empty name");
+                } else {
+                    d->name = v.Scalar();
+                    named = true;
+                }
+            } else if (k == "wheels") {
+                if (!v.IsScalar() || (v.Scalar() != "rear" && v.Scalar() != "front" && v.Scalar() != "all")) {
+                    r_.add(ErrorCode::InvalidEnum, v.Mark(), key, "expected rear, front or all");
+                } else {
+                    d->wheels = v.Scalar();
+                }
+            } else if (k == "slip_threshold") real(v, key, 0, 1, &d->slipThreshold);
+            else if (k == "rate") real(v, key, 0, 10000, &d->rate);
+            else if (k == "capacity") count(v, key, 1, 100000, &d->capacity);
+            else if (k == "lifetime") real(v, key, 0.01f, 60, &d->lifetime);
+            else if (k == "size") {
+                if (vec(v, key, 2, 0.01f, 100, pair, "[start, end] in metres, each in [0.01, 100]")) {
+                    d->startSize = pair[0];
+                    d->endSize = pair[1];
+                }
+            } else if (k == "rise_speed") real(v, key, -10, 10, &d->riseSpeed);
+            else if (k == "hover") real(v, key, 0, 10, &d->hover);
+            else if (k == "alpha") real(v, key, 0, 1, &d->alpha);
+            else if (k == "tint") {
+                float t[3];
+                if (vec(v, key, 3, 0, 1, t, "[r, g, b], each in [0, 1]")) d->tint = glm::vec3(t[0], t[1], t[2]);
+            } else {
+                r_.add(ErrorCode::UnknownKey, kv.first.Mark(), key,
+                       "unknown key '" + k + "'; expected name, wheels, slip_threshold, rate, capacity, "
+                       "lifetime, size, rise_speed, hover, alpha or tint");
+            }
+        }
+        if (!named) r_.add(ErrorCode::MissingKey, r.Mark(), at + ".name", "a reaction needs a name");
+    }
+
+private:
+    static std::string fmt(double v) {
+        std::ostringstream s;
+        s << v;
+        return s.str();
+    }
+    Report& r_;
+};
+
+bool loadChecked(const std::string& text, Report& report, std::vector<LegacySmokeDesc>* result) {
+    if (text.size() > kLegacyMaxFileBytes) {
+        report.add(ErrorCode::FileTooLarge, YAML::Mark::null_mark(), "",
+                   "text is " + std::to_string(text.size()) + " bytes; expected at most " +
+                       std::to_string(kLegacyMaxFileBytes));
+        return false;
+    }
+    if (!checkText(text, report)) return false;
+    std::vector<YAML::Mark> starts;
     try {
-        root = YAML::LoadFile(path);
-    } catch (const YAML::BadFile&) {
-        *error = path + ": cannot open the legacy smoke file";
+        std::istringstream stream(text);
+        YAML::Parser parser(stream);
+        DocumentCounter counter(&starts);
+        while (starts.size() < 2 && parser.HandleNextDocument(counter)) {
+        }
+    } catch (const YAML::DeepRecursion& e) {
+        report.add(ErrorCode::TooDeep, e.mark, "", "nesting too deep (" + e.msg + ")");
         return false;
     } catch (const YAML::Exception& e) {
-        *error = path + ":" + std::to_string(e.mark.line + 1) + ": " + e.msg;
+        report.add(ErrorCode::SyntaxError, e.mark, "", "malformed YAML: " + e.msg);
+        return false;
+    }
+    if (starts.size() >= 2) {
+        report.add(ErrorCode::SyntaxError, starts[1].pos == starts[0].pos ? starts[0] : starts[1], "",
+                   starts[1].pos == starts[0].pos ? "malformed YAML: the parser cannot continue here"
+                                                  : "expected one YAML document, found a second one");
+        return false;
+    }
+    const YAML::Node root = YAML::Load(text);
+    if (starts.empty() || root.IsNull()) {
+        report.add(ErrorCode::EmptyFile, YAML::Mark::null_mark(), "",
+                   "the file holds nothing; expected a map with a 'reactions' list");
+        return false;
+    }
+    if (nesting(root, 0) > kLegacyMaxNesting) {
+        report.add(ErrorCode::TooDeep, root.Mark(), "",
+                   "nesting deeper than " + std::to_string(kLegacyMaxNesting) + " levels");
         return false;
     }
     if (!root.IsMap()) {
-        *error = path + ": expected a map with a 'reactions' list";
+        report.add(ErrorCode::WrongType, root.Mark(), "", "expected a map with a 'reactions' list");
         return false;
+    }
+    checkUniqueKeys(root, "", report);
+    for (const auto& kv : root) {
+        const std::string k = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
+        if (k != "reactions")
+            report.add(ErrorCode::UnknownKey, kv.first.Mark(), k, "unknown key '" + k + "'; expected 'reactions'");
     }
     const YAML::Node list = root["reactions"];
-    if (!list || !list.IsSequence()) {
-        *error = path + ": expected a map with a 'reactions' list";
+    if (!list) {
+        report.add(ErrorCode::MissingKey, root.Mark(), "reactions", "expected a 'reactions' list");
         return false;
     }
-    try {
-        return readReactions(path, list, out, error);
-    } catch (const YAML::Exception& e) {
-        *error = path + ":" + std::to_string(e.mark.line + 1) + ": " + e.msg;
+    if (!list.IsSequence()) {
+        report.add(ErrorCode::WrongType, list.Mark(), "reactions", "expected a list of reaction maps");
         return false;
     }
+    if (list.size() > size_t(kLegacyMaxReactions)) {
+        report.add(ErrorCode::OutOfRange, list.Mark(), "reactions",
+                   std::to_string(list.size()) + " reactions; expected at most " +
+                       std::to_string(kLegacyMaxReactions));
+        return false;
+    }
+    Reader reader(report);
+    std::map<std::string, int> names;
+    for (size_t i = 0; i < list.size(); ++i) {
+        const std::string at = "reactions[" + std::to_string(i) + "]";
+        LegacySmokeDesc d;
+        reader.reaction(list[i], at, &d);
+        if (!d.name.empty()) {
+            const auto [it, inserted] = names.emplace(d.name, list[i].Mark().line + 1);
+            if (!inserted)
+                report.add(ErrorCode::DuplicateName, list[i].Mark(), at + ".name",
+                           "reaction name '" + d.name + "' is already used at line " + std::to_string(it->second));
+        }
+        result->push_back(d);
+    }
+    return report.errors() == 0;
 }
 
-namespace {
-bool readReactions(const std::string& path, const YAML::Node& list, std::vector<LegacySmokeDesc>* out,
-                   std::string* error) {
+}  // namespace
+
+bool loadLegacySmokeText(const std::string& text, const std::string& nameForMessages,
+                         std::vector<LegacySmokeDesc>* out, fx::Diagnostics* diags) {
+    Report report(nameForMessages, diags);
+    const size_t firstDiag = diags ? diags->size() : 0;
     std::vector<LegacySmokeDesc> result;
-    for (const YAML::Node& r : list) {
-        if (!r.IsMap()) {
-            *error = where(path, r) + ": expected a reaction map";
-            return false;
+    bool ok = false;
+    try {  // nothing escapes: yaml-cpp reports through exceptions, allocation can fail
+        ok = loadChecked(text, report, &result);
+    } catch (const YAML::Exception& e) {
+        report.add(ErrorCode::SyntaxError, e.mark, "", "malformed YAML: " + e.msg);
+    } catch (const std::exception& e) {
+        report.add(ErrorCode::SyntaxError, YAML::Mark::null_mark(), "", std::string("unreadable YAML: ") + e.what());
+    }
+    if (!ok || report.errors() != 0) {
+        if (diags) {  // in file order (keys are checked in several passes), the overflow note last
+            std::stable_sort(diags->begin() + std::ptrdiff_t(firstDiag), diags->end(),
+                             [](const fx::Diagnostic& a, const fx::Diagnostic& b) {
+                                 auto rank = [](const fx::Diagnostic& d) {
+                                     return d.code == ErrorCode::TooManyErrors ? INT_MAX : d.line;
+                                 };
+                                 return rank(a) != rank(b) ? rank(a) < rank(b) : a.column < b.column;
+                             });
         }
-        LegacySmokeDesc d;
-        for (const auto& kv : r) {
-            const std::string key = kv.first.Scalar();
-            const YAML::Node& v = kv.second;
-            bool ok = true;
-            float size[2];
-            if (key == "name") d.name = v.Scalar();
-            else if (key == "wheels") {
-                d.wheels = v.Scalar();
-                if (d.wheels != "rear" && d.wheels != "front" && d.wheels != "all") {
-                    *error = where(path, v) + ": wheels: expected rear, front or all";
-                    return false;
-                }
-            } else if (key == "slip_threshold") ok = readFloat(path, v, "slip_threshold", 0, 1, &d.slipThreshold, error);
-            else if (key == "rate") ok = readFloat(path, v, "rate", 0, 10000, &d.rate, error);
-            else if (key == "capacity") {
-                float c = 0;
-                ok = readFloat(path, v, "capacity", 1, 100000, &c, error);
-                d.capacity = int(c);
-            } else if (key == "lifetime") ok = readFloat(path, v, "lifetime", 0.01f, 60, &d.lifetime, error);
-            else if (key == "size") {
-                if (!v.IsSequence() || v.size() != 2) {
-                    *error = where(path, v) + ": size: expected [start, end] in metres";
-                    return false;
-                }
-                ok = readFloat(path, v[0], "size[0]", 0.01f, 100, &size[0], error) &&
-                     readFloat(path, v[1], "size[1]", 0.01f, 100, &size[1], error);
-                d.startSize = size[0];
-                d.endSize = size[1];
-            } else if (key == "rise_speed") ok = readFloat(path, v, "rise_speed", -10, 10, &d.riseSpeed, error);
-            else if (key == "hover") ok = readFloat(path, v, "hover", 0, 10, &d.hover, error);
-            else if (key == "alpha") ok = readFloat(path, v, "alpha", 0, 1, &d.alpha, error);
-            else if (key == "tint") {
-                if (!v.IsSequence() || v.size() != 3) {
-                    *error = where(path, v) + ": tint: expected [r, g, b] in 0..1";
-                    return false;
-                }
-                for (int i = 0; i < 3 && ok; ++i) ok = readFloat(path, v[i], "tint", 0, 1, &d.tint[i], error);
-            } else {
-                *error = where(path, kv.first) + ": unknown key '" + key + "'";
-                return false;
-            }
-            if (!ok) return false;
-        }
-        if (d.name.empty()) {
-            *error = where(path, r) + ": a reaction needs a name";
-            return false;
-        }
-        result.push_back(d);
+        return false;
     }
     *out = std::move(result);
     return true;
 }
-}  // namespace
+
+bool loadLegacySmoke(const std::string& path, std::vector<LegacySmokeDesc>* out, fx::Diagnostics* diags) {
+    std::string text;
+    fxio::FileError code = fxio::FileError::None;
+    std::string why;
+    if (!fxio::readFileBounded(path, kLegacyMaxFileBytes, &text, &code, &why)) {
+        if (diags) {
+            fx::Diagnostic d;
+            d.code = code == fxio::FileError::TooLarge ? ErrorCode::FileTooLarge : ErrorCode::FileNotFound;
+            d.file = path;
+            d.message = (code == fxio::FileError::TooLarge ? "legacy smoke file is " : "cannot open legacy smoke file: ") +
+                        why + (code == fxio::FileError::NotRegular ? "; expected a .yaml file" : "");
+            diags->push_back(std::move(d));
+        }
+        return false;
+    }
+    return loadLegacySmokeText(text, path, out, diags);
+}
+
+bool loadLegacySmoke(const std::string& path, std::vector<LegacySmokeDesc>* out, std::string* error) {
+    fx::Diagnostics diags;
+    if (loadLegacySmoke(path, out, &diags)) return true;
+    error->clear();
+    for (size_t i = 0; i < diags.size(); ++i) *error += (i ? "\n" : "") + diags[i].str();
+    if (error->empty()) *error = path + ": legacy smoke file could not be loaded";
+    return false;
+}
 
 }  // namespace cube

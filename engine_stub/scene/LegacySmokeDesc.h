@@ -1,10 +1,20 @@
 #pragma once
 // The legacy smoke's data file (data/legacy_smoke.yaml): what the old CUBE SpecialFX read
-// before the plugin existed. A handful of keys; parsed with yaml-cpp, errors name file:line.
+// before the plugin existed. A handful of keys; parsed with yaml-cpp.
+//
+// Held to the reaction loader's rules and reported with the same named codes (fx::ErrorCode):
+// regular files only, read without blocking and at most kLegacyMaxFileBytes (FileNotFound,
+// FileTooLarge); UTF-8 text only and exactly one YAML document (SyntaxError); no key twice in a
+// map (DuplicateKey); whole numbers where a count is expected (WrongType); ranges (OutOfRange,
+// NotFinite, NegativeCount); unknown keys (UnknownKey). Every problem in the file is reported,
+// each with file, line, column and the dotted key ("reactions[0].capacity"); nothing throws.
+#include <cstddef>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "fx/Diagnostic.h"
 
 namespace cube {
 
@@ -25,7 +35,17 @@ struct LegacySmokeDesc {
     glm::vec3 tint{0.85f};
 };
 
-/// Loads every reaction in `path`. False + "file:line: message" on the first bad value.
+constexpr size_t kLegacyMaxFileBytes = 1u << 20;  ///< 1 MiB: the shipped file is 600 bytes
+constexpr int kLegacyMaxReactions = 64;
+constexpr int kLegacyMaxNesting = 8;               ///< collection levels; the schema needs 4
+
+/// Loads every reaction in `path`. On any error returns false, leaves `out` untouched and
+/// appends one diagnostic per problem to `diags` (may be null).
+bool loadLegacySmoke(const std::string& path, std::vector<LegacySmokeDesc>* out, fx::Diagnostics* diags);
+/// The same, with the diagnostics joined one per line ("file:line:col: error[Code] key: ...").
 bool loadLegacySmoke(const std::string& path, std::vector<LegacySmokeDesc>* out, std::string* error);
+/// Parses already-read text; `nameForMessages` names the file in diagnostics. The fuzz entry.
+bool loadLegacySmokeText(const std::string& text, const std::string& nameForMessages,
+                         std::vector<LegacySmokeDesc>* out, fx::Diagnostics* diags);
 
 }  // namespace cube

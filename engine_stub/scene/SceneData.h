@@ -48,6 +48,9 @@ struct SceneData {
     std::string sourcePath;  ///< the file it was loaded from (used in error messages)
     std::vector<SceneMesh> meshes;
     std::vector<SceneNode> nodes;
+    /// What the loader read past, one line each ("race.gltf: 2 animation(s) ignored: ..."),
+    /// for the caller to show once.
+    std::vector<std::string> warnings;
 
     /// Index of the first node named exactly `name`, or -1.
     int findNode(const std::string& name) const;

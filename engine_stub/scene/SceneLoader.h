@@ -1,5 +1,8 @@
 #pragma once
 // glTF 2.0 scene loading (.gltf + external/embedded buffers, or .glb) into SceneData.
+// Four stages, one file each: GltfReader (bytes, GLB container, tinygltf), GltfValidator (JSON
+// nesting pre-scan, the rules tinygltf accepts silently), MeshBuilder (buffers, accessors,
+// primitives), SceneAssembler (the node tree, linear time).
 //
 // Contract: bad data never crashes and never reads out of bounds. Every accessor, bufferView and
 // buffer range, component type, index, node reference and transform is validated before use; on
@@ -16,7 +19,7 @@ namespace cube {
 /// One code per validation rule; tests assert the code, people read the message.
 enum class SceneErrorCode {
     None = 0,
-    FileNotFound,   ///< the scene file does not exist or is not a regular file
+    FileNotFound,   ///< the scene file does not exist, is not a regular file, or cannot be read
     ParseError,     ///< not glTF: bad JSON, truncated file, bad GLB header (tinygltf's text kept)
     MissingBuffer,  ///< a buffer's data cannot be had: missing/short .bin, bad data URI, no BIN
     AccessorOutOfRange,  ///< accessor or bufferView range outside its bufferView/buffer
@@ -28,7 +31,12 @@ enum class SceneErrorCode {
     BadNode,       ///< node/child index out of range, cycle, shared child, malformed transform
     BadReference,  ///< an index to a mesh, accessor, bufferView, material or image is invalid
     Unsupported,   ///< valid glTF this loader does not handle: sparse, non-triangles, required
-                   ///< extensions
+                   ///< extensions (each named)
+    TooLarge,      ///< a file past 256 MiB or more nodes than the loader's limit
+    TooDeep,       ///< JSON nested past 128 levels, or a node hierarchy past 4096 levels
+    InvalidGltf,   ///< breaks a glTF rule (asset.version, a property of the wrong type); the
+                   ///< message names the Khronos validator's rule, e.g. [UNKNOWN_ASSET_MAJOR_VERSION]
+    BadUri,        ///< a buffer/image uri leaves the model's folder (absolute, "..", a scheme)
 };
 
 /// Stable name of a code ("AccessorOutOfRange"), for logs and test output.
@@ -47,6 +55,8 @@ struct SceneError {
 /// Loads a .gltf or .glb file (chosen by the "glTF" magic, the extension only names what was
 /// expected in errors). Uses the default scene (scene 0 when none is marked; all parentless nodes
 /// when the file has no scenes). `out` is replaced only on success; `error` may be null.
+/// Features read past (textures, skins, animations, cameras, used extensions) are listed once
+/// each in out->warnings.
 bool loadScene(const std::string& path, SceneData* out, SceneError* error);
 
 /// Checks that every name in `names` is a node of `scene`; on the first absent one returns false

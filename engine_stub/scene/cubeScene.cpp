@@ -4,9 +4,9 @@
 
 namespace cube {
 
-bool cubeScene::Init(const SceneData& data, std::string* error) {
+bool cubeScene::Init(const SceneData& data, std::string* error, const std::string& carNode) {
     data_ = data;
-    carNode_ = data_.findNode("car");
+    carNode_ = carNode.empty() ? -1 : data_.findNode(carNode);
     return renderer_.init(data_, error);
 }
 

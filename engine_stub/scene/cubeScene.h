@@ -34,7 +34,8 @@ public:
     cubeScene(const cubeScene&) = delete;
     cubeScene& operator=(const cubeScene&) = delete;
     /// Uploads the scene and builds the back end's programs. False + error (shader file:line, ...).
-    bool Init(const SceneData& data, std::string* error);
+    /// `carNode` names the subtree that moves with the car ("" or absent: nothing moves).
+    bool Init(const SceneData& data, std::string* error, const std::string& carNode = "car");
 
     /// The factory (cubeScene::CreateParticleSystem): a new system owned by the scene.
     cubeParticleSystem* CreateParticleSystem(cubeParticleSystem::Kind kind);

@@ -5,7 +5,6 @@
 #include <cstddef>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <new>
 #include <sstream>
 #include <system_error>
@@ -14,6 +13,7 @@
 #include <yaml-cpp/eventhandler.h>  // YAML::EventHandler (idem)
 #include <yaml-cpp/yaml.h>
 
+#include "../io/SafeFile.h"
 #include "ReactionSchema.h"
 #include "YamlCheck.h"
 
@@ -217,45 +217,17 @@ bool loadReactionText(const std::string& text, const std::string& nameForMessage
 }
 
 bool readReactionFileText(const std::string& path, std::string* text, Diagnostics* diags) {
-    std::error_code ec;
-    fs::file_status st = fs::status(path, ec);
-    if (ec || !fs::exists(st)) {
-        add(diags, ErrorCode::FileNotFound, path, 0, 0, "", "cannot open: no such file");
-        return false;
+    // One opener for every loader (io/SafeFile.h): regular files only, never blocks on a FIFO,
+    // never reads past the limit.
+    fxio::FileError code = fxio::FileError::None;
+    std::string why;
+    if (fxio::readFileBounded(path, kMaxFileBytes, text, &code, &why)) return true;
+    if (code == fxio::FileError::TooLarge) {
+        add(diags, ErrorCode::FileTooLarge, path, 0, 0, "", "file is " + why);
+    } else {
+        add(diags, ErrorCode::FileNotFound, path, 0, 0, "", "cannot open: " + why);
     }
-    if (!fs::is_regular_file(st)) {
-        add(diags, ErrorCode::FileNotFound, path, 0, 0, "", "cannot open: not a regular file");
-        return false;
-    }
-    uintmax_t size = fs::file_size(path, ec);
-    if (ec) {
-        add(diags, ErrorCode::FileNotFound, path, 0, 0, "", "cannot open: " + ec.message());
-        return false;
-    }
-    if (size > kMaxFileBytes) {
-        add(diags, ErrorCode::FileTooLarge, path, 0, 0, "",
-            "file is " + std::to_string(size) + " bytes; expected at most " +
-                std::to_string(kMaxFileBytes));
-        return false;
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        add(diags, ErrorCode::FileNotFound, path, 0, 0, "", "cannot open for reading");
-        return false;
-    }
-    // Read at most one byte past the limit: the file may have grown since file_size().
-    std::string data(static_cast<size_t>(size), '\0');
-    in.read(data.data(), static_cast<std::streamsize>(data.size()));
-    data.resize(static_cast<size_t>(in.gcount()));
-    char extra = 0;
-    while (data.size() <= kMaxFileBytes && in.get(extra)) data.push_back(extra);
-    if (data.size() > kMaxFileBytes) {
-        add(diags, ErrorCode::FileTooLarge, path, 0, 0, "",
-            "file grew past " + std::to_string(kMaxFileBytes) + " bytes while being read");
-        return false;
-    }
-    *text = std::move(data);
-    return true;
+    return false;
 }
 
 bool listReactionFiles(const std::string& dir, std::vector<std::string>* files,
@@ -267,11 +239,12 @@ bool listReactionFiles(const std::string& dir, std::vector<std::string>* files,
         add(diags, ErrorCode::FileNotFound, dir, 0, 0, "", "cannot list directory: " + ec.message());
         return false;
     }
+    // Every *.yaml entry is listed whatever it is (FIFO, symlink loop, folder): readReactionFileText
+    // then reports each one by name instead of it vanishing from the set without a word.
     for (; it != end; it.increment(ec)) {
         if (ec) break;
         const fs::path& p = it->path();
-        std::error_code fileEc;
-        if (p.extension() == ".yaml" && it->is_regular_file(fileEc)) found.push_back(p.string());
+        if (p.extension() == ".yaml") found.push_back(p.string());
     }
     if (ec) {
         add(diags, ErrorCode::FileNotFound, dir, 0, 0, "", "cannot list directory: " + ec.message());

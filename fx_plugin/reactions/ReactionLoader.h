@@ -38,9 +38,11 @@ bool loadReactionPath(const std::string& path, ReactionSet* out, Diagnostics* di
 bool loadReactionSources(const std::vector<ReactionSource>& sources, ReactionSet* out,
                          Diagnostics* diags);
 
-/// Reads a whole file, refusing more than kMaxFileBytes. Reports FileNotFound / FileTooLarge.
+/// Reads a whole regular file, refusing more than kMaxFileBytes, without blocking on a FIFO.
+/// Reports FileNotFound (missing, not a regular file, symlink loop) / FileTooLarge.
 bool readReactionFileText(const std::string& path, std::string* text, Diagnostics* diags);
-/// The *.yaml files directly in `dir`, sorted by file name. Reports FileNotFound when `dir`
+/// The *.yaml entries directly in `dir`, sorted by file name, of any kind (a FIFO or a dangling
+/// or looping symlink is listed so that reading it reports it). Reports FileNotFound when `dir`
 /// cannot be listed; an empty result is not an error here.
 bool listReactionFiles(const std::string& dir, std::vector<std::string>* files,
                        Diagnostics* diags);

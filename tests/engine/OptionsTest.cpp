@@ -63,3 +63,33 @@ TEST(Options, BadValuesAreRejectedNamingTheFlag) {
         }
     }
 }
+
+// Issue 15: values that parse but cannot make a sensible run are refused before it starts.
+TEST(Options, RunsThatCannotWorkAreRefusedBeforeTheyStart) {
+    const std::vector<std::pair<std::vector<const char*>, std::string>> bad = {
+        {{"--frames", "0"}, "--window"},
+        {{"--scene", ""}, "--scene"},
+        {{"--reactions", ""}, "--reactions"},
+        {{"--legacy-reactions", ""}, "--legacy-reactions"},
+        {{"--screenshot", ""}, "--screenshot"},
+        {{"--stats-json", ""}, "--stats-json"},
+        {{"--screenshot-every", "3", ""}, "--screenshot-every"},
+        {{"--car-node", ""}, "--car-node"},
+        {{"--screenshot", "/nonexistent-folder-for-cube-test/x.png"}, "does not exist"},
+        {{"--stats-json", "/proc/cube_test/s.json"}, "--stats-json"},
+        {{"--camera", "4,4,4,4,4,4"}, "eye is on the target"},
+        {{"--camera", "0,10,0,0,-5,0"}, "parallel to the up axis"},
+        {{"--camera", "0,1,0,inf,0,0"}, "--camera"},
+    };
+    for (const auto& [args, mention] : bad) {
+        Options o;
+        std::string err;
+        EXPECT_FALSE(parse(args, &o, &err)) << args[0];
+        EXPECT_NE(err.find(mention), std::string::npos) << args[0] << ": " << err;
+    }
+    Options o;
+    std::string err;
+    EXPECT_TRUE(parse({"--frames", "0", "--window"}, &o, &err)) << err;
+    EXPECT_TRUE(parse({"--camera", "0,10,0.5,0,0,0", "--car-node", "truck"}, &o, &err)) << err;
+    EXPECT_EQ(o.carNode, "truck");
+}
