@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "io/SafeFile.h"
 #include "render/EmbeddedResources.h"
 #include "render/PrivateGl.h"
 
@@ -20,12 +21,8 @@ bool readShader(const std::string& dir, const std::string& name, std::string* ou
         out->assign(reinterpret_cast<const char*>(r->data), r->size);
         return true;
     }
-    std::ifstream in(dir + "/" + name, std::ios::binary);
-    if (!in) return false;
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    *out = ss.str();
-    return true;
+    // Never blocks on a FIFO, reads regular files only, at most 1 MiB (a shader is a few KiB).
+    return fxio::readFileBounded(dir + "/" + name, size_t(1) << 20, out, nullptr, nullptr);
 }
 
 // Line numbers carry the file: file k's line n is reported as k * kFileLineStride + n. Source-string

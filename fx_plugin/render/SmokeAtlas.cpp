@@ -3,6 +3,7 @@
 #include "render/PrivateGl.h"
 #include <stb_image.h>
 
+#include "io/SafeFile.h"
 #include "render/EmbeddedResources.h"
 
 namespace fx {
@@ -20,8 +21,16 @@ bool SmokeAtlas::load(const std::string& dataDir, std::string* error) {
         const embedded::Resource* r = embedded::find(kFileName);
         if (r) pixels = stbi_load_from_memory(r->data, int(r->size), &w, &h, &channels, 4);
     } else {
+        // Read through SafeFile (regular files only, never blocking, at most 64 MiB), decode
+        // from memory.
         path = dataDir + "/" + kFileName;
-        pixels = stbi_load(path.c_str(), &w, &h, &channels, 4);
+        std::string bytes, why;
+        if (!fxio::readFileBounded(path, size_t(64) << 20, &bytes, nullptr, &why)) {
+            *error = path + ": cannot load the smoke atlas (" + why + ")";
+            return false;
+        }
+        pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w,
+                                       &h, &channels, 4);
     }
     if (!pixels) {
         const char* why = stbi_failure_reason();

@@ -280,3 +280,38 @@ TEST_F(ContractTest, PrepareGlReportsABrokenShaderAsDiagnostics) {
 
 }  // namespace
 }  // namespace fxtest
+
+namespace fxtest {
+namespace {
+
+TEST_F(ContractTest, AFifoInTheShaderOrDataFolderFailsByNameWithoutBlocking) {
+    // Override folders are read through SafeFile: a FIFO where a shader or the atlas should be
+    // is refused at once (a plain open would wait for a writer forever).
+    const std::string dir = testing::TempDir() + "/contract_fifo";
+    ASSERT_EQ(std::system(("rm -rf " + dir + " && mkdir -p " + dir + "/data && cp -r " CUBE_SOURCE_DIR
+                           "/shaders " + dir + "/shaders && rm " + dir + "/shaders/vs_particles.glsl && mkfifo " +
+                           dir + "/shaders/vs_particles.glsl && mkfifo " + dir + "/data/smoke_atlas.png")
+                              .c_str()),
+              0);
+    auto shaders = create(dir + "/shaders");
+    ASSERT_TRUE(shaders);
+    fx::Diagnostics diags;
+    EXPECT_FALSE(shaders->prepareGl(&diags));
+    ASSERT_FALSE(diags.empty());
+    EXPECT_NE(diags.front().str().find("vs_particles.glsl"), std::string::npos) << diags.front().str();
+
+    TestHostAdapter otherHost;
+    fx::PluginImports imports;
+    imports.host = &otherHost;
+    imports.dataDir = dir + "/data";
+    auto atlas = fxCreatePlugin(imports);
+    ASSERT_TRUE(atlas);
+    diags.clear();
+    EXPECT_FALSE(atlas->prepareGl(&diags));
+    ASSERT_FALSE(diags.empty());
+    EXPECT_EQ(diags.front().code, fx::ErrorCode::ResourceMissing);
+    EXPECT_NE(diags.front().message.find("a FIFO"), std::string::npos) << diags.front().message;
+}
+
+}  // namespace
+}  // namespace fxtest
