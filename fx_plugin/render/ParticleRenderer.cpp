@@ -125,15 +125,14 @@ bool ParticleRenderer::prepare(Diagnostics* out) {
     return ready && loadDiagnostics_.empty();
 }
 
-bool ParticleRenderer::sizesAgree(PassContext& ctx, const ViewInfo& view, Target color, Target depth) {
-    const int w = ctx.width(color), h = ctx.height(color);
-    const bool depthOk = !depth.valid() || (ctx.width(depth) == w && ctx.height(depth) == h);
-    if (w == view.width && h == view.height && depthOk) return true;
+bool ParticleRenderer::sizesAgree(PassContext& ctx, const ViewInfo& view, Target first, Target second) {
+    const int w = ctx.width(first), h = ctx.height(first);
+    const bool secondOk = !second.valid() || (ctx.width(second) == w && ctx.height(second) == h);
+    if (w == view.width && h == view.height && secondOk) return true;
     if (config_.errors) {
-        std::string what = "sceneColor is " + std::to_string(w) + "x" + std::to_string(h);
-        if (depth.valid()) {
-            what += ", sceneDepth " + std::to_string(ctx.width(depth)) + "x" +
-                    std::to_string(ctx.height(depth));
+        std::string what = "the scene targets are " + std::to_string(w) + "x" + std::to_string(h);
+        if (second.valid()) {
+            what += " and " + std::to_string(ctx.width(second)) + "x" + std::to_string(ctx.height(second));
         }
         what += ", ViewInfo " + std::to_string(view.width) + "x" + std::to_string(view.height) +
                 "; they must be equal; nothing drawn";
@@ -218,8 +217,9 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     const Target halfColor = frame.createTarget(QuarterResPath::kColorTarget,
                                                 QuarterResPath::colorTargetDesc());
     frame.addPass(QuarterResPath::kDownsamplePass, {depth}, {halfDepth},
-                  [this, record, color, depth, halfDepth](PassContext& ctx) {
-                      if (!sizesAgree(ctx, record->view, color, depth)) return;
+                  [this, record, depth, halfDepth](PassContext& ctx) {
+                      // Only what this pass declared may be touched: the scene depth.
+                      if (!sizesAgree(ctx, record->view, depth, Target{})) return;
                       GlStateGuard guard;
                       DebugGroup group(QuarterResPath::kDownsamplePass);
                       quarter_.downsampleDepth(ctx, depth, halfDepth);

@@ -84,8 +84,9 @@ private:
     };
 
     bool ensureLoaded();
-    /// True when the pass's targets agree with the view on its size; logs SizeMismatch if not.
-    bool sizesAgree(PassContext& ctx, const ViewInfo& view, Target color, Target depth);
+    /// True when `first` (and `second`, if valid: both targets this pass declared, sceneColor or
+    /// sceneDepth) have the view's size; logs SizeMismatch if not.
+    bool sizesAgree(PassContext& ctx, const ViewInfo& view, Target first, Target second);
     std::shared_ptr<ViewRecord> acquireRecord();
     void log(LogLevel level, const std::string& message) const;
     /// Draws every batch of `record` into the bound target. `sceneDepth` is the linear depth
