@@ -6,7 +6,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "fxbench_gl.h"
 #include "game/Game.h"
 #include "rtt/Clear.h"
 #include "rtt/Readback.h"
@@ -38,7 +37,6 @@ bool renderChaseDepth(cube::Game& game, std::vector<float>* depth, std::string* 
     {
         // The engine's own depth-prepass drawing (the back end), into this target.
         cube::rtt::ScopedTargetBinding bind(pool, target);
-        GlStateGuard guard;
         cube::cubeScene& sc = game.scene();
         const cube::ViewCamera& cam = game.chaseView().camera();
         cube::CameraMatrices m;

@@ -9,7 +9,7 @@
 #include <unistd.h>
 
 #include "fxbench_depth.h"
-#include "fxbench_fill_limit.h"
+#include "render/FillRateProbe.h"
 #include "fxbench_stats.h"
 #include "game/Game.h"
 #include "gl/Gl.h"
@@ -216,7 +216,7 @@ private:
                 continue;
             }
             const size_t covered = coverageMask(images[m.mode->name], images["nofx"], &mask);
-            const double fill = probe_.timeMs(game_.pool(), mask, w, h, 3);
+            const double fill = median(probe_.drawTimesMs(game_.pool(), mask, w, h, 3));
             const double particle = median(m.frameParticleMs);
             m.fillMs.push_back(fill);
             m.fillRatio.push_back(fill > 0.0 ? particle / fill : 0.0);
@@ -265,7 +265,7 @@ private:
     const RunConfig& config_;
     RunResult* out_;
     cube::Game game_;
-    FillLimitProbe probe_;
+    cube::FillRateProbe probe_;
     uint64_t edgeCount_ = 0, edgeSamples_ = 0;
 };
 

@@ -16,6 +16,8 @@ int checkErrors(const char* where);
 void resetErrorCount();
 /// True when the context has KHR_debug (groups, labels, callback).
 bool hasDebug();
+/// Waits for every GL command issued so far (frame timing with a CPU clock).
+void finish();
 
 /// RAII GL debug group: the pass, bucket or view name shows in debuggers (RenderDoc, apitrace).
 class DebugGroup {

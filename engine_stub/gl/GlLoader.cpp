@@ -60,6 +60,7 @@ int errorCount() { return g_errorCount; }
 std::string lastError() { return g_lastError; }
 void resetErrorCount() { g_errorCount = 0; g_lastError.clear(); }
 bool hasDebug() { return g_hasDebug; }
+void finish() { glFinish(); }
 
 int checkErrors(const char* where) {
     int n = 0;

@@ -1,48 +1,23 @@
-#include "fxbench_fill_limit.h"
+#include "render/FillRateProbe.h"
 
 #include <chrono>
 
-#include "fxbench_gl.h"
-#include "fxbench_stats.h"
+#include "render/ScopedGlState.h"
 #include "rtt/Clear.h"
 #include "rtt/RenderTargetPool.h"
 #include "rtt/ScopedTargetBinding.h"
 
-namespace fxbench {
+namespace cube {
 
-namespace {
-
-// A trivial textured quad: one texture fetch, straight alpha, nothing else. Kept here rather
-// than in shaders/ because it is the harness's measuring stick, not part of the engine.
-const char* kVertex = R"(#version 330 core
-layout(location = 0) in vec2 aPos;   // pixels, origin bottom-left
-uniform vec2 uViewSize;
-out vec2 vUv;
-void main() {
-    vUv = aPos / 64.0;
-    gl_Position = vec4(aPos / uViewSize * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
-const char* kFragment = R"(#version 330 core
-uniform sampler2D uTex;
-in vec2 vUv;
-layout(location = 0) out vec4 oColor;
-void main() { oColor = texture(uTex, vUv); }
-)";
-
-}  // namespace
-
-FillLimitProbe::~FillLimitProbe() {
-    if (program_) glDeleteProgram(program_);
+FillRateProbe::~FillRateProbe() {
     if (texture_) glDeleteTextures(1, &texture_);
     if (vbo_) glDeleteBuffers(1, &vbo_);
     if (vao_) glDeleteVertexArrays(1, &vao_);
 }
 
-bool FillLimitProbe::init(std::string* error) {
-    program_ = buildProgram(kVertex, kFragment, error);
-    if (!program_) return false;
-    GlStateGuard guard;
+bool FillRateProbe::init(std::string* error) {
+    if (!gl::Program::load("vs_fill_probe.glsl", "fs_fill_probe.glsl", &program_, error)) return false;
+    ScopedGlState guard;
     std::vector<uint8_t> texels(64 * 64 * 4);
     for (int y = 0; y < 64; ++y)
         for (int x = 0; x < 64; ++x) {
@@ -67,9 +42,10 @@ bool FillLimitProbe::init(std::string* error) {
     return true;
 }
 
-double FillLimitProbe::timeMs(cube::rtt::RenderTargetPool& pool, const std::vector<uint8_t>& mask, int w, int h,
-                              int repeats) {
-    if (!program_ || mask.size() != size_t(w) * size_t(h)) return 0.0;
+std::vector<double> FillRateProbe::drawTimesMs(rtt::RenderTargetPool& pool, const std::vector<uint8_t>& mask,
+                                               int w, int h, int repeats) {
+    std::vector<double> ms;
+    if (!program_.valid() || mask.size() != size_t(w) * size_t(h)) return ms;
     vertices_.clear();
     for (int row = 0; row < h; ++row) {
         const float y0 = float(h - 1 - row), y1 = y0 + 1.0f;  // GL rows count from the bottom
@@ -86,24 +62,23 @@ double FillLimitProbe::timeMs(cube::rtt::RenderTargetPool& pool, const std::vect
             vertices_.insert(vertices_.end(), quad, quad + 12);
         }
     }
-    if (vertices_.empty()) return 0.0;
+    if (vertices_.empty()) return ms;
 
-    cube::rtt::RenderTargetDesc desc;
+    rtt::RenderTargetDesc desc;
     desc.width = w;
     desc.height = h;
     desc.name = "fxbench.fill_limit";
-    const cube::rtt::RenderTargetHandle target = pool.acquire(desc);
-    if (!target.valid()) return 0.0;
-    std::vector<double> ms;
+    const rtt::RenderTargetHandle target = pool.acquire(desc);
+    if (!target.valid()) return ms;
     {
-        cube::rtt::ScopedTargetBinding bind(pool, target);
-        GlStateGuard guard;
+        rtt::ScopedTargetBinding bind(pool, target);
+        ScopedGlState guard;
         glBindVertexArray(vao_);
         glBindBuffer(GL_ARRAY_BUFFER, vbo_);
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices_.size() * sizeof(float)), vertices_.data(), GL_STREAM_DRAW);
-        glUseProgram(program_);
-        glUniform2f(glGetUniformLocation(program_, "uViewSize"), float(w), float(h));
-        glUniform1i(glGetUniformLocation(program_, "uTex"), 0);
+        glUseProgram(program_.id());
+        glUniform2f(program_.uniform("uViewSize"), float(w), float(h));
+        glUniform1i(program_.uniform("uTex"), 0);
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, texture_);
         glDisable(GL_DEPTH_TEST);
@@ -114,9 +89,9 @@ double FillLimitProbe::timeMs(cube::rtt::RenderTargetPool& pool, const std::vect
         glBlendEquation(GL_FUNC_ADD);
         const GLsizei count = GLsizei(vertices_.size() / 2);
         for (int i = -1; i < repeats; ++i) {  // i = -1: untimed (shader variant compile, upload)
-            cube::rtt::ClearValues cv;
+            rtt::ClearValues cv;
             cv.color[0] = {0.2f, 0.3f, 0.4f, 1.0f};
-            cube::rtt::clear(pool, target, cv);
+            rtt::clear(pool, target, cv);
             glFinish();
             const auto t0 = std::chrono::steady_clock::now();
             glDrawArrays(GL_TRIANGLES, 0, count);
@@ -126,7 +101,7 @@ double FillLimitProbe::timeMs(cube::rtt::RenderTargetPool& pool, const std::vect
         }
     }
     pool.release(target);
-    return median(ms);
+    return ms;
 }
 
-}  // namespace fxbench
+}  // namespace cube

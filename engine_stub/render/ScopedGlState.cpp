@@ -1,8 +1,8 @@
-#include "fxbench_gl.h"
+#include "render/ScopedGlState.h"
 
-namespace fxbench {
+namespace cube {
 
-GlStateGuard::GlStateGuard() {
+ScopedGlState::ScopedGlState() {
     glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
     glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vao_);
     glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &arrayBuffer_);
@@ -23,7 +23,7 @@ GlStateGuard::GlStateGuard() {
     scissor_ = glIsEnabled(GL_SCISSOR_TEST);
 }
 
-GlStateGuard::~GlStateGuard() {
+ScopedGlState::~ScopedGlState() {
     glUseProgram(GLuint(program_));
     glBindVertexArray(GLuint(vao_));
     glBindBuffer(GL_ARRAY_BUFFER, GLuint(arrayBuffer_));
@@ -40,50 +40,4 @@ GlStateGuard::~GlStateGuard() {
     (scissor_ ? glEnable : glDisable)(GL_SCISSOR_TEST);
 }
 
-namespace {
-
-GLuint compile(GLenum stage, const char* source, std::string* error) {
-    const GLuint s = glCreateShader(stage);
-    glShaderSource(s, 1, &source, nullptr);
-    glCompileShader(s);
-    GLint ok = GL_FALSE;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[2048] = {};
-        glGetShaderInfoLog(s, sizeof log, nullptr, log);
-        *error = std::string(stage == GL_VERTEX_SHADER ? "fxbench vertex shader: " : "fxbench fragment shader: ") + log;
-        glDeleteShader(s);
-        return 0;
-    }
-    return s;
-}
-
-}  // namespace
-
-GLuint buildProgram(const char* vertexSource, const char* fragmentSource, std::string* error) {
-    const GLuint vs = compile(GL_VERTEX_SHADER, vertexSource, error);
-    if (!vs) return 0;
-    const GLuint fs = compile(GL_FRAGMENT_SHADER, fragmentSource, error);
-    if (!fs) {
-        glDeleteShader(vs);
-        return 0;
-    }
-    const GLuint p = glCreateProgram();
-    glAttachShader(p, vs);
-    glAttachShader(p, fs);
-    glLinkProgram(p);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    GLint ok = GL_FALSE;
-    glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[2048] = {};
-        glGetProgramInfoLog(p, sizeof log, nullptr, log);
-        *error = std::string("fxbench program link: ") + log;
-        glDeleteProgram(p);
-        return 0;
-    }
-    return p;
-}
-
-}  // namespace fxbench
+}  // namespace cube

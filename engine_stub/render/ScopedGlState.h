@@ -1,23 +1,23 @@
 #pragma once
-// fxbench's own GL: a state guard and a program built from embedded source. The harness's probes
-// (depth for the edge mask, the fill limit) draw between frames, outside the frame graph, and
-// put back every GL state they touch so the next RenderFrame sees what the engine left.
+// A scoped snapshot of the GL state a draw outside the frame graph may change (the benchmark
+// probes draw between frames): they put back every state they touch, so the next frame sees what
+// the engine left.
 #include <string>
 
 #include "gl/Gl.h"
 
-namespace fxbench {
+namespace cube {
 
 /// Saves, and restores on destruction: current program, VAO, GL_ARRAY_BUFFER, active texture
 /// unit and its GL_TEXTURE_2D binding (unit 0 after restore is what it was), blend enable,
 /// functions and equations, depth test / function / write mask, face culling, scissor test.
 /// Framebuffer bindings and the viewport are rtt::ScopedTargetBinding's job.
-class GlStateGuard {
+class ScopedGlState {
 public:
-    GlStateGuard();
-    ~GlStateGuard();
-    GlStateGuard(const GlStateGuard&) = delete;
-    GlStateGuard& operator=(const GlStateGuard&) = delete;
+    ScopedGlState();
+    ~ScopedGlState();
+    ScopedGlState(const ScopedGlState&) = delete;
+    ScopedGlState& operator=(const ScopedGlState&) = delete;
 
 private:
     GLint program_ = 0, vao_ = 0, arrayBuffer_ = 0, activeTexture_ = 0, texture0_ = 0;
@@ -27,8 +27,5 @@ private:
               scissor_ = GL_FALSE;
 };
 
-/// A program from GLSL 3.30 core sources embedded in fxbench. Id 0 (draws nothing) on failure,
-/// with the compile/link log in `error`.
-GLuint buildProgram(const char* vertexSource, const char* fragmentSource, std::string* error);
 
-}  // namespace fxbench
+}  // namespace cube
