@@ -1,10 +1,13 @@
 // OSMesa headless context. This file sees GL/osmesa.h (and through it the system GL/gl.h), so
 // it must never include glad; GL calls go through loadGL's function pointers elsewhere.
+// libOSMesa is opened at run time (platform/SystemLibrary.h): the header gives types and
+// constants only, every OSMesa call goes through api_.
 #include <GL/osmesa.h>
 
 #include <vector>
 
 #include "platform/Platform.h"
+#include "platform/SystemLibrary.h"
 
 namespace cube {
 
@@ -12,16 +15,41 @@ std::string glRendererString();  // gl/GlLoader.cpp
 
 namespace {
 
+// The entry points this back end uses, each resolved by its own name from libOSMesa.
+#define CUBE_OSMESA_FUNCTIONS(X) \
+    X(OSMesaCreateContextAttribs) X(OSMesaMakeCurrent) X(OSMesaDestroyContext) X(OSMesaGetProcAddress)
+
+struct OSMesaApi {
+#define CUBE_DECLARE(name) decltype(&::name) name = nullptr;
+    CUBE_OSMESA_FUNCTIONS(CUBE_DECLARE)
+#undef CUBE_DECLARE
+};
+
+bool loadOSMesa(OSMesaApi* api, std::string* error) {
+    SystemLibraryDesc desc;
+    desc.backend = "osmesa";
+    desc.soname = "libOSMesa.so.8";
+    desc.overrideEnv = "CUBE_OSMESA_LIBRARY";
+    desc.install = "Debian's libosmesa6";
+    SystemLibrary lib;
+    if (!lib.open(desc, error)) return false;
+#define CUBE_RESOLVE(name) if (!lib.resolve(#name, &api->name, error)) return false;
+    CUBE_OSMESA_FUNCTIONS(CUBE_RESOLVE)
+#undef CUBE_RESOLVE
+    return true;
+}
+
 class OSMesaPlatform final : public Platform {
 public:
     ~OSMesaPlatform() override {
         if (ctx_) {
-            OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0);
-            OSMesaDestroyContext(ctx_);
+            api_.OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0);
+            api_.OSMesaDestroyContext(ctx_);
         }
     }
 
     bool init(const PlatformDesc& desc, std::string* error) {
+        if (!loadOSMesa(&api_, error)) return false;
         const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA,
                                OSMESA_DEPTH_BITS, 24,
                                OSMESA_STENCIL_BITS, 8,
@@ -29,7 +57,7 @@ public:
                                OSMESA_CONTEXT_MAJOR_VERSION, 3,
                                OSMESA_CONTEXT_MINOR_VERSION, 3,
                                0};
-        ctx_ = OSMesaCreateContextAttribs(attribs, nullptr);
+        ctx_ = api_.OSMesaCreateContextAttribs(attribs, nullptr);
         if (!ctx_) {
             *error = "OSMesa: could not create a 3.3 core context (is libosmesa6 installed?)";
             return false;
@@ -38,7 +66,7 @@ public:
             *error = "OSMesa: OSMesaMakeCurrent failed";
             return false;
         }
-        if (!loadGL(reinterpret_cast<GetProcFn>(&OSMesaGetProcAddress), error)) return false;
+        if (!loadGL(reinterpret_cast<GetProcFn>(api_.OSMesaGetProcAddress), error)) return false;
         renderer_ = glRendererString();
         return true;
     }
@@ -51,7 +79,9 @@ public:
     bool keyPressed(Key) override { return false; }
     void resize(int w, int h) override { makeCurrent(w, h); }
     std::string rendererName() const override { return renderer_; }
-    void* getProcAddress(const char* name) const override { return reinterpret_cast<void*>(OSMesaGetProcAddress(name)); }
+    void* getProcAddress(const char* name) const override {
+        return reinterpret_cast<void*>(api_.OSMesaGetProcAddress(name));
+    }
 
 private:
     // OSMesa needs a client colour buffer even though the engine renders into FBOs; a 0x0
@@ -61,9 +91,10 @@ private:
         height_ = h;
         const int bw = w > 0 ? w : 1, bh = h > 0 ? h : 1;
         buffer_.assign(size_t(bw) * size_t(bh) * 4u, 0);
-        return OSMesaMakeCurrent(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, bw, bh) == GL_TRUE;
+        return api_.OSMesaMakeCurrent(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, bw, bh) == GL_TRUE;
     }
 
+    OSMesaApi api_;
     OSMesaContext ctx_ = nullptr;
     std::vector<unsigned char> buffer_;
     int width_ = 0, height_ = 0;
