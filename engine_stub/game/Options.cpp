@@ -124,6 +124,8 @@ std::string usage() {
         "  --no-hud               leave out the HUD\n"
         "  --stats-json PATH      write frame statistics at exit\n"
         "SIGINT/SIGTERM finish the current frame, write --screenshot and --stats-json, exit 130/143.\n"
+        "Environment: CUBE_OSMESA_LIBRARY, CUBE_EGL_LIBRARY, CUBE_GLFW_LIBRARY load a back end from\n"
+        "another file; CUBE_SHADER_DIR reads shaders (the plugin's too) from a folder; CUBE_ROOT.\n"
         "Window keys: P prepass-EQUAL, Q quarter-res, M technique, B bilinear, H HUD, Esc quit.\n";
 }
 
