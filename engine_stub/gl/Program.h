@@ -1,21 +1,14 @@
 #pragma once
-// GLSL programs loaded from shaders/ (vs_*.glsl / fs_*.glsl), with `#include "file"` resolved
-// from the same folder. Compile and link errors are reported as "file:line: message" with the
-// original file and line, not the concatenated source's.
+// GLSL programs loaded from shaders/ (vs_*.glsl / fs_*.glsl) through the project's one source
+// loader (fx_plugin/shader/ShaderSource.h: `#include "file"` from the same folder, `#line`
+// markers that carry the file). Compile and link errors are reported as "file:line: message"
+// with the original file and line, not the concatenated source's.
 #include <string>
 #include <vector>
 
 #include "gl/Gl.h"
 
 namespace cube::gl {
-
-/// Reads `name` from `dir`, expands #include (depth-limited, each file once), and inserts
-/// #line directives whose source numbers index `files`. False + error when a file is missing.
-bool preprocessShader(const std::string& dir, const std::string& name, const std::string& defines,
-                      std::string* source, std::vector<std::string>* files, std::string* error);
-/// Rewrites a driver info log ("0:12(5): error ..." Mesa, "0(12) : error ..." NVIDIA) so each
-/// line names files[source]:line.
-std::string mapInfoLog(const std::string& log, const std::vector<std::string>& files);
 
 /// An owned GL program. A program that failed to build has id 0 and draws nothing.
 class Program {

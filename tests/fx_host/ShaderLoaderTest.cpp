@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "FxTestHost.h"
@@ -207,3 +208,43 @@ TEST_F(ShaderLoaderTest, MissingAtlasDisablesTheRendererWithAMessage) {
 
 }  // namespace
 }  // namespace fxtest
+
+// The one source loader's named codes, through an in-memory reader (what the engine, the plugin
+// and the harness share; no GL, no files).
+TEST(ShaderSource, EachFailureHasItsNamedCode) {
+    std::map<std::string, std::string> files = {
+        {"top.glsl", "#version 330 core\n#include \"mid.glsl\"\nvoid main() {}\n"},
+        {"mid.glsl", "float f() { return 1.0; }\n"},
+        {"noversion.glsl", "void main() {}\n"},
+        {"badinclude.glsl", "#version 330 core\n#include mid.glsl\n"},
+        {"missing.glsl", "#version 330 core\n#include \"nowhere.glsl\"\n"},
+        {"loop.glsl", "#version 330 core\n#include \"loop1.glsl\"\n"},
+    };
+    for (int i = 1; i <= fx::kMaxIncludeDepth + 2; ++i) {
+        files["loop" + std::to_string(i) + ".glsl"] = "#include \"loop" + std::to_string(i + 1) + ".glsl\"\n";
+    }
+    const fx::ShaderReader read = [&](const std::string& name, std::string* text, std::string* why) {
+        auto it = files.find(name);
+        if (it == files.end()) {
+            *why = "not in the test's table";
+            return false;
+        }
+        *text = it->second;
+        return true;
+    };
+    fx::ShaderSource src;
+    std::string error;
+    EXPECT_EQ(fx::expandShaderSource(read, "top.glsl", "", &src, &error), fx::ShaderError::None) << error;
+    EXPECT_EQ(src.files, (std::vector<std::string>{"top.glsl", "mid.glsl"}));
+    EXPECT_EQ(src.text.rfind("#version 330 core\n", 0), 0u);
+    EXPECT_EQ(fx::expandShaderSource(read, "noversion.glsl", "", &src, &error), fx::ShaderError::MissingVersion);
+    EXPECT_EQ(fx::expandShaderSource(read, "noversion.glsl", "", &src, &error, fx::VersionLine::Implied),
+              fx::ShaderError::None);
+    EXPECT_EQ(src.text.rfind("#version 330 core\n", 0), 0u);  // supplied by the loader
+    EXPECT_EQ(fx::expandShaderSource(read, "badinclude.glsl", "", &src, &error), fx::ShaderError::MalformedInclude);
+    EXPECT_NE(error.find("badinclude.glsl:2"), std::string::npos) << error;
+    EXPECT_EQ(fx::expandShaderSource(read, "missing.glsl", "", &src, &error), fx::ShaderError::FileNotFound);
+    EXPECT_NE(error.find("missing.glsl:2"), std::string::npos) << error;
+    EXPECT_EQ(fx::expandShaderSource(read, "loop.glsl", "", &src, &error), fx::ShaderError::IncludeTooDeep);
+    EXPECT_STREQ(fx::shaderErrorName(fx::ShaderError::IncludeTooDeep), "IncludeTooDeep");
+}
