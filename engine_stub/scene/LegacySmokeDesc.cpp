@@ -12,6 +12,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "io/SafeFile.h"
+#include "io/TextCheck.h"
 
 namespace cube {
 
@@ -72,26 +73,13 @@ private:
 
 // Control bytes and malformed UTF-8 are not YAML text; first offending byte reported.
 bool checkText(const std::string& text, Report& r) {
-    int line = 0, column = 0;
-    for (size_t i = 0; i < text.size(); ++i) {
-        const unsigned char c = static_cast<unsigned char>(text[i]);
-        const bool bad = (c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7F;
-        if (bad) {
-            YAML::Mark m = YAML::Mark::null_mark();
-            m.line = line;
-            m.column = column;
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "0x%02X", c);
-            r.add(ErrorCode::SyntaxError, m, "", std::string("binary data: byte ") + buf +
-                                                     " cannot appear in a YAML text file (expected UTF-8 text)");
-            return false;
-        }
-        if (c == '\n') {
-            ++line;
-            column = 0;
-        } else {
-            ++column;
-        }
+    fxio::NonTextByte bad;
+    if (!fxio::isYamlText(text, &bad)) {
+        YAML::Mark m = YAML::Mark::null_mark();
+        m.line = bad.line;
+        m.column = bad.column;
+        r.add(ErrorCode::SyntaxError, m, "", bad.message());
+        return false;
     }
     return true;
 }

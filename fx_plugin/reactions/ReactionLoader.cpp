@@ -14,6 +14,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "../io/SafeFile.h"
+#include "../io/TextCheck.h"
 #include "ReactionSchema.h"
 #include "YamlCheck.h"
 
@@ -67,51 +68,10 @@ YAML::Mark markAt(int line0, int column0) {
 // in a YAML file. Rejecting them here gives binary garbage a clear message and keeps bytes the
 // parser was never meant to see away from it. Reports the first offending byte only.
 bool checkEncoding(YamlCheck& check, const std::string& text) {
-    const auto* s = reinterpret_cast<const unsigned char*>(text.data());
-    const size_t n = text.size();
-    int line = 0, column = 0;
-    size_t i = (n >= 3 && s[0] == 0xEF && s[1] == 0xBB && s[2] == 0xBF) ? 3 : 0;  // UTF-8 BOM
-    while (i < n) {
-        unsigned char c = s[i];
-        size_t len = 0;
-        bool ok = true;
-        if (c < 0x80) {
-            len = 1;
-            ok = c >= 0x20 || c == '\t' || c == '\n' || c == '\r';
-            ok = ok && c != 0x7F;
-        } else if (c >= 0xC2 && c <= 0xDF) {
-            len = 2;
-        } else if (c >= 0xE0 && c <= 0xEF) {
-            len = 3;
-        } else if (c >= 0xF0 && c <= 0xF4) {
-            len = 4;
-        } else {
-            ok = false;
-        }
-        if (ok && len > 1) {
-            ok = i + len <= n;
-            for (size_t k = 1; ok && k < len; ++k) ok = (s[i + k] & 0xC0) == 0x80;
-            if (ok && len == 3) {
-                ok = !(c == 0xE0 && s[i + 1] < 0xA0) && !(c == 0xED && s[i + 1] >= 0xA0);
-            } else if (ok && len == 4) {
-                ok = !(c == 0xF0 && s[i + 1] < 0x90) && !(c == 0xF4 && s[i + 1] >= 0x90);
-            }
-        }
-        if (!ok) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "0x%02X", c);
-            check.report(ErrorCode::SyntaxError, markAt(line, column), "",
-                         std::string("binary data: byte ") + buf +
-                             " cannot appear in a YAML text file (expected UTF-8 text)");
-            return false;
-        }
-        if (c == '\n') {
-            ++line;
-            column = 0;
-        } else {
-            ++column;
-        }
-        i += len;
+    fxio::NonTextByte bad;
+    if (!fxio::isYamlText(text, &bad)) {
+        check.report(ErrorCode::SyntaxError, markAt(bad.line, bad.column), "", bad.message());
+        return false;
     }
     return true;
 }
