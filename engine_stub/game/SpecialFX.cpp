@@ -108,7 +108,10 @@ void SpecialFX::Dyn(float dt, const Vehicle& vehicle) {
 
 void SpecialFX::pollHotReload(cubeScene& scene) {
     if (!plugin_) return;
-    // A rejected reload is reported once, by the plugin through the host's log.
+    // A rejected reload is reported once, by the plugin through the host's log. Particle shader
+    // edits are picked up too when CUBE_SHADER_DIR points the plugin at a folder (a broken edit
+    // keeps the last good programs).
+    plugin_->pollShaderReload(nullptr);
     const bool reloaded = plugin_->pollHotReload(nullptr);
     if (reloaded) {
         std::fprintf(stderr, "reactions reloaded: %d live\n", plugin_->reactionCount());

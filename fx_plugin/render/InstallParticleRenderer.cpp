@@ -28,6 +28,7 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
                                                          static_cast<int>(batches->size()), options));
     });
     plugin.setPrepareHook([renderer](Diagnostics* out) { return renderer->prepare(out); });
+    plugin.setShaderReloadHook([renderer](Diagnostics* out) { return renderer->reloadShaders(out); });
 }
 
 }  // namespace fx

@@ -1,7 +1,9 @@
 #include "ParticleRenderer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <utility>
 
 #include "render/PrivateGl.h"
@@ -103,19 +105,74 @@ bool ParticleRenderer::ensureLoaded() {
         return false;
     }
     std::vector<std::string> errors;
-    programs_.build(config_.shaderDir, &errors);
-    quarter_.build(config_.shaderDir, &errors);
+    programs_->build(config_.shaderDir, &errors);
+    quarter_->build(config_.shaderDir, &errors);
     for (const std::string& e : errors) {
         log(LogLevel::Error, "fx: shader build failed:\n" + e);
         addShaderDiagnostics(e, &loadDiagnostics_);
     }
-    if (programs_.usableTechniques(false) == 0) {
+    if (programs_->usableTechniques(false) == 0) {
         log(LogLevel::Error, "fx: particle renderer disabled: no particle program built");
         return false;
     }
     stream_.create();
     ramp_.upload();
+    if (!config_.shaderDir.empty()) shaderStamp_ = shaderStamp();
     state_ = State::Ready;
+    return true;
+}
+
+uint64_t ParticleRenderer::shaderStamp() const {
+    // Size and modification time of every particle shader in the override folder (no file is
+    // opened: a FIFO dropped there cannot block the poll).
+    uint64_t h = 1469598103934665603ull;
+    auto mix = [&](uint64_t v) {
+        h ^= v;
+        h *= 1099511628211ull;
+    };
+    std::error_code ec;
+    std::vector<std::filesystem::path> files;
+    for (const auto& e : std::filesystem::directory_iterator(config_.shaderDir, ec)) {
+        const std::string name = e.path().filename().string();
+        if (name.find("particles") != std::string::npos && e.path().extension() == ".glsl") files.push_back(e.path());
+    }
+    std::sort(files.begin(), files.end());
+    for (const auto& f : files) {
+        for (char c : f.filename().string()) mix(uint64_t(uint8_t(c)));
+        mix(uint64_t(std::filesystem::file_size(f, ec)));
+        mix(uint64_t(std::filesystem::last_write_time(f, ec).time_since_epoch().count()));
+    }
+    return h;
+}
+
+bool ParticleRenderer::reloadShaders(Diagnostics* out) {
+    if (config_.shaderDir.empty() || state_ != State::Ready) return false;
+    const uint64_t stamp = shaderStamp();
+    if (stamp == shaderStamp_) return false;
+    shaderStamp_ = stamp;  // one attempt (and one message) per edit
+    GlStateGuard guard;
+    auto programs = std::make_unique<ParticlePrograms>();
+    auto quarter = std::make_unique<QuarterResPath>();
+    std::vector<std::string> errors;
+    programs->build(config_.shaderDir, &errors);
+    quarter->build(config_.shaderDir, &errors);
+    if (!errors.empty()) {
+        // The new programs are dropped (their destructors delete what did build); the running
+        // ones stay, so the smoke on screen does not change.
+        std::string text = "fx: particle shaders in " + config_.shaderDir +
+                           " changed but do not build; the last good programs are kept:";
+        Diagnostics diags;
+        for (const std::string& e : errors) {
+            text += "\n" + e;
+            addShaderDiagnostics(e, &diags);
+        }
+        log(LogLevel::Error, text);
+        if (out) out->insert(out->end(), diags.begin(), diags.end());
+        return false;
+    }
+    programs_ = std::move(programs);
+    quarter_ = std::move(quarter);
+    log(LogLevel::Info, "fx: particle shaders reloaded from " + config_.shaderDir);
     return true;
 }
 
@@ -162,15 +219,15 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     const uint32_t allTechniques = techniqueBit(Technique::Hard) | techniqueBit(Technique::Soft) |
                                    techniqueBit(Technique::Spherical);
     const bool wasReady = state_ == State::Ready;
-    bool quarterRes = options.quarterRes && (!wasReady || quarter_.ok());
-    uint32_t usable = wasReady ? programs_.usableTechniques(quarterRes) : allTechniques;
+    bool quarterRes = options.quarterRes && (!wasReady || quarter_->ok());
+    uint32_t usable = wasReady ? programs_->usableTechniques(quarterRes) : allTechniques;
     builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list);
     if (record->list.particleCount() == 0) return 0;
     if (!wasReady) {
         if (!ensureLoaded()) return 0;
-        quarterRes = options.quarterRes && quarter_.ok();
-        if (programs_.usableTechniques(quarterRes) != usable) {
-            usable = programs_.usableTechniques(quarterRes);
+        quarterRes = options.quarterRes && quarter_->ok();
+        if (programs_->usableTechniques(quarterRes) != usable) {
+            usable = programs_->usableTechniques(quarterRes);
             builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list);
         }
     }
@@ -222,13 +279,13 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
                       if (!sizesAgree(ctx, record->view, depth, Target{})) return;
                       GlStateGuard guard;
                       DebugGroup group(QuarterResPath::kDownsamplePass);
-                      quarter_.downsampleDepth(ctx, depth, halfDepth);
+                      quarter_->downsampleDepth(ctx, depth, halfDepth);
                   });
     frame.addPass(QuarterResPath::kQuarterPass, {halfDepth}, {halfColor},
                   [this, record, halfDepth, halfColor](PassContext& ctx) {
                       GlStateGuard guard;
                       DebugGroup group(QuarterResPath::kQuarterPass);
-                      quarter_.beginQuarter(ctx, halfColor);
+                      quarter_->beginQuarter(ctx, halfColor);
                       drawBatches(*record, ctx.texture(halfDepth, 0).name, true);
                   });
     const bool bilinear = options.bilinearUpsample;
@@ -236,7 +293,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
                   [this, color, halfColor, halfDepth, depth, bilinear](PassContext& ctx) {
                       GlStateGuard guard;
                       DebugGroup group(QuarterResPath::kCompositePass);
-                      quarter_.composite(ctx, color, halfColor, halfDepth, depth, bilinear);
+                      quarter_->composite(ctx, color, halfColor, halfDepth, depth, bilinear);
                   });
     return drawn;
 }
@@ -262,7 +319,7 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
     const glm::vec2 slopes = frustumSlopes(view.proj);
     for (const DrawBatch& batch : list.batches) {
         const ParticleProgram& p =
-            programs_.get(ParticlePrograms::variantFor(batch.technique, quarterRes));
+            programs_->get(ParticlePrograms::variantFor(batch.technique, quarterRes));
         if (!p.program) continue;
         const bool zTest = batch.technique == Technique::Hard && !quarterRes;
         if (zTest) {

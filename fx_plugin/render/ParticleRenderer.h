@@ -72,6 +72,12 @@ public:
     /// with every problem appended to `out` (the technique that did build still draws).
     bool prepare(Diagnostics* out);
 
+    /// With Config::shaderDir set and the renderer loaded: when a particle shader file there
+    /// changed since the running programs were built, builds new programs; all build -> they go
+    /// live (true); any fails -> the running programs stay, the failure is logged once for this
+    /// edit and appended to `out`, false. Needs the host's context current.
+    bool reloadShaders(Diagnostics* out);
+
     State state() const { return state_; }
     const std::string& shaderDir() const { return config_.shaderDir; }
     const InstanceStream& instanceStream() const { return stream_; }
@@ -84,6 +90,7 @@ private:
     };
 
     bool ensureLoaded();
+    uint64_t shaderStamp() const;
     /// True when `first` (and `second`, if valid: both targets this pass declared, sceneColor or
     /// sceneDepth) have the view's size; logs SizeMismatch if not.
     bool sizesAgree(PassContext& ctx, const ViewInfo& view, Target first, Target second);
@@ -100,8 +107,10 @@ private:
     SmokeAtlas atlas_;
     ColorRampTexture ramp_;
     InstanceStream stream_;
-    ParticlePrograms programs_;
-    QuarterResPath quarter_;
+    // Owned through pointers so a shader reload can build new ones beside them and swap.
+    std::unique_ptr<ParticlePrograms> programs_ = std::make_unique<ParticlePrograms>();
+    std::unique_ptr<QuarterResPath> quarter_ = std::make_unique<QuarterResPath>();
+    uint64_t shaderStamp_ = 0;  ///< shaderStamp() when the running programs were built
     DrawListBuilder builder_;
     std::vector<std::shared_ptr<ViewRecord>> records_;
     std::vector<const std::vector<ColorStop>*> rampInputs_;

@@ -137,6 +137,10 @@ bool PluginImpl::prepareGl(Diagnostics* out) {
     return prepareHook_ ? prepareHook_(out) : true;
 }
 
+bool PluginImpl::pollShaderReload(Diagnostics* out) {
+    return shaderReloadHook_ ? shaderReloadHook_(out) : false;
+}
+
 ErrorCode PluginImpl::declarePasses(const ViewInfo& view, FrameBuilder& frame) {
     std::string bad;
     if (view.width <= 0 || view.height <= 0) {

@@ -49,11 +49,14 @@ public:
     ErrorCode declarePasses(const ViewInfo& view, FrameBuilder& frame) override;
     Stats stats() const override;
     ParticleCheck checkParticles() const override;
+    bool pollShaderReload(Diagnostics* out) override;
 
     /// The renderer's entry; pass an empty function to remove it.
     void setRenderHook(RenderHook hook) { renderHook_ = std::move(hook); }
     /// The renderer's Plugin::prepareGl.
     void setPrepareHook(PrepareHook hook) { prepareHook_ = std::move(hook); }
+    /// The renderer's Plugin::pollShaderReload.
+    void setShaderReloadHook(PrepareHook hook) { shaderReloadHook_ = std::move(hook); }
     /// Where refused calls are reported (the renderer reports SizeMismatch here).
     ApiErrors& apiErrors() const { return errors_; }
     /// Called by the render hook: particles drawn in the last declared view (Stats::particlesDrawn).
@@ -84,6 +87,7 @@ private:
     RenderOptions options_;
     RenderHook renderHook_;
     PrepareHook prepareHook_;
+    PrepareHook shaderReloadHook_;
     mutable ApiErrors errors_;  // mutable: a const query (reactionName) may refuse too
     int particlesDrawn_ = 0;
     int reloads_ = 0;

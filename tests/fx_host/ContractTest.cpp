@@ -5,7 +5,11 @@
 // files on disk draw.
 #include <glad/gl.h>
 
+#include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <limits>
 
 #include "FxTestHost.h"
@@ -311,6 +315,75 @@ TEST_F(ContractTest, AFifoInTheShaderOrDataFolderFailsByNameWithoutBlocking) {
     ASSERT_FALSE(diags.empty());
     EXPECT_EQ(diags.front().code, fx::ErrorCode::ResourceMissing);
     EXPECT_NE(diags.front().message.find("a FIFO"), std::string::npos) << diags.front().message;
+}
+
+}  // namespace
+}  // namespace fxtest
+
+namespace fxtest {
+namespace {
+
+// Live shader edits (PluginImports::shaderDir): a broken edit keeps the last good programs and
+// is reported once; a good edit goes live.
+TEST_F(ContractTest, ABrokenShaderEditKeepsTheLastGoodProgramsAndSaysSoOnce) {
+    const std::string dir = testing::TempDir() + "/contract_shader_reload";
+    ASSERT_EQ(std::system(("rm -rf " + dir + " && cp -r " CUBE_SOURCE_DIR "/shaders " + dir).c_str()), 0);
+    const std::string soft = dir + "/fs_particles_soft.glsl";
+    std::string original;
+    {
+        std::ifstream in(soft);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        original = ss.str();
+    }
+    auto write = [&](const std::string& text, int secondsAhead) {
+        {
+            std::ofstream out(soft, std::ios::trunc);
+            out << text;
+        }
+        // A distinct modification time for each edit, whatever the file system's clock step.
+        const auto t = std::filesystem::file_time_type::clock::now() + std::chrono::seconds(secondsAhead);
+        std::filesystem::last_write_time(soft, t);
+    };
+    auto live = create(dir);
+    ASSERT_TRUE(live);
+    ASSERT_TRUE(live->prepareGl(nullptr));
+    fx::RenderOptions o;
+    o.techniqueOverride = fx::Technique::Soft;
+    live->setRenderOptions(o);
+    simulate(*live, host, 60);
+    const Image good = render(live.get(), view);
+    const Image without = render(nullptr, view);
+    ASSERT_GT(countDiffering(good, without, 2), 500);
+    EXPECT_FALSE(live->pollShaderReload(nullptr));  // nothing changed
+
+    allowShaderCompilerMessages();
+    write(original + "\nthis line is not GLSL\n", 10);
+    fx::Diagnostics diags;
+    EXPECT_FALSE(live->pollShaderReload(&diags));
+    ASSERT_FALSE(diags.empty());
+    EXPECT_EQ(diags.front().code, fx::ErrorCode::ShaderBuild);
+    EXPECT_EQ(diags.front().file, "fs_particles_soft.glsl");
+    auto count = [&](const std::string& fragment) {
+        int n = 0;
+        for (const std::string& e : host.errors()) n += e.find(fragment) != std::string::npos;
+        return n;
+    };
+    EXPECT_EQ(count("the last good programs are kept"), 1);
+    EXPECT_EQ(countDiffering(render(live.get(), view), good, 0), 0);  // still the good programs
+    EXPECT_FALSE(live->pollShaderReload(nullptr));  // the same broken edit: not reported again
+    EXPECT_EQ(count("the last good programs are kept"), 1);
+
+    // A good edit that visibly changes the smoke (half the alpha) goes live.
+    std::string dimmed = original;
+    ASSERT_NE(dimmed.rfind("oColor"), std::string::npos);
+    dimmed.insert(dimmed.rfind('}'), "    oColor *= 0.5;\n");
+    write(dimmed, 20);
+    diags.clear();
+    EXPECT_TRUE(live->pollShaderReload(&diags));
+    EXPECT_TRUE(diags.empty());
+    EXPECT_TRUE(host.logged("particle shaders reloaded"));
+    EXPECT_GT(countDiffering(render(live.get(), view), good, 2), 500);
 }
 
 }  // namespace

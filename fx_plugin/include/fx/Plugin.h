@@ -13,7 +13,8 @@
 //   6. Each frame, each view, while building its frame graph: declarePasses(view, frame); then
 //      the host executes the declared passes (in order, after its opaque scene and sky) with its
 //      context current.
-//   7. pollHotReload() whenever it likes (e.g. once a second); no GL needed.
+//   7. pollHotReload() whenever it likes (e.g. once a second); no GL needed. With a shaderDir
+//      override, pollShaderReload() (context current) picks up shader edits.
 //   8. Destroy the plugin with the same GL context current (it deletes its GL objects).
 //
 // Threading: the plugin is not thread-safe. Call it from one thread at a time; the calls that
@@ -90,6 +91,14 @@ public:
     virtual Stats stats() const = 0;
     /// Counts live particles, capacity and non-finite state values (O(particles)).
     virtual ParticleCheck checkParticles() const = 0;
+
+    /// Live shader edits: with PluginImports::shaderDir set, rebuilds the particle programs when
+    /// a particle shader file there changed since the running ones were built. Needs the host's
+    /// GL context current; cheap when nothing changed (it only stats the files). Returns true
+    /// when new programs went live. A change that does not build keeps the last good programs:
+    /// false, ShaderBuild diagnostics ("file:line") in `out` and in the log, once per edit.
+    /// Without shaderDir (the embedded shaders) it does nothing.
+    virtual bool pollShaderReload(Diagnostics* out) = 0;
 };
 
 /// What the host hands the plugin at creation. Defaults: this header's API version, no host
