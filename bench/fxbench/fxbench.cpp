@@ -21,6 +21,7 @@ int runSingle(const fxbench::BenchOptions& o) {
     fxbench::RunConfig cfg;
     cfg.scenario = sc;
     cfg.game = fxbench::gameOptions(*sc, o);
+    cfg.cameraQuads = fxbench::cameraQuads(*sc);
     cfg.frames = o.frames;
     cfg.rounds = o.rounds;
     cfg.warmup = o.warmup;

@@ -46,8 +46,7 @@ bool renderChaseDepth(cube::Game& game, std::vector<float>* depth, std::string* 
         m.proj = cam.proj(m.aspect);
         std::vector<cube::MeshDraw> draws;
         sc.renderer().meshes().record(sc.data(), sc.carNode(), sc.carTransform(), &draws);
-        const cube::OverdrawPanels panels{game.options().overdrawLayers, game.options().overdrawCost};
-        sc.renderer().depthPrepass(draws, {}, m, panels);
+        sc.renderer().depthPrepass(draws, {}, m, game.cameraQuads());
     }
     const cube::rtt::RttError re = cube::rtt::readFloat(pool, target, 0, cube::rtt::FloatLayout::Native, depth);
     pool.release(target);

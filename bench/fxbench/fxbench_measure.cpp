@@ -76,6 +76,7 @@ public:
 
     bool run(std::string* error) {
         if (!game_.Init(config_.game, error)) return false;
+        game_.setCameraQuads(config_.cameraQuads);
         if (!probe_.init(error)) return false;
         out_->renderer = game_.platform().rendererName();
         out_->backend = cube::backendName(game_.platform().backend());

@@ -17,6 +17,7 @@ namespace fxbench {
 struct RunConfig {
     const Scenario* scenario = nullptr;
     cube::Options game;                  ///< from gameOptions()
+    cube::CameraQuads cameraQuads;       ///< from cameraQuads(): the scenario's overdraw panels
     int frames = 0, rounds = 1, warmup = 0, errorFrames = 0;
     std::vector<std::string> selected;   ///< modes asked for (empty = all)
     std::string imagesDir;               ///< PNGs of the last error frame (empty = none)

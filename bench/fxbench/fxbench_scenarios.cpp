@@ -1,5 +1,7 @@
 #include "fxbench_scenarios.h"
 
+#include <algorithm>
+
 #include "fxbench_options.h"
 #include "gl/Paths.h"
 
@@ -69,6 +71,24 @@ std::string scenarioNameList() {
     return s;
 }
 
+cube::CameraQuads cameraQuads(const Scenario& scenario) {
+    // `overdrawLayers` opaque panels facing the camera from 40 m down to 20 m, drawn back to
+    // front (the worst order for depth test LESS) over the upper 70 % of the view.
+    cube::CameraQuads q;
+    q.cost = scenario.overdrawCost;
+    const int layers = scenario.overdrawLayers;
+    for (int i = 0; i < layers; ++i) {
+        cube::CameraQuad p;
+        p.distance = 40.0f - 20.0f * float(i) / float(std::max(1, layers - 1));
+        p.centerY = 0.3f;
+        p.halfWidth = 0.95f;
+        p.halfHeight = 0.7f;
+        p.color = glm::vec4(0.3f + 0.05f * float(i % 8), 0.35f, 0.5f - 0.03f * float(i % 8), 1.0f);
+        q.quads.push_back(p);
+    }
+    return q;
+}
+
 cube::Options gameOptions(const Scenario& scenario, const BenchOptions& bench) {
     cube::Options o;
     o.width = bench.width;
@@ -83,8 +103,6 @@ cube::Options gameOptions(const Scenario& scenario, const BenchOptions& bench) {
     // so no timed render pays for re-creating targets another mode's frames let expire.
     o.poolFramesUntilFree = 64;
     o.mirror = bench.mirror;
-    o.overdrawLayers = scenario.overdrawLayers;
-    o.overdrawCost = scenario.overdrawCost;
     o.fixedCamera = scenario.fixedCamera;
     for (int i = 0; i < 3; ++i) {
         o.cameraEye[i] = scenario.eye[i];

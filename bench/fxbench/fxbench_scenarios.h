@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "game/Options.h"
+#include "render/SceneRenderer.h"
 
 namespace fxbench {
 
@@ -31,6 +32,8 @@ std::string scenarioNameList();
 /// The Game options for `scenario` under the bench's flags: fixed dt 1/60, the seed, size,
 /// backend, HUD off, mirror as asked.
 cube::Options gameOptions(const Scenario& scenario, const BenchOptions& bench);
+/// The scenario's overdraw panels as quads on the chase camera (none unless overdrawLayers > 0).
+cube::CameraQuads cameraQuads(const Scenario& scenario);
 
 /// The fixed camera the fill scenario and the particle sweep use: low, beside the burnout
 /// donut, looking at the pivot the car spins around.

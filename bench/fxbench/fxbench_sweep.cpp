@@ -128,6 +128,7 @@ int runSweep(const BenchOptions& options) {
         RunConfig cfg;
         cfg.scenario = &sc;
         cfg.game = gameOptions(sc, bo);
+        cfg.cameraQuads = cameraQuads(sc);
         cfg.frames = bo.frames;
         cfg.rounds = bo.rounds;
         cfg.warmup = bo.warmup;

@@ -43,6 +43,10 @@ public:
 
     Options& options() { return options_; }
     const Options& options() const { return options_; }
+    /// Opaque quads the application attaches to the main (chase) camera from the next frame on
+    /// (the benchmark's overdraw scenario); empty = none.
+    void setCameraQuads(CameraQuads quads) { cameraQuads_ = std::move(quads); }
+    const CameraQuads& cameraQuads() const { return cameraQuads_; }
     Platform& platform() { return *platform_; }
     SpecialFX& specialFX() { return specialFX_; }
     cubeScene& scene() { return scene_; }
@@ -71,6 +75,7 @@ private:
     void frameSceneBounds();
 
     Options options_;
+    CameraQuads cameraQuads_;
     std::unique_ptr<Platform> platform_;
     SceneData sceneData_;
     cubeScene scene_;

@@ -40,8 +40,6 @@ struct Options {
     bool help = false;
     // Harness switches (fxbench; no command-line flag in cube_game).
     bool effects = true;          ///< false: the bare engine, no particle passes at all
-    int overdrawLayers = 0;       ///< opaque costly panels stacked in front of the chase camera
-    int overdrawCost = 16;
     int poolFramesUntilFree = 3;  ///< render targets unused this many frames are freed
     bool stationaryCar = false;   ///< the car holds its start pose, velocity 0 (wheels still spin)
     bool fixedCamera = false;     ///< chase view from cameraEye towards cameraTarget (world space)

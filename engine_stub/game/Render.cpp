@@ -59,8 +59,7 @@ void Render::Dyn(Game& game) {
     settings.prepassEqual = game.options_.prepassEqual;
     settings.plugin = game.options_.effects ? game.specialFX_.plugin() : nullptr;
     settings.drawLegacy = game.options_.effects;
-    settings.overdrawLayers = game.options_.overdrawLayers;
-    settings.overdrawCost = game.options_.overdrawCost;
+    settings.cameraQuads = game.cameraQuads_.empty() ? nullptr : &game.cameraQuads_;
     settings.hud = game.options_.hud;
     if (settings.hud) {
         char text[160];

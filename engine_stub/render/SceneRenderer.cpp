@@ -27,7 +27,7 @@ bool SceneRenderer::init(const SceneData& data, std::string* error) {
     if (!gl::Program::load("vs_fullscreen.glsl", "fs_blit.glsl", &blitProgram_, error)) return false;
     if (!gl::Program::load("vs_mesh.glsl", "fs_mesh_costly.glsl", &costlyProgram_, error)) return false;
     if (!panelVao_) {
-        // Two triangles, position + normal, as GpuScene lays out vertices.
+        // Two triangles, position + normal, as GpuScene lays out vertices (the camera quads).
         const float v[] = {-1, -1, 0, 0, 0, 1, 1, -1, 0, 0, 0, 1, 1, 1, 0, 0, 0, 1,
                            -1, -1, 0, 0, 0, 1, 1, 1,  0, 0, 0, 1, -1, 1, 0, 0, 0, 1};
         glGenVertexArrays(1, &panelVao_);
@@ -54,47 +54,45 @@ SceneRenderer::~SceneRenderer() {
     if (emptyVao_) glDeleteVertexArrays(1, &emptyVao_);
 }
 
-void SceneRenderer::drawOverdrawPanels(const gl::Program& p, const OverdrawPanels& panels,
-                                       const CameraMatrices& cam) const {
-    const int layers = panels.layers;
-    if (layers <= 0) return;
+void SceneRenderer::drawCameraQuads(const gl::Program& p, const CameraQuads& quads,
+                                    const CameraMatrices& cam) const {
+    if (quads.empty()) return;
     const glm::mat4 camToWorld = glm::inverse(cam.view);
     const GLint uModel = p.uniform("uModel"), uColor = p.uniform("uBaseColor");
     glBindVertexArray(panelVao_);
-    for (int i = 0; i < layers; ++i) {
-        const float d = 40.0f - 20.0f * float(i) / float(std::max(1, layers - 1));
-        const float halfH = d * std::tan(0.5f * cam.fovY), halfW = halfH * cam.aspect;
-        glm::mat4 m = glm::translate(camToWorld, glm::vec3(0.0f, 0.3f * halfH, -d));
-        m = glm::scale(m, glm::vec3(0.95f * halfW, 0.7f * halfH, 1.0f));
+    for (const CameraQuad& q : quads.quads) {
+        const float halfH = q.distance * std::tan(0.5f * cam.fovY), halfW = halfH * cam.aspect;
+        glm::mat4 m = glm::translate(camToWorld, glm::vec3(0.0f, q.centerY * halfH, -q.distance));
+        m = glm::scale(m, glm::vec3(q.halfWidth * halfW, q.halfHeight * halfH, 1.0f));
         glUniformMatrix4fv(uModel, 1, GL_FALSE, glm::value_ptr(m));
-        if (uColor >= 0) glUniform4f(uColor, 0.3f + 0.05f * float(i % 8), 0.35f, 0.5f - 0.03f * float(i % 8), 1.0f);
+        if (uColor >= 0) glUniform4f(uColor, q.color.r, q.color.g, q.color.b, q.color.a);
         glDrawArrays(GL_TRIANGLES, 0, 6);
     }
     glBindVertexArray(0);
 }
 
 void SceneRenderer::depthPrepass(const std::vector<MeshDraw>& opaque, const std::vector<MeshDraw>& alphaTested,
-                                 const CameraMatrices& cam, const OverdrawPanels& panels) const {
+                                 const CameraMatrices& cam, const CameraQuads& quads) const {
     ScopedPassState state({true, GL_LESS, true, true});
     setCamera(prepassProgram_, cam);
     const GLint uModel = prepassProgram_.uniform("uModel");
     gpu_.draw(opaque, uModel, -1);
     gpu_.draw(alphaTested, uModel, -1);
-    drawOverdrawPanels(prepassProgram_, panels, cam);
+    drawCameraQuads(prepassProgram_, quads, cam);
 }
 
 void SceneRenderer::opaque(const std::vector<MeshDraw>& draws, const CameraMatrices& cam, bool equal,
-                           const OverdrawPanels& panels) const {
+                           const CameraQuads& quads) const {
     // LEQUAL, not LESS: where two surfaces meet at exactly the same depth the last drawn wins,
     // which is what EQUAL on the prepass z-buffer does too. So the two paths give the same
     // pixel even at coplanar seams.
     ScopedPassState state({true, GLenum(equal ? GL_EQUAL : GL_LEQUAL), !equal, true});
     setCamera(meshProgram_, cam);
     gpu_.draw(draws, meshProgram_.uniform("uModel"), meshProgram_.uniform("uBaseColor"));
-    if (panels.layers > 0) {
+    if (!quads.empty()) {
         setCamera(costlyProgram_, cam);
-        glUniform1i(costlyProgram_.uniform("uCost"), panels.cost);
-        drawOverdrawPanels(costlyProgram_, panels, cam);
+        glUniform1i(costlyProgram_.uniform("uCost"), quads.cost);
+        drawCameraQuads(costlyProgram_, quads, cam);
     }
 }
 

@@ -26,12 +26,26 @@ struct CameraMatrices {
     float aspect = 1.0f;
 };
 
-/// The benchmark's opaque panels in front of the camera (fxbench --overdraw): `layers` quads
-/// from 40 m down to 20 m, drawn back to front (the worst order for depth test LESS) over the
-/// upper 70 % of the view; `cost` noise octaves per pixel in the opaque pass. Default: none.
-struct OverdrawPanels {
-    int layers = 0;
+/// An opaque quad facing the camera `distance` metres in front of it, placed in units of the
+/// view's half extents at that distance: centre (0, centerY * halfHeight), half size
+/// (halfWidth * halfWidthOfView, halfHeight * halfHeightOfView). Defaults: a full-view quad 10 m
+/// ahead, grey.
+struct CameraQuad {
+    float distance = 10.0f;
+    float centerY = 0.0f;
+    float halfWidth = 1.0f;
+    float halfHeight = 1.0f;
+    glm::vec4 color{0.5f, 0.5f, 0.5f, 1.0f};
+};
+
+/// Geometry an application attaches to the main view's camera, drawn in the order given in the
+/// depth prepass and the opaque pass with the costly test material (`cost` noise octaves per
+/// pixel). The benchmark stacks overdraw with it (bench/fxbench, scenario "overdraw").
+/// Default: none.
+struct CameraQuads {
+    std::vector<CameraQuad> quads;
     int cost = 16;
+    bool empty() const { return quads.empty(); }
 };
 
 class SceneRenderer {
@@ -49,10 +63,10 @@ public:
 
     /// [depth prepass] linear view depth (R32F, cleared by the caller) + z-buffer, LESS.
     void depthPrepass(const std::vector<MeshDraw>& opaque, const std::vector<MeshDraw>& alphaTested,
-                      const CameraMatrices& cam, const OverdrawPanels& panels) const;
+                      const CameraMatrices& cam, const CameraQuads& quads) const;
     /// [opaque] LEQUAL with depth writes, or EQUAL on the prepass z-buffer without them.
     void opaque(const std::vector<MeshDraw>& draws, const CameraMatrices& cam, bool equal,
-                const OverdrawPanels& panels) const;
+                const CameraQuads& quads) const;
     /// [alpha-tested] as opaque, culling as in the prepass.
     void alphaTested(const std::vector<MeshDraw>& draws, const CameraMatrices& cam, bool equal) const;
     /// [sky] a full-screen triangle at the far plane where nothing was drawn.
@@ -67,11 +81,11 @@ public:
     void text(const std::string& text, int w, int h);
 
 private:
-    void drawOverdrawPanels(const gl::Program& p, const OverdrawPanels& panels, const CameraMatrices& cam) const;
+    void drawCameraQuads(const gl::Program& p, const CameraQuads& quads, const CameraMatrices& cam) const;
 
     GpuScene gpu_;
     gl::Program meshProgram_, prepassProgram_, skyProgram_, blitProgram_, costlyProgram_;
-    GLuint panelVao_ = 0, panelVbo_ = 0;  // one unit quad (z = 0, normal +Z) for the overdraw panels
+    GLuint panelVao_ = 0, panelVbo_ = 0;  // one unit quad (z = 0, normal +Z) for the camera quads
     GLuint emptyVao_ = 0;                 // for gl_VertexID full-screen triangles
     LegacySpriteRenderer legacySprites_;
     Hud hud_;

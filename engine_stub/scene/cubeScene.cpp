@@ -26,7 +26,7 @@ rtt::FrameGraphResource cubeScene::Render(rtt::FrameGraph& graph, std::vector<cu
         if (!main) {
             s.hud = false;
             s.inset = {};
-            s.overdrawLayers = 0;
+            s.cameraQuads = nullptr;
         } else {
             s.inset = last;  // the previous view (mirror) is inset into the main view
         }

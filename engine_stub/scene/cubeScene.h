@@ -24,8 +24,7 @@ struct FrameSettings {
     std::string hudText;
     rtt::FrameGraphResource inset;  ///< drawn into the chase view's HUD bucket (mirror)
     bool insetFlipX = true;
-    int overdrawLayers = 0;         ///< fxbench: opaque panels stacked in front of the camera
-    int overdrawCost = 16;          ///< noise octaves per panel pixel
+    const CameraQuads* cameraQuads = nullptr;  ///< the application's quads on the main camera
 };
 
 class cubeScene {

@@ -114,18 +114,18 @@ void cubeView::declareDepthPrepass(cubeScene& scene, rtt::FrameGraph& graph, con
                                    const FrameSettings& settings) {
     // Linear view depth + z-buffer; culled unless a particle pass reads scene depth.
     const CameraMatrices cam = cameraMatrices();
-    const OverdrawPanels panels{settings.overdrawLayers, settings.overdrawCost};
+    const CameraQuads quads = settings.cameraQuads ? *settings.cameraQuads : CameraQuads{};
     SceneRenderer* r = &scene.renderer();
     const rtt::FrameGraphResource depth = t.sceneDepth;
     graph.addPass(passName(bucketInfo(Bucket::DepthPrepass).name).c_str(),
                   order(bucketInfo(Bucket::DepthPrepass).order),
                   [&](rtt::PassBuilder& b) { b.write(depth); },
-                  [this, r, depth, cam, panels](rtt::PassContext& ctx) {
+                  [this, r, depth, cam, quads](rtt::PassContext& ctx) {
                       rtt::ClearValues cv;
                       cv.color[0] = {1e30f, 0.0f, 0.0f, 0.0f};  // "infinitely far" where nothing is drawn
                       ctx.clear(depth, cv);
                       ctx.bindForDraw(depth);
-                      r->depthPrepass(opaque_, alphaTested_, cam, panels);
+                      r->depthPrepass(opaque_, alphaTested_, cam, quads);
                   });
 }
 
@@ -134,19 +134,19 @@ void cubeView::declareOpaque(cubeScene& scene, rtt::FrameGraph& graph, const Tar
     // LEQUAL with its own z-buffer, or EQUAL on the prepass z-buffer without depth writes: which
     // one is settled once the plugin has declared its passes, and read here at execution.
     const CameraMatrices cam = cameraMatrices();
-    const OverdrawPanels panels{settings.overdrawLayers, settings.overdrawCost};
+    const CameraQuads quads = settings.cameraQuads ? *settings.cameraQuads : CameraQuads{};
     SceneRenderer* r = &scene.renderer();
     const rtt::FrameGraphResource color = t.color;
     graph.addPass(passName(bucketInfo(Bucket::Opaque).name).c_str(), order(bucketInfo(Bucket::Opaque).order),
                   [&](rtt::PassBuilder& b) { b.write(color); },
-                  [this, r, color, cam, panels](rtt::PassContext& ctx) {
+                  [this, r, color, cam, quads](rtt::PassContext& ctx) {
                       rtt::ClearValues cv;
                       cv.color[0] = {0.0f, 0.0f, 0.0f, 1.0f};
                       cv.clearDepth = !equal_;
                       cv.clearStencil = !equal_;
                       ctx.clear(color, cv);
                       ctx.bindForDraw(color);
-                      r->opaque(opaque_, cam, equal_, panels);
+                      r->opaque(opaque_, cam, equal_, quads);
                   });
 }
 

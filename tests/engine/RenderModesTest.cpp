@@ -85,10 +85,22 @@ TEST(RenderModes, PrepassEqualIsPixelIdenticalToLess) {
 
 TEST(RenderModes, PrepassEqualIsPixelIdenticalWithOverdrawPanels) {
     Options o = standard();
-    o.overdrawLayers = 6;
-    o.overdrawCost = 4;
     Frames f(o);
     ASSERT_TRUE(f.ok);
+    // Six costly panels on the camera, back to front (as fxbench's overdraw scenario).
+    CameraQuads quads;
+    quads.cost = 4;
+    for (int i = 0; i < 6; ++i) {
+        CameraQuad q;
+        q.distance = 40.0f - 4.0f * float(i);
+        q.centerY = 0.3f;
+        q.halfWidth = 0.95f;
+        q.halfHeight = 0.7f;
+        quads.quads.push_back(q);
+    }
+    const ImageRGBA8 bare = f.render(false, fx::Technique::Soft, false);
+    f.game.setCameraQuads(quads);
+    EXPECT_FALSE(f.render(false, fx::Technique::Soft, false).pixels == bare.pixels);  // the panels are drawn
     EXPECT_TRUE(f.render(false, fx::Technique::Soft, false).pixels == f.render(true, fx::Technique::Soft, false).pixels);
 }
 
