@@ -175,10 +175,21 @@ private:
         m.particlesDrawn.push_back(m.mode->effects && plugin ? plugin->stats().particlesDrawn : 0);
     }
 
-    cube::ImageRGBA8 capture(const ModeRun& m) {
+    // Untimed: one render of the current simulated frame in mode `m`. With `fragments`, each pass
+    // also counts the samples it writes (GL_SAMPLES_PASSED; the read-back waits, so never in a
+    // timed render) and the particle passes' sum goes to m.particleFragments.
+    cube::ImageRGBA8 capture(ModeRun& m, bool fragments = false) {
         applyMode(game_, *m.mode);
         game_.captureNextFrame();
+        game_.graph().setCountFragments(fragments);
         game_.RenderFrame();
+        game_.graph().setCountFragments(false);
+        if (fragments) {
+            long long sum = 0;
+            for (const cube::rtt::PassTiming& t : game_.graph().report().timings)
+                if (isParticlePass(t.name) && t.fragments > 0) sum += t.fragments;
+            m.particleFragments.push_back(double(sum));
+        }
         return game_.lastFrame();
     }
 
@@ -192,7 +203,7 @@ private:
     // coverage against nofx and the fill limit over that coverage.
     void errorPass(bool last) {
         std::map<std::string, cube::ImageRGBA8> images;
-        for (ModeRun& m : out_->modes) images[m.mode->name] = capture(m);
+        for (ModeRun& m : out_->modes) images[m.mode->name] = capture(m, true);
         const int w = images.begin()->second.width, h = images.begin()->second.height;
 
         std::vector<float> depth;

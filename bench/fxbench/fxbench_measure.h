@@ -36,6 +36,7 @@ struct ModeRun {
     int allocatingRenders = 0;                      ///< timed renders that created pool targets
     ErrorAccum error;
     std::vector<double> fillMs, fillRatio, coveragePct;  ///< one per error frame
+    std::vector<double> particleFragments;          ///< per error frame: samples the particle passes wrote
     std::vector<double> frameParticleMs;            ///< scratch: this simulated frame's rounds
 };
 

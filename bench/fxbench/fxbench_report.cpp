@@ -107,12 +107,13 @@ std::string markdownReport(const Report& r) {
     }
 
     o += "\nParticle work vs the fill limit (trivial textured quad blended once over the covered pixels)\n\n"
-         "| mode | particles drawn | coverage % | particle ms | fill-limit ms | ratio | vs nofx | allocating renders |\n"
-         "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+         "| mode | particles drawn | coverage % | particle ms | particle fragments | fill-limit ms | ratio | vs nofx | "
+         "allocating renders |\n"
+         "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const ModeSummary& m : r.modes) {
         o += "| " + m.name + " | " + fmt("%.0f", m.particles) + " | " + fmt("%.1f", m.coveragePct) + " | " +
-             fmt("%.2f", m.particleMs) + " | " + fmt("%.3f", m.fillLimitMs) + " | " +
-             (m.fillLimitRatio > 0 ? fmt("%.1f", m.fillLimitRatio) : std::string("-")) + " | " +
+             fmt("%.2f", m.particleMs) + " | " + fmt("%.0f", m.particleFragments) + " | " +
+             fmt("%.3f", m.fillLimitMs) + " | " + (m.fillLimitRatio > 0 ? fmt("%.1f", m.fillLimitRatio) : std::string("-")) + " | " +
              fmt("%.3f", m.ratioVsNofx) + " | " + std::to_string(m.allocatingRenders) + " |\n";
     }
     o += "\n- vs hard / vs nofx: median frame ms / that mode's median frame ms (same run)\n";
@@ -173,6 +174,7 @@ std::string jsonReport(const Report& r, const std::string& in) {
             o += (k ? ", " : "") + jsonQuote(m.passes[k].first) + ": " + num(m.passes[k].second);
         o += "},\n";
         o += p + "  \"particle_pass_ms\": " + num(m.particleMs) + ",\n";
+        o += p + "  \"particle_fragments\": " + num(m.particleFragments) + ",\n";
         o += p + "  \"particles\": " + num(m.particles) + ",\n";
         o += p + "  \"coverage_pct\": " + num(m.coveragePct) + ",\n";
         o += p + "  \"fill_limit_ms\": " + num(m.fillLimitMs) + ",\n";
@@ -192,7 +194,7 @@ std::string csvRows(const Report& r, const std::string& point, bool header) {
     std::string o;
     if (header)
         o += "point,scenario,width,height,mode,fps_min,fps_avg,fps_max,p50_ms,p95_ms,p99_ms,ratio_vs_hard,"
-             "ratio_vs_nofx,particle_pass_ms,particles,coverage_pct,fill_limit_ms,fill_limit_ratio,reference,"
+             "ratio_vs_nofx,particle_pass_ms,particle_fragments,particles,coverage_pct,fill_limit_ms,fill_limit_ratio,reference,"
              "rmse,psnr_db,max_abs,edge_pct,passes_ms\n";
     for (const ModeSummary& m : r.modes) {
         std::string passes;
@@ -200,7 +202,7 @@ std::string csvRows(const Report& r, const std::string& point, bool header) {
         o += point + "," + r.scenario + "," + std::to_string(r.width) + "," + std::to_string(r.height) + "," + m.name +
              "," + num(m.fpsMin) + "," + num(m.fpsAvg) + "," + num(m.fpsMax) + "," + num(m.p50) + "," + num(m.p95) +
              "," + num(m.p99) + "," + num(m.ratioVsHard) + "," + num(m.ratioVsNofx) + "," + num(m.particleMs) + "," +
-             num(m.particles) + "," + num(m.coveragePct) + "," + num(m.fillLimitMs) + "," + num(m.fillLimitRatio) +
+             num(m.particleFragments) + "," + num(m.particles) + "," + num(m.coveragePct) + "," + num(m.fillLimitMs) + "," + num(m.fillLimitRatio) +
              "," + m.reference + "," + num(m.rmse) + "," + num(m.psnrDb) + "," + num(m.maxAbs) + "," +
              num(m.edgePct) + ",\"" + passes + "\"\n";
     }

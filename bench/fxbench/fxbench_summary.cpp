@@ -39,6 +39,7 @@ ModeSummary summarise(const ModeRun& run, const ModeRun* hard, const ModeRun* no
     s.ratioVsNofx = nofxP50 > 0.0 ? s.p50 / nofxP50 : 0.0;
     for (const std::string& name : run.passOrder) s.passes.emplace_back(name, median(run.passMs.at(name)));
     s.particleMs = median(run.particleMs);
+    s.particleFragments = median(run.particleFragments);
     s.particles = median(run.particlesDrawn);
     s.coveragePct = median(run.coveragePct);
     s.fillLimitMs = median(run.fillMs);

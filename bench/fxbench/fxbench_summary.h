@@ -18,6 +18,7 @@ struct ModeSummary {
     double ratioVsHard = 0, ratioVsNofx = 0;    ///< median frame ms / base's median
     std::vector<std::pair<std::string, double>> passes;  ///< median ms per pass, run order
     double particleMs = 0;                      ///< median of the per-frame sum of particle passes
+    double particleFragments = 0;               ///< median over error frames of the samples the particle passes wrote
     double particles = 0;                       ///< median particles drawn (0 for nofx)
     double coveragePct = 0;                     ///< share of pixels the particles changed
     double fillLimitMs = 0;                     ///< median fill-limit draw over that coverage

@@ -29,6 +29,7 @@ FrameGraph::~FrameGraph() {
     // A graph destroyed mid-frame (execute() threw) must not keep pool targets in use.
     for (uint32_t i = 0; i < resourceCount_; ++i)
         if (!resources_[i].imported && pool_.isValid(resources_[i].handle)) pool_.release(resources_[i].handle);
+    if (!sampleQueries_.empty()) glDeleteQueries(GLsizei(sampleQueries_.size()), sampleQueries_.data());
 }
 
 void FrameGraph::reset() {
@@ -302,10 +303,18 @@ bool FrameGraph::execute() {
         for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i) p.skipped |= resources_[accesses_[i].resource].failed;
         if (!p.skipped && p.execute) {
             gl::DebugGroup group(p.name.c_str());
+            if (countFragments_) {
+                if (sampleQueries_.size() <= executed) {
+                    sampleQueries_.push_back(0);
+                    glGenQueries(1, &sampleQueries_.back());
+                }
+                glBeginQuery(GL_SAMPLES_PASSED, sampleQueries_[executed]);
+            }
             timer_.beginPass(p.name.c_str());
             PassContext ctx(*this, order_[pos]);
             p.execute(ctx);
             timer_.endPass();
+            if (countFragments_) glEndQuery(GL_SAMPLES_PASSED);
             saved.restore();
             setAt(report_.executed, executed++, p.name);
         } else if (p.skipped) {
@@ -320,6 +329,14 @@ bool FrameGraph::execute() {
         }
     }
     timer_.endFrame();
+    fragments_.assign(executed, -1);
+    if (countFragments_) {
+        for (size_t i = 0; i < executed; ++i) {
+            GLint64 n = 0;
+            glGetQueryObjecti64v(sampleQueries_[i], GL_QUERY_RESULT, &n);
+            fragments_[i] = static_cast<long long>(n);
+        }
+    }
     report_.executed.resize(executed);
     report_.culled.resize(culled);
     buildReport();
@@ -336,6 +353,7 @@ void FrameGraph::buildReport() {
         t.lastMs = t.medianMs = -1.0;
         t.samples = 0;
         timer_.stats(t.name.c_str(), &t.lastMs, &t.medianMs, &t.samples);
+        t.fragments = i < fragments_.size() ? fragments_[i] : -1;
     }
     const RenderTargetPoolStats st = pool_.stats();
     report_.targetsAcquired = acquired_;

@@ -91,6 +91,12 @@ public:
     /// passes using it are skipped and reported as culled; report().error says why).
     bool execute();
 
+    /// Counts, per executed pass, the samples it writes that pass the depth test (a
+    /// GL_SAMPLES_PASSED query around the pass, read back at the end of execute(), which then
+    /// waits for the GPU). Off by default; benchmarks switch it on for untimed frames. Reported
+    /// as PassTiming::fragments.
+    void setCountFragments(bool on) { countFragments_ = on; }
+
     const FrameGraphReport& report() const { return report_; }
     const char* timingMethod() const { return timer_.method(); }
     const PassTimer& timer() const { return timer_; }
@@ -152,6 +158,9 @@ private:
     int acquired_ = 0;
     std::string declError_;
     FrameGraphReport report_;
+    bool countFragments_ = false;
+    std::vector<uint32_t> sampleQueries_;  // one per executed pass, grown as needed
+    std::vector<long long> fragments_;
 };
 
 }  // namespace cube::rtt

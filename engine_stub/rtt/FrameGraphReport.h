@@ -10,6 +10,9 @@ struct PassTiming {
     double lastMs = -1.0;    ///< latest sample (-1 until one arrived: GPU results lag a few frames)
     double medianMs = -1.0;  ///< running median over the timer's history
     int samples = 0;
+    /// Samples the pass wrote that passed the depth test (GL_SAMPLES_PASSED) in the last frame;
+    /// -1 unless FrameGraph::setCountFragments is on.
+    long long fragments = -1;
 };
 
 /// Defaults: empty, nothing run.

@@ -116,6 +116,7 @@ TEST_P(FxbenchScenario, TinyRunWritesEveryKeyWithFiniteValues) {
         EXPECT_GT(m["passes_ms"].size(), 0u);
         for (const auto& kv : m["passes_ms"]) finite(kv.second, "passes_ms." + kv.first.as<std::string>());
         EXPECT_GE(finite(m["particles"], "particles"), 0.0);
+        EXPECT_GE(finite(m["particle_fragments"], "particle_fragments"), 0.0);
         EXPECT_GE(finite(m["fill_limit_ratio"], "fill_limit_ratio"), 0.0);
         const YAML::Node e = m["error"];
         ASSERT_TRUE(e.IsMap());
@@ -139,8 +140,14 @@ TEST(Fxbench, ParticleModesDrawParticlesInTheStandardScenario) {
         EXPECT_TRUE(hasParticlePass(m));
         EXPECT_GT(m["particles"].as<double>(), 0.0);
         EXPECT_GT(m["fill_limit_ratio"].as<double>(), 0.0);
+        EXPECT_GT(m["particle_fragments"].as<double>(), 0.0);
     }
     EXPECT_EQ(modeNode(run, "nofx")["particles"].as<double>(), 0.0);
+    EXPECT_EQ(modeNode(run, "nofx")["particle_fragments"].as<double>(), 0.0);
+    // Fragments are counted, not timed: prepass-EQUAL changes the opaque pass only, so the
+    // particle passes write exactly the same samples with and without it.
+    EXPECT_EQ(modeNode(run, "soft")["particle_fragments"].as<double>(),
+              modeNode(run, "soft+equal")["particle_fragments"].as<double>());
 }
 
 TEST(Fxbench, EmptyScenarioHasNoParticlePassInAnyMode) {
