@@ -171,6 +171,9 @@ double Game::RenderFrame() {
     const auto start = std::chrono::steady_clock::now();
     render_.Dyn(*this);
     gl::finish();  // the frame's GPU work is in the measured time
+    // The GPU's pass timings of this very frame (ready after the finish): a later frame, maybe
+    // in another mode (fxbench interleaves them), never gets them.
+    graph_->resolveTimings();
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     frameMs_.push_back(ms);
     // Memory and pool probes for the soak test (outside the timed window): after warm-up, and

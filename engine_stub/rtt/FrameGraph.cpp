@@ -345,6 +345,11 @@ bool FrameGraph::execute() {
     return ok;
 }
 
+void FrameGraph::resolveTimings() {
+    timer_.resolvePending();
+    buildReport();
+}
+
 void FrameGraph::buildReport() {
     report_.timings.resize(report_.executed.size());
     for (size_t i = 0; i < report_.executed.size(); ++i) {

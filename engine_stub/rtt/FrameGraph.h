@@ -97,6 +97,10 @@ public:
     /// as PassTiming::fragments.
     void setCountFragments(bool on) { countFragments_ = on; }
 
+    /// Waits for the last execute()'s GPU pass timings (and any older ones still pending) and
+    /// puts them in report().timings now (PassTimer::resolvePending). Call after execute().
+    void resolveTimings();
+
     const FrameGraphReport& report() const { return report_; }
     const char* timingMethod() const { return timer_.method(); }
     const PassTimer& timer() const { return timer_; }

@@ -119,6 +119,21 @@ void PassTimer::collectGpuResults() {
     }
 }
 
+void PassTimer::resolvePending() {
+    if (mode_ != TimingMode::GpuTimerQuery) return;
+    for (int age = 1; age <= kRingFrames; ++age) {  // oldest first, the current frame last
+        GpuFrame& f = frames_[(current_ + age) % kRingFrames];
+        if (!f.pending) continue;
+        for (int i = 0; i < f.count; ++i) {
+            GLuint64 begin = 0, end = 0;  // GL_QUERY_RESULT waits for the GPU
+            glGetQueryObjectui64v(f.queries[size_t(i) * 2u], GL_QUERY_RESULT, &begin);
+            glGetQueryObjectui64v(f.queries[size_t(i) * 2u + 1u], GL_QUERY_RESULT, &end);
+            record(f.names[size_t(i)].c_str(), end > begin ? double(end - begin) * 1e-6 : 0.0);
+        }
+        f.pending = false;
+    }
+}
+
 void PassTimer::record(const char* name, double ms) {
     Track* t = const_cast<Track*>(find(name));
     if (!t) {

@@ -36,6 +36,13 @@ public:
     void beginPass(const char* name);
     void endPass();
     void endFrame();
+    /// GPU mode: waits for every frame's queries still pending and records them now, so the
+    /// latest sample of a pass is the frame just executed. A host that renders the same pass
+    /// names in alternating configurations (fxbench's interleaved modes) calls this after each
+    /// frame; otherwise results arriving frames late are filed under whichever configuration
+    /// happens to be current. Cheap right after a glFinish (the results are ready). No-op in
+    /// the other modes.
+    void resolvePending();
 
     /// Latest and running-median milliseconds of pass `name` over the last historyLength
     /// samples; false (values untouched) when no sample has arrived yet.
