@@ -39,6 +39,11 @@ public:
     /// Asks for a read-back of the next rendered frame (lastFrame()).
     void captureNextFrame() { captureNext_ = true; }
     const ImageRGBA8& lastFrame() const { return lastFrame_; }
+    /// The next RenderFrame also reads the chase view's linear scene depth back (metres, rows as
+    /// the target stores them, 1e30 where nothing was drawn); it runs the depth prepass for that.
+    void captureNextSceneDepth() { captureDepthNext_ = true; }
+    /// Empty until a captured frame, or when the read-back failed.
+    const std::vector<float>& lastSceneDepth() const { return lastSceneDepth_; }
     bool writeStatsJson(const std::string& path, std::string* error) const;
 
     Options& options() { return options_; }
@@ -93,6 +98,8 @@ private:
     glm::vec3 framedEye_{0.0f, 2.0f, 8.0f}, framedTarget_{0.0f};  ///< no car: the whole model
     std::vector<std::string> warnings_;
     bool captureNext_ = false;
+    bool captureDepthNext_ = false;
+    std::vector<float> lastSceneDepth_;
     ImageRGBA8 lastFrame_;
     std::vector<double> frameMs_;
     long rssWarmKb_ = 0, rssLastKb_ = 0;

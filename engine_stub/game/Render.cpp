@@ -60,6 +60,11 @@ void Render::Dyn(Game& game) {
     settings.plugin = game.options_.effects ? game.specialFX_.plugin() : nullptr;
     settings.drawLegacy = game.options_.effects;
     settings.cameraQuads = game.cameraQuads_.empty() ? nullptr : &game.cameraQuads_;
+    if (game.captureDepthNext_) {
+        game.lastSceneDepth_.clear();
+        settings.sceneDepthOut = &game.lastSceneDepth_;
+        game.captureDepthNext_ = false;
+    }
     settings.hud = game.options_.hud;
     if (settings.hud) {
         char text[160];

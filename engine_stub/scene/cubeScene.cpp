@@ -27,6 +27,7 @@ rtt::FrameGraphResource cubeScene::Render(rtt::FrameGraph& graph, std::vector<cu
             s.hud = false;
             s.inset = {};
             s.cameraQuads = nullptr;
+            s.sceneDepthOut = nullptr;
         } else {
             s.inset = last;  // the previous view (mirror) is inset into the main view
         }

@@ -25,6 +25,9 @@ struct FrameSettings {
     rtt::FrameGraphResource inset;  ///< drawn into the chase view's HUD bucket (mirror)
     bool insetFlipX = true;
     const CameraQuads* cameraQuads = nullptr;  ///< the application's quads on the main camera
+    /// When set, the main view reads its scene depth back into it (metres, R32F as stored,
+    /// 1e30 where nothing was drawn): a side-effect pass that keeps the depth prepass alive.
+    std::vector<float>* sceneDepthOut = nullptr;
 };
 
 class cubeScene {

@@ -7,6 +7,7 @@
 
 #include "game/Trace.h"
 #include "scene/FxFrameBuilder.h"
+#include "rtt/Readback.h"
 #include "rtt/RenderTargetPool.h"
 #include "scene/Buckets.h"
 #include "scene/cubeScene.h"
@@ -72,6 +73,7 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
     declareSky(scene, graph, t);
     declareLegacySprites(scene, graph, t, settings);
     declarePluginPasses(graph, t, settings);         // soft/spherical read scene depth; quarter-res composites
+    declareDepthReadback(graph, t, settings);        // only when the application asked for it
     declareHud(scene, graph, t, settings);           // mirror inset and text
     return t.color;
 }
@@ -224,6 +226,24 @@ void cubeView::declarePluginPasses(rtt::FrameGraph& graph, const Targets& t, con
     prepassDeclared_ = fx.readsSceneDepth();
     equal_ = settings.prepassEqual && prepassDeclared_;
     if (equal_) graph.setSharedDepth(t.color, t.sceneDepth);
+}
+
+void cubeView::declareDepthReadback(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& settings) {
+    // The frame's own scene depth, for an application that measures against it (fxbench's
+    // depth-edge mask): reading it keeps the prepass, so no second copy of it is ever drawn.
+    if (!settings.sceneDepthOut) return;
+    std::vector<float>* out = settings.sceneDepthOut;
+    const rtt::FrameGraphResource depth = t.sceneDepth;
+    graph.addPass((name_ + ".scene_depth_readback").c_str(), order(bucketInfo(Bucket::Hud).order) - 1,
+                  [&](rtt::PassBuilder& b) {
+                      b.read(depth);
+                      b.sideEffect();
+                  },
+                  [depth, out](rtt::PassContext& ctx) {
+                      if (rtt::readFloat(ctx.pool(), ctx.handle(depth), 0, rtt::FloatLayout::Native, out) !=
+                          rtt::RttError::None)
+                          out->clear();
+                  });
 }
 
 void cubeView::declareHud(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t, const FrameSettings& settings) {

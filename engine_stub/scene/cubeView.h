@@ -60,6 +60,7 @@ private:
     void declareSky(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t);
     void declareLegacySprites(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
     void declarePluginPasses(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
+    void declareDepthReadback(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
     void declareHud(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
     CameraMatrices cameraMatrices() const;
     void recordBuckets(cubeScene& scene);
