@@ -12,7 +12,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "io/SafeFile.h"
-#include "io/TextCheck.h"
+#include "io/YamlPreflight.h"
 
 namespace cube {
 
@@ -52,37 +52,6 @@ private:
     fx::Diagnostics* diags_;
     int errors_ = 0;
 };
-
-// Counts documents without building nodes (YAML::LoadAll can loop forever on some garbage).
-class DocumentCounter : public YAML::EventHandler {
-public:
-    explicit DocumentCounter(std::vector<YAML::Mark>* starts) : starts_(starts) {}
-    void OnDocumentStart(const YAML::Mark& mark) override { starts_->push_back(mark); }
-    void OnDocumentEnd() override {}
-    void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
-    void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
-    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
-    void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
-    void OnSequenceEnd() override {}
-    void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
-    void OnMapEnd() override {}
-
-private:
-    std::vector<YAML::Mark>* starts_;
-};
-
-// Control bytes and malformed UTF-8 are not YAML text; first offending byte reported.
-bool checkText(const std::string& text, Report& r) {
-    fxio::NonTextByte bad;
-    if (!fxio::isYamlText(text, &bad)) {
-        YAML::Mark m = YAML::Mark::null_mark();
-        m.line = bad.line;
-        m.column = bad.column;
-        r.add(ErrorCode::SyntaxError, m, "", bad.message());
-        return false;
-    }
-    return true;
-}
 
 int nesting(const YAML::Node& n, int depth) {
     if (depth > kLegacyMaxNesting) return depth;
@@ -255,35 +224,15 @@ private:
 };
 
 bool loadChecked(const std::string& text, Report& report, std::vector<LegacySmokeDesc>* result) {
-    if (text.size() > kLegacyMaxFileBytes) {
-        report.add(ErrorCode::FileTooLarge, YAML::Mark::null_mark(), "",
-                   "text is " + std::to_string(text.size()) + " bytes; expected at most " +
-                       std::to_string(kLegacyMaxFileBytes));
-        return false;
-    }
-    if (!checkText(text, report)) return false;
-    std::vector<YAML::Mark> starts;
-    try {
-        std::istringstream stream(text);
-        YAML::Parser parser(stream);
-        DocumentCounter counter(&starts);
-        while (starts.size() < 2 && parser.HandleNextDocument(counter)) {
-        }
-    } catch (const YAML::DeepRecursion& e) {
-        report.add(ErrorCode::TooDeep, e.mark, "", "nesting too deep (" + e.msg + ")");
-        return false;
-    } catch (const YAML::Exception& e) {
-        report.add(ErrorCode::SyntaxError, e.mark, "", "malformed YAML: " + e.msg);
-        return false;
-    }
-    if (starts.size() >= 2) {
-        report.add(ErrorCode::SyntaxError, starts[1].pos == starts[0].pos ? starts[0] : starts[1], "",
-                   starts[1].pos == starts[0].pos ? "malformed YAML: the parser cannot continue here"
-                                                  : "expected one YAML document, found a second one");
+    // The reaction loader's first pass (io/YamlPreflight.h): size, text, syntax, one document.
+    fxio::YamlProblem problem;
+    bool hasDocument = false;
+    if (!fxio::preflightYaml(text, kLegacyMaxFileBytes, kLegacyMaxNesting, &problem, &hasDocument)) {
+        report.add(problem.code, problem.mark, "", problem.message);
         return false;
     }
     const YAML::Node root = YAML::Load(text);
-    if (starts.empty() || root.IsNull()) {
+    if (!hasDocument || root.IsNull()) {
         report.add(ErrorCode::EmptyFile, YAML::Mark::null_mark(), "",
                    "the file holds nothing; expected a map with a 'reactions' list");
         return false;

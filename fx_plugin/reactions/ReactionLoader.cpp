@@ -14,7 +14,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "../io/SafeFile.h"
-#include "../io/TextCheck.h"
+#include "../io/YamlPreflight.h"
 #include "ReactionSchema.h"
 #include "YamlCheck.h"
 
@@ -36,86 +36,12 @@ void add(Diagnostics* diags, ErrorCode code, const std::string& file, int line, 
     diags->push_back(std::move(d));
 }
 
-// Records where each document starts; builds nothing.
-class DocumentCounter : public YAML::EventHandler {
-public:
-    explicit DocumentCounter(std::vector<YAML::Mark>* starts) : starts_(starts) {}
-    void OnDocumentStart(const YAML::Mark& mark) override { starts_->push_back(mark); }
-    void OnDocumentEnd() override {}
-    void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
-    void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
-    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
-                  const std::string&) override {}
-    void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
-                         YAML::EmitterStyle::value) override {}
-    void OnSequenceEnd() override {}
-    void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
-                    YAML::EmitterStyle::value) override {}
-    void OnMapEnd() override {}
-
-private:
-    std::vector<YAML::Mark>* starts_;
-};
-
-YAML::Mark markAt(int line0, int column0) {
-    YAML::Mark m = YAML::Mark::null_mark();
-    m.line = line0;
-    m.column = column0;
-    return m;
-}
-
-// YAML text is Unicode; C0 controls other than tab/LF/CR, DEL, and malformed UTF-8 cannot occur
-// in a YAML file. Rejecting them here gives binary garbage a clear message and keeps bytes the
-// parser was never meant to see away from it. Reports the first offending byte only.
-bool checkEncoding(YamlCheck& check, const std::string& text) {
-    fxio::NonTextByte bad;
-    if (!fxio::isYamlText(text, &bad)) {
-        check.report(ErrorCode::SyntaxError, markAt(bad.line, bad.column), "", bad.message());
-        return false;
-    }
-    return true;
-}
-
 bool loadTextChecked(const std::string& text, YamlCheck& check, ReactionSet* set) {
-    if (text.size() > kMaxFileBytes) {
-        check.report(ErrorCode::FileTooLarge, YAML::Mark::null_mark(), "",
-                     "file is " + std::to_string(text.size()) + " bytes; expected at most " +
-                         std::to_string(kMaxFileBytes));
-        return false;
-    }
-    if (!checkEncoding(check, text)) return false;
-
-    // Pass 1, events only: syntax errors anywhere in the text, and the document count. Not
-    // YAML::LoadAll: on some malformed input (a stray ',' at document level) yaml-cpp 0.7's
-    // parser yields empty documents forever without consuming anything, and LoadAll collects
-    // them until memory runs out. Counting with a cap and checking for progress avoids that.
-    std::vector<YAML::Mark> starts;
-    try {
-        std::istringstream stream(text);
-        YAML::Parser parser(stream);
-        DocumentCounter counter(&starts);
-        while (starts.size() < 2 && parser.HandleNextDocument(counter)) {
-        }
-    } catch (const YAML::DeepRecursion& e) {
-        check.report(ErrorCode::TooDeep, e.mark, "",
-                     "nesting deeper than " + std::to_string(kMaxNesting) + " levels (" + e.msg +
-                         ")");
-        return false;
-    } catch (const YAML::Exception& e) {
-        check.report(ErrorCode::SyntaxError, e.mark, "", "malformed YAML: " + e.msg);
-        return false;
-    }
-    if (starts.size() >= 2) {
-        if (starts[1].pos == starts[0].pos) {
-            const size_t at = static_cast<size_t>(std::max(starts[0].pos, 0));
-            const char c = at < text.size() ? text[at] : ' ';
-            check.report(ErrorCode::SyntaxError, starts[0], "",
-                         c > ' ' ? std::string("malformed YAML: unexpected '") + c + "'"
-                                 : std::string("malformed YAML: the parser cannot continue here"));
-        } else {
-            check.report(ErrorCode::SyntaxError, starts[1], "",
-                         "expected one YAML document, found a second one");
-        }
+    // Pass 1 (io/YamlPreflight.h): size, text, syntax anywhere, one document at most.
+    fxio::YamlProblem problem;
+    bool hasDocument = false;
+    if (!fxio::preflightYaml(text, kMaxFileBytes, kMaxNesting, &problem, &hasDocument)) {
+        check.report(problem.code, problem.mark, "", problem.message);
         return false;
     }
 
@@ -127,8 +53,8 @@ bool loadTextChecked(const std::string& text, YamlCheck& check, ReactionSet* set
         check.report(ErrorCode::SyntaxError, e.mark, "", "malformed YAML: " + e.msg);
         return false;
     }
-    if (starts.empty() || root.IsNull()) {
-        check.report(ErrorCode::EmptyFile, starts.empty() ? markAt(0, 0) : root.Mark(), "",
+    if (!hasDocument || root.IsNull()) {
+        check.report(ErrorCode::EmptyFile, !hasDocument ? fxio::yamlMarkAt(0, 0) : root.Mark(), "",
                      "the file holds no reactions; expected 'reactions:' with a list "
                      "('reactions: []' for none)");
         return false;
