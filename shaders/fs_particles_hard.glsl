@@ -14,7 +14,7 @@ flat in float vFrame;
 layout(location = 0) out vec4 oColor;
 
 void main() {
-    vec4 texel = texture(uAtlas, atlasUV(vLocal, vFrame));
+    vec4 texel = texture(uAtlas, atlasUV(vLocal, vFrame)) * insideFrame(vLocal);
     float depth = -vViewPos.z;
     float coverage = texel.a * nearFadeFactor(depth);
 #ifdef FX_LINEAR_DEPTH_TEST

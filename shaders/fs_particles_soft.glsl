@@ -15,7 +15,7 @@ flat in float vFrame;
 layout(location = 0) out vec4 oColor;
 
 void main() {
-    vec4 texel = texture(uAtlas, atlasUV(vLocal, vFrame));
+    vec4 texel = texture(uAtlas, atlasUV(vLocal, vFrame)) * insideFrame(vLocal);
     float depth = -vViewPos.z;
     float coverage = texel.a * softFade(sceneDepthAt(gl_FragCoord.xy), depth) *
                      nearFadeFactor(depth);

@@ -51,6 +51,15 @@ vec2 atlasUV(vec2 local, float frame) {
     return (cell + inCell) * 0.5;
 }
 
+// 1 inside the frame's square [-1, 1]^2 (less a 1/256 rim), 0 outside. A rotated quad's corners
+// reach past the square; clamped onto the cell border they would read the coarse mip levels'
+// border texels, which are not 0 once a level's texels span the puff's margin. Masking them makes
+// the sprite exactly its frame, which is also what the trimmed polygons (inside the square)
+// draw, so quads and trimmed polygons give the same pixels.
+float insideFrame(vec2 local) {
+    return max(abs(local.x), abs(local.y)) < 0.996 ? 1.0 : 0.0;
+}
+
 // NVIDIA's soft-particle contrast curve ("Soft Particles", Lorach 2007): symmetric S-curve
 // around 0.5; power 1 is the identity.
 float contrastCurve(float x, float power) {

@@ -1,22 +1,35 @@
 #version 330 core
-// Instanced particle quads, billboarded here (000 section 2.5 / 3.3.3): stream 0 is the four
-// shared corners, stream 1 one record per particle (InstanceStream.h describes the layout).
+// Instanced particles, billboarded here (000 section 2.5 / 3.3.3): stream 0 is the shared
+// corners, stream 1 one record per particle (InstanceStream.h describes the layout).
 //
-// Billboards (hard, soft): a view-plane-aligned quad of edge `size` around the centre, built
-// from the camera right/up vectors read out of the view matrix. The texture coordinate is the
-// corner rotated by the particle's angle (000 section 3.3.6).
+// Billboards (hard, soft): view-plane-aligned, edge `size` around the centre, built from the
+// camera right/up vectors read out of the view matrix. The texture coordinate is the corner
+// rotated by the particle's angle (000 section 3.3.6). Quads (uTrimmed 0) draw the four corners
+// of stream 0 as a strip. Trimmed (uTrimmed 1, a fan of 8): the corners are the atlas frame's
+// polygon from uShapes (render/TrimmedShapes.h), given in texture space and turned back by the
+// angle, so texture coordinates are exactly those of the quad and only the transparent area is
+// left out. The polygon's LOD bucket comes from the particle's texels per pixel (a billboard
+// facing the camera has one isotropic LOD), half a level coarser than the sampler will use.
 //
 // FX_SPHERICAL: the quad only has to cover every view ray that meets the particle sphere
 // (radius size/2); the fragment shader intersects each ray with the sphere. Per screen axis the
 // exact range of ray slopes through the sphere is computed; where it is unbounded (camera inside
 // or beside the sphere) it extends to the frustum edge, so a camera inside a particle still gets
-// a screen-covering quad. The quad is placed inside the clip range (depth test is off for
-// spherical particles, so its depth only has to survive clipping).
+// a screen-covering quad. The quad lies at the sphere's front (its nearest depth, clamped into the
+// clip range): the fragment shader only uses the ray direction, so the plane's depth changes no
+// pixel, and a host z-buffer test against it is conservative: a fragment whose sphere front is
+// behind the scene sees no chord, so nothing visible is ever rejected.
 #include "particles_common.glsl"
 
 layout(location = 0) in vec2 aCorner;            // (+-1, +-1), triangle strip order
 layout(location = 1) in vec4 aPosSize;           // centre (world, m), size (m)
 layout(location = 2) in vec4 aLifeRotFadeFrame;  // life [0,1], rotation (rad), fade [0,1], frame
+
+const int kShapeVertices = 8;  // TrimmedShapes::kMaxVertices
+uniform int uTrimmed;          // 1: draw the frame's trimmed polygon (a fan of kShapeVertices)
+uniform int uShapeBuckets;     // LOD buckets per frame in uShapes
+uniform float uLodScale;       // texels per pixel = uLodScale * depth / size
+uniform vec4 uShapes[128];     // [frame][bucket][vertex] (x, y), two vertices per vec4
 
 out vec3 vViewPos;       // view-space position on the quad
 out vec2 vLocal;         // billboards: rotated particle-space coordinate, [-1,1]^2 inside the quad
@@ -58,7 +71,7 @@ void main() {
     float depth = -centre.z;
     vec2 sx = slopeRange(centre.x, depth, radius, uSlopeMax.x);
     vec2 sy = slopeRange(centre.y, depth, radius, uSlopeMax.y);
-    float quadDepth = clamp(depth, uNear * 1.01, uFar * 0.99);
+    float quadDepth = clamp(depth - radius, uNear * 1.01, uFar * 0.99);
     vec2 slope = vec2(aCorner.x < 0.0 ? sx.x : sx.y, aCorner.y < 0.0 ? sy.x : sy.y);
     vec3 viewPos = vec3(slope * quadDepth, -quadDepth);
     vSphere = vec4(centre, radius);
@@ -66,10 +79,22 @@ void main() {
 #else
     vec3 right = normalize(vec3(uView[0][0], uView[1][0], uView[2][0]));
     vec3 up = normalize(vec3(uView[0][1], uView[1][1], uView[2][1]));
-    vec3 world = aPosSize.xyz + (aCorner.x * right + aCorner.y * up) * radius;
+    vec2 corner = aCorner;
+    vec2 local = rotate2(aCorner, aLifeRotFadeFrame.y);
+    if (uTrimmed != 0) {
+        int frame = clamp(int(aLifeRotFadeFrame.w + 0.5), 0, 3);
+        float centreDepth = max(-(uView * vec4(aPosSize.xyz, 1.0)).z, uNear);
+        float lod = log2(max(uLodScale * centreDepth / max(aPosSize.w, 1e-6), 1e-6));
+        int bucket = clamp(int(ceil(lod + 0.5)), 0, uShapeBuckets - 1);
+        int index = (frame * uShapeBuckets + bucket) * kShapeVertices + min(gl_VertexID, kShapeVertices - 1);
+        vec4 pair = uShapes[index / 2];
+        local = (index % 2) == 0 ? pair.xy : pair.zw;
+        corner = rotate2(local, -aLifeRotFadeFrame.y);
+    }
+    vec3 world = aPosSize.xyz + (corner.x * right + corner.y * up) * radius;
     vec3 viewPos = (uView * vec4(world, 1.0)).xyz;
     vSphere = vec4(0.0);
-    vLocal = rotate2(aCorner, aLifeRotFadeFrame.y);
+    vLocal = local;
 #endif
     vViewPos = viewPos;
     gl_Position = uProj * vec4(viewPos, 1.0);

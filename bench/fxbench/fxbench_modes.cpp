@@ -8,11 +8,13 @@ namespace fxbench {
 
 const std::vector<Mode>& allModes() {
     using fx::Technique;
-    // name, setup, effects, technique, prepassEqual, quarterRes, reference
+    // name, setup, effects, technique, prepassEqual, quarterRes, reference[, shape]
     static const std::vector<Mode> modes = {
         {"nofx", "No particles (bare engine)", false, Technique::Hard, false, false, "nofx"},
         {"hard", "Hard particles", true, Technique::Hard, false, false, "hard"},
         {"soft", "Soft particles, no optimizations", true, Technique::Soft, false, false, "soft"},
+        {"soft-quads", "Soft particles drawn as full quads (untrimmed)", true, Technique::Soft, false, false, "soft",
+         fx::ParticleShape::Quad},
         {"soft+equal", "Soft particles, utilize prepass z-buffer (EQUAL)", true, Technique::Soft, true, false,
          "soft"},
         {"soft+quarter", "Soft particles, 1/4-size texture", true, Technique::Soft, false, true, "soft"},
@@ -68,6 +70,7 @@ void applyMode(cube::Game& game, const Mode& mode) {
     ro.quarterRes = mode.quarterRes;
     ro.bilinearUpsample = false;  // the depth-aware composite is the one under test
     plugin->setRenderOptions(ro);
+    plugin->setParticleShape(mode.shape);
 }
 
 }  // namespace fxbench

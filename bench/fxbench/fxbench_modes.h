@@ -24,10 +24,12 @@ struct Mode {
     /// full-resolution techniques: then error is between two renders of the same frame, which
     /// checks that rendering is deterministic and must be 0).
     const char* reference = "nofx";
+    /// Billboards as trimmed polygons (the plugin's default) or full quads (`soft-quads`).
+    fx::ParticleShape shape = fx::ParticleShape::Trimmed;
 };
 
-/// Every mode, in table order: nofx, hard, soft, soft+equal, soft+quarter, soft+equal+quarter,
-/// spherical, spherical+quarter.
+/// Every mode, in table order: nofx, hard, soft, soft-quads, soft+equal, soft+quarter,
+/// soft+equal+quarter, spherical, spherical+quarter.
 const std::vector<Mode>& allModes();
 /// Null when `name` is not a mode.
 const Mode* findMode(const std::string& name);

@@ -81,7 +81,7 @@ bool Game::InitProc(std::string* error) {
         if (!warning.empty()) warnings_.push_back(scenePath + ": " + warning);
     }
     if (!vehicle_.active()) frameSceneBounds();
-    if (!scene_.Init(sceneData_, error, carNode)) return false;
+    if (!scene_.Init(sceneData_, error, carNode, options_.reversedZ)) return false;
     rtt::RenderTargetPoolDesc poolDesc;
     poolDesc.framesUntilFree = std::max(1, options_.poolFramesUntilFree);
     pool_ = std::make_unique<rtt::RenderTargetPool>(poolDesc);

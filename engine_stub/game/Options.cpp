@@ -119,6 +119,8 @@ std::string usage() {
         "  --window               open a window (same as --backend glfw)\n"
         "  --backend osmesa|egl|glfw  context backend (default osmesa)\n"
         "  --near N --far F       chase camera clip planes (default 0.1, 2000)\n"
+        "  --depth reversed|standard  z-buffer: reversed-Z in 32-bit float where the context\n"
+        "                         has clip control (default), or 24-bit standard depth\n"
         "  --camera ex,ey,ez,tx,ty,tz  pin the main camera (world metres) instead of chasing the car\n"
         "  --no-mirror            leave out the rear-view mirror view\n"
         "  --no-hud               leave out the HUD\n"
@@ -254,6 +256,14 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
                 return false;
             }
             (a == "--near" ? o.nearPlane : o.farPlane) = float(d);
+        } else if (a == "--depth") {
+            if (!need(i, 1, a)) return false;
+            const std::string v = argv[++i];
+            if (v != "reversed" && v != "standard") {
+                *error = "--depth: expected reversed or standard, got '" + v + "'";
+                return false;
+            }
+            o.reversedZ = v == "reversed";
         } else if (a == "--camera") {
             if (!need(i, 1, a)) return false;
             const std::string text = argv[++i];

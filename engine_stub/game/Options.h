@@ -37,6 +37,9 @@ struct Options {
     bool hud = true;
     float nearPlane = 0.1f;
     float farPlane = 2000.0f;
+    /// Reversed-Z in a 32-bit float z-buffer where the context has clip control (GL 4.5 /
+    /// ARB_clip_control); false, or a context without it: GL's default [-1, 1] with 24 bits.
+    bool reversedZ = true;
     bool help = false;
     // Harness switches (fxbench; no command-line flag in cube_game).
     bool effects = true;          ///< false: the bare engine, no particle passes at all

@@ -1,5 +1,6 @@
 #pragma once
-// The engine's single way to see GL: glad's 3.3 core loader (with KHR_debug, ARB_timer_query).
+// The engine's single way to see GL: glad's 3.3 core loader (with KHR_debug, ARB_timer_query,
+// ARB_clip_control).
 #include <glad/gl.h>
 
 #include <string>
@@ -18,6 +19,13 @@ void resetErrorCount();
 bool hasDebug();
 /// Waits for every GL command issued so far (frame timing with a CPU clock).
 void finish();
+/// True when the context can map clip z to [0, 1] (GL 4.5 or ARB_clip_control): what
+/// reversed-Z in a float depth buffer needs to keep its precision.
+bool hasClipControl();
+/// Sets the context's clip-space depth range: [0, 1] (`zeroToOne`, for reversed-Z) or GL's
+/// default [-1, 1]. False (nothing changed) when zeroToOne is asked of a context without
+/// clip control.
+bool setClipDepthZeroToOne(bool zeroToOne);
 
 /// RAII GL debug group: the pass, bucket or view name shows in debuggers (RenderDoc, apitrace).
 class DebugGroup {

@@ -62,6 +62,14 @@ void resetErrorCount() { g_errorCount = 0; g_lastError.clear(); }
 bool hasDebug() { return g_hasDebug; }
 void finish() { glFinish(); }
 
+bool hasClipControl() { return GLAD_GL_ARB_clip_control && glClipControl != nullptr; }
+
+bool setClipDepthZeroToOne(bool zeroToOne) {
+    if (!hasClipControl()) return !zeroToOne;
+    glClipControl(GL_LOWER_LEFT, zeroToOne ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
+    return true;
+}
+
 int checkErrors(const char* where) {
     int n = 0;
     for (GLenum e = glGetError(); e != GL_NO_ERROR && n < 32; e = glGetError()) {

@@ -45,7 +45,7 @@ bool LegacySpriteRenderer::init(std::string* error) {
 }
 
 void LegacySpriteRenderer::draw(const std::vector<cubeParticleSystem::SpriteVertex>& vertices,
-                                const float* viewProj, const glm::vec3& tint) {
+                                const float* viewProj, const glm::vec3& tint, bool reversedZ) {
     if (vertices.empty() || !program_.valid()) return;
     using V = cubeParticleSystem::SpriteVertex;
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
@@ -62,7 +62,7 @@ void LegacySpriteRenderer::draw(const std::vector<cubeParticleSystem::SpriteVert
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, atlas_);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
+    glDepthFunc(reversedZ ? GL_GEQUAL : GL_LEQUAL);
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);

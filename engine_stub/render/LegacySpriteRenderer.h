@@ -14,9 +14,10 @@ class LegacySpriteRenderer {
 public:
     ~LegacySpriteRenderer();
     bool init(std::string* error);
-    /// Draws `vertices` (triangles) with the view-projection matrix into the bound framebuffer.
+    /// Draws `vertices` (triangles) with the view-projection matrix into the bound framebuffer,
+    /// depth-tested without writes (LEQUAL, or GEQUAL on a reversed-Z buffer).
     void draw(const std::vector<cubeParticleSystem::SpriteVertex>& vertices, const float* viewProj,
-              const glm::vec3& tint);
+              const glm::vec3& tint, bool reversedZ);
 
 private:
     gl::Program program_;

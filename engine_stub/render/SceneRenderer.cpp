@@ -17,9 +17,18 @@ void setCamera(const gl::Program& p, const CameraMatrices& cam) {
     glUniformMatrix4fv(p.uniform("uProj"), 1, GL_FALSE, glm::value_ptr(cam.proj));
 }
 
+// The depth test that keeps the nearer surface: LESS/LEQUAL, or GREATER/GEQUAL reversed.
+GLenum nearerTest(bool reversedZ, bool orEqual) {
+    if (reversedZ) return orEqual ? GL_GEQUAL : GL_GREATER;
+    return orEqual ? GL_LEQUAL : GL_LESS;
+}
+
 }  // namespace
 
-bool SceneRenderer::init(const SceneData& data, std::string* error) {
+bool SceneRenderer::init(const SceneData& data, std::string* error, bool reversedZ) {
+    // Clip control is context state: set once here, for every pass of the scene.
+    reversedZ_ = reversedZ && gl::hasClipControl() && gl::setClipDepthZeroToOne(true);
+    if (!reversedZ_ && gl::hasClipControl()) gl::setClipDepthZeroToOne(false);
     gpu_.upload(data);
     if (!gl::Program::load("vs_mesh.glsl", "fs_mesh.glsl", &meshProgram_, error)) return false;
     if (!gl::Program::load("vs_mesh.glsl", "fs_mesh_prepass.glsl", &prepassProgram_, error)) return false;
@@ -73,7 +82,7 @@ void SceneRenderer::drawCameraQuads(const gl::Program& p, const CameraQuads& qua
 
 void SceneRenderer::depthPrepass(const std::vector<MeshDraw>& opaque, const std::vector<MeshDraw>& alphaTested,
                                  const CameraMatrices& cam, const CameraQuads& quads) const {
-    ScopedPassState state({true, GL_LESS, true, true});
+    ScopedPassState state({true, nearerTest(reversedZ_, false), true, true});
     setCamera(prepassProgram_, cam);
     const GLint uModel = prepassProgram_.uniform("uModel");
     gpu_.draw(opaque, uModel, -1);
@@ -86,7 +95,7 @@ void SceneRenderer::opaque(const std::vector<MeshDraw>& draws, const CameraMatri
     // LEQUAL, not LESS: where two surfaces meet at exactly the same depth the last drawn wins,
     // which is what EQUAL on the prepass z-buffer does too. So the two paths give the same
     // pixel even at coplanar seams.
-    ScopedPassState state({true, GLenum(equal ? GL_EQUAL : GL_LEQUAL), !equal, true});
+    ScopedPassState state({true, equal ? GLenum(GL_EQUAL) : nearerTest(reversedZ_, true), !equal, true});
     setCamera(meshProgram_, cam);
     gpu_.draw(draws, meshProgram_.uniform("uModel"), meshProgram_.uniform("uBaseColor"));
     if (!quads.empty()) {
@@ -98,24 +107,24 @@ void SceneRenderer::opaque(const std::vector<MeshDraw>& draws, const CameraMatri
 
 void SceneRenderer::alphaTested(const std::vector<MeshDraw>& draws, const CameraMatrices& cam, bool equal) const {
     // Culling as in the prepass, or EQUAL would differ.
-    ScopedPassState state({true, GLenum(equal ? GL_EQUAL : GL_LEQUAL), !equal, true});
+    ScopedPassState state({true, equal ? GLenum(GL_EQUAL) : nearerTest(reversedZ_, true), !equal, true});
     setCamera(meshProgram_, cam);
     gpu_.draw(draws, meshProgram_.uniform("uModel"), meshProgram_.uniform("uBaseColor"));
 }
 
 void SceneRenderer::sky(const CameraMatrices& cam) const {
-    ScopedPassState state({true, GL_LEQUAL, false, false});
+    ScopedPassState state({true, nearerTest(reversedZ_, true), false, false});
     glUseProgram(skyProgram_.id());
     const glm::mat4 inv = glm::inverse(cam.proj * glm::mat4(glm::mat3(cam.view)));
     glUniformMatrix4fv(skyProgram_.uniform("uInvViewProj"), 1, GL_FALSE, glm::value_ptr(inv));
-    glUniform1f(skyProgram_.uniform("uDepth"), 1.0f);
+    glUniform1f(skyProgram_.uniform("uDepth"), reversedZ_ ? 0.0f : 1.0f);  // the far plane
     glBindVertexArray(emptyVao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 void SceneRenderer::sprites(const std::vector<cubeParticleSystem::SpriteVertex>& vertices,
                             const glm::mat4& viewProj, const glm::vec3& tint) {
-    legacySprites_.draw(vertices, glm::value_ptr(viewProj), tint);
+    legacySprites_.draw(vertices, glm::value_ptr(viewProj), tint, reversedZ_);
 }
 
 void SceneRenderer::inset(uint32_t texture, int iw, int ih, bool flipX, int w, int h) const {

@@ -56,15 +56,22 @@ public:
     SceneRenderer& operator=(const SceneRenderer&) = delete;
 
     /// Uploads the scene's meshes and builds every program. False + error (shader file:line ...).
-    bool init(const SceneData& data, std::string* error);
+    /// `reversedZ` asks for reversed-Z (clip z in [0, 1], near = 1, cleared to 0, GREATER); it
+    /// is granted where the context has clip control, else the scene uses GL's default depth.
+    bool init(const SceneData& data, std::string* error, bool reversedZ = false);
+    /// The depth convention every pass of this renderer uses (see init): views build their
+    /// projection, clear value and z-buffer format (32-bit float when reversed) to match.
+    bool reversedZ() const { return reversedZ_; }
 
     /// The mesh table (records MeshDraws for the game side; no GL).
     const GpuScene& meshes() const { return gpu_; }
 
-    /// [depth prepass] linear view depth (R32F, cleared by the caller) + z-buffer, LESS.
+    /// [depth prepass] linear view depth (R32F, cleared by the caller) + z-buffer, LESS (GREATER
+    /// reversed).
     void depthPrepass(const std::vector<MeshDraw>& opaque, const std::vector<MeshDraw>& alphaTested,
                       const CameraMatrices& cam, const CameraQuads& quads) const;
-    /// [opaque] LEQUAL with depth writes, or EQUAL on the prepass z-buffer without them.
+    /// [opaque] LEQUAL (GEQUAL reversed) with depth writes, or EQUAL on the prepass z-buffer
+    /// without them.
     void opaque(const std::vector<MeshDraw>& draws, const CameraMatrices& cam, bool equal,
                 const CameraQuads& quads) const;
     /// [alpha-tested] as opaque, culling as in the prepass.
@@ -89,6 +96,7 @@ private:
     GLuint emptyVao_ = 0;                 // for gl_VertexID full-screen triangles
     LegacySpriteRenderer legacySprites_;
     Hud hud_;
+    bool reversedZ_ = false;
 };
 
 }  // namespace cube

@@ -4,10 +4,10 @@
 
 namespace cube {
 
-bool cubeScene::Init(const SceneData& data, std::string* error, const std::string& carNode) {
+bool cubeScene::Init(const SceneData& data, std::string* error, const std::string& carNode, bool reversedZ) {
     data_ = data;
     carNode_ = carNode.empty() ? -1 : data_.findNode(carNode);
-    return renderer_.init(data_, error);
+    return renderer_.init(data_, error, reversedZ);
 }
 
 cubeParticleSystem* cubeScene::CreateParticleSystem(cubeParticleSystem::Kind kind) {

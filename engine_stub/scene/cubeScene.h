@@ -37,7 +37,10 @@ public:
     cubeScene& operator=(const cubeScene&) = delete;
     /// Uploads the scene and builds the back end's programs. False + error (shader file:line, ...).
     /// `carNode` names the subtree that moves with the car ("" or absent: nothing moves).
-    bool Init(const SceneData& data, std::string* error, const std::string& carNode = "car");
+    /// `reversedZ`: ask the back end for reversed-Z depth (SceneRenderer::init says when it is
+    /// granted).
+    bool Init(const SceneData& data, std::string* error, const std::string& carNode = "car",
+              bool reversedZ = false);
 
     /// The factory (cubeScene::CreateParticleSystem): a new system owned by the scene.
     cubeParticleSystem* CreateParticleSystem(cubeParticleSystem::Kind kind);

@@ -15,8 +15,13 @@
 namespace cube {
 
 glm::mat4 ViewCamera::view() const { return glm::lookAt(eye, target, up); }
-glm::mat4 ViewCamera::proj(float aspect) const {
-    return glm::perspective(fovY, aspect > 0.0f ? aspect : 1.0f, nearPlane, farPlane);
+glm::mat4 ViewCamera::proj(float aspect, bool reversedZ) const {
+    const float a = aspect > 0.0f ? aspect : 1.0f;
+    // Zero-to-one with the planes swapped is reversed-Z: z_ndc = n/(f-n) * (f/d - 1), 1 at the
+    // near plane, 0 at the far one. Float keeps its relative precision near 0, so depth
+    // resolution stays proportional to distance at any near/far ratio.
+    if (reversedZ) return glm::perspectiveRH_ZO(fovY, a, farPlane, nearPlane);
+    return glm::perspective(fovY, a, nearPlane, farPlane);
 }
 
 
@@ -61,7 +66,8 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
     Trace::call("cubeView::RenderObjects");
     // Camera parameters (view, fov, clip planes), then the buckets (culled, sorted).
     view_ = camera_.view();
-    proj_ = camera_.proj(height_ > 0 ? float(width_) / float(height_) : 1.0f);
+    reversedZ_ = scene.renderer().reversedZ();
+    proj_ = camera_.proj(height_ > 0 ? float(width_) / float(height_) : 1.0f, reversedZ_);
     recordBuckets(scene);
 
     // The view's frame, in pipeline order. Each pass declares what it reads and writes; the
@@ -89,7 +95,7 @@ cubeView::Targets cubeView::declareTargets(rtt::FrameGraph& graph) {
     names_.push_back(name_ + ".scene_depth");
     rtt::RenderTargetDesc depthDesc;
     depthDesc.color[0] = rtt::ColorFormat::R32F;
-    depthDesc.depth = rtt::DepthFormat::Depth24;
+    depthDesc.depth = zBufferFormat();
     depthDesc.filter = rtt::Filter::Nearest;
     Targets t;
     t.sceneDepth = graph.create(names_.back().c_str(), sized(depthDesc));
@@ -98,9 +104,13 @@ cubeView::Targets cubeView::declareTargets(rtt::FrameGraph& graph) {
     names_.push_back(name_ + ".color");
     rtt::RenderTargetDesc colorDesc = sized(rtt::RenderTargetDesc{});
     colorDesc.color[0] = rtt::ColorFormat::RGBA8;
-    colorDesc.depth = rtt::DepthFormat::Depth24;
+    colorDesc.depth = zBufferFormat();
     t.color = graph.create(names_.back().c_str(), colorDesc);
     return t;
+}
+
+rtt::DepthFormat cubeView::zBufferFormat() const {
+    return reversedZ_ ? rtt::DepthFormat::Depth32F : rtt::DepthFormat::Depth24;
 }
 
 CameraMatrices cubeView::cameraMatrices() const {
@@ -122,9 +132,10 @@ void cubeView::declareDepthPrepass(cubeScene& scene, rtt::FrameGraph& graph, con
     graph.addPass(passName(bucketInfo(Bucket::DepthPrepass).name).c_str(),
                   order(bucketInfo(Bucket::DepthPrepass).order),
                   [&](rtt::PassBuilder& b) { b.write(depth); },
-                  [this, r, depth, cam, quads](rtt::PassContext& ctx) {
+                  [this, r, depth, cam, quads, reversed = reversedZ_](rtt::PassContext& ctx) {
                       rtt::ClearValues cv;
                       cv.color[0] = {1e30f, 0.0f, 0.0f, 0.0f};  // "infinitely far" where nothing is drawn
+                      cv.depth = reversed ? 0.0f : 1.0f;          // the far plane
                       ctx.clear(depth, cv);
                       ctx.bindForDraw(depth);
                       r->depthPrepass(opaque_, alphaTested_, cam, quads);
@@ -141,9 +152,10 @@ void cubeView::declareOpaque(cubeScene& scene, rtt::FrameGraph& graph, const Tar
     const rtt::FrameGraphResource color = t.color;
     graph.addPass(passName(bucketInfo(Bucket::Opaque).name).c_str(), order(bucketInfo(Bucket::Opaque).order),
                   [&](rtt::PassBuilder& b) { b.write(color); },
-                  [this, r, color, cam, quads](rtt::PassContext& ctx) {
+                  [this, r, color, cam, quads, reversed = reversedZ_](rtt::PassContext& ctx) {
                       rtt::ClearValues cv;
                       cv.color[0] = {0.0f, 0.0f, 0.0f, 1.0f};
+                      cv.depth = reversed ? 0.0f : 1.0f;
                       cv.clearDepth = !equal_;
                       cv.clearStencil = !equal_;
                       ctx.clear(color, cv);
@@ -219,6 +231,7 @@ void cubeView::declarePluginPasses(rtt::FrameGraph& graph, const Targets& t, con
         info.eye = camera_.eye;
         info.nearPlane = camera_.nearPlane;
         info.farPlane = camera_.farPlane;
+        info.depth = reversedZ_ ? fx::DepthConvention::ReversedZ : fx::DepthConvention::Standard;
         info.width = width_;
         info.height = height_;
         settings.plugin->declarePasses(info, fx);

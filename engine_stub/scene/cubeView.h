@@ -26,7 +26,9 @@ struct ViewCamera {
     float nearPlane = 0.1f;
     float farPlane = 2000.0f;
     glm::mat4 view() const;
-    glm::mat4 proj(float aspect) const;
+    /// Standard: GL's [-1, 1] clip depth, near -> -1. `reversedZ`: clip depth in [0, 1] with
+    /// near -> 1 and far -> 0 (for glClipControl ZERO_TO_ONE and a float z-buffer cleared to 0).
+    glm::mat4 proj(float aspect, bool reversedZ = false) const;
 };
 
 class cubeView {
@@ -54,6 +56,7 @@ private:
     };
     rtt::FrameGraphResource RenderObjects(cubeScene& scene, rtt::FrameGraph& graph, const FrameSettings& settings);
     Targets declareTargets(rtt::FrameGraph& graph);
+    rtt::DepthFormat zBufferFormat() const;
     void declareDepthPrepass(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
     void declareOpaque(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
     void declareAlphaTested(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t);
@@ -72,6 +75,7 @@ private:
     ViewCamera camera_;
     int width_ = 0, height_ = 0;
     glm::mat4 view_{1.0f}, proj_{1.0f};
+    bool reversedZ_ = false;  ///< the scene renderer's depth convention, read each frame
     // Buckets, recorded by the game side; the pass callbacks only draw them.
     std::vector<MeshDraw> all_, opaque_, alphaTested_;
     std::vector<std::string> names_;

@@ -24,6 +24,7 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
         for (const ReactionRuntime& r : runtimes) {
             batches->push_back(ParticleBatch{&r.pool(), &r.desc(), r.needsSorting()});
         }
+        renderer->setParticleShape(owner->particleShape());
         owner->setParticlesDrawn(renderer->declarePasses(view, frame, batches->data(),
                                                          static_cast<int>(batches->size()), options));
     });

@@ -18,8 +18,10 @@ InstanceStream::~InstanceStream() {
 
 void InstanceStream::create() {
     if (vao_) return;
-    // Triangle-strip order: bottom-left, bottom-right, top-left, top-right.
-    static const float kCorners[8] = {-1.0f, -1.0f, 1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 1.0f};
+    // Triangle-strip order: bottom-left, bottom-right, top-left, top-right; padded to the eight
+    // vertices a trimmed fan draws (which takes its corners from a uniform table instead).
+    static const float kCorners[16] = {-1.0f, -1.0f, 1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 1.0f,
+                                       1.0f,  1.0f,  1.0f, 1.0f,  1.0f,  1.0f, 1.0f, 1.0f};
     glGenVertexArrays(1, &vao_);
     glGenBuffers(1, &cornerBuffer_);
     glGenBuffers(1, &instanceBuffer_);

@@ -36,6 +36,10 @@ ParticleProgram locate(GLuint program) {
     p.atlas = glGetUniformLocation(program, "uAtlas");
     p.ramp = glGetUniformLocation(program, "uRamp");
     p.sceneDepth = glGetUniformLocation(program, "uSceneDepth");
+    p.trimmed = glGetUniformLocation(program, "uTrimmed");
+    p.shapeBuckets = glGetUniformLocation(program, "uShapeBuckets");
+    p.lodScale = glGetUniformLocation(program, "uLodScale");
+    p.shapes = glGetUniformLocation(program, "uShapes");
     return p;
 }
 

@@ -117,6 +117,7 @@ bool ParticleRenderer::ensureLoaded() {
     }
     stream_.create();
     ramp_.upload();
+    shapeTable_ = atlas_.shapes().packed();
     if (!config_.shaderDir.empty()) shaderStamp_ = shaderStamp();
     state_ = State::Ready;
     return true;
@@ -214,6 +215,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     std::shared_ptr<ViewRecord> record = acquireRecord();
     record->view = view;
     record->view.name = "";  // the host's string is not ours to keep
+    record->shape = shape_;
 
     // Until something is visible nothing is loaded: a scene without smoke never compiles a shader.
     const uint32_t allTechniques = techniqueBit(Technique::Hard) | techniqueBit(Technique::Soft) |
@@ -317,11 +319,27 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
     bindTextureUnit(kSceneDepthUnit, sceneDepth);
 
     const glm::vec2 slopes = frustumSlopes(view.proj);
+    // Trimmed billboards: the LOD estimate needs the target's height in pixels (the viewport the
+    // pass bound: full or half resolution).
+    static_assert(TrimmedShapes::kFrames * TrimmedShapes::kMaxBuckets * TrimmedShapes::kMaxVertices / 2 == 128,
+                  "uShapes[128] in vs_particles.glsl");
+    GLint viewport[4] = {0, 0, 1, 1};
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    const bool trimmable = record.shape == ParticleShape::Trimmed && !shapeTable_.empty();
+    const float lodScale = 2.0f * float(atlas_.cellTexels()) /
+                           std::fmax(std::fabs(view.proj[1][1]) * float(std::max(viewport[3], 1)), 1e-6f);
     for (const DrawBatch& batch : list.batches) {
         const ParticleProgram& p =
             programs_->get(ParticlePrograms::variantFor(batch.technique, quarterRes));
         if (!p.program) continue;
-        const bool zTest = batch.technique == Technique::Hard && !quarterRes;
+        // Full resolution tests against the host's z-buffer without writing it. Hard particles
+        // always do (that is their look). Soft and spherical ones only skip fragments there that
+        // would shade to nothing (behind geometry their fade / visible chord is 0), which needs a
+        // z-buffer whose precision holds at any near/far ratio: reversed-Z. With standard depth a
+        // 24-bit buffer at near 0.01, far 1e5 cannot tell 1 m apart at 10 km, so they stay
+        // untested there and the fade alone hides them. (Quarter res has no z-buffer.)
+        const bool zTest = !quarterRes && (batch.technique == Technique::Hard ||
+                                           view.depth == DepthConvention::ReversedZ);
         if (zTest) {
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(view.depth == DepthConvention::ReversedZ ? GL_GEQUAL : GL_LEQUAL);
@@ -347,8 +365,19 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         glUniform1i(p.atlas, kAtlasUnit);
         glUniform1i(p.ramp, kRampUnit);
         glUniform1i(p.sceneDepth, kSceneDepthUnit);
+        const bool trimmed = trimmable && batch.technique != Technique::Spherical;
+        glUniform1i(p.trimmed, trimmed ? 1 : 0);
+        if (trimmed) {
+            glUniform1i(p.shapeBuckets, atlas_.shapes().buckets());
+            glUniform1f(p.lodScale, lodScale);
+            glUniform4fv(p.shapes, GLsizei(shapeTable_.size()), &shapeTable_[0][0]);
+        }
         stream_.bindRange(batch.first);
-        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, batch.count);
+        if (trimmed) {
+            glDrawArraysInstanced(GL_TRIANGLE_FAN, 0, TrimmedShapes::kMaxVertices, batch.count);
+        } else {
+            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, batch.count);
+        }
     }
 }
 

@@ -78,6 +78,9 @@ public:
     /// edit and appended to `out`, false. Needs the host's context current.
     bool reloadShaders(Diagnostics* out);
 
+    /// Trimmed polygons or full quads for billboards, from the next declarePasses on.
+    void setParticleShape(ParticleShape shape) { shape_ = shape; }
+
     State state() const { return state_; }
     const std::string& shaderDir() const { return config_.shaderDir; }
     const InstanceStream& instanceStream() const { return stream_; }
@@ -87,6 +90,7 @@ private:
     struct ViewRecord {
         ViewInfo view;
         DrawList list;
+        ParticleShape shape = ParticleShape::Trimmed;
     };
 
     bool ensureLoaded();
@@ -102,6 +106,8 @@ private:
 
     ParticleRendererConfig config_;
     State state_ = State::Unloaded;
+    ParticleShape shape_ = ParticleShape::Trimmed;
+    std::vector<glm::vec4> shapeTable_;  ///< atlas_.shapes().packed(), uploaded per draw
     bool quarterFallbackLogged_ = false;
     Diagnostics loadDiagnostics_;  ///< what went wrong while loading (prepare() hands them out)
     SmokeAtlas atlas_;

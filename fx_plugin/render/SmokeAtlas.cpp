@@ -51,11 +51,12 @@ bool SmokeAtlas::load(const std::string& dataDir, std::string* error) {
     glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
     glBindTexture(GL_TEXTURE_2D, texture_);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
-    stbi_image_free(pixels);
     // Stop the mip chain while a frame is still 8 texels wide: below that, the 2x2 frames would
     // average into each other.
     int maxLevel = 0;
     for (int cell = (w < h ? w : h) / 2; cell > 8; cell /= 2) ++maxLevel;
+    shapes_.compute(pixels, w, h, maxLevel);  // the trimmed polygons of this image and mip chain
+    stbi_image_free(pixels);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, maxLevel);
     glGenerateMipmap(GL_TEXTURE_2D);

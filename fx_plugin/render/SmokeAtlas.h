@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <string>
 
+#include "TrimmedShapes.h"
+
 namespace fx {
 
 class SmokeAtlas {
@@ -26,10 +28,16 @@ public:
     uint32_t texture() const { return texture_; }
     int width() const { return width_; }
     int height() const { return height_; }
+    /// Per frame and LOD bucket, the polygon that holds every texel the sampler can return with
+    /// alpha > 0 (TrimmedShapes.h); computed at load.
+    const TrimmedShapes& shapes() const { return shapes_; }
+    /// Base-level texels across one frame (the vertex shader's LOD estimate).
+    int cellTexels() const { return width_ / 2; }
 
 private:
     uint32_t texture_ = 0;
     int width_ = 0, height_ = 0;
+    TrimmedShapes shapes_;
 };
 
 }  // namespace fx

@@ -133,6 +133,16 @@ ErrorCode PluginImpl::setRenderOptions(const RenderOptions& options) {
     return ErrorCode::None;
 }
 
+ErrorCode PluginImpl::setParticleShape(ParticleShape shape) {
+    const auto s = static_cast<uint8_t>(shape);
+    if (s > static_cast<uint8_t>(ParticleShape::Quad)) {
+        return errors_.refuse(ErrorCode::InvalidValue, "setParticleShape",
+                              "shape = " + std::to_string(s) + "; expected Trimmed or Quad");
+    }
+    shape_ = shape;
+    return ErrorCode::None;
+}
+
 bool PluginImpl::prepareGl(Diagnostics* out) {
     return prepareHook_ ? prepareHook_(out) : true;
 }

@@ -50,6 +50,8 @@ public:
     Stats stats() const override;
     ParticleCheck checkParticles() const override;
     bool pollShaderReload(Diagnostics* out) override;
+    ErrorCode setParticleShape(ParticleShape shape) override;
+    ParticleShape particleShape() const override { return shape_; }
 
     /// The renderer's entry; pass an empty function to remove it.
     void setRenderHook(RenderHook hook) { renderHook_ = std::move(hook); }
@@ -85,6 +87,7 @@ private:
     std::vector<ReactionRuntime> runtimes_;
     int runtimeGeneration_ = 0;
     RenderOptions options_;
+    ParticleShape shape_ = ParticleShape::Trimmed;
     RenderHook renderHook_;
     PrepareHook prepareHook_;
     PrepareHook shaderReloadHook_;

@@ -102,7 +102,8 @@ int maxAbsDiff(const Image& a, const Image& b);
 /// pass reads; targets are allocated (from a pool kept across frames) only for running passes.
 class TestFrameGraph final : public fx::FrameBuilder {
 public:
-    TestFrameGraph(int width, int height);
+    /// `floatDepth`: 32-bit float z-buffers (what a reversed-Z host uses), else 24-bit.
+    TestFrameGraph(int width, int height, bool floatDepth = false);
     ~TestFrameGraph() override;
 
     void beginFrame();

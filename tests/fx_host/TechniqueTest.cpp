@@ -200,24 +200,31 @@ float cpuSoftFade(float sceneDepth, float particleDepth, float softness, float c
     return x > 0.5f ? 1.0f - y : y;
 }
 
-// Near 0.01, far 100000. A particle at 1 m (0.5 m wide) and one at 10 km (2 km wide), each with
-// a wall `gap` metres behind it: the smoke's brightness over black, divided by the same pixel
-// with the wall 500 m back (fade 1), is the shader's fade. Tolerance 0.03 (8-bit read-back,
-// compared where the unfaded smoke is above 100/255).
+// Near 0.01, far 100000 and 1e7. A particle at 1 m (0.5 m wide) and one at 10 km (2 km wide),
+// each with a wall `gap` metres behind it: the smoke's brightness over black, divided by the same
+// pixel with the wall 500 m back (fade 1), is the shader's fade. Tolerance 0.03 (8-bit read-back,
+// compared where the unfaded smoke is above 100/255). Twice: a standard 24-bit host (soft
+// particles untested, the fade alone) and a reversed-Z host with a float z-buffer, where the
+// plugin depth-tests soft particles: the test must not eat fragments 0.1 m in front of a wall
+// 10 km away.
 TEST_F(TechniqueTest, SoftFadeIsExactWithExtremeClipPlanes) {
     constexpr int kW = 128, kH = 96;
-    TestFrameGraph graph(kW, kH);
+    for (const bool reversed : {false, true}) {
+    for (const float farPlane : {100000.0f, 1.0e7f}) {
+    TestFrameGraph graph(kW, kH, reversed);
     direct.desc.render.softness = 1.0f;
     direct.desc.render.nearFade = 0.5f;
     for (float distance : {1.0f, 10000.0f}) {
         const float size = distance * 0.5f / (distance < 10.0f ? 1.0f : 2.5f);
-        const fx::ViewInfo view = makeView(glm::vec3(0.0f), glm::vec3(0, 0, -1), kW, kH, 0.01f, 100000.0f);
+        fx::ViewInfo view = makeView(glm::vec3(0.0f), glm::vec3(0, 0, -1), kW, kH, 0.01f, farPlane);
+        if (reversed) useReversedZ(&view);
         direct.set({HandParticle{glm::vec3(0.0f, 0.0f, -distance), size}});
         for (float contrast : {1.0f, 2.0f}) {
             direct.desc.render.contrastPower = contrast;
             auto frameWithWallAt = [&](float gap) {
                 TestScene scene;
                 scene.sky = glm::vec3(0.0f);
+                scene.reversedZ = reversed;
                 const float half = distance * 4.0f;
                 scene.quads = {TestScene::wallZ(-(distance + gap), -half, half, -half, half, glm::vec3(0.0f))};
                 renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = direct.declare(view, f); });
@@ -238,11 +245,15 @@ TEST_F(TechniqueTest, SoftFadeIsExactWithExtremeClipPlanes) {
                     }
                 }
                 ASSERT_GT(used, 20) << "particle at " << distance << " m barely visible";
-                std::printf("[ measured ] soft fade at %.0f m, gap %.1f m, contrast %.0f: expected %.3f, "
-                            "worst error %.4f over %d px\n", distance, gap, contrast, expected, worst, used);
-                EXPECT_LT(worst, 0.03f) << "distance " << distance << " gap " << gap;
+                std::printf("[ measured ] %s far %.0e: soft fade at %.0f m, gap %.1f m, contrast %.0f: "
+                            "expected %.3f, worst error %.4f over %d px\n", reversed ? "reversed-Z" : "standard",
+                            double(farPlane), distance, gap, contrast, expected, worst, used);
+                EXPECT_LT(worst, 0.03f) << (reversed ? "reversed " : "standard ") << "far " << farPlane
+                                        << " distance " << distance << " gap " << gap;
             }
         }
+    }
+    }
     }
 }
 

@@ -37,11 +37,11 @@ GLuint makeTexture(GLenum format, int w, int h, bool linear) {
     return t;
 }
 
-GLuint makeDepthBuffer(int w, int h) {
+GLuint makeDepthBuffer(int w, int h, bool floatDepth) {
     GLuint rb = 0;
     glGenRenderbuffers(1, &rb);
     glBindRenderbuffer(GL_RENDERBUFFER, rb);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, w, h);
+    glRenderbufferStorage(GL_RENDERBUFFER, floatDepth ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24, w, h);
     glBindRenderbuffer(GL_RENDERBUFFER, 0);
     return rb;
 }
@@ -96,12 +96,12 @@ private:
     TestFrameGraph& g_;
 };
 
-TestFrameGraph::TestFrameGraph(int width, int height) : width_(width), height_(height) {
+TestFrameGraph::TestFrameGraph(int width, int height, bool floatDepth) : width_(width), height_(height) {
     colorTex_ = makeTexture(GL_RGBA8, width, height, true);
-    colorDepth_ = makeDepthBuffer(width, height);
+    colorDepth_ = makeDepthBuffer(width, height, floatDepth);
     colorFbo_ = makeFramebuffer(colorTex_, colorDepth_);
     depthTex_ = makeTexture(GL_R32F, width, height, false);
-    depthDepth_ = makeDepthBuffer(width, height);
+    depthDepth_ = makeDepthBuffer(width, height, floatDepth);
     depthFbo_ = makeFramebuffer(depthTex_, depthDepth_);
 }
 

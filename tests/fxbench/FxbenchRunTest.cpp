@@ -103,7 +103,7 @@ TEST_P(FxbenchScenario, TinyRunWritesEveryKeyWithFiniteValues) {
     EXPECT_EQ(run["rounds"].as<int>(), 2);
     EXPECT_FALSE(run["renderer"].as<std::string>().empty());
     ASSERT_TRUE(run["modes"].IsSequence());
-    EXPECT_EQ(run["modes"].size(), 8u);  // every mode by default
+    EXPECT_EQ(run["modes"].size(), 9u);  // every mode by default
     for (const YAML::Node& m : run["modes"]) {
         const std::string name = m["name"].as<std::string>();
         SCOPED_TRACE(name);
@@ -130,6 +130,17 @@ TEST_P(FxbenchScenario, TinyRunWritesEveryKeyWithFiniteValues) {
 }
 
 INSTANTIATE_TEST_SUITE_P(All, FxbenchScenario, ::testing::Values("standard", "fill", "overdraw", "empty"));
+
+TEST(Fxbench, TrimmedSoftShadesFewerFragmentsThanQuadsForTheSameImage) {
+    const YAML::Node& run = tinyRun("standard");
+    const YAML::Node soft = modeNode(run, "soft"), quads = modeNode(run, "soft-quads");
+    const double trimmed = soft["particle_fragments"].as<double>(), full = quads["particle_fragments"].as<double>();
+    ASSERT_GT(full, 0.0);
+    // The polygons hold 60-97 % of the quad depending on the LOD bucket (TrimmedShapes test).
+    EXPECT_LT(trimmed, 0.98 * full);
+    EXPECT_EQ(quads["error"]["reference"].as<std::string>(), "soft");
+    EXPECT_LE(quads["error"]["max_abs"].as<double>(), 1.0);  // 8-bit levels
+}
 
 TEST(Fxbench, ParticleModesDrawParticlesInTheStandardScenario) {
     // The positive control for the "no particle pass" checks.

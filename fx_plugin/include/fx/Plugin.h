@@ -50,6 +50,13 @@ struct RenderOptions {
     bool bilinearUpsample = false; ///< quarter-res composite with plain bilinear (for comparison only)
 };
 
+/// How billboard particles (hard, soft) are rasterised. Trimmed: per atlas frame a convex
+/// polygon (at most 8 vertices) that holds every texel the sampler can return with alpha > 0
+/// replaces the quad, so the transparent corners cost no fragments; the image is the quad's.
+/// Quad: the full quad (for comparison). Spherical billboards always draw their covering quad.
+/// Since API 1.1.
+enum class ParticleShape : uint8_t { Trimmed = 0, Quad = 1 };
+
 class FX_API Plugin {
 public:
     virtual ~Plugin() = default;
@@ -99,6 +106,11 @@ public:
     /// false, ShaderBuild diagnostics ("file:line") in `out` and in the log, once per edit.
     /// Without shaderDir (the embedded shaders) it does nothing.
     virtual bool pollShaderReload(Diagnostics* out) = 0;
+
+    // --- API 1.1 ---------------------------------------------------------------------------
+    /// Default Trimmed. Refused (InvalidValue) for a value outside the enum.
+    virtual ErrorCode setParticleShape(ParticleShape shape) = 0;
+    virtual ParticleShape particleShape() const = 0;
 };
 
 /// What the host hands the plugin at creation. Defaults: this header's API version, no host
