@@ -10,6 +10,9 @@ in vec3 vNormal;
 in vec3 vViewPos;
 
 layout(location = 0) out vec4 oColor;
+// Linear view depth (metres) for a second render target: where the opaque pass also writes the
+// scene depth the particles read (no depth prepass). Without one bound the output is dropped.
+layout(location = 1) out float oLinearDepth;
 
 float hash(vec2 p) { return fract(sin(dot(p, vec2(127.1, 311.7))) * 43758.5453); }
 float noise(vec2 p) {
@@ -28,4 +31,5 @@ void main() {
     }
     vec3 c = shadeLambert(uBaseColor.rgb * (0.6 + 0.8 * v), normalize(vNormal));
     oColor = vec4(c, 1.0);
+    oLinearDepth = -vViewPos.z;
 }

@@ -21,6 +21,8 @@ uniform float uRampRow;       // v coordinate of this reaction's row in uRamp (t
 uniform int uBlendMode;       // fx::BlendMode: 0 alpha, 1 premultiplied, 2 additive
 uniform float uSoftScale;     // 1 / render.softness, 1/m
 uniform float uContrastPower; // render.contrast_power, 1 = linear fade
+uniform int uPowerWhole;      // without FX_GENERAL_POWER: contrast_power = uPowerWhole + uPowerHalf / 2
+uniform int uPowerHalf;       // 0 or 1
 uniform float uNearFade;      // render.near_fade, metres in front of the near plane; 0 = off
 
 uniform sampler2D uAtlas;      // 2x2 smoke atlas, RGBA8, straight alpha, frames row-major from top-left
@@ -60,12 +62,32 @@ float insideFrame(vec2 local) {
     return max(abs(local.x), abs(local.y)) < 0.996 ? 1.0 : 0.0;
 }
 
+// t^p for t in [0, 1]. FX_GENERAL_POWER: pow(). Otherwise p is a whole or half-whole number up to
+// 16 (the renderer picks the program), built from squarings and one sqrt with selects on uniform
+// bits: a few multiplies instead of exp2(p * log2(t)), which costs more than the rest of the soft
+// fragment on a CPU rasteriser (every lane evaluates both sides of a branch there).
+float powerOf(float t, float power) {
+#ifdef FX_GENERAL_POWER
+    return pow(t, power);
+#else
+    float t2 = t * t, t4 = t2 * t2, t8 = t4 * t4, t16 = t8 * t8;
+    float r = (uPowerWhole & 1) != 0 ? t : 1.0;
+    r *= (uPowerWhole & 2) != 0 ? t2 : 1.0;
+    r *= (uPowerWhole & 4) != 0 ? t4 : 1.0;
+    r *= (uPowerWhole & 8) != 0 ? t8 : 1.0;
+    r *= (uPowerWhole & 16) != 0 ? t16 : 1.0;
+    return uPowerHalf != 0 ? r * sqrt(t) : r;
+#endif
+}
+
 // NVIDIA's soft-particle contrast curve ("Soft Particles", Lorach 2007): symmetric S-curve
-// around 0.5; power 1 is the identity.
+// around 0.5, 0.5 * (2x)^p below it and 1 - 0.5 * (2 - 2x)^p above; power 1 is the identity.
+// Written without branches: t = 2 min(x, 1 - x), y = 0.5 + 0.5 sign(2x - 1) (1 - t^p).
+// (The shader code in this file avoids branches on purpose: a CPU rasteriser runs both sides.)
 float contrastCurve(float x, float power) {
-    float flip = x > 0.5 ? 1.0 - x : x;
-    float y = 0.5 * pow(clamp(2.0 * flip, 0.0, 1.0), power);
-    return x > 0.5 ? 1.0 - y : y;
+    float u = 2.0 * x - 1.0;
+    float t = clamp(1.0 - abs(u), 0.0, 1.0);
+    return 0.5 + 0.5 * sign(u) * (1.0 - powerOf(t, power));
 }
 
 // fade = saturate((scene_depth - particle_depth) * scale), through the contrast curve.
@@ -77,8 +99,7 @@ float softFade(float sceneDepth, float particleDepth) {
 // 0 at the near plane, 1 from uNearFade metres in front of it on (no pop when a particle
 // reaches the near plane and is clipped).
 float nearFadeFactor(float depth) {
-    if (uNearFade <= 0.0) return 1.0;
-    return clamp((depth - uNear) / uNearFade, 0.0, 1.0);
+    return uNearFade > 0.0 ? clamp((depth - uNear) / uNearFade, 0.0, 1.0) : 1.0;
 }
 
 // The host's linear depth; <= 0 means nothing was drawn there, like a value past the far plane
@@ -95,10 +116,7 @@ float sceneDepthAt(vec2 fragCoord) {
 //   premultiplied: (rgb * k, ramp.a * k) with k = fade * coverage (ramp rgb taken as premultiplied)
 //   additive:      (rgb * a, 0)        blended (ONE, ONE): adds light, leaves coverage alone
 vec4 shadeOutput(vec4 ramp, float fade, vec4 texel, float coverage) {
-    vec3 rgb = ramp.rgb * texel.rgb;
     float k = fade * coverage;
-    if (uBlendMode == 1) return vec4(rgb * k, ramp.a * k);
     float a = ramp.a * k;
-    if (uBlendMode == 2) return vec4(rgb * a, 0.0);
-    return vec4(rgb * a, a);
+    return vec4(ramp.rgb * texel.rgb * (uBlendMode == 1 ? k : a), uBlendMode == 2 ? 0.0 : a);
 }

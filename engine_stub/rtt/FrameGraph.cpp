@@ -154,6 +154,16 @@ void FrameGraph::setSharedDepth(FrameGraphResource target, FrameGraphResource ow
     compiled_ = false;
 }
 
+void FrameGraph::setDepthFormat(FrameGraphResource target, DepthFormat depth) {
+    const int r = resourceIndex(target);
+    if (r < 0 || resources_[size_t(r)].imported) {
+        if (declError_.empty()) declError_ = "setDepthFormat: not a virtual target of this frame";
+        return;
+    }
+    resources_[size_t(r)].desc.depth = depth;
+    compiled_ = false;
+}
+
 bool FrameGraph::declared(uint32_t pass, int resource) const {
     const Pass& p = passes_[pass];
     for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i)
@@ -313,6 +323,7 @@ bool FrameGraph::execute() {
             timer_.beginPass(p.name.c_str());
             PassContext ctx(*this, order_[pos]);
             p.execute(ctx);
+            ctx.endPass();
             timer_.endPass();
             if (countFragments_) glEndQuery(GL_SAMPLES_PASSED);
             saved.restore();

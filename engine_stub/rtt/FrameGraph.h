@@ -63,6 +63,9 @@ public:
     /// first and decide once the plugin has declared its passes whether it shares the prepass
     /// z-buffer. Clears the target's own depth format.
     void setSharedDepth(FrameGraphResource target, FrameGraphResource owner);
+    /// Changes a virtual target's own depth format any time before compile() (a z-buffer that
+    /// turns out to be needed, or not, once later passes are known).
+    void setDepthFormat(FrameGraphResource target, DepthFormat depth);
     /// An existing pool target (the host's scene colour, a mirror texture kept across frames).
     /// `persistent`: its contents outlive the frame, so passes writing it are never culled.
     FrameGraphResource import(const char* name, RenderTargetHandle handle, bool persistent = false);

@@ -22,6 +22,39 @@ bool PassContext::bindForDraw(FrameGraphResource target) {
     return true;
 }
 
+bool PassContext::bindForDraw(FrameGraphResource target, FrameGraphResource second) {
+    const RenderTargetHandle h = checked(target), h2 = checked(second);
+    RenderTargetPool& pool = graph_.pool_;
+    if (!pool.isValid(h) || !pool.isValid(h2) || pool.width(h) != pool.width(h2) ||
+        pool.height(h) != pool.height(h2) || pool.colorTexture(h2, 0) == 0 || pool.colorTexture(h, 1) != 0) {
+        return false;
+    }
+    const GLuint fbo = pool.framebuffer(h);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, pool.colorTexture(h2, 0), 0);
+    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(2, buffers);
+    extraAttachedFbo_ = fbo;
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        endPass();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        return false;
+    }
+    glViewport(0, 0, pool.width(h), pool.height(h));
+    return true;
+}
+
+void PassContext::endPass() {
+    if (!extraAttachedFbo_) return;
+    // Detached again: a later pass that samples `second` while drawing into `target` must not
+    // find it attached (a feedback loop even when it is not a draw buffer).
+    glBindFramebuffer(GL_FRAMEBUFFER, extraAttachedFbo_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, 0, 0);
+    const GLenum buffer = GL_COLOR_ATTACHMENT0;
+    glDrawBuffers(1, &buffer);
+    extraAttachedFbo_ = 0;
+}
+
 uint32_t PassContext::texture(FrameGraphResource target, int attachment) const {
     return graph_.pool_.colorTexture(checked(target), attachment);
 }

@@ -17,6 +17,11 @@ public:
     /// Binds the target's framebuffer (draw and read) and sets the viewport to its size.
     /// False (nothing bound) when the target could not be allocated.
     bool bindForDraw(FrameGraphResource target);
+    /// Multiple render targets: binds `target`'s framebuffer (its colour as draw buffer 0, its
+    /// depth) with `second`'s colour attachment 0 as draw buffer 1, for this pass only (detached
+    /// when the pass returns). Both must have the same size and `second` a colour attachment;
+    /// false (and nothing bound) otherwise. Fragment output location 1 lands in `second`.
+    bool bindForDraw(FrameGraphResource target, FrameGraphResource second);
     /// GL texture of colour attachment `attachment` (0 when absent).
     uint32_t texture(FrameGraphResource target, int attachment = 0) const;
     /// GL texture of the target's depth, shared or own (0 unless a pass declared readDepth on it
@@ -34,9 +39,12 @@ public:
 private:
     friend class FrameGraph;
     PassContext(FrameGraph& graph, uint32_t pass) : graph_(graph), pass_(pass) {}
+    /// Undoes a two-target bind (called by the graph after the pass body).
+    void endPass();
     RenderTargetHandle checked(FrameGraphResource target) const;
     FrameGraph& graph_;
     uint32_t pass_;
+    uint32_t extraAttachedFbo_ = 0;  ///< framebuffer that has a second target attached this pass
 };
 
 }  // namespace cube::rtt

@@ -70,16 +70,19 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
     proj_ = camera_.proj(height_ > 0 ? float(width_) / float(height_) : 1.0f, reversedZ_);
     recordBuckets(scene);
 
-    // The view's frame, in pipeline order. Each pass declares what it reads and writes; the
-    // graph culls a pass whose output nobody reads and allocates only what kept passes use.
+    // The view's frame. Each pass declares what it reads and writes; the graph culls a pass
+    // whose output nobody reads and allocates only what kept passes use. Passes run in bucket
+    // order (their order keys), whatever the order of the calls here: the particle bucket is
+    // declared before the scene passes because what it reads decides how they are drawn.
     const Targets t = declareTargets(graph);
-    declareDepthPrepass(scene, graph, t, settings);  // runs only if a later pass reads scene depth
-    declareOpaque(scene, graph, t, settings);
-    declareAlphaTested(scene, graph, t);
-    declareSky(scene, graph, t);
     declareLegacySprites(scene, graph, t, settings);
     declarePluginPasses(graph, t, settings);         // soft/spherical read scene depth; quarter-res composites
     declareDepthReadback(graph, t, settings);        // only when the application asked for it
+    decideSceneDepth(graph, t, settings);
+    declareDepthPrepass(scene, graph, t, settings);  // only for prepass-EQUAL
+    declareOpaque(scene, graph, t, settings);        // writes the linear depth too when it is read
+    declareAlphaTested(scene, graph, t);
+    declareSky(scene, graph, t);
     declareHud(scene, graph, t, settings);           // mirror inset and text
     return t.color;
 }
@@ -99,6 +102,7 @@ cubeView::Targets cubeView::declareTargets(rtt::FrameGraph& graph) {
     depthDesc.filter = rtt::Filter::Nearest;
     Targets t;
     t.sceneDepth = graph.create(names_.back().c_str(), sized(depthDesc));
+    // (Its z-buffer stays only for prepass-EQUAL: decideSceneDepth.)
 
     // Its own z-buffer unless prepass-EQUAL turns out to be on (declarePluginPasses decides).
     names_.push_back(name_ + ".color");
@@ -122,9 +126,26 @@ CameraMatrices cubeView::cameraMatrices() const {
     return cam;
 }
 
+void cubeView::decideSceneDepth(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& settings) {
+    // Who writes the linear scene depth, if anyone reads it:
+    //  - prepass-EQUAL: the depth prepass (linear depth + the z-buffer the colour target then
+    //    shares; the opaque pass tests EQUAL without writing depth: less overdraw);
+    //  - otherwise the opaque pass itself, as a second render target: no second scene pass.
+    const bool pluginReads = prepassDeclared_;
+    const bool read = pluginReads || settings.sceneDepthOut;
+    equal_ = settings.prepassEqual && pluginReads;
+    opaqueWritesDepth_ = read && !equal_;
+    if (equal_) {
+        graph.setSharedDepth(t.color, t.sceneDepth);
+    } else {
+        graph.setDepthFormat(t.sceneDepth, rtt::DepthFormat::None);
+    }
+}
+
 void cubeView::declareDepthPrepass(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t,
                                    const FrameSettings& settings) {
-    // Linear view depth + z-buffer; culled unless a particle pass reads scene depth.
+    // Linear view depth + z-buffer, for prepass-EQUAL only (decideSceneDepth).
+    if (!equal_) return;
     const CameraMatrices cam = cameraMatrices();
     const CameraQuads quads = settings.cameraQuads ? *settings.cameraQuads : CameraQuads{};
     SceneRenderer* r = &scene.renderer();
@@ -149,17 +170,28 @@ void cubeView::declareOpaque(cubeScene& scene, rtt::FrameGraph& graph, const Tar
     const CameraMatrices cam = cameraMatrices();
     const CameraQuads quads = settings.cameraQuads ? *settings.cameraQuads : CameraQuads{};
     SceneRenderer* r = &scene.renderer();
-    const rtt::FrameGraphResource color = t.color;
+    const rtt::FrameGraphResource color = t.color, depth = t.sceneDepth;
+    const bool writesDepth = opaqueWritesDepth_;
     graph.addPass(passName(bucketInfo(Bucket::Opaque).name).c_str(), order(bucketInfo(Bucket::Opaque).order),
-                  [&](rtt::PassBuilder& b) { b.write(color); },
-                  [this, r, color, cam, quads, reversed = reversedZ_](rtt::PassContext& ctx) {
+                  [&](rtt::PassBuilder& b) {
+                      b.write(color);
+                      if (writesDepth) b.write(depth);
+                  },
+                  [this, r, color, depth, writesDepth, cam, quads, reversed = reversedZ_](rtt::PassContext& ctx) {
                       rtt::ClearValues cv;
                       cv.color[0] = {0.0f, 0.0f, 0.0f, 1.0f};
                       cv.depth = reversed ? 0.0f : 1.0f;
                       cv.clearDepth = !equal_;
                       cv.clearStencil = !equal_;
                       ctx.clear(color, cv);
-                      ctx.bindForDraw(color);
+                      if (writesDepth) {
+                          rtt::ClearValues far;
+                          far.color[0] = {1e30f, 0.0f, 0.0f, 0.0f};  // "infinitely far" where nothing is drawn
+                          ctx.clear(depth, far);
+                          if (!ctx.bindForDraw(color, depth)) return;
+                      } else {
+                          ctx.bindForDraw(color);
+                      }
                       r->opaque(opaque_, cam, equal_, quads);
                   });
 }
@@ -169,11 +201,16 @@ void cubeView::declareAlphaTested(cubeScene& scene, rtt::FrameGraph& graph, cons
     if (alphaTested_.empty()) return;
     const CameraMatrices cam = cameraMatrices();
     SceneRenderer* r = &scene.renderer();
-    const rtt::FrameGraphResource color = t.color;
+    const rtt::FrameGraphResource color = t.color, depth = t.sceneDepth;
+    const bool writesDepth = opaqueWritesDepth_;
     graph.addPass(passName(bucketInfo(Bucket::AlphaTested).name).c_str(),
-                  order(bucketInfo(Bucket::AlphaTested).order), [&](rtt::PassBuilder& b) { b.write(color); },
-                  [this, r, color, cam](rtt::PassContext& ctx) {
-                      ctx.bindForDraw(color);
+                  order(bucketInfo(Bucket::AlphaTested).order),
+                  [&](rtt::PassBuilder& b) {
+                      b.write(color);
+                      if (writesDepth) b.write(depth);
+                  },
+                  [this, r, color, depth, writesDepth, cam](rtt::PassContext& ctx) {
+                      if (writesDepth ? !ctx.bindForDraw(color, depth) : !ctx.bindForDraw(color)) return;
                       r->alphaTested(alphaTested_, cam, equal_);
                   });
 }
@@ -237,8 +274,6 @@ void cubeView::declarePluginPasses(rtt::FrameGraph& graph, const Targets& t, con
         settings.plugin->declarePasses(info, fx);
     }
     prepassDeclared_ = fx.readsSceneDepth();
-    equal_ = settings.prepassEqual && prepassDeclared_;
-    if (equal_) graph.setSharedDepth(t.color, t.sceneDepth);
 }
 
 void cubeView::declareDepthReadback(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& settings) {

@@ -47,6 +47,7 @@ public:
 
     /// Draws recorded in the last RenderObjects, per bucket (for tests and stats).
     size_t opaqueDraws() const { return opaque_.size(); }
+    /// True when the last frame's particle passes read the scene depth.
     bool prepassDeclared() const { return prepassDeclared_; }
 
 private:
@@ -56,6 +57,7 @@ private:
     };
     rtt::FrameGraphResource RenderObjects(cubeScene& scene, rtt::FrameGraph& graph, const FrameSettings& settings);
     Targets declareTargets(rtt::FrameGraph& graph);
+    void decideSceneDepth(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
     rtt::DepthFormat zBufferFormat() const;
     void declareDepthPrepass(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
     void declareOpaque(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
@@ -80,6 +82,7 @@ private:
     std::vector<MeshDraw> all_, opaque_, alphaTested_;
     std::vector<std::string> names_;
     bool prepassDeclared_ = false;
+    bool opaqueWritesDepth_ = false;  ///< the linear scene depth comes from the opaque pass (MRT)
     bool equal_ = false;  ///< this frame's opaque pass tests EQUAL on the prepass z-buffer
 };
 

@@ -1,5 +1,7 @@
 #include "ParticlePrograms.h"
 
+#include <cmath>
+
 #include "render/PrivateGl.h"
 
 #include "DrawList.h"
@@ -18,6 +20,7 @@ constexpr VariantSource kSources[ParticlePrograms::VariantCount] = {
     {"fs_particles_hard.glsl", "#define FX_LINEAR_DEPTH_TEST 1\n"},
     {"fs_particles_soft.glsl", ""},
     {"fs_particles_spherical.glsl", "#define FX_SPHERICAL 1\n"},
+    {"fs_particles_soft.glsl", "#define FX_GENERAL_POWER 1\n"},
 };
 
 ParticleProgram locate(GLuint program) {
@@ -40,6 +43,8 @@ ParticleProgram locate(GLuint program) {
     p.shapeBuckets = glGetUniformLocation(program, "uShapeBuckets");
     p.lodScale = glGetUniformLocation(program, "uLodScale");
     p.shapes = glGetUniformLocation(program, "uShapes");
+    p.powerWhole = glGetUniformLocation(program, "uPowerWhole");
+    p.powerHalf = glGetUniformLocation(program, "uPowerHalf");
     return p;
 }
 
@@ -65,14 +70,27 @@ void ParticlePrograms::build(const std::string& shaderDir, std::vector<std::stri
     }
 }
 
-ParticlePrograms::Variant ParticlePrograms::variantFor(Technique technique, bool quarterRes) {
+bool ParticlePrograms::halfWholePower(float contrastPower, int* whole, int* half) {
+    const float twice = 2.0f * contrastPower;
+    const float rounded = std::round(twice);
+    if (!(std::fabs(twice - rounded) <= 1e-6f * std::fmax(1.0f, twice)) || rounded < 0.0f || rounded > 32.0f) {
+        return false;
+    }
+    const int steps = int(rounded);
+    *whole = steps / 2;
+    *half = steps % 2;
+    return true;
+}
+
+ParticlePrograms::Variant ParticlePrograms::variantFor(Technique technique, bool quarterRes, float contrastPower) {
     switch (technique) {
     case Technique::Hard: return quarterRes ? HardLinearDepth : HardZBuffer;
     case Technique::Spherical: return Spherical;
     case Technique::Soft:
     case Technique::FromReaction: break;
     }
-    return Soft;
+    int whole = 0, half = 0;
+    return halfWholePower(contrastPower, &whole, &half) ? Soft : SoftGeneralPower;
 }
 
 uint32_t ParticlePrograms::usableTechniques(bool quarterRes) const {
@@ -80,6 +98,8 @@ uint32_t ParticlePrograms::usableTechniques(bool quarterRes) const {
     for (Technique t : {Technique::Hard, Technique::Soft, Technique::Spherical}) {
         if (programs_[variantFor(t, quarterRes)].program) mask |= techniqueBit(t);
     }
+    // Soft draws with either soft program (by contrast_power): both or neither.
+    if (!programs_[SoftGeneralPower].program) mask &= ~techniqueBit(Technique::Soft);
     return mask;
 }
 

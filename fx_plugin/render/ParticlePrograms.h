@@ -2,7 +2,9 @@
 // The particle programs, one per technique and target kind, built from shaders/ by ShaderLoader:
 //   HardZBuffer     vs_particles + fs_particles_hard                        (full res, z-buffer test)
 //   HardLinearDepth vs_particles + fs_particles_hard, FX_LINEAR_DEPTH_TEST  (quarter res)
-//   Soft            vs_particles + fs_particles_soft
+//   Soft            vs_particles + fs_particles_soft  (contrast_power whole or half-whole, <= 16:
+//                                                    multiplies and a sqrt)
+//   SoftGeneralPower vs_particles + fs_particles_soft, FX_GENERAL_POWER (any contrast_power: pow)
 //   Spherical       vs_particles + fs_particles_spherical, FX_SPHERICAL
 // A program that fails to build stays 0 and its technique is not drawn (the failure is reported
 // by the caller); the others still work.
@@ -21,11 +23,12 @@ struct ParticleProgram {
     int rampRow = -1, blendMode = -1, softScale = -1, contrastPower = -1, nearFade = -1;
     int atlas = -1, ramp = -1, sceneDepth = -1;
     int trimmed = -1, shapeBuckets = -1, lodScale = -1, shapes = -1;
+    int powerWhole = -1, powerHalf = -1;
 };
 
 class ParticlePrograms {
 public:
-    enum Variant : int { HardZBuffer = 0, HardLinearDepth, Soft, Spherical, VariantCount };
+    enum Variant : int { HardZBuffer = 0, HardLinearDepth, Soft, Spherical, SoftGeneralPower, VariantCount };
 
     ParticlePrograms() = default;
     ~ParticlePrograms();
@@ -35,7 +38,10 @@ public:
     /// Builds every variant; appends one "file:line: message" block per failed one to *errors.
     void build(const std::string& shaderDir, std::vector<std::string>* errors);
     const ParticleProgram& get(Variant v) const { return programs_[v]; }
-    static Variant variantFor(Technique technique, bool quarterRes);
+    /// `contrastPower` picks between the two soft programs (see above).
+    static Variant variantFor(Technique technique, bool quarterRes, float contrastPower = 1.0f);
+    /// contrast_power = whole + half / 2 with whole in [0, 16], half 0 or 1: true and the split.
+    static bool halfWholePower(float contrastPower, int* whole, int* half);
     /// techniqueBit() mask of the techniques drawable on a full-res or a quarter-res target.
     uint32_t usableTechniques(bool quarterRes) const;
 

@@ -330,7 +330,7 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
                            std::fmax(std::fabs(view.proj[1][1]) * float(std::max(viewport[3], 1)), 1e-6f);
     for (const DrawBatch& batch : list.batches) {
         const ParticleProgram& p =
-            programs_->get(ParticlePrograms::variantFor(batch.technique, quarterRes));
+            programs_->get(ParticlePrograms::variantFor(batch.technique, quarterRes, batch.contrastPower));
         if (!p.program) continue;
         // Full resolution tests against the host's z-buffer without writing it. Hard particles
         // always do (that is their look). Soft and spherical ones only skip fragments there that
@@ -361,6 +361,11 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         glUniform1i(p.blendMode, static_cast<int>(batch.blend));
         glUniform1f(p.softScale, batch.softScale);
         glUniform1f(p.contrastPower, batch.contrastPower);
+        int powerWhole = 0, powerHalf = 0;
+        if (ParticlePrograms::halfWholePower(batch.contrastPower, &powerWhole, &powerHalf)) {
+            glUniform1i(p.powerWhole, powerWhole);
+            glUniform1i(p.powerHalf, powerHalf);
+        }
         glUniform1f(p.nearFade, batch.nearFade);
         glUniform1i(p.atlas, kAtlasUnit);
         glUniform1i(p.ramp, kRampUnit);

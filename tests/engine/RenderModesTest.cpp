@@ -156,9 +156,14 @@ TEST(RenderModes, PassesAndTargetsExistOnlyWhenNeeded) {
     f.render(false, fx::Technique::Hard, false);
     EXPECT_FALSE(f.game.graph().isKept("chase.depth_prepass"));
     EXPECT_TRUE(f.game.graph().isKept("chase.particles"));
-    // Soft: prepass; quarter-res targets only while quarter-res is on.
+    // Soft: the scene depth comes from the opaque pass (a second render target), so no second
+    // scene pass; a prepass only with prepass-EQUAL. Quarter-res targets only while it is on.
     f.render(false, fx::Technique::Soft, false);
+    EXPECT_FALSE(f.game.graph().isKept("chase.depth_prepass"));
+    EXPECT_TRUE(f.game.graph().isKept("chase.particles"));
+    f.render(true, fx::Technique::Soft, false);
     EXPECT_TRUE(f.game.graph().isKept("chase.depth_prepass"));
+    f.render(false, fx::Technique::Soft, false);
     EXPECT_FALSE(f.game.graph().isKept("chase.particles_quarter"));
     f.render(false, fx::Technique::Soft, true);
     EXPECT_TRUE(f.game.graph().isKept("chase.particles_quarter"));

@@ -3,12 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "GameTestUtil.h"
 
 using namespace cube;
 
-TEST(SceneDepthCapture, TheFramesOwnPrepassIsReadBackOnlyWhenAsked) {
+TEST(SceneDepthCapture, TheFramesOwnSceneDepthIsReadBackOnlyWhenAsked) {
     Options o = cubetest::smallOptions(160, 128);
     o.startTime = 4.5;
     o.mirror = false;
@@ -27,7 +28,8 @@ TEST(SceneDepthCapture, TheFramesOwnPrepassIsReadBackOnlyWhenAsked) {
 
     game.captureNextSceneDepth();
     game.RenderFrame();
-    EXPECT_TRUE(ran("chase.depth_prepass"));  // kept alive by the read-back
+    EXPECT_FALSE(ran("chase.depth_prepass"));  // the opaque pass writes the depth it reads back
+    EXPECT_TRUE(ran("chase.opaque"));
     EXPECT_TRUE(ran("chase.scene_depth_readback"));
     const std::vector<float>& d = game.lastSceneDepth();
     ASSERT_EQ(d.size(), size_t(160 * 128));
@@ -42,4 +44,42 @@ TEST(SceneDepthCapture, TheFramesOwnPrepassIsReadBackOnlyWhenAsked) {
     // One request, one frame.
     game.RenderFrame();
     EXPECT_FALSE(ran("chase.depth_prepass"));
+}
+
+// The two writers of the linear scene depth agree: the opaque pass's second render target
+// (soft particles, no prepass) and the depth prepass that prepass-EQUAL keeps. Same frame, same
+// values to float rounding, so soft particles fade the same either way.
+TEST(SceneDepthCapture, OpaqueSecondTargetWritesWhatThePrepassWrites) {
+    Options o = cubetest::smallOptions(160, 128);
+    o.startTime = 4.5;
+    o.mirror = false;
+    o.mode = "soft";
+    Game game;
+    std::string err;
+    ASSERT_TRUE(game.Init(o, &err)) << err;
+    for (int i = 0; i < 30; ++i) game.Update(1.0f / 60.0f);
+    auto ran = [&](const std::string& pass) {
+        const auto& e = game.graph().report().executed;
+        return std::find(e.begin(), e.end(), pass) != e.end();
+    };
+    game.options().prepassEqual = false;
+    game.captureNextSceneDepth();
+    game.RenderFrame();
+    ASSERT_FALSE(ran("chase.depth_prepass"));
+    const std::vector<float> fromOpaque = game.lastSceneDepth();
+    game.options().prepassEqual = true;
+    game.captureNextSceneDepth();
+    game.RenderFrame();
+    ASSERT_TRUE(ran("chase.depth_prepass"));
+    const std::vector<float> fromPrepass = game.lastSceneDepth();
+    ASSERT_EQ(fromOpaque.size(), size_t(160 * 128));
+    ASSERT_EQ(fromPrepass.size(), fromOpaque.size());
+    size_t differing = 0, drawn = 0;
+    for (size_t i = 0; i < fromOpaque.size(); ++i) {
+        const float a = fromOpaque[i], b = fromPrepass[i];
+        drawn += a < 1e29f;
+        differing += std::fabs(a - b) > 1e-5f * std::fmax(1.0f, std::fabs(b));
+    }
+    EXPECT_GT(drawn, fromOpaque.size() / 2);
+    EXPECT_EQ(differing, 0u);
 }

@@ -219,7 +219,7 @@ TEST_F(TechniqueTest, SoftFadeIsExactWithExtremeClipPlanes) {
         fx::ViewInfo view = makeView(glm::vec3(0.0f), glm::vec3(0, 0, -1), kW, kH, 0.01f, farPlane);
         if (reversed) useReversedZ(&view);
         direct.set({HandParticle{glm::vec3(0.0f, 0.0f, -distance), size}});
-        for (float contrast : {1.0f, 2.0f}) {
+        for (float contrast : {1.0f, 1.5f, 2.0f, 1.3f}) {  // 1.3: the general-power program
             direct.desc.render.contrastPower = contrast;
             auto frameWithWallAt = [&](float gap) {
                 TestScene scene;
@@ -245,7 +245,7 @@ TEST_F(TechniqueTest, SoftFadeIsExactWithExtremeClipPlanes) {
                     }
                 }
                 ASSERT_GT(used, 20) << "particle at " << distance << " m barely visible";
-                std::printf("[ measured ] %s far %.0e: soft fade at %.0f m, gap %.1f m, contrast %.0f: "
+                std::printf("[ measured ] %s far %.0e: soft fade at %.0f m, gap %.1f m, contrast %.1f: "
                             "expected %.3f, worst error %.4f over %d px\n", reversed ? "reversed-Z" : "standard",
                             double(farPlane), distance, gap, contrast, expected, worst, used);
                 EXPECT_LT(worst, 0.03f) << (reversed ? "reversed " : "standard ") << "far " << farPlane

@@ -13,6 +13,7 @@
 
 #include "FxTestHost.h"
 #include "../../fx_plugin/render/EmbeddedResources.h"
+#include "../../fx_plugin/render/ParticlePrograms.h"
 #include "../../fx_plugin/render/SmokeAtlas.h"
 #include "../../fx_plugin/render/TrimmedShapes.h"
 
@@ -215,6 +216,31 @@ TEST_F(TrimmedImageTest, DepthTestedSoftAndSphericalEqualUntested) {
         writePng(scratchDir() + "/depth_tested_" + std::to_string(int(t)) + ".png", a);
         EXPECT_LE(maxAbsDiff(a, b), 1) << "technique " << int(t);
     }
+}
+
+}  // namespace
+}  // namespace fxtest
+
+namespace fxtest {
+namespace {
+
+// The soft program without pow() takes contrast powers that are whole or half-whole numbers up
+// to 16 (the schema allows 0.1 .. 16); anything else goes to the pow() program.
+TEST(SoftContrastProgram, HalfWholePowersAreSplitAndOthersUsePow) {
+    int whole = -1, half = -1;
+    const struct { float p; int whole, half; } cases[] = {{1.0f, 1, 0}, {1.5f, 1, 1}, {2.0f, 2, 0}, {0.5f, 0, 1}, {16.0f, 16, 0}};
+    for (const auto& c : cases) {
+        ASSERT_TRUE(fx::ParticlePrograms::halfWholePower(c.p, &whole, &half)) << c.p;
+        EXPECT_EQ(whole, c.whole) << c.p;
+        EXPECT_EQ(half, c.half) << c.p;
+        EXPECT_EQ(fx::ParticlePrograms::variantFor(fx::Technique::Soft, false, c.p), fx::ParticlePrograms::Soft);
+    }
+    for (float p : {0.1f, 1.3f, 2.25f, 15.9f}) {
+        EXPECT_FALSE(fx::ParticlePrograms::halfWholePower(p, &whole, &half)) << p;
+        EXPECT_EQ(fx::ParticlePrograms::variantFor(fx::Technique::Soft, false, p), fx::ParticlePrograms::SoftGeneralPower);
+    }
+    // Other techniques do not care.
+    EXPECT_EQ(fx::ParticlePrograms::variantFor(fx::Technique::Hard, false, 1.3f), fx::ParticlePrograms::HardZBuffer);
 }
 
 }  // namespace
