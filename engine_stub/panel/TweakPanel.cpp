@@ -268,8 +268,9 @@ void TweakPanel::edit(int reaction, const std::string& key, const std::string& v
 void TweakPanel::buildReactionsWindow(Game& game) {
     const ImGuiIO& io = ImGui::GetIO();
     const float width = std::min(470.0f, io.DisplaySize.x * 0.45f);
-    ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(width, io.DisplaySize.y - 16.0f), ImGuiCond_FirstUseEver);
+    const float top = game.options().hud ? 52.0f : 8.0f;  // below the HUD's text line
+    ImGui::SetNextWindowPos(ImVec2(8.0f, top), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(width, io.DisplaySize.y - top - 8.0f), ImGuiCond_FirstUseEver);
     ImGui::Begin("Reactions");
     std::string error;
     const std::vector<panel::Document>& docs = session_->documents();
@@ -332,7 +333,6 @@ void TweakPanel::buildReactionsWindow(Game& game) {
         if (shown) buildKey(selected_, info);
     }
     ImGui::PopItemWidth();
-    (void)game;
     ImGui::End();
 }
 
