@@ -165,7 +165,10 @@ void Game::updateCameras(float dt) {
 
 void Game::Dyn(float dt) {
     Trace::call("Game::Dyn");
-    if (overlay_) overlay_->beginFrame(*this, dt);
+    if (overlay_) {
+        overlay_->beginFrame(*this, dt);
+        specialFX_.syncReactions(scene_);  // the overlay may have loaded a set of another size
+    }
     // A scale of 1 multiplies exactly: without an overlay the steps are the ones given.
     Update(paused_ ? 0.0f : dt * timeScale_);
     RenderFrame();

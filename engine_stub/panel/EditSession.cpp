@@ -42,7 +42,15 @@ bool splitKey(const std::string& key, std::vector<Segment>* out, std::string* er
                 *error = "key '" + key + "': expected [index]";
                 return false;
             }
-            out->push_back({"", size_t(std::stoul(key.substr(i, close - i)))});
+            size_t index = 0;
+            for (size_t k = i; k < close; ++k) {
+                if (key[k] < '0' || key[k] > '9' || index > 100000) {
+                    *error = "key '" + key + "': expected a number in [index]";
+                    return false;
+                }
+                index = index * 10 + size_t(key[k] - '0');
+            }
+            out->push_back({"", index});
             i = close + 1;
             if (i < key.size() && key[i] == '.') ++i;
         }

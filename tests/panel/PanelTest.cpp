@@ -250,3 +250,17 @@ TEST(PanelOff, TheFrameIsByteIdenticalToARunWithoutThePanel) {
     EXPECT_TRUE(bare == hidden) << "a hidden panel changed the frame";
     EXPECT_FALSE(bare == shown) << "the shown panel drew nothing (this test could not fail)";
 }
+
+TEST_F(PanelTest, AFileChangedOnDiskIsTakenLiveWhenItHasNoUnsavedEdits) {
+    // Another editor adds a reaction to the burnout file; no --watch: the panel notices.
+    const std::string path = copy.file("burnout_smoke.yaml");
+    std::string text = readFile(path);
+    text += "  - name: burnout_smoke_front\n    type: wheel_smoke\n    trigger: {wheels: front}\n";
+    writeFile(path, text);
+    for (int i = 0; i < 31; ++i) frame();  // the panel looks at the files twice a second
+    EXPECT_EQ(plugin->reactionCount(), 4);
+    EXPECT_EQ(game.specialFX().reactionCount(), 4) << "the game's Reactions follow the new set";
+    EXPECT_EQ(reactionIndex(*plugin, "burnout_smoke_front") >= 0, true);
+    EXPECT_EQ(plugin->stats().apiErrors, 0);
+    EXPECT_EQ(panel.session().documents()[size_t(panel.session().documentOf(burnout))].text, text);
+}
