@@ -264,3 +264,20 @@ TEST_F(PanelTest, AFileChangedOnDiskIsTakenLiveWhenItHasNoUnsavedEdits) {
     EXPECT_EQ(plugin->stats().apiErrors, 0);
     EXPECT_EQ(panel.session().documents()[size_t(panel.session().documentOf(burnout))].text, text);
 }
+
+TEST_F(PanelTest, CtrlZUndoesADragAsOneStepAndCtrlYRedoesIt) {
+    const Rect r = rect("burnout_smoke/particle.size_variation");
+    drag(r.x0 + 0.25f * (r.x1 - r.x0), r.x1 + 300.0f, r.cy());  // several values, one drag
+    ASSERT_EQ(value("particle.size_variation"), "0.9");
+    auto chord = [&](UiKey k) {
+        key(UiKey::Ctrl, true);
+        key(k, true);
+        key(k, false);
+        key(UiKey::Ctrl, false);
+        for (int i = 0; i < 4; ++i) frame();
+    };
+    chord(UiKey::Z);
+    EXPECT_EQ(value("particle.size_variation"), "0.25");
+    chord(UiKey::Y);
+    EXPECT_EQ(value("particle.size_variation"), "0.9");
+}
