@@ -281,3 +281,22 @@ TEST_F(PanelTest, CtrlZUndoesADragAsOneStepAndCtrlYRedoesIt) {
     chord(UiKey::Y);
     EXPECT_EQ(value("particle.size_variation"), "0.9");
 }
+
+TEST_F(PanelTest, CameraPresetsMoveTheMainCamera) {
+    const glm::vec3 car = game.vehicle().pose().position;
+    EXPECT_GT(glm::length(game.chaseView().camera().eye - car), 7.0f);  // chase: 7.5 m behind
+    click(rect("camera_burnout"));
+    frame();
+    EXPECT_EQ(game.cameraPreset(), cube::CameraPreset::BurnoutCloseUp);
+    const glm::vec3 carNow = game.vehicle().pose().position;
+    EXPECT_LT(glm::length(game.chaseView().camera().eye - carNow), 5.0f);  // beside the rear axle
+    ASSERT_TRUE(game.hasBarrier());
+    click(rect("camera_barrier"));
+    frame();
+    EXPECT_EQ(game.cameraPreset(), cube::CameraPreset::Barrier);
+    const glm::vec3 toTarget = game.chaseView().camera().target - game.chaseView().camera().eye;
+    EXPECT_GE(glm::length(toTarget), 12.0f * 0.99f);
+    click(rect("camera_chase"));
+    frame();
+    EXPECT_EQ(game.cameraPreset(), cube::CameraPreset::Chase);
+}
