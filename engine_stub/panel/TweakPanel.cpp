@@ -178,7 +178,12 @@ void TweakPanel::recordTimings(Game& game) {
 }
 
 void TweakPanel::beginFrame(Game& game, float dt) {
-    if (!visible_ || !context_) return;
+    if (!visible_ || !context_) {
+        std::vector<InputEvent> dropped;  // a hidden panel takes no input
+        game.platform().takeInputEvents(&dropped);
+        queue_.clear();
+        return;
+    }
     ImGui::SetCurrentContext(context_);
     if (frames_ > 0) recordTimings(game);
     std::string error;

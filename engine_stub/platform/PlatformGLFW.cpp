@@ -111,7 +111,7 @@ public:
             g_glfw.glfwGetWindowSize(w, &ww, &wh);
             e.x = float(x) * float(self->width()) / float(ww > 0 ? ww : 1);
             e.y = float(y) * float(self->height()) / float(wh > 0 ? wh : 1);
-            self->events_.push_back(e);
+            self->queueEvent(e);
         });
         g_glfw.glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int) {
             auto* self = static_cast<GLFWPlatform*>(g_glfw.glfwGetWindowUserPointer(w));
@@ -119,7 +119,7 @@ public:
             e.type = InputEvent::Type::MouseButton;
             e.button = button;
             e.down = action == GLFW_PRESS;
-            self->events_.push_back(e);
+            self->queueEvent(e);
         });
         g_glfw.glfwSetScrollCallback(window_, [](GLFWwindow* w, double dx, double dy) {
             auto* self = static_cast<GLFWPlatform*>(g_glfw.glfwGetWindowUserPointer(w));
@@ -127,14 +127,14 @@ public:
             e.type = InputEvent::Type::Scroll;
             e.x = float(dx);
             e.y = float(dy);
-            self->events_.push_back(e);
+            self->queueEvent(e);
         });
         g_glfw.glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned codepoint) {
             auto* self = static_cast<GLFWPlatform*>(g_glfw.glfwGetWindowUserPointer(w));
             InputEvent e;
             e.type = InputEvent::Type::Char;
             e.codepoint = codepoint;
-            self->events_.push_back(e);
+            self->queueEvent(e);
         });
         if (!loadGL(reinterpret_cast<GetProcFn>(g_glfw.glfwGetProcAddress), error)) return false;
         renderer_ = glRendererString();
@@ -160,6 +160,12 @@ public:
         else { g_glfw.glfwRestoreWindow(window_); g_glfw.glfwSetWindowSize(window_, w, h); }
     }
     std::string rendererName() const override { return renderer_; }
+    // Bounded: with no UI taking them (no --panel), the oldest events are dropped.
+    void queueEvent(const InputEvent& e) {
+        if (events_.size() >= kMaxQueuedEvents) events_.erase(events_.begin(), events_.begin() + kMaxQueuedEvents / 2);
+        events_.push_back(e);
+    }
+    static constexpr size_t kMaxQueuedEvents = 4096;
     void takeInputEvents(std::vector<InputEvent>* out) override {
         out->insert(out->end(), events_.begin(), events_.end());
         events_.clear();
@@ -181,7 +187,7 @@ public:
             e.type = InputEvent::Type::Key;
             e.key = k.second;
             e.down = down;
-            events_.push_back(e);
+            queueEvent(e);
         }
     }
     void* getProcAddress(const char* name) const override {
