@@ -216,3 +216,28 @@ TEST_F(EditSessionTest, TheSchemaTableAgreesWithTheLoaderAtEveryBound) {
         ASSERT_TRUE(session->revert(session->documentOf(burnout), &error)) << error;
     }
 }
+
+TEST_F(EditSessionTest, ASaveThatCannotWriteSaysWhereAndKeepsTheEdits) {
+    std::string error;
+    ASSERT_TRUE(session->set(burnout, "particle.drag", "2.5", &error)) << error;
+    std::filesystem::remove_all(copy.dir());  // the folder is gone
+    EXPECT_FALSE(session->save(session->documentOf(burnout), &error));
+    EXPECT_NE(error.find("burnout_smoke.yaml: cannot write"), std::string::npos) << error;
+    EXPECT_TRUE(session->documents()[size_t(session->documentOf(burnout))].dirty());
+    EXPECT_EQ(value("particle.drag"), "2.5");
+}
+
+TEST_F(EditSessionTest, TheSchemaTablesWordsAreTheLoadersWords) {
+    std::string error;
+    for (const fx::ReactionKeyInfo& k : plugin->reactionSchema()) {
+        if (k.kind != fx::ReactionKeyInfo::Kind::Choice && k.kind != fx::ReactionKeyInfo::Kind::ChoiceList) continue;
+        ASSERT_FALSE(k.choices.empty()) << k.key;
+        const bool list = k.kind == fx::ReactionKeyInfo::Kind::ChoiceList;
+        for (const std::string& word : k.choices) {
+            EXPECT_TRUE(session->set(burnout, k.key, list ? "[" + word + "]" : word, &error)) << k.key << " = " << word << ": " << error;
+        }
+        EXPECT_FALSE(session->set(burnout, k.key, list ? "[not_a_word]" : "not_a_word", &error)) << k.key;
+        EXPECT_NE(error.find("error[InvalidEnum]"), std::string::npos) << k.key << ": " << error;
+        ASSERT_TRUE(session->revert(session->documentOf(burnout), &error)) << error;
+    }
+}

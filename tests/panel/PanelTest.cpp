@@ -300,3 +300,27 @@ TEST_F(PanelTest, CameraPresetsMoveTheMainCamera) {
     frame();
     EXPECT_EQ(game.cameraPreset(), cube::CameraPreset::Chase);
 }
+
+TEST_F(PanelTest, AFileChangedOnDiskDuringEditsAsksTheUserAndKeepsTheEditsWhenToldTo) {
+    const Rect r = rect("burnout_smoke/particle.size_variation");
+    drag(r.x0 + 0.5f * (r.x1 - r.x0), r.x1 + 300.0f, r.cy());
+    ASSERT_EQ(value("particle.size_variation"), "0.9");
+    const std::string path = copy.file("burnout_smoke.yaml");
+    std::string disk = readFile(path);
+    disk.replace(disk.find("rate: 90"), 8, "rate: 70");
+    writeFile(path, disk);
+    for (int i = 0; i < 31; ++i) frame();
+    // Nothing changed behind the user's back: the question is on screen.
+    EXPECT_EQ(value("emission.rate"), "90");
+    EXPECT_EQ(value("particle.size_variation"), "0.9");
+    click(rect("conflict:keep"));
+    frame();
+    float x0, y0, x1, y1;
+    EXPECT_FALSE(panel.widgetRect("conflict:keep", &x0, &y0, &x1, &y1)) << "the question was answered";
+    EXPECT_EQ(value("particle.size_variation"), "0.9");
+    EXPECT_EQ(value("emission.rate"), "90");
+    // Save now overwrites the disk's version with the panel's.
+    click(rect("save:burnout_smoke.yaml"));
+    EXPECT_NE(readFile(path).find("size_variation: 0.9"), std::string::npos);
+    EXPECT_NE(readFile(path).find("rate: 90"), std::string::npos);
+}
