@@ -2,6 +2,9 @@
 // validation, saves rewrite only the changed characters, undo/redo, revert, disk changes.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
 #include "PanelTestUtil.h"
 #include "panel/EditSession.h"
 
@@ -240,4 +243,27 @@ TEST_F(EditSessionTest, TheSchemaTablesWordsAreTheLoadersWords) {
         EXPECT_NE(error.find("error[InvalidEnum]"), std::string::npos) << k.key << ": " << error;
         ASSERT_TRUE(session->revert(session->documentOf(burnout), &error)) << error;
     }
+}
+
+TEST_F(EditSessionTest, HotReloadOfAnotherFileKeepsTheEditedText) {
+    // fx::Plugin::loadReactionsFromText: the edited text stands in for its file in later reloads.
+    std::string error;
+    ASSERT_TRUE(session->set(burnout, "particle.drag", "2.5", &error)) << error;
+    const std::string dust = copy.file("offtrack_dust.yaml");
+    std::string text = readFile(dust);
+    text.replace(text.find("rate: 50"), 8, "rate: 55");
+    writeFile(dust, text);
+    bool reloaded = false;
+    for (int i = 0; i < 50 && !reloaded; ++i) {  // the library looks at most every 0.1 s
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        reloaded = plugin->pollHotReload(nullptr);
+    }
+    ASSERT_TRUE(reloaded);
+    EXPECT_EQ(plugin->reactionValue(reactionIndex(*plugin, "offtrack_dust"), "emission.rate"), "55");
+    EXPECT_EQ(value("particle.drag"), "2.5") << "the unsaved edit survived the reload";
+    // A text for a file outside the set is refused by name.
+    fx::Diagnostics diags;
+    EXPECT_FALSE(plugin->loadReactionsFromText(copy.dir() + "/other.yaml", "reactions: []\n", &diags));
+    ASSERT_FALSE(diags.empty());
+    EXPECT_EQ(diags.front().code, fx::ErrorCode::FileNotFound);
 }
