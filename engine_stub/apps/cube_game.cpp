@@ -8,6 +8,7 @@
 #include "game/Game.h"
 #include "gl/Gl.h"
 #include "gl/Image.h"
+#include "panel/TweakPanel.h"
 
 namespace {
 
@@ -47,6 +48,15 @@ int main(int argc, char** argv) {
         return 1;
     }
     for (const std::string& w : game.warnings()) std::fprintf(stderr, "cube_game: warning: %s\n", w.c_str());
+    // Declared after the game: destroyed first, while the game's GL context still exists.
+    cube::TweakPanel panel;
+    if (options.panel) {
+        if (!panel.init(game, &error)) {
+            std::fprintf(stderr, "cube_game: %s\n", error.c_str());
+            return 1;
+        }
+        game.setOverlay(&panel);
+    }
     std::printf("cube_game: %s on %s, %dx%d, fx %s\n", cube::backendName(game.platform().backend()),
                 game.platform().rendererName().c_str(), options.width, options.height,
                 options.fx == cube::FxPath::Legacy ? "legacy" : "plugin");

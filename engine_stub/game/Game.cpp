@@ -81,6 +81,7 @@ bool Game::InitProc(std::string* error) {
         if (!warning.empty()) warnings_.push_back(scenePath + ": " + warning);
     }
     if (!vehicle_.active()) frameSceneBounds();
+    barrierNode_ = sceneData_.findNode("barrier_right");
     if (!scene_.Init(sceneData_, error, carNode, options_.reversedZ)) return false;
     rtt::RenderTargetPoolDesc poolDesc;
     poolDesc.framesUntilFree = std::max(1, options_.poolFramesUntilFree);
@@ -128,6 +129,19 @@ void Game::updateCameras(float dt) {
     ViewCamera& c = chase_.camera();
     c.eye = pose.position - 7.5f * fwd + glm::vec3(0.0f, 2.6f, 0.0f);
     c.target = pose.position + 2.0f * fwd + glm::vec3(0.0f, 0.6f, 0.0f);
+    const glm::vec3 carFwd(std::cos(pose.heading), 0.0f, -std::sin(pose.heading));
+    if (cameraPreset_ == CameraPreset::BurnoutCloseUp) {
+        // Low, beside and behind the rear axle, looking at the rear wheels' smoke.
+        const glm::vec3 side = glm::normalize(glm::cross(carFwd, glm::vec3(0.0f, 1.0f, 0.0f)));
+        c.eye = pose.position - 3.5f * carFwd + 2.6f * side + glm::vec3(0.0f, 1.0f, 0.0f);
+        c.target = pose.position - 1.3f * carFwd + glm::vec3(0.0f, 0.6f, 0.0f);
+    } else if (cameraPreset_ == CameraPreset::Barrier && barrierNode_ >= 0) {
+        const SceneNode& b = sceneData_.nodes[size_t(barrierNode_)];
+        const glm::vec3 centre = 0.5f * (b.aabbMin + b.aabbMax);
+        const float reach = std::max(12.0f, 0.35f * glm::length(b.aabbMax - b.aabbMin));
+        c.eye = centre + reach * glm::normalize(glm::vec3(-0.6f, 0.35f, 0.7f));
+        c.target = centre;
+    }
     if (!vehicle_.active()) {
         c.eye = framedEye_;
         c.target = framedTarget_;
@@ -141,7 +155,6 @@ void Game::updateCameras(float dt) {
     c.farPlane = options_.farPlane;
 
     // Rear-view mirror: from just behind the car, looking back along it.
-    const glm::vec3 carFwd(std::cos(pose.heading), 0.0f, -std::sin(pose.heading));
     ViewCamera& m = mirror_.camera();
     m.eye = pose.position + glm::vec3(0.0f, 1.1f, 0.0f) - 2.5f * carFwd;
     m.target = m.eye - 10.0f * carFwd - glm::vec3(0.0f, 0.9f, 0.0f);
@@ -152,7 +165,12 @@ void Game::updateCameras(float dt) {
 
 void Game::Dyn(float dt) {
     Trace::call("Game::Dyn");
-    Update(dt);
+    if (overlay_) {
+        overlay_->beginFrame(*this, dt);
+        specialFX_.syncReactions(scene_);  // the overlay may have loaded a set of another size
+    }
+    // A scale of 1 multiplies exactly: without an overlay the steps are the ones given.
+    Update(paused_ ? 0.0f : dt * timeScale_);
     RenderFrame();
     ++frame_;
 }

@@ -1,6 +1,8 @@
 #pragma once
 // The stand-in game (CUBE's Game): Init -> InitProc builds every component; Dyn runs one frame
 // (the update sequence through SpecialFX::Dyn, then the render sequence through Render::Dyn).
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <string>
@@ -19,6 +21,28 @@
 #include "scene/cubeView.h"
 
 namespace cube {
+
+class Game;
+
+/// An application layer over the game (the tweak panel). beginFrame runs at the start of each
+/// Dyn, before the update: it may change options, the time scale and the reactions.
+/// declarePasses runs while Render::Dyn builds the frame, after every view and before present;
+/// it returns the colour target present shows (its argument when it adds nothing). With no
+/// overlay set, Dyn and the frame are exactly what they are without this hook.
+class GameOverlay {
+public:
+    virtual ~GameOverlay() = default;
+    virtual void beginFrame(Game& game, float dt) = 0;
+    virtual rtt::FrameGraphResource declarePasses(Game& game, rtt::FrameGraph& graph,
+                                                  rtt::FrameGraphResource color, int width, int height) = 0;
+    /// True while the overlay takes typed keys (a text field): the game's own keys stay off.
+    virtual bool wantsKeyboard() const { return false; }
+};
+
+/// Where the main camera looks. Chase: behind the car (default); BurnoutCloseUp: beside the
+/// rear wheels; Barrier: at the barrier node ("barrier_right"; Chase when the scene has none).
+/// --camera (Options::fixedCamera) overrides every preset.
+enum class CameraPreset { Chase, BurnoutCloseUp, Barrier };
 
 class Game {
 public:
@@ -51,6 +75,19 @@ public:
     /// Opaque quads the application attaches to the main (chase) camera from the next frame on
     /// (the benchmark's overdraw scenario); empty = none.
     void setCameraQuads(CameraQuads quads) { cameraQuads_ = std::move(quads); }
+    /// The overlay drawn over each frame from the next Dyn on (null: none). Not owned.
+    void setOverlay(GameOverlay* overlay) { overlay_ = overlay; }
+    GameOverlay* overlay() const { return overlay_; }
+    /// Game time per wall second in Dyn (default 1; clamped to [0, 10]); paused: no time passes
+    /// (Dyn still renders).
+    void setTimeScale(float scale) { timeScale_ = std::isfinite(scale) ? std::min(std::max(scale, 0.0f), 10.0f) : 1.0f; }
+    float timeScale() const { return timeScale_; }
+    void setPaused(bool paused) { paused_ = paused; }
+    bool paused() const { return paused_; }
+    void setCameraPreset(CameraPreset preset) { cameraPreset_ = preset; }
+    CameraPreset cameraPreset() const { return cameraPreset_; }
+    /// False when the scene has no barrier node for CameraPreset::Barrier.
+    bool hasBarrier() const { return barrierNode_ >= 0; }
     const CameraQuads& cameraQuads() const { return cameraQuads_; }
     Platform& platform() { return *platform_; }
     SpecialFX& specialFX() { return specialFX_; }
@@ -81,6 +118,11 @@ private:
 
     Options options_;
     CameraQuads cameraQuads_;
+    GameOverlay* overlay_ = nullptr;
+    float timeScale_ = 1.0f;
+    bool paused_ = false;
+    CameraPreset cameraPreset_ = CameraPreset::Chase;
+    int barrierNode_ = -1;
     std::unique_ptr<Platform> platform_;
     SceneData sceneData_;
     cubeScene scene_;

@@ -87,6 +87,10 @@ bool checkOptions(const Options& o, std::string* error) {
             return false;
         }
     }
+    if (o.panel && o.fx == FxPath::Legacy) {
+        *error = "--panel: edits the plugin's reactions; expected --fx plugin (the default), got --fx legacy";
+        return false;
+    }
     if (!o.screenshot.empty() && !writableFolder("--screenshot", folderOf(o.screenshot), error)) return false;
     if (!o.statsJson.empty() && !writableFolder("--stats-json", folderOf(o.statsJson), error)) return false;
     if (o.screenshotEvery > 0 && !writableFolder("--screenshot-every", o.screenshotDir, error)) return false;
@@ -124,6 +128,8 @@ std::string usage() {
         "  --camera ex,ey,ez,tx,ty,tz  pin the main camera (world metres) instead of chasing the car\n"
         "  --no-mirror            leave out the rear-view mirror view\n"
         "  --no-hud               leave out the HUD\n"
+        "  --panel                the live tweak panel: every reaction key on a widget, render\n"
+        "                         switches, pass timings; Save writes the file back (also headless)\n"
         "  --stats-json PATH      write frame statistics at exit\n"
         "SIGINT/SIGTERM finish the current frame, write --screenshot and --stats-json, exit 130/143.\n"
         "Environment: CUBE_OSMESA_LIBRARY, CUBE_EGL_LIBRARY, CUBE_GLFW_LIBRARY load a back end from\n"
@@ -290,6 +296,8 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
             o.mirror = false;
         } else if (a == "--no-hud") {
             o.hud = false;
+        } else if (a == "--panel") {
+            o.panel = true;
         } else if (a == "--stats-json") {
             if (!path(i, a, &o.statsJson)) return false;
         } else {

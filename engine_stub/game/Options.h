@@ -35,6 +35,7 @@ struct Options {
     bool watch = false;
     bool mirror = true;
     bool hud = true;
+    bool panel = false;           ///< the live tweak panel (engine_stub/panel), window or headless
     float nearPlane = 0.1f;
     float farPlane = 2000.0f;
     /// Reversed-Z in a 32-bit float z-buffer where the context has clip control (GL 4.5 /

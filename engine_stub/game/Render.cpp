@@ -14,6 +14,10 @@ void Render::handleKeys(Game& game) {
     Platform& p = game.platform();
     Options& o = game.options();
     fx::Plugin* plugin = game.specialFX().plugin();
+    if (game.overlay() && game.overlay()->wantsKeyboard()) {
+        for (Key k : {Key::P, Key::Q, Key::M, Key::H, Key::S, Key::B}) p.keyPressed(k);  // typed text
+        return;
+    }
     if (p.keyPressed(Key::P)) o.prepassEqual = !o.prepassEqual;
     fx::RenderOptions ro = plugin ? plugin->renderOptions() : fx::RenderOptions{};
     if (p.keyPressed(Key::Q)) ro.quarterRes = !ro.quarterRes;
@@ -80,7 +84,10 @@ void Render::Dyn(Game& game) {
     std::vector<cubeView*> views;
     if (game.options_.mirror) views.push_back(&game.mirror_);
     views.push_back(&game.chase_);
-    const rtt::FrameGraphResource color = game.scene_.Render(graph, views, settings);
+    const rtt::FrameGraphResource sceneColor = game.scene_.Render(graph, views, settings);
+
+    const rtt::FrameGraphResource color =
+        game.overlay_ ? game.overlay_->declarePasses(game, graph, sceneColor, w, h) : sceneColor;
 
     // [present] the side effect every frame keeps: show the frame (window) and/or read it back.
     const bool capture = game.captureNext_;

@@ -119,6 +119,10 @@ void SpecialFX::pollHotReload(cubeScene& scene) {
     }
 }
 
+void SpecialFX::syncReactions(cubeScene& scene) {
+    if (plugin_ && plugin_->reactionCount() != int(reactions_.size())) createReactions(scene);
+}
+
 int SpecialFX::particlesAlive() const {
     if (plugin_) return plugin_->stats().particlesAlive;
     int n = 0;

@@ -46,6 +46,10 @@ public:
     /// running set stays.
     void pollHotReload(cubeScene& scene);
 
+    /// After the plugin's set was changed from outside (an editor's loadReactionsFromText):
+    /// rebuilds the Reactions when the plugin's count differs from theirs.
+    void syncReactions(cubeScene& scene);
+
     fx::Plugin* plugin() const { return plugin_.get(); }
     FxPath path() const { return path_; }
     float dt() const { return dt_; }

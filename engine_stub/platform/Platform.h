@@ -5,6 +5,7 @@
 // presents by blitting (see rtt/), so a surfaceless context works the same as a window.
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace cube {
 
@@ -26,6 +27,23 @@ struct PlatformDesc {
 /// Keys the game reacts to in a window (prepass-EQUAL, quarter-res, mode switches...).
 enum class Key { P, Q, M, H, S, B, Escape, Count };
 
+/// Keys a UI needs beyond text (which arrives as Char events). Platform-neutral numbering.
+enum class UiKey { Tab, Left, Right, Up, Down, PageUp, PageDown, Home, End, Delete, Backspace,
+                   Enter, Escape, A, C, V, X, Y, Z, Ctrl, Shift, Alt, Count };
+
+/// One input event for a UI (the tweak panel), in window pixels from the top-left. The window
+/// back end queues them; tests build them by hand and inject them into the same queue.
+/// Defaults: a mouse move to (0, 0).
+struct InputEvent {
+    enum class Type { MouseMove, MouseButton, Scroll, Key, Char };
+    Type type = Type::MouseMove;
+    float x = 0.0f, y = 0.0f;  ///< MouseMove: position; Scroll: wheel steps (y up = positive)
+    int button = 0;            ///< MouseButton: 0 left, 1 right, 2 middle
+    bool down = false;         ///< MouseButton, Key: pressed (true) or released
+    UiKey key = UiKey::Tab;    ///< Key
+    unsigned codepoint = 0;    ///< Char: a Unicode code point typed
+};
+
 class Platform {
 public:
     /// Makes a context and loads GL. On failure returns null and says why in `error`
@@ -43,6 +61,9 @@ public:
     virtual bool pollEvents() = 0;
     /// True once per press of `key` since the last poll (edge, not level).
     virtual bool keyPressed(Key key) = 0;
+    /// Moves the UI input events queued since the last call to the end of `out`, oldest first.
+    /// Headless back ends have none.
+    virtual void takeInputEvents(std::vector<InputEvent>* out) { (void)out; }
     /// Headless backends resize their default surface on request; windows follow the user.
     virtual void resize(int width, int height) = 0;
     /// The context's GL entry point lookup (for a plugin that loads GL itself).

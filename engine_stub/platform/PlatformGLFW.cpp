@@ -5,6 +5,7 @@
 #include <GLFW/glfw3.h>
 
 #include <array>
+#include <vector>
 
 #include "platform/Platform.h"
 #include "platform/SystemLibrary.h"
@@ -21,7 +22,9 @@ namespace {
     X(glfwDestroyWindow) X(glfwMakeContextCurrent) X(glfwSwapInterval) X(glfwSetWindowUserPointer) \
     X(glfwGetWindowUserPointer) X(glfwSetKeyCallback) X(glfwGetProcAddress)                        \
     X(glfwGetFramebufferSize) X(glfwSwapBuffers) X(glfwPollEvents) X(glfwSetWindowShouldClose)     \
-    X(glfwWindowShouldClose) X(glfwIconifyWindow) X(glfwRestoreWindow) X(glfwSetWindowSize)
+    X(glfwWindowShouldClose) X(glfwIconifyWindow) X(glfwRestoreWindow) X(glfwSetWindowSize)       \
+    X(glfwSetCursorPosCallback) X(glfwSetMouseButtonCallback) X(glfwSetScrollCallback)            \
+    X(glfwSetCharCallback) X(glfwGetWindowSize)
 
 struct GLFWApi {
 #define CUBE_DECLARE(name) decltype(&::name) name = nullptr;
@@ -85,8 +88,9 @@ public:
         g_glfw.glfwSwapInterval(0);
         g_glfw.glfwSetWindowUserPointer(window_, this);
         g_glfw.glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
-            if (action != GLFW_PRESS) return;
             auto* self = static_cast<GLFWPlatform*>(g_glfw.glfwGetWindowUserPointer(w));
+            self->queueKey(key, action != GLFW_RELEASE);
+            if (action != GLFW_PRESS) return;
             switch (key) {
                 case GLFW_KEY_P: self->pressed_[size_t(Key::P)] = true; break;
                 case GLFW_KEY_Q: self->pressed_[size_t(Key::Q)] = true; break;
@@ -97,6 +101,40 @@ public:
                 case GLFW_KEY_ESCAPE: self->pressed_[size_t(Key::Escape)] = true; break;
                 default: break;
             }
+        });
+        g_glfw.glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) {
+            auto* self = static_cast<GLFWPlatform*>(g_glfw.glfwGetWindowUserPointer(w));
+            InputEvent e;
+            e.type = InputEvent::Type::MouseMove;
+            // Window coordinates to framebuffer pixels (they differ on high-DPI screens).
+            int ww = 1, wh = 1;
+            g_glfw.glfwGetWindowSize(w, &ww, &wh);
+            e.x = float(x) * float(self->width()) / float(ww > 0 ? ww : 1);
+            e.y = float(y) * float(self->height()) / float(wh > 0 ? wh : 1);
+            self->queueEvent(e);
+        });
+        g_glfw.glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int) {
+            auto* self = static_cast<GLFWPlatform*>(g_glfw.glfwGetWindowUserPointer(w));
+            InputEvent e;
+            e.type = InputEvent::Type::MouseButton;
+            e.button = button;
+            e.down = action == GLFW_PRESS;
+            self->queueEvent(e);
+        });
+        g_glfw.glfwSetScrollCallback(window_, [](GLFWwindow* w, double dx, double dy) {
+            auto* self = static_cast<GLFWPlatform*>(g_glfw.glfwGetWindowUserPointer(w));
+            InputEvent e;
+            e.type = InputEvent::Type::Scroll;
+            e.x = float(dx);
+            e.y = float(dy);
+            self->queueEvent(e);
+        });
+        g_glfw.glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned codepoint) {
+            auto* self = static_cast<GLFWPlatform*>(g_glfw.glfwGetWindowUserPointer(w));
+            InputEvent e;
+            e.type = InputEvent::Type::Char;
+            e.codepoint = codepoint;
+            self->queueEvent(e);
         });
         if (!loadGL(reinterpret_cast<GetProcFn>(g_glfw.glfwGetProcAddress), error)) return false;
         renderer_ = glRendererString();
@@ -122,6 +160,36 @@ public:
         else { g_glfw.glfwRestoreWindow(window_); g_glfw.glfwSetWindowSize(window_, w, h); }
     }
     std::string rendererName() const override { return renderer_; }
+    // Bounded: with no UI taking them (no --panel), the oldest events are dropped.
+    void queueEvent(const InputEvent& e) {
+        if (events_.size() >= kMaxQueuedEvents) events_.erase(events_.begin(), events_.begin() + kMaxQueuedEvents / 2);
+        events_.push_back(e);
+    }
+    static constexpr size_t kMaxQueuedEvents = 4096;
+    void takeInputEvents(std::vector<InputEvent>* out) override {
+        out->insert(out->end(), events_.begin(), events_.end());
+        events_.clear();
+    }
+    void queueKey(int glfwKey, bool down) {
+        static const std::pair<int, UiKey> kKeys[] = {
+            {GLFW_KEY_TAB, UiKey::Tab}, {GLFW_KEY_LEFT, UiKey::Left}, {GLFW_KEY_RIGHT, UiKey::Right},
+            {GLFW_KEY_UP, UiKey::Up}, {GLFW_KEY_DOWN, UiKey::Down}, {GLFW_KEY_PAGE_UP, UiKey::PageUp},
+            {GLFW_KEY_PAGE_DOWN, UiKey::PageDown}, {GLFW_KEY_HOME, UiKey::Home}, {GLFW_KEY_END, UiKey::End},
+            {GLFW_KEY_DELETE, UiKey::Delete}, {GLFW_KEY_BACKSPACE, UiKey::Backspace},
+            {GLFW_KEY_ENTER, UiKey::Enter}, {GLFW_KEY_KP_ENTER, UiKey::Enter}, {GLFW_KEY_ESCAPE, UiKey::Escape},
+            {GLFW_KEY_A, UiKey::A}, {GLFW_KEY_C, UiKey::C}, {GLFW_KEY_V, UiKey::V}, {GLFW_KEY_X, UiKey::X},
+            {GLFW_KEY_Y, UiKey::Y}, {GLFW_KEY_Z, UiKey::Z}, {GLFW_KEY_LEFT_CONTROL, UiKey::Ctrl},
+            {GLFW_KEY_RIGHT_CONTROL, UiKey::Ctrl}, {GLFW_KEY_LEFT_SHIFT, UiKey::Shift},
+            {GLFW_KEY_RIGHT_SHIFT, UiKey::Shift}, {GLFW_KEY_LEFT_ALT, UiKey::Alt}, {GLFW_KEY_RIGHT_ALT, UiKey::Alt}};
+        for (const auto& k : kKeys) {
+            if (k.first != glfwKey) continue;
+            InputEvent e;
+            e.type = InputEvent::Type::Key;
+            e.key = k.second;
+            e.down = down;
+            queueEvent(e);
+        }
+    }
     void* getProcAddress(const char* name) const override {
         return reinterpret_cast<void*>(g_glfw.glfwGetProcAddress(name));
     }
@@ -130,6 +198,7 @@ private:
     GLFWwindow* window_ = nullptr;
     bool initialised_ = false;
     std::array<bool, size_t(Key::Count)> pressed_{};
+    std::vector<InputEvent> events_;
     std::string renderer_;
 };
 

@@ -68,8 +68,12 @@ bool ReactionLibrary::readAndLoad(Snapshot* snap, ReactionSet* set, Diagnostics*
         ReactionSource src;
         src.name = f.path;
         f.readable = readReactionFileText(f.path, &src.text, diags);
-        f.hash = f.readable ? contentHash(src.text) : 0;
-        if (f.readable) {
+        f.hash = f.readable ? contentHash(src.text) : 0;  // of the disk bytes: change detection
+        const auto edited = overrides_.find(f.path);
+        if (edited != overrides_.end()) {
+            src.text = edited->second;
+            sources.push_back(std::move(src));
+        } else if (f.readable) {
             sources.push_back(std::move(src));
         } else {
             ok = false;
@@ -95,9 +99,50 @@ bool ReactionLibrary::load(const std::string& path, Diagnostics* diags) {
     for (FileState& f : snap.files) f.stampSeen = now;
     seen_ = std::move(snap);
     current_ = std::move(set);
+    overrides_.clear();
     loaded_ = true;
     ++generation_;
     lastPoll_ = now;
+    return true;
+}
+
+bool ReactionLibrary::loadOverride(const std::string& file, const std::string& text, Diagnostics* diags) {
+    bool watched = false;
+    for (const std::string& f : current_.files) watched = watched || f == file;
+    if (!loaded_ || !watched) {
+        if (diags) {
+            Diagnostic d;
+            d.code = ErrorCode::FileNotFound;
+            d.file = file;
+            d.message = "not one of the loaded reaction files; expected one of the running set's files";
+            diags->push_back(d);
+        }
+        return false;
+    }
+    std::vector<ReactionSource> sources;
+    bool ok = true;
+    for (const std::string& f : current_.files) {
+        ReactionSource src;
+        src.name = f;
+        const auto edited = overrides_.find(f);
+        if (f == file) {
+            src.text = text;
+        } else if (edited != overrides_.end()) {
+            src.text = edited->second;
+        } else if (!readReactionFileText(f, &src.text, diags)) {
+            ok = false;
+            continue;
+        }
+        sources.push_back(std::move(src));
+    }
+    ReactionSet set;
+    Diagnostics local;
+    ok = loadReactionSources(sources, &set, &local) && ok;
+    if (diags) diags->insert(diags->end(), local.begin(), local.end());
+    if (!ok) return false;
+    overrides_[file] = text;
+    current_ = std::move(set);
+    ++generation_;
     return true;
 }
 

@@ -9,6 +9,7 @@
 // first poll after it, at most one poll interval late (default 0.1 s).
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,13 @@ public:
     /// Reloads when the watched files changed; see PollResult. Cheap when nothing changed
     /// (a stat per file), and does nothing until load() succeeded once.
     PollResult poll(Diagnostics* diags);
+    /// An editor's text for one watched file (`file` must be one of current().files, else
+    /// FileNotFound): validated with the other files as one set, exactly like a load. On success
+    /// the set goes live and `text` stands in for the file's disk content (in this and every
+    /// later poll) until load() or the next loadOverride() of that file; on error nothing
+    /// changes. Poll still watches the disk stamps, so a later disk change of another file
+    /// reloads with this text kept.
+    bool loadOverride(const std::string& file, const std::string& text, Diagnostics* diags);
 
     const ReactionSet& current() const { return current_; }
     bool loaded() const { return loaded_; }
@@ -66,6 +74,7 @@ private:
     bool readAndLoad(Snapshot* snap, ReactionSet* set, Diagnostics* diags) const;
 
     ReactionSet current_;
+    std::map<std::string, std::string> overrides_;  ///< file -> editor text (loadOverride)
     bool loaded_ = false;
     std::string path_;
     Snapshot seen_;

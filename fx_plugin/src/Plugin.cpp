@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "PluginImpl.h"
+#include "../reactions/ReactionKeyTable.h"
 #include "../render/InstallParticleRenderer.h"
 
 namespace fx {
@@ -54,6 +55,44 @@ bool PluginImpl::pollHotReload(Diagnostics* out) {
     host_->log(LogLevel::Info, ("fx: reactions reloaded (" + std::to_string(runtimes_.size()) +
                                 " reactions)").c_str());
     return true;
+}
+
+bool PluginImpl::loadReactionsFromText(const std::string& file, const std::string& text, Diagnostics* out) {
+    Diagnostics diags;
+    if (!library_.loadOverride(file, text, &diags)) {
+        // An editor's rejected value is the editor's to show; the log gets it once, as for a
+        // rejected hot reload.
+        logDiagnostics(diags, ("fx: edited text of " + file + " does not validate; the running set is kept").c_str());
+        if (out) out->insert(out->end(), diags.begin(), diags.end());
+        return false;
+    }
+    adoptCurrentSet();
+    return true;
+}
+
+std::vector<ReactionKeyInfo> PluginImpl::reactionSchema() const { return reactionKeyTable(); }
+
+std::string PluginImpl::reactionFile(int index) const {
+    if (index < 0 || index >= reactionCount()) {
+        errors_.refuse(ErrorCode::IndexOutOfRange, "reactionFile", "index " + std::to_string(index) +
+                       " is outside the " + std::to_string(reactionCount()) + " loaded reactions");
+        return std::string();
+    }
+    return runtimes_[size_t(index)].desc().sourceFile;
+}
+
+std::string PluginImpl::reactionValue(int index, const std::string& key) const {
+    if (index < 0 || index >= reactionCount()) {
+        errors_.refuse(ErrorCode::IndexOutOfRange, "reactionValue", "index " + std::to_string(index) +
+                       " is outside the " + std::to_string(reactionCount()) + " loaded reactions");
+        return std::string();
+    }
+    return reactionValueText(runtimes_[size_t(index)].desc(), key);
+}
+
+int PluginImpl::reactionParticlesAlive(int index) const {
+    if (index < 0 || index >= reactionCount()) return 0;
+    return runtimes_[size_t(index)].pool().alive();
 }
 
 void PluginImpl::adoptCurrentSet() {

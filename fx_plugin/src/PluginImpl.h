@@ -50,6 +50,13 @@ public:
     Stats stats() const override;
     ParticleCheck checkParticles() const override;
     bool pollShaderReload(Diagnostics* out) override;
+    std::vector<ReactionKeyInfo> reactionSchema() const override;
+    std::vector<std::string> reactionFiles() const override { return library_.current().files; }
+    std::string reactionFile(int index) const override;
+    std::string reactionValue(int index, const std::string& key) const override;
+    int reactionParticlesAlive(int index) const override;
+    bool loadReactionsFromText(const std::string& file, const std::string& text,
+                               Diagnostics* out) override;
     ErrorCode setParticleShape(ParticleShape shape) override;
     ParticleShape particleShape() const override { return shape_; }
 

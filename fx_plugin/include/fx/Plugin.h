@@ -32,6 +32,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "fx/Api.h"
 #include "fx/Diagnostic.h"
@@ -56,6 +57,30 @@ struct RenderOptions {
 /// Quad: the full quad (for comparison). Spherical billboards always draw their covering quad.
 /// Since API 1.1.
 enum class ParticleShape : uint8_t { Trimmed = 0, Quad = 1 };
+
+/// One key of the reaction file schema (reactions/README.md), as an editor needs it: enough to
+/// build a widget, clamp it to the range the loader enforces and explain it in a tooltip.
+/// Defaults: a number in [0, 0] with no unit, help or choices.
+struct ReactionKeyInfo {
+    enum class Kind : uint8_t {
+        Number,        ///< a finite number in [min, max]
+        Integer,       ///< a whole number in [min, max]
+        Bool,          ///< true | false
+        Choice,        ///< one word of `choices`
+        ChoiceList,    ///< a list of words of `choices` (1 .. max entries)
+        NumberRange,   ///< `[lo, hi]` (or one number meaning [v, v]), each in [min, max], lo <= hi
+        IntegerPair,   ///< `[first, count]` integers (the atlas); `help` states the bounds
+        ColorRamp,     ///< a list of `{t, rgba: [r, g, b, a]}` stops, every number in [0, 1]
+        Name,          ///< 1-64 of [A-Za-z0-9_.-]
+    };
+    std::string key;   ///< dotted path inside one reaction: "particle.drag", "name"
+    Kind kind = Kind::Number;
+    double min = 0.0;  ///< inclusive; for ChoiceList/ColorRamp the least entry count
+    double max = 0.0;  ///< inclusive; for ChoiceList/ColorRamp the most entries
+    std::vector<std::string> choices;  ///< Choice, ChoiceList: the words, in the file's spelling
+    std::string unit;  ///< "m", "s", "m/s", "1/s", "rad/s", "particles/s per wheel", "" ...
+    std::string help;  ///< what it means, with any cross-key rule ("fade_in + fade_out <= 1")
+};
 
 class FX_API Plugin {
 public:
@@ -107,8 +132,33 @@ public:
     /// Without shaderDir (the embedded shaders) it does nothing.
     virtual bool pollShaderReload(Diagnostics* out) = 0;
 
-    // --- API 1.1 ---------------------------------------------------------------------------
-    /// Default Trimmed. Refused (InvalidValue) for a value outside the enum.
+    // ---- API 1.1: editing tools (a tweak panel, an editor) ----
+
+    /// Every key a reaction may have, in the order reactions/README.md lists them. No GL.
+    virtual std::vector<ReactionKeyInfo> reactionSchema() const = 0;
+    /// The files the running set was read from, in load order (empty before a load).
+    virtual std::vector<std::string> reactionFiles() const = 0;
+    /// The file that defines reaction `index` ("" and IndexOutOfRange for a bad index).
+    virtual std::string reactionFile(int index) const = 0;
+    /// The running value of `key` (a ReactionKeyInfo::key) of reaction `index`, as YAML flow
+    /// text: "1.2", "[3, 5]", "soft", "true", "[asphalt, kerb]", "[{t: 0, rgba: [1, 1, 1, 1]}]".
+    /// Keys the file leaves out give their defaults. "" for an unknown key or a bad index.
+    virtual std::string reactionValue(int index, const std::string& key) const = 0;
+    /// Live particles of reaction `index` (0 for a bad index).
+    virtual int reactionParticlesAlive(int index) const = 0;
+    /// Validates `text` as the content of `file` (one of reactionFiles()) together with the
+    /// other files of the set, exactly as loadReactions/hot reload validate files on disk. On
+    /// success the new set goes live (reactions whose name and capacity stay keep their
+    /// particles) and `text` stands in for the file's content until the next loadReactions()
+    /// or loadReactionsFromText() of that file: hot reload keeps using it even when the file
+    /// on disk changes (the editor decides what to do about that). On error nothing running
+    /// changes, the diagnostics (file:line:col, key, message) go to `out` and false is returned;
+    /// FileNotFound when `file` is not part of the running set. No GL.
+    virtual bool loadReactionsFromText(const std::string& file, const std::string& text,
+                                       Diagnostics* out) = 0;
+
+    /// How billboards are rasterised (ParticleShape). Default Trimmed. Refused (InvalidValue)
+    /// for a value outside the enum.
     virtual ErrorCode setParticleShape(ParticleShape shape) = 0;
     virtual ParticleShape particleShape() const = 0;
 };

@@ -1,0 +1,135 @@
+#include "ReactionKeyTable.h"
+
+#include <charconv>
+
+namespace fx {
+namespace {
+
+using Kind = ReactionKeyInfo::Kind;
+
+ReactionKeyInfo key(const char* path, Kind kind, double lo, double hi, const char* unit,
+                    const char* help, std::vector<std::string> choices = {}) {
+    ReactionKeyInfo k;
+    k.key = path;
+    k.kind = kind;
+    k.min = lo;
+    k.max = hi;
+    k.unit = unit;
+    k.help = help;
+    k.choices = std::move(choices);
+    return k;
+}
+
+std::vector<ReactionKeyInfo> buildTable() {
+    const std::vector<std::string> surfaces = {"asphalt", "kerb", "grass", "gravel", "sand"};
+    // Ranges: the literals of ReactionSchema.cpp; meanings: reactions/README.md.
+    return {
+        key("name", Kind::Name, 1, 64, "", "unique name; a reaction keeps its live particles across a reload when its name and capacity stay the same"),
+        key("type", Kind::Choice, 0, 0, "", "what drives it: wheel slip (wheel_smoke), speed on loose ground (dust) or a collision (collision_burst)",
+            {"wheel_smoke", "dust", "collision_burst"}),
+        key("trigger.slip_threshold", Kind::Number, 0.0, 1.0, "slip fraction", "combined wheel slip at which emission starts"),
+        key("trigger.surfaces", Kind::ChoiceList, 1, 8, "", "ground under the wheel that emits", surfaces),
+        key("trigger.wheels", Kind::Choice, 0, 0, "", "which wheels emit", {"rear", "front", "all"}),
+        key("trigger.min_speed", Kind::Number, 0.0, 200.0, "m/s", "hub speed below which a wheel emits nothing"),
+        key("trigger.collision_threshold", Kind::Number, 0.0, 1.0, "collision amount", "collision_burst only: amount that fires a burst"),
+        key("emission.rate", Kind::Number, 0.0, 100000.0, "particles/s per wheel", "emission at full strength (wheel_smoke, dust)"),
+        key("emission.burst", Kind::Integer, 0, kMaxCapacity, "particles", "collision_burst: particles per hit at collision amount 1; burst <= capacity"),
+        key("emission.capacity", Kind::Integer, 1, kMaxCapacity, "particles", "pool size, allocated once at load; emission beyond it is dropped (changing it restarts the reaction's particles)"),
+        key("emission.spawn_height", Kind::Number, -10.0, 10.0, "m", "spawn point above the wheel contact / collision point"),
+        key("emission.jitter_radius", Kind::Number, 0.0, 10.0, "m", "spawn points are uniform in a horizontal disc of this radius"),
+        key("particle.lifetime", Kind::NumberRange, 0.01, 60.0, "s", "each particle's life, uniform in [min, max]; min <= max"),
+        key("particle.start_size", Kind::Number, 0.0, 10000.0, "m", "billboard edge length at birth"),
+        key("particle.end_size", Kind::Number, 0.0, 10000.0, "m", "edge length at death"),
+        key("particle.size_variation", Kind::Number, 0.0, 0.9, "fraction", "each particle's sizes are scaled by 1 +- up to this"),
+        key("particle.rise_speed", Kind::Number, -50.0, 50.0, "m/s", "terminal upward speed (buoyancy); negative sinks"),
+        key("particle.drag", Kind::Number, 0.0, 1.0e6, "1/s", "rate k at which velocity relaxes to its terminal value (halves every 0.69/k s)"),
+        key("particle.wind_factor", Kind::Number, 0.0, 10.0, "", "share of the ambient wind in the terminal velocity"),
+        key("particle.spread_speed", Kind::Number, 0.0, 100.0, "m/s", "random initial speed, random direction in the upper hemisphere"),
+        key("particle.inherit_velocity", Kind::Number, 0.0, 2.0, "", "share of the wheel hub's velocity at birth"),
+        key("particle.spin", Kind::NumberRange, -50.0, 50.0, "rad/s", "rotation speed of the billboard, uniform in [min, max]; min <= max"),
+        key("particle.fade_in", Kind::Number, 0.0, 1.0, "life fraction", "alpha rises 0 -> 1 over this first part of life; fade_in + fade_out <= 1"),
+        key("particle.fade_out", Kind::Number, 0.0, 1.0, "life fraction", "alpha falls 1 -> 0 over this last part of life; fade_in + fade_out <= 1"),
+        key("particle.colour_ramp", Kind::ColorRamp, 1, kMaxColorStops, "",
+            "colour over life, piecewise linear; t in [0, 1] non-decreasing, rgba each in [0, 1], straight alpha; two stops with one t make a hard step"),
+        key("particle.atlas", Kind::IntegerPair, 0, 4, "frames",
+            "[first, count] frames of the 2x2 smoke atlas picked at random per particle: first in [0, 3], count in [1, 4], first + count <= 4"),
+        key("render.technique", Kind::Choice, 0, 0, "", "hard sprites, soft particles (depth fade) or spherical billboards (ray length through a sphere)",
+            {"hard", "soft", "spherical"}),
+        key("render.blend", Kind::Choice, 0, 0, "", "how particles combine with what is behind them; additive is order-independent",
+            {"alpha", "premultiplied", "additive"}),
+        key("render.softness", Kind::Number, 1.0e-6, 1.0e6, "m", "depth difference over which the soft fade reaches 1 (the shader's scale is 1/softness)"),
+        key("render.contrast_power", Kind::Number, 0.1, 16.0, "", "exponent of the soft-fade contrast curve; 1 = linear"),
+        key("render.near_fade", Kind::Number, 0.0, 100.0, "m", "distance in front of the near plane over which particles fade out"),
+        key("render.sort_back_to_front", Kind::Bool, 0, 0, "", "sort particles far to near each frame; never done for additive"),
+    };
+}
+
+std::string num(float v) {
+    char buf[32];
+    auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
+}
+
+std::string pair(const std::string& a, const std::string& b) { return "[" + a + ", " + b + "]"; }
+
+}  // namespace
+
+const std::vector<ReactionKeyInfo>& reactionKeyTable() {
+    static const std::vector<ReactionKeyInfo> table = buildTable();
+    return table;
+}
+
+std::string reactionValueText(const ReactionDesc& d, const std::string& k) {
+    const TriggerDesc& t = d.trigger;
+    const EmissionDesc& e = d.emission;
+    const ParticleDesc& p = d.particle;
+    const RenderDesc& r = d.render;
+    if (k == "name") return d.name;
+    if (k == "type") return reactionTypeName(d.type);
+    if (k == "trigger.slip_threshold") return num(t.slipThreshold);
+    if (k == "trigger.surfaces") {
+        std::string s;
+        for (int i = 0; i < int(Surface::Count); ++i) {
+            if (t.surfaces & surfaceBit(Surface(i))) s += (s.empty() ? "" : ", ") + std::string(surfaceName(Surface(i)));
+        }
+        return "[" + s + "]";
+    }
+    if (k == "trigger.wheels") return wheelSetName(t.wheels);
+    if (k == "trigger.min_speed") return num(t.minSpeed);
+    if (k == "trigger.collision_threshold") return num(t.collisionThreshold);
+    if (k == "emission.rate") return num(e.rate);
+    if (k == "emission.burst") return std::to_string(e.burst);
+    if (k == "emission.capacity") return std::to_string(e.capacity);
+    if (k == "emission.spawn_height") return num(e.spawnHeight);
+    if (k == "emission.jitter_radius") return num(e.jitterRadius);
+    if (k == "particle.lifetime") return pair(num(p.lifetimeMin), num(p.lifetimeMax));
+    if (k == "particle.start_size") return num(p.startSize);
+    if (k == "particle.end_size") return num(p.endSize);
+    if (k == "particle.size_variation") return num(p.sizeVariation);
+    if (k == "particle.rise_speed") return num(p.riseSpeed);
+    if (k == "particle.drag") return num(p.drag);
+    if (k == "particle.wind_factor") return num(p.windFactor);
+    if (k == "particle.spread_speed") return num(p.spreadSpeed);
+    if (k == "particle.inherit_velocity") return num(p.inheritVelocity);
+    if (k == "particle.spin") return pair(num(p.spinMin), num(p.spinMax));
+    if (k == "particle.fade_in") return num(p.fadeIn);
+    if (k == "particle.fade_out") return num(p.fadeOut);
+    if (k == "particle.colour_ramp") {
+        std::string s;
+        for (const ColorStop& c : p.colorRamp) {
+            s += (s.empty() ? "{t: " : ", {t: ") + num(c.t) + ", rgba: [" + num(c.rgba.r) + ", " + num(c.rgba.g) +
+                 ", " + num(c.rgba.b) + ", " + num(c.rgba.a) + "]}";
+        }
+        return "[" + s + "]";
+    }
+    if (k == "particle.atlas") return pair(std::to_string(p.atlasFirst), std::to_string(p.atlasCount));
+    if (k == "render.technique") return techniqueName(r.technique);
+    if (k == "render.blend") return blendModeName(r.blend);
+    if (k == "render.softness") return num(r.softness);
+    if (k == "render.contrast_power") return num(r.contrastPower);
+    if (k == "render.near_fade") return num(r.nearFade);
+    if (k == "render.sort_back_to_front") return r.sortBackToFront ? "true" : "false";
+    return std::string();
+}
+
+}  // namespace fx
