@@ -31,10 +31,16 @@ void main() {
 
     vec4 colour[4];
     vec4 bilinear = vec4(0.0);
+    vec4 any = vec4(0.0);
     for (int i = 0; i < 4; ++i) {
         colour[i] = texelFetch(uHalfColor, taps[i], 0);
         bilinear += weights[i] * colour[i];
+        any += colour[i];
     }
+    // No smoke in the footprint (premultiplied values are >= 0, so the sum is 0 only when every
+    // tap is): every branch below would blend 0, which leaves the scene as it is. Discarding
+    // skips the depth fetches and the blend for the (usually many) smoke-free pixels.
+    if (dot(any, vec4(1.0)) <= 0.0) discard;
     if (uBilinear != 0) {
         oColor = bilinear;
         return;

@@ -52,6 +52,7 @@ GlStateGuard::GlStateGuard() {
     s.cullFace = glIsEnabled(GL_CULL_FACE) == GL_TRUE;
     s.stencilTest = glIsEnabled(GL_STENCIL_TEST) == GL_TRUE;
     s.scissorTest = glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE;
+    glGetIntegerv(GL_SCISSOR_BOX, s.scissorBox);
     GLboolean mask[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
     glGetBooleanv(GL_COLOR_WRITEMASK, mask);
     for (int i = 0; i < 4; ++i) s.colorMask[i] = mask[i] == GL_TRUE;
@@ -92,6 +93,7 @@ GlStateGuard::~GlStateGuard() {
     setEnabled(GL_CULL_FACE, s.cullFace);
     setEnabled(GL_STENCIL_TEST, s.stencilTest);
     setEnabled(GL_SCISSOR_TEST, s.scissorTest);
+    glScissor(s.scissorBox[0], s.scissorBox[1], s.scissorBox[2], s.scissorBox[3]);
     glColorMask(s.colorMask[0], s.colorMask[1], s.colorMask[2], s.colorMask[3]);
     glClearColor(s.clearColor[0], s.clearColor[1], s.clearColor[2], s.clearColor[3]);
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, GLuint(s.unpackBuffer));

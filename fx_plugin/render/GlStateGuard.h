@@ -11,7 +11,7 @@
 //   renderer never binds one, and restoring the VAO restores it), active texture unit, the
 //   GL_TEXTURE_2D binding and sampler object of units 0..kTextureUnits-1, blend enable, blend
 //   func and equation (separate RGB/alpha), depth test, depth func, depth mask, cull-face
-//   enable, stencil-test enable, scissor-test enable, colour mask, clear colour, viewport,
+//   enable, stencil-test enable, scissor-test enable and box, colour mask, clear colour, viewport,
 //   draw and read framebuffers, GL_PIXEL_UNPACK_BUFFER and the unpack alignment / row length /
 //   skip values (texture uploads).
 // Not captured (the renderer neither changes nor depends on them): per-draw-buffer blend state
@@ -41,6 +41,7 @@ private:
         bool depthTest = false, depthMask = true;
         int depthFunc = 0;
         bool cullFace = false, stencilTest = false, scissorTest = false;
+        int scissorBox[4] = {};
         bool colorMask[4] = {true, true, true, true};
         float clearColor[4] = {};
         int viewport[4] = {};

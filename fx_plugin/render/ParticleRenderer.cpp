@@ -270,6 +270,8 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
         return drawn;
     }
 
+    // Where the smoke can be: the quarter-res passes' fixed costs stay inside it.
+    record->rect = QuarterResPath::screenRect(view, record->list.instances.data(), record->list.particleCount());
     const Target depth = frame.sceneDepth();
     const Target halfDepth = frame.createTarget(QuarterResPath::kDepthTarget,
                                                 QuarterResPath::depthTargetDesc());
@@ -281,21 +283,21 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
                       if (!sizesAgree(ctx, record->view, depth, Target{})) return;
                       GlStateGuard guard;
                       DebugGroup group(QuarterResPath::kDownsamplePass);
-                      quarter_->downsampleDepth(ctx, depth, halfDepth);
+                      quarter_->downsampleDepth(ctx, depth, halfDepth, record->rect);
                   });
     frame.addPass(QuarterResPath::kQuarterPass, {halfDepth}, {halfColor},
                   [this, record, halfDepth, halfColor](PassContext& ctx) {
                       GlStateGuard guard;
                       DebugGroup group(QuarterResPath::kQuarterPass);
-                      quarter_->beginQuarter(ctx, halfColor);
+                      quarter_->beginQuarter(ctx, halfColor, record->rect);
                       drawBatches(*record, ctx.texture(halfDepth, 0).name, true);
                   });
     const bool bilinear = options.bilinearUpsample;
     frame.addPass(QuarterResPath::kCompositePass, {halfColor, halfDepth, depth}, {color},
-                  [this, color, halfColor, halfDepth, depth, bilinear](PassContext& ctx) {
+                  [this, record, color, halfColor, halfDepth, depth, bilinear](PassContext& ctx) {
                       GlStateGuard guard;
                       DebugGroup group(QuarterResPath::kCompositePass);
-                      quarter_->composite(ctx, color, halfColor, halfDepth, depth, bilinear);
+                      quarter_->composite(ctx, color, halfColor, halfDepth, depth, bilinear, record->rect);
                   });
     return drawn;
 }

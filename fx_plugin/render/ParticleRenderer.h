@@ -91,6 +91,7 @@ private:
         ViewInfo view;
         DrawList list;
         ParticleShape shape = ParticleShape::Trimmed;
+        QuarterResPath::ScreenRect rect;  ///< quarter res: where the particles can be
     };
 
     bool ensureLoaded();

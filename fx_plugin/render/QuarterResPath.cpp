@@ -1,5 +1,8 @@
 #include "QuarterResPath.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "render/PrivateGl.h"
 
 #include "ShaderLoader.h"
@@ -22,7 +25,63 @@ void fullscreenState() {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
+// Scissor to `rect` scaled to a target of w x h (the full-res rect's pixels / `divisor`, grown by
+// `border` texels), or no scissor for a whole-view rect.
+void scissorTo(const QuarterResPath::ScreenRect& rect, int divisor, int border, int w, int h) {
+    if (rect.whole) {
+        glDisable(GL_SCISSOR_TEST);
+        return;
+    }
+    const int x0 = std::max(0, rect.x0 / divisor - border), y0 = std::max(0, rect.y0 / divisor - border);
+    const int x1 = std::min(w, (rect.x1 + divisor - 1) / divisor + border);
+    const int y1 = std::min(h, (rect.y1 + divisor - 1) / divisor + border);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0));
+}
+
 }  // namespace
+
+QuarterResPath::ScreenRect QuarterResPath::screenRect(const ViewInfo& view, const ParticleInstance* instances,
+                                                      int count) {
+    ScreenRect r;
+    float lo[2] = {1e30f, 1e30f}, hi[2] = {-1e30f, -1e30f};
+    bool any = false;
+    for (int i = 0; i < count; ++i) {
+        const ParticleInstance& p = instances[i];
+        const glm::vec3 c = glm::vec3(view.view * glm::vec4(p.x, p.y, p.z, 1.0f));
+        const float radius = 0.71f * p.size;
+        if (!(c.z + radius < -view.nearPlane)) return r;  // reaches the near plane (or NaN): whole view
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 q = c + radius * glm::vec3(corner & 1 ? 1.0f : -1.0f, corner & 2 ? 1.0f : -1.0f,
+                                                       corner & 4 ? 1.0f : -1.0f);
+            const glm::vec4 clip = view.proj * glm::vec4(q, 1.0f);
+            for (int a = 0; a < 2; ++a) {
+                const float ndc = clip[a] / clip.w;
+                lo[a] = std::min(lo[a], ndc);
+                hi[a] = std::max(hi[a], ndc);
+            }
+        }
+        any = true;
+    }
+    const int w = view.width, h = view.height;
+    if (!any) {
+        r.whole = false;  // nothing in front of the camera: an empty rect
+        return r;
+    }
+    // NDC to pixels, one pixel of slack for rasterisation rules, clamped to the view.
+    auto px = [](float ndc, int size) { return (ndc * 0.5f + 0.5f) * float(size); };
+    r.x0 = std::max(0, int(std::floor(px(lo[0], w))) - 1);
+    r.y0 = std::max(0, int(std::floor(px(lo[1], h))) - 1);
+    r.x1 = std::min(w, int(std::ceil(px(hi[0], w))) + 1);
+    r.y1 = std::min(h, int(std::ceil(px(hi[1], h))) + 1);
+    if (r.x1 <= r.x0 || r.y1 <= r.y0) {
+        r.x0 = r.x1 = r.y0 = r.y1 = 0;
+        r.whole = false;
+        return r;
+    }
+    r.whole = r.x0 == 0 && r.y0 == 0 && r.x1 == w && r.y1 == h;
+    return r;
+}
 
 TargetDesc QuarterResPath::depthTargetDesc() {
     TargetDesc d;
@@ -73,9 +132,10 @@ void QuarterResPath::build(const std::string& shaderDir, std::vector<std::string
     if (!emptyVao_) glGenVertexArrays(1, &emptyVao_);  // core profile draws need a VAO
 }
 
-void QuarterResPath::downsampleDepth(PassContext& ctx, Target sceneDepth, Target halfDepth) {
+void QuarterResPath::downsampleDepth(PassContext& ctx, Target sceneDepth, Target halfDepth, const ScreenRect& rect) {
     ctx.bindForDraw(halfDepth);
     fullscreenState();
+    scissorTo(rect, 2, 2, ctx.width(halfDepth), ctx.height(halfDepth));
     glDisable(GL_BLEND);
     glUseProgram(downsample_);
     bindTextureUnit(0, ctx.texture(sceneDepth, 0).name);
@@ -84,18 +144,19 @@ void QuarterResPath::downsampleDepth(PassContext& ctx, Target sceneDepth, Target
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void QuarterResPath::beginQuarter(PassContext& ctx, Target halfColor) {
+void QuarterResPath::beginQuarter(PassContext& ctx, Target halfColor, const ScreenRect& rect) {
     ctx.bindForDraw(halfColor);
-    glDisable(GL_SCISSOR_TEST);
+    scissorTo(rect, 2, 2, ctx.width(halfColor), ctx.height(halfColor));
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
 }
 
 void QuarterResPath::composite(PassContext& ctx, Target sceneColor, Target halfColor,
-                               Target halfDepth, Target sceneDepth, bool bilinear) {
+                               Target halfDepth, Target sceneDepth, bool bilinear, const ScreenRect& rect) {
     ctx.bindForDraw(sceneColor);
     fullscreenState();
+    scissorTo(rect, 1, 0, ctx.width(sceneColor), ctx.height(sceneColor));
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);

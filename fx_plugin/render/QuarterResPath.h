@@ -38,6 +38,7 @@
 
 #include "fx/HostAdapter.h"
 #include "fx/Types.h"
+#include "InstanceStream.h"
 
 namespace fx {
 
@@ -65,12 +66,27 @@ public:
     void build(const std::string& shaderDir, std::vector<std::string>* errors);
     bool ok() const { return downsample_ && composite_ && emptyVao_; }
 
-    // Pass bodies; each runs inside the caller's GlStateGuard and sets the state it needs.
-    void downsampleDepth(PassContext& ctx, Target sceneDepth, Target halfDepth);
-    /// Binds the half-res colour target and clears it to transparent black.
-    void beginQuarter(PassContext& ctx, Target halfColor);
+    /// The part of the view the particles can touch, in full-resolution pixels ([x0, x1) x
+    /// [y0, y1), GL's bottom-up rows); `whole` when it is the whole view (a particle reaches the
+    /// near plane, or the bound covers it anyway).
+    struct ScreenRect {
+        int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+        bool whole = true;
+    };
+    /// Conservative bound of `instances` on screen: each particle's bounding sphere (radius
+    /// 0.71 size: a rotated billboard's corners; a spherical particle's sphere is smaller)
+    /// through its view-space box. Empty rect (x0 == x1) when none is in front of the camera.
+    static ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, int count);
+
+    // Pass bodies; each runs inside the caller's GlStateGuard and sets the state it needs. All
+    // three work inside `rect` only (scissor): the half-res target is cleared, downsampled and
+    // drawn there with a 2-texel border, the composite touches only the rect itself, so the
+    // fixed costs follow the smoke's share of the screen instead of the screen.
+    void downsampleDepth(PassContext& ctx, Target sceneDepth, Target halfDepth, const ScreenRect& rect);
+    /// Binds the half-res colour target and clears it (within the rect) to transparent black.
+    void beginQuarter(PassContext& ctx, Target halfColor, const ScreenRect& rect);
     void composite(PassContext& ctx, Target sceneColor, Target halfColor, Target halfDepth,
-                   Target sceneDepth, bool bilinear);
+                   Target sceneDepth, bool bilinear, const ScreenRect& rect);
 
 private:
     uint32_t downsample_ = 0;

@@ -51,7 +51,7 @@ int shaderCompilerMessages();
 int drainGlErrors(const char* where);
 bool hasKhrDebug();
 
-/// The GL state a host cares about after a plugin pass (24 values, some of them arrays).
+/// The GL state a host cares about after a plugin pass (25 values, some of them arrays).
 struct GlStateSnapshot {
     int program = 0, vertexArray = 0, arrayBuffer = 0, elementBuffer = 0, activeTexture = 0;
     int texture2D[8] = {};
@@ -61,6 +61,7 @@ struct GlStateSnapshot {
     int depthTest = 0, depthFunc = 0, depthMask = 0, cullFace = 0, scissorTest = 0, stencilTest = 0;
     int colorMask[4] = {};
     int viewport[4] = {};
+    int scissorBox[4] = {};
     int drawFramebuffer = 0, readFramebuffer = 0;
     float clearColor[4] = {};
     int unpackBuffer = 0, unpackAlignment = 0;

@@ -140,6 +140,7 @@ GlStateSnapshot captureGlState() {
     glGetBooleanv(GL_COLOR_WRITEMASK, mask);
     for (int i = 0; i < 4; ++i) s.colorMask[i] = mask[i];
     glGetIntegerv(GL_VIEWPORT, s.viewport);
+    glGetIntegerv(GL_SCISSOR_BOX, s.scissorBox);
     s.drawFramebuffer = getInt(GL_DRAW_FRAMEBUFFER_BINDING);
     s.readFramebuffer = getInt(GL_READ_FRAMEBUFFER_BINDING);
     glGetFloatv(GL_COLOR_CLEAR_VALUE, s.clearColor);
@@ -183,6 +184,7 @@ std::string GlStateSnapshot::diff(const GlStateSnapshot& after) const {
     cmp("stencilTest", stencilTest, after.stencilTest);
     for (int i = 0; i < 4; ++i) cmp("colorMask", colorMask[i], after.colorMask[i]);
     for (int i = 0; i < 4; ++i) cmp("viewport", viewport[i], after.viewport[i]);
+    for (int i = 0; i < 4; ++i) cmp("scissorBox", scissorBox[i], after.scissorBox[i]);
     cmp("drawFramebuffer", drawFramebuffer, after.drawFramebuffer);
     cmp("readFramebuffer", readFramebuffer, after.readFramebuffer);
     for (int i = 0; i < 4; ++i) cmp("clearColor", clearColor[i], after.clearColor[i]);
