@@ -72,7 +72,33 @@ void main() {
     vec2 sx = slopeRange(centre.x, depth, radius, uSlopeMax.x);
     vec2 sy = slopeRange(centre.y, depth, radius, uSlopeMax.y);
     float quadDepth = clamp(depth - radius, uNear * 1.01, uFar * 0.99);
-    vec2 slope = vec2(aCorner.x < 0.0 ? sx.x : sx.y, aCorner.y < 0.0 ? sy.x : sy.y);
+    vec2 corner = aCorner;
+    if (uTrimmed != 0) {
+        // A fan of 8: the box's corners in fan order (the last one repeated) unless the octagon
+        // below applies. gl_VertexID 0..3 -> (-1,-1), (1,-1), (1,1), (-1,1).
+        int k = min(gl_VertexID, 3);
+        corner = vec2(k == 1 || k == 2 ? 1.0 : -1.0, k >= 2 ? 1.0 : -1.0);
+    }
+    vec2 slope = vec2(corner.x < 0.0 ? sx.x : sx.y, corner.y < 0.0 ? sy.x : sy.y);
+    float dist = length(centre);
+    if (uTrimmed != 0 && dist > radius * 1.0001) {
+        // Trimmed: the regular octagon around the cone of rays that touch the sphere (angle
+        // asin(r / dist) around the centre's direction), circumscribed: each vertex direction
+        // is the axis plus tan(angle) / cos(pi / 8) sideways. Projected centrally onto the quad's
+        // plane it still holds the sphere's outline (lines stay lines) while covering 0.83 of
+        // the box. Only when every vertex ray points clearly forward; else the box.
+        vec3 axis = centre / dist;
+        float sinA = radius / dist;
+        float spread = sinA / sqrt(max(1.0 - sinA * sinA, 1e-12)) * 1.0823922;  // 1 / cos(pi/8)
+        vec3 u = normalize(abs(axis.x) < 0.9 ? cross(axis, vec3(1.0, 0.0, 0.0)) : cross(axis, vec3(0.0, 1.0, 0.0)));
+        vec3 v = cross(axis, u);
+        float worstZ = axis.z + spread * length(vec2(u.z, v.z));
+        if (worstZ < -0.05) {
+            float angle = (float(min(gl_VertexID, 7)) + 0.5) * 0.78539816;  // 2 pi / 8
+            vec3 dir = axis + spread * (cos(angle) * u + sin(angle) * v);
+            slope = dir.xy / -dir.z;
+        }
+    }
     vec3 viewPos = vec3(slope * quadDepth, -quadDepth);
     vSphere = vec4(centre, radius);
     vLocal = vec2(0.0);

@@ -21,6 +21,8 @@ const std::vector<Mode>& allModes() {
         {"soft+equal+quarter", "Soft particles, prepass EQUAL + 1/4-size texture", true, Technique::Soft, true,
          true, "soft"},
         {"spherical", "Spherical billboards", true, Technique::Spherical, false, false, "spherical"},
+        {"spherical-quads", "Spherical billboards drawn as full quads (untrimmed)", true, Technique::Spherical, false,
+         false, "spherical", fx::ParticleShape::Quad},
         {"spherical+quarter", "Spherical billboards, 1/4-size texture", true, Technique::Spherical, false, true,
          "spherical"},
     };

@@ -29,7 +29,7 @@ struct Mode {
 };
 
 /// Every mode, in table order: nofx, hard, soft, soft-quads, soft+equal, soft+quarter,
-/// soft+equal+quarter, spherical, spherical+quarter.
+/// soft+equal+quarter, spherical, spherical-quads, spherical+quarter.
 const std::vector<Mode>& allModes();
 /// Null when `name` is not a mode.
 const Mode* findMode(const std::string& name);

@@ -372,7 +372,8 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         glUniform1i(p.atlas, kAtlasUnit);
         glUniform1i(p.ramp, kRampUnit);
         glUniform1i(p.sceneDepth, kSceneDepthUnit);
-        const bool trimmed = trimmable && batch.technique != Technique::Spherical;
+        // Spherical particles trim to an octagon around the sphere, computed in the shader.
+        const bool trimmed = trimmable;
         glUniform1i(p.trimmed, trimmed ? 1 : 0);
         if (trimmed) {
             glUniform1i(p.shapeBuckets, atlas_.shapes().buckets());

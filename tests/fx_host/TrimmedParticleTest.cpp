@@ -146,8 +146,9 @@ protected:
 };
 
 // Particles of every frame at several angles, near (large on screen, LOD < 0) and far (a few
-// dozen pixels, coarse buckets), over a ground they cut into: trimmed equals quads.
-TEST_F(TrimmedImageTest, TrimmedBillboardsDrawTheQuadsImage) {
+// dozen pixels, coarse buckets), over a ground they cut into: trimmed equals quads, for the
+// billboards' atlas polygons and for the spherical particles' octagons.
+TEST_F(TrimmedImageTest, TrimmedShapesDrawTheQuadsImage) {
     constexpr int kW = 256, kH = 192;
     TestFrameGraph graph(kW, kH);
     TestScene scene;
@@ -166,7 +167,7 @@ TEST_F(TrimmedImageTest, TrimmedBillboardsDrawTheQuadsImage) {
         ps.push_back(p);
     }
     direct.set(ps);
-    for (fx::Technique t : {fx::Technique::Hard, fx::Technique::Soft}) {
+    for (fx::Technique t : {fx::Technique::Hard, fx::Technique::Soft, fx::Technique::Spherical}) {
         direct.options.techniqueOverride = t;
         direct.renderer.setParticleShape(fx::ParticleShape::Quad);
         const Image quads = draw(graph, scene, view);

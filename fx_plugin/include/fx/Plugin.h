@@ -54,7 +54,8 @@ struct RenderOptions {
 /// How billboard particles (hard, soft) are rasterised. Trimmed: per atlas frame a convex
 /// polygon (at most 8 vertices) that holds every texel the sampler can return with alpha > 0
 /// replaces the quad, so the transparent corners cost no fragments; the image is the quad's.
-/// Quad: the full quad (for comparison). Spherical billboards always draw their covering quad.
+/// Spherical billboards draw a regular octagon around the sphere's outline instead of its
+/// bounding box (0.83 of the area). Quad: the full quads (for comparison).
 /// Since API 1.1.
 enum class ParticleShape : uint8_t { Trimmed = 0, Quad = 1 };
 
