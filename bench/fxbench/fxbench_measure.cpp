@@ -79,7 +79,8 @@ public:
         game_.setCameraQuads(config_.cameraQuads);
         if (!probe_.init(error)) return false;
         out_->renderer = game_.platform().rendererName();
-        out_->backend = cube::backendName(game_.platform().backend());
+        out_->backend = std::string(cube::backendName(game_.platform().backend())) +
+                        (game_.scene().renderer().reversedZ() ? ", reversed-Z float depth" : ", standard 24-bit depth");
         out_->timingMethod = game_.graph().timingMethod();
         for (const Mode* m : measuredModes(config_.selected)) {
             ModeRun r;

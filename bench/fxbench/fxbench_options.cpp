@@ -91,6 +91,8 @@ std::string benchUsage() {
            "  --error-frames N       frames that also get image error and the fill limit, 0..1000 (default 3)\n"
            "  --seed N               random seed, 0..4294967295 (default 1)\n"
            "  --backend osmesa|egl   GL context (default osmesa: llvmpipe)\n"
+           "  --depth reversed|standard  engine z-buffer: reversed-Z float (default; soft and spherical\n"
+           "                         particles are z-tested) or standard 24-bit (they are not)\n"
            "  --mirror               draw the rear-view mirror (default off)\n"
            "  --json PATH            results as JSON\n"
            "  --csv PATH             results as CSV (one row per mode)\n"
@@ -182,6 +184,13 @@ bool parseBenchOptions(int argc, const char* const* argv, BenchOptions* out, std
                 *error = "--backend: expected osmesa or egl, got '" + s + "'";
                 return false;
             }
+        } else if (a == "--depth") {
+            if (!value(&s)) return false;
+            if (s != "reversed" && s != "standard") {
+                *error = "--depth: expected reversed or standard, got '" + s + "'";
+                return false;
+            }
+            out->reversedZ = s == "reversed";
         } else if (a == "--json") {
             if (!value(&out->json)) return false;
         } else if (a == "--csv") {

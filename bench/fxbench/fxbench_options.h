@@ -33,6 +33,7 @@ struct BenchOptions {
     int errorFrames = 3;   ///< simulated frames (evenly spaced) that also get image error + fill limit
     unsigned seed = 1;
     cube::Backend backend = cube::Backend::OSMesa;
+    bool reversedZ = true;  ///< --depth: the engine's reversed-Z float depth where available
     bool mirror = false;   ///< the rear-view mirror view and its inset
     bool quick = false;
     bool integrators = false;

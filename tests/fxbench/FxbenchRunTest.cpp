@@ -259,7 +259,8 @@ TEST(Fxbench, BadValuesAreRejectedWithTheFlagName) {
     };
     for (const Case& c : {Case{"--size 1280", "--size"}, Case{"--size 8x8", "--size"}, Case{"--frames 0", "--frames"},
                           Case{"--rounds x", "--rounds"}, Case{"--scenario fast", "valid scenarios"},
-                          Case{"--backend vulkan", "--backend"}, Case{"--sweep particles=0", "--sweep"},
+                          Case{"--backend vulkan", "--backend"}, Case{"--depth inverted", "--depth"},
+                          Case{"--sweep particles=0", "--sweep"},
                           Case{"--sweep depth=3", "--sweep"}, Case{"--json", "missing value"},
                           Case{"--bogus", "unknown option"}}) {
         SCOPED_TRACE(c.args);
