@@ -64,7 +64,9 @@ rtt::RenderTargetDesc FxFrameBuilder::toRenderTargetDesc(const fx::TargetDesc& d
     r.height = d.height;
     r.scale = d.scale;
     r.color[0] = toColorFormat(d.format);
-    r.depth = d.depth ? rtt::DepthFormat::Depth24 : rtt::DepthFormat::None;
+    // Float depth: a plugin z-buffer holds depths computed for a reversed-Z host (the half-res
+    // z-test); 32-bit float keeps them as precise as the host's own.
+    r.depth = d.depth ? rtt::DepthFormat::Depth32F : rtt::DepthFormat::None;
     r.filter = d.linearFilter ? rtt::Filter::Linear : rtt::Filter::Nearest;
     r.name = name ? name : "";
     return r;

@@ -275,8 +275,10 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     const Target depth = frame.sceneDepth();
     const Target halfDepth = frame.createTarget(QuarterResPath::kDepthTarget,
                                                 QuarterResPath::depthTargetDesc());
+    // Under reversed-Z the half-res particles are z-tested too (QuarterResPath::beginQuarter).
+    const bool halfZ = view.depth == DepthConvention::ReversedZ && quarter_->halfZOk();
     const Target halfColor = frame.createTarget(QuarterResPath::kColorTarget,
-                                                QuarterResPath::colorTargetDesc());
+                                                QuarterResPath::colorTargetDesc(halfZ));
     frame.addPass(QuarterResPath::kDownsamplePass, {depth}, {halfDepth},
                   [this, record, depth, halfDepth](PassContext& ctx) {
                       // Only what this pass declared may be touched: the scene depth.
@@ -285,13 +287,18 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
                       DebugGroup group(QuarterResPath::kDownsamplePass);
                       quarter_->downsampleDepth(ctx, depth, halfDepth, record->rect);
                   });
-    frame.addPass(QuarterResPath::kQuarterPass, {halfDepth}, {halfColor},
-                  [this, record, halfDepth, halfColor](PassContext& ctx) {
-                      GlStateGuard guard;
-                      DebugGroup group(QuarterResPath::kQuarterPass);
-                      quarter_->beginQuarter(ctx, halfColor, record->rect);
-                      drawBatches(*record, ctx.texture(halfDepth, 0).name, true);
-                  });
+    auto quarterPass = [this, record, halfDepth, halfColor, depth, halfZ](PassContext& ctx) {
+        GlStateGuard guard;
+        DebugGroup group(QuarterResPath::kQuarterPass);
+        const bool zTested = quarter_->beginQuarter(ctx, halfColor, record->rect, halfZ ? depth : Target{},
+                                                    halfZ ? &record->view : nullptr);
+        drawBatches(*record, ctx.texture(halfDepth, 0).name, true, zTested);
+    };
+    if (halfZ) {
+        frame.addPass(QuarterResPath::kQuarterPass, {halfDepth, depth}, {halfColor}, quarterPass);
+    } else {
+        frame.addPass(QuarterResPath::kQuarterPass, {halfDepth}, {halfColor}, quarterPass);
+    }
     const bool bilinear = options.bilinearUpsample;
     frame.addPass(QuarterResPath::kCompositePass, {halfColor, halfDepth, depth}, {color},
                   [this, record, color, halfColor, halfDepth, depth, bilinear](PassContext& ctx) {
@@ -302,7 +309,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     return drawn;
 }
 
-void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes) {
+void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes, bool halfZ) {
     const DrawList& list = record.list;
     const ViewInfo& view = record.view;
     glActiveTexture(GL_TEXTURE0);
@@ -340,8 +347,9 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         // z-buffer whose precision holds at any near/far ratio: reversed-Z. With standard depth a
         // 24-bit buffer at near 0.01, far 1e5 cannot tell 1 m apart at 10 km, so they stay
         // untested there and the fade alone hides them. (Quarter res has no z-buffer.)
-        const bool zTest = !quarterRes && (batch.technique == Technique::Hard ||
-                                           view.depth == DepthConvention::ReversedZ);
+        // Quarter res: the half-res z-buffer QuarterResPath::beginQuarter filled (reversed-Z only).
+        const bool zTest = quarterRes ? halfZ
+                                      : (batch.technique == Technique::Hard || view.depth == DepthConvention::ReversedZ);
         if (zTest) {
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(view.depth == DepthConvention::ReversedZ ? GL_GEQUAL : GL_LEQUAL);

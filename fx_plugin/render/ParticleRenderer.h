@@ -103,7 +103,8 @@ private:
     void log(LogLevel level, const std::string& message) const;
     /// Draws every batch of `record` into the bound target. `sceneDepth` is the linear depth
     /// texture of that target's size (0 when no batch needs it).
-    void drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes);
+    /// `halfZ`: quarter res with the half-res z-buffer filled: z-test every batch (GEQUAL).
+    void drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes, bool halfZ = false);
 
     ParticleRendererConfig config_;
     State state_ = State::Unloaded;

@@ -91,8 +91,9 @@ TargetDesc QuarterResPath::depthTargetDesc() {
     return d;
 }
 
-TargetDesc QuarterResPath::colorTargetDesc() {
+TargetDesc QuarterResPath::colorTargetDesc(bool withDepth) {
     TargetDesc d;
+    d.depth = withDepth;
     d.scale = 0.5f;
     d.format = TargetFormat::RGBA16F;
     d.linearFilter = true;
@@ -100,6 +101,7 @@ TargetDesc QuarterResPath::colorTargetDesc() {
 }
 
 QuarterResPath::~QuarterResPath() {
+    if (halfZ_) glDeleteProgram(halfZ_);
     if (downsample_) glDeleteProgram(downsample_);
     if (composite_) glDeleteProgram(composite_);
     if (emptyVao_) glDeleteVertexArrays(1, &emptyVao_);
@@ -112,6 +114,16 @@ void QuarterResPath::build(const std::string& shaderDir, std::vector<std::string
                                    "fs_particles_depth_downsample.glsl", "", &error);
         if (downsample_) {
             downsampleDepthLoc_ = glGetUniformLocation(downsample_, "uSceneDepth");
+        } else {
+            errors->push_back(error);
+        }
+    }
+    if (!halfZ_) {
+        halfZ_ = buildProgram(shaderDir, "vs_particles_fullscreen.glsl", "fs_particles_half_z.glsl", "", &error);
+        if (halfZ_) {
+            halfZDepthLoc_ = glGetUniformLocation(halfZ_, "uSceneDepth");
+            halfZFromLinearLoc_ = glGetUniformLocation(halfZ_, "uDepthFromLinear");
+            halfZFarLoc_ = glGetUniformLocation(halfZ_, "uFar");
         } else {
             errors->push_back(error);
         }
@@ -144,12 +156,44 @@ void QuarterResPath::downsampleDepth(PassContext& ctx, Target sceneDepth, Target
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void QuarterResPath::beginQuarter(PassContext& ctx, Target halfColor, const ScreenRect& rect) {
+bool QuarterResPath::beginQuarter(PassContext& ctx, Target halfColor, const ScreenRect& rect, Target sceneDepth,
+                                  const ViewInfo* zView) {
     ctx.bindForDraw(halfColor);
     scissorTo(rect, 2, 2, ctx.width(halfColor), ctx.height(halfColor));
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
+    const GLfloat transparent[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearBufferfv(GL_COLOR, 0, transparent);
+    GLint depthBits = 0;
+    if (zView && halfZ_ && sceneDepth.valid()) {
+        glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                              GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
+    }
+    if (depthBits == 0) {
+        glDisable(GL_DEPTH_TEST);
+        return false;
+    }
+    // The farthest depth of each block into the half-res z-buffer, no colour.
+    const GLfloat far = 0.0f;  // reversed-Z: 0 is the far plane
+    glClearBufferfv(GL_DEPTH, 0, &far);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_STENCIL_TEST);
+    glUseProgram(halfZ_);
+    bindTextureUnit(0, ctx.texture(sceneDepth, 0).name);
+    glUniform1i(halfZDepthLoc_, 0);
+    // Reversed-Z zero-to-one: window z = clip.z / clip.w = P[3][2] / depth - P[2][2].
+    glUniform2f(halfZFromLinearLoc_, zView->proj[3][2], -zView->proj[2][2]);
+    glUniform1f(halfZFarLoc_, zView->farPlane);
+    glBindVertexArray(emptyVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_FALSE);
+    glDepthFunc(GL_GEQUAL);
+    return true;
 }
 
 void QuarterResPath::composite(PassContext& ctx, Target sceneColor, Target halfColor,

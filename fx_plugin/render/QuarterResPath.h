@@ -54,8 +54,9 @@ public:
 
     /// Half size, R32F, nearest filtering.
     static TargetDesc depthTargetDesc();
-    /// Half size, RGBA16F, linear filtering.
-    static TargetDesc colorTargetDesc();
+    /// Half size, RGBA16F, linear filtering; with its own z-buffer when `withDepth` (the
+    /// half-res z-test, reversed-Z hosts only).
+    static TargetDesc colorTargetDesc(bool withDepth = false);
 
     QuarterResPath() = default;
     ~QuarterResPath();
@@ -65,6 +66,8 @@ public:
     /// Builds the downsample and composite programs; failures go to *errors.
     void build(const std::string& shaderDir, std::vector<std::string>* errors);
     bool ok() const { return downsample_ && composite_ && emptyVao_; }
+    /// The half-res z-test's program built (without it the quarter pass is simply not z-tested).
+    bool halfZOk() const { return halfZ_ != 0; }
 
     /// The part of the view the particles can touch, in full-resolution pixels ([x0, x1) x
     /// [y0, y1), GL's bottom-up rows); `whole` when it is the whole view (a particle reaches the
@@ -84,11 +87,18 @@ public:
     // fixed costs follow the smoke's share of the screen instead of the screen.
     void downsampleDepth(PassContext& ctx, Target sceneDepth, Target halfDepth, const ScreenRect& rect);
     /// Binds the half-res colour target and clears it (within the rect) to transparent black.
-    void beginQuarter(PassContext& ctx, Target halfColor, const ScreenRect& rect);
+    /// With `zView` (a reversed-Z view; halfColor made with a z-buffer, sceneDepth readable):
+    /// also fills that z-buffer with the farthest scene depth of each 2x2 block
+    /// (fs_particles_half_z.glsl) and leaves the depth test on, GEQUAL without writes, so the
+    /// half-res particles skip what is hidden behind all four pixels. True when that was done.
+    bool beginQuarter(PassContext& ctx, Target halfColor, const ScreenRect& rect, Target sceneDepth = Target{},
+                      const ViewInfo* zView = nullptr);
     void composite(PassContext& ctx, Target sceneColor, Target halfColor, Target halfDepth,
                    Target sceneDepth, bool bilinear, const ScreenRect& rect);
 
 private:
+    uint32_t halfZ_ = 0;
+    int halfZDepthLoc_ = -1, halfZFromLinearLoc_ = -1, halfZFarLoc_ = -1;
     uint32_t downsample_ = 0;
     uint32_t composite_ = 0;
     uint32_t emptyVao_ = 0;

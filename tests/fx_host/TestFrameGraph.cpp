@@ -109,6 +109,7 @@ TestFrameGraph::~TestFrameGraph() {
     for (TargetSlot& s : pool_) {
         glDeleteFramebuffers(1, &s.framebuffer);
         glDeleteTextures(1, &s.texture);
+        if (s.depth) glDeleteRenderbuffers(1, &s.depth);
     }
     glDeleteFramebuffers(1, &colorFbo_);
     glDeleteFramebuffers(1, &depthFbo_);
@@ -175,7 +176,7 @@ void TestFrameGraph::allocate(uint32_t id) {
     for (size_t i = 0; i < pool_.size(); ++i) {
         const TargetSlot& s = pool_[i];
         if (!s.inUse && s.width == w && s.height == h && s.desc.format == desc.format &&
-            s.desc.linearFilter == desc.linearFilter) {
+            s.desc.linearFilter == desc.linearFilter && s.desc.depth == desc.depth) {
             slot = i;
             break;
         }
@@ -186,7 +187,8 @@ void TestFrameGraph::allocate(uint32_t id) {
         s.width = w;
         s.height = h;
         s.texture = makeTexture(internalFormat(desc.format), w, h, desc.linearFilter);
-        s.framebuffer = makeFramebuffer(s.texture, 0);
+        if (desc.depth) s.depth = makeDepthBuffer(w, h, true);  // a z-buffer of its own, float
+        s.framebuffer = makeFramebuffer(s.texture, s.depth);
         pool_.push_back(s);
     }
     pool_[slot].name = name;

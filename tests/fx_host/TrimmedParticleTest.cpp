@@ -246,3 +246,49 @@ TEST(SoftContrastProgram, HalfWholePowersAreSplitAndOthersUsePow) {
 
 }  // namespace
 }  // namespace fxtest
+
+namespace fxtest {
+namespace {
+
+// Quarter res on a reversed-Z host: the half-res particles are z-tested against the farthest
+// scene depth of each 2x2 block. Against a standard host (no half-res z-test), with the same
+// buffers and projection, the picture must be the same: the test only drops fragments that
+// shade to nothing at half resolution.
+TEST_F(TrimmedImageTest, HalfResZTestChangesNoPixel) {
+    constexpr int kW = 200, kH = 150;
+    TestFrameGraph graph(kW, kH, true);
+    TestScene scene;
+    scene.reversedZ = true;
+    scene.quads = {TestScene::ground(60.0f, glm::vec3(0.2f, 0.22f, 0.2f)),
+                   TestScene::wallZ(-1.0f, -1.5f, 1.5f, 0.0f, 2.0f, glm::vec3(0.5f, 0.3f, 0.3f))};
+    fx::ViewInfo tested = makeView(glm::vec3(0.5f, 1.8f, 6), glm::vec3(0, 0.8f, -1), kW, kH);
+    useReversedZ(&tested);
+    fx::ViewInfo untested = tested;
+    untested.depth = fx::DepthConvention::Standard;
+    std::vector<HandParticle> ps;
+    for (int i = 0; i < 9; ++i) {
+        HandParticle p;
+        p.position = glm::vec3(-2.0f + 0.5f * float(i), 0.3f + 0.15f * float(i % 3), -2.5f + 0.6f * float(i));
+        p.size = 1.4f + 0.2f * float(i % 4);
+        p.frame = i % 4;
+        p.rotation = 0.5f * float(i);
+        ps.push_back(p);
+    }
+    direct.set(ps);
+    direct.desc.render.softness = 0.5f;
+    direct.options.quarterRes = true;
+    for (fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical, fx::Technique::Hard}) {
+        direct.options.techniqueOverride = t;
+        const Image a = draw(graph, scene, tested);
+        ASSERT_EQ(drawn, 9);
+        ASSERT_TRUE(graph.ran("particles_quarter"));
+        const Image b = draw(graph, scene, untested);
+        EXPECT_LE(maxAbsDiff(a, b), 1) << "technique " << int(t);
+        TestScene bare = scene;
+        renderFrame(graph, bare, tested, [](fx::FrameBuilder&) {});
+        EXPECT_GT(maxAbsDiff(graph.readColor(), a), 40) << "the smoke is in the picture";
+    }
+}
+
+}  // namespace
+}  // namespace fxtest
