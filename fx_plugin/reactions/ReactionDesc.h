@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "fx/Plugin.h"  // Technique
+#include "sim/CurlNoise.h"  // TurbulenceDesc, VortexDesc
 #include "fx/Types.h"   // Surface
 
 namespace fx {
@@ -47,6 +48,13 @@ struct ColorStop {
     glm::vec4 rgba{1.0f};          ///< each channel [0, 1], straight (not premultiplied) alpha
 };
 
+/// One point of an over-life curve (alpha_over_life, size_over_life): value v at life fraction
+/// t, piecewise linear in between, held flat before the first and after the last point.
+struct CurvePoint {
+    float t = 0.0f;                ///< [0, 1] life fraction, non-decreasing along the curve
+    float v = 0.0f;                ///< [0, 1]
+};
+
 /// One particle's life. Defaults: 2-3.5 s, grows 0.4 m -> 3 m, rises at 0.6 m/s.
 struct ParticleDesc {
     float lifetimeMin = 2.0f;      ///< [0.01, 60] s
@@ -66,6 +74,12 @@ struct ParticleDesc {
     std::vector<ColorStop> colorRamp{ColorStop{0.0f, glm::vec4(1.0f)}, ColorStop{1.0f, glm::vec4(1.0f)}};
     int atlasFirst = 0;            ///< [0, 3] first frame of the 2x2 atlas (row-major from top-left)
     int atlasCount = 4;            ///< [1, 4] frames picked at random per particle; first + count <= 4
+    /// Empty (default) = the fade_in/fade_out smoothsteps. Given: the alpha factor over life,
+    /// replacing them (the file may not give both).
+    std::vector<CurvePoint> alphaOverLife;
+    /// Empty (default) = growthCurve (ease-out). Given: the share of the way from start_size to
+    /// end_size over life.
+    std::vector<CurvePoint> sizeOverLife;
 };
 
 /// How it is drawn. Defaults: soft particles, alpha blending, sorted.
@@ -86,6 +100,8 @@ struct ReactionDesc {
     EmissionDesc emission;
     ParticleDesc particle;
     RenderDesc render;
+    TurbulenceDesc turbulence;     ///< curl-noise air motion added to the terminal velocity
+    VortexDesc vortex;             ///< spiral around the vertical axis through each particle's emitter
     std::string sourceFile;        ///< where it was read, for messages
     int sourceLine = 0;            ///< 1-based line of the reaction's first key
 };
@@ -125,6 +141,7 @@ constexpr int kMaxCapacity = 1000000;            ///< per reaction
 constexpr long long kMaxTotalCapacity = 4000000; ///< summed over one set (about 250 MB of pools)
 constexpr int kMaxReactionsPerFile = 256;
 constexpr int kMaxColorStops = 16;
+constexpr int kMaxCurvePoints = 16;
 constexpr int kMaxNesting = 16;                  ///< collection levels in a file
 constexpr size_t kMaxFileBytes = 4u << 20;       ///< 4 MiB
 constexpr size_t kMaxDiagnosticsPerFile = 100;   ///< then one TooManyErrors

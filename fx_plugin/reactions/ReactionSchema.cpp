@@ -162,12 +162,57 @@ void readColorRamp(YamlCheck& c, const Node& node, const std::string& p,
     if (ok) *out = std::move(stops);
 }
 
+// An over-life curve: 1-16 points {t, v}, t in [0, 1] non-decreasing, v in [lo, hi].
+void readCurve(YamlCheck& c, const Node& node, const std::string& p, double lo, double hi,
+               std::vector<CurvePoint>* out) {
+    if (!c.isList(node, p, 1, kMaxCurvePoints)) return;
+    std::vector<CurvePoint> points;
+    std::vector<YAML::Mark> tMarks;
+    bool ok = true;
+    size_t i = 0;
+    for (auto it = node.begin(); it != node.end(); ++it, ++i) {
+        const std::string sp = indexed(p, i);
+        if (!c.isMap(*it, sp)) {
+            ok = false;
+            continue;
+        }
+        MapReader m(c, *it, sp, {"t", "v"});
+        CurvePoint point;
+        for (const char* key : {"t", "v"}) {
+            const Node* n = m.get(key);
+            const bool isT = key[0] == 't';
+            if (!n) {
+                c.report(ErrorCode::MissingKey, it->Mark(), m.path(key),
+                         isT ? std::string("missing required key 't' (life fraction in [0, 1])")
+                             : "missing required key 'v' (a number in [" + std::to_string(lo) +
+                                   ", " + std::to_string(hi) + "])");
+                ok = false;
+            } else {
+                ok = c.number(*n, m.path(key), isT ? 0.0 : lo, isT ? 1.0 : hi,
+                              isT ? &point.t : &point.v) && ok;
+            }
+        }
+        points.push_back(point);
+        tMarks.push_back(m.get("t") ? m.get("t")->Mark() : it->Mark());
+    }
+    if (!ok) return;
+    for (size_t k = 1; k < points.size(); ++k) {
+        if (points[k].t < points[k - 1].t) {
+            c.report(ErrorCode::OutOfRange, tMarks[k], indexed(p, k) + ".t",
+                     "expected t >= the previous point's " + std::to_string(points[k - 1].t) +
+                         " (points in order of life), got " + std::to_string(points[k].t));
+            return;
+        }
+    }
+    *out = std::move(points);
+}
+
 void readParticle(YamlCheck& c, const Node& node, const std::string& path, ParticleDesc* d) {
     if (!c.isMap(node, path)) return;
     MapReader m(c, node, path,
                 {"lifetime", "start_size", "end_size", "size_variation", "rise_speed", "drag",
                  "wind_factor", "spread_speed", "inherit_velocity", "spin", "fade_in", "fade_out",
-                 "colour_ramp", "atlas"});
+                 "colour_ramp", "atlas", "alpha_over_life", "size_over_life"});
     optRange(c, m, "lifetime", 0.01, 60.0, &d->lifetimeMin, &d->lifetimeMax);
     optNumber(c, m, "start_size", 0.0, 10000.0, &d->startSize);
     optNumber(c, m, "end_size", 0.0, 10000.0, &d->endSize);
@@ -186,6 +231,20 @@ void readParticle(YamlCheck& c, const Node& node, const std::string& path, Parti
                  m.path(key),
                  "expected fade_in + fade_out <= 1, got " + std::to_string(d->fadeIn) + " + " +
                      std::to_string(d->fadeOut));
+    }
+    if (const Node* n = m.get("alpha_over_life")) {
+        // The curve replaces the fades: both at once would leave the reader guessing which wins.
+        for (const char* fadeKey : {"fade_in", "fade_out"}) {
+            if (m.get(fadeKey)) {
+                c.report(ErrorCode::OutOfRange, m.get(fadeKey)->Mark(), m.path(fadeKey),
+                         std::string("expected either alpha_over_life or ") + fadeKey +
+                             ", not both (the curve replaces fade_in and fade_out)");
+            }
+        }
+        readCurve(c, *n, m.path("alpha_over_life"), 0.0, 1.0, &d->alphaOverLife);
+    }
+    if (const Node* n = m.get("size_over_life")) {
+        readCurve(c, *n, m.path("size_over_life"), 0.0, 1.0, &d->sizeOverLife);
     }
     if (const Node* n = m.get("colour_ramp")) readColorRamp(c, *n, m.path("colour_ramp"), &d->colorRamp);
     if (const Node* n = m.get("atlas")) {
@@ -221,11 +280,28 @@ void readRender(YamlCheck& c, const Node& node, const std::string& path, RenderD
     }
 }
 
+void readTurbulence(YamlCheck& c, const Node& node, const std::string& path, TurbulenceDesc* t) {
+    if (!c.isMap(node, path)) return;
+    MapReader m(c, node, path, {"strength", "scale", "speed", "octaves"});
+    optNumber(c, m, "strength", 0.0, 50.0, &t->strength);
+    optNumber(c, m, "scale", 0.01, 1000.0, &t->scale);
+    optNumber(c, m, "speed", 0.0, 100.0, &t->speed);
+    optInteger(c, m, "octaves", 1, 6, &t->octaves);
+}
+
+void readVortex(YamlCheck& c, const Node& node, const std::string& path, VortexDesc* v) {
+    if (!c.isMap(node, path)) return;
+    MapReader m(c, node, path, {"strength", "radius"});
+    optNumber(c, m, "strength", -50.0, 50.0, &v->strength);
+    optNumber(c, m, "radius", 0.01, 100.0, &v->radius);
+}
+
 // Returns the mark of the name (for duplicate reports), or the map's mark when it has none.
 YAML::Mark readReaction(YamlCheck& c, const Node& node, const std::string& path,
                         ReactionDesc* out) {
     if (!c.isMap(node, path)) return node.Mark();
-    MapReader m(c, node, path, {"name", "type", "trigger", "emission", "particle", "render"});
+    MapReader m(c, node, path, {"name", "type", "trigger", "emission", "particle", "render",
+                                "turbulence", "vortex"});
 
     // The type decides the defaults, so it is read first; an invalid type validates the rest
     // against the wheel_smoke defaults (the reaction is rejected either way).
@@ -253,6 +329,8 @@ YAML::Mark readReaction(YamlCheck& c, const Node& node, const std::string& path,
     if (const Node* n = m.get("emission")) readEmission(c, *n, m.path("emission"), &d.emission);
     if (const Node* n = m.get("particle")) readParticle(c, *n, m.path("particle"), &d.particle);
     if (const Node* n = m.get("render")) readRender(c, *n, m.path("render"), &d.render);
+    if (const Node* n = m.get("turbulence")) readTurbulence(c, *n, m.path("turbulence"), &d.turbulence);
+    if (const Node* n = m.get("vortex")) readVortex(c, *n, m.path("vortex"), &d.vortex);
     *out = std::move(d);
     return nameMark;
 }

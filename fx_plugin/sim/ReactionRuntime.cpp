@@ -70,6 +70,7 @@ void ReactionRuntime::step(float dt, const WheelContact* wheels, int wheelCount,
     const glm::vec3 terminal = terminalVelocity(wind, p.windFactor, p.riseSpeed);
 
     advanceParticles(dt, terminal);
+    time_ += dt;
 
     if (desc_.type == ReactionType::CollisionBurst) {
         emitBurst(collisionAmount, collisionPoint, terminal);
@@ -77,6 +78,29 @@ void ReactionRuntime::step(float dt, const WheelContact* wheels, int wheelCount,
     }
     const int n = wheels ? glm::min(wheelCount, kMaxWheels) : 0;
     for (int i = 0; i < n; ++i) emitFromWheel(i, wheels[i], dt, terminal);
+}
+
+glm::vec3 ReactionRuntime::airVelocity(glm::vec3 terminal, glm::vec3 x, glm::vec3 origin,
+                                       double t) const {
+    return terminal + curlNoise(desc_.turbulence, x, t) + vortexVelocity(desc_.vortex, x, origin);
+}
+
+void ReactionRuntime::stepThroughField(glm::vec3& x, glm::vec3& v, glm::vec3 origin,
+                                       glm::vec3 terminal, double t, float dt) const {
+    const float k = desc_.particle.drag;
+    stepThroughField(x, v, origin, terminal, t, makeDragStep(k, 0.5f * dt), makeDragStep(k, dt));
+}
+
+void ReactionRuntime::stepThroughField(glm::vec3& x, glm::vec3& v, glm::vec3 origin,
+                                       glm::vec3 terminal, double t, const DragStep& half,
+                                       const DragStep& full) const {
+    // Predictor: half a step in the air at the start; corrector: the whole step in the air at
+    // the predicted midpoint. Both are the exact drag solution for their constant u.
+    glm::vec3 xh = x, vh = v;
+    if (full.dt == 0.0f) return;
+    applyDragStep(half, airVelocity(terminal, x, origin, t), xh, vh);
+    const glm::vec3 um = airVelocity(terminal, xh, origin, t + 0.5 * static_cast<double>(full.dt));
+    applyDragStep(full, um, x, v);
 }
 
 void ReactionRuntime::advanceParticles(float dt, glm::vec3 u) {
@@ -97,6 +121,10 @@ void ReactionRuntime::advanceParticles(float dt, glm::vec3 u) {
     float* size = pool_.stream(ParticlePool::Size);
     float* life = pool_.stream(ParticlePool::Life);
     float* fade = pool_.stream(ParticlePool::Fade);
+    const float* ox = pool_.stream(ParticlePool::OriginX);
+    const float* oz = pool_.stream(ParticlePool::OriginZ);
+    const bool field = turbulent();
+    const DragStep half = field ? makeDragStep(p.drag, 0.5f * dt) : DragStep{};
 
     for (int i = 0; i < pool_.alive();) {
         age[i] += dt;
@@ -104,18 +132,25 @@ void ReactionRuntime::advanceParticles(float dt, glm::vec3 u) {
             pool_.kill(i);  // slot i now holds the last particle, not yet advanced: revisit i
             continue;
         }
-        const float dx = vx[i] - u.x, dy = vy[i] - u.y, dz = vz[i] - u.z;
-        px[i] += u.x * s.dt + dx * s.reach;
-        py[i] += u.y * s.dt + dy * s.reach;
-        pz[i] += u.z * s.dt + dz * s.reach;
-        vx[i] = u.x + dx * s.decay;
-        vy[i] = u.y + dy * s.decay;
-        vz[i] = u.z + dz * s.decay;
+        if (field) {
+            glm::vec3 x(px[i], py[i], pz[i]), v(vx[i], vy[i], vz[i]);
+            stepThroughField(x, v, glm::vec3(ox[i], 0.0f, oz[i]), u, time_, half, s);
+            px[i] = x.x, py[i] = x.y, pz[i] = x.z;
+            vx[i] = v.x, vy[i] = v.y, vz[i] = v.z;
+        } else {
+            const float dx = vx[i] - u.x, dy = vy[i] - u.y, dz = vz[i] - u.z;
+            px[i] += u.x * s.dt + dx * s.reach;
+            py[i] += u.y * s.dt + dy * s.reach;
+            pz[i] += u.z * s.dt + dz * s.reach;
+            vx[i] = u.x + dx * s.decay;
+            vy[i] = u.y + dy * s.decay;
+            vz[i] = u.z + dz * s.decay;
+        }
         rot[i] = wrapAngle(rot[i] + spin[i] * dt);
         const float f = age[i] / lifetime[i];
         life[i] = f;
-        size[i] = sizeAt(start[i], end[i], f);
-        fade[i] = fadeAt(f, p.fadeIn, p.fadeOut);
+        size[i] = sizeAt(p, start[i], end[i], f);
+        fade[i] = fadeAt(p, f);
         ++i;
     }
 }
@@ -188,7 +223,14 @@ void ReactionRuntime::spawn(glm::vec3 origin, glm::vec3 baseVelocity, float age,
     glm::vec3 x = origin + glm::vec3(jr * std::cos(ja), e.spawnHeight, jr * std::sin(ja));
     glm::vec3 v = baseVelocity +
                   speed * glm::vec3(sinUp * std::cos(azimuth), cosUp, sinUp * std::sin(azimuth));
-    if (age > 0.0f) applyDragStep(makeDragStep(p.drag, age), terminal, x, v);
+    if (age > 0.0f) {
+        // time_ is already the end of this step: the particle was born `age` seconds before it.
+        if (turbulent()) {
+            stepThroughField(x, v, origin, terminal, time_ - age, age);
+        } else {
+            applyDragStep(makeDragStep(p.drag, age), terminal, x, v);
+        }
+    }
 
     pool_.stream(ParticlePool::PosX)[i] = x.x;
     pool_.stream(ParticlePool::PosY)[i] = x.y;
@@ -204,8 +246,10 @@ void ReactionRuntime::spawn(glm::vec3 origin, glm::vec3 baseVelocity, float age,
     pool_.stream(ParticlePool::Spin)[i] = spin;
     const float f = age / lifetime;
     pool_.stream(ParticlePool::Life)[i] = f;
-    pool_.stream(ParticlePool::Size)[i] = sizeAt(p.startSize * sizeScale, p.endSize * sizeScale, f);
-    pool_.stream(ParticlePool::Fade)[i] = fadeAt(f, p.fadeIn, p.fadeOut);
+    pool_.stream(ParticlePool::Size)[i] = sizeAt(p, p.startSize * sizeScale, p.endSize * sizeScale, f);
+    pool_.stream(ParticlePool::Fade)[i] = fadeAt(p, f);
+    pool_.stream(ParticlePool::OriginX)[i] = origin.x;
+    pool_.stream(ParticlePool::OriginZ)[i] = origin.z;
     pool_.frame()[i] = static_cast<uint8_t>(frame);
 }
 

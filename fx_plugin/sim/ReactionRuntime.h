@@ -20,6 +20,14 @@
 // continuous at any frame rate. Initial velocity = inherit_velocity * hub velocity + a random
 // spread_speed in the upper hemisphere.
 //
+// Turbulence and vortex (sim/CurlNoise.h) add an air velocity that depends on the particle's
+// place and the reaction's clock: u(x, t) = terminal + turbulence(x, t) + vortex(x - origin).
+// The step stays the exact drag solution for a constant u, taken with u sampled at the midpoint
+// of the step (an exponential midpoint rule): unconditionally stable for any drag * dt, since the
+// drag part is still exact and u is bounded, and second order in dt in the field's variation, so
+// 30 Hz and 300 Hz runs agree within the error fxbench --integrators reports. Reactions without
+// turbulence or vortex take the exact constant-u step as before (no extra cost).
+//
 // Nothing here allocates after construction; a full pool drops what does not fit and counts it.
 #include <array>
 #include <cstdint>
@@ -28,6 +36,7 @@
 #include <glm/glm.hpp>
 
 #include "EmissionClock.h"
+#include "Integrator.h"
 #include "ParticlePool.h"
 #include "Rng.h"
 #include "reactions/ReactionDesc.h"
@@ -66,6 +75,18 @@ public:
     const Counters& counters() const { return counters_; }
     /// Whether draw order matters: render.sort_back_to_front and a blend that is not additive.
     bool needsSorting() const;
+    /// Seconds simulated so far (the turbulence field's clock).
+    double time() const { return time_; }
+    /// Whether particles feel turbulence or the vortex (the midpoint step).
+    bool turbulent() const { return desc_.turbulence.enabled() || desc_.vortex.enabled(); }
+    /// Air velocity at x and time t for a particle born at `origin`: terminal + turbulence + vortex.
+    glm::vec3 airVelocity(glm::vec3 terminal, glm::vec3 x, glm::vec3 origin, double t) const;
+    /// Advances one particle by dt from time t through the field (the exponential midpoint step).
+    void stepThroughField(glm::vec3& x, glm::vec3& v, glm::vec3 origin, glm::vec3 terminal,
+                          double t, float dt) const;
+    /// The same with the drag coefficients of dt / 2 and dt precomputed (one pair per frame).
+    void stepThroughField(glm::vec3& x, glm::vec3& v, glm::vec3 origin, glm::vec3 terminal,
+                          double t, const DragStep& half, const DragStep& full) const;
 
     /// Emission strength in [0, 1] of one wheel for this reaction (0 = the trigger is not met).
     static float wheelStrength(const ReactionDesc& desc, const WheelContact& wheel);
@@ -83,6 +104,7 @@ private:
     Pcg32 rng_;
     std::array<EmissionClock, kMaxWheels> clocks_{};
     bool burstArmed_ = true;
+    double time_ = 0.0;
     Counters counters_;
 };
 
