@@ -238,6 +238,19 @@ bool Game::writeStatsJson(const std::string& path, std::string* error) const {
         return s + "}";
     };
     const fx::Stats fs = specialFX_.plugin() ? specialFX_.plugin()->stats() : fx::Stats{};
+    // Per reaction, as the plugin counts it (API 1.1); [] on the legacy path.
+    std::string reactionStats = "[";
+    if (fx::Plugin* plugin = specialFX_.plugin()) {
+        for (int i = 0; i < plugin->reactionCount(); ++i) {
+            const fx::ReactionStats rs = plugin->reactionStats(i);
+            reactionStats += std::string(i ? "," : "") + "\n    {\"name\": " + jsonString(rs.name) +
+                             ", \"technique\": " + jsonString(rs.technique) +
+                             ", \"alive\": " + std::to_string(rs.alive) +
+                             ", \"emitted\": " + std::to_string(rs.emitted) + "}";
+        }
+        if (plugin->reactionCount() > 0) reactionStats += "\n  ";
+    }
+    reactionStats += "]";
     char median_s[64];
     std::snprintf(median_s, sizeof median_s, "%.4f", median);
     out << "{\n"
@@ -250,6 +263,7 @@ bool Game::writeStatsJson(const std::string& path, std::string* error) const {
         << "  \"particles_drawn\": " << fs.particlesDrawn << ",\n"
         << "  \"reloads\": " << fs.reloads << ",\n"
         << "  \"reload_errors\": " << fs.reloadErrors << ",\n"
+        << "  \"reaction_stats\": " << reactionStats << ",\n"
         << "  \"passes_run\": " << list(r.executed) << ",\n"
         << "  \"passes_culled\": " << list(r.culled) << ",\n"
         << "  \"pass_run_frames\": " << counts(passRuns_) << ",\n"

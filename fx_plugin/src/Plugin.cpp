@@ -178,6 +178,21 @@ Stats PluginImpl::stats() const {
     return s;
 }
 
+ReactionStats PluginImpl::reactionStats(int index) const {
+    ReactionStats s;
+    if (index < 0 || index >= reactionCount()) {
+        errors_.refuse(ErrorCode::IndexOutOfRange, "reactionStats", indexRange(index, reactionCount()));
+        return s;
+    }
+    const ReactionRuntime& r = runtimes_[static_cast<size_t>(index)];
+    s.name = r.name();
+    s.technique = techniqueName(r.desc().render.technique);
+    s.alive = r.pool().alive();
+    s.emitted = r.counters().emitted;
+    s.dropped = r.counters().dropped;
+    return s;
+}
+
 ParticleCheck PluginImpl::checkParticles() const {
     ParticleCheck c;
     for (const ReactionRuntime& r : runtimes_) {

@@ -50,6 +50,7 @@ public:
     Stats stats() const override;
     ParticleCheck checkParticles() const override;
     bool pollShaderReload(Diagnostics* out) override;
+    ReactionStats reactionStats(int index) const override;
 
     /// The renderer's entry; pass an empty function to remove it.
     void setRenderHook(RenderHook hook) { renderHook_ = std::move(hook); }

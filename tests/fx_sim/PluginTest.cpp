@@ -108,6 +108,39 @@ TEST(Plugin, ContinueEmitsFromTheHostsWheelsAndCollisions) {
     EXPECT_EQ(plugin->stats().particlesAlive, alive);
 }
 
+TEST(Plugin, ReactionStatsNameTechniqueAliveAndEmitted) {
+    FakeHost host;
+    auto plugin = create(&host);
+    ASSERT_TRUE(plugin->loadReactions(kReactions, nullptr));
+    burnout(&host);
+    const int smoke = indexOf(*plugin, "burnout_smoke");
+    const int burst = indexOf(*plugin, "barrier_burst");
+    // 3 s of burnout: the first puffs (3-5 s lives) are still alive; one barrier hit.
+    for (int i = 0; i < 180; ++i) {
+        float amount = i == 30 ? 1.0f : 0.0f;
+        for (int r = 0; r < plugin->reactionCount(); ++r) plugin->continueReaction(r, 1.0f / 60.0f, &amount);
+    }
+    // Then 2 s of rolling without slip: smoke stops emitting, its oldest puffs die.
+    for (int w = 0; w < host.wheelCount(); ++w) host.wheels[static_cast<size_t>(w)].slip = 0.0f;
+    for (int i = 0; i < 120; ++i) {
+        for (int r = 0; r < plugin->reactionCount(); ++r) plugin->continueReaction(r, 1.0f / 60.0f, nullptr);
+    }
+    const auto& impl = static_cast<const fx::PluginImpl&>(*plugin);
+    const fx::ReactionStats s = plugin->reactionStats(smoke);
+    EXPECT_EQ(s.name, "burnout_smoke");
+    EXPECT_EQ(s.technique, "soft");
+    EXPECT_EQ(s.alive, impl.runtimes()[static_cast<size_t>(smoke)].pool().alive());
+    EXPECT_NEAR(static_cast<double>(s.emitted), 2 * 90 * 3, 2);  // 2 wheels x 90/s x 3 s, within 1 each
+    EXPECT_LT(s.alive, static_cast<int>(s.emitted));              // some died: alive is not emitted
+    const fx::ReactionStats b = plugin->reactionStats(burst);
+    EXPECT_EQ(b.name, "barrier_burst");
+    EXPECT_EQ(b.emitted, 40u);
+    EXPECT_EQ(b.alive, 0);  // 0.8-1.8 s lives, hit 4 s before the end
+    const int errorsBefore = plugin->stats().apiErrors;
+    EXPECT_EQ(plugin->reactionStats(99).name, "");
+    EXPECT_EQ(plugin->stats().apiErrors, errorsBefore + 1);  // refused and counted
+}
+
 TEST(Plugin, DeclarePassesCallsTheRenderHookWithTheRuntimes) {
     // PluginImpl directly: fxCreatePlugin installs the GL particle renderer as the hook, and
     // this test has no GL context (the engine-free GL host tests cover that path).

@@ -99,6 +99,14 @@ public:
     /// false, ShaderBuild diagnostics ("file:line") in `out` and in the log, once per edit.
     /// Without shaderDir (the embedded shaders) it does nothing.
     virtual bool pollShaderReload(Diagnostics* out) = 0;
+
+    /// API 1.1: the counters of running reaction `index` (0 .. reactionCount() - 1); for any
+    /// other index an empty ReactionStats (and IndexOutOfRange in the log). Cheap (no particle
+    /// is read). Not pure, so an adapter written against 1.0 still compiles.
+    virtual ReactionStats reactionStats(int index) const {
+        (void)index;
+        return ReactionStats{};
+    }
 };
 
 /// What the host hands the plugin at creation. Defaults: this header's API version, no host
