@@ -65,6 +65,7 @@ struct ParticleDesc {
     float riseSpeed = 0.6f;        ///< [-50, 50] m/s terminal upward speed (buoyancy)
     float drag = 1.2f;             ///< [0, 1e6] 1/s, rate at which velocity relaxes to terminal
     float windFactor = 1.0f;       ///< [0, 10] share of the ambient wind in the terminal velocity
+    float gravity = 0.0f;          ///< [0, 100] m/s^2 downward acceleration besides the drag (sparks, debris)
     float spreadSpeed = 0.5f;      ///< [0, 100] m/s random initial speed, random upward-hemisphere direction
     float inheritVelocity = 0.3f;  ///< [0, 2] share of the wheel hub velocity at birth
     float spinMin = -0.6f;         ///< [-50, 50] rad/s
@@ -85,6 +86,10 @@ struct ParticleDesc {
 /// How it is drawn. Defaults: soft particles, alpha blending, sorted.
 struct RenderDesc {
     Technique technique = Technique::Soft;  ///< Hard, Soft or Spherical (never FromReaction)
+    /// `technique: stateless` in the file: birth records evaluated in the vertex shader (no CPU
+    /// update), drawn as hard billboards (technique is then Hard). Private to the plugin: the
+    /// public Technique enum is the run-time override, which stateless particles ignore.
+    bool stateless = false;
     BlendMode blend = BlendMode::Alpha;
     float softness = 0.5f;         ///< [1e-6, 1e6] m of depth difference over which the soft fade reaches 1
     float contrastPower = 1.0f;    ///< [0.1, 16] exponent of the soft-fade contrast curve, 1 = linear

@@ -211,7 +211,7 @@ void readParticle(YamlCheck& c, const Node& node, const std::string& path, Parti
     if (!c.isMap(node, path)) return;
     MapReader m(c, node, path,
                 {"lifetime", "start_size", "end_size", "size_variation", "rise_speed", "drag",
-                 "wind_factor", "spread_speed", "inherit_velocity", "spin", "fade_in", "fade_out",
+                 "wind_factor", "gravity", "spread_speed", "inherit_velocity", "spin", "fade_in", "fade_out",
                  "colour_ramp", "atlas", "alpha_over_life", "size_over_life"});
     optRange(c, m, "lifetime", 0.01, 60.0, &d->lifetimeMin, &d->lifetimeMax);
     optNumber(c, m, "start_size", 0.0, 10000.0, &d->startSize);
@@ -220,6 +220,7 @@ void readParticle(YamlCheck& c, const Node& node, const std::string& path, Parti
     optNumber(c, m, "rise_speed", -50.0, 50.0, &d->riseSpeed);
     optNumber(c, m, "drag", 0.0, 1.0e6, &d->drag);
     optNumber(c, m, "wind_factor", 0.0, 10.0, &d->windFactor);
+    optNumber(c, m, "gravity", 0.0, 100.0, &d->gravity);
     optNumber(c, m, "spread_speed", 0.0, 100.0, &d->spreadSpeed);
     optNumber(c, m, "inherit_velocity", 0.0, 2.0, &d->inheritVelocity);
     optRange(c, m, "spin", -50.0, 50.0, &d->spinMin, &d->spinMax);
@@ -270,7 +271,14 @@ void readRender(YamlCheck& c, const Node& node, const std::string& path, RenderD
     MapReader m(c, node, path,
                 {"technique", "blend", "softness", "contrast_power", "near_fade",
                  "sort_back_to_front"});
-    optChoice(c, m, "technique", {"hard", "soft", "spherical"}, Technique::Hard, &r->technique);
+    if (const Node* n = m.get("technique")) {
+        int i = 0;
+        if (c.choice(*n, m.path("technique"), {"hard", "soft", "spherical", "stateless"}, &i)) {
+            r->stateless = i == 3;
+            r->technique = r->stateless ? Technique::Hard
+                                        : static_cast<Technique>(static_cast<int>(Technique::Hard) + i);
+        }
+    }
     optChoice(c, m, "blend", {"alpha", "premultiplied", "additive"}, BlendMode::Alpha, &r->blend);
     optNumber(c, m, "softness", 1.0e-6, 1.0e6, &r->softness);
     optNumber(c, m, "contrast_power", 0.1, 16.0, &r->contrastPower);
@@ -294,6 +302,29 @@ void readVortex(YamlCheck& c, const Node& node, const std::string& path, VortexD
     MapReader m(c, node, path, {"strength", "radius"});
     optNumber(c, m, "strength", -50.0, 50.0, &v->strength);
     optNumber(c, m, "radius", 0.01, 100.0, &v->radius);
+}
+
+// A stateless particle is a closed form of its age: nothing that needs the particle's path
+// (turbulence, vortex) and nothing that needs sorting (it is drawn unsorted, so additive only).
+void checkStateless(YamlCheck& c, const MapReader& m, const ReactionDesc& d) {
+    for (const char* key : {"turbulence", "vortex"}) {
+        const Node* n = m.get(key);
+        const bool on = key[0] == 't' ? d.turbulence.enabled() : d.vortex.enabled();
+        if (n && on) {
+            c.report(ErrorCode::OutOfRange, n->Mark(), m.path(key),
+                     std::string("expected no ") + key +
+                         " with technique stateless (its particles follow a closed form of time; "
+                         "use a CPU technique for turbulent motion)");
+        }
+    }
+    if (d.render.blend != BlendMode::Additive) {
+        const Node* render = m.get("render");
+        YAML::Mark mark = render ? render->Mark() : YAML::Mark();
+        if (render && render->IsMap() && (*render)["blend"]) mark = (*render)["blend"].Mark();
+        c.report(ErrorCode::OutOfRange, mark, m.path("render") + ".blend",
+                 std::string("expected blend additive with technique stateless (stateless particles are "
+                             "drawn unsorted), got ") + blendModeName(d.render.blend));
+    }
 }
 
 // Returns the mark of the name (for duplicate reports), or the map's mark when it has none.
@@ -331,6 +362,7 @@ YAML::Mark readReaction(YamlCheck& c, const Node& node, const std::string& path,
     if (const Node* n = m.get("render")) readRender(c, *n, m.path("render"), &d.render);
     if (const Node* n = m.get("turbulence")) readTurbulence(c, *n, m.path("turbulence"), &d.turbulence);
     if (const Node* n = m.get("vortex")) readVortex(c, *n, m.path("vortex"), &d.vortex);
+    if (d.render.stateless) checkStateless(c, m, d);
     *out = std::move(d);
     return nameMark;
 }

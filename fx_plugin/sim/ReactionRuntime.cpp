@@ -33,11 +33,13 @@ bool wheelSelected(WheelSet set, const WheelContact& w) {
 
 ReactionRuntime::ReactionRuntime(ReactionDesc desc, uint64_t globalSeed)
     : desc_(std::move(desc)),
-      pool_(desc_.emission.capacity),
+      pool_(desc_.render.stateless ? 0 : desc_.emission.capacity),
+      ring_(desc_.render.stateless ? desc_.emission.capacity : 0),
       rng_(reactionRng(globalSeed, desc_.name)) {}
 
 void ReactionRuntime::setDesc(ReactionDesc desc) {
     assert(desc.emission.capacity == desc_.emission.capacity);
+    assert(desc.render.stateless == stateless());
     if (desc.type != desc_.type) burstArmed_ = true;
     desc_ = std::move(desc);
 }
@@ -69,7 +71,7 @@ void ReactionRuntime::step(float dt, const WheelContact* wheels, int wheelCount,
     const ParticleDesc& p = desc_.particle;
     const glm::vec3 terminal = terminalVelocity(wind, p.windFactor, p.riseSpeed);
 
-    advanceParticles(dt, terminal);
+    if (!stateless()) advanceParticles(dt, terminal);  // stateless: nothing to update
     time_ += dt;
 
     if (desc_.type == ReactionType::CollisionBurst) {
@@ -98,9 +100,10 @@ void ReactionRuntime::stepThroughField(glm::vec3& x, glm::vec3& v, glm::vec3 ori
     // the predicted midpoint. Both are the exact drag solution for their constant u.
     glm::vec3 xh = x, vh = v;
     if (full.dt == 0.0f) return;
-    applyDragStep(half, airVelocity(terminal, x, origin, t), xh, vh);
+    const glm::vec3 g(0.0f, -desc_.particle.gravity, 0.0f);
+    applyDragStep(half, airVelocity(terminal, x, origin, t), g, xh, vh);
     const glm::vec3 um = airVelocity(terminal, xh, origin, t + 0.5 * static_cast<double>(full.dt));
-    applyDragStep(full, um, x, v);
+    applyDragStep(full, um, g, x, v);
 }
 
 void ReactionRuntime::advanceParticles(float dt, glm::vec3 u) {
@@ -124,6 +127,7 @@ void ReactionRuntime::advanceParticles(float dt, glm::vec3 u) {
     const float* ox = pool_.stream(ParticlePool::OriginX);
     const float* oz = pool_.stream(ParticlePool::OriginZ);
     const bool field = turbulent();
+    const float gy = -p.gravity;
     const DragStep half = field ? makeDragStep(p.drag, 0.5f * dt) : DragStep{};
 
     for (int i = 0; i < pool_.alive();) {
@@ -140,10 +144,10 @@ void ReactionRuntime::advanceParticles(float dt, glm::vec3 u) {
         } else {
             const float dx = vx[i] - u.x, dy = vy[i] - u.y, dz = vz[i] - u.z;
             px[i] += u.x * s.dt + dx * s.reach;
-            py[i] += u.y * s.dt + dy * s.reach;
+            py[i] += u.y * s.dt + dy * s.reach + gy * s.lift;
             pz[i] += u.z * s.dt + dz * s.reach;
             vx[i] = u.x + dx * s.decay;
-            vy[i] = u.y + dy * s.decay;
+            vy[i] = u.y + dy * s.decay + gy * s.reach;
             vz[i] = u.z + dz * s.decay;
         }
         rot[i] = wrapAngle(rot[i] + spin[i] * dt);
@@ -164,7 +168,7 @@ void ReactionRuntime::emitFromWheel(int index, const WheelContact& wheel, float 
     if (due <= 0) return;
     const glm::vec3 base = wheel.velocity * desc_.particle.inheritVelocity;
     for (int64_t k = clock.firstYoungerThan(desc_.particle.lifetimeMax); k < due; ++k) {
-        if (pool_.full()) {
+        if (!stateless() && pool_.full()) {
             counters_.dropped += static_cast<uint64_t>(due - k);
             return;
         }
@@ -186,7 +190,7 @@ void ReactionRuntime::emitBurst(float amount, glm::vec3 point, glm::vec3 termina
     const float scaled = static_cast<float>(desc_.emission.burst) * glm::min(amount, 1.0f);
     const int count = glm::max(1, static_cast<int>(std::lround(scaled)));
     for (int k = 0; k < count; ++k) {
-        if (pool_.full()) {
+        if (!stateless() && pool_.full()) {
             counters_.dropped += static_cast<uint64_t>(count - k);
             return;
         }
@@ -212,6 +216,25 @@ void ReactionRuntime::spawn(glm::vec3 origin, glm::vec3 baseVelocity, float age,
     const uint32_t frame = static_cast<uint32_t>(p.atlasFirst) +
                            rng_.below(static_cast<uint32_t>(glm::max(p.atlasCount, 1)));
     if (!(age < lifetime)) return;
+    const float sinUp = std::sqrt(glm::max(0.0f, 1.0f - cosUp * cosUp));
+    glm::vec3 x = origin + glm::vec3(jr * std::cos(ja), e.spawnHeight, jr * std::sin(ja));
+    glm::vec3 v = baseVelocity +
+                  speed * glm::vec3(sinUp * std::cos(azimuth), cosUp, sinUp * std::sin(azimuth));
+    if (stateless()) {
+        StatelessRecord r{};
+        r.p0[0] = x.x, r.p0[1] = x.y, r.p0[2] = x.z;
+        r.v0[0] = v.x, r.v0[1] = v.y, r.v0[2] = v.z;
+        r.birth = static_cast<float>(time_ - static_cast<double>(age));
+        r.lifetime = lifetime;
+        r.startSize = p.startSize * sizeScale;
+        r.endSize = p.endSize * sizeScale;
+        r.rotation = rotation;
+        r.spin = spin;
+        r.frame = static_cast<float>(frame);
+        ++counters_.emitted;
+        if (!ring_.write(r, time_)) ++counters_.dropped;  // a live one recycled early: ring too small
+        return;
+    }
     const int i = pool_.spawn();
     if (i < 0) {
         ++counters_.dropped;
@@ -219,16 +242,12 @@ void ReactionRuntime::spawn(glm::vec3 origin, glm::vec3 baseVelocity, float age,
     }
     ++counters_.emitted;
 
-    const float sinUp = std::sqrt(glm::max(0.0f, 1.0f - cosUp * cosUp));
-    glm::vec3 x = origin + glm::vec3(jr * std::cos(ja), e.spawnHeight, jr * std::sin(ja));
-    glm::vec3 v = baseVelocity +
-                  speed * glm::vec3(sinUp * std::cos(azimuth), cosUp, sinUp * std::sin(azimuth));
     if (age > 0.0f) {
         // time_ is already the end of this step: the particle was born `age` seconds before it.
         if (turbulent()) {
             stepThroughField(x, v, origin, terminal, time_ - age, age);
         } else {
-            applyDragStep(makeDragStep(p.drag, age), terminal, x, v);
+            applyDragStep(makeDragStep(p.drag, age), terminal, glm::vec3(0.0f, -p.gravity, 0.0f), x, v);
         }
     }
 

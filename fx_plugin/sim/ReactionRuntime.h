@@ -28,6 +28,15 @@
 // 30 Hz and 300 Hz runs agree within the error fxbench --integrators reports. Reactions without
 // turbulence or vortex take the exact constant-u step as before (no extra cost).
 //
+// technique: stateless: spawn() writes a birth record (position and velocity at birth, before any
+// ageing, and the birth time on the reaction clock) into a ring instead of the pool, and step()
+// touches no particle: the vertex shader evaluates each record at the current time. The random
+// draws are the same as for a CPU technique, so the same desc gives the same particles either way
+// (tested: the closed form equals the CPU steps over the whole life). The pool is empty.
+//
+// Gravity (particle.gravity, downward) enters both paths as a constant acceleration in the exact
+// step (Integrator.h: applyDragStep with g).
+//
 // Nothing here allocates after construction; a full pool drops what does not fit and counts it.
 #include <array>
 #include <cstdint>
@@ -39,6 +48,7 @@
 #include "Integrator.h"
 #include "ParticlePool.h"
 #include "Rng.h"
+#include "StatelessRing.h"
 #include "reactions/ReactionDesc.h"
 #include "fx/Types.h"
 
@@ -72,6 +82,13 @@ public:
     const ReactionDesc& desc() const { return desc_; }
     const std::string& name() const { return desc_.name; }
     const ParticlePool& pool() const { return pool_; }
+    /// technique stateless: the birth records (empty ring otherwise).
+    const StatelessRing& ring() const { return ring_; }
+    bool stateless() const { return desc_.render.stateless; }
+    /// Live particles: the pool's, or the ring's records alive now (O(capacity) when stateless).
+    int alive() const { return stateless() ? ring_.alive(time_) : pool_.alive(); }
+    /// Particle slots: pool or ring.
+    int capacity() const { return stateless() ? ring_.capacity() : pool_.capacity(); }
     const Counters& counters() const { return counters_; }
     /// Whether draw order matters: render.sort_back_to_front and a blend that is not additive.
     bool needsSorting() const;
@@ -101,6 +118,7 @@ private:
 
     ReactionDesc desc_;
     ParticlePool pool_;
+    StatelessRing ring_;
     Pcg32 rng_;
     std::array<EmissionClock, kMaxWheels> clocks_{};
     bool burstArmed_ = true;

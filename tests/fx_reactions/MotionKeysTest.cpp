@@ -141,3 +141,36 @@ TEST(MotionKeys, TextForANumberIsRejected) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(StatelessKeys, StatelessAdditiveWithGravityLoads) {
+    Loaded r = load("    particle: {gravity: 9.81}\n"
+                    "    render: {technique: stateless, blend: additive}\n");
+    ASSERT_TRUE(r.ok) << dump(r.diags);
+    const fx::ReactionDesc& d = r.set.reactions[0];
+    EXPECT_TRUE(d.render.stateless);
+    EXPECT_EQ(d.render.technique, fx::Technique::Hard);  // drawn as hard billboards
+    EXPECT_FLOAT_EQ(d.particle.gravity, 9.81f);
+}
+
+TEST(StatelessKeys, StatelessNeedsAdditiveBlending) {
+    Loaded r = load("    render:\n"
+                    "      technique: stateless\n"
+                    "      blend: alpha\n");
+    expectOnly(r, ErrorCode::OutOfRange, 6, "reactions[0].render.blend");
+}
+
+TEST(StatelessKeys, StatelessRefusesTurbulence) {
+    Loaded r = load("    render: {technique: stateless, blend: additive}\n"
+                    "    turbulence: {strength: 1}\n");
+    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].turbulence");
+}
+
+TEST(StatelessKeys, NegativeGravityIsRejected) {
+    Loaded r = load("    particle:\n"
+                    "      gravity: -9.81\n");
+    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].particle.gravity");
+}
+
+}  // namespace
