@@ -16,7 +16,7 @@
 namespace fx {
 
 /// Which per-type behaviour ("continue") a reaction runs.
-enum class ReactionType : uint8_t { WheelSmoke = 0, Dust, CollisionBurst };
+enum class ReactionType : uint8_t { WheelSmoke = 0, Dust, CollisionBurst, CollisionScrape };
 /// Which wheels a wheel-driven reaction watches.
 enum class WheelSet : uint8_t { Rear = 0, Front, All };
 /// How particles combine with what is behind them. Additive is order-independent (never sorted).
@@ -35,7 +35,7 @@ struct TriggerDesc {
 
 /// How many particles. Defaults: 80/s at full slip, no burst, 1024 slots.
 struct EmissionDesc {
-    float rate = 80.0f;            ///< [0, 100000] particles/s at full strength (wheel_smoke, dust)
+    float rate = 80.0f;            ///< [0, 100000] particles/s at full strength (wheel_smoke, dust, collision_scrape)
     int burst = 0;                 ///< [0, capacity] particles per collision at amount 1 (collision_burst)
     int capacity = 1024;           ///< [1, 1000000] pool slots, allocated once at load
     float spawnHeight = 0.15f;     ///< [-10, 10] m above the contact point
@@ -114,6 +114,8 @@ struct ReactionDesc {
 /// The defaults for one type; the loader starts from these and overlays the file's keys.
 /// dust: slip >= 0, grass/gravel/sand, all wheels, min_speed 2 m/s.
 /// collision_burst: burst 24, all wheels (wheels and surfaces are not used by bursts).
+/// collision_scrape: like collision_burst's trigger, emitting `rate` x amount per second while in
+/// contact.
 inline ReactionDesc defaultReaction(ReactionType type) {
     ReactionDesc d;
     d.type = type;
@@ -131,6 +133,9 @@ inline ReactionDesc defaultReaction(ReactionType type) {
         d.trigger.wheels = WheelSet::All;
         d.emission.burst = 24;
         break;
+    case ReactionType::CollisionScrape:
+        d.trigger.wheels = WheelSet::All;
+        break;
     }
     return d;
 }
@@ -147,6 +152,7 @@ constexpr long long kMaxTotalCapacity = 4000000; ///< summed over one set (about
 constexpr int kMaxReactionsPerFile = 256;
 constexpr int kMaxColorStops = 16;
 constexpr int kMaxCurvePoints = 16;
+constexpr int kMaxLayers = 8;                    ///< layers of one layered reaction
 constexpr int kMaxNesting = 16;                  ///< collection levels in a file
 constexpr size_t kMaxFileBytes = 4u << 20;       ///< 4 MiB
 constexpr size_t kMaxDiagnosticsPerFile = 100;   ///< then one TooManyErrors

@@ -8,7 +8,7 @@ namespace {
 using YAML::Node;
 
 constexpr std::initializer_list<const char*> kTypeWords = {"wheel_smoke", "dust",
-                                                           "collision_burst"};
+                                                           "collision_burst", "collision_scrape"};
 constexpr std::initializer_list<const char*> kSurfaceWords = {"asphalt", "kerb", "grass",
                                                               "gravel", "sand"};
 
@@ -327,12 +327,46 @@ void checkStateless(YamlCheck& c, const MapReader& m, const ReactionDesc& d) {
     }
 }
 
-// Returns the mark of the name (for duplicate reports), or the map's mark when it has none.
-YAML::Mark readReaction(YamlCheck& c, const Node& node, const std::string& path,
-                        ReactionDesc* out) {
-    if (!c.isMap(node, path)) return node.Mark();
+// One reaction, or the reactions of a layered one, appended to `outs` with the mark of each
+// name (for duplicate reports). A layered reaction ({name, trigger, layers}) expands here into
+// one reaction per layer, named "<name>.<layer name>", each with its own type, technique and
+// blend, and a trigger read from the parent's trigger and then the layer's own: the layers fire
+// together on the same contact, and the runtime and renderer see plain reactions.
+void readReaction(YamlCheck& c, const Node& node, const std::string& path, bool isLayer,
+                  const Node* parentTrigger, const std::string& namePrefix, std::vector<ReactionDesc>* outs,
+                  std::vector<YAML::Mark>* nameMarks) {
+    if (!c.isMap(node, path)) return;
     MapReader m(c, node, path, {"name", "type", "trigger", "emission", "particle", "render",
-                                "turbulence", "vortex"});
+                                "turbulence", "vortex", "layers"});
+
+    if (const Node* layers = m.get("layers")) {
+        if (isLayer) {
+            c.report(ErrorCode::OutOfRange, layers->Mark(), m.path("layers"),
+                     "expected no layers inside a layer (layers nest one level)");
+            return;
+        }
+        for (const char* key : {"type", "emission", "particle", "render", "turbulence", "vortex"}) {
+            if (const Node* n = m.get(key)) {
+                c.report(ErrorCode::OutOfRange, n->Mark(), m.path(key),
+                         std::string("expected only name, trigger and layers in a layered reaction; ") +
+                             "move '" + key + "' into a layer");
+            }
+        }
+        std::string name;
+        if (const Node* n = m.get("name")) {
+            c.name(*n, m.path("name"), &name);
+        } else {
+            c.report(ErrorCode::MissingKey, node.Mark(), m.path("name"),
+                     "missing required key 'name' (a unique name for the reaction)");
+        }
+        if (!c.isList(*layers, m.path("layers"), 1, kMaxLayers)) return;
+        size_t i = 0;
+        for (auto it = layers->begin(); it != layers->end(); ++it, ++i) {
+            readReaction(c, *it, indexed(m.path("layers"), i), true, m.get("trigger"),
+                         name.empty() ? std::string() : name + ".", outs, nameMarks);
+        }
+        return;
+    }
 
     // The type decides the defaults, so it is read first; an invalid type validates the rest
     // against the wheel_smoke defaults (the reaction is rejected either way).
@@ -342,7 +376,7 @@ YAML::Mark readReaction(YamlCheck& c, const Node& node, const std::string& path,
         if (c.choice(*n, m.path("type"), kTypeWords, &i)) type = static_cast<ReactionType>(i);
     } else {
         c.report(ErrorCode::MissingKey, node.Mark(), m.path("type"),
-                 "missing required key 'type'; expected one of wheel_smoke|dust|collision_burst");
+                 "missing required key 'type'; expected one of wheel_smoke|dust|collision_burst|collision_scrape");
     }
     ReactionDesc d = defaultReaction(type);
     d.sourceFile = c.file();
@@ -352,10 +386,23 @@ YAML::Mark readReaction(YamlCheck& c, const Node& node, const std::string& path,
     if (const Node* n = m.get("name")) {
         c.name(*n, m.path("name"), &d.name);
         nameMark = n->Mark();
+        // A layer's full name must still be a valid name (length).
+        if (!d.name.empty() && !namePrefix.empty()) {
+            d.name = namePrefix + d.name;
+            if (d.name.size() > 64) {
+                c.report(ErrorCode::OutOfRange, n->Mark(), m.path("name"),
+                         "expected the layered name '" + d.name + "' to have at most 64 characters");
+                d.name.clear();
+            }
+        } else if (isLayer && namePrefix.empty()) {
+            d.name.clear();  // the parent's name was invalid: already reported
+        }
     } else {
         c.report(ErrorCode::MissingKey, node.Mark(), m.path("name"),
                  "missing required key 'name' (a unique name for the reaction)");
     }
+    // The parent's trigger (reported against its own keys; a bad one is reported per layer).
+    if (parentTrigger) readTrigger(c, *parentTrigger, path.substr(0, path.rfind(".layers[")) + ".trigger", &d.trigger);
     if (const Node* n = m.get("trigger")) readTrigger(c, *n, m.path("trigger"), &d.trigger);
     if (const Node* n = m.get("emission")) readEmission(c, *n, m.path("emission"), &d.emission);
     if (const Node* n = m.get("particle")) readParticle(c, *n, m.path("particle"), &d.particle);
@@ -363,8 +410,8 @@ YAML::Mark readReaction(YamlCheck& c, const Node& node, const std::string& path,
     if (const Node* n = m.get("turbulence")) readTurbulence(c, *n, m.path("turbulence"), &d.turbulence);
     if (const Node* n = m.get("vortex")) readVortex(c, *n, m.path("vortex"), &d.vortex);
     if (d.render.stateless) checkStateless(c, m, d);
-    *out = std::move(d);
-    return nameMark;
+    outs->push_back(std::move(d));
+    nameMarks->push_back(nameMark);
 }
 
 }  // namespace
@@ -385,25 +432,29 @@ void readReactionDocument(YamlCheck& c, const YAML::Node& root, std::vector<Reac
     size_t i = 0;
     for (auto it = list->begin(); it != list->end(); ++it, ++i) {
         const std::string path = indexed("reactions", i);
-        ReactionDesc d;
-        YAML::Mark nameMark = readReaction(c, *it, path, &d);
-        if (d.name.empty()) continue;  // not a map, or no valid name: already reported
-        for (const ReactionDesc& earlier : *out) {
-            if (earlier.name == d.name) {
-                c.report(ErrorCode::DuplicateName, nameMark, path + ".name",
-                         "reaction name '" + d.name + "' is already used at line " +
-                             std::to_string(earlier.sourceLine));
-                break;
+        std::vector<ReactionDesc> read;
+        std::vector<YAML::Mark> marks;
+        readReaction(c, *it, path, false, nullptr, std::string(), &read, &marks);
+        for (size_t r = 0; r < read.size(); ++r) {
+            ReactionDesc& d = read[r];
+            if (d.name.empty()) continue;  // not a map, or no valid name: already reported
+            for (const ReactionDesc& earlier : *out) {
+                if (earlier.name == d.name) {
+                    c.report(ErrorCode::DuplicateName, marks[r], path + ".name",
+                             "reaction name '" + d.name + "' is already used at line " +
+                                 std::to_string(earlier.sourceLine));
+                    break;
+                }
             }
+            totalCapacity += d.emission.capacity;
+            if (totalCapacity > kMaxTotalCapacity && !capacityReported) {
+                c.report(ErrorCode::OutOfRange, it->Mark(), path + ".emission.capacity",
+                         "the reactions' capacities add up to more than " +
+                             std::to_string(kMaxTotalCapacity) + " particles");
+                capacityReported = true;
+            }
+            out->push_back(std::move(d));
         }
-        totalCapacity += d.emission.capacity;
-        if (totalCapacity > kMaxTotalCapacity && !capacityReported) {
-            c.report(ErrorCode::OutOfRange, it->Mark(), path + ".emission.capacity",
-                     "the reactions' capacities add up to more than " +
-                         std::to_string(kMaxTotalCapacity) + " particles");
-            capacityReported = true;
-        }
-        out->push_back(std::move(d));
     }
 }
 

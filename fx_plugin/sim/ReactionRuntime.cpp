@@ -50,7 +50,10 @@ bool ReactionRuntime::needsSorting() const {
 
 float ReactionRuntime::wheelStrength(const ReactionDesc& desc, const WheelContact& w) {
     const TriggerDesc& t = desc.trigger;
-    if (desc.type == ReactionType::CollisionBurst || !w.grounded) return 0.0f;
+    if (desc.type == ReactionType::CollisionBurst || desc.type == ReactionType::CollisionScrape ||
+        !w.grounded) {
+        return 0.0f;
+    }
     if (!wheelSelected(t.wheels, w)) return 0.0f;
     if (w.surface >= Surface::Count || !(t.surfaces & surfaceBit(w.surface))) return 0.0f;
     const float speed = glm::length(w.velocity);
@@ -70,10 +73,15 @@ void ReactionRuntime::step(float dt, const WheelContact* wheels, int wheelCount,
     if (!finite3(wind)) wind = glm::vec3(0.0f);
     const ParticleDesc& p = desc_.particle;
     const glm::vec3 terminal = terminalVelocity(wind, p.windFactor, p.riseSpeed);
+    terminal_ = terminal;
 
     if (!stateless()) advanceParticles(dt, terminal);  // stateless: nothing to update
     time_ += dt;
 
+    if (desc_.type == ReactionType::CollisionScrape) {
+        emitScrape(dt, collisionAmount, collisionPoint, terminal);
+        return;
+    }
     if (desc_.type == ReactionType::CollisionBurst) {
         emitBurst(collisionAmount, collisionPoint, terminal);
         return;
@@ -174,6 +182,23 @@ void ReactionRuntime::emitFromWheel(int index, const WheelContact& wheel, float 
         }
         const float age = static_cast<float>(clock.ageOf(k));
         spawn(wheel.position - wheel.velocity * age, base, age, terminal);
+    }
+}
+
+void ReactionRuntime::emitScrape(float dt, float amount, glm::vec3 point, glm::vec3 terminal) {
+    if (!std::isfinite(amount) || !finite3(point)) amount = 0.0f;
+    // Only while in contact: at or above the threshold (and above 0), at rate x amount.
+    const bool contact = amount > 0.0f && amount >= desc_.trigger.collisionThreshold;
+    EmissionClock& clock = clocks_[0];
+    const double rate = contact ? static_cast<double>(desc_.emission.rate) * glm::min(amount, 1.0f) : 0.0;
+    const int64_t due = clock.advance(rate, dt);
+    if (!contact) clock.reset();  // no carry across contacts: a new scrape starts clean
+    for (int64_t k = clock.firstYoungerThan(desc_.particle.lifetimeMax); k < due; ++k) {
+        if (!stateless() && pool_.full()) {
+            counters_.dropped += static_cast<uint64_t>(due - k);
+            return;
+        }
+        spawn(point, glm::vec3(0.0f), static_cast<float>(clock.ageOf(k)), terminal);
     }
 }
 

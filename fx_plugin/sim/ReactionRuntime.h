@@ -14,6 +14,9 @@
 //    emits max(1, round(burst * min(amount, 1))) particles at once at the collision point; it
 //    fires again only after the amount fell to <= threshold / 2 (edge-triggered, with hysteresis
 //    so a noisy contact does not machine-gun).
+//  - collision_scrape: while the collision amount is >= collision_threshold (and > 0) it emits
+//    rate * min(amount, 1) particles/s at the collision point (sparks while the car grinds
+//    along a barrier), nothing otherwise.
 // Spawn point = contact + spawn_height * up + a point uniform in a horizontal disc of
 // jitter_radius. A particle that fell due `a` seconds before the end of the step starts where
 // the wheel was then (contact - hub velocity * a) and is advanced by `a` exactly, so a trail is
@@ -92,6 +95,9 @@ public:
     const Counters& counters() const { return counters_; }
     /// Whether draw order matters: render.sort_back_to_front and a blend that is not additive.
     bool needsSorting() const;
+    /// The terminal velocity of the last step (wind * wind_factor + rise_speed * up): what a
+    /// stateless particle's closed form uses (it assumes the wind constant since its birth).
+    glm::vec3 terminal() const { return terminal_; }
     /// Seconds simulated so far (the turbulence field's clock).
     double time() const { return time_; }
     /// Whether particles feel turbulence or the vortex (the midpoint step).
@@ -112,6 +118,7 @@ private:
     void advanceParticles(float dt, glm::vec3 terminal);
     void emitFromWheel(int index, const WheelContact& wheel, float dt, glm::vec3 terminal);
     void emitBurst(float amount, glm::vec3 point, glm::vec3 terminal);
+    void emitScrape(float dt, float amount, glm::vec3 point, glm::vec3 terminal);
     /// Draws one particle's randoms and, unless it is already dead at `age`, puts it in the
     /// pool at `origin` (+ jitter) with `baseVelocity` (+ spread), advanced by `age` seconds.
     void spawn(glm::vec3 origin, glm::vec3 baseVelocity, float age, glm::vec3 terminal);
@@ -123,6 +130,7 @@ private:
     std::array<EmissionClock, kMaxWheels> clocks_{};
     bool burstArmed_ = true;
     double time_ = 0.0;
+    glm::vec3 terminal_{0.0f};
     Counters counters_;
 };
 

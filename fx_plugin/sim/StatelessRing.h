@@ -44,6 +44,8 @@ public:
         const bool evicted = written_ >= records_.size() && aliveAt(slot, now);
         slot = r;
         ++written_;
+        const float death = r.birth + r.lifetime;
+        if (death > liveUntil_) liveUntil_ = death;
         return !evicted;
     }
 
@@ -55,7 +57,14 @@ public:
         return count;
     }
 
-    void clear() { written_ = 0; }
+    /// The clock time when the last record written dies: nothing is alive after it. O(1), so a
+    /// renderer can skip a reaction with no live record without reading the records.
+    float liveUntil() const { return liveUntil_; }
+
+    void clear() {
+        written_ = 0;
+        liveUntil_ = 0.0f;
+    }
 
     /// In float, as the vertex shader sees it (uTime and birth are floats): a record written
     /// this step is alive at once, whatever the rounding of the double clock.
@@ -67,6 +76,7 @@ public:
 private:
     std::vector<StatelessRecord> records_;
     uint64_t written_ = 0;
+    float liveUntil_ = 0.0f;
 };
 
 }  // namespace fx

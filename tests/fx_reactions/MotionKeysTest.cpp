@@ -174,3 +174,69 @@ TEST(StatelessKeys, NegativeGravityIsRejected) {
 }
 
 }  // namespace
+
+namespace {
+
+Loaded loadRaw(const std::string& text) {
+    Loaded r;
+    r.ok = fx::loadReactionText(text, "test.yaml", &r.set, &r.diags);
+    return r;
+}
+
+TEST(LayerKeys, ALayeredReactionExpandsIntoOneReactionPerLayer) {
+    Loaded r = loadRaw("reactions:\n"
+                       "  - name: hit\n"
+                       "    trigger: {collision_threshold: 0.3}\n"
+                       "    layers:\n"
+                       "      - {name: sparks, type: collision_scrape, render: {technique: stateless, blend: additive}}\n"
+                       "      - name: flash\n"
+                       "        type: collision_burst\n"
+                       "        trigger: {collision_threshold: 0.7}\n");
+    ASSERT_TRUE(r.ok) << dump(r.diags);
+    ASSERT_EQ(r.set.reactions.size(), 2u);
+    EXPECT_EQ(r.set.reactions[0].name, "hit.sparks");
+    EXPECT_EQ(r.set.reactions[0].type, fx::ReactionType::CollisionScrape);
+    EXPECT_TRUE(r.set.reactions[0].render.stateless);
+    EXPECT_FLOAT_EQ(r.set.reactions[0].trigger.collisionThreshold, 0.3f);  // the parent's
+    EXPECT_EQ(r.set.reactions[1].name, "hit.flash");
+    EXPECT_FLOAT_EQ(r.set.reactions[1].trigger.collisionThreshold, 0.7f);  // its own wins
+    EXPECT_EQ(r.set.reactions[1].sourceLine, 6);  // the layer's own line
+}
+
+TEST(LayerKeys, ALayeredReactionHoldsOnlyNameTriggerAndLayers) {
+    Loaded r = loadRaw("reactions:\n"
+                       "  - name: hit\n"
+                       "    type: dust\n"
+                       "    layers:\n"
+                       "      - {name: a, type: dust}\n");
+    expectOnly(r, ErrorCode::OutOfRange, 3, "reactions[0].type");
+}
+
+TEST(LayerKeys, LayersDoNotNest) {
+    Loaded r = loadRaw("reactions:\n"
+                       "  - name: hit\n"
+                       "    layers:\n"
+                       "      - name: a\n"
+                       "        layers: [{name: b, type: dust}]\n");
+    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].layers[0].layers");
+}
+
+TEST(LayerKeys, ALayerNeedsAType) {
+    Loaded r = loadRaw("reactions:\n"
+                       "  - name: hit\n"
+                       "    layers:\n"
+                       "      - name: a\n");
+    expectOnly(r, ErrorCode::MissingKey, 4, "reactions[0].layers[0].type");
+}
+
+TEST(LayerKeys, LayerNamesCollideWithOtherReactions) {
+    Loaded r = loadRaw("reactions:\n"
+                       "  - {name: hit.a, type: dust}\n"
+                       "  - name: hit\n"
+                       "    layers: [{name: a, type: dust}]\n");
+    ASSERT_FALSE(r.ok);
+    ASSERT_EQ(r.diags.size(), 1u) << dump(r.diags);
+    EXPECT_EQ(r.diags[0].code, ErrorCode::DuplicateName);
+}
+
+}  // namespace

@@ -30,21 +30,21 @@ TEST(ShippedReactions, EveryFileLoadsWithoutDiagnostics) {
         EXPECT_TRUE(fx::loadReactionFile(e.path().string(), &set, &diags)) << e.path();
         EXPECT_TRUE(diags.empty()) << dump(diags);
     }
-    EXPECT_EQ(files, 5);
+    EXPECT_EQ(files, 6);
 }
 
-TEST(ShippedReactions, DirectoryLoadsFourReactionsInFileOrder) {
+TEST(ShippedReactions, DirectoryLoadsSevenReactionsInFileOrder) {
     fx::ReactionSet set;
     fx::Diagnostics diags;
     ASSERT_TRUE(fx::loadReactionDirectory(kReactionsDir, &set, &diags)) << dump(diags);
     EXPECT_TRUE(diags.empty());
-    ASSERT_EQ(set.reactions.size(), 4u);
-    // Sorted file names: barrier_burst, burnout_smoke, none, offtrack_dust, tyre_steam.
-    EXPECT_EQ(set.reactions[0].name, "barrier_burst");
-    EXPECT_EQ(set.reactions[1].name, "burnout_smoke");
-    EXPECT_EQ(set.reactions[2].name, "offtrack_dust");
-    EXPECT_EQ(set.reactions[3].name, "tyre_steam");
-    EXPECT_EQ(set.files.size(), 5u);
+    ASSERT_EQ(set.reactions.size(), 7u);
+    // Sorted file names: barrier_burst, barrier_scrape (three layers, in file order),
+    // burnout_smoke, none, offtrack_dust, tyre_steam.
+    const char* names[] = {"barrier_burst", "barrier_scrape.sparks", "barrier_scrape.flash",
+                           "barrier_scrape.smoke", "burnout_smoke", "offtrack_dust", "tyre_steam"};
+    for (size_t i = 0; i < 7; ++i) EXPECT_EQ(set.reactions[i].name, names[i]);
+    EXPECT_EQ(set.files.size(), 6u);
 }
 
 TEST(ShippedReactions, NoneIsAValidEmptySet) {
