@@ -16,7 +16,7 @@
 namespace fx {
 
 /// Which per-type behaviour ("continue") a reaction runs.
-enum class ReactionType : uint8_t { WheelSmoke = 0, Dust, CollisionBurst, CollisionScrape };
+enum class ReactionType : uint8_t { WheelSmoke = 0, Dust, CollisionBurst, CollisionScrape, OnDemand };
 /// Which wheels a wheel-driven reaction watches.
 enum class WheelSet : uint8_t { Rear = 0, Front, All };
 /// How particles combine with what is behind them. Additive is order-independent (never sorted).
@@ -135,6 +135,10 @@ inline ReactionDesc defaultReaction(ReactionType type) {
         break;
     case ReactionType::CollisionScrape:
         d.trigger.wheels = WheelSet::All;
+        break;
+    case ReactionType::OnDemand:
+        d.trigger.wheels = WheelSet::All;
+        d.emission.burst = 24;
         break;
     }
     return d;

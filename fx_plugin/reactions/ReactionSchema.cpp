@@ -8,7 +8,8 @@ namespace {
 using YAML::Node;
 
 constexpr std::initializer_list<const char*> kTypeWords = {"wheel_smoke", "dust",
-                                                           "collision_burst", "collision_scrape"};
+                                                           "collision_burst", "collision_scrape",
+                                                           "on_demand"};
 constexpr std::initializer_list<const char*> kSurfaceWords = {"asphalt", "kerb", "grass",
                                                               "gravel", "sand"};
 
@@ -376,7 +377,7 @@ void readReaction(YamlCheck& c, const Node& node, const std::string& path, bool 
         if (c.choice(*n, m.path("type"), kTypeWords, &i)) type = static_cast<ReactionType>(i);
     } else {
         c.report(ErrorCode::MissingKey, node.Mark(), m.path("type"),
-                 "missing required key 'type'; expected one of wheel_smoke|dust|collision_burst|collision_scrape");
+                 "missing required key 'type'; expected one of wheel_smoke|dust|collision_burst|collision_scrape|on_demand");
     }
     ReactionDesc d = defaultReaction(type);
     d.sourceFile = c.file();

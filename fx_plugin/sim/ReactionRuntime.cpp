@@ -51,7 +51,7 @@ bool ReactionRuntime::needsSorting() const {
 float ReactionRuntime::wheelStrength(const ReactionDesc& desc, const WheelContact& w) {
     const TriggerDesc& t = desc.trigger;
     if (desc.type == ReactionType::CollisionBurst || desc.type == ReactionType::CollisionScrape ||
-        !w.grounded) {
+        desc.type == ReactionType::OnDemand || !w.grounded) {
         return 0.0f;
     }
     if (!wheelSelected(t.wheels, w)) return 0.0f;
@@ -78,6 +78,20 @@ void ReactionRuntime::step(float dt, const WheelContact* wheels, int wheelCount,
     if (!stateless()) advanceParticles(dt, terminal);  // stateless: nothing to update
     time_ += dt;
 
+    if (desc_.type == ReactionType::OnDemand) {
+        if (firePending_) {
+            firePending_ = false;
+            ++counters_.bursts;
+            for (int k = 0; k < desc_.emission.burst; ++k) {
+                if (!stateless() && pool_.full()) {
+                    counters_.dropped += static_cast<uint64_t>(desc_.emission.burst - k);
+                    break;
+                }
+                spawn(firePoint_, glm::vec3(0.0f), 0.0f, terminal);
+            }
+        }
+        return;
+    }
     if (desc_.type == ReactionType::CollisionScrape) {
         emitScrape(dt, collisionAmount, collisionPoint, terminal);
         return;

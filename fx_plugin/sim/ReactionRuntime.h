@@ -17,6 +17,8 @@
 //  - collision_scrape: while the collision amount is >= collision_threshold (and > 0) it emits
 //    rate * min(amount, 1) particles/s at the collision point (sparks while the car grinds
 //    along a barrier), nothing otherwise.
+//  - on_demand: emits `burst` particles at once at the point given to fire(), at the next step
+//    (an explosion the host sets off: a key, a script).
 // Spawn point = contact + spawn_height * up + a point uniform in a horizontal disc of
 // jitter_radius. A particle that fell due `a` seconds before the end of the step starts where
 // the wheel was then (contact - hub velocity * a) and is advanced by `a` exactly, so a trail is
@@ -111,6 +113,12 @@ public:
     void stepThroughField(glm::vec3& x, glm::vec3& v, glm::vec3 origin, glm::vec3 terminal,
                           double t, const DragStep& half, const DragStep& full) const;
 
+    /// on_demand: emits the burst at `point` in the next step (a second call before it moves it).
+    void fire(glm::vec3 point) {
+        firePending_ = true;
+        firePoint_ = point;
+    }
+
     /// Emission strength in [0, 1] of one wheel for this reaction (0 = the trigger is not met).
     static float wheelStrength(const ReactionDesc& desc, const WheelContact& wheel);
 
@@ -130,6 +138,8 @@ private:
     std::array<EmissionClock, kMaxWheels> clocks_{};
     bool burstArmed_ = true;
     double time_ = 0.0;
+    bool firePending_ = false;
+    glm::vec3 firePoint_{0.0f};
     glm::vec3 terminal_{0.0f};
     Counters counters_;
 };

@@ -196,6 +196,27 @@ ReactionStats PluginImpl::reactionStats(int index) const {
     return s;
 }
 
+ErrorCode PluginImpl::fireReaction(const std::string& name, const glm::vec3& point) {
+    if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z)) {
+        return errors_.refuse(ErrorCode::InvalidValue, "fireReaction", "non-finite point; expected world metres");
+    }
+    int fired = 0;
+    for (ReactionRuntime& r : runtimes_) {
+        const std::string& n = r.name();
+        const bool match = n == name || (n.size() > name.size() && n.compare(0, name.size(), name) == 0 &&
+                                         n[name.size()] == '.');
+        if (match && r.desc().type == ReactionType::OnDemand) {
+            r.fire(point);
+            ++fired;
+        }
+    }
+    if (fired == 0) {
+        return errors_.refuse(ErrorCode::InvalidValue, "fireReaction",
+                              "no on_demand reaction named '" + name + "' (or '" + name + ".<layer>') is loaded");
+    }
+    return ErrorCode::None;
+}
+
 ParticleCheck PluginImpl::checkParticles() const {
     ParticleCheck c;
     for (const ReactionRuntime& r : runtimes_) {

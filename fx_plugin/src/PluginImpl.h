@@ -51,6 +51,7 @@ public:
     ParticleCheck checkParticles() const override;
     bool pollShaderReload(Diagnostics* out) override;
     ReactionStats reactionStats(int index) const override;
+    ErrorCode fireReaction(const std::string& name, const glm::vec3& point) override;
 
     /// The renderer's entry; pass an empty function to remove it.
     void setRenderHook(RenderHook hook) { renderHook_ = std::move(hook); }

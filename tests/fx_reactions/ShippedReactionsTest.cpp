@@ -30,21 +30,23 @@ TEST(ShippedReactions, EveryFileLoadsWithoutDiagnostics) {
         EXPECT_TRUE(fx::loadReactionFile(e.path().string(), &set, &diags)) << e.path();
         EXPECT_TRUE(diags.empty()) << dump(diags);
     }
-    EXPECT_EQ(files, 6);
+    EXPECT_EQ(files, 7);
 }
 
-TEST(ShippedReactions, DirectoryLoadsSevenReactionsInFileOrder) {
+TEST(ShippedReactions, DirectoryLoadsTwelveReactionsInFileOrder) {
     fx::ReactionSet set;
     fx::Diagnostics diags;
     ASSERT_TRUE(fx::loadReactionDirectory(kReactionsDir, &set, &diags)) << dump(diags);
     EXPECT_TRUE(diags.empty());
-    ASSERT_EQ(set.reactions.size(), 7u);
+    ASSERT_EQ(set.reactions.size(), 12u);
     // Sorted file names: barrier_burst, barrier_scrape (three layers, in file order),
-    // burnout_smoke, none, offtrack_dust, tyre_steam.
+    // burnout_smoke, explosion (five layers), none, offtrack_dust, tyre_steam.
     const char* names[] = {"barrier_burst", "barrier_scrape.sparks", "barrier_scrape.flash",
-                           "barrier_scrape.smoke", "burnout_smoke", "offtrack_dust", "tyre_steam"};
-    for (size_t i = 0; i < 7; ++i) EXPECT_EQ(set.reactions[i].name, names[i]);
-    EXPECT_EQ(set.files.size(), 6u);
+                           "barrier_scrape.smoke", "burnout_smoke", "explosion.flash",
+                           "explosion.fireball", "explosion.smoke_shell", "explosion.sparks",
+                           "explosion.debris", "offtrack_dust", "tyre_steam"};
+    for (size_t i = 0; i < 12; ++i) EXPECT_EQ(set.reactions[i].name, names[i]);
+    EXPECT_EQ(set.files.size(), 7u);
 }
 
 TEST(ShippedReactions, NoneIsAValidEmptySet) {

@@ -102,4 +102,34 @@ TEST(Recipe, TheScrapeIsDeterministicAtFixedSeedAndDt) {
     }
 }
 
+TEST(Recipe, TheExplosionIsDeterministicAtFixedSeedAndDt) {
+    auto run = [](uint64_t seed) {
+        fx::ReactionSet set;
+        EXPECT_TRUE(fx::loadReactionFile(std::string(CUBE_SOURCE_DIR) + "/reactions/explosion.yaml", &set, nullptr));
+        std::vector<fx::ReactionRuntime> rs;
+        for (const fx::ReactionDesc& d : set.reactions) rs.emplace_back(d, seed);
+        for (auto& r : rs) r.fire(glm::vec3(3.0f, 0.5f, -1.0f));
+        for (int i = 0; i < 45; ++i) {
+            for (auto& r : rs) r.step(1.0f / 60.0f, nullptr, 0, 0.0f, glm::vec3(0.0f), glm::vec3(0.5f, 0.0f, 0.0f));
+        }
+        return rs;
+    };
+    auto a = run(3), b = run(3);
+    ASSERT_EQ(a.size(), 5u);
+    for (size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i].counters().bursts, 1u) << a[i].name();  // every layer fired once, together
+        if (a[i].stateless()) {
+            ASSERT_EQ(a[i].ring().written(), b[i].ring().written());
+            EXPECT_EQ(std::memcmp(a[i].ring().data(), b[i].ring().data(),
+                                  sizeof(fx::StatelessRecord) * size_t(a[i].ring().capacity())), 0);
+            continue;
+        }
+        ASSERT_EQ(a[i].pool().alive(), b[i].pool().alive()) << a[i].name();
+        const size_t n = size_t(a[i].pool().alive());
+        for (auto s : {fx::ParticlePool::PosX, fx::ParticlePool::PosY, fx::ParticlePool::PosZ}) {
+            EXPECT_EQ(std::memcmp(a[i].pool().stream(s), b[i].pool().stream(s), n * sizeof(float)), 0) << a[i].name();
+        }
+    }
+}
+
 }  // namespace

@@ -107,6 +107,16 @@ public:
         (void)index;
         return ReactionStats{};
     }
+
+    /// API 1.1: sets off every `on_demand` reaction named `name`, or whose name starts with
+    /// `name` + "." (the layers of a recipe fire together), at world `point`, in their next
+    /// continueReaction step. Refused: InvalidValue (a non-finite point, or no on_demand reaction
+    /// of that name). Not pure, so an adapter written against 1.0 still compiles.
+    virtual ErrorCode fireReaction(const std::string& name, const glm::vec3& point) {
+        (void)name;
+        (void)point;
+        return ErrorCode::InvalidValue;
+    }
 };
 
 /// What the host hands the plugin at creation. Defaults: this header's API version, no host
