@@ -43,7 +43,9 @@
 
 namespace {
 
-constexpr int kPoolStreams = fx::ParticlePool::StreamCount;  // 15 float streams
+// The 15 float streams the update touches without turbulence (OriginX/OriginZ, the vortex axis,
+// are read only by turbulent reactions and written once at birth).
+constexpr int kPoolStreams = fx::ParticlePool::OriginX;
 constexpr float kDt = 1.0f / 60.0f;
 
 // A collision burst that fills the whole pool at once with particles that live 60 s, so the
