@@ -9,6 +9,21 @@
 //                             per step (fx::makeDragStep), over N positions and velocities, N * 24 B
 //   BM_StreamRmw/6/N          its reference: 6 float arrays, 24 N bytes
 //   BM_Memcpy/N               memcpy of N * 60 B (each byte read once and written once)
+//   BM_StatelessStep/N        the same N particles as technique: stateless (a full ring of birth
+//                             records, 60 s lives): ReactionRuntime::step's CPU cost per frame, which
+//                             touches no particle (items = particles kept alive, so the per-particle
+//                             figure falls as N grows)
+//   BM_StatelessVertexWork/N  what the vertex shader does per frame for N stateless particles, run on
+//                             this CPU: the closed form (position, velocity, life, size, alpha) of
+//                             sim/StatelessParticle.h, once per quad corner (4 per particle). On a GPU
+//                             this runs in parallel off the CPU; under llvmpipe (no GPU) it IS CPU time.
+//
+// Stateless vs CPU: compare BM_ReactionRuntimeStep (CPU path, per particle per frame, before its
+// instance packing and upload) with BM_StatelessStep (stateless CPU cost) and
+// BM_StatelessVertexWork (where the work went). Run interleaved for ratios on a noisy machine:
+//   bench_sim --benchmark_filter='RuntimeStep|Stateless' --benchmark_repetitions=5
+//             --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true
+//             --benchmark_min_time=0.05
 //
 // items_per_second = particle updates per second; bytes_per_second compares each simulation
 // benchmark with the reference of the same size: sim / reference = share of the bandwidth-bound
@@ -22,11 +37,15 @@
 #include "reactions/ReactionDesc.h"
 #include "sim/Integrator.h"
 #include "sim/ParticlePool.h"
+#include "sim/Lifecycle.h"
 #include "sim/ReactionRuntime.h"
+#include "sim/StatelessParticle.h"
 
 namespace {
 
-constexpr int kPoolStreams = fx::ParticlePool::StreamCount;  // 15 float streams
+// The 15 float streams the update touches without turbulence (OriginX/OriginZ, the vortex axis,
+// are read only by turbulent reactions and written once at birth).
+constexpr int kPoolStreams = fx::ParticlePool::OriginX;
 constexpr float kDt = 1.0f / 60.0f;
 
 // A collision burst that fills the whole pool at once with particles that live 60 s, so the
@@ -122,12 +141,62 @@ void BM_Memcpy(benchmark::State& state) {
     state.SetBytesProcessed(int64_t(state.iterations()) * int64_t(bytes));
 }
 
+std::unique_ptr<fx::ReactionRuntime> filledStateless(int n) {
+    fx::ReactionDesc d = fullPoolDesc(n);
+    d.render.stateless = true;
+    d.render.blend = fx::BlendMode::Additive;
+    auto r = std::make_unique<fx::ReactionRuntime>(d);
+    r->step(kDt, nullptr, 0, 1.0f, glm::vec3(0.0f, 0.5f, 0.0f), glm::vec3(0.5f, 0.0f, 0.0f));
+    return r;
+}
+
+void BM_StatelessStep(benchmark::State& state) {
+    const int n = int(state.range(0));
+    auto runtime = filledStateless(n);
+    for (auto _ : state) {
+        runtime->step(kDt, nullptr, 0, 0.0f, glm::vec3(0.0f), glm::vec3(0.5f, 0.0f, 0.0f));
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * n);
+    state.counters["records"] = double(runtime->ring().written());
+}
+
+void BM_StatelessVertexWork(benchmark::State& state) {
+    const int n = int(state.range(0));
+    auto runtime = filledStateless(n);
+    const fx::StatelessRecord* rec = runtime->ring().data();
+    const fx::ParticleDesc& p = runtime->desc().particle;
+    const glm::vec3 u = runtime->terminal(), g(0.0f, -p.gravity, 0.0f);
+    float now = 1.0f;
+    for (auto _ : state) {
+        now += kDt;
+        float sink = 0.0f;
+        for (int i = 0; i < n; ++i) {
+            const fx::StatelessRecord& r = rec[i];
+            for (int corner = 0; corner < 4; ++corner) {  // the shader runs per vertex
+                const float age = now - r.birth;
+                const glm::vec3 p0(r.p0[0], r.p0[1], r.p0[2]), v0(r.v0[0], r.v0[1], r.v0[2]);
+                const glm::vec3 x = fx::statelessPosition(p0, v0, u, g, p.drag, age);
+                const glm::vec3 v = fx::statelessVelocity(v0, u, g, p.drag, age);
+                const float f = age / r.lifetime;
+                const float size = fx::sizeAt(p, r.startSize, r.endSize, f);
+                const float alpha = fx::fadeAt(p, f) * fx::evalColorRamp(p.colorRamp, f).a;
+                sink += x.x + x.y + x.z + v.x + size * alpha + float(corner);
+            }
+        }
+        benchmark::DoNotOptimize(sink);
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * n);
+}
+
 // 1k (L1/L2), 10k, 100k (L2/L3), 1M particles (DRAM: 60 MB of pool).
 BENCHMARK(BM_ReactionRuntimeStep)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000);
 BENCHMARK(BM_StreamRmw)->Args({15, 1000})->Args({15, 10000})->Args({15, 100000})->Args({15, 1000000});
 BENCHMARK(BM_ApplyDragStep)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000);
 BENCHMARK(BM_StreamRmw)->Args({6, 1000})->Args({6, 10000})->Args({6, 100000})->Args({6, 1000000});
 BENCHMARK(BM_Memcpy)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000);
+BENCHMARK(BM_StatelessStep)->Arg(100)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000);
+BENCHMARK(BM_StatelessVertexWork)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000);
 
 }  // namespace
 

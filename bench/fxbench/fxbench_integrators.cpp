@@ -1,5 +1,6 @@
 #include "fxbench_integrators.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +11,7 @@
 // The plugin's integrators are internal to fx_plugin (no public header): fxbench reaches the
 // header by path, and links the functions through fx_plugin as engine_stub does.
 #include "sim/Integrator.h"
+#include "sim/ReactionRuntime.h"
 
 namespace fxbench {
 
@@ -65,6 +67,129 @@ double msPerMillion(Fn&& stepAll, int particles) {
         if (ms > 150.0 || steps > (1 << 20)) return ms / (double(steps) * particles / 1e6);
         steps *= 2;
     }
+}
+
+// --- turbulence: the same simulated time at several step rates ------------------------------
+
+// The swirl of the tests (tests/fx_sim/TurbulenceTest.cpp): 64 puffs thrown out at up to 3 m/s,
+// drag 1.2 /s, curl noise 1.5 m/s at 1.5 m scale (3 octaves), a 1.2 m/s vortex of 0.8 m core.
+fx::ReactionDesc swirlDesc() {
+    fx::ReactionDesc d = fx::defaultReaction(fx::ReactionType::CollisionBurst);
+    d.name = "swirl";
+    d.emission.burst = d.emission.capacity = 64;
+    d.particle.lifetimeMin = d.particle.lifetimeMax = 10.0f;
+    d.particle.spreadSpeed = 3.0f;
+    d.turbulence.strength = 1.5f;
+    d.turbulence.scale = 1.5f;
+    d.turbulence.speed = 0.8f;
+    d.turbulence.octaves = 3;
+    d.vortex.strength = 1.2f;
+    d.vortex.radius = 0.8f;
+    return d;
+}
+
+struct Swirl {
+    std::vector<glm::vec3> x, v;
+    glm::vec3 origin{0.0f, 0.5f, 0.0f};
+};
+
+// The burst's particles as the pool emits them (same seed, same spawn path).
+Swirl swirlStart(const fx::ReactionRuntime& rt) {
+    Swirl s;
+    const fx::ParticlePool& p = rt.pool();
+    for (int i = 0; i < p.alive(); ++i) {
+        s.x.emplace_back(p.posX()[i], p.posY()[i], p.posZ()[i]);
+        s.v.emplace_back(p.stream(fx::ParticlePool::VelX)[i], p.stream(fx::ParticlePool::VelY)[i],
+                         p.stream(fx::ParticlePool::VelZ)[i]);
+    }
+    return s;
+}
+
+// One step of every particle from time t: exponential Euler (air sampled at the start) or the
+// runtime's exponential midpoint (fx::ReactionRuntime::stepThroughField).
+void swirlStep(const fx::ReactionRuntime& rt, Swirl& s, glm::vec3 terminal, double t, float dt,
+               bool midpoint) {
+    const float k = rt.desc().particle.drag;
+    const fx::DragStep half = fx::makeDragStep(k, 0.5f * dt), full = fx::makeDragStep(k, dt);
+    for (size_t i = 0; i < s.x.size(); ++i) {
+        if (midpoint) {
+            rt.stepThroughField(s.x[i], s.v[i], s.origin, terminal, t, half, full);
+        } else {
+            fx::applyDragStep(full, rt.airVelocity(terminal, s.x[i], s.origin, t), s.x[i], s.v[i]);
+        }
+    }
+}
+
+std::vector<glm::vec3> swirlAfter(const fx::ReactionRuntime& rt, glm::vec3 terminal, int hz,
+                                  double seconds, bool midpoint) {
+    Swirl s = swirlStart(rt);
+    const int steps = int(std::lround(seconds * hz));
+    const float dt = 1.0f / float(hz);
+    for (int n = 0; n < steps; ++n) swirlStep(rt, s, terminal, rt.time() + double(n) / hz, dt, midpoint);
+    return s.x;
+}
+
+double maxDistance(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
+    double e = 0.0;
+    for (size_t i = 0; i < a.size() && i < b.size(); ++i) e = std::max(e, double(glm::length(a[i] - b[i])));
+    return e;
+}
+
+std::string turbulenceSection() {
+    std::string o;
+    char line[512];
+    fx::ReactionRuntime rt(swirlDesc(), 42);
+    const glm::vec3 wind(0.4f, 0.0f, 0.0f);
+    rt.step(1.0f / 3000.0f, nullptr, 0, 1.0f, glm::vec3(0.0f, 0.5f, 0.0f), wind);
+    const fx::ParticleDesc& p = rt.desc().particle;
+    const glm::vec3 terminal = fx::terminalVelocity(wind, p.windFactor, p.riseSpeed);
+    const double T = 3.0;
+    const auto reference = swirlAfter(rt, terminal, 3000, T, true);
+
+    o += "\n### Turbulence: curl noise + vortex, the same 3 s at several step rates\n\n";
+    o += "64 puffs (tests/fx_sim/TurbulenceTest.cpp's swirl: drag 1.2 /s, curl noise 1.5 m/s at 1.5 m, "
+         "3 octaves, vortex 1.2 m/s, core 0.8 m, wind 0.4 m/s). Error = max over the puffs of "
+         "|x(3 s) - x_3000Hz(3 s)| in metres; cost = ns per particle update on this machine (4096 "
+         "particles stepped repeatedly). The drag part of both steps is exact (stable for any k dt); they "
+         "differ in where the air velocity is sampled.\n\n";
+    o += "| rate (Hz) | exp. Euler error (m) | exp. midpoint error (m) | midpoint vs 300 Hz (m) |\n"
+         "|---:|---:|---:|---:|\n";
+    const auto x300 = swirlAfter(rt, terminal, 300, T, true);
+    for (int hz : {30, 60, 120, 300}) {
+        const auto e = swirlAfter(rt, terminal, hz, T, false);
+        const auto m = swirlAfter(rt, terminal, hz, T, true);
+        std::snprintf(line, sizeof line, "| %d | %.3g | %.3g | %.3g |\n", hz, maxDistance(e, reference),
+                      maxDistance(m, reference), maxDistance(m, x300));
+        o += line;
+    }
+    // Cost, both methods in one interleaved run (alternating batches; medians of 7).
+    constexpr int kN = 4096;
+    Swirl many;
+    for (int i = 0; i < kN; ++i) {
+        many.x.emplace_back(0.01f * float(i % 64), 0.5f + 0.003f * float(i), -0.02f * float(i % 17));
+        many.v.emplace_back(1.0f, 0.5f, 0.0f);
+    }
+    std::vector<double> ns[2];
+    for (int rep = 0; rep < 7; ++rep) {
+        for (int midpoint = 0; midpoint < 2; ++midpoint) {
+            Swirl s = many;
+            ns[midpoint].push_back(msPerMillion(
+                [&] { swirlStep(rt, s, terminal, 1.0, 1.0f / 60.0f, midpoint != 0); }, kN));
+        }
+    }
+    for (auto& v : ns) std::sort(v.begin(), v.end());
+    std::snprintf(line, sizeof line,
+                  "\nCost (medians of 7 interleaved batches): exponential Euler %.1f ns/update, exponential "
+                  "midpoint (the runtime's step) %.1f ns/update, ratio %.2f; the constant-air exact step above "
+                  "costs a few ns.\n",
+                  ns[0][3], ns[1][3], ns[1][3] / ns[0][3]);
+    o += line;
+    o += "\nThe midpoint error falls about 4x per halving of the step (second order) down to a floor of about "
+         "1-2 mm: the float rounding of 9000 reference steps, not the method (the 300 Hz column compares "
+         "against 300 Hz itself).\n";
+    o += "\nStated error (reactions/README.md): with turbulence, 3 s at 30 Hz lands within 5 cm of the 300 Hz "
+         "path (tests: TurbulenceStep.ThirtyAndThreeHundredHertzAgreeWithinTheStatedError).\n";
+    return o;
 }
 
 }  // namespace
@@ -142,6 +267,7 @@ std::string integratorReport() {
                   hoisted);
     o += line;
     (void)sink;
+    o += turbulenceSection();
     o += "\n(bench_sim measures the whole particle update through "
          "fx::ReactionRuntime against a memory-bandwidth reference.)\n";
     return o;

@@ -179,7 +179,12 @@ void Game::Update(float dt) {
     if (!std::isfinite(dt) || dt < 0.0f) dt = 0.0f;
     dt = std::min(dt, 10.0f);
     if (options_.watch) specialFX_.pollHotReload(scene_);
+    // --explode-at: the explosion recipe fires once, at the car, in the step that reaches T.
+    const bool explode = options_.explodeAt >= 0.0 && time_ < options_.explodeAt && time_ + dt >= options_.explodeAt;
     time_ += dt;
+    if (explode && specialFX_.plugin()) {
+        specialFX_.plugin()->fireReaction("explosion", vehicle_.pose().position + glm::vec3(0.0f, 0.3f, 0.0f));
+    }
     vehicle_.update(sceneData_, options_.stationaryCar ? options_.startTime : time_, options_.stationaryCar);
     updateCameras(dt);
     specialFX_.Dyn(dt, vehicle_);
@@ -256,6 +261,19 @@ bool Game::writeStatsJson(const std::string& path, std::string* error) const {
         return s + "}";
     };
     const fx::Stats fs = specialFX_.plugin() ? specialFX_.plugin()->stats() : fx::Stats{};
+    // Per reaction, as the plugin counts it (API 1.1); [] on the legacy path.
+    std::string reactionStats = "[";
+    if (fx::Plugin* plugin = specialFX_.plugin()) {
+        for (int i = 0; i < plugin->reactionCount(); ++i) {
+            const fx::ReactionStats rs = plugin->reactionStats(i);
+            reactionStats += std::string(i ? "," : "") + "\n    {\"name\": " + jsonString(rs.name) +
+                             ", \"technique\": " + jsonString(rs.technique) +
+                             ", \"alive\": " + std::to_string(rs.alive) +
+                             ", \"emitted\": " + std::to_string(rs.emitted) + "}";
+        }
+        if (plugin->reactionCount() > 0) reactionStats += "\n  ";
+    }
+    reactionStats += "]";
     char median_s[64];
     std::snprintf(median_s, sizeof median_s, "%.4f", median);
     out << "{\n"
@@ -268,6 +286,7 @@ bool Game::writeStatsJson(const std::string& path, std::string* error) const {
         << "  \"particles_drawn\": " << fs.particlesDrawn << ",\n"
         << "  \"reloads\": " << fs.reloads << ",\n"
         << "  \"reload_errors\": " << fs.reloadErrors << ",\n"
+        << "  \"reaction_stats\": " << reactionStats << ",\n"
         << "  \"passes_run\": " << list(r.executed) << ",\n"
         << "  \"passes_culled\": " << list(r.culled) << ",\n"
         << "  \"pass_run_frames\": " << counts(passRuns_) << ",\n"

@@ -106,6 +106,7 @@ std::string usage() {
         "  --size WxH             view size, 1..16384 each (default 1280x1024)\n"
         "  --fixed-dt S           fixed time step in seconds, 0..10 (default: wall clock)\n"
         "  --start S              seconds into the scripted drive at frame 0 (default 0)\n"
+        "  --explode-at T         fire reactions/explosion.yaml at the car at drive time T s\n"
         "  --seed N               random seed, 0..4294967295 (default 1)\n"
         "  --screenshot PATH      PNG of the last frame\n"
         "  --screenshot-every K DIR  PNG every K frames into DIR\n"
@@ -190,6 +191,13 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
                 return false;
             }
             o.startTime = d;
+        } else if (a == "--explode-at") {
+            if (!need(i, 1, a)) return false;
+            if (!parseDouble(argv[++i], 0.0, 1e6, &d)) {
+                *error = "--explode-at: expected seconds in 0..1e6, got '" + std::string(argv[i]) + "'";
+                return false;
+            }
+            o.explodeAt = d;
         } else if (a == "--seed") {
             if (!need(i, 1, a)) return false;
             if (!parseInt(argv[++i], 0, 4294967295LL, &n)) {

@@ -46,6 +46,7 @@ struct Options {
     bool effects = true;          ///< false: the bare engine, no particle passes at all
     int poolFramesUntilFree = 3;  ///< render targets unused this many frames are freed
     bool stationaryCar = false;   ///< the car holds its start pose, velocity 0 (wheels still spin)
+    double explodeAt = -1.0;      ///< drive time (s) at which the explosion recipe fires at the car; < 0 = never
     bool fixedCamera = false;     ///< chase view from cameraEye towards cameraTarget (world space)
     float cameraEye[3] = {0.0f, 2.0f, 8.0f};
     float cameraTarget[3] = {0.0f, 0.0f, 0.0f};

@@ -10,12 +10,13 @@
 #include <glm/glm.hpp>
 
 #include "fx/Plugin.h"  // Technique
+#include "sim/CurlNoise.h"  // TurbulenceDesc, VortexDesc
 #include "fx/Types.h"   // Surface
 
 namespace fx {
 
 /// Which per-type behaviour ("continue") a reaction runs.
-enum class ReactionType : uint8_t { WheelSmoke = 0, Dust, CollisionBurst };
+enum class ReactionType : uint8_t { WheelSmoke = 0, Dust, CollisionBurst, CollisionScrape, OnDemand };
 /// Which wheels a wheel-driven reaction watches.
 enum class WheelSet : uint8_t { Rear = 0, Front, All };
 /// How particles combine with what is behind them. Additive is order-independent (never sorted).
@@ -34,7 +35,7 @@ struct TriggerDesc {
 
 /// How many particles. Defaults: 80/s at full slip, no burst, 1024 slots.
 struct EmissionDesc {
-    float rate = 80.0f;            ///< [0, 100000] particles/s at full strength (wheel_smoke, dust)
+    float rate = 80.0f;            ///< [0, 100000] particles/s at full strength (wheel_smoke, dust, collision_scrape)
     int burst = 0;                 ///< [0, capacity] particles per collision at amount 1 (collision_burst)
     int capacity = 1024;           ///< [1, 1000000] pool slots, allocated once at load
     float spawnHeight = 0.15f;     ///< [-10, 10] m above the contact point
@@ -47,6 +48,13 @@ struct ColorStop {
     glm::vec4 rgba{1.0f};          ///< each channel [0, 1], straight (not premultiplied) alpha
 };
 
+/// One point of an over-life curve (alpha_over_life, size_over_life): value v at life fraction
+/// t, piecewise linear in between, held flat before the first and after the last point.
+struct CurvePoint {
+    float t = 0.0f;                ///< [0, 1] life fraction, non-decreasing along the curve
+    float v = 0.0f;                ///< [0, 1]
+};
+
 /// One particle's life. Defaults: 2-3.5 s, grows 0.4 m -> 3 m, rises at 0.6 m/s.
 struct ParticleDesc {
     float lifetimeMin = 2.0f;      ///< [0.01, 60] s
@@ -57,6 +65,7 @@ struct ParticleDesc {
     float riseSpeed = 0.6f;        ///< [-50, 50] m/s terminal upward speed (buoyancy)
     float drag = 1.2f;             ///< [0, 1e6] 1/s, rate at which velocity relaxes to terminal
     float windFactor = 1.0f;       ///< [0, 10] share of the ambient wind in the terminal velocity
+    float gravity = 0.0f;          ///< [0, 100] m/s^2 downward acceleration besides the drag (sparks, debris)
     float spreadSpeed = 0.5f;      ///< [0, 100] m/s random initial speed, random upward-hemisphere direction
     float inheritVelocity = 0.3f;  ///< [0, 2] share of the wheel hub velocity at birth
     float spinMin = -0.6f;         ///< [-50, 50] rad/s
@@ -66,11 +75,21 @@ struct ParticleDesc {
     std::vector<ColorStop> colorRamp{ColorStop{0.0f, glm::vec4(1.0f)}, ColorStop{1.0f, glm::vec4(1.0f)}};
     int atlasFirst = 0;            ///< [0, 3] first frame of the 2x2 atlas (row-major from top-left)
     int atlasCount = 4;            ///< [1, 4] frames picked at random per particle; first + count <= 4
+    /// Empty (default) = the fade_in/fade_out smoothsteps. Given: the alpha factor over life,
+    /// replacing them (the file may not give both).
+    std::vector<CurvePoint> alphaOverLife;
+    /// Empty (default) = growthCurve (ease-out). Given: the share of the way from start_size to
+    /// end_size over life.
+    std::vector<CurvePoint> sizeOverLife;
 };
 
 /// How it is drawn. Defaults: soft particles, alpha blending, sorted.
 struct RenderDesc {
     Technique technique = Technique::Soft;  ///< Hard, Soft or Spherical (never FromReaction)
+    /// `technique: stateless` in the file: birth records evaluated in the vertex shader (no CPU
+    /// update), drawn as hard billboards (technique is then Hard). Private to the plugin: the
+    /// public Technique enum is the run-time override, which stateless particles ignore.
+    bool stateless = false;
     BlendMode blend = BlendMode::Alpha;
     float softness = 0.5f;         ///< [1e-6, 1e6] m of depth difference over which the soft fade reaches 1
     float contrastPower = 1.0f;    ///< [0.1, 16] exponent of the soft-fade contrast curve, 1 = linear
@@ -86,6 +105,8 @@ struct ReactionDesc {
     EmissionDesc emission;
     ParticleDesc particle;
     RenderDesc render;
+    TurbulenceDesc turbulence;     ///< curl-noise air motion added to the terminal velocity
+    VortexDesc vortex;             ///< spiral around the vertical axis through each particle's emitter
     std::string sourceFile;        ///< where it was read, for messages
     int sourceLine = 0;            ///< 1-based line of the reaction's first key
 };
@@ -93,6 +114,8 @@ struct ReactionDesc {
 /// The defaults for one type; the loader starts from these and overlays the file's keys.
 /// dust: slip >= 0, grass/gravel/sand, all wheels, min_speed 2 m/s.
 /// collision_burst: burst 24, all wheels (wheels and surfaces are not used by bursts).
+/// collision_scrape: like collision_burst's trigger, emitting `rate` x amount per second while in
+/// contact.
 inline ReactionDesc defaultReaction(ReactionType type) {
     ReactionDesc d;
     d.type = type;
@@ -107,6 +130,13 @@ inline ReactionDesc defaultReaction(ReactionType type) {
         d.trigger.minSpeed = 2.0f;
         break;
     case ReactionType::CollisionBurst:
+        d.trigger.wheels = WheelSet::All;
+        d.emission.burst = 24;
+        break;
+    case ReactionType::CollisionScrape:
+        d.trigger.wheels = WheelSet::All;
+        break;
+    case ReactionType::OnDemand:
         d.trigger.wheels = WheelSet::All;
         d.emission.burst = 24;
         break;
@@ -125,6 +155,8 @@ constexpr int kMaxCapacity = 1000000;            ///< per reaction
 constexpr long long kMaxTotalCapacity = 4000000; ///< summed over one set (about 250 MB of pools)
 constexpr int kMaxReactionsPerFile = 256;
 constexpr int kMaxColorStops = 16;
+constexpr int kMaxCurvePoints = 16;
+constexpr int kMaxLayers = 8;                    ///< layers of one layered reaction
 constexpr int kMaxNesting = 16;                  ///< collection levels in a file
 constexpr size_t kMaxFileBytes = 4u << 20;       ///< 4 MiB
 constexpr size_t kMaxDiagnosticsPerFile = 100;   ///< then one TooManyErrors

@@ -8,6 +8,8 @@ const char* reactionTypeName(ReactionType type) {
     case ReactionType::WheelSmoke: return "wheel_smoke";
     case ReactionType::Dust: return "dust";
     case ReactionType::CollisionBurst: return "collision_burst";
+    case ReactionType::CollisionScrape: return "collision_scrape";
+    case ReactionType::OnDemand: return "on_demand";
     }
     return "?";
 }

@@ -8,7 +8,8 @@ namespace {
 using YAML::Node;
 
 constexpr std::initializer_list<const char*> kTypeWords = {"wheel_smoke", "dust",
-                                                           "collision_burst"};
+                                                           "collision_burst", "collision_scrape",
+                                                           "on_demand"};
 constexpr std::initializer_list<const char*> kSurfaceWords = {"asphalt", "kerb", "grass",
                                                               "gravel", "sand"};
 
@@ -162,12 +163,57 @@ void readColorRamp(YamlCheck& c, const Node& node, const std::string& p,
     if (ok) *out = std::move(stops);
 }
 
+// An over-life curve: 1-16 points {t, v}, t in [0, 1] non-decreasing, v in [lo, hi].
+void readCurve(YamlCheck& c, const Node& node, const std::string& p, double lo, double hi,
+               std::vector<CurvePoint>* out) {
+    if (!c.isList(node, p, 1, kMaxCurvePoints)) return;
+    std::vector<CurvePoint> points;
+    std::vector<YAML::Mark> tMarks;
+    bool ok = true;
+    size_t i = 0;
+    for (auto it = node.begin(); it != node.end(); ++it, ++i) {
+        const std::string sp = indexed(p, i);
+        if (!c.isMap(*it, sp)) {
+            ok = false;
+            continue;
+        }
+        MapReader m(c, *it, sp, {"t", "v"});
+        CurvePoint point;
+        for (const char* key : {"t", "v"}) {
+            const Node* n = m.get(key);
+            const bool isT = key[0] == 't';
+            if (!n) {
+                c.report(ErrorCode::MissingKey, it->Mark(), m.path(key),
+                         isT ? std::string("missing required key 't' (life fraction in [0, 1])")
+                             : "missing required key 'v' (a number in [" + std::to_string(lo) +
+                                   ", " + std::to_string(hi) + "])");
+                ok = false;
+            } else {
+                ok = c.number(*n, m.path(key), isT ? 0.0 : lo, isT ? 1.0 : hi,
+                              isT ? &point.t : &point.v) && ok;
+            }
+        }
+        points.push_back(point);
+        tMarks.push_back(m.get("t") ? m.get("t")->Mark() : it->Mark());
+    }
+    if (!ok) return;
+    for (size_t k = 1; k < points.size(); ++k) {
+        if (points[k].t < points[k - 1].t) {
+            c.report(ErrorCode::OutOfRange, tMarks[k], indexed(p, k) + ".t",
+                     "expected t >= the previous point's " + std::to_string(points[k - 1].t) +
+                         " (points in order of life), got " + std::to_string(points[k].t));
+            return;
+        }
+    }
+    *out = std::move(points);
+}
+
 void readParticle(YamlCheck& c, const Node& node, const std::string& path, ParticleDesc* d) {
     if (!c.isMap(node, path)) return;
     MapReader m(c, node, path,
                 {"lifetime", "start_size", "end_size", "size_variation", "rise_speed", "drag",
-                 "wind_factor", "spread_speed", "inherit_velocity", "spin", "fade_in", "fade_out",
-                 "colour_ramp", "atlas"});
+                 "wind_factor", "gravity", "spread_speed", "inherit_velocity", "spin", "fade_in", "fade_out",
+                 "colour_ramp", "atlas", "alpha_over_life", "size_over_life"});
     optRange(c, m, "lifetime", 0.01, 60.0, &d->lifetimeMin, &d->lifetimeMax);
     optNumber(c, m, "start_size", 0.0, 10000.0, &d->startSize);
     optNumber(c, m, "end_size", 0.0, 10000.0, &d->endSize);
@@ -175,6 +221,7 @@ void readParticle(YamlCheck& c, const Node& node, const std::string& path, Parti
     optNumber(c, m, "rise_speed", -50.0, 50.0, &d->riseSpeed);
     optNumber(c, m, "drag", 0.0, 1.0e6, &d->drag);
     optNumber(c, m, "wind_factor", 0.0, 10.0, &d->windFactor);
+    optNumber(c, m, "gravity", 0.0, 100.0, &d->gravity);
     optNumber(c, m, "spread_speed", 0.0, 100.0, &d->spreadSpeed);
     optNumber(c, m, "inherit_velocity", 0.0, 2.0, &d->inheritVelocity);
     optRange(c, m, "spin", -50.0, 50.0, &d->spinMin, &d->spinMax);
@@ -186,6 +233,20 @@ void readParticle(YamlCheck& c, const Node& node, const std::string& path, Parti
                  m.path(key),
                  "expected fade_in + fade_out <= 1, got " + std::to_string(d->fadeIn) + " + " +
                      std::to_string(d->fadeOut));
+    }
+    if (const Node* n = m.get("alpha_over_life")) {
+        // The curve replaces the fades: both at once would leave the reader guessing which wins.
+        for (const char* fadeKey : {"fade_in", "fade_out"}) {
+            if (m.get(fadeKey)) {
+                c.report(ErrorCode::OutOfRange, m.get(fadeKey)->Mark(), m.path(fadeKey),
+                         std::string("expected either alpha_over_life or ") + fadeKey +
+                             ", not both (the curve replaces fade_in and fade_out)");
+            }
+        }
+        readCurve(c, *n, m.path("alpha_over_life"), 0.0, 1.0, &d->alphaOverLife);
+    }
+    if (const Node* n = m.get("size_over_life")) {
+        readCurve(c, *n, m.path("size_over_life"), 0.0, 1.0, &d->sizeOverLife);
     }
     if (const Node* n = m.get("colour_ramp")) readColorRamp(c, *n, m.path("colour_ramp"), &d->colorRamp);
     if (const Node* n = m.get("atlas")) {
@@ -211,7 +272,14 @@ void readRender(YamlCheck& c, const Node& node, const std::string& path, RenderD
     MapReader m(c, node, path,
                 {"technique", "blend", "softness", "contrast_power", "near_fade",
                  "sort_back_to_front"});
-    optChoice(c, m, "technique", {"hard", "soft", "spherical"}, Technique::Hard, &r->technique);
+    if (const Node* n = m.get("technique")) {
+        int i = 0;
+        if (c.choice(*n, m.path("technique"), {"hard", "soft", "spherical", "stateless"}, &i)) {
+            r->stateless = i == 3;
+            r->technique = r->stateless ? Technique::Hard
+                                        : static_cast<Technique>(static_cast<int>(Technique::Hard) + i);
+        }
+    }
     optChoice(c, m, "blend", {"alpha", "premultiplied", "additive"}, BlendMode::Alpha, &r->blend);
     optNumber(c, m, "softness", 1.0e-6, 1.0e6, &r->softness);
     optNumber(c, m, "contrast_power", 0.1, 16.0, &r->contrastPower);
@@ -221,11 +289,85 @@ void readRender(YamlCheck& c, const Node& node, const std::string& path, RenderD
     }
 }
 
-// Returns the mark of the name (for duplicate reports), or the map's mark when it has none.
-YAML::Mark readReaction(YamlCheck& c, const Node& node, const std::string& path,
-                        ReactionDesc* out) {
-    if (!c.isMap(node, path)) return node.Mark();
-    MapReader m(c, node, path, {"name", "type", "trigger", "emission", "particle", "render"});
+void readTurbulence(YamlCheck& c, const Node& node, const std::string& path, TurbulenceDesc* t) {
+    if (!c.isMap(node, path)) return;
+    MapReader m(c, node, path, {"strength", "scale", "speed", "octaves"});
+    optNumber(c, m, "strength", 0.0, 50.0, &t->strength);
+    optNumber(c, m, "scale", 0.01, 1000.0, &t->scale);
+    optNumber(c, m, "speed", 0.0, 100.0, &t->speed);
+    optInteger(c, m, "octaves", 1, 6, &t->octaves);
+}
+
+void readVortex(YamlCheck& c, const Node& node, const std::string& path, VortexDesc* v) {
+    if (!c.isMap(node, path)) return;
+    MapReader m(c, node, path, {"strength", "radius"});
+    optNumber(c, m, "strength", -50.0, 50.0, &v->strength);
+    optNumber(c, m, "radius", 0.01, 100.0, &v->radius);
+}
+
+// A stateless particle is a closed form of its age: nothing that needs the particle's path
+// (turbulence, vortex) and nothing that needs sorting (it is drawn unsorted, so additive only).
+void checkStateless(YamlCheck& c, const MapReader& m, const ReactionDesc& d) {
+    for (const char* key : {"turbulence", "vortex"}) {
+        const Node* n = m.get(key);
+        const bool on = key[0] == 't' ? d.turbulence.enabled() : d.vortex.enabled();
+        if (n && on) {
+            c.report(ErrorCode::OutOfRange, n->Mark(), m.path(key),
+                     std::string("expected no ") + key +
+                         " with technique stateless (its particles follow a closed form of time; "
+                         "use a CPU technique for turbulent motion)");
+        }
+    }
+    if (d.render.blend != BlendMode::Additive) {
+        const Node* render = m.get("render");
+        YAML::Mark mark = render ? render->Mark() : YAML::Mark();
+        if (render && render->IsMap() && (*render)["blend"]) mark = (*render)["blend"].Mark();
+        c.report(ErrorCode::OutOfRange, mark, m.path("render") + ".blend",
+                 std::string("expected blend additive with technique stateless (stateless particles are "
+                             "drawn unsorted), got ") + blendModeName(d.render.blend));
+    }
+}
+
+// One reaction, or the reactions of a layered one, appended to `outs` with the mark of each
+// name (for duplicate reports). A layered reaction ({name, trigger, layers}) expands here into
+// one reaction per layer, named "<name>.<layer name>", each with its own type, technique and
+// blend, and a trigger read from the parent's trigger and then the layer's own: the layers fire
+// together on the same contact, and the runtime and renderer see plain reactions.
+void readReaction(YamlCheck& c, const Node& node, const std::string& path, bool isLayer,
+                  const Node* parentTrigger, const std::string& namePrefix, std::vector<ReactionDesc>* outs,
+                  std::vector<YAML::Mark>* nameMarks) {
+    if (!c.isMap(node, path)) return;
+    MapReader m(c, node, path, {"name", "type", "trigger", "emission", "particle", "render",
+                                "turbulence", "vortex", "layers"});
+
+    if (const Node* layers = m.get("layers")) {
+        if (isLayer) {
+            c.report(ErrorCode::OutOfRange, layers->Mark(), m.path("layers"),
+                     "expected no layers inside a layer (layers nest one level)");
+            return;
+        }
+        for (const char* key : {"type", "emission", "particle", "render", "turbulence", "vortex"}) {
+            if (const Node* n = m.get(key)) {
+                c.report(ErrorCode::OutOfRange, n->Mark(), m.path(key),
+                         std::string("expected only name, trigger and layers in a layered reaction; ") +
+                             "move '" + key + "' into a layer");
+            }
+        }
+        std::string name;
+        if (const Node* n = m.get("name")) {
+            c.name(*n, m.path("name"), &name);
+        } else {
+            c.report(ErrorCode::MissingKey, node.Mark(), m.path("name"),
+                     "missing required key 'name' (a unique name for the reaction)");
+        }
+        if (!c.isList(*layers, m.path("layers"), 1, kMaxLayers)) return;
+        size_t i = 0;
+        for (auto it = layers->begin(); it != layers->end(); ++it, ++i) {
+            readReaction(c, *it, indexed(m.path("layers"), i), true, m.get("trigger"),
+                         name.empty() ? std::string() : name + ".", outs, nameMarks);
+        }
+        return;
+    }
 
     // The type decides the defaults, so it is read first; an invalid type validates the rest
     // against the wheel_smoke defaults (the reaction is rejected either way).
@@ -235,7 +377,7 @@ YAML::Mark readReaction(YamlCheck& c, const Node& node, const std::string& path,
         if (c.choice(*n, m.path("type"), kTypeWords, &i)) type = static_cast<ReactionType>(i);
     } else {
         c.report(ErrorCode::MissingKey, node.Mark(), m.path("type"),
-                 "missing required key 'type'; expected one of wheel_smoke|dust|collision_burst");
+                 "missing required key 'type'; expected one of wheel_smoke|dust|collision_burst|collision_scrape|on_demand");
     }
     ReactionDesc d = defaultReaction(type);
     d.sourceFile = c.file();
@@ -245,16 +387,32 @@ YAML::Mark readReaction(YamlCheck& c, const Node& node, const std::string& path,
     if (const Node* n = m.get("name")) {
         c.name(*n, m.path("name"), &d.name);
         nameMark = n->Mark();
+        // A layer's full name must still be a valid name (length).
+        if (!d.name.empty() && !namePrefix.empty()) {
+            d.name = namePrefix + d.name;
+            if (d.name.size() > 64) {
+                c.report(ErrorCode::OutOfRange, n->Mark(), m.path("name"),
+                         "expected the layered name '" + d.name + "' to have at most 64 characters");
+                d.name.clear();
+            }
+        } else if (isLayer && namePrefix.empty()) {
+            d.name.clear();  // the parent's name was invalid: already reported
+        }
     } else {
         c.report(ErrorCode::MissingKey, node.Mark(), m.path("name"),
                  "missing required key 'name' (a unique name for the reaction)");
     }
+    // The parent's trigger (reported against its own keys; a bad one is reported per layer).
+    if (parentTrigger) readTrigger(c, *parentTrigger, path.substr(0, path.rfind(".layers[")) + ".trigger", &d.trigger);
     if (const Node* n = m.get("trigger")) readTrigger(c, *n, m.path("trigger"), &d.trigger);
     if (const Node* n = m.get("emission")) readEmission(c, *n, m.path("emission"), &d.emission);
     if (const Node* n = m.get("particle")) readParticle(c, *n, m.path("particle"), &d.particle);
     if (const Node* n = m.get("render")) readRender(c, *n, m.path("render"), &d.render);
-    *out = std::move(d);
-    return nameMark;
+    if (const Node* n = m.get("turbulence")) readTurbulence(c, *n, m.path("turbulence"), &d.turbulence);
+    if (const Node* n = m.get("vortex")) readVortex(c, *n, m.path("vortex"), &d.vortex);
+    if (d.render.stateless) checkStateless(c, m, d);
+    outs->push_back(std::move(d));
+    nameMarks->push_back(nameMark);
 }
 
 }  // namespace
@@ -275,25 +433,29 @@ void readReactionDocument(YamlCheck& c, const YAML::Node& root, std::vector<Reac
     size_t i = 0;
     for (auto it = list->begin(); it != list->end(); ++it, ++i) {
         const std::string path = indexed("reactions", i);
-        ReactionDesc d;
-        YAML::Mark nameMark = readReaction(c, *it, path, &d);
-        if (d.name.empty()) continue;  // not a map, or no valid name: already reported
-        for (const ReactionDesc& earlier : *out) {
-            if (earlier.name == d.name) {
-                c.report(ErrorCode::DuplicateName, nameMark, path + ".name",
-                         "reaction name '" + d.name + "' is already used at line " +
-                             std::to_string(earlier.sourceLine));
-                break;
+        std::vector<ReactionDesc> read;
+        std::vector<YAML::Mark> marks;
+        readReaction(c, *it, path, false, nullptr, std::string(), &read, &marks);
+        for (size_t r = 0; r < read.size(); ++r) {
+            ReactionDesc& d = read[r];
+            if (d.name.empty()) continue;  // not a map, or no valid name: already reported
+            for (const ReactionDesc& earlier : *out) {
+                if (earlier.name == d.name) {
+                    c.report(ErrorCode::DuplicateName, marks[r], path + ".name",
+                             "reaction name '" + d.name + "' is already used at line " +
+                                 std::to_string(earlier.sourceLine));
+                    break;
+                }
             }
+            totalCapacity += d.emission.capacity;
+            if (totalCapacity > kMaxTotalCapacity && !capacityReported) {
+                c.report(ErrorCode::OutOfRange, it->Mark(), path + ".emission.capacity",
+                         "the reactions' capacities add up to more than " +
+                             std::to_string(kMaxTotalCapacity) + " particles");
+                capacityReported = true;
+            }
+            out->push_back(std::move(d));
         }
-        totalCapacity += d.emission.capacity;
-        if (totalCapacity > kMaxTotalCapacity && !capacityReported) {
-            c.report(ErrorCode::OutOfRange, it->Mark(), path + ".emission.capacity",
-                     "the reactions' capacities add up to more than " +
-                         std::to_string(kMaxTotalCapacity) + " particles");
-            capacityReported = true;
-        }
-        out->push_back(std::move(d));
     }
 }
 

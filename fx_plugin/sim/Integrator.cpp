@@ -17,12 +17,20 @@ double reachOf(double k, double t) { return k > 0.0 ? -std::expm1(-k * t) / k : 
 
 }  // namespace
 
+double liftOf(double k, double t) {
+    const double kt = k * t;
+    // Below 1e-3 the difference t - reach cancels; the series' next term is (kt)^3 / 60 t^2.
+    if (kt < 1e-3) return t * t * (0.5 - kt / 6.0 + kt * kt / 24.0);
+    return (t - reachOf(k, t)) / k;
+}
+
 DragStep makeDragStep(float k, float dt) {
     DragStep s;
     s.dt = sanitizeDt(dt);
     const double kd = (std::isfinite(k) && k > 0.0f) ? static_cast<double>(k) : 0.0;
     s.decay = static_cast<float>(std::exp(-kd * s.dt));
     s.reach = static_cast<float>(reachOf(kd, s.dt));
+    s.lift = static_cast<float>(liftOf(kd, s.dt));
     return s;
 }
 

@@ -28,6 +28,8 @@ struct DragStep {
     float dt = 0.0f;
     float decay = 1.0f;  ///< e^{-k dt}, in [0, 1]
     float reach = 0.0f;  ///< (1 - e^{-k dt}) / k, = dt when k = 0; in [0, dt]
+    float lift = 0.0f;   ///< (dt - reach) / k, = dt^2 / 2 when k = 0: how far a constant
+                         ///< acceleration carries a particle against the drag; in [0, dt^2 / 2]
 };
 
 /// Coefficients for drag rate k >= 0 over dt (sanitised). Computed in double.
@@ -40,6 +42,19 @@ inline void applyDragStep(const DragStep& s, glm::vec3 u, glm::vec3& x, glm::vec
     x += u * s.dt + d * s.reach;
     v = u + d * s.decay;
 }
+
+/// Exact step with a constant acceleration g besides the drag (gravity on sparks):
+/// dv/dt = -k (v - u) + g, whose solution over dt is
+///     v = u + (v0 - u) e^{-k dt} + g reach,   x = x0 + u dt + (v0 - u) reach + g lift,
+/// which is the ballistic p0 + v0 t + g t^2 / 2 at k = 0 and stays finite for any k dt.
+inline void applyDragStep(const DragStep& s, glm::vec3 u, glm::vec3 g, glm::vec3& x, glm::vec3& v) {
+    const glm::vec3 d = v - u;
+    x += u * s.dt + d * s.reach + g * s.lift;
+    v = u + d * s.decay + g * s.reach;
+}
+
+/// lift(k, t) = (t - (1 - e^{-k t}) / k) / k in double, with the series near k t = 0.
+double liftOf(double k, double t);
 
 /// Exact (analytic) step; see the header comment.
 void stepExact(glm::vec3& x, glm::vec3& v, glm::vec3 u, float k, float dt);

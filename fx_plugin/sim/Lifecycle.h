@@ -32,6 +32,22 @@ inline float fadeAt(float f, float fadeIn, float fadeOut) {
     return in * out;
 }
 
+/// An over-life curve at life fraction f: piecewise linear, flat outside its points; `fallback`
+/// when the curve is empty. Points must be in non-decreasing t (the loader guarantees it).
+float evalCurve(const std::vector<CurvePoint>& curve, float f, float fallback);
+
+/// The particle's size at f: sizeOverLife when the reaction gives one, else growthCurve.
+inline float sizeAt(const ParticleDesc& p, float startSize, float endSize, float f) {
+    if (p.sizeOverLife.empty()) return sizeAt(startSize, endSize, f);
+    return startSize + (endSize - startSize) * evalCurve(p.sizeOverLife, f, 0.0f);
+}
+
+/// The particle's alpha factor at f: alphaOverLife when given, else the fade_in/out smoothsteps.
+inline float fadeAt(const ParticleDesc& p, float f) {
+    if (p.alphaOverLife.empty()) return fadeAt(f, p.fadeIn, p.fadeOut);
+    return evalCurve(p.alphaOverLife, f, 1.0f);
+}
+
 /// The colour ramp at life fraction t, piecewise linear between stops; before the first stop
 /// the first colour, after the last the last. Stops must be in non-decreasing t (the loader
 /// guarantees it); an empty ramp is opaque white. Equal t values make a hard step.

@@ -29,6 +29,8 @@ public:
         Size,        ///< m, derived: size at the current life fraction
         Life,        ///< derived: age / lifetime
         Fade,        ///< derived: alpha factor
+        OriginX,     ///< m, the emitter's position at birth (the vortex axis passes through it)
+        OriginZ,
         StreamCount
     };
 

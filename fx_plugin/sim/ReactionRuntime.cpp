@@ -33,11 +33,13 @@ bool wheelSelected(WheelSet set, const WheelContact& w) {
 
 ReactionRuntime::ReactionRuntime(ReactionDesc desc, uint64_t globalSeed)
     : desc_(std::move(desc)),
-      pool_(desc_.emission.capacity),
+      pool_(desc_.render.stateless ? 0 : desc_.emission.capacity),
+      ring_(desc_.render.stateless ? desc_.emission.capacity : 0),
       rng_(reactionRng(globalSeed, desc_.name)) {}
 
 void ReactionRuntime::setDesc(ReactionDesc desc) {
     assert(desc.emission.capacity == desc_.emission.capacity);
+    assert(desc.render.stateless == stateless());
     if (desc.type != desc_.type) burstArmed_ = true;
     desc_ = std::move(desc);
 }
@@ -48,7 +50,10 @@ bool ReactionRuntime::needsSorting() const {
 
 float ReactionRuntime::wheelStrength(const ReactionDesc& desc, const WheelContact& w) {
     const TriggerDesc& t = desc.trigger;
-    if (desc.type == ReactionType::CollisionBurst || !w.grounded) return 0.0f;
+    if (desc.type == ReactionType::CollisionBurst || desc.type == ReactionType::CollisionScrape ||
+        desc.type == ReactionType::OnDemand || !w.grounded) {
+        return 0.0f;
+    }
     if (!wheelSelected(t.wheels, w)) return 0.0f;
     if (w.surface >= Surface::Count || !(t.surfaces & surfaceBit(w.surface))) return 0.0f;
     const float speed = glm::length(w.velocity);
@@ -68,15 +73,59 @@ void ReactionRuntime::step(float dt, const WheelContact* wheels, int wheelCount,
     if (!finite3(wind)) wind = glm::vec3(0.0f);
     const ParticleDesc& p = desc_.particle;
     const glm::vec3 terminal = terminalVelocity(wind, p.windFactor, p.riseSpeed);
+    terminal_ = terminal;
 
-    advanceParticles(dt, terminal);
+    if (!stateless()) advanceParticles(dt, terminal);  // stateless: nothing to update
+    time_ += dt;
 
+    if (desc_.type == ReactionType::OnDemand) {
+        if (firePending_) {
+            firePending_ = false;
+            ++counters_.bursts;
+            for (int k = 0; k < desc_.emission.burst; ++k) {
+                if (!stateless() && pool_.full()) {
+                    counters_.dropped += static_cast<uint64_t>(desc_.emission.burst - k);
+                    break;
+                }
+                spawn(firePoint_, glm::vec3(0.0f), 0.0f, terminal);
+            }
+        }
+        return;
+    }
+    if (desc_.type == ReactionType::CollisionScrape) {
+        emitScrape(dt, collisionAmount, collisionPoint, terminal);
+        return;
+    }
     if (desc_.type == ReactionType::CollisionBurst) {
         emitBurst(collisionAmount, collisionPoint, terminal);
         return;
     }
     const int n = wheels ? glm::min(wheelCount, kMaxWheels) : 0;
     for (int i = 0; i < n; ++i) emitFromWheel(i, wheels[i], dt, terminal);
+}
+
+glm::vec3 ReactionRuntime::airVelocity(glm::vec3 terminal, glm::vec3 x, glm::vec3 origin,
+                                       double t) const {
+    return terminal + curlNoise(desc_.turbulence, x, t) + vortexVelocity(desc_.vortex, x, origin);
+}
+
+void ReactionRuntime::stepThroughField(glm::vec3& x, glm::vec3& v, glm::vec3 origin,
+                                       glm::vec3 terminal, double t, float dt) const {
+    const float k = desc_.particle.drag;
+    stepThroughField(x, v, origin, terminal, t, makeDragStep(k, 0.5f * dt), makeDragStep(k, dt));
+}
+
+void ReactionRuntime::stepThroughField(glm::vec3& x, glm::vec3& v, glm::vec3 origin,
+                                       glm::vec3 terminal, double t, const DragStep& half,
+                                       const DragStep& full) const {
+    // Predictor: half a step in the air at the start; corrector: the whole step in the air at
+    // the predicted midpoint. Both are the exact drag solution for their constant u.
+    glm::vec3 xh = x, vh = v;
+    if (full.dt == 0.0f) return;
+    const glm::vec3 g(0.0f, -desc_.particle.gravity, 0.0f);
+    applyDragStep(half, airVelocity(terminal, x, origin, t), g, xh, vh);
+    const glm::vec3 um = airVelocity(terminal, xh, origin, t + 0.5 * static_cast<double>(full.dt));
+    applyDragStep(full, um, g, x, v);
 }
 
 void ReactionRuntime::advanceParticles(float dt, glm::vec3 u) {
@@ -97,6 +146,11 @@ void ReactionRuntime::advanceParticles(float dt, glm::vec3 u) {
     float* size = pool_.stream(ParticlePool::Size);
     float* life = pool_.stream(ParticlePool::Life);
     float* fade = pool_.stream(ParticlePool::Fade);
+    const float* ox = pool_.stream(ParticlePool::OriginX);
+    const float* oz = pool_.stream(ParticlePool::OriginZ);
+    const bool field = turbulent();
+    const float gy = -p.gravity;
+    const DragStep half = field ? makeDragStep(p.drag, 0.5f * dt) : DragStep{};
 
     for (int i = 0; i < pool_.alive();) {
         age[i] += dt;
@@ -104,18 +158,25 @@ void ReactionRuntime::advanceParticles(float dt, glm::vec3 u) {
             pool_.kill(i);  // slot i now holds the last particle, not yet advanced: revisit i
             continue;
         }
-        const float dx = vx[i] - u.x, dy = vy[i] - u.y, dz = vz[i] - u.z;
-        px[i] += u.x * s.dt + dx * s.reach;
-        py[i] += u.y * s.dt + dy * s.reach;
-        pz[i] += u.z * s.dt + dz * s.reach;
-        vx[i] = u.x + dx * s.decay;
-        vy[i] = u.y + dy * s.decay;
-        vz[i] = u.z + dz * s.decay;
+        if (field) {
+            glm::vec3 x(px[i], py[i], pz[i]), v(vx[i], vy[i], vz[i]);
+            stepThroughField(x, v, glm::vec3(ox[i], 0.0f, oz[i]), u, time_, half, s);
+            px[i] = x.x, py[i] = x.y, pz[i] = x.z;
+            vx[i] = v.x, vy[i] = v.y, vz[i] = v.z;
+        } else {
+            const float dx = vx[i] - u.x, dy = vy[i] - u.y, dz = vz[i] - u.z;
+            px[i] += u.x * s.dt + dx * s.reach;
+            py[i] += u.y * s.dt + dy * s.reach + gy * s.lift;
+            pz[i] += u.z * s.dt + dz * s.reach;
+            vx[i] = u.x + dx * s.decay;
+            vy[i] = u.y + dy * s.decay + gy * s.reach;
+            vz[i] = u.z + dz * s.decay;
+        }
         rot[i] = wrapAngle(rot[i] + spin[i] * dt);
         const float f = age[i] / lifetime[i];
         life[i] = f;
-        size[i] = sizeAt(start[i], end[i], f);
-        fade[i] = fadeAt(f, p.fadeIn, p.fadeOut);
+        size[i] = sizeAt(p, start[i], end[i], f);
+        fade[i] = fadeAt(p, f);
         ++i;
     }
 }
@@ -129,12 +190,29 @@ void ReactionRuntime::emitFromWheel(int index, const WheelContact& wheel, float 
     if (due <= 0) return;
     const glm::vec3 base = wheel.velocity * desc_.particle.inheritVelocity;
     for (int64_t k = clock.firstYoungerThan(desc_.particle.lifetimeMax); k < due; ++k) {
-        if (pool_.full()) {
+        if (!stateless() && pool_.full()) {
             counters_.dropped += static_cast<uint64_t>(due - k);
             return;
         }
         const float age = static_cast<float>(clock.ageOf(k));
         spawn(wheel.position - wheel.velocity * age, base, age, terminal);
+    }
+}
+
+void ReactionRuntime::emitScrape(float dt, float amount, glm::vec3 point, glm::vec3 terminal) {
+    if (!std::isfinite(amount) || !finite3(point)) amount = 0.0f;
+    // Only while in contact: at or above the threshold (and above 0), at rate x amount.
+    const bool contact = amount > 0.0f && amount >= desc_.trigger.collisionThreshold;
+    EmissionClock& clock = clocks_[0];
+    const double rate = contact ? static_cast<double>(desc_.emission.rate) * glm::min(amount, 1.0f) : 0.0;
+    const int64_t due = clock.advance(rate, dt);
+    if (!contact) clock.reset();  // no carry across contacts: a new scrape starts clean
+    for (int64_t k = clock.firstYoungerThan(desc_.particle.lifetimeMax); k < due; ++k) {
+        if (!stateless() && pool_.full()) {
+            counters_.dropped += static_cast<uint64_t>(due - k);
+            return;
+        }
+        spawn(point, glm::vec3(0.0f), static_cast<float>(clock.ageOf(k)), terminal);
     }
 }
 
@@ -151,7 +229,7 @@ void ReactionRuntime::emitBurst(float amount, glm::vec3 point, glm::vec3 termina
     const float scaled = static_cast<float>(desc_.emission.burst) * glm::min(amount, 1.0f);
     const int count = glm::max(1, static_cast<int>(std::lround(scaled)));
     for (int k = 0; k < count; ++k) {
-        if (pool_.full()) {
+        if (!stateless() && pool_.full()) {
             counters_.dropped += static_cast<uint64_t>(count - k);
             return;
         }
@@ -177,6 +255,25 @@ void ReactionRuntime::spawn(glm::vec3 origin, glm::vec3 baseVelocity, float age,
     const uint32_t frame = static_cast<uint32_t>(p.atlasFirst) +
                            rng_.below(static_cast<uint32_t>(glm::max(p.atlasCount, 1)));
     if (!(age < lifetime)) return;
+    const float sinUp = std::sqrt(glm::max(0.0f, 1.0f - cosUp * cosUp));
+    glm::vec3 x = origin + glm::vec3(jr * std::cos(ja), e.spawnHeight, jr * std::sin(ja));
+    glm::vec3 v = baseVelocity +
+                  speed * glm::vec3(sinUp * std::cos(azimuth), cosUp, sinUp * std::sin(azimuth));
+    if (stateless()) {
+        StatelessRecord r{};
+        r.p0[0] = x.x, r.p0[1] = x.y, r.p0[2] = x.z;
+        r.v0[0] = v.x, r.v0[1] = v.y, r.v0[2] = v.z;
+        r.birth = static_cast<float>(time_ - static_cast<double>(age));
+        r.lifetime = lifetime;
+        r.startSize = p.startSize * sizeScale;
+        r.endSize = p.endSize * sizeScale;
+        r.rotation = rotation;
+        r.spin = spin;
+        r.frame = static_cast<float>(frame);
+        ++counters_.emitted;
+        if (!ring_.write(r, time_)) ++counters_.dropped;  // a live one recycled early: ring too small
+        return;
+    }
     const int i = pool_.spawn();
     if (i < 0) {
         ++counters_.dropped;
@@ -184,11 +281,14 @@ void ReactionRuntime::spawn(glm::vec3 origin, glm::vec3 baseVelocity, float age,
     }
     ++counters_.emitted;
 
-    const float sinUp = std::sqrt(glm::max(0.0f, 1.0f - cosUp * cosUp));
-    glm::vec3 x = origin + glm::vec3(jr * std::cos(ja), e.spawnHeight, jr * std::sin(ja));
-    glm::vec3 v = baseVelocity +
-                  speed * glm::vec3(sinUp * std::cos(azimuth), cosUp, sinUp * std::sin(azimuth));
-    if (age > 0.0f) applyDragStep(makeDragStep(p.drag, age), terminal, x, v);
+    if (age > 0.0f) {
+        // time_ is already the end of this step: the particle was born `age` seconds before it.
+        if (turbulent()) {
+            stepThroughField(x, v, origin, terminal, time_ - age, age);
+        } else {
+            applyDragStep(makeDragStep(p.drag, age), terminal, glm::vec3(0.0f, -p.gravity, 0.0f), x, v);
+        }
+    }
 
     pool_.stream(ParticlePool::PosX)[i] = x.x;
     pool_.stream(ParticlePool::PosY)[i] = x.y;
@@ -204,8 +304,10 @@ void ReactionRuntime::spawn(glm::vec3 origin, glm::vec3 baseVelocity, float age,
     pool_.stream(ParticlePool::Spin)[i] = spin;
     const float f = age / lifetime;
     pool_.stream(ParticlePool::Life)[i] = f;
-    pool_.stream(ParticlePool::Size)[i] = sizeAt(p.startSize * sizeScale, p.endSize * sizeScale, f);
-    pool_.stream(ParticlePool::Fade)[i] = fadeAt(f, p.fadeIn, p.fadeOut);
+    pool_.stream(ParticlePool::Size)[i] = sizeAt(p, p.startSize * sizeScale, p.endSize * sizeScale, f);
+    pool_.stream(ParticlePool::Fade)[i] = fadeAt(p, f);
+    pool_.stream(ParticlePool::OriginX)[i] = origin.x;
+    pool_.stream(ParticlePool::OriginZ)[i] = origin.z;
     pool_.frame()[i] = static_cast<uint8_t>(frame);
 }
 

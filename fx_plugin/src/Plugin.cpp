@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
@@ -104,8 +105,10 @@ void PluginImpl::adoptCurrentSet() {
         bool kept = false;
         for (size_t i = 0; i < runtimes_.size() && !kept; ++i) {
             ReactionRuntime& old = runtimes_[i];
+            // A switch between a pool and a stateless ring is a new runtime (other storage).
             if (!taken[i] && old.name() == desc.name &&
-                old.desc().emission.capacity == desc.emission.capacity) {
+                old.desc().emission.capacity == desc.emission.capacity &&
+                old.stateless() == (desc.render.stateless)) {
                 old.setDesc(desc);
                 next.push_back(std::move(old));
                 taken[i] = kept = true;
@@ -218,13 +221,49 @@ ErrorCode PluginImpl::declarePasses(const ViewInfo& view, FrameBuilder& frame) {
 Stats PluginImpl::stats() const {
     Stats s;
     s.reactions = reactionCount();
-    for (const ReactionRuntime& r : runtimes_) s.particlesAlive += r.pool().alive();
+    for (const ReactionRuntime& r : runtimes_) s.particlesAlive += r.alive();
     s.particlesDrawn = particlesDrawn_;
     s.reloads = reloads_;
     s.reloadErrors = reloadErrors_;
     s.apiErrors = errors_.count();
-    for (const ReactionRuntime& r : runtimes_) s.particleCapacity += r.pool().capacity();
+    for (const ReactionRuntime& r : runtimes_) s.particleCapacity += r.capacity();
     return s;
+}
+
+ReactionStats PluginImpl::reactionStats(int index) const {
+    ReactionStats s;
+    if (index < 0 || index >= reactionCount()) {
+        errors_.refuse(ErrorCode::IndexOutOfRange, "reactionStats", indexRange(index, reactionCount()));
+        return s;
+    }
+    const ReactionRuntime& r = runtimes_[static_cast<size_t>(index)];
+    s.name = r.name();
+    s.technique = r.stateless() ? "stateless" : techniqueName(r.desc().render.technique);
+    s.alive = r.alive();
+    s.emitted = r.counters().emitted;
+    s.dropped = r.counters().dropped;
+    return s;
+}
+
+ErrorCode PluginImpl::fireReaction(const std::string& name, const glm::vec3& point) {
+    if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z)) {
+        return errors_.refuse(ErrorCode::InvalidValue, "fireReaction", "non-finite point; expected world metres");
+    }
+    int fired = 0;
+    for (ReactionRuntime& r : runtimes_) {
+        const std::string& n = r.name();
+        const bool match = n == name || (n.size() > name.size() && n.compare(0, name.size(), name) == 0 &&
+                                         n[name.size()] == '.');
+        if (match && r.desc().type == ReactionType::OnDemand) {
+            r.fire(point);
+            ++fired;
+        }
+    }
+    if (fired == 0) {
+        return errors_.refuse(ErrorCode::InvalidValue, "fireReaction",
+                              "no on_demand reaction named '" + name + "' (or '" + name + ".<layer>') is loaded");
+    }
+    return ErrorCode::None;
 }
 
 ParticleCheck PluginImpl::checkParticles() const {
@@ -233,6 +272,17 @@ ParticleCheck PluginImpl::checkParticles() const {
         const ParticlePool& pool = r.pool();
         c.alive += pool.alive();
         c.capacity += pool.capacity();
+        // Stateless: the birth records written so far.
+        const StatelessRing& ring = r.ring();
+        const uint64_t records = std::min<uint64_t>(ring.written(), static_cast<uint64_t>(ring.capacity()));
+        c.alive += r.stateless() ? r.alive() : 0;
+        c.capacity += ring.capacity();
+        for (uint64_t i = 0; i < records; ++i) {
+            const float* f = &ring.data()[i].p0[0];
+            for (int k = 0; k < 16; ++k) {
+                if (!std::isfinite(f[k])) ++c.nonFinite;
+            }
+        }
         for (int s = 0; s < ParticlePool::StreamCount; ++s) {
             const float* v = pool.stream(ParticlePool::Stream(s));
             for (int i = 0; i < pool.alive(); ++i) {

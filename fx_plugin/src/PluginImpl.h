@@ -59,6 +59,8 @@ public:
                                Diagnostics* out) override;
     ErrorCode setParticleShape(ParticleShape shape) override;
     ParticleShape particleShape() const override { return shape_; }
+    ReactionStats reactionStats(int index) const override;
+    ErrorCode fireReaction(const std::string& name, const glm::vec3& point) override;
 
     /// The renderer's entry; pass an empty function to remove it.
     void setRenderHook(RenderHook hook) { renderHook_ = std::move(hook); }

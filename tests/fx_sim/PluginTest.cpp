@@ -1,6 +1,7 @@
 // The plugin glue (PluginImpl) driven by a fake host: entry-point version check, loading,
 // Reaction::Continue with the host's wheels and collision amount, the render hook, stats, and
 // hot reload that keeps the particles of reactions whose name and capacity did not change.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -85,8 +86,8 @@ TEST(Plugin, ContinueEmitsFromTheHostsWheelsAndCollisions) {
     auto plugin = create(&host);
     fx::Diagnostics diags;
     ASSERT_TRUE(plugin->loadReactions(kReactions, &diags));
-    ASSERT_EQ(plugin->reactionCount(), 3);
-    EXPECT_EQ(plugin->reactionName(7), "");
+    ASSERT_EQ(plugin->reactionCount(), 12);
+    EXPECT_EQ(plugin->reactionName(12), "");  // one past the last
     burnout(&host);
     const int smoke = indexOf(*plugin, "burnout_smoke");
     const int dust = indexOf(*plugin, "offtrack_dust");
@@ -102,10 +103,73 @@ TEST(Plugin, ContinueEmitsFromTheHostsWheelsAndCollisions) {
     EXPECT_EQ(impl.runtimes()[static_cast<size_t>(burst)].counters().bursts, 1u);
     EXPECT_EQ(impl.runtimes()[static_cast<size_t>(burst)].counters().emitted, 40u);
     plugin->continueReaction(burst, 1.0f / 60.0f, nullptr);  // null amount = no collision
-    EXPECT_EQ(plugin->stats().reactions, 3);
+    EXPECT_EQ(plugin->stats().reactions, 12);
     int alive = 0;
-    for (const auto& rt : impl.runtimes()) alive += rt.pool().alive();
-    EXPECT_EQ(plugin->stats().particlesAlive, alive);
+    for (const auto& rt : impl.runtimes()) alive += rt.stateless() ? rt.ring().alive(rt.time()) : rt.pool().alive();
+    EXPECT_EQ(plugin->stats().particlesAlive, alive);  // stateless sparks counted from their ring
+}
+
+TEST(Plugin, ReactionStatsNameTechniqueAliveAndEmitted) {
+    FakeHost host;
+    auto plugin = create(&host);
+    ASSERT_TRUE(plugin->loadReactions(kReactions, nullptr));
+    burnout(&host);
+    const int smoke = indexOf(*plugin, "burnout_smoke");
+    const int burst = indexOf(*plugin, "barrier_burst");
+    // 3 s of burnout: the first puffs (3-5 s lives) are still alive; one barrier hit.
+    for (int i = 0; i < 180; ++i) {
+        float amount = i == 30 ? 1.0f : 0.0f;
+        for (int r = 0; r < plugin->reactionCount(); ++r) plugin->continueReaction(r, 1.0f / 60.0f, &amount);
+    }
+    // Then 2 s of rolling without slip: smoke stops emitting, its oldest puffs die.
+    for (int w = 0; w < host.wheelCount(); ++w) host.wheels[static_cast<size_t>(w)].slip = 0.0f;
+    for (int i = 0; i < 120; ++i) {
+        for (int r = 0; r < plugin->reactionCount(); ++r) plugin->continueReaction(r, 1.0f / 60.0f, nullptr);
+    }
+    const auto& impl = static_cast<const fx::PluginImpl&>(*plugin);
+    const fx::ReactionStats s = plugin->reactionStats(smoke);
+    EXPECT_EQ(s.name, "burnout_smoke");
+    EXPECT_EQ(s.technique, "soft");
+    EXPECT_EQ(s.alive, impl.runtimes()[static_cast<size_t>(smoke)].pool().alive());
+    EXPECT_NEAR(static_cast<double>(s.emitted), 2 * 90 * 3, 2);  // 2 wheels x 90/s x 3 s, within 1 each
+    EXPECT_LT(s.alive, static_cast<int>(s.emitted));              // some died: alive is not emitted
+    const fx::ReactionStats b = plugin->reactionStats(burst);
+    EXPECT_EQ(b.name, "barrier_burst");
+    EXPECT_EQ(b.emitted, 40u);
+    EXPECT_EQ(b.alive, 0);  // 0.8-1.8 s lives, hit 4 s before the end
+    const int errorsBefore = plugin->stats().apiErrors;
+    EXPECT_EQ(plugin->reactionStats(99).name, "");
+    EXPECT_EQ(plugin->stats().apiErrors, errorsBefore + 1);  // refused and counted
+}
+
+TEST(Plugin, FireReactionSetsOffEveryLayerOfTheRecipeOnce) {
+    FakeHost host;
+    auto plugin = create(&host);
+    ASSERT_TRUE(plugin->loadReactions(kReactions, nullptr));
+    const int errors = plugin->stats().apiErrors;
+    EXPECT_EQ(plugin->fireReaction("explosion", glm::vec3(1.0f, 0.5f, 2.0f)), fx::ErrorCode::None);
+    for (int i = 0; i < 3; ++i) {
+        for (int r = 0; r < plugin->reactionCount(); ++r) plugin->continueReaction(r, 1.0f / 60.0f, nullptr);
+    }
+    int layers = 0;
+    for (int r = 0; r < plugin->reactionCount(); ++r) {
+        const fx::ReactionStats s = plugin->reactionStats(r);
+        if (s.name.rfind("explosion.", 0) == 0) {
+            ++layers;
+            EXPECT_GT(s.emitted, 0u) << s.name;  // every layer fired, once
+        } else {
+            EXPECT_EQ(s.emitted, 0u) << s.name;  // nothing else did
+        }
+    }
+    EXPECT_EQ(layers, 5);
+    EXPECT_EQ(plugin->reactionStats(indexOf(*plugin, "explosion.sparks")).emitted, 320u);  // one burst
+    EXPECT_EQ(plugin->stats().apiErrors, errors);
+    // Refused and counted: a name that is not an on_demand reaction, a prefix that is not a whole
+    // name part, a non-finite point.
+    EXPECT_EQ(plugin->fireReaction("burnout_smoke", glm::vec3(0.0f)), fx::ErrorCode::InvalidValue);
+    EXPECT_EQ(plugin->fireReaction("explo", glm::vec3(0.0f)), fx::ErrorCode::InvalidValue);
+    EXPECT_EQ(plugin->fireReaction("explosion", glm::vec3(NAN, 0.0f, 0.0f)), fx::ErrorCode::InvalidValue);
+    EXPECT_EQ(plugin->stats().apiErrors, errors + 3);
 }
 
 TEST(Plugin, DeclarePassesCallsTheRenderHookWithTheRuntimes) {

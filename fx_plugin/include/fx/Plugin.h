@@ -162,6 +162,26 @@ public:
     /// for a value outside the enum.
     virtual ErrorCode setParticleShape(ParticleShape shape) = 0;
     virtual ParticleShape particleShape() const = 0;
+
+    // ---- API 1.1: recipes and per-reaction counters ----
+
+    /// API 1.1: the counters of running reaction `index` (0 .. reactionCount() - 1); for any
+    /// other index an empty ReactionStats (and IndexOutOfRange in the log). Cheap (no particle
+    /// is read). Not pure, so an adapter written against 1.0 still compiles.
+    virtual ReactionStats reactionStats(int index) const {
+        (void)index;
+        return ReactionStats{};
+    }
+
+    /// API 1.1: sets off every `on_demand` reaction named `name`, or whose name starts with
+    /// `name` + "." (the layers of a recipe fire together), at world `point`, in their next
+    /// continueReaction step. Refused: InvalidValue (a non-finite point, or no on_demand reaction
+    /// of that name). Not pure, so an adapter written against 1.0 still compiles.
+    virtual ErrorCode fireReaction(const std::string& name, const glm::vec3& point) {
+        (void)name;
+        (void)point;
+        return ErrorCode::InvalidValue;
+    }
 };
 
 /// What the host hands the plugin at creation. Defaults: this header's API version, no host

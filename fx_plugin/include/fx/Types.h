@@ -1,6 +1,7 @@
 #pragma once
 // Plain data shared by the plugin and its host. No GL, no engine types.
 #include <cstdint>
+#include <string>
 #include <glm/glm.hpp>
 
 namespace fx {
@@ -93,6 +94,17 @@ struct ParticleCheck {
     int alive = 0;
     int capacity = 0;
     int nonFinite = 0;  ///< NaN or Inf values in any live particle's state (0 when healthy)
+};
+
+/// One running reaction's counters (Plugin::reactionStats, API 1.1). Defaults: an empty name (an
+/// index outside the running set).
+struct ReactionStats {
+    std::string name;       ///< the reaction's name in its file
+    std::string technique;  ///< how it is drawn: "hard", "soft", "spherical" or "stateless"
+    int alive = 0;          ///< live particles now
+    uint64_t emitted = 0;   ///< particles that entered its pool since it was loaded (kept across
+                            ///< a hot reload that keeps its particles)
+    uint64_t dropped = 0;   ///< particles due while its pool was full
 };
 
 }  // namespace fx

@@ -1,0 +1,49 @@
+#pragma once
+// Draws the stateless reactions (technique: stateless): their birth records go to the GPU once
+// (only the ring slots written since the last upload), and vs_stateless_particles.glsl evaluates
+// every particle from the reaction's clock; the CPU does no work per particle per frame.
+//
+// One pass per view, "particles_stateless", declared after the other particle passes when any
+// stateless reaction may have a live particle (ring liveUntil() > clock: O(1) per reaction); it
+// writes the view's colour with the hard technique's depth test (Standard: LEQUAL, ReversedZ:
+// GEQUAL, no depth writes) and additive blending (order-independent: never sorted). Every GL
+// call runs inside a GlStateGuard. A program that fails to build is reported once through the
+// host's log and the pass draws nothing; the other techniques are unaffected.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fx/HostAdapter.h"
+#include "fx/Plugin.h"
+
+namespace fx {
+
+class ReactionRuntime;
+
+class StatelessRenderer {
+public:
+    StatelessRenderer(HostAdapter* host, std::string shaderDir);
+    ~StatelessRenderer();
+    StatelessRenderer(const StatelessRenderer&) = delete;
+    StatelessRenderer& operator=(const StatelessRenderer&) = delete;
+
+    /// Declares this view's pass when a stateless reaction may have live particles. Returns the
+    /// number of record slots it will draw (an upper bound of the live particles).
+    int declarePasses(const ViewInfo& view, FrameBuilder& frame,
+                      const std::vector<ReactionRuntime>& runtimes);
+
+    static constexpr const char* kPass = "particles_stateless";
+
+private:
+    struct Gpu;
+    struct Draw;
+    void draw(const ViewInfo& view, const std::vector<Draw>& draws);
+    bool ensureProgram();
+
+    HostAdapter* host_;
+    std::string shaderDir_;
+    std::unique_ptr<Gpu> gpu_;
+};
+
+}  // namespace fx

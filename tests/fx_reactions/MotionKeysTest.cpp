@@ -1,0 +1,242 @@
+// The keys of issue 17: alpha_over_life / size_over_life curves, turbulence and vortex. One test
+// per rule, asserting the code, the line and the key (not the wording).
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "../../fx_plugin/reactions/ReactionLoader.h"
+#include "../../fx_plugin/sim/Lifecycle.h"
+
+namespace {
+
+using fx::ErrorCode;
+
+struct Loaded {
+    bool ok = false;
+    fx::ReactionSet set;
+    fx::Diagnostics diags;
+};
+
+Loaded load(const std::string& body) {
+    Loaded r;
+    const std::string text = "reactions:\n  - name: a\n    type: wheel_smoke\n" + body;
+    r.ok = fx::loadReactionText(text, "test.yaml", &r.set, &r.diags);
+    return r;
+}
+
+std::string dump(const fx::Diagnostics& d) {
+    std::string s;
+    for (const auto& x : d) s += x.str() + "\n";
+    return s;
+}
+
+void expectOnly(const Loaded& r, ErrorCode code, int line, const std::string& key) {
+    EXPECT_FALSE(r.ok);
+    ASSERT_EQ(r.diags.size(), 1u) << dump(r.diags);
+    EXPECT_EQ(r.diags[0].code, code) << r.diags[0].str();
+    EXPECT_EQ(r.diags[0].file, "test.yaml");
+    EXPECT_EQ(r.diags[0].line, line) << r.diags[0].str();
+    EXPECT_EQ(r.diags[0].key, key) << r.diags[0].str();
+}
+
+TEST(MotionKeys, CurvesAndTurbulenceLoad) {
+    Loaded r = load(
+        "    particle:\n"
+        "      alpha_over_life: [{t: 0, v: 0}, {t: 0.1, v: 1}, {t: 1, v: 0}]\n"
+        "      size_over_life: [{t: 0, v: 0}, {t: 0.5, v: 0.9}, {t: 1, v: 1}]\n"
+        "    turbulence: {strength: 1.5, scale: 3, speed: 0.4, octaves: 2}\n"
+        "    vortex: {strength: -0.8, radius: 1.2}\n");
+    ASSERT_TRUE(r.ok) << dump(r.diags);
+    const fx::ReactionDesc& d = r.set.reactions[0];
+    ASSERT_EQ(d.particle.alphaOverLife.size(), 3u);
+    EXPECT_FLOAT_EQ(d.particle.alphaOverLife[1].t, 0.1f);
+    EXPECT_FLOAT_EQ(fx::fadeAt(d.particle, 0.05f), 0.5f);   // halfway up the first segment
+    EXPECT_FLOAT_EQ(fx::fadeAt(d.particle, 0.55f), 0.5f);   // halfway down the second
+    EXPECT_FLOAT_EQ(fx::sizeAt(d.particle, 1.0f, 3.0f, 0.25f), 1.0f + 2.0f * 0.45f);
+    EXPECT_FLOAT_EQ(d.turbulence.strength, 1.5f);
+    EXPECT_FLOAT_EQ(d.turbulence.scale, 3.0f);
+    EXPECT_FLOAT_EQ(d.turbulence.speed, 0.4f);
+    EXPECT_EQ(d.turbulence.octaves, 2);
+    EXPECT_FLOAT_EQ(d.vortex.strength, -0.8f);
+    EXPECT_FLOAT_EQ(d.vortex.radius, 1.2f);
+}
+
+TEST(MotionKeys, DefaultsAreOffAndKeepTheOldCurves) {
+    Loaded r = load("");
+    ASSERT_TRUE(r.ok) << dump(r.diags);
+    const fx::ReactionDesc& d = r.set.reactions[0];
+    EXPECT_FALSE(d.turbulence.enabled());
+    EXPECT_FALSE(d.vortex.enabled());
+    EXPECT_TRUE(d.particle.alphaOverLife.empty());
+    EXPECT_FLOAT_EQ(fx::fadeAt(d.particle, 0.3f), fx::fadeAt(0.3f, d.particle.fadeIn, d.particle.fadeOut));
+    EXPECT_FLOAT_EQ(fx::sizeAt(d.particle, 1.0f, 3.0f, 0.3f), fx::sizeAt(1.0f, 3.0f, 0.3f));
+}
+
+TEST(MotionKeys, CurveTimesOutOfOrderAreRejected) {
+    Loaded r = load("    particle:\n"
+                    "      alpha_over_life:\n"
+                    "        - {t: 0.5, v: 1}\n"
+                    "        - {t: 0.2, v: 0}\n");
+    expectOnly(r, ErrorCode::OutOfRange, 7, "reactions[0].particle.alpha_over_life[1].t");
+}
+
+TEST(MotionKeys, CurveValueOutOfRangeIsRejected) {
+    Loaded r = load("    particle:\n"
+                    "      size_over_life: [{t: 0, v: 0}, {t: 1, v: 1.5}]\n");
+    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].particle.size_over_life[1].v");
+}
+
+TEST(MotionKeys, CurveTimeOutsideLifeIsRejected) {
+    Loaded r = load("    particle:\n"
+                    "      size_over_life: [{t: -0.1, v: 0}]\n");
+    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].particle.size_over_life[0].t");
+}
+
+TEST(MotionKeys, CurvePointWithoutValueIsRejected) {
+    Loaded r = load("    particle:\n"
+                    "      alpha_over_life: [{t: 0}]\n");
+    expectOnly(r, ErrorCode::MissingKey, 5, "reactions[0].particle.alpha_over_life[0].v");
+}
+
+TEST(MotionKeys, EmptyCurveIsRejected) {
+    Loaded r = load("    particle:\n"
+                    "      alpha_over_life: []\n");
+    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].particle.alpha_over_life");
+}
+
+TEST(MotionKeys, AlphaCurveAndFadeTogetherAreRejected) {
+    Loaded r = load("    particle:\n"
+                    "      fade_out: 0.5\n"
+                    "      alpha_over_life: [{t: 0, v: 1}]\n");
+    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].particle.fade_out");
+}
+
+TEST(MotionKeys, TooManyOctavesAreRejected) {
+    Loaded r = load("    turbulence:\n"
+                    "      octaves: 7\n");
+    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].turbulence.octaves");
+}
+
+TEST(MotionKeys, NegativeTurbulenceStrengthIsRejected) {
+    Loaded r = load("    turbulence: {strength: -1}\n");
+    expectOnly(r, ErrorCode::OutOfRange, 4, "reactions[0].turbulence.strength");
+}
+
+TEST(MotionKeys, ZeroVortexRadiusIsRejected) {
+    Loaded r = load("    vortex:\n"
+                    "      radius: 0\n");
+    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].vortex.radius");
+}
+
+TEST(MotionKeys, UnknownTurbulenceKeyIsRejected) {
+    Loaded r = load("    turbulence:\n"
+                    "      strenght: 1\n");
+    expectOnly(r, ErrorCode::UnknownKey, 5, "reactions[0].turbulence.strenght");
+}
+
+TEST(MotionKeys, TextForANumberIsRejected) {
+    Loaded r = load("    vortex:\n"
+                    "      strength: fast\n");
+    expectOnly(r, ErrorCode::WrongType, 5, "reactions[0].vortex.strength");
+}
+
+}  // namespace
+
+namespace {
+
+TEST(StatelessKeys, StatelessAdditiveWithGravityLoads) {
+    Loaded r = load("    particle: {gravity: 9.81}\n"
+                    "    render: {technique: stateless, blend: additive}\n");
+    ASSERT_TRUE(r.ok) << dump(r.diags);
+    const fx::ReactionDesc& d = r.set.reactions[0];
+    EXPECT_TRUE(d.render.stateless);
+    EXPECT_EQ(d.render.technique, fx::Technique::Hard);  // drawn as hard billboards
+    EXPECT_FLOAT_EQ(d.particle.gravity, 9.81f);
+}
+
+TEST(StatelessKeys, StatelessNeedsAdditiveBlending) {
+    Loaded r = load("    render:\n"
+                    "      technique: stateless\n"
+                    "      blend: alpha\n");
+    expectOnly(r, ErrorCode::OutOfRange, 6, "reactions[0].render.blend");
+}
+
+TEST(StatelessKeys, StatelessRefusesTurbulence) {
+    Loaded r = load("    render: {technique: stateless, blend: additive}\n"
+                    "    turbulence: {strength: 1}\n");
+    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].turbulence");
+}
+
+TEST(StatelessKeys, NegativeGravityIsRejected) {
+    Loaded r = load("    particle:\n"
+                    "      gravity: -9.81\n");
+    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].particle.gravity");
+}
+
+}  // namespace
+
+namespace {
+
+Loaded loadRaw(const std::string& text) {
+    Loaded r;
+    r.ok = fx::loadReactionText(text, "test.yaml", &r.set, &r.diags);
+    return r;
+}
+
+TEST(LayerKeys, ALayeredReactionExpandsIntoOneReactionPerLayer) {
+    Loaded r = loadRaw("reactions:\n"
+                       "  - name: hit\n"
+                       "    trigger: {collision_threshold: 0.3}\n"
+                       "    layers:\n"
+                       "      - {name: sparks, type: collision_scrape, render: {technique: stateless, blend: additive}}\n"
+                       "      - name: flash\n"
+                       "        type: collision_burst\n"
+                       "        trigger: {collision_threshold: 0.7}\n");
+    ASSERT_TRUE(r.ok) << dump(r.diags);
+    ASSERT_EQ(r.set.reactions.size(), 2u);
+    EXPECT_EQ(r.set.reactions[0].name, "hit.sparks");
+    EXPECT_EQ(r.set.reactions[0].type, fx::ReactionType::CollisionScrape);
+    EXPECT_TRUE(r.set.reactions[0].render.stateless);
+    EXPECT_FLOAT_EQ(r.set.reactions[0].trigger.collisionThreshold, 0.3f);  // the parent's
+    EXPECT_EQ(r.set.reactions[1].name, "hit.flash");
+    EXPECT_FLOAT_EQ(r.set.reactions[1].trigger.collisionThreshold, 0.7f);  // its own wins
+    EXPECT_EQ(r.set.reactions[1].sourceLine, 6);  // the layer's own line
+}
+
+TEST(LayerKeys, ALayeredReactionHoldsOnlyNameTriggerAndLayers) {
+    Loaded r = loadRaw("reactions:\n"
+                       "  - name: hit\n"
+                       "    type: dust\n"
+                       "    layers:\n"
+                       "      - {name: a, type: dust}\n");
+    expectOnly(r, ErrorCode::OutOfRange, 3, "reactions[0].type");
+}
+
+TEST(LayerKeys, LayersDoNotNest) {
+    Loaded r = loadRaw("reactions:\n"
+                       "  - name: hit\n"
+                       "    layers:\n"
+                       "      - name: a\n"
+                       "        layers: [{name: b, type: dust}]\n");
+    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].layers[0].layers");
+}
+
+TEST(LayerKeys, ALayerNeedsAType) {
+    Loaded r = loadRaw("reactions:\n"
+                       "  - name: hit\n"
+                       "    layers:\n"
+                       "      - name: a\n");
+    expectOnly(r, ErrorCode::MissingKey, 4, "reactions[0].layers[0].type");
+}
+
+TEST(LayerKeys, LayerNamesCollideWithOtherReactions) {
+    Loaded r = loadRaw("reactions:\n"
+                       "  - {name: hit.a, type: dust}\n"
+                       "  - name: hit\n"
+                       "    layers: [{name: a, type: dust}]\n");
+    ASSERT_FALSE(r.ok);
+    ASSERT_EQ(r.diags.size(), 1u) << dump(r.diags);
+    EXPECT_EQ(r.diags[0].code, ErrorCode::DuplicateName);
+}
+
+}  // namespace
