@@ -175,6 +175,12 @@ void Game::Dyn(float dt) {
     ++frame_;
 }
 
+bool Game::fireExplosionAtCar() {
+    fx::Plugin* plugin = specialFX_.plugin();
+    return plugin && plugin->fireReaction("explosion", vehicle_.pose().position + glm::vec3(0.0f, 0.3f, 0.0f)) ==
+                         fx::ErrorCode::None;
+}
+
 void Game::Update(float dt) {
     if (!std::isfinite(dt) || dt < 0.0f) dt = 0.0f;
     dt = std::min(dt, 10.0f);
@@ -182,9 +188,7 @@ void Game::Update(float dt) {
     // --explode-at: the explosion recipe fires once, at the car, in the step that reaches T.
     const bool explode = options_.explodeAt >= 0.0 && time_ < options_.explodeAt && time_ + dt >= options_.explodeAt;
     time_ += dt;
-    if (explode && specialFX_.plugin()) {
-        specialFX_.plugin()->fireReaction("explosion", vehicle_.pose().position + glm::vec3(0.0f, 0.3f, 0.0f));
-    }
+    if (explode) fireExplosionAtCar();
     vehicle_.update(sceneData_, options_.stationaryCar ? options_.startTime : time_, options_.stationaryCar);
     updateCameras(dt);
     specialFX_.Dyn(dt, vehicle_);

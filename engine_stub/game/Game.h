@@ -58,6 +58,10 @@ public:
     /// (fxbench): Update advances the drive and the effects; RenderFrame draws the current state
     /// with the current options and waits for the GPU (glFinish). RenderFrame returns its wall ms.
     void Update(float dt);
+    /// Sets off the explosion recipe (an on_demand reaction named "explosion", with its layers)
+    /// just above the car, in the next simulation step (--explode-at, window key E). False when
+    /// no such reaction runs.
+    bool fireExplosionAtCar();
     double RenderFrame();
 
     /// Asks for a read-back of the next rendered frame (lastFrame()).

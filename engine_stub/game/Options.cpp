@@ -135,7 +135,8 @@ std::string usage() {
         "SIGINT/SIGTERM finish the current frame, write --screenshot and --stats-json, exit 130/143.\n"
         "Environment: CUBE_OSMESA_LIBRARY, CUBE_EGL_LIBRARY, CUBE_GLFW_LIBRARY load a back end from\n"
         "another file; CUBE_SHADER_DIR reads shaders (the plugin's too) from a folder; CUBE_ROOT.\n"
-        "Window keys: P prepass-EQUAL, Q quarter-res, M technique, B bilinear, H HUD, Esc quit.\n";
+        "Window keys: P prepass-EQUAL, Q quarter-res, M technique, B bilinear, H HUD,\n"
+        "E the explosion recipe at the car (reactions/explosion.yaml), Esc quit.\n";
 }
 
 bool parseOptions(int argc, const char* const* argv, Options* out, std::string* error) {

@@ -15,7 +15,7 @@ void Render::handleKeys(Game& game) {
     Options& o = game.options();
     fx::Plugin* plugin = game.specialFX().plugin();
     if (game.overlay() && game.overlay()->wantsKeyboard()) {
-        for (Key k : {Key::P, Key::Q, Key::M, Key::H, Key::S, Key::B}) p.keyPressed(k);  // typed text
+        for (Key k : {Key::P, Key::Q, Key::M, Key::H, Key::S, Key::B, Key::E}) p.keyPressed(k);  // typed text
         return;
     }
     if (p.keyPressed(Key::P)) o.prepassEqual = !o.prepassEqual;
@@ -27,6 +27,7 @@ void Render::handleKeys(Game& game) {
         ro.techniqueOverride = fx::Technique((int(ro.techniqueOverride) + 1) % 4);
     }
     if (p.keyPressed(Key::H)) o.hud = !o.hud;
+    if (p.keyPressed(Key::E)) game.fireExplosionAtCar();
     if (plugin) plugin->setRenderOptions(ro);
 }
 

@@ -198,3 +198,34 @@ TEST(Scene, MissingOrCorruptSceneGivesAnErrorNamingTheFile) {
     EXPECT_FALSE(game.Init(o, &err));
     EXPECT_NE(err.find("/nonexistent/track.gltf"), std::string::npos) << err;
 }
+
+// The window's E key and --explode-at both go through Game::fireExplosionAtCar: every layer of
+// reactions/explosion.yaml emits in the next step, nothing before.
+TEST(Game, TheExplosionRecipeFiresAtTheCarOnDemand) {
+    Options o = cubetest::smallOptions(96, 80);
+    o.mirror = false;
+    Game game;
+    std::string err;
+    ASSERT_TRUE(game.Init(o, &err)) << err;
+    fx::Plugin* plugin = game.specialFX().plugin();
+    ASSERT_NE(plugin, nullptr);
+    auto explosionEmitted = [&] {
+        uint64_t n = 0;
+        int layers = 0;
+        for (int i = 0; i < plugin->reactionCount(); ++i) {
+            const fx::ReactionStats s = plugin->reactionStats(i);
+            if (s.name.rfind("explosion.", 0) == 0) {
+                n += s.emitted;
+                ++layers;
+            }
+        }
+        return std::make_pair(layers, n);
+    };
+    for (int i = 0; i < 5; ++i) game.Update(1.0f / 60.0f);
+    const auto before = explosionEmitted();
+    ASSERT_GE(before.first, 2) << "the explosion recipe has several layers";
+    EXPECT_EQ(before.second, 0u);
+    ASSERT_TRUE(game.fireExplosionAtCar());
+    game.Update(1.0f / 60.0f);
+    EXPECT_GT(explosionEmitted().second, 0u);
+}
