@@ -581,6 +581,14 @@ void TweakPanel::buildFrameWindow(Game& game) {
         changed |= ImGui::Checkbox("bilinear upsample", &ro.bilinearUpsample);
         note("bilinear_upsample");
         if (changed) plugin_->setRenderOptions(ro);
+        // Trimmed polygons / octagons or full quads: the same picture, fewer fragments.
+        bool trimmed = plugin_->particleShape() == fx::ParticleShape::Trimmed;
+        if (ImGui::Checkbox("trimmed shapes", &trimmed)) {
+            plugin_->setParticleShape(trimmed ? fx::ParticleShape::Trimmed : fx::ParticleShape::Quad);
+        }
+        note("trimmed_shapes");
+        ImGui::SameLine();
+        ImGui::TextDisabled("%s", game.scene().renderer().reversedZ() ? "reversed-Z float depth" : "standard 24-bit depth");
     }
     if (ImGui::CollapsingHeader("Time and camera", ImGuiTreeNodeFlags_DefaultOpen)) {
         float scale = game.timeScale();

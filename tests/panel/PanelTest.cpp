@@ -162,6 +162,11 @@ TEST_F(PanelTest, RenderSwitchesChangeTheRunningOptions) {
     const double t = game.time();
     frame();
     EXPECT_EQ(game.time(), t);
+    ASSERT_EQ(plugin->particleShape(), fx::ParticleShape::Trimmed);
+    click(rect("trimmed_shapes"));
+    EXPECT_EQ(plugin->particleShape(), fx::ParticleShape::Quad);
+    click(rect("trimmed_shapes"));
+    EXPECT_EQ(plugin->particleShape(), fx::ParticleShape::Trimmed);
 }
 
 TEST_F(PanelTest, ThePanelAddsNoGlErrorAndRestoresTheGlState) {
