@@ -85,7 +85,7 @@ struct ParticleDesc {
 
 /// How it is drawn. Defaults: soft particles, alpha blending, sorted.
 struct RenderDesc {
-    Technique technique = Technique::Soft;  ///< Hard, Soft or Spherical (never FromReaction)
+    Technique technique = Technique::Soft;  ///< Hard, Soft, Spherical or Mega (never FromReaction)
     /// `technique: stateless` in the file: birth records evaluated in the vertex shader (no CPU
     /// update), drawn as hard billboards (technique is then Hard). Private to the plugin: the
     /// public Technique enum is the run-time override, which stateless particles ignore.
@@ -95,6 +95,29 @@ struct RenderDesc {
     float contrastPower = 1.0f;    ///< [0.1, 16] exponent of the soft-fade contrast curve, 1 = linear
     float nearFade = 0.5f;         ///< [0, 100] m in front of the near plane over which particles fade out
     bool sortBackToFront = true;   ///< ignored (never sorted) for additive blending
+};
+
+/// How lit smoke takes the host's sun and ambient (Plugin::setSceneLight). Applies to alpha and
+/// premultiplied blending; additive reactions (fire, sparks) are light sources and stay unlit.
+/// Defaults: the look of the shipped smoke.
+struct LightingDesc {
+    bool enabled = true;           ///< false = drawn unlit (the 1.1 look) even under a scene light
+    float normalStrength = 0.7f;   ///< [0, 1] share of the atlas normal against a flat, camera-facing card
+    float scattering = 0.35f;      ///< [0, 1] share of the sun light scattered by the phase function instead of diffusely
+    float anisotropy = 0.6f;       ///< [-0.95, 0.95] Henyey-Greenstein g; > 0 glows toward the sun
+    float absorption = 1.5f;       ///< [0, 20] optical depth per unit of accumulated opacity (self-shadowing)
+    float ambient = 1.0f;          ///< [0, 2] multiplier of the host's ambient colour
+    bool castsShadow = true;       ///< drawn into the opacity map (self-shadowing, shadow on the ground)
+    bool lit(BlendMode blend) const { return enabled && blend != BlendMode::Additive; }
+};
+
+/// Mega-particles (`technique: mega`, seed 001). Defaults: a half-resolution target, a blur that
+/// melts neighbouring spheres together, and medium fractal detail.
+struct MegaDesc {
+    float resolution = 0.5f;       ///< [0.25, 1] size of the sphere target relative to the view
+    float blurRadius = 6.0f;       ///< [0, 32] pixels of the sphere target (Gaussian sigma = radius / 2)
+    float noiseStrength = 0.5f;    ///< [0, 1] how much fractal noise eats into the alpha
+    float noiseScale = 1.5f;       ///< [0.05, 100] m, the largest noise feature
 };
 
 /// One reaction. `name` and `type` are required in the file; the rest default per type.
@@ -107,6 +130,8 @@ struct ReactionDesc {
     RenderDesc render;
     TurbulenceDesc turbulence;     ///< curl-noise air motion added to the terminal velocity
     VortexDesc vortex;             ///< spiral around the vertical axis through each particle's emitter
+    LightingDesc lighting;         ///< how it takes the scene light (API 1.2)
+    MegaDesc mega;                 ///< technique mega only
     std::string sourceFile;        ///< where it was read, for messages
     int sourceLine = 0;            ///< 1-based line of the reaction's first key
 };

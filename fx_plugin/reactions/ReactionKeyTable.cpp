@@ -53,14 +53,25 @@ std::vector<ReactionKeyInfo> buildTable() {
             "colour over life, piecewise linear; t in [0, 1] non-decreasing, rgba each in [0, 1], straight alpha; two stops with one t make a hard step"),
         key("particle.atlas", Kind::IntegerPair, 0, 4, "frames",
             "[first, count] frames of the 2x2 smoke atlas picked at random per particle: first in [0, 3], count in [1, 4], first + count <= 4"),
-        key("render.technique", Kind::Choice, 0, 0, "", "hard sprites, soft particles (depth fade) or spherical billboards (ray length through a sphere)",
-            {"hard", "soft", "spherical"}),
+        key("render.technique", Kind::Choice, 0, 0, "", "hard sprites, soft particles (depth fade), spherical billboards (ray length through a sphere) or mega-particles (blurred spheres as one volume)",
+            {"hard", "soft", "spherical", "mega"}),
         key("render.blend", Kind::Choice, 0, 0, "", "how particles combine with what is behind them; additive is order-independent",
             {"alpha", "premultiplied", "additive"}),
         key("render.softness", Kind::Number, 1.0e-6, 1.0e6, "m", "depth difference over which the soft fade reaches 1 (the shader's scale is 1/softness)"),
         key("render.contrast_power", Kind::Number, 0.1, 16.0, "", "exponent of the soft-fade contrast curve; 1 = linear"),
         key("render.near_fade", Kind::Number, 0.0, 100.0, "m", "distance in front of the near plane over which particles fade out"),
         key("render.sort_back_to_front", Kind::Bool, 0, 0, "", "sort particles far to near each frame; never done for additive"),
+        key("lighting.enabled", Kind::Bool, 0, 0, "", "lit by the host's sun and ambient when it gives them; additive reactions are never lit"),
+        key("lighting.normal_strength", Kind::Number, 0.0, 1.0, "", "share of the atlas normals against a flat card facing the camera"),
+        key("lighting.scattering", Kind::Number, 0.0, 1.0, "", "share of the sun light scattered by the Henyey-Greenstein phase (glowing edges against the sun)"),
+        key("lighting.anisotropy", Kind::Number, -0.95, 0.95, "", "Henyey-Greenstein g: > 0 scatters forward (bright toward the sun), 0 evenly"),
+        key("lighting.absorption", Kind::Number, 0.0, 20.0, "", "optical depth per unit of smoke opacity between a particle and the sun (self-shadowing strength)"),
+        key("lighting.ambient", Kind::Number, 0.0, 2.0, "", "multiplier of the host's ambient light"),
+        key("lighting.casts_shadow", Kind::Bool, 0, 0, "", "drawn into the opacity map: shadows other smoke and the ground"),
+        key("mega.resolution", Kind::Number, 0.25, 1.0, "", "technique mega: size of the sphere target relative to the view"),
+        key("mega.blur_radius", Kind::Number, 0.0, 32.0, "px", "technique mega: blur radius in pixels of the sphere target"),
+        key("mega.noise_strength", Kind::Number, 0.0, 1.0, "", "technique mega: how much fractal noise eats into the cloud's alpha"),
+        key("mega.noise_scale", Kind::Number, 0.05, 100.0, "m", "technique mega: size of the largest fractal noise feature"),
     };
 }
 
@@ -129,6 +140,18 @@ std::string reactionValueText(const ReactionDesc& d, const std::string& k) {
     if (k == "render.contrast_power") return num(r.contrastPower);
     if (k == "render.near_fade") return num(r.nearFade);
     if (k == "render.sort_back_to_front") return r.sortBackToFront ? "true" : "false";
+    const LightingDesc& l = d.lighting;
+    if (k == "lighting.enabled") return l.enabled ? "true" : "false";
+    if (k == "lighting.normal_strength") return num(l.normalStrength);
+    if (k == "lighting.scattering") return num(l.scattering);
+    if (k == "lighting.anisotropy") return num(l.anisotropy);
+    if (k == "lighting.absorption") return num(l.absorption);
+    if (k == "lighting.ambient") return num(l.ambient);
+    if (k == "lighting.casts_shadow") return l.castsShadow ? "true" : "false";
+    if (k == "mega.resolution") return num(d.mega.resolution);
+    if (k == "mega.blur_radius") return num(d.mega.blurRadius);
+    if (k == "mega.noise_strength") return num(d.mega.noiseStrength);
+    if (k == "mega.noise_scale") return num(d.mega.noiseScale);
     return std::string();
 }
 

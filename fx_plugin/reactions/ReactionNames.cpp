@@ -38,6 +38,7 @@ const char* techniqueName(Technique technique) {
     case Technique::Hard: return "hard";
     case Technique::Soft: return "soft";
     case Technique::Spherical: return "spherical";
+    case Technique::Mega: return "mega";
     }
     return "?";
 }

@@ -274,9 +274,10 @@ void readRender(YamlCheck& c, const Node& node, const std::string& path, RenderD
                  "sort_back_to_front"});
     if (const Node* n = m.get("technique")) {
         int i = 0;
-        if (c.choice(*n, m.path("technique"), {"hard", "soft", "spherical", "stateless"}, &i)) {
+        if (c.choice(*n, m.path("technique"), {"hard", "soft", "spherical", "stateless", "mega"}, &i)) {
             r->stateless = i == 3;
             r->technique = r->stateless ? Technique::Hard
+                         : i == 4       ? Technique::Mega
                                         : static_cast<Technique>(static_cast<int>(Technique::Hard) + i);
         }
     }
@@ -303,6 +304,28 @@ void readVortex(YamlCheck& c, const Node& node, const std::string& path, VortexD
     MapReader m(c, node, path, {"strength", "radius"});
     optNumber(c, m, "strength", -50.0, 50.0, &v->strength);
     optNumber(c, m, "radius", 0.01, 100.0, &v->radius);
+}
+
+void readLighting(YamlCheck& c, const Node& node, const std::string& path, LightingDesc* l) {
+    if (!c.isMap(node, path)) return;
+    MapReader m(c, node, path, {"enabled", "normal_strength", "scattering", "anisotropy", "absorption",
+                                "ambient", "casts_shadow"});
+    if (const Node* n = m.get("enabled")) c.boolean(*n, m.path("enabled"), &l->enabled);
+    optNumber(c, m, "normal_strength", 0.0, 1.0, &l->normalStrength);
+    optNumber(c, m, "scattering", 0.0, 1.0, &l->scattering);
+    optNumber(c, m, "anisotropy", -0.95, 0.95, &l->anisotropy);
+    optNumber(c, m, "absorption", 0.0, 20.0, &l->absorption);
+    optNumber(c, m, "ambient", 0.0, 2.0, &l->ambient);
+    if (const Node* n = m.get("casts_shadow")) c.boolean(*n, m.path("casts_shadow"), &l->castsShadow);
+}
+
+void readMega(YamlCheck& c, const Node& node, const std::string& path, MegaDesc* g) {
+    if (!c.isMap(node, path)) return;
+    MapReader m(c, node, path, {"resolution", "blur_radius", "noise_strength", "noise_scale"});
+    optNumber(c, m, "resolution", 0.25, 1.0, &g->resolution);
+    optNumber(c, m, "blur_radius", 0.0, 32.0, &g->blurRadius);
+    optNumber(c, m, "noise_strength", 0.0, 1.0, &g->noiseStrength);
+    optNumber(c, m, "noise_scale", 0.05, 100.0, &g->noiseScale);
 }
 
 // A stateless particle is a closed form of its age: nothing that needs the particle's path
@@ -338,7 +361,7 @@ void readReaction(YamlCheck& c, const Node& node, const std::string& path, bool 
                   std::vector<YAML::Mark>* nameMarks) {
     if (!c.isMap(node, path)) return;
     MapReader m(c, node, path, {"name", "type", "trigger", "emission", "particle", "render",
-                                "turbulence", "vortex", "layers"});
+                                "turbulence", "vortex", "lighting", "mega", "layers"});
 
     if (const Node* layers = m.get("layers")) {
         if (isLayer) {
@@ -346,7 +369,7 @@ void readReaction(YamlCheck& c, const Node& node, const std::string& path, bool 
                      "expected no layers inside a layer (layers nest one level)");
             return;
         }
-        for (const char* key : {"type", "emission", "particle", "render", "turbulence", "vortex"}) {
+        for (const char* key : {"type", "emission", "particle", "render", "turbulence", "vortex", "lighting", "mega"}) {
             if (const Node* n = m.get(key)) {
                 c.report(ErrorCode::OutOfRange, n->Mark(), m.path(key),
                          std::string("expected only name, trigger and layers in a layered reaction; ") +
@@ -410,6 +433,8 @@ void readReaction(YamlCheck& c, const Node& node, const std::string& path, bool 
     if (const Node* n = m.get("render")) readRender(c, *n, m.path("render"), &d.render);
     if (const Node* n = m.get("turbulence")) readTurbulence(c, *n, m.path("turbulence"), &d.turbulence);
     if (const Node* n = m.get("vortex")) readVortex(c, *n, m.path("vortex"), &d.vortex);
+    if (const Node* n = m.get("lighting")) readLighting(c, *n, m.path("lighting"), &d.lighting);
+    if (const Node* n = m.get("mega")) readMega(c, *n, m.path("mega"), &d.mega);
     if (d.render.stateless) checkStateless(c, m, d);
     outs->push_back(std::move(d));
     nameMarks->push_back(nameMark);

@@ -42,7 +42,9 @@
 namespace fx {
 
 /// How particles are drawn. `FromReaction` uses each reaction's own `render.technique`.
-enum class Technique : uint8_t { FromReaction = 0, Hard, Soft, Spherical };
+/// Mega (API 1.2): seed 001's mega-particles: spheres into a reduced-resolution target against
+/// the scene depth, blurred, given fractal detail, lit and composited as one volume.
+enum class Technique : uint8_t { FromReaction = 0, Hard, Soft, Spherical, Mega };
 
 /// Run-time switches. Defaults: every reaction draws its own technique at full resolution.
 struct RenderOptions {
@@ -181,6 +183,30 @@ public:
         (void)name;
         (void)point;
         return ErrorCode::InvalidValue;
+    }
+
+    // ---- API 1.2: light and shadow ----
+
+    /// API 1.2: lights the smoke with the host's sun and ambient from the next declarePasses on
+    /// (each reaction's `lighting:` keys say how). Until the first call the smoke is unlit (the
+    /// 1.1 look). Refused (InvalidValue, nothing changes): a non-finite value, a zero toSun or a
+    /// negative colour. Not pure, so an adapter written against 1.1 still compiles.
+    virtual ErrorCode setSceneLight(const SceneLight& light) {
+        (void)light;
+        return ErrorCode::InvalidValue;
+    }
+    /// API 1.2: back to unlit smoke (the 1.1 look); no opacity map is drawn.
+    virtual void clearSceneLight() {}
+    /// API 1.2: with a scene light set and lit smoke alive, declares the pass that draws the
+    /// smoke's opacity along the sun into a target of this frame and returns it (else declares
+    /// nothing and returns an invalid SmokeShadow). Call it for a view before declaring the host
+    /// passes that sample the result (the ground); the particle passes of declarePasses() for the
+    /// same view reuse it for self-shadowing. A host that never calls it still gets self-shadowed
+    /// smoke (declarePasses declares the pass itself). Refused like declarePasses (InvalidView).
+    virtual SmokeShadow declareShadowPasses(const ViewInfo& view, FrameBuilder& frame) {
+        (void)view;
+        (void)frame;
+        return SmokeShadow{};
     }
 };
 

@@ -107,4 +107,26 @@ struct ReactionStats {
     uint64_t dropped = 0;   ///< particles due while its pool was full
 };
 
+/// The scene's sun and sky light, as the host lights its own scene (Plugin::setSceneLight,
+/// API 1.2). Valid: finite; toSun not zero (it need not be unit length); colours >= 0.
+/// Defaults: a sun 35 degrees high, white, and a grey-blue ambient.
+struct SceneLight {
+    glm::vec3 toSun{0.47f, 0.57f, 0.67f};   ///< world space, from the scene toward the sun
+    glm::vec3 sunColor{1.0f, 0.97f, 0.92f}; ///< linear RGB irradiance of the sun (1 = white)
+    glm::vec3 ambient{0.42f, 0.45f, 0.50f}; ///< linear RGB of the sky light from every side
+};
+
+/// The smoke's opacity seen from the sun (Plugin::declareShadowPasses, API 1.2), for the host to
+/// darken what lies under the smoke. `opacity` is an RGBA16F frame-graph target the plugin's pass
+/// writes; a host pass that samples it lists it among its reads. Channel k (k = 0..3) holds the
+/// optical depth (>= 0, dimensionless) of the smoke between the sun and light-space depth
+/// (k + 1) / 4; alpha is the whole column, so ground light is multiplied by exp(-alpha).
+/// `worldToShadow` maps a world position to ([0,1] u, [0,1] v, [0,1] light depth, 1); outside
+/// [0,1]^2 there is no smoke. Defaults: no target (no smoke: the host shades as without smoke).
+struct SmokeShadow {
+    Target opacity;
+    glm::mat4 worldToShadow{1.0f};
+    bool valid() const { return opacity.valid(); }
+};
+
 }  // namespace fx
