@@ -193,7 +193,8 @@ bool PluginImpl::pollShaderReload(Diagnostics* out) {
     return shaderReloadHook_ ? shaderReloadHook_(out) : false;
 }
 
-ErrorCode PluginImpl::declarePasses(const ViewInfo& view, FrameBuilder& frame) {
+// What is wrong with `view` ("" when it is valid; see ViewInfo).
+static std::string viewProblem(const ViewInfo& view) {
     std::string bad;
     if (view.width <= 0 || view.height <= 0) {
         bad = "size " + std::to_string(view.width) + "x" + std::to_string(view.height) +
@@ -209,6 +210,43 @@ ErrorCode PluginImpl::declarePasses(const ViewInfo& view, FrameBuilder& frame) {
         bad = "depth convention " + std::to_string(static_cast<int>(view.depth)) +
               "; expected Standard or ReversedZ";
     }
+    return bad;
+}
+
+ErrorCode PluginImpl::setSceneLight(const SceneLight& light) {
+    auto finite3 = [](const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    auto nonNegative = [](const glm::vec3& v) { return v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f; };
+    if (!finite3(light.toSun) || !finite3(light.sunColor) || !finite3(light.ambient)) {
+        return errors_.refuse(ErrorCode::InvalidValue, "setSceneLight", "non-finite value; expected finite vectors");
+    }
+    const float len = glm::length(light.toSun);
+    if (!(len > 1e-6f) || !std::isfinite(len)) {
+        return errors_.refuse(ErrorCode::InvalidValue, "setSceneLight",
+                              "toSun has length " + std::to_string(len) + "; expected a non-zero direction");
+    }
+    if (!nonNegative(light.sunColor) || !nonNegative(light.ambient)) {
+        return errors_.refuse(ErrorCode::InvalidValue, "setSceneLight",
+                              "negative colour; expected sunColor and ambient >= 0");
+    }
+    light_.on = true;
+    light_.toSun = light.toSun / len;
+    light_.sunColor = light.sunColor;
+    light_.ambient = light.ambient;
+    return ErrorCode::None;
+}
+
+SmokeShadow PluginImpl::declareShadowPasses(const ViewInfo& view, FrameBuilder& frame) {
+    const std::string bad = viewProblem(view);
+    if (!bad.empty()) {
+        errors_.refuse(ErrorCode::InvalidView, "declareShadowPasses", bad);
+        return SmokeShadow{};
+    }
+    if (!light_.on || !shadowHook_) return SmokeShadow{};
+    return shadowHook_(view, frame, runtimes_);
+}
+
+ErrorCode PluginImpl::declarePasses(const ViewInfo& view, FrameBuilder& frame) {
+    const std::string bad = viewProblem(view);
     if (!bad.empty()) {
         particlesDrawn_ = 0;
         return errors_.refuse(ErrorCode::InvalidView, "declarePasses", bad);

@@ -22,6 +22,7 @@
 #include "fx/HostAdapter.h"
 #include "fx/Plugin.h"
 #include "../reactions/ReactionLibrary.h"
+#include "../render/LightState.h"
 #include "../sim/ReactionRuntime.h"
 #include "ApiErrors.h"
 
@@ -61,9 +62,18 @@ public:
     ParticleShape particleShape() const override { return shape_; }
     ReactionStats reactionStats(int index) const override;
     ErrorCode fireReaction(const std::string& name, const glm::vec3& point) override;
+    ErrorCode setSceneLight(const SceneLight& light) override;
+    void clearSceneLight() override { light_ = LightState{}; }
+    SmokeShadow declareShadowPasses(const ViewInfo& view, FrameBuilder& frame) override;
 
     /// The renderer's entry; pass an empty function to remove it.
     void setRenderHook(RenderHook hook) { renderHook_ = std::move(hook); }
+    using ShadowHook = std::function<SmokeShadow(const ViewInfo&, FrameBuilder&,
+                                                 const std::vector<ReactionRuntime>&)>;
+    /// The renderer's Plugin::declareShadowPasses (after the view was validated).
+    void setShadowHook(ShadowHook hook) { shadowHook_ = std::move(hook); }
+    /// The scene light the renderers draw with (LightState::on false = unlit).
+    const LightState& light() const { return light_; }
     /// The renderer's Plugin::prepareGl.
     void setPrepareHook(PrepareHook hook) { prepareHook_ = std::move(hook); }
     /// The renderer's Plugin::pollShaderReload.
@@ -100,6 +110,8 @@ private:
     RenderHook renderHook_;
     PrepareHook prepareHook_;
     PrepareHook shaderReloadHook_;
+    ShadowHook shadowHook_;
+    LightState light_;
     mutable ApiErrors errors_;  // mutable: a const query (reactionName) may refuse too
     int particlesDrawn_ = 0;
     int reloads_ = 0;
