@@ -10,6 +10,7 @@ in vec2 vLocal;
 flat in vec4 vRamp;
 flat in float vFade;
 flat in float vFrame;
+flat in float vRotation;
 
 layout(location = 0) out vec4 oColor;
 
@@ -19,6 +20,9 @@ void main() {
     float coverage = texel.a * nearFadeFactor(depth);
 #ifdef FX_LINEAR_DEPTH_TEST
     coverage *= depth <= sceneDepthAt(gl_FragCoord.xy) ? 1.0 : 0.0;
+#endif
+#ifdef FX_LIT
+    texel.rgb *= smokeLight(billboardNormal(atlasUV(vLocal, vFrame), vRotation), vViewPos, texel.a);
 #endif
     oColor = shadeOutput(vRamp, vFade, texel, coverage);
 }

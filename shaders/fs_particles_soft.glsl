@@ -11,6 +11,7 @@ in vec2 vLocal;
 flat in vec4 vRamp;
 flat in float vFade;
 flat in float vFrame;
+flat in float vRotation;
 
 layout(location = 0) out vec4 oColor;
 
@@ -19,5 +20,8 @@ void main() {
     float depth = -vViewPos.z;
     float coverage = texel.a * softFade(sceneDepthAt(gl_FragCoord.xy), depth) *
                      nearFadeFactor(depth);
+#ifdef FX_LIT
+    texel.rgb *= smokeLight(billboardNormal(atlasUV(vLocal, vFrame), vRotation), vViewPos, texel.a);
+#endif
     oColor = shadeOutput(vRamp, vFade, texel, coverage);
 }

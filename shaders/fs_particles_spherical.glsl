@@ -43,5 +43,12 @@ void main() {
     float visible = clamp((t1 - t0) / (2.0 * halfChord), 0.0, 1.0);
     float midDepth = 0.5 * (t0 + t1) * depthPerMetre;
     float coverage = texel.a * visible * nearFadeFactor(max(midDepth, uNear));
+#ifdef FX_LIT
+    // The sphere's normal where the visible chord starts, bent by the atlas's normal map.
+    vec3 entry = dir * t0;
+    vec3 bumps = atlasNormal(atlasUV(rotate2(offset.xy / r, vRotation), vFrame));
+    vec3 n = normalize((entry - centre) / r + uNormalStrength * 0.6 * vec3(rotate2(bumps.xy, -vRotation), 0.0));
+    texel.rgb *= smokeLight(n, 0.5 * (t0 + t1) * dir, texel.a);
+#endif
     oColor = shadeOutput(vRamp, vFade, texel, coverage);
 }

@@ -120,3 +120,71 @@ vec4 shadeOutput(vec4 ramp, float fade, vec4 texel, float coverage) {
     float a = ramp.a * k;
     return vec4(ramp.rgb * texel.rgb * (uBlendMode == 1 ? k : a), uBlendMode == 2 ? 0.0 : a);
 }
+
+#ifdef FX_LIT
+// ---- Lit smoke (Plugin::setSceneLight, reaction key `lighting:`) ----
+// Diffuse light on a per-pixel normal (the atlas's normal map for billboards, the sphere's own
+// normal for spherical billboards), wrapped because smoke is translucent, plus single
+// scattering with the Henyey-Greenstein phase, so smoke between the camera and the sun glows
+// where it is thin. Both are dimmed by the smoke between the pixel and the sun: the opacity
+// map (SmokeOpacityMap.h), four slices of optical depth along the light.
+uniform vec3 uSunView;        // unit, view space, toward the sun
+uniform vec3 uSunColor;       // linear RGB
+uniform vec3 uAmbient;        // host ambient x lighting.ambient
+uniform float uNormalStrength;
+uniform float uScattering;
+uniform float uAnisotropy;    // Henyey-Greenstein g
+uniform float uAbsorption;    // optical depth per unit of accumulated opacity
+uniform int uShadowed;        // 1: uOpacity holds this frame's opacity map
+uniform mat4 uViewToShadow;   // view space -> (u, v, light depth, 1), each in [0, 1] inside the map
+uniform sampler2D uNormals;   // SmokeAtlas::kNormalsFileName: 128 + 127 n, 0 where the atlas is empty
+uniform sampler2D uOpacity;   // RGBA16F: optical depth up to light depth 1/4, 2/4, 3/4, 1
+
+const float kWrap = 0.5;      // diffuse wrap: light reaches 1/3 of the way round the terminator
+
+// The atlas normal at `uv` in particle space (x right, y up, z toward the viewer); (0, 0, 1)
+// where the map is empty.
+vec3 atlasNormal(vec2 uv) {
+    vec3 n = (texture(uNormals, uv).rgb * 255.0 - 128.0) / 127.0;
+    float len2 = dot(n, n);
+    return len2 > 1e-4 ? n * inversesqrt(len2) : vec3(0.0, 0.0, 1.0);
+}
+
+// A billboard's shading normal in view space: the atlas normal turned with the sprite (texture
+// axes are the screen axes rotated by `rotation`), against a flat card facing the camera.
+vec3 billboardNormal(vec2 uv, float rotation) {
+    vec3 n = atlasNormal(uv);
+    vec3 turned = vec3(rotate2(n.xy, -rotation), n.z);
+    return normalize(mix(vec3(0.0, 0.0, 1.0), turned, uNormalStrength));
+}
+
+// Optical depth of the smoke between view-space point `p` and the sun. The four channels are
+// the optical depth up to the slice boundaries 1/4 .. 1; between them it is linear, and 0 at
+// light depth 0 (no branches: each channel's increment weighted by how far p is past its start).
+float opticalDepthToSun(vec3 p) {
+    vec4 s = uViewToShadow * vec4(p, 1.0);
+    vec4 m = texture(uOpacity, s.xy);
+    float inside = all(greaterThanEqual(s.xy, vec2(0.0))) && all(lessThanEqual(s.xy, vec2(1.0))) ? 1.0 : 0.0;
+    // Read half a slice toward the sun: a particle is spread over the quarter-slice around its
+    // own depth, and this keeps it from shadowing itself.
+    vec4 w = clamp(vec4(clamp(s.z, 0.0, 1.0) * 4.0 - 0.5) - vec4(0.0, 1.0, 2.0, 3.0), 0.0, 1.0);
+    vec4 increments = m - vec4(0.0, m.rgb);
+    return dot(increments, w) * inside * float(uShadowed);
+}
+
+// Light arriving at a smoke pixel of normal `n` (view space) at view position `p`, whose
+// opacity is `density`: ambient + sun x transmittance x (diffuse and scattered shares).
+// Henyey-Greenstein times 4 pi (1 on average over the sphere): (1 - g^2) / (1 + g^2 - 2 g c)^1.5,
+// c the cosine between the sun's light direction and the direction to the eye.
+vec3 smokeLight(vec3 n, vec3 p, float density) {
+    vec3 toEye = normalize(-p);
+    float diffuse = clamp((dot(n, uSunView) + kWrap) / (1.0 + kWrap), 0.0, 1.0);
+    float c = dot(-uSunView, toEye);
+    float g = uAnisotropy;
+    float base = max(1.0 + g * g - 2.0 * g * c, 1e-4);
+    float phase = (1.0 - g * g) / (base * sqrt(base));
+    float thin = 1.0 - 0.6 * density;  // thin edges pass more forward-scattered light
+    float transmittance = exp(-uAbsorption * opticalDepthToSun(p));
+    return uAmbient + uSunColor * transmittance * mix(diffuse, phase * thin, uScattering);
+}
+#endif

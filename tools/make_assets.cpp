@@ -342,7 +342,7 @@ int main(int argc, char** argv) {
         return 1;
     }
     if (!writeRace(dir) || !writeSmokeAtlas(dir + "/smoke_atlas.png")) return 1;
-    for (const char* f : {"race.gltf", "race.bin", "race.glb", "smoke_atlas.png"}) {
+    for (const char* f : {"race.gltf", "race.bin", "race.glb", "smoke_atlas.png", "smoke_normals.png"}) {
         const std::string p = dir + "/" + f;
         std::printf("wrote %-28s %8llu bytes\n", p.c_str(),
                     static_cast<unsigned long long>(std::filesystem::file_size(p, ec)));

@@ -5,6 +5,7 @@
 // where alpha is 0, so bilinear filtering never pulls in black); alpha is the density, straight
 // (not premultiplied): the particle shader multiplies colour by alpha itself. Alpha is exactly 0
 // on every cell border, so neighbouring puffs never bleed into each other.
+// Beside it, smoke_normals.png: the same puffs' normals for lit smoke (writeSmokeNormals).
 
 #include <stb_image_write.h>
 
@@ -78,6 +79,65 @@ const PuffParams kPuffs[kCells * kCells] = {
 
 uint8_t toByte(float v) { return uint8_t(std::lround(glm::clamp(v, 0.0f, 1.0f) * 255.0f)); }
 
+// A signed component in [-1, 1] as 128 + round(127 v): 0 is exactly 128, so a zero normal
+// (where the puff is empty) decodes to exactly zero ((byte - 128) / 127).
+uint8_t toSignedByte(float v) { return uint8_t(128 + std::lround(glm::clamp(v, -1.0f, 1.0f) * 127.0f)); }
+
+// The normal atlas from the density field (the alpha bytes). Each puff is lit as a lumpy dome:
+// height = a dome over the cell (the puff's bulk) plus the smoothed density (its lumps); the
+// normal is the height field's, in particle space (x right, y up, z toward the viewer). Zero
+// where alpha is 0, unit length elsewhere. RGB = the signed normal, A = the height (0 outside).
+bool writeSmokeNormals(const std::string& path, const std::vector<uint8_t>& rgba) {
+    std::vector<float> height(size_t(kSize) * kSize, 0.0f);
+    auto alphaAt = [&](int x, int y) {
+        x = glm::clamp(x, 0, kSize - 1);
+        y = glm::clamp(y, 0, kSize - 1);
+        return float(rgba[(size_t(y) * kSize + size_t(x)) * 4 + 3]) / 255.0f;
+    };
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            // 5x5 box of density (softens the 8-bit steps before differentiating).
+            float sum = 0.0f;
+            for (int dy = -2; dy <= 2; ++dy)
+                for (int dx = -2; dx <= 2; ++dx) sum += alphaAt(x + dx, y + dy);
+            const glm::vec2 q = (glm::vec2(float(x % kCell), float(y % kCell)) + 0.5f) / float(kCell) * 2.0f - 1.0f;
+            // The dome spans the puff (radius 0.85 of the half cell), not the whole cell.
+            const float dome = std::sqrt(glm::max(0.0f, 1.0f - glm::dot(q, q) / (0.85f * 0.85f)));
+            height[size_t(y) * kSize + size_t(x)] = 0.8f * dome + 0.35f * sum / 25.0f;
+        }
+    }
+    std::vector<uint8_t> out(size_t(kSize) * kSize * 4);
+    const float slope = float(kCell) / 2.0f;  // d(height)/d(texel) -> d(height)/d(q), q in [-1, 1]
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            uint8_t* px = &out[(size_t(y) * kSize + size_t(x)) * 4];
+            if (rgba[(size_t(y) * kSize + size_t(x)) * 4 + 3] == 0) {
+                px[0] = px[1] = px[2] = 128;
+                px[3] = 0;
+                continue;
+            }
+            // Central differences inside the cell (image y grows downward: flip to +y up).
+            const int cx = x / kCell * kCell, cy = y / kCell * kCell;
+            const int x0 = glm::max(x - 1, cx), x1 = glm::min(x + 1, cx + kCell - 1);
+            const int y0 = glm::max(y - 1, cy), y1 = glm::min(y + 1, cy + kCell - 1);
+            const float dhdx = (height[size_t(y) * kSize + size_t(x1)] - height[size_t(y) * kSize + size_t(x0)]) /
+                               float(x1 - x0);
+            const float dhdy = -(height[size_t(y1) * kSize + size_t(x)] - height[size_t(y0) * kSize + size_t(x)]) /
+                               float(y1 - y0);
+            const glm::vec3 n = glm::normalize(glm::vec3(-dhdx * slope, -dhdy * slope, 1.0f));
+            px[0] = toSignedByte(n.x);
+            px[1] = toSignedByte(n.y);
+            px[2] = toSignedByte(n.z);
+            px[3] = toByte(height[size_t(y) * kSize + size_t(x)]);
+        }
+    }
+    if (!stbi_write_png(path.c_str(), kSize, kSize, 4, out.data(), kSize * 4)) {
+        std::fprintf(stderr, "make_assets: cannot write %s\n", path.c_str());
+        return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 bool writeSmokeAtlas(const std::string& path) {
@@ -117,5 +177,8 @@ bool writeSmokeAtlas(const std::string& path) {
         std::fprintf(stderr, "make_assets: cannot write %s\n", path.c_str());
         return false;
     }
-    return true;
+    // smoke_normals.png next to it (lit smoke).
+    const size_t slash = path.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+    return writeSmokeNormals(dir + "smoke_normals.png", rgba);
 }

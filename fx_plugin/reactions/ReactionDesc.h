@@ -105,7 +105,7 @@ struct LightingDesc {
     float normalStrength = 0.7f;   ///< [0, 1] share of the atlas normal against a flat, camera-facing card
     float scattering = 0.35f;      ///< [0, 1] share of the sun light scattered by the phase function instead of diffusely
     float anisotropy = 0.6f;       ///< [-0.95, 0.95] Henyey-Greenstein g; > 0 glows toward the sun
-    float absorption = 1.5f;       ///< [0, 20] optical depth per unit of accumulated opacity (self-shadowing)
+    float absorption = 1.0f;       ///< [0, 20] optical depth per unit of accumulated opacity (self-shadowing)
     float ambient = 1.0f;          ///< [0, 2] multiplier of the host's ambient colour
     bool castsShadow = true;       ///< drawn into the opacity map (self-shadowing, shadow on the ground)
     bool lit(BlendMode blend) const { return enabled && blend != BlendMode::Additive; }

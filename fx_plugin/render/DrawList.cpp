@@ -68,6 +68,7 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
         batch.softScale = 1.0f / std::fmax(render.softness, 1e-6f);  // the loader allows [1e-6, 1e6] m
         batch.contrastPower = render.contrastPower;
         batch.nearFade = render.nearFade;
+        batch.lighting = in.desc->lighting;
         out->batches.push_back(batch);
         if (technique != Technique::Hard) out->needsSceneDepth = true;
     }

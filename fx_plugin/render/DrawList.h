@@ -38,6 +38,7 @@ struct DrawBatch {
     float softScale = 2.0f;      ///< 1 / render.softness
     float contrastPower = 1.0f;
     float nearFade = 0.5f;
+    LightingDesc lighting;       ///< the reaction's `lighting:` keys (lit when a scene light is set)
 };
 
 struct DrawList {

@@ -29,9 +29,19 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
             batches->push_back(ParticleBatch{&r.pool(), &r.desc(), r.needsSorting()});
         }
         renderer->setParticleShape(owner->particleShape());
+        renderer->setLight(owner->light());
         const int drawn = renderer->declarePasses(view, frame, batches->data(),
                                                   static_cast<int>(batches->size()), options);
         owner->setParticlesDrawn(drawn + stateless->declarePasses(view, frame, runtimes));
+    });
+    plugin.setShadowHook([renderer, batches, owner](const ViewInfo&, FrameBuilder& frame,
+                                                    const std::vector<ReactionRuntime>& runtimes) {
+        batches->clear();
+        for (const ReactionRuntime& r : runtimes) {
+            batches->push_back(ParticleBatch{&r.pool(), &r.desc(), r.needsSorting()});
+        }
+        renderer->setLight(owner->light());
+        return renderer->declareShadowPasses(frame, batches->data(), static_cast<int>(batches->size()));
     });
     plugin.setPrepareHook([renderer](Diagnostics* out) { return renderer->prepare(out); });
     plugin.setShaderReloadHook([renderer](Diagnostics* out) { return renderer->reloadShaders(out); });

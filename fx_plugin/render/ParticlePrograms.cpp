@@ -45,28 +45,44 @@ ParticleProgram locate(GLuint program) {
     p.shapes = glGetUniformLocation(program, "uShapes");
     p.powerWhole = glGetUniformLocation(program, "uPowerWhole");
     p.powerHalf = glGetUniformLocation(program, "uPowerHalf");
+    p.sunView = glGetUniformLocation(program, "uSunView");
+    p.sunColor = glGetUniformLocation(program, "uSunColor");
+    p.ambient = glGetUniformLocation(program, "uAmbient");
+    p.normalStrength = glGetUniformLocation(program, "uNormalStrength");
+    p.scattering = glGetUniformLocation(program, "uScattering");
+    p.anisotropy = glGetUniformLocation(program, "uAnisotropy");
+    p.absorption = glGetUniformLocation(program, "uAbsorption");
+    p.shadowed = glGetUniformLocation(program, "uShadowed");
+    p.viewToShadow = glGetUniformLocation(program, "uViewToShadow");
+    p.normals = glGetUniformLocation(program, "uNormals");
+    p.opacity = glGetUniformLocation(program, "uOpacity");
     return p;
 }
 
 }  // namespace
 
 ParticlePrograms::~ParticlePrograms() {
-    for (ParticleProgram& p : programs_) {
-        if (p.program) glDeleteProgram(p.program);
+    for (auto& row : programs_) {
+        for (ParticleProgram& p : row) {
+            if (p.program) glDeleteProgram(p.program);
+        }
     }
 }
 
 void ParticlePrograms::build(const std::string& shaderDir, std::vector<std::string>* errors) {
-    for (int v = 0; v < VariantCount; ++v) {
-        if (programs_[v].program) continue;
-        std::string error;
-        const GLuint program = buildProgram(shaderDir, "vs_particles.glsl", kSources[v].fragment,
-                                            kSources[v].defines, &error);
-        if (!program) {
-            errors->push_back(error);
-            continue;
+    for (int lit = 0; lit < 2; ++lit) {
+        for (int v = 0; v < VariantCount; ++v) {
+            if (programs_[lit][v].program) continue;
+            std::string error;
+            const std::string defines = std::string(kSources[v].defines) + (lit ? "#define FX_LIT 1\n" : "");
+            const GLuint program =
+                buildProgram(shaderDir, "vs_particles.glsl", kSources[v].fragment, defines, &error);
+            if (!program) {
+                errors->push_back(error);
+                continue;
+            }
+            programs_[lit][v] = locate(program);
         }
-        programs_[v] = locate(program);
     }
 }
 
@@ -87,6 +103,7 @@ ParticlePrograms::Variant ParticlePrograms::variantFor(Technique technique, bool
     case Technique::Hard: return quarterRes ? HardLinearDepth : HardZBuffer;
     case Technique::Spherical: return Spherical;
     case Technique::Soft:
+    case Technique::Mega:  // drawn by its own renderer; soft where a billboard stands in
     case Technique::FromReaction: break;
     }
     int whole = 0, half = 0;
@@ -96,10 +113,10 @@ ParticlePrograms::Variant ParticlePrograms::variantFor(Technique technique, bool
 uint32_t ParticlePrograms::usableTechniques(bool quarterRes) const {
     uint32_t mask = 0;
     for (Technique t : {Technique::Hard, Technique::Soft, Technique::Spherical}) {
-        if (programs_[variantFor(t, quarterRes)].program) mask |= techniqueBit(t);
+        if (programs_[0][variantFor(t, quarterRes)].program) mask |= techniqueBit(t);
     }
     // Soft draws with either soft program (by contrast_power): both or neither.
-    if (!programs_[SoftGeneralPower].program) mask &= ~techniqueBit(Technique::Soft);
+    if (!programs_[0][SoftGeneralPower].program) mask &= ~techniqueBit(Technique::Soft);
     return mask;
 }
 

@@ -6,6 +6,8 @@
 //                                                    multiplies and a sqrt)
 //   SoftGeneralPower vs_particles + fs_particles_soft, FX_GENERAL_POWER (any contrast_power: pow)
 //   Spherical       vs_particles + fs_particles_spherical, FX_SPHERICAL
+// Each again with FX_LIT (lit smoke: particles_common.glsl's smokeLight) for reactions drawn
+// under a scene light; unlit smoke keeps the programs without a line of lighting code.
 // A program that fails to build stays 0 and its technique is not drawn (the failure is reported
 // by the caller); the others still work.
 #include <cstdint>
@@ -24,6 +26,9 @@ struct ParticleProgram {
     int atlas = -1, ramp = -1, sceneDepth = -1;
     int trimmed = -1, shapeBuckets = -1, lodScale = -1, shapes = -1;
     int powerWhole = -1, powerHalf = -1;
+    // FX_LIT only.
+    int sunView = -1, sunColor = -1, ambient = -1, normalStrength = -1, scattering = -1, anisotropy = -1,
+        absorption = -1, shadowed = -1, viewToShadow = -1, normals = -1, opacity = -1;
 };
 
 class ParticlePrograms {
@@ -37,7 +42,8 @@ public:
 
     /// Builds every variant; appends one "file:line: message" block per failed one to *errors.
     void build(const std::string& shaderDir, std::vector<std::string>* errors);
-    const ParticleProgram& get(Variant v) const { return programs_[v]; }
+    /// `lit`: the FX_LIT build of the variant (program 0 when it failed to build: draw unlit).
+    const ParticleProgram& get(Variant v, bool lit = false) const { return programs_[lit ? 1 : 0][v]; }
     /// `contrastPower` picks between the two soft programs (see above).
     static Variant variantFor(Technique technique, bool quarterRes, float contrastPower = 1.0f);
     /// contrast_power = whole + half / 2 with whole in [0, 16], half 0 or 1: true and the split.
@@ -46,7 +52,7 @@ public:
     uint32_t usableTechniques(bool quarterRes) const;
 
 private:
-    ParticleProgram programs_[VariantCount];
+    ParticleProgram programs_[2][VariantCount];  ///< [unlit, lit]
 };
 
 }  // namespace fx

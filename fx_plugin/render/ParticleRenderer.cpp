@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
+#include <initializer_list>
 #include <utility>
 
 #include "render/PrivateGl.h"
@@ -15,7 +17,25 @@ namespace fx {
 namespace {
 
 // Texture units of the particle draws (all below GlStateGuard::kTextureUnits).
-constexpr int kAtlasUnit = 0, kRampUnit = 1, kSceneDepthUnit = 2;
+constexpr int kAtlasUnit = 0, kRampUnit = 1, kSceneDepthUnit = 2, kNormalsUnit = 3, kOpacityUnit = 4;
+
+// FrameBuilder::addPass with the valid ones of up to four read targets (an invalid Target is
+// "not read": the opacity map is there only for lit smoke).
+void addPassReading(FrameBuilder& frame, const char* name, std::initializer_list<Target> maybeReads,
+                    Target write, std::function<void(PassContext&)> execute) {
+    Target r[4];
+    int n = 0;
+    for (Target t : maybeReads) {
+        if (t.valid() && n < 4) r[n++] = t;
+    }
+    switch (n) {
+    case 0: frame.addPass(name, {}, {write}, std::move(execute)); break;
+    case 1: frame.addPass(name, {r[0]}, {write}, std::move(execute)); break;
+    case 2: frame.addPass(name, {r[0], r[1]}, {write}, std::move(execute)); break;
+    case 3: frame.addPass(name, {r[0], r[1], r[2]}, {write}, std::move(execute)); break;
+    default: frame.addPass(name, {r[0], r[1], r[2], r[3]}, {write}, std::move(execute)); break;
+    }
+}
 
 class DebugGroup {
 public:
@@ -107,6 +127,11 @@ bool ParticleRenderer::ensureLoaded() {
     std::vector<std::string> errors;
     programs_->build(config_.shaderDir, &errors);
     quarter_->build(config_.shaderDir, &errors);
+    opacity_->build(config_.shaderDir, &errors);
+    if (!atlas_.normals() && !normalsWarned_) {
+        log(LogLevel::Warning, "fx: lit smoke is drawn as flat cards: " + atlas_.normalsError());
+        normalsWarned_ = true;
+    }
     for (const std::string& e : errors) {
         log(LogLevel::Error, "fx: shader build failed:\n" + e);
         addShaderDiagnostics(e, &loadDiagnostics_);
@@ -154,9 +179,11 @@ bool ParticleRenderer::reloadShaders(Diagnostics* out) {
     GlStateGuard guard;
     auto programs = std::make_unique<ParticlePrograms>();
     auto quarter = std::make_unique<QuarterResPath>();
+    auto opacity = std::make_unique<SmokeOpacityMap>();
     std::vector<std::string> errors;
     programs->build(config_.shaderDir, &errors);
     quarter->build(config_.shaderDir, &errors);
+    opacity->build(config_.shaderDir, &errors);
     if (!errors.empty()) {
         // The new programs are dropped (their destructors delete what did build); the running
         // ones stay, so the smoke on screen does not change.
@@ -173,6 +200,7 @@ bool ParticleRenderer::reloadShaders(Diagnostics* out) {
     }
     programs_ = std::move(programs);
     quarter_ = std::move(quarter);
+    opacity_ = std::move(opacity);
     log(LogLevel::Info, "fx: particle shaders reloaded from " + config_.shaderDir);
     return true;
 }
@@ -211,6 +239,10 @@ std::shared_ptr<ParticleRenderer::ViewRecord> ParticleRenderer::acquireRecord() 
 int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
                                     const ParticleBatch* batches, int batchCount,
                                     const RenderOptions& options) {
+    // The opacity map declareShadowPasses declared for this frame (taken now: a Target is valid
+    // for one frame only).
+    SmokeShadow shadow = pendingShadow_;
+    pendingShadow_ = SmokeShadow{};
     if (state_ == State::Failed) return 0;
     std::shared_ptr<ViewRecord> record = acquireRecord();
     record->view = view;
@@ -240,33 +272,30 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     const int drawn = record->list.particleCount();
     if (drawn == 0) return 0;
 
-    rampInputs_.clear();
-    for (int b = 0; b < batchCount; ++b) {
-        rampInputs_.push_back(batches[b].desc ? &batches[b].desc->particle.colorRamp : &whiteRamp());
+    setRampRows(batches, batchCount);
+
+    // Lit smoke: the opacity map the host had declared for this frame, else one of our own.
+    record->lit = light_.on;
+    record->opacity = Target{};
+    if (light_.on && !shadow.valid()) shadow = declareOpacityPass(frame, batches, batchCount);
+    if (light_.on && shadow.valid()) {
+        record->opacity = shadow.opacity;
+        record->worldToShadow = shadow.worldToShadow;
     }
-    ramp_.setRows(rampInputs_);
+    const Target opacity = record->opacity;
 
     const Target color = frame.sceneColor();
     if (!quarterRes) {
-        if (record->list.needsSceneDepth) {
-            const Target depth = frame.sceneDepth();
-            frame.addPass(kFullResPass, {depth}, {color},
-                          [this, record, depth, color](PassContext& ctx) {
-                              if (!sizesAgree(ctx, record->view, color, depth)) return;
-                              GlStateGuard guard;
-                              DebugGroup group(kFullResPass);
-                              ctx.bindForDraw(color);
-                              drawBatches(*record, ctx.texture(depth, 0).name, false);
-                          });
-        } else {
-            frame.addPass(kFullResPass, {}, {color}, [this, record, color](PassContext& ctx) {
-                if (!sizesAgree(ctx, record->view, color, Target{})) return;
-                GlStateGuard guard;
-                DebugGroup group(kFullResPass);
-                ctx.bindForDraw(color);
-                drawBatches(*record, 0, false);
-            });
-        }
+        const Target depth = record->list.needsSceneDepth ? frame.sceneDepth() : Target{};
+        addPassReading(frame, kFullResPass, {depth, opacity}, color,
+                       [this, record, depth, color, opacity](PassContext& ctx) {
+                           if (!sizesAgree(ctx, record->view, color, depth)) return;
+                           GlStateGuard guard;
+                           DebugGroup group(kFullResPass);
+                           ctx.bindForDraw(color);
+                           drawBatches(*record, depth.valid() ? ctx.texture(depth, 0).name : 0, false, false,
+                                       opacity.valid() ? ctx.texture(opacity, 0).name : 0);
+                       });
         return drawn;
     }
 
@@ -287,18 +316,16 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
                       DebugGroup group(QuarterResPath::kDownsamplePass);
                       quarter_->downsampleDepth(ctx, depth, halfDepth, record->rect);
                   });
-    auto quarterPass = [this, record, halfDepth, halfColor, depth, halfZ](PassContext& ctx) {
+    auto quarterPass = [this, record, halfDepth, halfColor, depth, halfZ, opacity](PassContext& ctx) {
         GlStateGuard guard;
         DebugGroup group(QuarterResPath::kQuarterPass);
         const bool zTested = quarter_->beginQuarter(ctx, halfColor, record->rect, halfZ ? depth : Target{},
                                                     halfZ ? &record->view : nullptr);
-        drawBatches(*record, ctx.texture(halfDepth, 0).name, true, zTested);
+        drawBatches(*record, ctx.texture(halfDepth, 0).name, true, zTested,
+                    opacity.valid() ? ctx.texture(opacity, 0).name : 0);
     };
-    if (halfZ) {
-        frame.addPass(QuarterResPath::kQuarterPass, {halfDepth, depth}, {halfColor}, quarterPass);
-    } else {
-        frame.addPass(QuarterResPath::kQuarterPass, {halfDepth}, {halfColor}, quarterPass);
-    }
+    addPassReading(frame, QuarterResPath::kQuarterPass, {halfDepth, halfZ ? depth : Target{}, opacity}, halfColor,
+                   quarterPass);
     const bool bilinear = options.bilinearUpsample;
     frame.addPass(QuarterResPath::kCompositePass, {halfColor, halfDepth, depth}, {color},
                   [this, record, color, halfColor, halfDepth, depth, bilinear](PassContext& ctx) {
@@ -309,7 +336,16 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     return drawn;
 }
 
-void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes, bool halfZ) {
+void ParticleRenderer::setRampRows(const ParticleBatch* batches, int batchCount) {
+    rampInputs_.clear();
+    for (int b = 0; b < batchCount; ++b) {
+        rampInputs_.push_back(batches[b].desc ? &batches[b].desc->particle.colorRamp : &whiteRamp());
+    }
+    ramp_.setRows(rampInputs_);
+}
+
+void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes, bool halfZ,
+                                   uint32_t opacity) {
     const DrawList& list = record.list;
     const ViewInfo& view = record.view;
     glActiveTexture(GL_TEXTURE0);
@@ -326,6 +362,10 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
     bindTextureUnit(kAtlasUnit, atlas_.texture());
     bindTextureUnit(kRampUnit, ramp_.texture());
     bindTextureUnit(kSceneDepthUnit, sceneDepth);
+    if (record.lit) {
+        bindTextureUnit(kNormalsUnit, atlas_.normals());
+        bindTextureUnit(kOpacityUnit, opacity);
+    }
 
     const glm::vec2 slopes = frustumSlopes(view.proj);
     // Trimmed billboards: the LOD estimate needs the target's height in pixels (the viewport the
@@ -338,8 +378,11 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
     const float lodScale = 2.0f * float(atlas_.cellTexels()) /
                            std::fmax(std::fabs(view.proj[1][1]) * float(std::max(viewport[3], 1)), 1e-6f);
     for (const DrawBatch& batch : list.batches) {
-        const ParticleProgram& p =
-            programs_->get(ParticlePrograms::variantFor(batch.technique, quarterRes, batch.contrastPower));
+        const ParticlePrograms::Variant variant =
+            ParticlePrograms::variantFor(batch.technique, quarterRes, batch.contrastPower);
+        // Lit when the host set a light and the reaction takes it; unlit if the lit build failed.
+        const bool lit = record.lit && batch.lighting.lit(batch.blend) && programs_->get(variant, true).program;
+        const ParticleProgram& p = programs_->get(variant, lit);
         if (!p.program) continue;
         // Full resolution tests against the host's z-buffer without writing it. Hard particles
         // always do (that is their look). Soft and spherical ones only skip fragments there that
@@ -377,6 +420,7 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
             glUniform1i(p.powerHalf, powerHalf);
         }
         glUniform1f(p.nearFade, batch.nearFade);
+        if (lit) setLightUniforms(p, batch, record, opacity);
         glUniform1i(p.atlas, kAtlasUnit);
         glUniform1i(p.ramp, kRampUnit);
         glUniform1i(p.sceneDepth, kSceneDepthUnit);

@@ -34,8 +34,10 @@
 #include "DrawList.h"
 #include "InstanceStream.h"
 #include "ParticlePrograms.h"
+#include "LightState.h"
 #include "QuarterResPath.h"
 #include "SmokeAtlas.h"
+#include "SmokeOpacityMap.h"
 #include "fx/Diagnostic.h"
 #include "fx/HostAdapter.h"
 #include "fx/Plugin.h"
@@ -78,6 +80,12 @@ public:
     /// edit and appended to `out`, false. Needs the host's context current.
     bool reloadShaders(Diagnostics* out);
 
+    /// The scene light (Plugin::setSceneLight) from the next declarePasses on.
+    void setLight(const LightState& light) { light_ = light; }
+    /// Plugin::declareShadowPasses: with the light on and shadow casters alive, declares the
+    /// opacity map's pass and returns its target; the next declarePasses reuses it.
+    SmokeShadow declareShadowPasses(FrameBuilder& frame, const ParticleBatch* batches, int batchCount);
+
     /// Trimmed polygons or full quads for billboards, from the next declarePasses on.
     void setParticleShape(ParticleShape shape) { shape_ = shape; }
 
@@ -92,6 +100,9 @@ private:
         DrawList list;
         ParticleShape shape = ParticleShape::Trimmed;
         QuarterResPath::ScreenRect rect;  ///< quarter res: where the particles can be
+        bool lit = false;                 ///< the scene light is on
+        Target opacity;                   ///< the opacity map of this frame (invalid: unshadowed)
+        glm::mat4 worldToShadow{1.0f};
     };
 
     bool ensureLoaded();
@@ -104,7 +115,14 @@ private:
     /// Draws every batch of `record` into the bound target. `sceneDepth` is the linear depth
     /// texture of that target's size (0 when no batch needs it).
     /// `halfZ`: quarter res with the half-res z-buffer filled: z-test every batch (GEQUAL).
-    void drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes, bool halfZ = false);
+    void drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes, bool halfZ = false,
+                     uint32_t opacity = 0);
+    /// Sets the FX_LIT uniforms of `p` for `batch` (the program is in use).
+    void setLightUniforms(const ParticleProgram& p, const DrawBatch& batch, const ViewRecord& record,
+                          uint32_t opacity) const;
+    /// Loads the renderer if needed, records the casters and declares the opacity pass.
+    SmokeShadow declareOpacityPass(FrameBuilder& frame, const ParticleBatch* batches, int batchCount);
+    void setRampRows(const ParticleBatch* batches, int batchCount);
 
     ParticleRendererConfig config_;
     State state_ = State::Unloaded;
@@ -118,6 +136,10 @@ private:
     // Owned through pointers so a shader reload can build new ones beside them and swap.
     std::unique_ptr<ParticlePrograms> programs_ = std::make_unique<ParticlePrograms>();
     std::unique_ptr<QuarterResPath> quarter_ = std::make_unique<QuarterResPath>();
+    std::unique_ptr<SmokeOpacityMap> opacity_ = std::make_unique<SmokeOpacityMap>();
+    LightState light_;
+    SmokeShadow pendingShadow_;  ///< declared by declareShadowPasses, taken by the next declarePasses
+    bool normalsWarned_ = false;
     uint64_t shaderStamp_ = 0;  ///< shaderStamp() when the running programs were built
     DrawListBuilder builder_;
     std::vector<std::shared_ptr<ViewRecord>> records_;

@@ -10,53 +10,51 @@ namespace fx {
 
 SmokeAtlas::~SmokeAtlas() {
     if (texture_) glDeleteTextures(1, &texture_);
+    if (normals_) glDeleteTextures(1, &normals_);
 }
 
-bool SmokeAtlas::load(const std::string& dataDir, std::string* error) {
-    int w = 0, h = 0, channels = 0;
+namespace {
+
+// `dataDir`/`fileName`, or the embedded copy when `dataDir` is empty, decoded to RGBA8.
+// Null with "path: reason" in *error on failure; free with stbi_image_free.
+stbi_uc* decodePng(const std::string& dataDir, const char* fileName, const char* what, int* w, int* h,
+                   std::string* error) {
+    int channels = 0;
     stbi_uc* pixels = nullptr;
     std::string path;
     if (dataDir.empty()) {
-        path = std::string("<embedded>/") + kFileName;
-        const embedded::Resource* r = embedded::find(kFileName);
-        if (r) pixels = stbi_load_from_memory(r->data, int(r->size), &w, &h, &channels, 4);
+        path = std::string("<embedded>/") + fileName;
+        const embedded::Resource* r = embedded::find(fileName);
+        if (r) pixels = stbi_load_from_memory(r->data, int(r->size), w, h, &channels, 4);
     } else {
         // Read through SafeFile (regular files only, never blocking, at most 64 MiB), decode
         // from memory.
-        path = dataDir + "/" + kFileName;
+        path = dataDir + "/" + fileName;
         std::string bytes, why;
         if (!fxio::readFileBounded(path, size_t(64) << 20, &bytes, nullptr, &why)) {
-            *error = path + ": cannot load the smoke atlas (" + why + ")";
-            return false;
+            *error = path + ": cannot load " + what + " (" + why + ")";
+            return nullptr;
         }
-        pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w,
-                                       &h, &channels, 4);
+        pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), w,
+                                       h, &channels, 4);
     }
     if (!pixels) {
         const char* why = stbi_failure_reason();
-        *error = path + ": cannot load the smoke atlas (" + (why ? why : "unknown reason") + ")";
-        return false;
+        *error = path + ": cannot load " + what + " (" + (why ? why : "unknown reason") + ")";
     }
-    if (w < 2 || h < 2 || (w % 2) || (h % 2)) {
-        stbi_image_free(pixels);
-        *error = path + ": expected a 2x2 atlas with even width and height, got " +
-                 std::to_string(w) + "x" + std::to_string(h);
-        return false;
-    }
-    if (!texture_) glGenTextures(1, &texture_);
+    return pixels;
+}
+
+// Uploads RGBA8 `pixels` into `*texture` (created if 0) with a mip chain down to `maxLevel`.
+void upload(uint32_t* texture, const stbi_uc* pixels, int w, int h, int maxLevel) {
+    if (!*texture) glGenTextures(1, texture);
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
     glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
     glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
-    glBindTexture(GL_TEXTURE_2D, texture_);
+    glBindTexture(GL_TEXTURE_2D, *texture);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
-    // Stop the mip chain while a frame is still 8 texels wide: below that, the 2x2 frames would
-    // average into each other.
-    int maxLevel = 0;
-    for (int cell = (w < h ? w : h) / 2; cell > 8; cell /= 2) ++maxLevel;
-    shapes_.compute(pixels, w, h, maxLevel);  // the trimmed polygons of this image and mip chain
-    stbi_image_free(pixels);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, maxLevel);
     glGenerateMipmap(GL_TEXTURE_2D);
@@ -64,6 +62,47 @@ bool SmokeAtlas::load(const std::string& dataDir, std::string* error) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+}  // namespace
+
+bool SmokeAtlas::load(const std::string& dataDir, std::string* error) {
+    int w = 0, h = 0;
+    stbi_uc* pixels = decodePng(dataDir, kFileName, "the smoke atlas", &w, &h, error);
+    if (!pixels) return false;
+    if (w < 2 || h < 2 || (w % 2) || (h % 2)) {
+        stbi_image_free(pixels);
+        *error = (dataDir.empty() ? std::string("<embedded>") : dataDir) + "/" + kFileName + ": expected a 2x2 atlas with even width and height, got " +
+                 std::to_string(w) + "x" + std::to_string(h);
+        return false;
+    }
+    // Stop the mip chain while a frame is still 8 texels wide: below that, the 2x2 frames would
+    // average into each other.
+    int maxLevel = 0;
+    for (int cell = (w < h ? w : h) / 2; cell > 8; cell /= 2) ++maxLevel;
+    shapes_.compute(pixels, w, h, maxLevel);  // the trimmed polygons of this image and mip chain
+    upload(&texture_, pixels, w, h, maxLevel);
+    stbi_image_free(pixels);
+
+    // The normal map: optional (lit smoke falls back to flat cards without it), but it must
+    // match the atlas's size.
+    normalsError_.clear();
+    int nw = 0, nh = 0;
+    stbi_uc* normals = decodePng(dataDir, kNormalsFileName, "the smoke normal map", &nw, &nh, &normalsError_);
+    if (normals && (nw != w || nh != h)) {
+        normalsError_ = (dataDir.empty() ? std::string("<embedded>") : dataDir) + "/" + kNormalsFileName +
+                        ": expected the atlas's size " + std::to_string(w) + "x" + std::to_string(h) + ", got " +
+                        std::to_string(nw) + "x" + std::to_string(nh);
+        stbi_image_free(normals);
+        normals = nullptr;
+    }
+    if (normals) {
+        upload(&normals_, normals, w, h, maxLevel);
+        stbi_image_free(normals);
+    } else if (normals_) {
+        glDeleteTextures(1, &normals_);
+        normals_ = 0;
+    }
     width_ = w;
     height_ = h;
     return true;

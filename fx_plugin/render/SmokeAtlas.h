@@ -14,6 +14,10 @@ namespace fx {
 class SmokeAtlas {
 public:
     static constexpr const char* kFileName = "smoke_atlas.png";
+    /// Its normal map (tools/make_assets): RGB = the signed particle-space normal as
+    /// 128 + 127 n (x right, y up, z toward the viewer; exactly 0 where the atlas alpha is 0),
+    /// A = height. Same size, same frames.
+    static constexpr const char* kNormalsFileName = "smoke_normals.png";
 
     SmokeAtlas() = default;
     ~SmokeAtlas();
@@ -26,6 +30,10 @@ public:
     /// with "path: reason" in *error and holds no texture.
     bool load(const std::string& dataDir, std::string* error);
     uint32_t texture() const { return texture_; }
+    /// The normal map's texture, 0 when it could not be loaded (normalsError() says why); loaded
+    /// by load() with the same filtering and mip chain.
+    uint32_t normals() const { return normals_; }
+    const std::string& normalsError() const { return normalsError_; }
     int width() const { return width_; }
     int height() const { return height_; }
     /// Per frame and LOD bucket, the polygon that holds every texel the sampler can return with
@@ -36,6 +44,8 @@ public:
 
 private:
     uint32_t texture_ = 0;
+    uint32_t normals_ = 0;
+    std::string normalsError_;
     int width_ = 0, height_ = 0;
     TrimmedShapes shapes_;
 };

@@ -339,6 +339,9 @@ std::string scratchDir() {
         std::string dir;
         ~Scratch() {
             std::error_code ignored;
+            // FX_HOST_KEEP_IMAGES=1 keeps the pictures the tests wrote, for looking at them.
+            const char* keep = std::getenv("FX_HOST_KEEP_IMAGES");
+            if (keep && std::string(keep) == "1") return;
             if (!dir.empty()) std::filesystem::remove_all(dir, ignored);
         }
     };

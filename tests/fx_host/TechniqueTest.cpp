@@ -16,6 +16,7 @@ const char* name(fx::Technique t) {
     case fx::Technique::Hard: return "hard";
     case fx::Technique::Soft: return "soft";
     case fx::Technique::Spherical: return "spherical";
+    case fx::Technique::Mega: return "mega";
     case fx::Technique::FromReaction: break;
     }
     return "from_reaction";

@@ -23,7 +23,7 @@ log() { echo "package_test: $*"; }
 copy=$work/src
 mkdir -p "$copy/data"
 cp -r "$src/fx_plugin" "$src/shaders" "$copy/"
-cp "$src/data/smoke_atlas.png" "$copy/data/"
+cp "$src/data/smoke_atlas.png" "$src/data/smoke_normals.png" "$copy/data/"
 
 log "add_subdirectory(fx_plugin) from a foreign project that has a 'glad' target of its own"
 mkdir -p "$work/foreign"

@@ -133,7 +133,7 @@ TEST(SceneLoader, CommittedDataMatchesTheGenerator) {
     TempDir dir;
     const std::string out = dir.file("gen");
     ASSERT_EQ(std::system((tool + " " + out + " > /dev/null").c_str()), 0);
-    for (const char* f : {"race.gltf", "race.bin", "race.glb", "smoke_atlas.png"}) {
+    for (const char* f : {"race.gltf", "race.bin", "race.glb", "smoke_atlas.png", "smoke_normals.png"}) {
         EXPECT_TRUE(readBytes(out + "/" + f) == readBytes(dataPath(f)))
             << f << " differs: run `build/bin/make_assets data` and commit the result";
     }

@@ -1,0 +1,75 @@
+#pragma once
+// The smoke's opacity seen from the sun (issue 16's self-shadowing; API 1.2 SmokeShadow).
+//
+// Choice: an opacity shadow map with four slices in one RGBA16F target (Kim and Neumann's
+// opacity shadow maps, with the slices as colour channels) rather than half-angle slicing.
+// Half-angle slicing sorts the particles along the half vector and alternates between the eye
+// buffer and a light buffer once per slice: a pass pair per slice inside the particle draw,
+// which cannot share the soft, spherical and quarter-res passes this renderer already has and
+// multiplies their fixed costs. The opacity map is one extra draw of the shadow casters into
+// a 256 x 256 target, independent of the screen's size, that every technique samples with one
+// texture fetch, and the host samples the same texture to darken the ground under the cloud.
+// Four slices resolve a burnout cloud's near and far side; smoke within one slice shadows
+// itself linearly (the particles are spread over their quarter-slice), so nothing pops.
+//
+// The light's box is fitted to the casters every frame, snapped so it does not shimmer: its
+// side is rounded up to a power of 2^(1/4), its centre to whole texels of a world-fixed grid,
+// and its depth range likewise, so a cloud that drifts moves its shadow by whole texels.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "DrawList.h"
+#include "InstanceStream.h"
+#include "LightState.h"
+
+namespace fx {
+
+class SmokeOpacityMap {
+public:
+    static constexpr const char* kPass = "smoke_opacity";
+    static constexpr const char* kTarget = "smoke_opacity";
+    static constexpr int kSize = 256;
+
+    SmokeOpacityMap() = default;
+    ~SmokeOpacityMap();
+    SmokeOpacityMap(const SmokeOpacityMap&) = delete;
+    SmokeOpacityMap& operator=(const SmokeOpacityMap&) = delete;
+
+    /// vs_particles + fs_particles_opacity; on failure appends "file:line: message" to *errors
+    /// (lit smoke then goes without self-shadowing).
+    void build(const std::string& shaderDir, std::vector<std::string>* errors);
+    bool ok() const { return program_ != 0; }
+
+    /// Collects the shadow casters (lit, casts_shadow, not additive) of `batches` and fits the
+    /// light's box to them. False when there is none (then no pass is needed). No GL.
+    bool record(const LightState& light, const ParticleBatch* batches, int batchCount);
+    /// World position -> (u, v, light depth, 1) of the last record(): what SmokeShadow hands out.
+    const glm::mat4& worldToShadow() const { return worldToShadow_; }
+    /// Side of the light's box in metres (for tests and the docs).
+    float side() const { return side_; }
+    int casterCount() const { return int(instances_.size()); }
+
+    /// Draws the recorded casters into the bound kSize x kSize RGBA16F target (cleared here).
+    /// Inside a GlStateGuard; `atlas` and `ramp` are textures, `rampRows` the ramp's row v per
+    /// batch index.
+    void draw(uint32_t atlas, uint32_t ramp, const std::vector<float>& rampRows);
+
+private:
+    struct Range {
+        int first = 0, count = 0, batch = 0;
+    };
+    uint32_t program_ = 0;
+    int locView_ = -1, locProj_ = -1, locRampRow_ = -1, locAtlas_ = -1, locRamp_ = -1, locDepthRange_ = -1,
+        locTrimmed_ = -1, locNear_ = -1;
+    InstanceStream stream_;
+    std::vector<ParticleInstance> instances_;
+    std::vector<Range> ranges_;
+    glm::mat4 lightView_{1.0f}, lightProj_{1.0f}, worldToShadow_{1.0f};
+    glm::vec2 depthRange_{0.0f, 1.0f};
+    float side_ = 0.0f;
+};
+
+}  // namespace fx
