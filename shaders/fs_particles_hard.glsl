@@ -11,6 +11,10 @@ flat in vec4 vRamp;
 flat in float vFade;
 flat in float vFrame;
 flat in float vRotation;
+#ifdef FX_LIT
+in vec3 vSunLight;
+in float vPhase;
+#endif
 
 layout(location = 0) out vec4 oColor;
 
@@ -22,7 +26,7 @@ void main() {
     coverage *= depth <= sceneDepthAt(gl_FragCoord.xy) ? 1.0 : 0.0;
 #endif
 #ifdef FX_LIT
-    texel.rgb *= smokeLight(billboardNormal(atlasUV(vLocal, vFrame), vRotation), vViewPos, texel.a);
+    texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vRotation), texel.a, vSunLight, vPhase);
 #endif
     oColor = shadeOutput(vRamp, vFade, texel, coverage);
 }

@@ -12,6 +12,10 @@ flat in vec4 vRamp;
 flat in float vFade;
 flat in float vFrame;
 flat in float vRotation;
+#ifdef FX_LIT
+in vec3 vSunLight;
+in float vPhase;
+#endif
 
 layout(location = 0) out vec4 oColor;
 
@@ -21,7 +25,7 @@ void main() {
     float coverage = texel.a * softFade(sceneDepthAt(gl_FragCoord.xy), depth) *
                      nearFadeFactor(depth);
 #ifdef FX_LIT
-    texel.rgb *= smokeLight(billboardNormal(atlasUV(vLocal, vFrame), vRotation), vViewPos, texel.a);
+    texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vRotation), texel.a, vSunLight, vPhase);
 #endif
     oColor = shadeOutput(vRamp, vFade, texel, coverage);
 }

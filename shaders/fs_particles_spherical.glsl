@@ -19,6 +19,10 @@ flat in float vFade;
 flat in float vFrame;
 flat in vec4 vSphere;
 flat in float vRotation;
+#ifdef FX_LIT
+in vec3 vSunLight;
+in float vPhase;
+#endif
 
 layout(location = 0) out vec4 oColor;
 
@@ -46,9 +50,9 @@ void main() {
 #ifdef FX_LIT
     // The sphere's normal where the visible chord starts, bent by the atlas's normal map.
     vec3 entry = dir * t0;
-    vec3 bumps = atlasNormal(atlasUV(rotate2(offset.xy / r, vRotation), vFrame));
+    vec3 bumps = atlasNormal(texel);
     vec3 n = normalize((entry - centre) / r + uNormalStrength * 0.6 * vec3(rotate2(bumps.xy, -vRotation), 0.0));
-    texel.rgb *= smokeLight(n, 0.5 * (t0 + t1) * dir, texel.a);
+    texel.rgb = texel.bbb * smokeLight(n, texel.a, vSunLight, vPhase);
 #endif
     oColor = shadeOutput(vRamp, vFade, texel, coverage);
 }

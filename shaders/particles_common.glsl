@@ -137,23 +137,25 @@ uniform float uAnisotropy;    // Henyey-Greenstein g
 uniform float uAbsorption;    // optical depth per unit of accumulated opacity
 uniform int uShadowed;        // 1: uOpacity holds this frame's opacity map
 uniform mat4 uViewToShadow;   // view space -> (u, v, light depth, 1), each in [0, 1] inside the map
-uniform sampler2D uNormals;   // SmokeAtlas::kNormalsFileName: 128 + 127 n, 0 where the atlas is empty
 uniform sampler2D uOpacity;   // RGBA16F: optical depth up to light depth 1/4, 2/4, 3/4, 1
+// Lit programs read uAtlas as the lit atlas (SmokeAtlas::litTexture): R, G = the normal map's
+// x and y (128 + 127 n), B = the atlas grey, A = the atlas alpha: one fetch for shape, colour
+// and normal, where a separate normal map would cost a second filtered fetch per fragment.
 
 const float kWrap = 0.5;      // diffuse wrap: light reaches 1/3 of the way round the terminator
 
-// The atlas normal at `uv` in particle space (x right, y up, z toward the viewer); (0, 0, 1)
-// where the map is empty.
-vec3 atlasNormal(vec2 uv) {
-    vec3 n = (texture(uNormals, uv).rgb * 255.0 - 128.0) / 127.0;
-    float len2 = dot(n, n);
-    return len2 > 1e-4 ? n * inversesqrt(len2) : vec3(0.0, 0.0, 1.0);
+// The atlas normal of a lit-atlas texel in particle space (x right, y up, z toward the viewer;
+// the normal map only holds normals facing the viewer, so z is the rest of unit length).
+// (0, 0, 1) where the puff is empty (x = y = 0 there).
+vec3 atlasNormal(vec4 litTexel) {
+    vec2 xy = (litTexel.rg * 255.0 - 128.0) / 127.0;
+    return vec3(xy, sqrt(max(1.0 - dot(xy, xy), 0.0)));
 }
 
 // A billboard's shading normal in view space: the atlas normal turned with the sprite (texture
 // axes are the screen axes rotated by `rotation`), against a flat card facing the camera.
-vec3 billboardNormal(vec2 uv, float rotation) {
-    vec3 n = atlasNormal(uv);
+vec3 billboardNormal(vec4 litTexel, float rotation) {
+    vec3 n = atlasNormal(litTexel);
     vec3 turned = vec3(rotate2(n.xy, -rotation), n.z);
     return normalize(mix(vec3(0.0, 0.0, 1.0), turned, uNormalStrength));
 }
@@ -172,19 +174,29 @@ float opticalDepthToSun(vec3 p) {
     return dot(increments, w) * inside * float(uShadowed);
 }
 
-// Light arriving at a smoke pixel of normal `n` (view space) at view position `p`, whose
-// opacity is `density`: ambient + sun x transmittance x (diffuse and scattered shares).
-// Henyey-Greenstein times 4 pi (1 on average over the sphere): (1 - g^2) / (1 + g^2 - 2 g c)^1.5,
-// c the cosine between the sun's light direction and the direction to the eye.
-vec3 smokeLight(vec3 n, vec3 p, float density) {
-    vec3 toEye = normalize(-p);
-    float diffuse = clamp((dot(n, uSunView) + kWrap) / (1.0 + kWrap), 0.0, 1.0);
-    float c = dot(-uSunView, toEye);
+// Henyey-Greenstein times 4 pi (1 on average over the sphere) for a smoke point at view
+// position `p`: (1 - g^2) / (1 + g^2 - 2 g c)^1.5, c the cosine between the sun's light
+// direction and the direction to the eye. The vertex shader evaluates it (and the transmittance
+// toward the sun) per vertex: both change slowly across a particle, and per pixel they cost a
+// fetch, a matrix and an exp on every fragment.
+float phaseHG(vec3 p) {
+    float c = dot(-uSunView, normalize(-p));
     float g = uAnisotropy;
     float base = max(1.0 + g * g - 2.0 * g * c, 1e-4);
-    float phase = (1.0 - g * g) / (base * sqrt(base));
+    return (1.0 - g * g) / (base * sqrt(base));
+}
+
+// Sun light reaching view position `p` through the smoke in front of it.
+vec3 sunThroughSmoke(vec3 p) {
+    return uSunColor * exp(-uAbsorption * opticalDepthToSun(p));
+}
+
+// Light arriving at a smoke pixel of normal `n` (view space) whose opacity is `density`:
+// ambient + the sun through the smoke x (the diffuse and scattered shares). `sunLight` and
+// `phase` come from the vertex shader (sunThroughSmoke, phaseHG).
+vec3 smokeLight(vec3 n, float density, vec3 sunLight, float phase) {
+    float diffuse = clamp((dot(n, uSunView) + kWrap) / (1.0 + kWrap), 0.0, 1.0);
     float thin = 1.0 - 0.6 * density;  // thin edges pass more forward-scattered light
-    float transmittance = exp(-uAbsorption * opticalDepthToSun(p));
-    return uAmbient + uSunColor * transmittance * mix(diffuse, phase * thin, uScattering);
+    return uAmbient + sunLight * mix(diffuse, phase * thin, uScattering);
 }
 #endif

@@ -38,6 +38,10 @@ flat out float vFade;    // life fade
 flat out float vFrame;   // atlas frame
 flat out vec4 vSphere;   // spherical: view-space centre, radius
 flat out float vRotation;
+#ifdef FX_LIT
+out vec3 vSunLight;      // sun colour x transmittance through the smoke toward the sun
+out float vPhase;        // Henyey-Greenstein x 4 pi toward the eye
+#endif
 
 #ifdef FX_SPHERICAL
 // Range [lo, hi] of slopes (offset / depth) of the rays that meet a disc of radius r centred
@@ -123,5 +127,14 @@ void main() {
     vLocal = local;
 #endif
     vViewPos = viewPos;
+#ifdef FX_LIT
+#ifdef FX_SPHERICAL
+    vec3 lightAt = centre;   // the quad lies at the sphere's front: light the sphere as a whole
+#else
+    vec3 lightAt = viewPos;  // the billboard's corner
+#endif
+    vSunLight = sunThroughSmoke(lightAt);
+    vPhase = phaseHG(lightAt);
+#endif
     gl_Position = uProj * vec4(viewPos, 1.0);
 }

@@ -25,6 +25,14 @@ const std::vector<Mode>& allModes() {
          false, "spherical", fx::ParticleShape::Quad},
         {"spherical+quarter", "Spherical billboards, 1/4-size texture", true, Technique::Spherical, false, true,
          "spherical"},
+        // Lit smoke (issue 16): normals, sun, scattering and the opacity map; each its own
+        // reference (the cost of light is read against the unlit row above it).
+        {"hard-lit", "Hard particles, lit and self-shadowed", true, Technique::Hard, false, false, "hard-lit",
+         fx::ParticleShape::Trimmed, true},
+        {"soft-lit", "Soft particles, lit and self-shadowed", true, Technique::Soft, false, false, "soft-lit",
+         fx::ParticleShape::Trimmed, true},
+        {"spherical-lit", "Spherical billboards, lit and self-shadowed", true, Technique::Spherical, false, false,
+         "spherical-lit", fx::ParticleShape::Trimmed, true},
     };
     return modes;
 }
@@ -73,6 +81,11 @@ void applyMode(cube::Game& game, const Mode& mode) {
     ro.bilinearUpsample = false;  // the depth-aware composite is the one under test
     plugin->setRenderOptions(ro);
     plugin->setParticleShape(mode.shape);
+    if (mode.lit) {
+        plugin->setSceneLight(fx::SceneLight{});
+    } else {
+        plugin->clearSceneLight();
+    }
 }
 
 }  // namespace fxbench

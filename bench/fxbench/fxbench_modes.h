@@ -26,10 +26,13 @@ struct Mode {
     const char* reference = "nofx";
     /// Billboards as trimmed polygons (the plugin's default) or full quads (`soft-quads`).
     fx::ParticleShape shape = fx::ParticleShape::Trimmed;
+    /// Lit smoke (the game's sun through Plugin::setSceneLight) or unlit (clearSceneLight).
+    bool lit = false;
 };
 
 /// Every mode, in table order: nofx, hard, soft, soft-quads, soft+equal, soft+quarter,
-/// soft+equal+quarter, spherical, spherical-quads, spherical+quarter.
+/// soft+equal+quarter, spherical, spherical-quads, spherical+quarter, hard-lit, soft-lit,
+/// spherical-lit.
 const std::vector<Mode>& allModes();
 /// Null when `name` is not a mode.
 const Mode* findMode(const std::string& name);

@@ -38,6 +38,7 @@ const char* techniqueLabel(fx::Technique t) {
         case fx::Technique::Hard: return "hard";
         case fx::Technique::Soft: return "soft";
         case fx::Technique::Spherical: return "spherical";
+        case fx::Technique::Mega: return "mega";
     }
     return "?";
 }

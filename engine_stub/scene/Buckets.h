@@ -3,7 +3,7 @@
 // and order are data: they label GL debug groups, pass timings and the stats JSON.
 namespace cube {
 
-enum class Bucket : int { DepthPrepass = 0, Opaque, AlphaTested, Sky, Particles, Hud, Count };
+enum class Bucket : int { Shadows = 0, DepthPrepass, Opaque, AlphaTested, Sky, Particles, Hud, Count };
 
 struct BucketInfo {
     const char* name;
@@ -11,7 +11,7 @@ struct BucketInfo {
 };
 
 constexpr BucketInfo kBuckets[int(Bucket::Count)] = {
-    {"depth_prepass", 10}, {"opaque", 20}, {"alpha_tested", 30},
+    {"shadows", 5}, {"depth_prepass", 10}, {"opaque", 20}, {"alpha_tested", 30},
     {"sky", 40},           {"particles", 50}, {"hud", 90},
 };
 

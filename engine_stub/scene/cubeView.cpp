@@ -75,6 +75,7 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
     // order (their order keys), whatever the order of the calls here: the particle bucket is
     // declared before the scene passes because what it reads decides how they are drawn.
     const Targets t = declareTargets(graph);
+    declareSmokeShadow(graph, t, settings);          // CUBE's shadow maps: here only the smoke's
     declareLegacySprites(scene, graph, t, settings);
     declarePluginPasses(graph, t, settings);         // soft/spherical read scene depth; quarter-res composites
     declareDepthReadback(graph, t, settings);        // only when the application asked for it
@@ -260,20 +261,31 @@ void cubeView::declarePluginPasses(rtt::FrameGraph& graph, const Targets& t, con
     // EQUAL without writing depth (pixel-identical, less overdraw).
     FxFrameBuilder fx(graph, t.color, t.sceneDepth, name_ + ".", order(bucketInfo(Bucket::Particles).order),
                       width_, height_);
-    if (settings.plugin) {
-        fx::ViewInfo info;
-        info.name = name_.c_str();
-        info.view = view_;
-        info.proj = proj_;
-        info.eye = camera_.eye;
-        info.nearPlane = camera_.nearPlane;
-        info.farPlane = camera_.farPlane;
-        info.depth = reversedZ_ ? fx::DepthConvention::ReversedZ : fx::DepthConvention::Standard;
-        info.width = width_;
-        info.height = height_;
-        settings.plugin->declarePasses(info, fx);
-    }
+    if (settings.plugin) settings.plugin->declarePasses(pluginView(), fx);
     prepassDeclared_ = fx.readsSceneDepth();
+}
+
+fx::ViewInfo cubeView::pluginView() const {
+    fx::ViewInfo info;
+    info.name = name_.c_str();
+    info.view = view_;
+    info.proj = proj_;
+    info.eye = camera_.eye;
+    info.nearPlane = camera_.nearPlane;
+    info.farPlane = camera_.farPlane;
+    info.depth = reversedZ_ ? fx::DepthConvention::ReversedZ : fx::DepthConvention::Standard;
+    info.width = width_;
+    info.height = height_;
+    return info;
+}
+
+void cubeView::declareSmokeShadow(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& settings) {
+    // Nothing unless the plugin lights smoke that is alive (it declares nothing otherwise).
+    smokeShadow_ = fx::SmokeShadow{};
+    if (!settings.plugin) return;
+    FxFrameBuilder fx(graph, t.color, t.sceneDepth, name_ + ".", order(bucketInfo(Bucket::Shadows).order),
+                      width_, height_);
+    smokeShadow_ = settings.plugin->declareShadowPasses(pluginView(), fx);
 }
 
 void cubeView::declareDepthReadback(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& settings) {

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "render/SceneRenderer.h"
+#include "fx/Plugin.h"
 #include "rtt/FrameGraph.h"
 
 namespace cube {
@@ -65,6 +66,10 @@ private:
     void declareSky(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t);
     void declareLegacySprites(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
     void declarePluginPasses(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
+    /// The smoke's opacity map (the plugin's declareShadowPasses), in the shadow bucket before
+    /// the opaque pass that darkens the ground with it.
+    void declareSmokeShadow(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
+    fx::ViewInfo pluginView() const;
     void declareDepthReadback(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
     void declareHud(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
     CameraMatrices cameraMatrices() const;
@@ -84,6 +89,7 @@ private:
     bool prepassDeclared_ = false;
     bool opaqueWritesDepth_ = false;  ///< the linear scene depth comes from the opaque pass (MRT)
     bool equal_ = false;  ///< this frame's opaque pass tests EQUAL on the prepass z-buffer
+    fx::SmokeShadow smokeShadow_;  ///< this frame's smoke opacity map (invalid: no lit smoke)
 };
 
 }  // namespace cube

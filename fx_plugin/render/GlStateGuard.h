@@ -23,7 +23,7 @@ namespace fx {
 class GlStateGuard {
 public:
     /// Texture units the renderer may bind (0 .. kTextureUnits-1).
-    static constexpr int kTextureUnits = 6;
+    static constexpr int kTextureUnits = 4;
 
     GlStateGuard();
     ~GlStateGuard();

@@ -54,7 +54,6 @@ ParticleProgram locate(GLuint program) {
     p.absorption = glGetUniformLocation(program, "uAbsorption");
     p.shadowed = glGetUniformLocation(program, "uShadowed");
     p.viewToShadow = glGetUniformLocation(program, "uViewToShadow");
-    p.normals = glGetUniformLocation(program, "uNormals");
     p.opacity = glGetUniformLocation(program, "uOpacity");
     return p;
 }

@@ -28,7 +28,7 @@ struct ParticleProgram {
     int powerWhole = -1, powerHalf = -1;
     // FX_LIT only.
     int sunView = -1, sunColor = -1, ambient = -1, normalStrength = -1, scattering = -1, anisotropy = -1,
-        absorption = -1, shadowed = -1, viewToShadow = -1, normals = -1, opacity = -1;
+        absorption = -1, shadowed = -1, viewToShadow = -1, opacity = -1;
 };
 
 class ParticlePrograms {

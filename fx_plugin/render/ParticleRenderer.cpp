@@ -17,7 +17,7 @@ namespace fx {
 namespace {
 
 // Texture units of the particle draws (all below GlStateGuard::kTextureUnits).
-constexpr int kAtlasUnit = 0, kRampUnit = 1, kSceneDepthUnit = 2, kNormalsUnit = 3, kOpacityUnit = 4;
+constexpr int kAtlasUnit = 0, kRampUnit = 1, kSceneDepthUnit = 2, kOpacityUnit = 3;
 
 // FrameBuilder::addPass with the valid ones of up to four read targets (an invalid Target is
 // "not read": the opacity map is there only for lit smoke).
@@ -128,7 +128,7 @@ bool ParticleRenderer::ensureLoaded() {
     programs_->build(config_.shaderDir, &errors);
     quarter_->build(config_.shaderDir, &errors);
     opacity_->build(config_.shaderDir, &errors);
-    if (!atlas_.normals() && !normalsWarned_) {
+    if (!atlas_.hasNormals() && !normalsWarned_) {
         log(LogLevel::Warning, "fx: lit smoke is drawn as flat cards: " + atlas_.normalsError());
         normalsWarned_ = true;
     }
@@ -363,7 +363,6 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
     bindTextureUnit(kRampUnit, ramp_.texture());
     bindTextureUnit(kSceneDepthUnit, sceneDepth);
     if (record.lit) {
-        bindTextureUnit(kNormalsUnit, atlas_.normals());
         bindTextureUnit(kOpacityUnit, opacity);
     }
 
@@ -384,6 +383,7 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         const bool lit = record.lit && batch.lighting.lit(batch.blend) && programs_->get(variant, true).program;
         const ParticleProgram& p = programs_->get(variant, lit);
         if (!p.program) continue;
+        if (record.lit) bindTextureUnit(kAtlasUnit, lit ? atlas_.litTexture() : atlas_.texture());
         // Full resolution tests against the host's z-buffer without writing it. Hard particles
         // always do (that is their look). Soft and spherical ones only skip fragments there that
         // would shade to nothing (behind geometry their fade / visible chord is 0), which needs a

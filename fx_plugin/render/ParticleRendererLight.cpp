@@ -9,7 +9,7 @@
 
 namespace fx {
 namespace {
-constexpr int kNormalsUnit = 3, kOpacityUnit = 4;  // ParticleRenderer.cpp binds them
+constexpr int kOpacityUnit = 3;  // ParticleRenderer.cpp binds it
 }  // namespace
 
 SmokeShadow ParticleRenderer::declareShadowPasses(FrameBuilder& frame, const ParticleBatch* batches,
@@ -54,14 +54,13 @@ void ParticleRenderer::setLightUniforms(const ParticleProgram& p, const DrawBatc
     glUniform3f(p.sunView, sunView.x, sunView.y, sunView.z);
     glUniform3f(p.sunColor, light_.sunColor.x, light_.sunColor.y, light_.sunColor.z);
     glUniform3f(p.ambient, ambient.x, ambient.y, ambient.z);
-    glUniform1f(p.normalStrength, atlas_.normals() ? l.normalStrength : 0.0f);
+    glUniform1f(p.normalStrength, l.normalStrength);
     glUniform1f(p.scattering, l.scattering);
     glUniform1f(p.anisotropy, l.anisotropy);
     glUniform1f(p.absorption, l.absorption);
     glUniform1i(p.shadowed, opacity ? 1 : 0);
     const glm::mat4 viewToShadow = record.worldToShadow * glm::inverse(record.view.view);
     glUniformMatrix4fv(p.viewToShadow, 1, GL_FALSE, &viewToShadow[0][0]);
-    glUniform1i(p.normals, kNormalsUnit);
     glUniform1i(p.opacity, kOpacityUnit);
 }
 

@@ -1,5 +1,7 @@
 #include "SmokeAtlas.h"
 
+#include <vector>
+
 #include "render/PrivateGl.h"
 #include <stb_image.h>
 
@@ -10,7 +12,7 @@ namespace fx {
 
 SmokeAtlas::~SmokeAtlas() {
     if (texture_) glDeleteTextures(1, &texture_);
-    if (normals_) glDeleteTextures(1, &normals_);
+    if (litTexture_) glDeleteTextures(1, &litTexture_);
 }
 
 namespace {
@@ -82,10 +84,10 @@ bool SmokeAtlas::load(const std::string& dataDir, std::string* error) {
     for (int cell = (w < h ? w : h) / 2; cell > 8; cell /= 2) ++maxLevel;
     shapes_.compute(pixels, w, h, maxLevel);  // the trimmed polygons of this image and mip chain
     upload(&texture_, pixels, w, h, maxLevel);
-    stbi_image_free(pixels);
 
-    // The normal map: optional (lit smoke falls back to flat cards without it), but it must
-    // match the atlas's size.
+    // The lit atlas: the normal map's x and y with the atlas's grey and alpha (see the header).
+    // The normal map is optional (without it lit smoke is drawn as flat cards: x = y = 0), but
+    // it must match the atlas's size.
     normalsError_.clear();
     int nw = 0, nh = 0;
     stbi_uc* normals = decodePng(dataDir, kNormalsFileName, "the smoke normal map", &nw, &nh, &normalsError_);
@@ -96,13 +98,16 @@ bool SmokeAtlas::load(const std::string& dataDir, std::string* error) {
         stbi_image_free(normals);
         normals = nullptr;
     }
-    if (normals) {
-        upload(&normals_, normals, w, h, maxLevel);
-        stbi_image_free(normals);
-    } else if (normals_) {
-        glDeleteTextures(1, &normals_);
-        normals_ = 0;
+    std::vector<stbi_uc> lit(size_t(w) * size_t(h) * 4);
+    for (size_t i = 0; i < size_t(w) * size_t(h); ++i) {
+        lit[i * 4 + 0] = normals ? normals[i * 4 + 0] : 128;
+        lit[i * 4 + 1] = normals ? normals[i * 4 + 1] : 128;
+        lit[i * 4 + 2] = pixels[i * 4 + 0];
+        lit[i * 4 + 3] = pixels[i * 4 + 3];
     }
+    if (normals) stbi_image_free(normals);
+    stbi_image_free(pixels);
+    upload(&litTexture_, lit.data(), w, h, maxLevel);
     width_ = w;
     height_ = h;
     return true;

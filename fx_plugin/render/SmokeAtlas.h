@@ -30,9 +30,12 @@ public:
     /// with "path: reason" in *error and holds no texture.
     bool load(const std::string& dataDir, std::string* error);
     uint32_t texture() const { return texture_; }
-    /// The normal map's texture, 0 when it could not be loaded (normalsError() says why); loaded
-    /// by load() with the same filtering and mip chain.
-    uint32_t normals() const { return normals_; }
+    /// The lit atlas lit programs sample instead: R, G = the normal map's x and y, B = the
+    /// atlas's grey (R of the atlas; its RGB is grey), A = the atlas's alpha; same size, filtering
+    /// and mip chain. Without a loadable normal map R = G = 128 (flat cards) and normalsError()
+    /// says why.
+    uint32_t litTexture() const { return litTexture_; }
+    bool hasNormals() const { return normalsError_.empty(); }
     const std::string& normalsError() const { return normalsError_; }
     int width() const { return width_; }
     int height() const { return height_; }
@@ -44,7 +47,7 @@ public:
 
 private:
     uint32_t texture_ = 0;
-    uint32_t normals_ = 0;
+    uint32_t litTexture_ = 0;
     std::string normalsError_;
     int width_ = 0, height_ = 0;
     TrimmedShapes shapes_;

@@ -24,7 +24,7 @@
 //
 // GL state: every GL call of the plugin runs inside a scoped guard that captures and restores
 // what it changes: current program, vertex array, GL_ARRAY_BUFFER, active texture, the
-// GL_TEXTURE_2D binding and sampler object of texture units 0..5, blend enable/func/equation,
+// GL_TEXTURE_2D binding and sampler object of texture units 0..3, blend enable/func/equation,
 // depth test/func/mask, cull face, stencil and scissor test enables, colour mask, clear colour,
 // viewport, draw and read framebuffers, the pixel-unpack buffer and unpack alignment/row
 // length/skips. After any plugin call or pass, that state equals the state before. The plugin
