@@ -29,7 +29,8 @@ struct Mode {
 };
 
 /// Every mode, in table order: nofx, hard, soft, soft-quads, soft+equal, soft+quarter,
-/// soft+equal+quarter, spherical, spherical-quads, spherical+quarter.
+/// soft+equal+quarter, spherical, spherical-quads, spherical+quarter, mega (image error against
+/// spherical: the same particles as exact spheres).
 const std::vector<Mode>& allModes();
 /// Null when `name` is not a mode.
 const Mode* findMode(const std::string& name);
