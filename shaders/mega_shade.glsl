@@ -78,19 +78,12 @@ vec4 megaShade(vec4 colour, vec4 density, ivec2 p, ivec2 last) {
     float wrap = clamp((dot(normal, uToSun) + 0.5) / 1.5, 0.0, 1.0);
     float phase = megaPhase(dot(-uToSun, toEye), uAnisotropy);
     float rim = 1.0 - 0.7 * coverage;
-    // Thickness toward the sun: the coverage sampled in four steps along the sun's direction on
-    // screen (input of this pass: blurred along x only); deep inside the cloud, seen from the
-    // sun's side, is darker: exp(-absorption x thickness).
-    float lateral = length(uToSun.xy);
-    float thickness = 0.0;
-    if (lateral > 0.05) {
-        vec2 stepPx = uToSun.xy / lateral * max(2.0 * uSigma, 2.0);
-        for (int k = 1; k <= 4; ++k) {
-            ivec2 q = clamp(p + ivec2(stepPx * float(k)), ivec2(0), last);
-            thickness += 1.0 - exp(-texelFetch(uDensity, q, 0).x);
-        }
-        thickness *= 0.25 * lateral;
-    }
+    // Thickness toward the sun: how deep below the cloud's sun-facing surface this pixel lies,
+    // estimated from the optical depth through the cloud here (tau, along the view ray) and how
+    // far the surface faces away from the sun (0 facing it, 1 edge-on, 2 facing away), so the
+    // side away from the sun of a thick cloud darkens: exp(-absorption x thickness). (Marching the
+    // blurred density toward the sun on screen instead showed the half-blurred input as bands.)
+    float thickness = 0.25 * (1.0 - dot(normal, uToSun)) * min(tau, 6.0);
     float shadow = exp(-uAbsorption * thickness);
     vec3 sun = uSunColor * shadow * ((1.0 - uScattering) * wrap + uScattering * phase * rim);
     vec3 lit = albedo * (uAmbient + sun);

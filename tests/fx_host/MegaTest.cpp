@@ -220,7 +220,7 @@ TEST_F(MegaTest, TheHalfTowardTheSunIsBrighter) {
 
 class MegaPluginTest : public FxHostTest {
 protected:
-    static constexpr int kW = 160, kH = 120;
+    static constexpr int kW = 320, kH = 240;
     void SetUp() override {
         FxHostTest::SetUp();
         fx::PluginImports imports;
@@ -304,6 +304,7 @@ TEST_F(MegaPluginTest, EveryMegaPassRestoresTheHostState) {
         }
         std::string mismatches;
         frame(view, true, &mismatches);
+        writePng(std::string("/tmp/fx_host_mega_burnout_") + (lit ? "lit" : "unlit") + ".png", graph.readColor());
         EXPECT_TRUE(graph.ran(fx::MegaRenderer::kCompositePass));
         EXPECT_TRUE(mismatches.empty()) << (lit ? "lit: " : "unlit: ") << mismatches;
         drainGlErrors("mega frame");
