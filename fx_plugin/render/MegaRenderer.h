@@ -83,8 +83,8 @@ public:
     /// Relative depth difference at which a blur tap's weight has fallen to 1/e.
     static constexpr float kDepthFalloff = 0.35f;
     /// Optical depth of a sphere of alpha 1 along its diameter (fs_mega_spheres.glsl): coverage
-    /// 1 - exp(-2.5) = 0.92 through the middle of one opaque sphere, more where spheres overlap.
-    static constexpr float kDensity = 2.5f;
+    /// 1 - exp(-1.25) = 0.71 through the middle of one opaque sphere, more where spheres overlap.
+    static constexpr float kDensity = 1.25f;
 
     explicit MegaRenderer(MegaRendererConfig config);
     ~MegaRenderer();
