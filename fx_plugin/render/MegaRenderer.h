@@ -39,6 +39,10 @@
 // whatever the reaction's blend mode. Lit when the plugin has a scene light (LightState::on)
 // and the reaction's lighting is on (LightingDesc::lit); otherwise the ramp colour, unlit.
 //
+// RenderOptions::quarterRes does not apply (mega.resolution is the technique's own). Live shader
+// edits (Plugin::pollShaderReload) rebuild the billboard programs only; the mega programs are
+// built once.
+//
 // The noise is animated by the first Mega batch's simulation clock (ParticleBatch::time): two
 // frames of a paused simulation from a still camera are byte-identical.
 //
