@@ -50,7 +50,12 @@ private:
     Clock::time_point start_ = Clock::now();
 };
 
-bool isParticlePass(const std::string& name) { return name.find("particles") != std::string::npos; }
+// The plugin's passes: the billboards' ("particles", the quarter-res ones), mega-particles'
+// ("mega_...") and lit smoke's opacity map ("smoke_opacity").
+bool isParticlePass(const std::string& name) {
+    return name.find("particles") != std::string::npos || name.find("mega_") != std::string::npos ||
+           name.find("smoke_opacity") != std::string::npos;
+}
 
 /// The rows top-down the mirror inset covers in the chase frame (cubeView's HUD pass), plus its
 /// 3-pixel frame; empty when the mirror is off.

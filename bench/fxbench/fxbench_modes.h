@@ -32,7 +32,8 @@ struct Mode {
 
 /// Every mode, in table order: nofx, hard, soft, soft-quads, soft+equal, soft+quarter,
 /// soft+equal+quarter, spherical, spherical-quads, spherical+quarter, hard-lit, soft-lit,
-/// spherical-lit.
+/// spherical-lit, mega (image error against spherical: the same particles as exact spheres),
+/// mega-lit (against spherical-lit).
 const std::vector<Mode>& allModes();
 /// Null when `name` is not a mode.
 const Mode* findMode(const std::string& name);

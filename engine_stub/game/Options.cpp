@@ -116,7 +116,7 @@ std::string usage() {
         "  --car-node NAME        the scene node that drives (default car; without one the\n"
         "                         camera frames the model and nothing drives)\n"
         "  --fx legacy|plugin     old hard sprites or the plugin (default plugin)\n"
-        "  --mode hard|soft|spherical|reaction  technique override (default: each reaction's)\n"
+        "  --mode hard|soft|spherical|mega|reaction  technique override (default: each reaction's)\n"
         "  --prepass-equal        opaque pass reuses the prepass z-buffer with depth test EQUAL\n"
         "  --quarter-res          particles into a half x half target, depth-aware composite\n"
         "  --bilinear-upsample    quarter-res with plain bilinear upsampling (comparison)\n"
@@ -241,8 +241,8 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
         } else if (a == "--mode") {
             if (!need(i, 1, a)) return false;
             std::string v = argv[++i];
-            if (v != "hard" && v != "soft" && v != "spherical" && v != "reaction") {
-                *error = "--mode: expected hard, soft, spherical or reaction, got '" + v + "'";
+            if (v != "hard" && v != "soft" && v != "spherical" && v != "mega" && v != "reaction") {
+                *error = "--mode: expected hard, soft, spherical, mega or reaction, got '" + v + "'";
                 return false;
             }
             o.mode = v;

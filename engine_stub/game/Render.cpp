@@ -23,8 +23,8 @@ void Render::handleKeys(Game& game) {
     if (p.keyPressed(Key::Q)) ro.quarterRes = !ro.quarterRes;
     if (p.keyPressed(Key::B)) ro.bilinearUpsample = !ro.bilinearUpsample;
     if (p.keyPressed(Key::M)) {
-        // FromReaction -> Hard -> Soft -> Spherical -> FromReaction
-        ro.techniqueOverride = fx::Technique((int(ro.techniqueOverride) + 1) % 4);
+        // FromReaction -> Hard -> Soft -> Spherical -> Mega -> FromReaction
+        ro.techniqueOverride = fx::Technique((int(ro.techniqueOverride) + 1) % 5);
     }
     if (p.keyPressed(Key::H)) o.hud = !o.hud;
     if (p.keyPressed(Key::E)) game.fireExplosionAtCar();

@@ -78,6 +78,7 @@ bool SpecialFX::Init(const Options& options, cubeScene& scene, fx::HostAdapter* 
         ro.techniqueOverride = options.mode == "hard"        ? fx::Technique::Hard
                                : options.mode == "soft"      ? fx::Technique::Soft
                                : options.mode == "spherical" ? fx::Technique::Spherical
+                               : options.mode == "mega"      ? fx::Technique::Mega
                                                              : fx::Technique::FromReaction;
         ro.quarterRes = options.quarterRes || options.bilinearUpsample;
         ro.bilinearUpsample = options.bilinearUpsample;

@@ -8,7 +8,8 @@
 //    (ReactionRuntime::needsSorting: sorted alpha blending), pool order otherwise (additive);
 //    reactions are drawn in reaction order (no sorting across reactions);
 //  - technique: RenderOptions::techniqueOverride, else the reaction's render.technique;
-//    batches whose technique has no working program are left out.
+//    batches whose technique has no working program are left out (the billboard renderer never
+//    lists Mega as usable, MegaRenderer lists only Mega: each batch is drawn by one of them).
 #include <cstdint>
 #include <vector>
 
@@ -26,6 +27,7 @@ struct ParticleBatch {
     const ParticlePool* pool = nullptr;
     const ReactionDesc* desc = nullptr;  ///< render settings and particle.colorRamp
     bool sortBackToFront = true;         ///< ReactionRuntime::needsSorting()
+    float time = 0.0f;                   ///< the reaction's simulation clock (ReactionRuntime::time), s
 };
 
 /// One draw call: a reaction's visible particles and how to draw them.
@@ -33,7 +35,7 @@ struct DrawBatch {
     int first = 0;         ///< first instance in DrawList::instances
     int count = 0;
     int rampRow = 0;       ///< row in the colour-ramp texture (= index of the ParticleBatch)
-    Technique technique = Technique::Soft;  ///< resolved: Hard, Soft or Spherical
+    Technique technique = Technique::Soft;  ///< resolved: Hard, Soft, Spherical or Mega
     BlendMode blend = BlendMode::Alpha;
     float softScale = 2.0f;      ///< 1 / render.softness
     float contrastPower = 1.0f;

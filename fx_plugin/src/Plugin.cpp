@@ -166,10 +166,10 @@ ErrorCode PluginImpl::continueReaction(int index, float dt, float* currentVehicl
 
 ErrorCode PluginImpl::setRenderOptions(const RenderOptions& options) {
     const auto t = static_cast<uint8_t>(options.techniqueOverride);
-    if (t > static_cast<uint8_t>(Technique::Spherical)) {
+    if (t > static_cast<uint8_t>(Technique::Mega)) {
         return errors_.refuse(ErrorCode::InvalidValue, "setRenderOptions",
                               "techniqueOverride = " + std::to_string(t) +
-                                  "; expected FromReaction, Hard, Soft or Spherical");
+                                  "; expected FromReaction, Hard, Soft, Spherical or Mega");
     }
     options_ = options;
     return ErrorCode::None;

@@ -44,6 +44,16 @@ TEST(Options, GoodValuesParse) {
     EXPECT_EQ(o.screenshotDir, "/tmp");
 }
 
+TEST(Options, ModeMegaParses) {
+    Options o;
+    std::string err;
+    ASSERT_TRUE(parse({"--mode", "mega"}, &o, &err)) << err;
+    EXPECT_EQ(o.mode, "mega");
+    Options bad;
+    EXPECT_FALSE(parse({"--mode", "megaa"}, &bad, &err));
+    EXPECT_NE(err.find("mega"), std::string::npos) << err;  // the message lists it
+}
+
 TEST(Options, BadValuesAreRejectedNamingTheFlag) {
     const std::vector<std::vector<const char*>> bad = {
         {"--frames", "-1"},      {"--frames", "ten"},        {"--size", "0x10"},      {"--size", "640"},

@@ -103,7 +103,7 @@ TEST_P(FxbenchScenario, TinyRunWritesEveryKeyWithFiniteValues) {
     EXPECT_EQ(run["rounds"].as<int>(), 2);
     EXPECT_FALSE(run["renderer"].as<std::string>().empty());
     ASSERT_TRUE(run["modes"].IsSequence());
-    EXPECT_EQ(run["modes"].size(), 13u);  // every mode by default
+    EXPECT_EQ(run["modes"].size(), 15u);  // every mode by default (lit modes and mega included)
     for (const YAML::Node& m : run["modes"]) {
         const std::string name = m["name"].as<std::string>();
         SCOPED_TRACE(name);

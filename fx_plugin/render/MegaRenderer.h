@@ -1,0 +1,155 @@
+#pragma once
+// Mega-particles (`technique: mega`, RenderOptions::techniqueOverride = Mega; seed 001,
+// Bahnassi & Bahnassi, "Volumetric Clouds and Mega-Particles"): the particles of a view whose
+// technique resolves to Mega are drawn as lit spheres into a reduced-resolution target against
+// the scene depth, blurred (depth-aware, separable Gaussian) until they melt into one volume,
+// given fractal detail, lit, and composited onto sceneColor. The billboard renderer leaves these
+// batches out (Mega is never among its usable techniques), so each particle is drawn once.
+//
+// Passes (declared only when a Mega batch is visible in the view; names are data):
+//   mega_depth_downsample  reads sceneDepth                        writes mega_depth
+//   mega_spheres           reads mega_depth                        writes mega_color, mega_density
+//   mega_blur_h            reads mega_color, mega_density          writes mega_blur_color, mega_blur_density
+//   mega_blur_v            reads mega_blur_color, mega_blur_density  writes mega_cloud, mega_cloud_depth
+//                          (the vertical blur, then fractal noise and lighting: mega_shade.glsl)
+//   mega_composite         reads mega_cloud, mega_cloud_depth, sceneDepth   writes sceneColor
+// Targets (FrameBuilder::createTarget, scale = mega.resolution):
+//   mega_depth        R32F     nearest scene depth of the covered full-res pixels (min)
+//   mega_color        RGBA16F  sum of ramp rgb x tau; alpha: -(nearest sphere front depth)
+//   mega_density      RGBA16F  sum of tau (optical depth), sum of view normal.xy x tau
+//   mega_blur_*       the same two after the horizontal blur (alpha of colour: depth, 0 = none)
+//   mega_cloud        RGBA16F  the finished cloud, premultiplied
+//   mega_cloud_depth  R32F     its depth (0 where there is no cloud)
+// Every sphere is summed (blend ONE, ONE; ADD for rgb, MAX for alpha, which keeps the nearest
+// front as the largest -depth), not depth-tested against the others: each adds optical depth tau
+// = kDensity x ramp alpha x life fade x (its chord, clipped to [near, scene depth], / diameter),
+// so the pixel's coverage is 1 - exp(-sum tau): 1 through dense overlapping spheres, 0 at a rim,
+// and a faint dying sphere in front never hides the dense cloud behind it (keeping only the
+// nearest sphere did: measured on the burnout, the whole cloud turned as thin as its outermost,
+// oldest spheres). Two RGBA16F attachments written together (MRT) rather than one RGBA32F (not a
+// format the host must offer) or packing: colour sums and depth need four channels, density and
+// the normal three more; half floats hold depth to 1/2048 of itself (clamped to 60000 m), far
+// finer than the blur's depth falloff. The spheres pass and the blurs draw through the
+// renderer's own framebuffer object with the host's textures of the pass as its attachments
+// (FrameBuilder binds one target per pass).
+//
+// Per view, the first visible Mega batch's `mega:` and `lighting:` keys and render.softness
+// apply to the whole cloud (every Mega reaction of the view melts into one volume); each
+// particle keeps its own reaction's colour ramp. The composite blends premultiplied "over"
+// whatever the reaction's blend mode. Lit when the plugin has a scene light (LightState::on)
+// and the reaction's lighting is on (LightingDesc::lit); otherwise the ramp colour, unlit.
+//
+// RenderOptions::quarterRes does not apply (mega.resolution is the technique's own). Live shader
+// edits (Plugin::pollShaderReload) rebuild the billboard programs only; the mega programs are
+// built once.
+//
+// The noise is animated by the first Mega batch's simulation clock (ParticleBatch::time): two
+// frames of a paused simulation from a still camera are byte-identical.
+//
+// GL: loaded on the first view with a visible Mega batch, or by prepare(). Every GL call runs
+// inside a GlStateGuard; the framebuffer object detaches the host's textures before the pass
+// ends. A shader that fails to build is logged ("file:line: message") and Mega batches are then
+// not drawn. No z-buffer of the host is used: every depth test compares linear depths, so the
+// technique works alike under standard and reversed-Z.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ColorRampTexture.h"
+#include "DrawList.h"
+#include "InstanceStream.h"
+#include "LightState.h"
+#include "QuarterResPath.h"
+#include "fx/Diagnostic.h"
+#include "fx/HostAdapter.h"
+#include "fx/Plugin.h"
+
+namespace fx {
+
+class ApiErrors;
+
+/// Defaults: no host (nothing is logged, GL cannot be loaded), the embedded shaders, refused
+/// calls not counted.
+struct MegaRendererConfig {
+    HostAdapter* host = nullptr;
+    std::string shaderDir;        ///< empty = the shaders embedded in the library
+    ApiErrors* errors = nullptr;  ///< where SizeMismatch is reported (may be null)
+};
+
+class MegaRenderer {
+public:
+    static constexpr const char* kDepthPass = "mega_depth_downsample";
+    static constexpr const char* kSpheresPass = "mega_spheres";
+    static constexpr const char* kBlurHPass = "mega_blur_h";
+    static constexpr const char* kBlurVPass = "mega_blur_v";
+    static constexpr const char* kCompositePass = "mega_composite";
+    /// Relative depth difference at which a blur tap's weight has fallen to 1/e.
+    static constexpr float kDepthFalloff = 0.35f;
+    /// Optical depth of a sphere of alpha 1 along its diameter (fs_mega_spheres.glsl): coverage
+    /// 1 - exp(-1.25) = 0.71 through the middle of one opaque sphere, more where spheres overlap.
+    static constexpr float kDensity = 1.25f;
+
+    explicit MegaRenderer(MegaRendererConfig config);
+    ~MegaRenderer();
+    MegaRenderer(const MegaRenderer&) = delete;
+    MegaRenderer& operator=(const MegaRenderer&) = delete;
+
+    /// Declares this view's Mega passes (none when no batch resolved to Mega is visible) and
+    /// returns how many particles they draw. `batches` must stay valid for this call only.
+    int declarePasses(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
+                      int batchCount, const RenderOptions& options, const LightState& light);
+
+    /// Builds the programs now (Plugin::prepareGl); false with the problems appended to `out`.
+    bool prepare(Diagnostics* out);
+    bool ready() const { return state_ == State::Ready; }
+
+private:
+    enum class State { Unloaded, Ready, Failed };
+    struct Programs;
+    /// One view's recorded cloud, shared with the pass bodies until the host has run them.
+    struct ViewRecord {
+        ViewInfo view;
+        DrawList list;
+        MegaDesc mega;
+        LightingDesc lighting;
+        LightState light;
+        float softScale = 2.0f;  ///< 1 / render.softness of the first batch
+        float time = 0.0f;       ///< simulation clock of the first batch, s
+        QuarterResPath::ScreenRect rect;  ///< full-resolution pixels the spheres can touch
+    };
+
+    bool ensureLoaded();
+    std::shared_ptr<ViewRecord> acquireRecord();
+    bool sizesAgree(PassContext& ctx, const ViewInfo& view, Target a, Target b);
+    void log(LogLevel level, const std::string& message) const;
+    /// Binds the renderer's framebuffer with `a` and `b` as colour attachments 0 and 1, sets
+    /// the viewport to `a`'s size and clears `a` to `clearA`, `b` to 0 (the whole targets).
+    void beginOwnTarget(PassContext& ctx, Target a, Target b, const float clearA[4]);
+    void endOwnTarget();
+    /// Scissor to the record's rect on a target of w x h (the view's size times `scale`) grown
+    /// by `border` texels; no scissor for a whole-view rect.
+    static void scissorTo(const ViewRecord& record, float scale, int border, int w, int h);
+    /// Blur extent of the record in spheres-target texels (taps each side, + 2).
+    static int blurBorder(const ViewRecord& record);
+
+    void runDepth(PassContext& ctx, const ViewRecord& r, Target sceneDepth, Target megaDepth);
+    void runSpheres(PassContext& ctx, const ViewRecord& r, Target megaDepth, Target color, Target density);
+    void runBlur(PassContext& ctx, const ViewRecord& r, Target inColor, Target inDensity, Target outColor,
+                 Target outSecond, bool shade);
+    void runComposite(PassContext& ctx, const ViewRecord& r, Target cloud, Target cloudDepth, Target sceneDepth,
+                      Target sceneColor);
+
+    MegaRendererConfig config_;
+    State state_ = State::Unloaded;
+    Diagnostics loadDiagnostics_;
+    std::unique_ptr<Programs> programs_;
+    ColorRampTexture ramp_;
+    InstanceStream stream_;
+    uint32_t fbo_ = 0, emptyVao_ = 0;
+    DrawListBuilder builder_;
+    std::vector<std::shared_ptr<ViewRecord>> records_;
+    std::vector<const std::vector<ColorStop>*> rampInputs_;
+};
+
+}  // namespace fx

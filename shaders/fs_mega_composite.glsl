@@ -1,0 +1,36 @@
+#version 330 core
+// Mega-particles, composite: the finished cloud (reduced resolution, premultiplied) onto the
+// scene at full resolution, blended (ONE, ONE_MINUS_SRC_ALPHA).
+//
+// Depth-aware upsample: the four texels of the bilinear footprint, each kept only as far as the
+// full-resolution scene depth lies behind that texel's cloud depth:
+// saturate((scene - cloud) / render.softness). Geometry nearer than the cloud gets no smoke,
+// however far the blur spread the cloud's edge over it (seed 001's caveat about fuzzy edges
+// creeping over objects in front), and geometry just behind the cloud's front fades it softly.
+uniform sampler2D uCloud;       // RGBA16F premultiplied
+uniform sampler2D uCloudDepth;  // R32F metres, 0 = no cloud
+uniform sampler2D uSceneDepth;  // full resolution R32F metres
+uniform float uSoftScale;       // 1 / render.softness, 1/m
+
+layout(location = 0) out vec4 oColor;
+
+void main() {
+    ivec2 fullSize = textureSize(uSceneDepth, 0);
+    ivec2 lowSize = textureSize(uCloud, 0);
+    vec2 lowPos = gl_FragCoord.xy * vec2(lowSize) / vec2(fullSize) - 0.5;
+    ivec2 base = ivec2(floor(lowPos));
+    vec2 f = lowPos - vec2(base);
+    ivec2 last = lowSize - 1;
+    float scene = texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r;
+    if (scene <= 0.0) scene = 3.0e38;  // nothing drawn (fx/HostAdapter.h)
+    vec4 sum = vec4(0.0);
+    for (int i = 0; i < 4; ++i) {
+        ivec2 o = ivec2(i & 1, i >> 1);
+        ivec2 tap = clamp(base + o, ivec2(0), last);
+        float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
+        float cloud = texelFetch(uCloudDepth, tap, 0).r;
+        float visible = cloud > 0.0 ? clamp((scene - cloud) * uSoftScale, 0.0, 1.0) : 0.0;
+        sum += (w * visible) * texelFetch(uCloud, tap, 0);
+    }
+    oColor = sum;
+}
