@@ -83,6 +83,9 @@ bool Game::InitProc(std::string* error) {
     if (!vehicle_.active()) frameSceneBounds();
     barrierNode_ = sceneData_.findNode("barrier_right");
     if (!scene_.Init(sceneData_, error, carNode, options_.reversedZ)) return false;
+    // Options were validated (parseOptions); a harness that set them directly gets them clamped.
+    sun_ = sunFromAngles(options_.sunAzimuth, options_.sunElevation);
+    scene_.renderer().setSun(sun_);
     rtt::RenderTargetPoolDesc poolDesc;
     poolDesc.framesUntilFree = std::max(1, options_.poolFramesUntilFree);
     pool_ = std::make_unique<rtt::RenderTargetPool>(poolDesc);
@@ -93,6 +96,17 @@ bool Game::InitProc(std::string* error) {
     updateCameras(0.0f);
     fxHost_ = std::make_unique<EngineFxHost>(&vehicle_, platform_.get());
     if (!specialFX_.Init(options_, scene_, fxHost_.get(), error)) return false;
+    specialFX_.setSceneLight(sun_);
+    return true;
+}
+
+bool Game::setSun(double azimuthDeg, double elevationDeg) {
+    if (!validSunAngles(azimuthDeg, elevationDeg)) return false;
+    options_.sunAzimuth = azimuthDeg;
+    options_.sunElevation = elevationDeg;
+    sun_ = sunFromAngles(azimuthDeg, elevationDeg);
+    scene_.renderer().setSun(sun_);
+    specialFX_.setSceneLight(sun_);
     return true;
 }
 

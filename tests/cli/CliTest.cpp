@@ -50,13 +50,13 @@ TEST(Cli, HelpListsEveryFlagAndExitsZero) {
     EXPECT_EQ(r.status, 0);
     for (const char* flag : {"--frames", "--size", "--fixed-dt", "--seed", "--screenshot", "--screenshot-every",
                              "--scene", "--reactions", "--window", "--backend", "--stats-json", "--fx", "--mode",
-                             "--prepass-equal", "--quarter-res", "--watch"})
+                             "--prepass-equal", "--quarter-res", "--watch", "--sun"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 
 TEST(Cli, UnknownFlagsAndBadValuesAreRejectedWithAMessage) {
     for (const char* args : {"--bogus", "--frames -5", "--size 10", "--fixed-dt abc", "--backend metal",
-                              "--fx new"}) {
+                              "--fx new", "--sun 200,0", "--sun 200", "--sun nan,30"}) {
         const Result r = runGame(args);
         EXPECT_EQ(r.status, 2) << args;
         EXPECT_NE(r.output.find("cube_game: "), std::string::npos) << r.output;
