@@ -92,6 +92,7 @@ bool Game::InitProc(std::string* error) {
     graph_ = std::make_unique<rtt::FrameGraph>(*pool_, platform_->softwareRenderer());
     time_ = options_.startTime;
     vehicle_.update(sceneData_, time_);
+    animateWheels();
     cameraHeading_ = vehicle_.pose().heading;
     updateCameras(0.0f);
     fxHost_ = std::make_unique<EngineFxHost>(&vehicle_, platform_.get());
@@ -108,6 +109,13 @@ bool Game::setSun(double azimuthDeg, double elevationDeg) {
     scene_.renderer().setSun(sun_);
     specialFX_.setSceneLight(sun_);
     return true;
+}
+
+void Game::animateWheels() {
+    for (int i = 0; i < 4; ++i) {
+        const int node = vehicle_.wheelNode(i);
+        if (node >= 0) scene_.setNodeLocal(node, vehicle_.wheelLocal(i));
+    }
 }
 
 // A camera that shows the whole model: from front-right and above, far enough that the bounding
@@ -204,6 +212,7 @@ void Game::Update(float dt) {
     time_ += dt;
     if (explode) fireExplosionAtCar();
     vehicle_.update(sceneData_, options_.stationaryCar ? options_.startTime : time_, options_.stationaryCar);
+    animateWheels();
     updateCameras(dt);
     specialFX_.Dyn(dt, vehicle_);
 }

@@ -126,6 +126,8 @@ private:
     bool InitProc(std::string* error);
     void updateCameras(float dt);
     void frameSceneBounds();
+    /// The wheel nodes' spin (Vehicle::wheelLocal) into the scene, after each vehicle update.
+    void animateWheels();
 
     Options options_;
     CameraQuads cameraQuads_;
