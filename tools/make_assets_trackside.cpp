@@ -104,13 +104,14 @@ void buildTrackside(GltfBuilder& b, std::vector<int>* roots) {
     }
     tiers.box({-12.0f, 0.0f, 21.0f}, {28.0f, 5.0f, 21.4f});  // back wall
     for (float x : {-11.6f, 8.0f, 27.6f})
-        for (float z : {13.2f, 21.0f}) tiers.box({x - 0.15f, 0.0f, z - 0.15f}, {x + 0.15f, z < 20.0f ? 5.6f : 6.0f, z + 0.15f});
+        for (float z : {13.2f, 21.0f})  // front posts 5.6 m, back posts 6.0 m: under the sloping roof
+            tiers.box({x - 0.15f, 0.0f, z - 0.15f}, {x + 0.15f, z < 20.0f ? 5.6f : 6.0f, z + 0.15f});
     // The roof slopes up toward the back (z = 12.4 -> 21.8), 0.2 m thick.
     const vec3 slab[8] = {{-12.5f, 5.6f, 12.4f}, {28.5f, 5.6f, 12.4f}, {28.5f, 5.8f, 12.4f}, {-12.5f, 5.8f, 12.4f},
                           {-12.5f, 6.0f, 21.8f}, {28.5f, 6.0f, 21.8f}, {28.5f, 6.2f, 21.8f}, {-12.5f, 6.2f, 21.8f}};
     roof.hexa(slab);
-    roots->push_back(b.node("grandstand", b.mesh("grandstand", {{tiers, concreteMat}, {seats, seatMat}, {roof, whiteMat}}),
-                            vec3(0)));
+    roots->push_back(b.node(
+        "grandstand", b.mesh("grandstand", {{tiers, concreteMat}, {seats, seatMat}, {roof, whiteMat}}), vec3(0)));
 
     // A start gantry across the track at x = 45: two posts, a beam, a dark panel with red lights.
     MeshData frame, panel, lights;
@@ -121,7 +122,8 @@ void buildTrackside(GltfBuilder& b, std::vector<int>* roots) {
         const float z = -2.2f + 1.1f * float(k);
         lights.box({44.55f, 4.6f, z - 0.2f}, {44.6f, 5.0f, z + 0.2f}, true);
     }
-    roots->push_back(b.node("gantry", b.mesh("gantry", {{frame, steelMat}, {panel, darkMat}, {lights, redMat}}), vec3(0)));
+    roots->push_back(
+        b.node("gantry", b.mesh("gantry", {{frame, steelMat}, {panel, darkMat}, {lights, redMat}}), vec3(0)));
 
     // Cones along the left kerb at the exit of the run-off: orange with a white band.
     MeshData cone, coneBand;

@@ -16,18 +16,6 @@ cubeParticleSystem* cubeScene::CreateParticleSystem(cubeParticleSystem::Kind kin
     return particleSystems_.back().get();
 }
 
-void cubeScene::setNodeLocal(int node, const glm::mat4& local) {
-    if (node < 0 || size_t(node) >= data_.nodes.size()) return;
-    data_.nodes[size_t(node)].local = local;
-    // Pre-order: the subtree is the run of nodes after `node` that descend from it, and each
-    // parent is refreshed before its children.
-    for (size_t n = size_t(node); n < data_.nodes.size(); ++n) {
-        if (n != size_t(node) && !data_.isDescendant(int(n), node)) break;
-        SceneNode& s = data_.nodes[n];
-        s.world = s.parent >= 0 ? data_.nodes[size_t(s.parent)].world * s.local : s.local;
-    }
-}
-
 rtt::FrameGraphResource cubeScene::Render(rtt::FrameGraph& graph, std::vector<cubeView*>& views,
                                           FrameSettings settings) {
     Trace::call("cubeScene::Render");
