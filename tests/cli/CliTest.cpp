@@ -158,3 +158,17 @@ TEST(Cli, MissingSceneNamesTheFileAndExitsNonZero) {
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.output.find("/nonexistent/track.gltf"), std::string::npos) << r.output;
 }
+
+// --sun reaches the renderer: the default angles written out give the default frame byte for
+// byte, a low sun from behind gives another one.
+TEST(Cli, SunOptionRelightsTheFrame) {
+    const std::string a = tmp("sun_default.png"), b = tmp("sun_explicit.png"), c = tmp("sun_low.png");
+    const std::string common = " --frames 2 --size 160x128 --fixed-dt 0.0166667 --start 1 --no-hud --screenshot ";
+    ASSERT_EQ(runGame(common + a).status, 0);
+    ASSERT_EQ(runGame("--sun 131.18592516570965,57.98214701826395" + common + b).status, 0);
+    ASSERT_EQ(runGame("--sun 200,10" + common + c).status, 0);
+    EXPECT_GT(slurp(a).size(), 1000u);
+    EXPECT_EQ(slurp(a), slurp(b));
+    EXPECT_NE(slurp(a), slurp(c));
+    for (const std::string& f : {a, b, c}) std::remove(f.c_str());
+}
