@@ -83,17 +83,39 @@ bool Game::InitProc(std::string* error) {
     if (!vehicle_.active()) frameSceneBounds();
     barrierNode_ = sceneData_.findNode("barrier_right");
     if (!scene_.Init(sceneData_, error, carNode, options_.reversedZ)) return false;
+    // Options were validated (parseOptions); a harness that set them directly gets them clamped.
+    sun_ = sunFromAngles(options_.sunAzimuth, options_.sunElevation);
+    scene_.renderer().setSun(sun_);
     rtt::RenderTargetPoolDesc poolDesc;
     poolDesc.framesUntilFree = std::max(1, options_.poolFramesUntilFree);
     pool_ = std::make_unique<rtt::RenderTargetPool>(poolDesc);
     graph_ = std::make_unique<rtt::FrameGraph>(*pool_, platform_->softwareRenderer());
     time_ = options_.startTime;
     vehicle_.update(sceneData_, time_);
+    animateWheels();
     cameraHeading_ = vehicle_.pose().heading;
     updateCameras(0.0f);
     fxHost_ = std::make_unique<EngineFxHost>(&vehicle_, platform_.get());
     if (!specialFX_.Init(options_, scene_, fxHost_.get(), error)) return false;
+    specialFX_.setSceneLight(sun_);
     return true;
+}
+
+bool Game::setSun(double azimuthDeg, double elevationDeg) {
+    if (!validSunAngles(azimuthDeg, elevationDeg)) return false;
+    options_.sunAzimuth = azimuthDeg;
+    options_.sunElevation = elevationDeg;
+    sun_ = sunFromAngles(azimuthDeg, elevationDeg);
+    scene_.renderer().setSun(sun_);
+    specialFX_.setSceneLight(sun_);
+    return true;
+}
+
+void Game::animateWheels() {
+    for (int i = 0; i < 4; ++i) {
+        const int node = vehicle_.wheelNode(i);
+        if (node >= 0) scene_.setNodeLocal(node, vehicle_.wheelLocal(i));
+    }
 }
 
 // A camera that shows the whole model: from front-right and above, far enough that the bounding
@@ -190,6 +212,7 @@ void Game::Update(float dt) {
     time_ += dt;
     if (explode) fireExplosionAtCar();
     vehicle_.update(sceneData_, options_.stationaryCar ? options_.startTime : time_, options_.stationaryCar);
+    animateWheels();
     updateCameras(dt);
     specialFX_.Dyn(dt, vehicle_);
 }

@@ -74,6 +74,13 @@ public:
     const std::vector<float>& lastSceneDepth() const { return lastSceneDepth_; }
     bool writeStatsJson(const std::string& path, std::string* error) const;
 
+    /// The sun from the next frame on, for the scene and the smoke plugin alike (degrees, as
+    /// --sun: azimuth from +X toward +Z, wraps; elevation 1..90). False, and nothing changes,
+    /// when validSunAngles refuses them.
+    bool setSun(double azimuthDeg, double elevationDeg);
+    /// The light the scene renders with and the plugin was given (from --sun at Init).
+    const SunLight& sun() const { return sun_; }
+
     Options& options() { return options_; }
     const Options& options() const { return options_; }
     /// Opaque quads the application attaches to the main (chase) camera from the next frame on
@@ -119,6 +126,8 @@ private:
     bool InitProc(std::string* error);
     void updateCameras(float dt);
     void frameSceneBounds();
+    /// The wheel nodes' spin (Vehicle::wheelLocal) into the scene, after each vehicle update.
+    void animateWheels();
 
     Options options_;
     CameraQuads cameraQuads_;
@@ -127,6 +136,7 @@ private:
     bool paused_ = false;
     CameraPreset cameraPreset_ = CameraPreset::Chase;
     int barrierNode_ = -1;
+    SunLight sun_;
     std::unique_ptr<Platform> platform_;
     SceneData sceneData_;
     cubeScene scene_;

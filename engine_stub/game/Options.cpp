@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <vector>
 
 #include <unistd.h>
@@ -31,6 +32,18 @@ bool parseDouble(const std::string& s, double lo, double hi, double* out) {
     if (errno != 0 || *end != '\0' || !std::isfinite(v) || v < lo || v > hi) return false;
     *out = v;
     return true;
+}
+
+// "a,b,c": the parts between commas (an empty part stays, so "1,,2" has three).
+std::vector<std::string> splitCommas(const std::string& text) {
+    std::vector<std::string> parts;
+    for (size_t start = 0;;) {
+        const size_t comma = text.find(',', start);
+        parts.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return parts;
 }
 
 bool parseSize(const std::string& s, int* w, int* h) {
@@ -127,6 +140,9 @@ std::string usage() {
         "  --depth reversed|standard  z-buffer: reversed-Z in 32-bit float where the context\n"
         "                         has clip control (default), or 24-bit standard depth\n"
         "  --camera ex,ey,ez,tx,ty,tz  pin the main camera (world metres) instead of chasing the car\n"
+        "  --sun AZ,EL            sun direction in degrees: azimuth in the ground plane from +X\n"
+        "                         (the track) toward +Z, any value (wraps); elevation above the\n"
+        "                         horizon, 1..90 (default 131.2,58.0)\n"
         "  --no-mirror            leave out the rear-view mirror view\n"
         "  --no-hud               leave out the HUD\n"
         "  --panel                the live tweak panel: every reaction key on a widget, render\n"
@@ -282,13 +298,7 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
         } else if (a == "--camera") {
             if (!need(i, 1, a)) return false;
             const std::string text = argv[++i];
-            std::vector<std::string> parts;
-            for (size_t start = 0;;) {
-                const size_t comma = text.find(',', start);
-                parts.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-                if (comma == std::string::npos) break;
-                start = comma + 1;
-            }
+            const std::vector<std::string> parts = splitCommas(text);
             double v[6] = {};
             bool ok = parts.size() == 6;
             for (size_t k = 0; ok && k < 6; ++k) ok = parseDouble(parts[k], -1e6, 1e6, &v[k]);
@@ -301,6 +311,24 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
                 o.cameraEye[k] = float(v[k]);
                 o.cameraTarget[k] = float(v[3 + k]);
             }
+        } else if (a == "--sun") {
+            if (!need(i, 1, a)) return false;
+            const std::string text = argv[++i];
+            const std::vector<std::string> parts = splitCommas(text);
+            constexpr double kHuge = std::numeric_limits<double>::max();
+            double az = 0.0, el = 0.0;
+            if (parts.size() != 2 || !parseDouble(parts[0], -kHuge, kHuge, &az) ||
+                !parseDouble(parts[1], -kHuge, kHuge, &el)) {
+                *error = "--sun: expected AZIMUTH,ELEVATION (two finite numbers in degrees, e.g. 200,10), got '" +
+                         text + "'";
+                return false;
+            }
+            if (!validSunAngles(az, el)) {
+                *error = "--sun: expected an elevation in 1..90 degrees above the horizon, got '" + parts[1] + "'";
+                return false;
+            }
+            o.sunAzimuth = az;
+            o.sunElevation = el;
         } else if (a == "--no-mirror") {
             o.mirror = false;
         } else if (a == "--no-hud") {

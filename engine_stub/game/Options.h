@@ -3,6 +3,7 @@
 #include <string>
 
 #include "platform/Platform.h"
+#include "render/SunLight.h"
 
 namespace cube {
 
@@ -36,6 +37,10 @@ struct Options {
     bool mirror = true;
     bool hud = true;
     bool panel = false;           ///< the live tweak panel (engine_stub/panel), window or headless
+    /// --sun: degrees; azimuth in the ground plane from +X toward +Z, elevation above the
+    /// horizon (render/SunLight.h). Default: the race scene's sun before issue 16.
+    double sunAzimuth = kDefaultSunAzimuthDeg;
+    double sunElevation = kDefaultSunElevationDeg;
     float nearPlane = 0.1f;
     float farPlane = 2000.0f;
     /// Reversed-Z in a 32-bit float z-buffer where the context has clip control (GL 4.5 /

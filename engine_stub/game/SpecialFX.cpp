@@ -88,6 +88,16 @@ bool SpecialFX::Init(const Options& options, cubeScene& scene, fx::HostAdapter* 
     return true;
 }
 
+void SpecialFX::setSceneLight(const SunLight& sun) {
+    if (!plugin_) return;
+    fx::SceneLight light;
+    light.toSun = sun.toSun;
+    light.sunColor = sun.color;
+    light.ambient = 0.5f * (sun.ambientSky + sun.ambientGround);
+    // A refusal (a value the plugin cannot use) is logged once by the plugin, through the host.
+    (void)plugin_->setSceneLight(light);
+}
+
 void SpecialFX::createReactions(cubeScene& scene) {
     scene.ClearParticleSystems();
     reactions_.clear();

@@ -10,6 +10,7 @@
 
 #include "fx/Plugin.h"
 #include "game/Options.h"
+#include "render/SunLight.h"
 
 namespace cube {
 
@@ -45,6 +46,11 @@ public:
     /// With --watch: reloads changed reaction files (plugin path). Errors are printed, the
     /// running set stays.
     void pollHotReload(cubeScene& scene);
+
+    /// Hands the scene's sun to the plugin (fx::SceneLight; the ambient is the mean of the sky
+    /// and ground ambients). Game calls it after Init and whenever the sun changes; the legacy
+    /// path has nothing to light. A refusal is logged by the plugin (host log).
+    void setSceneLight(const SunLight& sun);
 
     /// After the plugin's set was changed from outside (an editor's loadReactionsFromText):
     /// rebuilds the Reactions when the plugin's count differs from theirs.

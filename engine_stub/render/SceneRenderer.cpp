@@ -17,6 +17,14 @@ void setCamera(const gl::Program& p, const CameraMatrices& cam) {
     glUniformMatrix4fv(p.uniform("uProj"), 1, GL_FALSE, glm::value_ptr(cam.proj));
 }
 
+// The scene light of shaders/common.glsl (absent uniforms are -1: glUniform ignores them).
+void setSunUniforms(const gl::Program& p, const SunLight& sun) {
+    glUniform3fv(p.uniform("uToSun"), 1, glm::value_ptr(sun.toSun));
+    glUniform3fv(p.uniform("uSunColor"), 1, glm::value_ptr(sun.color));
+    glUniform3fv(p.uniform("uSkyAmbient"), 1, glm::value_ptr(sun.ambientSky));
+    glUniform3fv(p.uniform("uGroundAmbient"), 1, glm::value_ptr(sun.ambientGround));
+}
+
 // The depth test that keeps the nearer surface: LESS/LEQUAL, or GREATER/GEQUAL reversed.
 GLenum nearerTest(bool reversedZ, bool orEqual) {
     if (reversedZ) return orEqual ? GL_GEQUAL : GL_GREATER;
@@ -55,6 +63,11 @@ bool SceneRenderer::init(const SceneData& data, std::string* error, bool reverse
     if (!hud_.init(error)) return false;
     if (!emptyVao_) glGenVertexArrays(1, &emptyVao_);
     return true;
+}
+
+void SceneRenderer::useLitProgram(const gl::Program& p, const CameraMatrices& cam) const {
+    setCamera(p, cam);
+    setSunUniforms(p, sun_);
 }
 
 SceneRenderer::~SceneRenderer() {
@@ -96,10 +109,10 @@ void SceneRenderer::opaque(const std::vector<MeshDraw>& draws, const CameraMatri
     // which is what EQUAL on the prepass z-buffer does too. So the two paths give the same
     // pixel even at coplanar seams.
     ScopedPassState state({true, equal ? GLenum(GL_EQUAL) : nearerTest(reversedZ_, true), !equal, true});
-    setCamera(meshProgram_, cam);
+    useLitProgram(meshProgram_, cam);
     gpu_.draw(draws, meshProgram_.uniform("uModel"), meshProgram_.uniform("uBaseColor"));
     if (!quads.empty()) {
-        setCamera(costlyProgram_, cam);
+        useLitProgram(costlyProgram_, cam);
         glUniform1i(costlyProgram_.uniform("uCost"), quads.cost);
         drawCameraQuads(costlyProgram_, quads, cam);
     }
@@ -108,13 +121,14 @@ void SceneRenderer::opaque(const std::vector<MeshDraw>& draws, const CameraMatri
 void SceneRenderer::alphaTested(const std::vector<MeshDraw>& draws, const CameraMatrices& cam, bool equal) const {
     // Culling as in the prepass, or EQUAL would differ.
     ScopedPassState state({true, equal ? GLenum(GL_EQUAL) : nearerTest(reversedZ_, true), !equal, true});
-    setCamera(meshProgram_, cam);
+    useLitProgram(meshProgram_, cam);
     gpu_.draw(draws, meshProgram_.uniform("uModel"), meshProgram_.uniform("uBaseColor"));
 }
 
 void SceneRenderer::sky(const CameraMatrices& cam) const {
     ScopedPassState state({true, nearerTest(reversedZ_, true), false, false});
     glUseProgram(skyProgram_.id());
+    setSunUniforms(skyProgram_, sun_);
     const glm::mat4 inv = glm::inverse(cam.proj * glm::mat4(glm::mat3(cam.view)));
     glUniformMatrix4fv(skyProgram_.uniform("uInvViewProj"), 1, GL_FALSE, glm::value_ptr(inv));
     glUniform1f(skyProgram_.uniform("uDepth"), reversedZ_ ? 0.0f : 1.0f);  // the far plane

@@ -13,6 +13,7 @@
 #include "render/GpuScene.h"
 #include "render/Hud.h"
 #include "render/LegacySpriteRenderer.h"
+#include "render/SunLight.h"
 #include "scene/SceneData.h"
 
 namespace cube {
@@ -63,6 +64,11 @@ public:
     /// projection, clear value and z-buffer format (32-bit float when reversed) to match.
     bool reversedZ() const { return reversedZ_; }
 
+    /// The light every later opaque, alpha-tested and sky pass shades with (no GL until then).
+    /// Default: SunLight{} (today's sun).
+    void setSun(const SunLight& sun) { sun_ = sun; }
+    const SunLight& sun() const { return sun_; }
+
     /// The mesh table (records MeshDraws for the game side; no GL).
     const GpuScene& meshes() const { return gpu_; }
 
@@ -90,7 +96,10 @@ public:
 private:
     void drawCameraQuads(const gl::Program& p, const CameraQuads& quads, const CameraMatrices& cam) const;
 
+    void useLitProgram(const gl::Program& p, const CameraMatrices& cam) const;
+
     GpuScene gpu_;
+    SunLight sun_;
     gl::Program meshProgram_, prepassProgram_, skyProgram_, blitProgram_, costlyProgram_;
     GLuint panelVao_ = 0, panelVbo_ = 0;  // one unit quad (z = 0, normal +Z) for the camera quads
     GLuint emptyVao_ = 0;                 // for gl_VertexID full-screen triangles

@@ -38,6 +38,18 @@ bool SceneData::isDescendant(int node, int ancestor) const {
     return false;
 }
 
+void SceneData::setLocal(int node, const glm::mat4& local) {
+    if (node < 0 || size_t(node) >= nodes.size()) return;
+    nodes[size_t(node)].local = local;
+    // Pre-order: the subtree is the run of nodes after `node` that descend from it, and each
+    // parent is refreshed before its children.
+    for (size_t n = size_t(node); n < nodes.size(); ++n) {
+        if (n != size_t(node) && !isDescendant(int(n), node)) break;
+        SceneNode& s = nodes[n];
+        s.world = s.parent >= 0 ? nodes[size_t(s.parent)].world * s.local : s.local;
+    }
+}
+
 std::string SceneData::surfaceAt(float x, float z) const {
     const SceneNode* best = nullptr;
     for (const SceneNode& n : nodes) {

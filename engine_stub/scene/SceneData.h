@@ -60,6 +60,11 @@ struct SceneData {
     /// Out-of-range indices give false.
     bool isDescendant(int node, int ancestor) const;
 
+    /// Animation: node `node`'s local transform from now on; its world transform and its
+    /// descendants' follow (world = parent's world * local). The world boxes (aabbMin/Max) stay
+    /// those of the loaded pose. An index out of range changes nothing.
+    void setLocal(int node, const glm::mat4& local);
+
     /// Surface under the world point (x, z): the surface of the ground node (non-empty surface,
     /// at least one mesh) whose XZ box contains the point, bounds inclusive, picking the one with
     /// the highest top (aabbMax.y) where several overlap. "" when no ground node is under it.

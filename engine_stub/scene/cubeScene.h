@@ -49,6 +49,8 @@ public:
 
     /// Lights and animation: where the moving car is this frame.
     void setCarTransform(const glm::mat4& m) { carTransform_ = m; }
+    /// Animation of one node of the scene's copy (the car's wheels): SceneData::setLocal.
+    void setNodeLocal(int node, const glm::mat4& local) { data_.setLocal(node, local); }
     /// Declares every view's passes; returns the colour target of the last view (the main one).
     rtt::FrameGraphResource Render(rtt::FrameGraph& graph, std::vector<cubeView*>& views, FrameSettings settings);
 

@@ -50,13 +50,13 @@ TEST(Cli, HelpListsEveryFlagAndExitsZero) {
     EXPECT_EQ(r.status, 0);
     for (const char* flag : {"--frames", "--size", "--fixed-dt", "--seed", "--screenshot", "--screenshot-every",
                              "--scene", "--reactions", "--window", "--backend", "--stats-json", "--fx", "--mode",
-                             "--prepass-equal", "--quarter-res", "--watch"})
+                             "--prepass-equal", "--quarter-res", "--watch", "--sun"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 
 TEST(Cli, UnknownFlagsAndBadValuesAreRejectedWithAMessage) {
     for (const char* args : {"--bogus", "--frames -5", "--size 10", "--fixed-dt abc", "--backend metal",
-                              "--fx new"}) {
+                              "--fx new", "--sun 200,0", "--sun 200", "--sun nan,30"}) {
         const Result r = runGame(args);
         EXPECT_EQ(r.status, 2) << args;
         EXPECT_NE(r.output.find("cube_game: "), std::string::npos) << r.output;
@@ -157,4 +157,18 @@ TEST(Cli, MissingSceneNamesTheFileAndExitsNonZero) {
     const Result r = runGame("--frames 1 --scene /nonexistent/track.gltf");
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.output.find("/nonexistent/track.gltf"), std::string::npos) << r.output;
+}
+
+// --sun reaches the renderer: the default angles written out give the default frame byte for
+// byte, a low sun from behind gives another one.
+TEST(Cli, SunOptionRelightsTheFrame) {
+    const std::string a = tmp("sun_default.png"), b = tmp("sun_explicit.png"), c = tmp("sun_low.png");
+    const std::string common = " --frames 2 --size 160x128 --fixed-dt 0.0166667 --start 1 --no-hud --screenshot ";
+    ASSERT_EQ(runGame(common + a).status, 0);
+    ASSERT_EQ(runGame("--sun 131.18592516570965,57.98214701826395" + common + b).status, 0);
+    ASSERT_EQ(runGame("--sun 200,10" + common + c).status, 0);
+    EXPECT_GT(slurp(a).size(), 1000u);
+    EXPECT_EQ(slurp(a), slurp(b));
+    EXPECT_NE(slurp(a), slurp(c));
+    for (const std::string& f : {a, b, c}) std::remove(f.c_str());
 }

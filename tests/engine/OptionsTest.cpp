@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "game/Options.h"
 
 using cube::Options;
@@ -102,4 +104,69 @@ TEST(Options, RunsThatCannotWorkAreRefusedBeforeTheyStart) {
     EXPECT_TRUE(parse({"--frames", "0", "--window"}, &o, &err)) << err;
     EXPECT_TRUE(parse({"--camera", "0,10,0.5,0,0,0", "--car-node", "truck"}, &o, &err)) << err;
     EXPECT_EQ(o.carNode, "truck");
+}
+
+// Issue 16: --sun AZIMUTH,ELEVATION in degrees. The default is the sun the race scene had as a
+// shader constant, normalize(-0.35, 0.85, 0.40), within 1e-3 per component.
+TEST(Options, SunDefaultsToTheFormerConstantSun) {
+    Options o;
+    std::string err;
+    ASSERT_TRUE(parse({}, &o, &err)) << err;
+    const glm::vec3 formerSun = glm::normalize(glm::vec3(-0.35f, 0.85f, 0.40f));
+    const cube::SunLight sun = cube::sunFromAngles(o.sunAzimuth, o.sunElevation);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(sun.toSun[k], formerSun[k], 1e-3f) << k;
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(cube::SunLight{}.toSun[k], formerSun[k], 1e-6f) << k;
+    // Above 20 degrees the colours are the former constants too.
+    EXPECT_EQ(sun.color, cube::SunLight{}.color);
+    EXPECT_EQ(sun.ambientSky, cube::SunLight{}.ambientSky);
+    EXPECT_EQ(sun.ambientGround, cube::SunLight{}.ambientGround);
+}
+
+TEST(Options, SunAnglesParseWrapAndPointWhereTheySay) {
+    Options o;
+    std::string err;
+    ASSERT_TRUE(parse({"--sun", "200,10"}, &o, &err)) << err;
+    EXPECT_DOUBLE_EQ(o.sunAzimuth, 200.0);
+    EXPECT_DOUBLE_EQ(o.sunElevation, 10.0);
+    ASSERT_TRUE(parse({"--sun", "-1e5,90"}, &o, &err)) << err;  // any azimuth, the zenith
+    EXPECT_DOUBLE_EQ(o.sunAzimuth, -1e5);
+    const float kTol = 1e-5f;
+    // Azimuth from +X toward +Z in the ground plane, elevation above it.
+    const glm::vec3 along = cube::sunFromAngles(0.0, 1.0).toSun, right = cube::sunFromAngles(90.0, 45.0).toSun;
+    EXPECT_NEAR(along.x, std::cos(glm::radians(1.0f)), kTol);
+    EXPECT_NEAR(along.y, std::sin(glm::radians(1.0f)), kTol);
+    EXPECT_NEAR(along.z, 0.0f, kTol);
+    EXPECT_NEAR(right.x, 0.0f, kTol);
+    EXPECT_NEAR(right.y, std::sqrt(0.5f), kTol);
+    EXPECT_NEAR(right.z, std::sqrt(0.5f), kTol);
+    EXPECT_NEAR(cube::sunFromAngles(123.0, 90.0).toSun.y, 1.0f, kTol);
+    // Wrapping: 725 = 5 and -355 = 5 degrees.
+    for (double az : {725.0, -355.0}) {
+        const glm::vec3 d = cube::sunFromAngles(az, 30.0).toSun - cube::sunFromAngles(5.0, 30.0).toSun;
+        EXPECT_LT(glm::length(d), 1e-5f) << az;
+    }
+    // A low sun is warmer: less blue than red.
+    const cube::SunLight low = cube::sunFromAngles(200.0, 1.0);
+    EXPECT_LT(low.color.b, 0.5f * low.color.r);
+}
+
+TEST(Options, BadSunValuesAreRejectedNamingTheFlagAndTheExpectation) {
+    const std::vector<std::pair<std::string, std::string>> bad = {
+        {"200", "AZIMUTH,ELEVATION"}, {"200,10,3", "AZIMUTH,ELEVATION"}, {"nan,10", "AZIMUTH,ELEVATION"},
+        {"10,inf", "AZIMUTH,ELEVATION"}, {"north,up", "AZIMUTH,ELEVATION"}, {",", "AZIMUTH,ELEVATION"},
+        {"200,0", "1..90"},           {"200,0.99", "1..90"},          {"200,90.5", "1..90"},
+        {"200,-10", "1..90"},
+    };
+    for (const auto& [value, mention] : bad) {
+        Options o;
+        std::string err;
+        EXPECT_FALSE(parse({"--sun", value.c_str()}, &o, &err)) << value;
+        EXPECT_EQ(err.rfind("--sun: ", 0), 0u) << value << ": " << err;
+        EXPECT_NE(err.find(mention), std::string::npos) << value << ": " << err;
+    }
+    Options o;
+    std::string err;
+    EXPECT_FALSE(parse({"--sun"}, &o, &err));
+    EXPECT_NE(err.find("--sun"), std::string::npos) << err;
+    EXPECT_NE(cube::usage().find("--sun AZ,EL"), std::string::npos);
 }

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 namespace {
 
 using cube::SceneData;
@@ -97,3 +99,30 @@ TEST(SceneData, SolidsOverlappingABox) {
 }
 
 }  // namespace
+
+// The wheels turn through setLocal: the node and its subtree move, its siblings and parent do not.
+TEST(SceneData, SetLocalMovesTheNodeAndItsSubtreeOnly) {
+    SceneData s;
+    s.nodes = {boxNode("car", {}, {}), boxNode("wheel_FL", {}, {}, 0), boxNode("hub", {}, {}, 1),
+               boxNode("wheel_FR", {}, {}, 0)};
+    s.nodes[0].local = s.nodes[0].world = glm::translate(glm::mat4(1.0f), {10.0f, 0.0f, 0.0f});
+    s.nodes[1].local = glm::translate(glm::mat4(1.0f), {1.35f, 0.33f, -0.8f});
+    s.nodes[2].local = glm::translate(glm::mat4(1.0f), {0.0f, 0.2f, 0.0f});  // 0.2 m up from the axle
+    s.nodes[3].local = glm::translate(glm::mat4(1.0f), {1.35f, 0.33f, 0.8f});
+    for (size_t i = 1; i < s.nodes.size(); ++i)
+        s.nodes[i].world = s.nodes[size_t(s.nodes[i].parent)].world * s.nodes[i].local;
+    const glm::mat4 carBefore = s.nodes[0].world, frBefore = s.nodes[3].world;
+
+    // A quarter turn about the axle (+Z), rolling forward: the point above the axle goes to +X.
+    s.setLocal(1, glm::rotate(s.nodes[1].local, -0.5f * 3.14159265f, glm::vec3(0, 0, 1)));
+    const glm::vec3 hub = glm::vec3(s.nodes[2].world[3]);
+    EXPECT_NEAR(hub.x, 10.0f + 1.35f + 0.2f, 1e-5f);
+    EXPECT_NEAR(hub.y, 0.33f, 1e-5f);
+    EXPECT_NEAR(hub.z, -0.8f, 1e-5f);
+    EXPECT_NEAR(s.nodes[1].world[3].x, 11.35f, 1e-5f);  // the axle stays
+    EXPECT_EQ(s.nodes[0].world, carBefore);
+    EXPECT_EQ(s.nodes[3].world, frBefore);
+    s.setLocal(7, glm::mat4(2.0f));  // out of range: nothing
+    s.setLocal(-1, glm::mat4(2.0f));
+    EXPECT_EQ(s.nodes[3].world, frBefore);
+}

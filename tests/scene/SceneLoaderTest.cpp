@@ -36,19 +36,28 @@ TEST_P(RaceScene, WheelsSitAtTheirCornersUnderTheCar) {
          {"wheel_FL", "wheel_FR", "wheel_RL", "wheel_RR", "car_body", "car_cabin"}) {
         EXPECT_TRUE(scene.isDescendant(scene.findNode(w), car)) << w;
     }
-    // Wheel: r = 0.33 cylinder, 0.25 wide along Z, touching the ground.
+    // Wheel: r = 0.33, 0.25 wide along Z (the axle), touching the ground; a tyre and a rim
+    // (two primitives of different colours: the rim's spokes show the wheel turning).
     const cube::SceneNode& fl = scene.nodes[size_t(scene.findNode("wheel_FL"))];
-    ASSERT_EQ(fl.meshes.size(), 1u);
+    ASSERT_EQ(fl.meshes.size(), 2u);
     EXPECT_NEAR(fl.aabbMin.y, 0.0f, kPosTol);
     EXPECT_NEAR(fl.aabbMax.y, 0.66f, kPosTol);
     EXPECT_NEAR(fl.aabbMax.z - fl.aabbMin.z, 0.25f, kPosTol);
-    // Body: 4.4 x 1.8, y from 0.25 to 0.85, deep blue.
+    const glm::vec4 tyre = scene.meshes[size_t(fl.meshes[0])].baseColor;
+    const glm::vec4 rim = scene.meshes[size_t(fl.meshes[1])].baseColor;
+    EXPECT_GT(rim.r + rim.g + rim.b, 4.0f * (tyre.r + tyre.g + tyre.b)) << "a bright rim on a dark tyre";
+    // Body: about 4.5 m long and 1.8 m wide, its first primitive deep blue paint.
     const cube::SceneNode& body = scene.nodes[size_t(scene.findNode("car_body"))];
-    expectNear(body.aabbMin, {-2.2f, 0.25f, -0.9f}, kPosTol, "car_body min");
-    expectNear(body.aabbMax, {2.2f, 0.85f, 0.9f}, kPosTol, "car_body max");
+    EXPECT_NEAR(body.aabbMax.x - body.aabbMin.x, 4.5f, 0.3f);
+    EXPECT_LE(body.aabbMax.z - body.aabbMin.z, 1.9f);
+    EXPECT_LT(body.aabbMin.y, 0.25f);
     const glm::vec4 paint = scene.meshes[size_t(body.meshes[0])].baseColor;
     EXPECT_GT(paint.b, 2.0f * paint.r);
     EXPECT_GT(paint.b, 2.0f * paint.g);
+    // The cabin has a glass primitive besides its shell.
+    const cube::SceneNode& cabin = scene.nodes[size_t(scene.findNode("car_cabin"))];
+    ASSERT_EQ(cabin.meshes.size(), 2u);
+    EXPECT_NE(scene.meshes[size_t(cabin.meshes[0])].baseColor, scene.meshes[size_t(cabin.meshes[1])].baseColor);
 }
 
 TEST_P(RaceScene, BarriersAndTyreStacksAreSolid) {
