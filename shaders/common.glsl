@@ -11,10 +11,26 @@ uniform vec3 uGroundAmbient;  // on surfaces facing down
 const vec3 kHazeColor = vec3(0.70, 0.78, 0.88);
 const float kHazeDensity = 0.0022;
 
-vec3 shadeLambert(vec3 albedo, vec3 n) {
+// `sunVisible`: the share of the sun's light that reaches the surface (1 = all).
+vec3 shadeLambert(vec3 albedo, vec3 n, float sunVisible) {
     float ndl = max(dot(n, uToSun), 0.0);
     vec3 ambient = mix(uGroundAmbient, uSkyAmbient, 0.5 + 0.5 * n.y);
-    return albedo * (ambient + uSunColor * ndl * 0.85);
+    return albedo * (ambient + uSunColor * (ndl * 0.85 * sunVisible));
+}
+vec3 shadeLambert(vec3 albedo, vec3 n) { return shadeLambert(albedo, n, 1.0); }
+
+// The smoke's shadow (fx::SmokeShadow, the plugin's opacity map; SceneRenderer::setSmokeShadow):
+// alpha is the optical depth of the whole smoke column between a point and the sun.
+uniform sampler2D uSmokeOpacity;
+uniform mat4 uWorldToSmoke;      // world -> (u, v, light depth, 1)
+uniform float uSmokeAbsorption;  // optical depth per unit of opacity; 0 = no smoke this frame
+
+// The share of the sun that reaches world position `p` through the smoke (1 without smoke).
+float smokeShadow(vec3 p) {
+    vec4 s = uWorldToSmoke * vec4(p, 1.0);
+    bool inside = all(greaterThanEqual(s.xy, vec2(0.0))) && all(lessThanEqual(s.xy, vec2(1.0)));
+    float depth = inside && uSmokeAbsorption > 0.0 ? texture(uSmokeOpacity, s.xy).a : 0.0;
+    return exp(-uSmokeAbsorption * depth);
 }
 
 vec3 applyHaze(vec3 color, float viewDistance) {

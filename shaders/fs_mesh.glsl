@@ -4,6 +4,7 @@ uniform vec4 uBaseColor;
 
 in vec3 vNormal;
 in vec3 vViewPos;
+in vec3 vWorldPos;
 
 layout(location = 0) out vec4 oColor;
 // Linear view depth (metres) for a second render target: where the opaque pass also writes the
@@ -12,7 +13,7 @@ layout(location = 1) out float oLinearDepth;
 
 void main() {
     vec3 n = normalize(vNormal);
-    vec3 c = shadeLambert(uBaseColor.rgb, n);
+    vec3 c = shadeLambert(uBaseColor.rgb, n, smokeShadow(vWorldPos));
     oColor = vec4(applyHaze(c, length(vViewPos)), 1.0);
     oLinearDepth = -vViewPos.z;
 }

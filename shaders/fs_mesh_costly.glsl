@@ -8,6 +8,7 @@ uniform int uCost;
 
 in vec3 vNormal;
 in vec3 vViewPos;
+in vec3 vWorldPos;
 
 layout(location = 0) out vec4 oColor;
 // Linear view depth (metres) for a second render target: where the opaque pass also writes the
@@ -29,7 +30,7 @@ void main() {
         p *= 2.03;
         a *= 0.5;
     }
-    vec3 c = shadeLambert(uBaseColor.rgb * (0.6 + 0.8 * v), normalize(vNormal));
+    vec3 c = shadeLambert(uBaseColor.rgb * (0.6 + 0.8 * v), normalize(vNormal), smokeShadow(vWorldPos));
     oColor = vec4(c, 1.0);
     oLinearDepth = -vViewPos.z;
 }

@@ -10,6 +10,7 @@ uniform mat4 uProj;
 
 out vec3 vNormal;
 out vec3 vViewPos;
+out vec3 vWorldPos;
 
 invariant gl_Position;
 
@@ -17,6 +18,7 @@ void main() {
     vec4 world = uModel * vec4(aPosition, 1.0);
     vec4 viewPos = uView * world;
     vViewPos = viewPos.xyz;
+    vWorldPos = world.xyz;
     vNormal = mat3(uModel) * aNormal;
     gl_Position = uProj * viewPos;
 }

@@ -89,7 +89,7 @@ void applyMode(cube::Game& game, const Mode& mode) {
     plugin->setRenderOptions(ro);
     plugin->setParticleShape(mode.shape);
     if (mode.lit) {
-        plugin->setSceneLight(fx::SceneLight{});
+        game.specialFX().setSceneLight(game.sun());
     } else {
         plugin->clearSceneLight();
     }

@@ -25,6 +25,9 @@ void setSunUniforms(const gl::Program& p, const SunLight& sun) {
     glUniform3fv(p.uniform("uGroundAmbient"), 1, glm::value_ptr(sun.ambientGround));
 }
 
+// The texture unit of the smoke's opacity map in the lit scene programs.
+constexpr int kSmokeUnit = 4;
+
 // The depth test that keeps the nearer surface: LESS/LEQUAL, or GREATER/GEQUAL reversed.
 GLenum nearerTest(bool reversedZ, bool orEqual) {
     if (reversedZ) return orEqual ? GL_GEQUAL : GL_GREATER;
@@ -68,6 +71,13 @@ bool SceneRenderer::init(const SceneData& data, std::string* error, bool reverse
 void SceneRenderer::useLitProgram(const gl::Program& p, const CameraMatrices& cam) const {
     setCamera(p, cam);
     setSunUniforms(p, sun_);
+    // The smoke's shadow on texture unit kSmokeUnit (unbound again by the opaque pass).
+    glActiveTexture(GL_TEXTURE0 + kSmokeUnit);
+    glBindTexture(GL_TEXTURE_2D, smokeTexture_);
+    glActiveTexture(GL_TEXTURE0);
+    glUniform1i(p.uniform("uSmokeOpacity"), kSmokeUnit);
+    glUniformMatrix4fv(p.uniform("uWorldToSmoke"), 1, GL_FALSE, glm::value_ptr(worldToSmoke_));
+    glUniform1f(p.uniform("uSmokeAbsorption"), smokeAbsorption_);
 }
 
 SceneRenderer::~SceneRenderer() {
@@ -116,6 +126,9 @@ void SceneRenderer::opaque(const std::vector<MeshDraw>& draws, const CameraMatri
         glUniform1i(costlyProgram_.uniform("uCost"), quads.cost);
         drawCameraQuads(costlyProgram_, quads, cam);
     }
+    glActiveTexture(GL_TEXTURE0 + kSmokeUnit);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
 }
 
 void SceneRenderer::alphaTested(const std::vector<MeshDraw>& draws, const CameraMatrices& cam, bool equal) const {

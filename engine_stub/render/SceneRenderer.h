@@ -67,6 +67,14 @@ public:
     /// The light every later opaque, alpha-tested and sky pass shades with (no GL until then).
     /// Default: SunLight{} (today's sun).
     void setSun(const SunLight& sun) { sun_ = sun; }
+    /// The smoke's opacity map for this frame's opaque pass (fx::SmokeShadow: `texture` its GL
+    /// name, `worldToSmoke` its matrix), darkening the sun's light on the ground under the cloud
+    /// by exp(-absorption x alpha). `texture` 0 = no smoke shadow.
+    void setSmokeShadow(uint32_t texture, const glm::mat4& worldToSmoke, float absorption = 1.0f) {
+        smokeTexture_ = texture;
+        worldToSmoke_ = worldToSmoke;
+        smokeAbsorption_ = texture ? absorption : 0.0f;
+    }
     const SunLight& sun() const { return sun_; }
 
     /// The mesh table (records MeshDraws for the game side; no GL).
@@ -100,6 +108,9 @@ private:
 
     GpuScene gpu_;
     SunLight sun_;
+    uint32_t smokeTexture_ = 0;
+    glm::mat4 worldToSmoke_{1.0f};
+    float smokeAbsorption_ = 0.0f;
     gl::Program meshProgram_, prepassProgram_, skyProgram_, blitProgram_, costlyProgram_;
     GLuint panelVao_ = 0, panelVbo_ = 0;  // one unit quad (z = 0, normal +Z) for the camera quads
     GLuint emptyVao_ = 0;                 // for gl_VertexID full-screen triangles

@@ -173,12 +173,18 @@ void cubeView::declareOpaque(cubeScene& scene, rtt::FrameGraph& graph, const Tar
     SceneRenderer* r = &scene.renderer();
     const rtt::FrameGraphResource color = t.color, depth = t.sceneDepth;
     const bool writesDepth = opaqueWritesDepth_;
+    // The smoke's shadow darkens the ground (and whatever else lies under the cloud).
+    const rtt::FrameGraphResource smoke{smokeShadow_.opacity.id};
+    const glm::mat4 worldToSmoke = smokeShadow_.worldToShadow;
     graph.addPass(passName(bucketInfo(Bucket::Opaque).name).c_str(), order(bucketInfo(Bucket::Opaque).order),
                   [&](rtt::PassBuilder& b) {
                       b.write(color);
                       if (writesDepth) b.write(depth);
+                      if (smoke.valid()) b.read(smoke);
                   },
-                  [this, r, color, depth, writesDepth, cam, quads, reversed = reversedZ_](rtt::PassContext& ctx) {
+                  [this, r, color, depth, writesDepth, cam, quads, smoke, worldToSmoke,
+                   reversed = reversedZ_](rtt::PassContext& ctx) {
+                      r->setSmokeShadow(smoke.valid() ? ctx.texture(smoke, 0) : 0u, worldToSmoke);
                       rtt::ClearValues cv;
                       cv.color[0] = {0.0f, 0.0f, 0.0f, 1.0f};
                       cv.depth = reversed ? 0.0f : 1.0f;
