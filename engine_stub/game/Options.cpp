@@ -145,6 +145,7 @@ std::string usage() {
         "                         horizon, 1..90 (default 131.2,58.0)\n"
         "  --no-mirror            leave out the rear-view mirror view\n"
         "  --no-hud               leave out the HUD\n"
+        "  --unlit-smoke          draw the smoke without the sun (no lighting, no smoke shadow)\n"
         "  --panel                the live tweak panel: every reaction key on a widget, render\n"
         "                         switches, pass timings; Save writes the file back (also headless)\n"
         "  --stats-json PATH      write frame statistics at exit\n"
@@ -333,6 +334,8 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
             o.mirror = false;
         } else if (a == "--no-hud") {
             o.hud = false;
+        } else if (a == "--unlit-smoke") {
+            o.litSmoke = false;
         } else if (a == "--panel") {
             o.panel = true;
         } else if (a == "--stats-json") {

@@ -36,6 +36,7 @@ struct Options {
     bool watch = false;
     bool mirror = true;
     bool hud = true;
+    bool litSmoke = true;         ///< hand the sun to the plugin (false: --unlit-smoke, the 1.1 look)
     bool panel = false;           ///< the live tweak panel (engine_stub/panel), window or headless
     /// --sun: degrees; azimuth in the ground plane from +X toward +Z, elevation above the
     /// horizon (render/SunLight.h). Default: the race scene's sun before issue 16.

@@ -39,6 +39,7 @@ void Reaction::ContinuePlugin(float* currentVehicleCollisionAmount) {
 }
 
 bool SpecialFX::Init(const Options& options, cubeScene& scene, fx::HostAdapter* host, std::string* error) {
+    litSmoke_ = options.litSmoke;
     Trace::call("SpecialFX::Init");
     path_ = options.fx;
     seed_ = options.seed;
@@ -90,6 +91,10 @@ bool SpecialFX::Init(const Options& options, cubeScene& scene, fx::HostAdapter* 
 
 void SpecialFX::setSceneLight(const SunLight& sun) {
     if (!plugin_) return;
+    if (!litSmoke_) {
+        plugin_->clearSceneLight();
+        return;
+    }
     fx::SceneLight light;
     light.toSun = sun.toSun;
     light.sunColor = sun.color;

@@ -49,7 +49,8 @@ public:
 
     /// Hands the scene's sun to the plugin (fx::SceneLight; the ambient is the mean of the sky
     /// and ground ambients). Game calls it after Init and whenever the sun changes; the legacy
-    /// path has nothing to light. A refusal is logged by the plugin (host log).
+    /// path has nothing to light. A refusal is logged by the plugin (host log). With
+    /// --unlit-smoke (Options::litSmoke false) it clears the plugin's light instead.
     void setSceneLight(const SunLight& sun);
 
     /// After the plugin's set was changed from outside (an editor's loadReactionsFromText):
@@ -73,6 +74,7 @@ private:
     uint32_t seed_ = 1;
     float dt_ = 0.0f;
     const Vehicle* vehicle_ = nullptr;
+    bool litSmoke_ = true;  ///< Options::litSmoke: false keeps the plugin's smoke unlit
 };
 
 }  // namespace cube

@@ -46,6 +46,15 @@ TEST(Options, GoodValuesParse) {
     EXPECT_EQ(o.screenshotDir, "/tmp");
 }
 
+TEST(Options, UnlitSmokeIsASwitchAndLitIsTheDefault) {
+    Options o;
+    std::string err;
+    ASSERT_TRUE(parse({}, &o, &err)) << err;
+    EXPECT_TRUE(o.litSmoke);
+    ASSERT_TRUE(parse({"--unlit-smoke"}, &o, &err)) << err;
+    EXPECT_FALSE(o.litSmoke);
+}
+
 TEST(Options, ModeMegaParses) {
     Options o;
     std::string err;
