@@ -52,6 +52,8 @@ public:
     /// path has nothing to light. A refusal is logged by the plugin (host log). With
     /// --unlit-smoke (Options::litSmoke false) it clears the plugin's light instead.
     void setSceneLight(const SunLight& sun);
+    /// Options::litSmoke at run time (the panel); takes effect at the next setSceneLight.
+    void setLitSmoke(bool lit) { litSmoke_ = lit; }
 
     /// After the plugin's set was changed from outside (an editor's loadReactionsFromText):
     /// rebuilds the Reactions when the plugin's count differs from theirs.

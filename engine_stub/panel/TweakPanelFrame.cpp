@@ -20,9 +20,9 @@ void TweakPanel::buildFrameWindow(Game& game) {
 
     if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) {
         fx::RenderOptions ro = plugin_->renderOptions();
-        const char* techniques[] = {"per reaction", "hard", "soft", "spherical"};
+        const char* techniques[] = {"per reaction", "hard", "soft", "spherical", "mega"};
         int t = int(ro.techniqueOverride);
-        bool changed = ImGui::Combo("technique", &t, techniques, 4);
+        bool changed = ImGui::Combo("technique", &t, techniques, 5);
         note("technique");
         ro.techniqueOverride = fx::Technique(t);
         ImGui::Checkbox("prepass-EQUAL", &game.options().prepassEqual);
@@ -41,6 +41,23 @@ void TweakPanel::buildFrameWindow(Game& game) {
         note("trimmed_shapes");
         ImGui::SameLine();
         ImGui::TextDisabled("%s", game.scene().renderer().reversedZ() ? "reversed-Z float depth" : "standard 24-bit depth");
+    }
+    if (ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen)) {
+        // The sun lights the scene and the smoke (Game::setSun); lit smoke can be switched off.
+        float azimuth = float(game.options().sunAzimuth), elevation = float(game.options().sunElevation);
+        bool moved = ImGui::SliderFloat("sun azimuth", &azimuth, 0.0f, 360.0f, "%.0f deg");
+        note("sun_azimuth", true);
+        moved |= ImGui::SliderFloat("sun elevation", &elevation, float(kMinSunElevationDeg), float(kMaxSunElevationDeg),
+                                    "%.0f deg");
+        note("sun_elevation", true);
+        if (moved) game.setSun(azimuth, elevation);
+        bool lit = game.options().litSmoke;
+        if (ImGui::Checkbox("lit smoke", &lit)) {
+            game.options().litSmoke = lit;
+            game.specialFX().setLitSmoke(lit);
+            game.specialFX().setSceneLight(game.sun());
+        }
+        note("lit_smoke");
     }
     if (ImGui::CollapsingHeader("Time and camera", ImGuiTreeNodeFlags_DefaultOpen)) {
         float scale = game.timeScale();

@@ -169,6 +169,20 @@ TEST_F(PanelTest, RenderSwitchesChangeTheRunningOptions) {
     EXPECT_EQ(plugin->particleShape(), fx::ParticleShape::Trimmed);
 }
 
+TEST_F(PanelTest, TheSunSlidersMoveTheSunAndLitSmokeSwitchesOff) {
+    const Rect r = rect("sun_elevation");  // a slider over [1, 90] degrees
+    // Far past the left end: the lowest sun the engine accepts, and the scene's sun follows.
+    drag(r.x0 + 0.5f * (r.x1 - r.x0), r.x0 - 300.0f, r.cy());
+    EXPECT_DOUBLE_EQ(game.options().sunElevation, 1.0);
+    EXPECT_LT(game.sun().toSun.y, 0.02f);
+    EXPECT_TRUE(game.options().litSmoke);
+    click(rect("lit_smoke"));
+    EXPECT_FALSE(game.options().litSmoke);
+    click(rect("lit_smoke"));
+    EXPECT_TRUE(game.options().litSmoke);
+    EXPECT_EQ(cube::gl::errorCount(), 0) << cube::gl::lastError();
+}
+
 TEST_F(PanelTest, ThePanelAddsNoGlErrorAndRestoresTheGlState) {
     for (int i = 0; i < 3; ++i) frame();
     ASSERT_EQ(cube::gl::errorCount(), 0) << cube::gl::lastError();
