@@ -20,7 +20,9 @@ vec3 shadeLambert(vec3 albedo, vec3 n, float sunVisible) {
 vec3 shadeLambert(vec3 albedo, vec3 n) { return shadeLambert(albedo, n, 1.0); }
 
 // The smoke's shadow (fx::SmokeShadow, the plugin's opacity map; SceneRenderer::setSmokeShadow):
-// alpha is the optical depth of the whole smoke column between a point and the sun.
+// channel k is the optical depth of the smoke from the sun down to light depth (k + 1) / 4,
+// alpha the whole column; between the slices it is linear, so a surface above the cloud (a
+// grandstand roof) gets no shadow and one below it the whole column's.
 uniform sampler2D uSmokeOpacity;
 uniform mat4 uWorldToSmoke;      // world -> (u, v, light depth, 1)
 uniform float uSmokeAbsorption;  // optical depth per unit of opacity; 0 = no smoke this frame
@@ -29,7 +31,9 @@ uniform float uSmokeAbsorption;  // optical depth per unit of opacity; 0 = no sm
 float smokeShadow(vec3 p) {
     vec4 s = uWorldToSmoke * vec4(p, 1.0);
     bool inside = all(greaterThanEqual(s.xy, vec2(0.0))) && all(lessThanEqual(s.xy, vec2(1.0)));
-    float depth = inside && uSmokeAbsorption > 0.0 ? texture(uSmokeOpacity, s.xy).a : 0.0;
+    vec4 m = inside && uSmokeAbsorption > 0.0 ? texture(uSmokeOpacity, s.xy) : vec4(0.0);
+    vec4 w = clamp(vec4(clamp(s.z, 0.0, 1.0) * 4.0) - vec4(0.0, 1.0, 2.0, 3.0), 0.0, 1.0);
+    float depth = dot(m - vec4(0.0, m.rgb), w);
     return exp(-uSmokeAbsorption * depth);
 }
 
