@@ -49,6 +49,9 @@ public:
     static constexpr const char* kDownsamplePass = "particles_depth_downsample";
     static constexpr const char* kQuarterPass = "particles_quarter";
     static constexpr const char* kCompositePass = "particles_composite";
+    /// Mixed resolution only: the full-res redraw of the edge pixels and its target.
+    static constexpr const char* kEdgeTarget = "particles_edge_color";
+    static constexpr const char* kEdgePass = "particles_edges";
     /// Relative depth difference above which a footprint counts as straddling an edge.
     static constexpr float kDepthThreshold = 0.1f;
 
@@ -57,6 +60,8 @@ public:
     /// Half size, RGBA16F, linear filtering; with its own z-buffer when `withDepth` (the
     /// half-res z-test, reversed-Z hosts only).
     static TargetDesc colorTargetDesc(bool withDepth = false);
+    /// Mixed resolution: full size, RGBA16F, nearest filtering, with its own z-buffer (the mask).
+    static TargetDesc edgeTargetDesc();
 
     QuarterResPath() = default;
     ~QuarterResPath();
@@ -68,6 +73,8 @@ public:
     bool ok() const { return downsample_ && composite_ && emptyVao_; }
     /// The half-res z-test's program built (without it the quarter pass is simply not z-tested).
     bool halfZOk() const { return halfZ_ != 0; }
+    /// The edge mask program built (without it mixed resolution falls back to depth-aware).
+    bool mixedOk() const { return edgeMask_ != 0; }
 
     /// The part of the view the particles can touch, in full-resolution pixels ([x0, x1) x
     /// [y0, y1), GL's bottom-up rows); `whole` when it is the whole view (a particle reaches the
@@ -93,8 +100,15 @@ public:
     /// half-res particles skip what is hidden behind all four pixels. True when that was done.
     bool beginQuarter(PassContext& ctx, Target halfColor, const ScreenRect& rect, Target sceneDepth = Target{},
                       const ViewInfo* zView = nullptr);
+    /// Mixed resolution: binds the full-res edge target, clears its colour (within the rect) to
+    /// transparent black and writes the edge mask into its z-buffer (fs_particles_edge_mask.glsl),
+    /// then leaves the depth test on without writes, in the view's convention (LEQUAL, GEQUAL
+    /// under reversed-Z), so particles drawn next pass it on edge pixels only.
+    void beginEdges(PassContext& ctx, Target edgeColor, Target halfDepth, Target sceneDepth, const ScreenRect& rect,
+                    const ViewInfo& view);
+    /// `edgeColor` valid: mixed resolution (edge pixels from it, the rest bilinear).
     void composite(PassContext& ctx, Target sceneColor, Target halfColor, Target halfDepth,
-                   Target sceneDepth, bool bilinear, const ScreenRect& rect);
+                   Target sceneDepth, bool bilinear, const ScreenRect& rect, Target edgeColor = Target{});
 
 private:
     uint32_t halfZ_ = 0;
@@ -104,7 +118,10 @@ private:
     uint32_t emptyVao_ = 0;
     int downsampleDepthLoc_ = -1;
     int halfColorLoc_ = -1, halfDepthLoc_ = -1, sceneDepthLoc_ = -1, bilinearLoc_ = -1,
-        thresholdLoc_ = -1;
+        thresholdLoc_ = -1, mixedLoc_ = -1, edgeColorLoc_ = -1;
+    uint32_t edgeMask_ = 0;
+    int maskHalfDepthLoc_ = -1, maskSceneDepthLoc_ = -1, maskThresholdLoc_ = -1, maskPassLoc_ = -1,
+        maskFailLoc_ = -1;
 };
 
 }  // namespace fx
