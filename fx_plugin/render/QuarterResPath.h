@@ -32,6 +32,46 @@
 //   whole frame PSNR: bilinear 32.3 dB, depth-aware 46.9 dB.
 //   End-to-end burnout frame (repo reactions, 1.5 s of wheelspin, smoke crossing no depth edge
 //   of its own): 43.9 dB with either upsample.
+//
+// Mixed resolution (Plugin::setQuarterResEdges(MixedResolution); GPU Gems 3 ch. 23, Cantlay,
+// "High-Speed, Off-Screen Particles"): the pixels the upsample cannot get right are redrawn at
+// full resolution. A fourth pass, between the quarter pass and the composite:
+//   particles_edges   reads half depth + sceneDepth (+ the opacity map)   writes particles_edge_color
+// Edge pixel: one whose bilinear footprint holds a low-res depth farther than kDepthThreshold *
+// depth from its own (particles_mixed_edge.glsl, the depth-aware test; included by the mask
+// shader and the composite, so both agree pixel for pixel), inside the screen rect. The mask is
+// written as DEPTH into the z-buffer of particles_edge_color (full size, RGBA16F, created through
+// FrameBuilder with depth = true): edge pixels get a depth every fragment passes, the rest one
+// none passes; the particles are then drawn there with depth writes off, so the rasteriser drops
+// the non-edge fragments before shading (the quarter-res programs: HardLinearDepth's in-shader
+// test stands in for the full-res z-buffer test, soft and spherical are the full-res programs).
+// The composite takes edge pixels from that target and gives every other pixel plain bilinear,
+// which is what depth-aware gives a pixel whose footprint does not straddle an edge.
+// Why not the stencil of sceneColor's framebuffer: no host we run has one (engine_stub's
+// z-buffers are DEPTH24 or DEPTH32F, fx_host's too, the example host's DEPTH24), and the plugin
+// may neither add one nor write the host's z-buffer. The target of our own works on any host, with
+// no stencil state to save, at the cost of a full-size RGBA16F target + z-buffer and one more
+// texture fetch in the composite.
+//   Measured (tests/fx_host/MixedResTest.cpp, the scene above, standard and reversed-Z alike): on
+//   the 2552 edge-band pixels mean 1.04/255 -> 0.38/255, max 29 -> 13 (the rest of that band is
+//   not an edge by the footprint test and keeps the bilinear value); on the 376 pixels the redraw
+//   changed 4.76/255 -> 0.28/255, max 29 -> 2 (full res blends every particle into RGBA8, the
+//   redraw accumulates in RGBA16F and blends once); away from edges equal to depth-aware (max 0);
+//   whole frame 46.9 -> 48.0 dB.
+//   fxbench, one interleaved run per scenario (1280x1024, llvmpipe, reversed-Z; `fxbench --modes
+//   soft,soft+quarter,soft+mixed --size 1280x1024 --frames 12 --rounds 2 --error-frames 3
+//   [--scenario fill]`), frame p50 vs soft / particle fragments / vs soft: PSNR, max abs, edge %:
+//     standard  soft 154.4 ms, 6.76 M; quarter 0.78x, 3.23 M, 52.0 dB, 154, 0.14 %;
+//               mixed 1.09x, 4.38 M, 52.2 dB, 90, 0.03 %
+//     fill      soft 848.3 ms, 48.9 M; quarter 0.40x, 14.3 M, 48.1 dB, 163, 0.15 %;
+//               mixed 0.66x, 16.8 M, 48.2 dB, 84, 0.12 %
+//   On llvmpipe the edge pass is not cheap (49 ms standard, 211 ms fill): a CPU rasteriser has
+//   no hierarchical z, so each of the full-res particles' fragments is still rasterised and
+//   depth-rejected (about 28 of the 49 ms), and the mask is a full-res pass over the rect like
+//   the composite (about 21 ms). A GPU's early/hierarchical z rejects the masked fragments in
+//   blocks, where the redraw costs about the edge pixels' share. What mixed leaves: depth steps
+//   below kDepthThreshold (a wheel against the road a few per cent behind it) where the soft
+//   fade still changes within a half-res texel.
 #include <cstdint>
 #include <string>
 #include <vector>
