@@ -10,11 +10,19 @@
 // depth is closest. Smoke computed for a near surface then never smears onto a far one and vice
 // versa, and along an edge the result stays as smooth as bilinear. uBilinear = 1 keeps plain
 // bilinear (for comparison).
+//
+// Mixed resolution (uMixed = 1, QuarterResPath.h): the edge pixels (particles_mixed_edge.glsl,
+// the same threshold test) take the full-res redraw from uEdgeColor instead of any upsample;
+// every other pixel gets plain bilinear, which is what the depth-aware branch gives it too.
 uniform sampler2D uHalfColor;   // premultiplied RGBA16F, half x half
 uniform sampler2D uHalfDepth;   // R32F min depth per 2x2 block
 uniform sampler2D uSceneDepth;  // full-res R32F
 uniform int uBilinear;
 uniform float uDepthThreshold;  // relative: |low - full| > threshold * full is an edge
+uniform int uMixed;
+uniform sampler2D uEdgeColor;   // mixed: premultiplied RGBA16F, full size, the edge pixels' redraw
+
+#include "particles_mixed_edge.glsl"
 
 layout(location = 0) out vec4 oColor;
 
@@ -40,6 +48,16 @@ void main() {
     }
     if (uBilinear != 0) {
         oColor = bilinear;
+        return;
+    }
+    if (uMixed != 0) {
+        ivec2 edgeTaps[4];
+        float edgeWeights[4];
+        particlesFootprint(gl_FragCoord.xy, fullSize, textureSize(uHalfDepth, 0), edgeTaps, edgeWeights);
+        float pixelDepth = particlesFullDepth(uSceneDepth, gl_FragCoord.xy);
+        oColor = particlesIsEdge(uHalfDepth, edgeTaps, pixelDepth, uDepthThreshold)
+                     ? texelFetch(uEdgeColor, ivec2(gl_FragCoord.xy), 0)
+                     : bilinear;
         return;
     }
 

@@ -8,7 +8,7 @@ namespace fxbench {
 
 const std::vector<Mode>& allModes() {
     using fx::Technique;
-    // name, setup, effects, technique, prepassEqual, quarterRes, reference[, shape]
+    // name, setup, effects, technique, prepassEqual, quarterRes, reference[, shape, lit, edges]
     static const std::vector<Mode> modes = {
         {"nofx", "No particles (bare engine)", false, Technique::Hard, false, false, "nofx"},
         {"hard", "Hard particles", true, Technique::Hard, false, false, "hard"},
@@ -18,6 +18,9 @@ const std::vector<Mode>& allModes() {
         {"soft+equal", "Soft particles, utilize prepass z-buffer (EQUAL)", true, Technique::Soft, true, false,
          "soft"},
         {"soft+quarter", "Soft particles, 1/4-size texture", true, Technique::Soft, false, true, "soft"},
+        // Mixed resolution (issue 14): quarter res, the pixels on depth edges redrawn at full res.
+        {"soft+mixed", "Soft particles, 1/4-size texture, depth edges at full res", true, Technique::Soft, false,
+         true, "soft", fx::ParticleShape::Trimmed, false, fx::QuarterResEdges::MixedResolution},
         {"soft+equal+quarter", "Soft particles, prepass EQUAL + 1/4-size texture", true, Technique::Soft, true,
          true, "soft"},
         {"spherical", "Spherical billboards", true, Technique::Spherical, false, false, "spherical"},
@@ -88,6 +91,7 @@ void applyMode(cube::Game& game, const Mode& mode) {
     ro.bilinearUpsample = false;  // the depth-aware composite is the one under test
     plugin->setRenderOptions(ro);
     plugin->setParticleShape(mode.shape);
+    plugin->setQuarterResEdges(mode.edges);
     if (mode.lit) {
         game.specialFX().setSceneLight(game.sun());
     } else {

@@ -28,12 +28,15 @@ struct Mode {
     fx::ParticleShape shape = fx::ParticleShape::Trimmed;
     /// Lit smoke (the game's sun through Plugin::setSceneLight) or unlit (clearSceneLight).
     bool lit = false;
+    /// Quarter res only: depth-aware upsample, or the edge pixels redrawn at full res
+    /// (`soft+mixed`; Plugin::setQuarterResEdges).
+    fx::QuarterResEdges edges = fx::QuarterResEdges::DepthAware;
 };
 
 /// Every mode, in table order: nofx, hard, soft, soft-quads, soft+equal, soft+quarter,
-/// soft+equal+quarter, spherical, spherical-quads, spherical+quarter, hard-lit, soft-lit,
-/// spherical-lit, mega (image error against spherical: the same particles as exact spheres),
-/// mega-lit (against spherical-lit).
+/// soft+mixed (quarter res with the depth-edge pixels at full res), soft+equal+quarter, spherical,
+/// spherical-quads, spherical+quarter, hard-lit, soft-lit, spherical-lit, mega (image error
+/// against spherical: the same particles as exact spheres), mega-lit (against spherical-lit).
 const std::vector<Mode>& allModes();
 /// Null when `name` is not a mode.
 const Mode* findMode(const std::string& name);

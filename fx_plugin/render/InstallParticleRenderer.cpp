@@ -46,6 +46,7 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
             batches->push_back(ParticleBatch{&r.pool(), &r.desc(), r.needsSorting(), float(r.time())});
         }
         renderer->setParticleShape(owner->particleShape());
+        renderer->setQuarterResEdges(owner->quarterResEdges());
         renderer->setLight(owner->light());
         const int drawn = renderer->declarePasses(view, frame, batches->data(),
                                                   static_cast<int>(batches->size()), options);

@@ -327,12 +327,27 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     addPassReading(frame, QuarterResPath::kQuarterPass, {halfDepth, halfZ ? depth : Target{}, opacity}, halfColor,
                    quarterPass);
     const bool bilinear = options.bilinearUpsample;
-    frame.addPass(QuarterResPath::kCompositePass, {halfColor, halfDepth, depth}, {color},
-                  [this, record, color, halfColor, halfDepth, depth, bilinear](PassContext& ctx) {
-                      GlStateGuard guard;
-                      DebugGroup group(QuarterResPath::kCompositePass);
-                      quarter_->composite(ctx, color, halfColor, halfDepth, depth, bilinear, record->rect);
-                  });
+    // Mixed resolution: the edge pixels redrawn at full res (the full-res programs' linear-depth
+    // test: HardLinearDepth for hard), depth-tested against the mask beginEdges wrote.
+    Target edgeColor;
+    if (edges_ == QuarterResEdges::MixedResolution && quarter_->mixedOk() && !bilinear) {
+        edgeColor = frame.createTarget(QuarterResPath::kEdgeTarget, QuarterResPath::edgeTargetDesc());
+        addPassReading(frame, QuarterResPath::kEdgePass, {halfDepth, depth, opacity}, edgeColor,
+                       [this, record, edgeColor, halfDepth, depth, opacity](PassContext& ctx) {
+                           GlStateGuard guard;
+                           DebugGroup group(QuarterResPath::kEdgePass);
+                           quarter_->beginEdges(ctx, edgeColor, halfDepth, depth, record->rect, record->view);
+                           drawBatches(*record, ctx.texture(depth, 0).name, true, true,
+                                       opacity.valid() ? ctx.texture(opacity, 0).name : 0);
+                       });
+    }
+    addPassReading(frame, QuarterResPath::kCompositePass, {halfColor, halfDepth, depth, edgeColor}, color,
+                   [this, record, color, halfColor, halfDepth, depth, bilinear, edgeColor](PassContext& ctx) {
+                       GlStateGuard guard;
+                       DebugGroup group(QuarterResPath::kCompositePass);
+                       quarter_->composite(ctx, color, halfColor, halfDepth, depth, bilinear, record->rect,
+                                           edgeColor);
+                   });
     return drawn;
 }
 

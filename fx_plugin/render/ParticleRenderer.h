@@ -10,7 +10,8 @@
 //   quarter res: "particles_depth_downsample", "particles_quarter", "particles_composite"
 //                with targets "particles_half_depth" (R32F) and "particles_half_color"
 //                (RGBA16F), both half x half, created through FrameBuilder::createTarget
-//                (see QuarterResPath.h).
+//                (see QuarterResPath.h); mixed resolution adds "particles_edges" with the
+//                full-size target "particles_edge_color" (RGBA16F + its own z-buffer).
 //
 // GL: loaded by prepare() (Plugin::prepareGl), or else lazily by the first declarePasses() that
 // finds a visible particle (the host has a context current by then; a scene without smoke never
@@ -88,6 +89,9 @@ public:
 
     /// Trimmed polygons or full quads for billboards, from the next declarePasses on.
     void setParticleShape(ParticleShape shape) { shape_ = shape; }
+    /// Quarter res: depth-aware upsample everywhere, or mixed resolution (the edge pixels redrawn
+    /// at full res, QuarterResPath.h), from the next declarePasses on.
+    void setQuarterResEdges(QuarterResEdges edges) { edges_ = edges; }
 
     State state() const { return state_; }
     const std::string& shaderDir() const { return config_.shaderDir; }
@@ -114,7 +118,8 @@ private:
     void log(LogLevel level, const std::string& message) const;
     /// Draws every batch of `record` into the bound target. `sceneDepth` is the linear depth
     /// texture of that target's size (0 when no batch needs it).
-    /// `halfZ`: quarter res with the half-res z-buffer filled: z-test every batch (GEQUAL).
+    /// `halfZ`: the bound target's own z-buffer was filled (the half-res z-test, or the mixed-res
+    /// edge mask): z-test every batch (GEQUAL, LEQUAL under standard depth).
     void drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes, bool halfZ = false,
                      uint32_t opacity = 0);
     /// Sets the FX_LIT uniforms of `p` for `batch` (the program is in use).
@@ -127,6 +132,7 @@ private:
     ParticleRendererConfig config_;
     State state_ = State::Unloaded;
     ParticleShape shape_ = ParticleShape::Trimmed;
+    QuarterResEdges edges_ = QuarterResEdges::DepthAware;
     std::vector<glm::vec4> shapeTable_;  ///< atlas_.shapes().packed(), uploaded per draw
     bool quarterFallbackLogged_ = false;
     Diagnostics loadDiagnostics_;  ///< what went wrong while loading (prepare() hands them out)

@@ -100,7 +100,17 @@ TargetDesc QuarterResPath::colorTargetDesc(bool withDepth) {
     return d;
 }
 
+TargetDesc QuarterResPath::edgeTargetDesc() {
+    TargetDesc d;
+    d.depth = true;
+    d.scale = 1.0f;
+    d.format = TargetFormat::RGBA16F;
+    d.linearFilter = false;
+    return d;
+}
+
 QuarterResPath::~QuarterResPath() {
+    if (edgeMask_) glDeleteProgram(edgeMask_);
     if (halfZ_) glDeleteProgram(halfZ_);
     if (downsample_) glDeleteProgram(downsample_);
     if (composite_) glDeleteProgram(composite_);
@@ -137,6 +147,20 @@ void QuarterResPath::build(const std::string& shaderDir, std::vector<std::string
             sceneDepthLoc_ = glGetUniformLocation(composite_, "uSceneDepth");
             bilinearLoc_ = glGetUniformLocation(composite_, "uBilinear");
             thresholdLoc_ = glGetUniformLocation(composite_, "uDepthThreshold");
+            mixedLoc_ = glGetUniformLocation(composite_, "uMixed");
+            edgeColorLoc_ = glGetUniformLocation(composite_, "uEdgeColor");
+        } else {
+            errors->push_back(error);
+        }
+    }
+    if (!edgeMask_) {
+        edgeMask_ = buildProgram(shaderDir, "vs_particles_fullscreen.glsl", "fs_particles_edge_mask.glsl", "", &error);
+        if (edgeMask_) {
+            maskHalfDepthLoc_ = glGetUniformLocation(edgeMask_, "uHalfDepth");
+            maskSceneDepthLoc_ = glGetUniformLocation(edgeMask_, "uSceneDepth");
+            maskThresholdLoc_ = glGetUniformLocation(edgeMask_, "uDepthThreshold");
+            maskPassLoc_ = glGetUniformLocation(edgeMask_, "uPassDepth");
+            maskFailLoc_ = glGetUniformLocation(edgeMask_, "uFailDepth");
         } else {
             errors->push_back(error);
         }
@@ -196,8 +220,40 @@ bool QuarterResPath::beginQuarter(PassContext& ctx, Target halfColor, const Scre
     return true;
 }
 
+void QuarterResPath::beginEdges(PassContext& ctx, Target edgeColor, Target halfDepth, Target sceneDepth,
+                                const ScreenRect& rect, const ViewInfo& view) {
+    ctx.bindForDraw(edgeColor);
+    fullscreenState();
+    scissorTo(rect, 1, 0, ctx.width(edgeColor), ctx.height(edgeColor));
+    const GLfloat transparent[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearBufferfv(GL_COLOR, 0, transparent);
+    // The mask as depth: a fragment at window z in [0, 1] passes LEQUAL 1 (GEQUAL 0) and fails
+    // LEQUAL 0 (GEQUAL 1) unless it lies exactly on the near plane, where the particles' near
+    // fade has taken them to nothing anyway.
+    const bool reversed = view.depth == DepthConvention::ReversedZ;
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glUseProgram(edgeMask_);
+    bindTextureUnit(0, ctx.texture(halfDepth, 0).name);
+    bindTextureUnit(1, ctx.texture(sceneDepth, 0).name);
+    glUniform1i(maskHalfDepthLoc_, 0);
+    glUniform1i(maskSceneDepthLoc_, 1);
+    glUniform1f(maskThresholdLoc_, kDepthThreshold);
+    glUniform1f(maskPassLoc_, reversed ? 0.0f : 1.0f);
+    glUniform1f(maskFailLoc_, reversed ? 1.0f : 0.0f);
+    glBindVertexArray(emptyVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_FALSE);
+    glDepthFunc(reversed ? GL_GEQUAL : GL_LEQUAL);
+}
+
 void QuarterResPath::composite(PassContext& ctx, Target sceneColor, Target halfColor,
-                               Target halfDepth, Target sceneDepth, bool bilinear, const ScreenRect& rect) {
+                               Target halfDepth, Target sceneDepth, bool bilinear, const ScreenRect& rect,
+                               Target edgeColor) {
     ctx.bindForDraw(sceneColor);
     fullscreenState();
     scissorTo(rect, 1, 0, ctx.width(sceneColor), ctx.height(sceneColor));
@@ -213,6 +269,11 @@ void QuarterResPath::composite(PassContext& ctx, Target sceneColor, Target halfC
     glUniform1i(sceneDepthLoc_, 2);
     glUniform1i(bilinearLoc_, bilinear ? 1 : 0);
     glUniform1f(thresholdLoc_, kDepthThreshold);
+    glUniform1i(mixedLoc_, edgeColor.valid() ? 1 : 0);
+    glUniform1i(edgeColorLoc_, 3);
+    // Unit 3 is bound either way: a sampler uniform must never read a unit with a texture of
+    // another kind, and the guard restores units 0-3.
+    bindTextureUnit(3, edgeColor.valid() ? ctx.texture(edgeColor, 0).name : 0);
     glBindVertexArray(emptyVao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }

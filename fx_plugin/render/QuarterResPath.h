@@ -32,6 +32,46 @@
 //   whole frame PSNR: bilinear 32.3 dB, depth-aware 46.9 dB.
 //   End-to-end burnout frame (repo reactions, 1.5 s of wheelspin, smoke crossing no depth edge
 //   of its own): 43.9 dB with either upsample.
+//
+// Mixed resolution (Plugin::setQuarterResEdges(MixedResolution); GPU Gems 3 ch. 23, Cantlay,
+// "High-Speed, Off-Screen Particles"): the pixels the upsample cannot get right are redrawn at
+// full resolution. A fourth pass, between the quarter pass and the composite:
+//   particles_edges   reads half depth + sceneDepth (+ the opacity map)   writes particles_edge_color
+// Edge pixel: one whose bilinear footprint holds a low-res depth farther than kDepthThreshold *
+// depth from its own (particles_mixed_edge.glsl, the depth-aware test; included by the mask
+// shader and the composite, so both agree pixel for pixel), inside the screen rect. The mask is
+// written as DEPTH into the z-buffer of particles_edge_color (full size, RGBA16F, created through
+// FrameBuilder with depth = true): edge pixels get a depth every fragment passes, the rest one
+// none passes; the particles are then drawn there with depth writes off, so the rasteriser drops
+// the non-edge fragments before shading (the quarter-res programs: HardLinearDepth's in-shader
+// test stands in for the full-res z-buffer test, soft and spherical are the full-res programs).
+// The composite takes edge pixels from that target and gives every other pixel plain bilinear,
+// which is what depth-aware gives a pixel whose footprint does not straddle an edge.
+// Why not the stencil of sceneColor's framebuffer: no host we run has one (engine_stub's
+// z-buffers are DEPTH24 or DEPTH32F, fx_host's too, the example host's DEPTH24), and the plugin
+// may neither add one nor write the host's z-buffer. The target of our own works on any host, with
+// no stencil state to save, at the cost of a full-size RGBA16F target + z-buffer and one more
+// texture fetch in the composite.
+//   Measured (tests/fx_host/MixedResTest.cpp, the scene above, standard and reversed-Z alike): on
+//   the 2552 edge-band pixels mean 1.04/255 -> 0.38/255, max 29 -> 13 (the rest of that band is
+//   not an edge by the footprint test and keeps the bilinear value); on the 376 pixels the redraw
+//   changed 4.76/255 -> 0.28/255, max 29 -> 2 (full res blends every particle into RGBA8, the
+//   redraw accumulates in RGBA16F and blends once); away from edges equal to depth-aware (max 0);
+//   whole frame 46.9 -> 48.0 dB.
+//   fxbench, one interleaved run per scenario (1280x1024, llvmpipe, reversed-Z; `fxbench --modes
+//   soft,soft+quarter,soft+mixed --size 1280x1024 --frames 12 --rounds 2 --error-frames 3
+//   [--scenario fill]`), frame p50 vs soft / particle fragments / vs soft: PSNR, max abs, edge %:
+//     standard  soft 154.4 ms, 6.76 M; quarter 0.78x, 3.23 M, 52.0 dB, 154, 0.14 %;
+//               mixed 1.09x, 4.38 M, 52.2 dB, 90, 0.03 %
+//     fill      soft 848.3 ms, 48.9 M; quarter 0.40x, 14.3 M, 48.1 dB, 163, 0.15 %;
+//               mixed 0.66x, 16.8 M, 48.2 dB, 84, 0.12 %
+//   On llvmpipe the edge pass is not cheap (49 ms standard, 211 ms fill): a CPU rasteriser has
+//   no hierarchical z, so each of the full-res particles' fragments is still rasterised and
+//   depth-rejected (about 28 of the 49 ms), and the mask is a full-res pass over the rect like
+//   the composite (about 21 ms). A GPU's early/hierarchical z rejects the masked fragments in
+//   blocks, where the redraw costs about the edge pixels' share. What mixed leaves: depth steps
+//   below kDepthThreshold (a wheel against the road a few per cent behind it) where the soft
+//   fade still changes within a half-res texel.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -49,6 +89,9 @@ public:
     static constexpr const char* kDownsamplePass = "particles_depth_downsample";
     static constexpr const char* kQuarterPass = "particles_quarter";
     static constexpr const char* kCompositePass = "particles_composite";
+    /// Mixed resolution only: the full-res redraw of the edge pixels and its target.
+    static constexpr const char* kEdgeTarget = "particles_edge_color";
+    static constexpr const char* kEdgePass = "particles_edges";
     /// Relative depth difference above which a footprint counts as straddling an edge.
     static constexpr float kDepthThreshold = 0.1f;
 
@@ -57,6 +100,8 @@ public:
     /// Half size, RGBA16F, linear filtering; with its own z-buffer when `withDepth` (the
     /// half-res z-test, reversed-Z hosts only).
     static TargetDesc colorTargetDesc(bool withDepth = false);
+    /// Mixed resolution: full size, RGBA16F, nearest filtering, with its own z-buffer (the mask).
+    static TargetDesc edgeTargetDesc();
 
     QuarterResPath() = default;
     ~QuarterResPath();
@@ -68,6 +113,8 @@ public:
     bool ok() const { return downsample_ && composite_ && emptyVao_; }
     /// The half-res z-test's program built (without it the quarter pass is simply not z-tested).
     bool halfZOk() const { return halfZ_ != 0; }
+    /// The edge mask program built (without it mixed resolution falls back to depth-aware).
+    bool mixedOk() const { return edgeMask_ != 0; }
 
     /// The part of the view the particles can touch, in full-resolution pixels ([x0, x1) x
     /// [y0, y1), GL's bottom-up rows); `whole` when it is the whole view (a particle reaches the
@@ -93,8 +140,15 @@ public:
     /// half-res particles skip what is hidden behind all four pixels. True when that was done.
     bool beginQuarter(PassContext& ctx, Target halfColor, const ScreenRect& rect, Target sceneDepth = Target{},
                       const ViewInfo* zView = nullptr);
+    /// Mixed resolution: binds the full-res edge target, clears its colour (within the rect) to
+    /// transparent black and writes the edge mask into its z-buffer (fs_particles_edge_mask.glsl),
+    /// then leaves the depth test on without writes, in the view's convention (LEQUAL, GEQUAL
+    /// under reversed-Z), so particles drawn next pass it on edge pixels only.
+    void beginEdges(PassContext& ctx, Target edgeColor, Target halfDepth, Target sceneDepth, const ScreenRect& rect,
+                    const ViewInfo& view);
+    /// `edgeColor` valid: mixed resolution (edge pixels from it, the rest bilinear).
     void composite(PassContext& ctx, Target sceneColor, Target halfColor, Target halfDepth,
-                   Target sceneDepth, bool bilinear, const ScreenRect& rect);
+                   Target sceneDepth, bool bilinear, const ScreenRect& rect, Target edgeColor = Target{});
 
 private:
     uint32_t halfZ_ = 0;
@@ -104,7 +158,10 @@ private:
     uint32_t emptyVao_ = 0;
     int downsampleDepthLoc_ = -1;
     int halfColorLoc_ = -1, halfDepthLoc_ = -1, sceneDepthLoc_ = -1, bilinearLoc_ = -1,
-        thresholdLoc_ = -1;
+        thresholdLoc_ = -1, mixedLoc_ = -1, edgeColorLoc_ = -1;
+    uint32_t edgeMask_ = 0;
+    int maskHalfDepthLoc_ = -1, maskSceneDepthLoc_ = -1, maskThresholdLoc_ = -1, maskPassLoc_ = -1,
+        maskFailLoc_ = -1;
 };
 
 }  // namespace fx

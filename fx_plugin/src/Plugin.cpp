@@ -185,6 +185,16 @@ ErrorCode PluginImpl::setParticleShape(ParticleShape shape) {
     return ErrorCode::None;
 }
 
+ErrorCode PluginImpl::setQuarterResEdges(QuarterResEdges mode) {
+    const auto m = static_cast<uint8_t>(mode);
+    if (m > static_cast<uint8_t>(QuarterResEdges::MixedResolution)) {
+        return errors_.refuse(ErrorCode::InvalidValue, "setQuarterResEdges",
+                              "mode = " + std::to_string(m) + "; expected DepthAware or MixedResolution");
+    }
+    edges_ = mode;
+    return ErrorCode::None;
+}
+
 bool PluginImpl::prepareGl(Diagnostics* out) {
     return prepareHook_ ? prepareHook_(out) : true;
 }

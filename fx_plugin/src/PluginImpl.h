@@ -65,6 +65,8 @@ public:
     ErrorCode setSceneLight(const SceneLight& light) override;
     void clearSceneLight() override { light_ = LightState{}; }
     SmokeShadow declareShadowPasses(const ViewInfo& view, FrameBuilder& frame) override;
+    ErrorCode setQuarterResEdges(QuarterResEdges mode) override;
+    QuarterResEdges quarterResEdges() const override { return edges_; }
 
     /// The renderer's entry; pass an empty function to remove it.
     void setRenderHook(RenderHook hook) { renderHook_ = std::move(hook); }
@@ -107,6 +109,7 @@ private:
     int runtimeGeneration_ = 0;
     RenderOptions options_;
     ParticleShape shape_ = ParticleShape::Trimmed;
+    QuarterResEdges edges_ = QuarterResEdges::DepthAware;
     RenderHook renderHook_;
     PrepareHook prepareHook_;
     PrepareHook shaderReloadHook_;

@@ -61,6 +61,13 @@ struct RenderOptions {
 /// Since API 1.1.
 enum class ParticleShape : uint8_t { Trimmed = 0, Quad = 1 };
 
+/// How the quarter-res path (RenderOptions::quarterRes) treats the pixels along depth edges.
+/// DepthAware: every pixel from the half-res particles, depth-aware upsampled (the 1.1 look).
+/// MixedResolution: the pixels whose half-res footprint straddles a depth discontinuity are
+/// redrawn at full resolution (GPU Gems 3 ch. 23, Cantlay), so they match full-res rendering; the
+/// rest is upsampled as before. Since API 1.2.
+enum class QuarterResEdges : uint8_t { DepthAware = 0, MixedResolution = 1 };
+
 /// One key of the reaction file schema (reactions/README.md), as an editor needs it: enough to
 /// build a widget, clamp it to the range the loader enforces and explain it in a tooltip.
 /// Defaults: a number in [0, 0] with no unit, help or choices.
@@ -208,6 +215,18 @@ public:
         (void)frame;
         return SmokeShadow{};
     }
+
+    // ---- API 1.2: mixed-resolution particles ----
+
+    /// API 1.2: how quarter res treats depth edges (QuarterResEdges), from the next declarePasses
+    /// on; without quarter res it changes nothing. Default DepthAware. Refused (InvalidValue,
+    /// nothing changes) for a value outside the enum. Not pure, so an adapter written against 1.1
+    /// still compiles.
+    virtual ErrorCode setQuarterResEdges(QuarterResEdges mode) {
+        (void)mode;
+        return ErrorCode::InvalidValue;
+    }
+    virtual QuarterResEdges quarterResEdges() const { return QuarterResEdges::DepthAware; }
 };
 
 /// What the host hands the plugin at creation. Defaults: this header's API version, no host

@@ -1,0 +1,23 @@
+#version 330 core
+// Mixed-resolution particles, step 3a (QuarterResPath::beginEdges): the edge mask as depth in the
+// full-res edge target's own z-buffer. Edge pixels (particles_mixed_edge.glsl) get uPassDepth, a
+// value every particle fragment passes the redraw's depth test against (1 for LEQUAL, 0 for
+// GEQUAL under reversed-Z); the others uFailDepth, which none passes. The redraw then runs the
+// particle programs on edge pixels only: with depth writes off the rejection happens before the
+// fragment shader, so the cost follows the edge pixels, not the smoke's area. No colour is
+// written.
+uniform sampler2D uHalfDepth;   // R32F min depth per 2x2 block
+uniform sampler2D uSceneDepth;  // full-res R32F
+uniform float uDepthThreshold;
+uniform float uPassDepth;
+uniform float uFailDepth;
+
+#include "particles_mixed_edge.glsl"
+
+void main() {
+    ivec2 taps[4];
+    float weights[4];
+    particlesFootprint(gl_FragCoord.xy, textureSize(uSceneDepth, 0), textureSize(uHalfDepth, 0), taps, weights);
+    float full = particlesFullDepth(uSceneDepth, gl_FragCoord.xy);
+    gl_FragDepth = particlesIsEdge(uHalfDepth, taps, full, uDepthThreshold) ? uPassDepth : uFailDepth;
+}
