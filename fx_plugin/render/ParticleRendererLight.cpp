@@ -37,6 +37,7 @@ SmokeShadow ParticleRenderer::declareOpacityPass(FrameBuilder& frame, const Part
         GlStateGuard guard;
         if (FXGLAD_GL_KHR_debug) glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, SmokeOpacityMap::kPass);
         ctx.bindForDraw(target);
+        glActiveTexture(GL_TEXTURE0);  // the ramp upload binds on the active unit: a guarded one
         ramp_.upload();
         std::vector<float> rows(rampInputs_.size());
         for (size_t i = 0; i < rows.size(); ++i) rows[i] = ramp_.rowV(int(i));

@@ -84,6 +84,39 @@ TEST_F(GlStateTest, EveryPassRestoresTheHostState) {
     EXPECT_GT(plugin->stats().particlesDrawn, 0);
 }
 
+// Lit smoke (API 1.2): the opacity map's pass, the lit programs, and declareShadowPasses called
+// by the host itself, under a scrambled host state.
+TEST_F(GlStateTest, LitSmokeRestoresTheHostStateToo) {
+    ASSERT_EQ(plugin->setSceneLight(fx::SceneLight{}), fx::ErrorCode::None);
+    for (fx::Technique t : {fx::Technique::Hard, fx::Technique::Soft, fx::Technique::Spherical}) {
+        for (bool quarter : {false, true}) {
+            fx::RenderOptions o;
+            o.techniqueOverride = t;
+            o.quarterRes = quarter;
+            plugin->setRenderOptions(o);
+            const std::string label = std::to_string(int(t)) + (quarter ? " quarter" : " full");
+            std::string mismatches;
+            const Image dirtyImage = frame(true, &mismatches);
+            EXPECT_TRUE(mismatches.empty()) << label << ":\n" << mismatches;
+            EXPECT_TRUE(graph.ran("smoke_opacity")) << label;
+            const Image cleanImage = frame(false, &mismatches);
+            EXPECT_EQ(maxAbsDiff(dirtyImage, cleanImage), 0) << label << ": the picture depends on host state";
+        }
+    }
+    // The host's own call, before its ground pass.
+    std::string mismatches;
+    renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) {
+        applyDirtyHostState();
+        const GlStateSnapshot before = captureGlState();
+        const fx::SmokeShadow shadow = plugin->declareShadowPasses(view, f);
+        EXPECT_TRUE(shadow.valid());
+        plugin->declarePasses(view, f);
+        mismatches += before.diff(captureGlState());
+    });
+    EXPECT_TRUE(mismatches.empty()) << mismatches;
+    plugin->clearSceneLight();
+}
+
 // The snapshot catches a change (so the test above can fail).
 TEST_F(GlStateTest, SnapshotSeesAChangedValue) {
     applyDirtyHostState();
