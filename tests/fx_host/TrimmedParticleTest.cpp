@@ -140,6 +140,35 @@ protected:
         renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = direct.declare(view, f); });
         return graph.readColor();
     }
+    // A reversed-Z scene with a wall that hides some of 9 soft particles, viewed as a
+    // reversed-Z host (`tested`) and as a standard one (`untested`) with the same buffers.
+    struct WallScene {
+        TestScene scene;
+        fx::ViewInfo tested, untested;
+    };
+    WallScene wallScene(int w, int h) {
+        WallScene ws;
+        ws.scene.reversedZ = true;
+        ws.scene.quads = {TestScene::ground(60.0f, glm::vec3(0.2f, 0.22f, 0.2f)),
+                          TestScene::wallZ(-1.0f, -1.5f, 1.5f, 0.0f, 2.0f, glm::vec3(0.5f, 0.3f, 0.3f))};
+        ws.tested = makeView(glm::vec3(0.5f, 1.8f, 6), glm::vec3(0, 0.8f, -1), w, h);
+        useReversedZ(&ws.tested);
+        ws.untested = ws.tested;
+        ws.untested.depth = fx::DepthConvention::Standard;
+        std::vector<HandParticle> ps;
+        for (int i = 0; i < 9; ++i) {
+            HandParticle p;
+            p.position = glm::vec3(-2.0f + 0.5f * float(i), 0.3f + 0.15f * float(i % 3), -2.5f + 0.6f * float(i));
+            p.size = 1.4f + 0.2f * float(i % 4);
+            p.frame = i % 4;
+            p.rotation = 0.5f * float(i);
+            ps.push_back(p);
+        }
+        direct.set(ps);
+        direct.desc.render.softness = 0.5f;
+        return ws;
+    }
+
     TestHostAdapter host;
     DirectParticles direct{&host};
     int drawn = 0;
@@ -190,25 +219,10 @@ TEST_F(TrimmedImageTest, TrimmedShapesDrawTheQuadsImage) {
 TEST_F(TrimmedImageTest, DepthTestedSoftAndSphericalEqualUntested) {
     constexpr int kW = 200, kH = 150;
     TestFrameGraph graph(kW, kH, true);
-    TestScene scene;
-    scene.reversedZ = true;
-    scene.quads = {TestScene::ground(60.0f, glm::vec3(0.2f, 0.22f, 0.2f)),
-                   TestScene::wallZ(-1.0f, -1.5f, 1.5f, 0.0f, 2.0f, glm::vec3(0.5f, 0.3f, 0.3f))};
-    fx::ViewInfo tested = makeView(glm::vec3(0.5f, 1.8f, 6), glm::vec3(0, 0.8f, -1), kW, kH);
-    useReversedZ(&tested);
-    fx::ViewInfo untested = tested;
-    untested.depth = fx::DepthConvention::Standard;
-    std::vector<HandParticle> ps;
-    for (int i = 0; i < 9; ++i) {
-        HandParticle p;
-        p.position = glm::vec3(-2.0f + 0.5f * float(i), 0.3f + 0.15f * float(i % 3), -2.5f + 0.6f * float(i));
-        p.size = 1.4f + 0.2f * float(i % 4);
-        p.frame = i % 4;
-        p.rotation = 0.5f * float(i);
-        ps.push_back(p);
-    }
-    direct.set(ps);
-    direct.desc.render.softness = 0.5f;
+    WallScene w = wallScene(kW, kH);
+    TestScene& scene = w.scene;
+    const fx::ViewInfo& tested = w.tested;
+    const fx::ViewInfo& untested = w.untested;
     for (fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical}) {
         direct.options.techniqueOverride = t;
         const Image a = draw(graph, scene, tested);
@@ -257,25 +271,10 @@ namespace {
 TEST_F(TrimmedImageTest, HalfResZTestChangesNoPixel) {
     constexpr int kW = 200, kH = 150;
     TestFrameGraph graph(kW, kH, true);
-    TestScene scene;
-    scene.reversedZ = true;
-    scene.quads = {TestScene::ground(60.0f, glm::vec3(0.2f, 0.22f, 0.2f)),
-                   TestScene::wallZ(-1.0f, -1.5f, 1.5f, 0.0f, 2.0f, glm::vec3(0.5f, 0.3f, 0.3f))};
-    fx::ViewInfo tested = makeView(glm::vec3(0.5f, 1.8f, 6), glm::vec3(0, 0.8f, -1), kW, kH);
-    useReversedZ(&tested);
-    fx::ViewInfo untested = tested;
-    untested.depth = fx::DepthConvention::Standard;
-    std::vector<HandParticle> ps;
-    for (int i = 0; i < 9; ++i) {
-        HandParticle p;
-        p.position = glm::vec3(-2.0f + 0.5f * float(i), 0.3f + 0.15f * float(i % 3), -2.5f + 0.6f * float(i));
-        p.size = 1.4f + 0.2f * float(i % 4);
-        p.frame = i % 4;
-        p.rotation = 0.5f * float(i);
-        ps.push_back(p);
-    }
-    direct.set(ps);
-    direct.desc.render.softness = 0.5f;
+    WallScene w = wallScene(kW, kH);
+    TestScene& scene = w.scene;
+    const fx::ViewInfo& tested = w.tested;
+    const fx::ViewInfo& untested = w.untested;
     direct.options.quarterRes = true;
     for (fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical, fx::Technique::Hard}) {
         direct.options.techniqueOverride = t;
