@@ -58,14 +58,14 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
         const bool billboards = renderer->prepare(out);
         return wantsMega(*owner) ? mega->prepare(out) && billboards : billboards;
     });
-    plugin.setShadowHook([renderer, batches, owner](const ViewInfo&, FrameBuilder& frame,
+    plugin.setShadowHook([renderer, batches, owner](const ViewInfo& view, FrameBuilder& frame,
                                                     const std::vector<ReactionRuntime>& runtimes) {
         batches->clear();
         for (const ReactionRuntime& r : runtimes) {
             batches->push_back(ParticleBatch{&r.pool(), &r.desc(), r.needsSorting(), float(r.time())});
         }
         renderer->setLight(owner->light());
-        return renderer->declareShadowPasses(frame, batches->data(), static_cast<int>(batches->size()));
+        return renderer->declareShadowPasses(view, frame, batches->data(), static_cast<int>(batches->size()));
     });
     plugin.setShaderReloadHook([renderer](Diagnostics* out) { return renderer->reloadShaders(out); });
 }

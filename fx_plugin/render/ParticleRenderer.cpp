@@ -277,7 +277,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     // Lit smoke: the opacity map the host had declared for this frame, else one of our own.
     record->lit = light_.on;
     record->opacity = Target{};
-    if (light_.on && !shadow.valid()) shadow = declareOpacityPass(frame, batches, batchCount);
+    if (light_.on && !shadow.valid()) shadow = declareOpacityPass(view, frame, batches, batchCount);
     if (light_.on && shadow.valid()) {
         record->opacity = shadow.opacity;
         record->worldToShadow = shadow.worldToShadow;

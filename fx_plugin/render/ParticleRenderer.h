@@ -85,7 +85,8 @@ public:
     void setLight(const LightState& light) { light_ = light; }
     /// Plugin::declareShadowPasses: with the light on and shadow casters alive, declares the
     /// opacity map's pass and returns its target; the next declarePasses reuses it.
-    SmokeShadow declareShadowPasses(FrameBuilder& frame, const ParticleBatch* batches, int batchCount);
+    SmokeShadow declareShadowPasses(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
+                                    int batchCount);
 
     /// Trimmed polygons or full quads for billboards, from the next declarePasses on.
     void setParticleShape(ParticleShape shape) { shape_ = shape; }
@@ -126,7 +127,8 @@ private:
     void setLightUniforms(const ParticleProgram& p, const DrawBatch& batch, const ViewRecord& record,
                           uint32_t opacity) const;
     /// Loads the renderer if needed, records the casters and declares the opacity pass.
-    SmokeShadow declareOpacityPass(FrameBuilder& frame, const ParticleBatch* batches, int batchCount);
+    SmokeShadow declareOpacityPass(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
+                                   int batchCount);
     void setRampRows(const ParticleBatch* batches, int batchCount);
 
     ParticleRendererConfig config_;

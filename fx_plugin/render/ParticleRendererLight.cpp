@@ -12,22 +12,23 @@ namespace {
 constexpr int kOpacityUnit = 3;  // ParticleRenderer.cpp binds it
 }  // namespace
 
-SmokeShadow ParticleRenderer::declareShadowPasses(FrameBuilder& frame, const ParticleBatch* batches,
-                                                  int batchCount) {
+SmokeShadow ParticleRenderer::declareShadowPasses(const ViewInfo& view, FrameBuilder& frame,
+                                                  const ParticleBatch* batches, int batchCount) {
     pendingShadow_ = SmokeShadow{};
     if (state_ == State::Failed || !light_.on) return SmokeShadow{};
     setRampRows(batches, batchCount);
-    pendingShadow_ = declareOpacityPass(frame, batches, batchCount);
+    pendingShadow_ = declareOpacityPass(view, frame, batches, batchCount);
     return pendingShadow_;
 }
 
-SmokeShadow ParticleRenderer::declareOpacityPass(FrameBuilder& frame, const ParticleBatch* batches,
-                                                 int batchCount) {
+SmokeShadow ParticleRenderer::declareOpacityPass(const ViewInfo& view, FrameBuilder& frame,
+                                                 const ParticleBatch* batches, int batchCount) {
     // Nothing is loaded for a frame without shadow casters.
-    if (!opacity_->record(light_, batches, batchCount)) return SmokeShadow{};
+    const int size = SmokeOpacityMap::sizeFor(view.width, view.height);
+    if (!opacity_->record(light_, batches, batchCount, size)) return SmokeShadow{};
     if (!ensureLoaded() || !opacity_->ok()) return SmokeShadow{};
     TargetDesc desc;
-    desc.width = desc.height = SmokeOpacityMap::kSize;
+    desc.width = desc.height = size;
     desc.format = TargetFormat::RGBA16F;
     SmokeShadow shadow;
     shadow.opacity = frame.createTarget(SmokeOpacityMap::kTarget, desc);

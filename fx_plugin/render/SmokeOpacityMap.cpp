@@ -40,7 +40,14 @@ void SmokeOpacityMap::build(const std::string& shaderDir, std::vector<std::strin
     locNear_ = glGetUniformLocation(program_, "uNear");
 }
 
-bool SmokeOpacityMap::record(const LightState& light, const ParticleBatch* batches, int batchCount) {
+int SmokeOpacityMap::sizeFor(int viewWidth, int viewHeight) {
+    const int wanted = std::max(viewWidth, viewHeight) / 5;
+    int size = kMinSize;
+    while (size < kMaxSize && size * 2 <= wanted) size *= 2;
+    return size;
+}
+
+bool SmokeOpacityMap::record(const LightState& light, const ParticleBatch* batches, int batchCount, int size) {
     instances_.clear();
     ranges_.clear();
     if (!light.on) return false;
@@ -88,8 +95,9 @@ bool SmokeOpacityMap::record(const LightState& light, const ParticleBatch* batch
     // Square box, snapped (see the header): side up to a power of 2^(1/4) with a margin of a
     // few texels, centre on whole texels of a grid fixed in the world.
     const float extent = std::max(hi.x - lo.x, hi.y - lo.y);
-    side_ = quantizeUp(extent * (1.0f + 4.0f / float(kSize)) + 1e-3f);
-    const float texel = side_ / float(kSize);
+    const int texels = std::max(size, 1);
+    side_ = quantizeUp(extent * (1.0f + 4.0f / float(texels)) + 1e-3f);
+    const float texel = side_ / float(texels);
     const float uc = std::round(0.5f * (lo.x + hi.x) / texel) * texel;
     const float vc = std::round(0.5f * (lo.y + hi.y) / texel) * texel;
     // Depth: from the top of the casters down, a sixth more than their span below them, so

@@ -7,8 +7,8 @@
 // buffer and a light buffer once per slice: a pass pair per slice inside the particle draw,
 // which cannot share the soft, spherical and quarter-res passes this renderer already has and
 // multiplies their fixed costs. The opacity map is one extra draw of the shadow casters into
-// a 128 x 128 target, independent of the screen's size, that every technique samples once per
-// vertex, and the host samples the same texture to darken the ground under the cloud. (Smoke
+// a target of at most 128 x 128 (sizeFor: smaller for small views), independent of the
+// screen's size above that, that every technique samples once per vertex, and the host samples the same texture to darken the ground under the cloud. (Smoke
 // shadows are soft: 128 texels across a 10 m cloud are 8 cm; 256 cost four times the fill for
 // no visible difference.)
 // Four slices resolve a burnout cloud's near and far side; smoke within one slice shadows
@@ -33,7 +33,14 @@ class SmokeOpacityMap {
 public:
     static constexpr const char* kPass = "smoke_opacity";
     static constexpr const char* kTarget = "smoke_opacity";
-    static constexpr int kSize = 128;
+    static constexpr int kMaxSize = 128;
+    static constexpr int kMinSize = 32;
+    /// The map's side for a view: a fifth of its larger side, as a power of two in
+    /// [kMinSize, kMaxSize] (128 from 640 pixels up; a 160 x 128 mirror gets 32). A shadow finer
+    /// than the view can show costs fill for nothing: at 160 x 128 the 128^2 map cost more than
+    /// the lit particles themselves (cube_game, 1000 frames with the mirror: 32.5 s lit against
+    /// 19.1 s unlit before this).
+    static int sizeFor(int viewWidth, int viewHeight);
 
     SmokeOpacityMap() = default;
     ~SmokeOpacityMap();
@@ -47,14 +54,15 @@ public:
 
     /// Collects the shadow casters (lit, casts_shadow, not additive) of `batches` and fits the
     /// light's box to them. False when there is none (then no pass is needed). No GL.
-    bool record(const LightState& light, const ParticleBatch* batches, int batchCount);
+    /// `size`: the map's side (sizeFor), for snapping the box to its texels.
+    bool record(const LightState& light, const ParticleBatch* batches, int batchCount, int size = kMaxSize);
     /// World position -> (u, v, light depth, 1) of the last record(): what SmokeShadow hands out.
     const glm::mat4& worldToShadow() const { return worldToShadow_; }
     /// Side of the light's box in metres (for tests and the docs).
     float side() const { return side_; }
     int casterCount() const { return int(instances_.size()); }
 
-    /// Draws the recorded casters into the bound kSize x kSize RGBA16F target (cleared here).
+    /// Draws the recorded casters into the bound size x size RGBA16F target (cleared here).
     /// Inside a GlStateGuard; `atlas` and `ramp` are textures, `rampRows` the ramp's row v per
     /// batch index.
     void draw(uint32_t atlas, uint32_t ramp, const std::vector<float>& rampRows);
