@@ -8,21 +8,22 @@
 // sits on a depth edge: blend, with renormalised bilinear weights, only the texels on this
 // pixel's side (depth within the threshold), and when there is none take the single texel whose
 // depth is closest. Smoke computed for a near surface then never smears onto a far one and vice
-// versa, and along an edge the result stays as smooth as bilinear. uBilinear = 1 keeps plain
-// bilinear (for comparison).
+// versa, and along an edge the result stays as smooth as bilinear. FX_COMPOSITE_BILINEAR keeps
+// plain bilinear (for comparison).
 //
-// Mixed resolution (uMixed = 1, QuarterResPath.h): the edge pixels (particles_mixed_edge.glsl,
+// Mixed resolution (FX_COMPOSITE_MIXED, QuarterResPath.h): the edge pixels (particles_mixed_edge.glsl,
 // the same threshold test) take the full-res redraw from uEdgeColor instead of any upsample;
 // every other pixel gets plain bilinear, which is what the depth-aware branch gives it too.
+// Three builds (QuarterResPath::CompositeVariant), not uniform branches: a CPU rasteriser runs
+// both sides of a branch, so one program with all three paths paid for every path's fetches.
 uniform sampler2D uHalfColor;   // premultiplied RGBA16F, half x half
 uniform sampler2D uHalfDepth;   // R32F min depth per 2x2 block
 uniform sampler2D uSceneDepth;  // full-res R32F
-uniform int uBilinear;
 uniform float uDepthThreshold;  // relative: |low - full| > threshold * full is an edge
-uniform int uMixed;
-uniform sampler2D uEdgeColor;   // mixed: premultiplied RGBA16F, full size, the edge pixels' redraw
-
+#ifdef FX_COMPOSITE_MIXED
+uniform sampler2D uEdgeColor;   // premultiplied RGBA16F, full size, the edge pixels' redraw
 #include "particles_mixed_edge.glsl"
+#endif
 
 layout(location = 0) out vec4 oColor;
 
@@ -33,62 +34,43 @@ void main() {
     ivec2 base = ivec2(floor(lowPos));
     vec2 f = lowPos - vec2(base);
     ivec2 last = lowSize - 1;
-    ivec2 taps[4] = ivec2[4](clamp(base, ivec2(0), last), clamp(base + ivec2(1, 0), ivec2(0), last),
-                             clamp(base + ivec2(0, 1), ivec2(0), last), clamp(base + ivec2(1, 1), ivec2(0), last));
-    float weights[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+    ivec2 t0 = clamp(base, ivec2(0), last), t1 = clamp(base + ivec2(1, 0), ivec2(0), last);
+    ivec2 t2 = clamp(base + ivec2(0, 1), ivec2(0), last), t3 = clamp(base + ivec2(1, 1), ivec2(0), last);
+    float w0 = (1.0 - f.x) * (1.0 - f.y), w1 = f.x * (1.0 - f.y), w2 = (1.0 - f.x) * f.y, w3 = f.x * f.y;
 
     // (No early discard of smoke-free footprints: measured on llvmpipe it made the composite
-    // slower, a CPU rasteriser evaluating the rest anyway; the scissor to the particles' bound
-    // is what keeps smoke-free screen areas out.)
-    vec4 colour[4];
-    vec4 bilinear = vec4(0.0);
-    for (int i = 0; i < 4; ++i) {
-        colour[i] = texelFetch(uHalfColor, taps[i], 0);
-        bilinear += weights[i] * colour[i];
-    }
-    if (uBilinear != 0) {
-        oColor = bilinear;
-        return;
-    }
-    if (uMixed != 0) {
-        ivec2 edgeTaps[4];
-        float edgeWeights[4];
-        particlesFootprint(gl_FragCoord.xy, fullSize, textureSize(uHalfDepth, 0), edgeTaps, edgeWeights);
-        float pixelDepth = particlesFullDepth(uSceneDepth, gl_FragCoord.xy);
-        oColor = particlesIsEdge(uHalfDepth, edgeTaps, pixelDepth, uDepthThreshold)
-                     ? texelFetch(uEdgeColor, ivec2(gl_FragCoord.xy), 0)
-                     : bilinear;
-        return;
-    }
+    // slower, a CPU rasteriser evaluating the rest anyway; the tiles the composite is drawn on
+    // are what keep smoke-free screen areas out.)
+    vec4 c0 = texelFetch(uHalfColor, t0, 0), c1 = texelFetch(uHalfColor, t1, 0);
+    vec4 c2 = texelFetch(uHalfColor, t2, 0), c3 = texelFetch(uHalfColor, t3, 0);
+    vec4 bilinear = vec4(0.0) + w0 * c0 + w1 * c1 + w2 * c2 + w3 * c3;
 
+#if defined(FX_COMPOSITE_BILINEAR)
+    oColor = bilinear;
+#elif defined(FX_COMPOSITE_MIXED)
+    ivec2 taps[4] = ivec2[4](t0, t1, t2, t3);
+    float pixelDepth = particlesFullDepth(uSceneDepth, gl_FragCoord.xy);
+    oColor = particlesIsEdge(uHalfDepth, taps, pixelDepth, uDepthThreshold)
+                 ? texelFetch(uEdgeColor, ivec2(gl_FragCoord.xy), 0)
+                 : bilinear;
+#else
     // On an edge, keep the bilinear weights of the texels on this pixel's side of it (depth
-    // within the threshold), renormalised; only when none is, the single nearest-depth texel.
+    // within the threshold), renormalised; only when none is, the single nearest-depth texel
+    // (the first of equal ones).
     float full = texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r;
     if (full <= 0.0) full = 3.0e38;  // nothing drawn (fx/HostAdapter.h), as in the downsample
     float limit = uDepthThreshold * full;
-    float best = 3.4e38;
-    int nearest = 0;
-    vec4 matched = vec4(0.0);
-    float matchedWeight = 0.0;
-    bool edge = false;
-    for (int i = 0; i < 4; ++i) {
-        float diff = abs(texelFetch(uHalfDepth, taps[i], 0).r - full);
-        if (diff <= limit) {
-            matched += weights[i] * colour[i];
-            matchedWeight += weights[i];
-        } else {
-            edge = true;
-        }
-        if (diff < best) {
-            best = diff;
-            nearest = i;
-        }
-    }
-    if (!edge) {
-        oColor = bilinear;
-    } else if (matchedWeight > 1e-3) {
-        oColor = matched / matchedWeight;
-    } else {
-        oColor = colour[nearest];
-    }
+    vec4 diff = abs(vec4(texelFetch(uHalfDepth, t0, 0).r, texelFetch(uHalfDepth, t1, 0).r,
+                         texelFetch(uHalfDepth, t2, 0).r, texelFetch(uHalfDepth, t3, 0).r) - full);
+    bvec4 inside = lessThanEqual(diff, vec4(limit));
+    vec4 wIn = vec4(inside.x ? w0 : 0.0, inside.y ? w1 : 0.0, inside.z ? w2 : 0.0, inside.w ? w3 : 0.0);
+    vec4 matched = vec4(0.0) + wIn.x * c0 + wIn.y * c1 + wIn.z * c2 + wIn.w * c3;
+    float matchedWeight = 0.0 + wIn.x + wIn.y + wIn.z + wIn.w;
+    vec4 nearest = c0;
+    float best = diff.x;
+    if (diff.y < best) { best = diff.y; nearest = c1; }
+    if (diff.z < best) { best = diff.z; nearest = c2; }
+    if (diff.w < best) { best = diff.w; nearest = c3; }
+    oColor = all(inside) ? bilinear : (matchedWeight > 1e-3 ? matched / matchedWeight : nearest);
+#endif
 }

@@ -300,7 +300,12 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     }
 
     // Where the smoke can be: the quarter-res passes' fixed costs stay inside it.
-    record->rect = QuarterResPath::screenRect(view, record->list.instances.data(), record->list.particleCount());
+    bool spheres = false;
+    for (const DrawBatch& batch : record->list.batches) spheres = spheres || batch.technique == Technique::Spherical;
+    record->rect = QuarterResPath::screenRect(view, record->list.instances.data(), record->list.particleCount(),
+                                              &record->tiles,
+                                              spheres ? QuarterResPath::Footprint::Box
+                                                      : QuarterResPath::Footprint::Billboard);
     const Target depth = frame.sceneDepth();
     const Target halfDepth = frame.createTarget(QuarterResPath::kDepthTarget,
                                                 QuarterResPath::depthTargetDesc());
@@ -314,12 +319,12 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
                       if (!sizesAgree(ctx, record->view, depth, Target{})) return;
                       GlStateGuard guard;
                       DebugGroup group(QuarterResPath::kDownsamplePass);
-                      quarter_->downsampleDepth(ctx, depth, halfDepth, record->rect);
+                      quarter_->downsampleDepth(ctx, depth, halfDepth, record->rect, record->tiles);
                   });
     auto quarterPass = [this, record, halfDepth, halfColor, depth, halfZ, opacity](PassContext& ctx) {
         GlStateGuard guard;
         DebugGroup group(QuarterResPath::kQuarterPass);
-        const bool zTested = quarter_->beginQuarter(ctx, halfColor, record->rect, halfZ ? depth : Target{},
+        const bool zTested = quarter_->beginQuarter(ctx, halfColor, record->rect, record->tiles, halfZ ? depth : Target{},
                                                     halfZ ? &record->view : nullptr);
         drawBatches(*record, ctx.texture(halfDepth, 0).name, true, zTested,
                     opacity.valid() ? ctx.texture(opacity, 0).name : 0);
@@ -336,7 +341,8 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
                        [this, record, edgeColor, halfDepth, depth, opacity](PassContext& ctx) {
                            GlStateGuard guard;
                            DebugGroup group(QuarterResPath::kEdgePass);
-                           quarter_->beginEdges(ctx, edgeColor, halfDepth, depth, record->rect, record->view);
+                           quarter_->beginEdges(ctx, edgeColor, halfDepth, depth, record->rect, record->tiles,
+                                                record->view);
                            drawBatches(*record, ctx.texture(depth, 0).name, true, true,
                                        opacity.valid() ? ctx.texture(opacity, 0).name : 0);
                        });
@@ -346,7 +352,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
                        GlStateGuard guard;
                        DebugGroup group(QuarterResPath::kCompositePass);
                        quarter_->composite(ctx, color, halfColor, halfDepth, depth, bilinear, record->rect,
-                                           edgeColor);
+                                           record->tiles, edgeColor);
                    });
     return drawn;
 }

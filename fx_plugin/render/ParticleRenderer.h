@@ -105,6 +105,7 @@ private:
         DrawList list;
         ParticleShape shape = ParticleShape::Trimmed;
         QuarterResPath::ScreenRect rect;  ///< quarter res: where the particles can be
+        QuarterResPath::ScreenTiles tiles;  ///< quarter res: the same, as screen tiles
         bool lit = false;                 ///< the scene light is on
         Target opacity;                   ///< the opacity map of this frame (invalid: unshadowed)
         glm::mat4 worldToShadow{1.0f};

@@ -72,6 +72,21 @@
 //   blocks, where the redraw costs about the edge pixels' share. What mixed leaves: depth steps
 //   below kDepthThreshold (a wheel against the road a few per cent behind it) where the soft
 //   fade still changes within a half-res texel.
+//
+// Fixed costs (issue 14 item 5). The downsample, the half-res z-fill, the edge mask and the
+// composite are drawn on ScreenTiles (16 px tiles a particle's bound touches, as runs) instead
+// of one triangle over the rect, with billboards bounded by their view-plane square rather than
+// a cube; and the composite is three builds (depth-aware, bilinear, mixed) instead of one with
+// uniform branches, which llvmpipe ran all of (19 fetches a pixel instead of 9). Images are
+// bit-identical (golden hashes of every quarter-res frame unchanged). fxbench standard, 1280x1024,
+// llvmpipe, per-pass p50 (before: one run of the previous build; after: one run of this one):
+//   covered pixels   rect 920 k  ->  tiles 680 k  (of 1311 k; the smoke changes 24 % = 315 k)
+//   composite        22.1 ms -> 10.2 ms;  downsample 2.4 -> 1.9 ms
+//   soft + quarter frame / soft frame   0.78 -> 0.63;  fill scenario 0.42 -> 0.39
+// What remains is the half-res particle pass itself (32 ms against 82 ms at full res for a
+// quarter of the fragments): smaller triangles fill more partial 4x4 blocks, and blending into
+// RGBA16F is dearer than RGBA8 on a CPU rasteriser (RGBA8 measured 15 % faster, 52.0 -> 51.7 dB;
+// not taken, the 8-bit accumulation costs precision where many puffs overlap).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -110,7 +125,9 @@ public:
 
     /// Builds the downsample and composite programs; failures go to *errors.
     void build(const std::string& shaderDir, std::vector<std::string>* errors);
-    bool ok() const { return downsample_ && composite_ && emptyVao_; }
+    bool ok() const {
+        return downsample_ && composite_[0].program && composite_[1].program && composite_[2].program && tileVao_;
+    }
     /// The half-res z-test's program built (without it the quarter pass is simply not z-tested).
     bool halfZOk() const { return halfZ_ != 0; }
     /// The edge mask program built (without it mixed resolution falls back to depth-aware).
@@ -123,42 +140,79 @@ public:
         int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
         bool whole = true;
     };
-    /// Conservative bound of `instances` on screen: each particle's bounding sphere (radius
-    /// 0.71 size: a rotated billboard's corners; a spherical particle's sphere is smaller)
-    /// through its view-space box. Empty rect (x0 == x1) when none is in front of the camera.
-    static ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, int count);
+    /// Finer than the rect: the screen tiles (kTileSize pixels square) that some particle's bound,
+    /// grown by kTileBorder pixels, touches, as horizontal runs. The downsample, the half-res
+    /// z-fill, the edge mask and the composite draw these runs instead of one triangle over the
+    /// rect, so their per-pixel cost follows the smoke's footprint: in fxbench's standard scene
+    /// the rect spans about 70 % of the view while the smoke covers about 24 %.
+    /// The border: the composite's bilinear footprint reaches 2 pixels, the half-res texels it reads
+    /// hold depth from 2 more; 6 keeps every pixel whose result can differ from "no smoke" inside.
+    static constexpr int kTileSize = 16;
+    static constexpr int kTileBorder = 6;
+    struct ScreenTiles {
+        std::vector<float> vertices;  ///< x, y in full-resolution pixels, 6 per run (2 triangles)
+        std::vector<uint8_t> grid;    ///< scratch: tiles marked this frame (kept for its capacity)
+        int64_t pixels = 0;           ///< pixels the runs cover
+        int viewWidth = 0, viewHeight = 0;
+        int runs() const { return int(vertices.size() / 12); }
+    };
+    /// What a particle's footprint is bounded by. Box: the view-space cube of half-size 0.71 size
+    /// around its centre (holds a rotated billboard's corners and a sphere of diameter size,
+    /// which a spherical particle's quad at the sphere's front covers). Billboard: the square of
+    /// half-size 0.71 size in the view plane through the centre, exactly where vs_particles.glsl
+    /// puts a billboard's corners; much tighter for large particles near the camera.
+    enum class Footprint { Box, Billboard };
+    /// Conservative bound of `instances` on screen, each particle's footprint projected. Empty
+    /// rect (x0 == x1) when none is in front of the camera (one wholly behind the near plane is
+    /// clipped away and counts for nothing); the whole view when one straddles the near plane or
+    /// has a non-finite position or size. With `tiles`, also their tile runs (one run over the whole view for a
+    /// whole-view rect, none for an empty one); the vectors keep their capacity, so a steady
+    /// frame allocates nothing.
+    static ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, int count,
+                                 ScreenTiles* tiles = nullptr, Footprint footprint = Footprint::Box);
 
     // Pass bodies; each runs inside the caller's GlStateGuard and sets the state it needs. All
     // three work inside `rect` only (scissor): the half-res target is cleared, downsampled and
     // drawn there with a 2-texel border, the composite touches only the rect itself, so the
     // fixed costs follow the smoke's share of the screen instead of the screen.
-    void downsampleDepth(PassContext& ctx, Target sceneDepth, Target halfDepth, const ScreenRect& rect);
+    void downsampleDepth(PassContext& ctx, Target sceneDepth, Target halfDepth, const ScreenRect& rect,
+                         const ScreenTiles& tiles);
     /// Binds the half-res colour target and clears it (within the rect) to transparent black.
     /// With `zView` (a reversed-Z view; halfColor made with a z-buffer, sceneDepth readable):
     /// also fills that z-buffer with the farthest scene depth of each 2x2 block
     /// (fs_particles_half_z.glsl) and leaves the depth test on, GEQUAL without writes, so the
     /// half-res particles skip what is hidden behind all four pixels. True when that was done.
-    bool beginQuarter(PassContext& ctx, Target halfColor, const ScreenRect& rect, Target sceneDepth = Target{},
-                      const ViewInfo* zView = nullptr);
+    bool beginQuarter(PassContext& ctx, Target halfColor, const ScreenRect& rect, const ScreenTiles& tiles,
+                      Target sceneDepth = Target{}, const ViewInfo* zView = nullptr);
     /// Mixed resolution: binds the full-res edge target, clears its colour (within the rect) to
     /// transparent black and writes the edge mask into its z-buffer (fs_particles_edge_mask.glsl),
     /// then leaves the depth test on without writes, in the view's convention (LEQUAL, GEQUAL
     /// under reversed-Z), so particles drawn next pass it on edge pixels only.
     void beginEdges(PassContext& ctx, Target edgeColor, Target halfDepth, Target sceneDepth, const ScreenRect& rect,
-                    const ViewInfo& view);
+                    const ScreenTiles& tiles, const ViewInfo& view);
     /// `edgeColor` valid: mixed resolution (edge pixels from it, the rest bilinear).
     void composite(PassContext& ctx, Target sceneColor, Target halfColor, Target halfDepth,
-                   Target sceneDepth, bool bilinear, const ScreenRect& rect, Target edgeColor = Target{});
+                   Target sceneDepth, bool bilinear, const ScreenRect& rect, const ScreenTiles& tiles,
+                   Target edgeColor = Target{});
 
 private:
+    /// Draws `tiles`' runs with the bound program (its uViewSize at `viewSizeLoc`), the vertices
+    /// uploaded to this path's own stream buffer.
+    void drawTiles(int viewSizeLoc, const ScreenTiles& tiles);
+
     uint32_t halfZ_ = 0;
     int halfZDepthLoc_ = -1, halfZFromLinearLoc_ = -1, halfZFarLoc_ = -1;
     uint32_t downsample_ = 0;
-    uint32_t composite_ = 0;
-    uint32_t emptyVao_ = 0;
+    /// The composite's builds: depth-aware, plain bilinear, mixed resolution.
+    enum CompositeVariant { DepthAware, Bilinear, Mixed, CompositeVariantCount };
+    struct CompositeProgram {
+        uint32_t program = 0;
+        int halfColor = -1, halfDepth = -1, sceneDepth = -1, threshold = -1, edgeColor = -1, viewSize = -1;
+    };
+    CompositeProgram composite_[CompositeVariantCount];
+    uint32_t tileVao_ = 0, tileVbo_ = 0;
+    int downsampleViewLoc_ = -1, halfZViewLoc_ = -1, maskViewLoc_ = -1;
     int downsampleDepthLoc_ = -1;
-    int halfColorLoc_ = -1, halfDepthLoc_ = -1, sceneDepthLoc_ = -1, bilinearLoc_ = -1,
-        thresholdLoc_ = -1, mixedLoc_ = -1, edgeColorLoc_ = -1;
     uint32_t edgeMask_ = 0;
     int maskHalfDepthLoc_ = -1, maskSceneDepthLoc_ = -1, maskThresholdLoc_ = -1, maskPassLoc_ = -1,
         maskFailLoc_ = -1;

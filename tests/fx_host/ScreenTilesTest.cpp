@@ -1,0 +1,200 @@
+// QuarterResPath::screenRect's tile runs (the cover the quarter-res downsample, half-res z-fill,
+// edge mask and composite are drawn on): they must hold every pixel a particle can change plus
+// the upsample's reach, stay inside the view, never overlap, and leave smoke-free tiles out.
+// CPU only: no GL context.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "render/QuarterResPath.h"
+
+namespace fx {
+namespace {
+
+constexpr int kW = 320, kH = 240;
+
+ViewInfo testView() {
+    ViewInfo v;
+    v.width = kW;
+    v.height = kH;
+    v.nearPlane = 0.1f;
+    v.farPlane = 500.0f;
+    v.eye = glm::vec3(0.0f, 1.5f, 6.0f);
+    v.view = glm::lookAt(v.eye, glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    v.proj = glm::perspective(glm::radians(60.0f), float(kW) / float(kH), v.nearPlane, v.farPlane);
+    return v;
+}
+
+// The runs as a per-pixel count (0, 1, or more where runs overlap), from the vertex list: each
+// run is two triangles, the first one's corners (x0, y0), (x1, y0), (x1, y1).
+std::vector<int> rasterise(const QuarterResPath::ScreenTiles& tiles, bool* insideView) {
+    std::vector<int> count(size_t(kW * kH), 0);
+    *insideView = true;
+    for (int r = 0; r < tiles.runs(); ++r) {
+        const float* v = tiles.vertices.data() + r * 12;
+        const int x0 = int(v[0]), y0 = int(v[1]), x1 = int(v[4]), y1 = int(v[5]);
+        if (x0 < 0 || y0 < 0 || x1 > kW || y1 > kH || x0 >= x1 || y0 >= y1) *insideView = false;
+        for (int y = std::max(0, y0); y < std::min(kH, y1); ++y) {
+            for (int x = std::max(0, x0); x < std::min(kW, x1); ++x) ++count[size_t(y * kW + x)];
+        }
+    }
+    return count;
+}
+
+// A billboard's pixel bound, computed independently of the renderer: its four view-plane
+// corners at 0.71 size from the centre (vs_particles.glsl: a rotated unit square's corners lie
+// within 0.5 sqrt(2) size), projected.
+void billboardBound(const ViewInfo& view, const ParticleInstance& p, float* x0, float* y0, float* x1, float* y1) {
+    const glm::vec4 c = view.view * glm::vec4(p.x, p.y, p.z, 1.0f);
+    *x0 = *y0 = 1e30f;
+    *x1 = *y1 = -1e30f;
+    for (int k = 0; k < 4; ++k) {
+        const float r = 0.5f * std::sqrt(2.0f) * p.size;
+        const glm::vec4 q = c + glm::vec4(k & 1 ? r : -r, k & 2 ? r : -r, 0.0f, 0.0f);
+        const glm::vec4 clip = view.proj * q;
+        const float px = (clip.x / clip.w * 0.5f + 0.5f) * kW, py = (clip.y / clip.w * 0.5f + 0.5f) * kH;
+        *x0 = std::min(*x0, px);
+        *x1 = std::max(*x1, px);
+        *y0 = std::min(*y0, py);
+        *y1 = std::max(*y1, py);
+    }
+}
+
+TEST(ScreenTiles, EveryPixelNearAParticleIsCoveredOnceAndRunsStayInsideTheView) {
+    const ViewInfo view = testView();
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> across(-4.0f, 4.0f), up(0.0f, 3.0f), deep(-30.0f, 2.0f), size(0.05f, 2.5f);
+    for (int trial = 0; trial < 40; ++trial) {
+        std::vector<ParticleInstance> particles(1 + trial % 12);
+        for (ParticleInstance& p : particles) {
+            p.x = across(rng);
+            p.y = up(rng);
+            p.z = deep(rng);
+            p.size = size(rng);
+        }
+        QuarterResPath::ScreenTiles tiles;
+        const QuarterResPath::ScreenRect rect = QuarterResPath::screenRect(
+            view, particles.data(), int(particles.size()), &tiles, QuarterResPath::Footprint::Billboard);
+        if (rect.whole && tiles.runs() == 1) continue;  // one reached the near plane: checked below
+        bool insideView = false;
+        const std::vector<int> count = rasterise(tiles, &insideView);
+        ASSERT_TRUE(insideView) << "trial " << trial;
+        int64_t covered = 0;
+        for (int c : count) {
+            ASSERT_LE(c, 1) << "overlapping runs would composite a pixel twice, trial " << trial;
+            covered += c;
+        }
+        EXPECT_EQ(covered, tiles.pixels) << "trial " << trial;
+        // Every pixel within 4 px of a particle's bound is covered: the composite's bilinear
+        // footprint reaches 2 px, and the half-res texels it reads hold smoke from 2 px further.
+        for (const ParticleInstance& p : particles) {
+            float x0, y0, x1, y1;
+            billboardBound(view, p, &x0, &y0, &x1, &y1);
+            const float b = 4.0f;
+            for (int y = std::max(0, int(std::floor(y0 - b))); y < std::min(kH, int(std::ceil(y1 + b))); ++y) {
+                for (int x = std::max(0, int(std::floor(x0 - b))); x < std::min(kW, int(std::ceil(x1 + b))); ++x) {
+                    ASSERT_EQ(count[size_t(y * kW + x)], 1)
+                        << "pixel " << x << "," << y << " next to a particle is not covered, trial " << trial;
+                }
+            }
+        }
+    }
+}
+
+TEST(ScreenTiles, OneSmallParticleCoversOnlyItsOwnTiles) {
+    const ViewInfo view = testView();
+    ParticleInstance p;
+    p.x = 0.0f;
+    p.y = 1.0f;
+    p.z = 0.0f;
+    p.size = 0.3f;
+    QuarterResPath::ScreenTiles tiles;
+    QuarterResPath::screenRect(view, &p, 1, &tiles, QuarterResPath::Footprint::Billboard);
+    float x0, y0, x1, y1;
+    billboardBound(view, p, &x0, &y0, &x1, &y1);
+    // At most the bound grown by the border, rounded out to whole tiles on each side.
+    const float t = float(QuarterResPath::kTileSize), b = float(QuarterResPath::kTileBorder);
+    const float w = (std::ceil((x1 + b) / t) - std::floor((x0 - b) / t)) * t;
+    const float h = (std::ceil((y1 + b) / t) - std::floor((y0 - b) / t)) * t;
+    EXPECT_GT(tiles.pixels, 0);
+    EXPECT_LE(double(tiles.pixels), double(w) * h);
+    EXPECT_LT(double(tiles.pixels), 0.1 * kW * kH) << "a 0.3 m puff 6 m away covers a small part of the view";
+}
+
+TEST(ScreenTiles, BillboardBoundIsInsideTheBoxBound) {
+    const ViewInfo view = testView();
+    std::vector<ParticleInstance> particles(3);
+    particles[0].z = -2.0f, particles[0].size = 2.0f, particles[0].y = 1.0f;
+    particles[1].x = 2.0f, particles[1].z = -10.0f, particles[1].size = 1.0f;
+    particles[2].x = -3.0f, particles[2].y = 2.0f, particles[2].size = 0.5f;
+    QuarterResPath::ScreenTiles billboard, box;
+    QuarterResPath::screenRect(view, particles.data(), 3, &billboard, QuarterResPath::Footprint::Billboard);
+    QuarterResPath::screenRect(view, particles.data(), 3, &box, QuarterResPath::Footprint::Box);
+    bool inside = false;
+    const std::vector<int> a = rasterise(billboard, &inside), b = rasterise(box, &inside);
+    for (size_t i = 0; i < a.size(); ++i) ASSERT_LE(a[i], b[i]) << "pixel " << i;
+    EXPECT_LT(billboard.pixels, box.pixels) << "the 2 m puff 8 m away has depth the box counts";
+}
+
+TEST(ScreenTiles, NearPlaneGivesTheWholeViewAndNothingInFrontGivesNoRuns) {
+    const ViewInfo view = testView();
+    const glm::vec3 forward = glm::normalize(glm::vec3(0.0f, 1.0f, 0.0f) - view.eye);
+    auto at = [&](float distance, float size) {
+        ParticleInstance p;
+        const glm::vec3 c = view.eye + distance * forward;
+        p.x = c.x, p.y = c.y, p.z = c.z, p.size = size;
+        return p;
+    };
+    // A box 0.15 m ahead with half-size 0.355 m straddles the 0.1 m near plane: the whole view.
+    ParticleInstance straddling = at(0.15f, 0.5f);
+    QuarterResPath::ScreenTiles tiles;
+    QuarterResPath::ScreenRect rect =
+        QuarterResPath::screenRect(view, &straddling, 1, &tiles, QuarterResPath::Footprint::Box);
+    EXPECT_TRUE(rect.whole);
+    ASSERT_EQ(tiles.runs(), 1);
+    EXPECT_EQ(tiles.pixels, int64_t(kW) * kH);
+    // A non-finite position: no bound to trust, the whole view.
+    ParticleInstance broken = at(3.0f, 0.5f);
+    broken.y = std::nanf("");
+    rect = QuarterResPath::screenRect(view, &broken, 1, &tiles, QuarterResPath::Footprint::Billboard);
+    EXPECT_TRUE(rect.whole);
+    EXPECT_EQ(tiles.pixels, int64_t(kW) * kH);
+    // A billboard lies in one plane: 0.05 m ahead it is wholly clipped by the near plane, and one
+    // behind the eye is too. Neither touches the screen.
+    for (float distance : {0.05f, -5.0f}) {
+        ParticleInstance hidden = at(distance, 0.5f);
+        rect = QuarterResPath::screenRect(view, &hidden, 1, &tiles, QuarterResPath::Footprint::Billboard);
+        EXPECT_FALSE(rect.whole) << distance;
+        EXPECT_EQ(rect.x0, rect.x1) << distance;
+        EXPECT_EQ(tiles.runs(), 0) << distance;
+        EXPECT_EQ(tiles.pixels, 0) << distance;
+    }
+}
+
+TEST(ScreenTiles, ASteadyFrameReusesTheBuffers) {
+    const ViewInfo view = testView();
+    std::vector<ParticleInstance> particles(20);
+    for (int i = 0; i < 20; ++i) {
+        particles[size_t(i)].x = -3.0f + 0.3f * float(i);
+        particles[size_t(i)].y = 1.0f + 0.05f * float(i);
+        particles[size_t(i)].z = -float(i);
+        particles[size_t(i)].size = 0.4f;
+    }
+    QuarterResPath::ScreenTiles tiles;
+    QuarterResPath::screenRect(view, particles.data(), 20, &tiles, QuarterResPath::Footprint::Billboard);
+    const float* vertices = tiles.vertices.data();
+    const uint8_t* grid = tiles.grid.data();
+    const std::vector<float> first = tiles.vertices;
+    QuarterResPath::screenRect(view, particles.data(), 20, &tiles, QuarterResPath::Footprint::Billboard);
+    EXPECT_EQ(tiles.vertices, first);
+    EXPECT_EQ(tiles.vertices.data(), vertices) << "the second frame reallocated the vertices";
+    EXPECT_EQ(tiles.grid.data(), grid) << "the second frame reallocated the grid";
+}
+
+}  // namespace
+}  // namespace fx
