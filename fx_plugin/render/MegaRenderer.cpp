@@ -152,10 +152,8 @@ bool MegaRenderer::ensureLoaded() {
     if (state_ != State::Unloaded) return state_ == State::Ready;
     state_ = State::Failed;
     std::string error;
-    if (!config_.host || !loadPrivateGl(*config_.host, &error)) {
-        if (error.empty()) error = "no host to load GL entry points through";
+    if (!loadPrivateGlOrDiagnose(config_.host, &loadDiagnostics_, &error)) {
         log(LogLevel::Error, "fx: mega-particles disabled: " + error);
-        loadDiagnostics_.push_back(Diagnostic{ErrorCode::NoGlContext, "", 0, 0, "", error});
         return false;
     }
     GlStateGuard guard;

@@ -110,10 +110,8 @@ bool ParticleRenderer::ensureLoaded() {
     state_ = State::Failed;
     // The plugin's private GL table, filled through the host (never a global loader).
     std::string error;
-    if (!config_.host || !loadPrivateGl(*config_.host, &error)) {
-        if (error.empty()) error = "no host to load GL entry points through";
+    if (!loadPrivateGlOrDiagnose(config_.host, &loadDiagnostics_, &error)) {
         log(LogLevel::Error, "fx: particle renderer disabled: " + error);
-        loadDiagnostics_.push_back(Diagnostic{ErrorCode::NoGlContext, "", 0, 0, "", error});
         return false;
     }
 

@@ -48,6 +48,13 @@ bool loadPrivateGl(void* (*getProcAddress)(const char* name), std::string* error
     return finish(fxgladLoadGLUserPtr(throughFunction, reinterpret_cast<void*>(getProcAddress)), error);
 }
 
+bool loadPrivateGlOrDiagnose(HostAdapter* host, Diagnostics* diagnostics, std::string* error) {
+    if (host && loadPrivateGl(*host, error)) return true;
+    if (error->empty()) *error = "no host to load GL entry points through";
+    diagnostics->push_back(Diagnostic{ErrorCode::NoGlContext, "", 0, 0, "", *error});
+    return false;
+}
+
 bool privateGlLoaded() { return g_loaded; }
 
 }  // namespace fx

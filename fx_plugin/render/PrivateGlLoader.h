@@ -3,6 +3,8 @@
 // so a test that has its own glad can load the plugin's table too: the two gl.h never meet.
 #include <string>
 
+#include "fx/Diagnostic.h"
+
 namespace fx {
 
 class HostAdapter;
@@ -13,6 +15,10 @@ class HostAdapter;
 bool loadPrivateGl(HostAdapter& host, std::string* error);
 /// Same, from a plain proc-address function (tests and tools that have no HostAdapter).
 bool loadPrivateGl(void* (*getProcAddress)(const char* name), std::string* error);
+/// A renderer's first step (ParticleRenderer, MegaRenderer): the table through `host` (null: no
+/// host). On failure appends the NoGlContext diagnostic to *diagnostics and returns false with the
+/// reason in *error, for the renderer's own log line.
+bool loadPrivateGlOrDiagnose(HostAdapter* host, Diagnostics* diagnostics, std::string* error);
 /// True once a load succeeded.
 bool privateGlLoaded();
 
