@@ -9,47 +9,15 @@ namespace fxtest {
 namespace {
 
 constexpr int kWidth = 256, kHeight = 192;
-constexpr float kDt = 1.0f / 60.0f;
-
-class EndToEndTest : public FxHostTest {
+class EndToEndTest : public PluginHostTest {
 protected:
+    EndToEndTest() : PluginHostTest(kWidth, kHeight) {}
     void SetUp() override {
-        FxHostTest::SetUp();
-        fx::PluginImports imports;
-        imports.host = &host;
-        plugin = fxCreatePlugin(imports);
-        ASSERT_TRUE(plugin);
-        fx::Diagnostics diags;
-        ASSERT_TRUE(plugin->loadReactions(CUBE_SOURCE_DIR "/reactions", &diags))
-            << (diags.empty() ? std::string() : diags.front().str());
-        ASSERT_GE(plugin->reactionCount(), 1);
-        scene.quads = {TestScene::ground(60.0f, glm::vec3(0.18f, 0.18f, 0.2f)),
-                       TestScene::wallZ(-8.0f, -30.0f, 30.0f, 0.0f, 4.0f, glm::vec3(0.45f, 0.3f, 0.25f))};
-        view = makeView(glm::vec3(5.0f, 2.2f, 7.5f), glm::vec3(0.0f, 0.9f, 1.0f), kWidth, kHeight);
+        PluginHostTest::SetUp();
+        createPlugin(CUBE_SOURCE_DIR "/reactions");
+        scene.quads.push_back(
+            TestScene::wallZ(-8.0f, -30.0f, 30.0f, 0.0f, 4.0f, glm::vec3(0.45f, 0.3f, 0.25f)));
     }
-
-    void simulate(float slip, int steps) {
-        host.setRearSlip(slip);
-        for (int s = 0; s < steps; ++s) {
-            for (int r = 0; r < plugin->reactionCount(); ++r) {
-                float collision = 0.0f;
-                plugin->continueReaction(r, kDt, &collision);
-            }
-        }
-    }
-
-    Image render(bool withPlugin) {
-        renderFrame(graph, scene, view, [&](fx::FrameBuilder& frame) {
-            if (withPlugin) plugin->declarePasses(view, frame);
-        });
-        return graph.readColor();
-    }
-
-    TestHostAdapter host;
-    std::unique_ptr<fx::Plugin> plugin;
-    TestScene scene;
-    fx::ViewInfo view;
-    TestFrameGraph graph{kWidth, kHeight};
 };
 
 // Mean brightening (green channel, 0..1) over a window around pixel `c`.

@@ -95,6 +95,21 @@ double psnr(const Image& a, const Image& b, const std::vector<uint8_t>* mask = n
 /// Largest |a - b| over RGB channels, in 1/255 units.
 int maxAbsDiff(const Image& a, const Image& b);
 
+// ---- depth-edge error (EdgeScene.cpp): the quarter-res and mixed-res tests ---------------------
+
+/// |a - b| per channel times `gain`, opaque, for looking at.
+Image amplifiedDiff(const Image& a, const Image& b, int gain);
+/// Pixels within `radius` px (Chebyshev) of a depth discontinuity: neighbours whose linear depths
+/// (width x height, bottom row first) differ by more than 10 % of the nearer one.
+std::vector<uint8_t> depthEdgeMask(const std::vector<float>& depth, int width, int height, int radius);
+struct MaskError {
+    double mean = 0.0;  ///< mean |difference| per RGB channel, 1/255 units
+    int max = 0;
+    int pixels = 0;
+};
+/// |a - b| over the pixels `mask` selects.
+MaskError maskedError(const Image& a, const Image& b, const std::vector<uint8_t>& mask);
+
 // ---- frame graph (TestFrameGraph.cpp) --------------------------------------------------------
 
 /// The host's render-to-texture layer, as the plugin sees it through fx::FrameBuilder.
@@ -271,6 +286,16 @@ public:
     fx::ParticlePool pool;
 };
 
+/// The depth-edge scene (EdgeScene.cpp) of the quarter-res tests: bright soft puffs (softness 0.3 m) behind a wall
+/// whose top edge crosses them and a 6 cm pole in front, on a dark ground, seen from 8 m.
+struct EdgeScene {
+    TestScene scene;
+    std::vector<HandParticle> puffs;
+    fx::ViewInfo view;
+    float softness = 0.3f;
+};
+EdgeScene wallAndPoleScene(int width, int height, bool reversedZ);
+
 /// Base fixture: GL up, errors reset before and checked (0) after every test.
 /// GL comes up in the constructor, so fixture members may create GL objects.
 class FxHostTest : public ::testing::Test {
@@ -289,6 +314,30 @@ protected:
 private:
     bool glReady_ = false;
     std::string glError_;
+};
+
+/// Base fixture for tests that drive the plugin through its public entry point (PluginHostTest.cpp):
+/// SetUp creates `plugin` on `host`; createPlugin... loads the reactions; the end-to-end view
+/// (from (5, 2.2, 7.5) toward the rear wheels) over a ground-only `scene`.
+class PluginHostTest : public FxHostTest {
+protected:
+    static constexpr float kDt = 1.0f / 60.0f;
+    PluginHostTest(int width, int height) : graph(width, height), width_(width), height_(height) {}
+    /// Creates the plugin and loads `reactions` (a folder or file); asserts on failure.
+    void createPlugin(const std::string& reactions);
+    /// `steps` steps of kDt with the rear wheels slipping at `slip`.
+    void simulate(float slip, int steps);
+    /// One frame of `scene` from `view`, with the plugin's passes when `withPlugin`.
+    Image render(bool withPlugin = true);
+
+    TestHostAdapter host;
+    std::unique_ptr<fx::Plugin> plugin;
+    TestScene scene;
+    fx::ViewInfo view;
+    TestFrameGraph graph;
+
+private:
+    int width_, height_;
 };
 
 }  // namespace fxtest

@@ -16,35 +16,16 @@ namespace fxtest {
 namespace {
 
 constexpr int kWidth = 200, kHeight = 150;
-constexpr float kDt = 1.0f / 60.0f;
 
-class LightStabilityTest : public FxHostTest {
+class LightStabilityTest : public PluginHostTest {
 protected:
+    LightStabilityTest() : PluginHostTest(kWidth, kHeight) {}
     void SetUp() override {
-        FxHostTest::SetUp();
-        fx::PluginImports imports;
-        imports.host = &host;
-        plugin = fxCreatePlugin(imports);
-        ASSERT_TRUE(plugin);
-        fx::Diagnostics diags;
-        ASSERT_TRUE(plugin->loadReactions(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml", &diags));
-        scene.quads = {TestScene::ground(60.0f, glm::vec3(0.18f, 0.18f, 0.2f))};
-        view = makeView(glm::vec3(5.0f, 2.2f, 7.5f), glm::vec3(0.0f, 0.9f, 1.0f), kWidth, kHeight);
+        PluginHostTest::SetUp();
+        createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
         light.toSun = glm::vec3(-0.6f, 0.5f, -0.6f);  // low, behind and left of the smoke
     }
-    void step(int steps) {
-        host.setRearSlip(1.0f);
-        for (int s = 0; s < steps; ++s) {
-            for (int r = 0; r < plugin->reactionCount(); ++r) {
-                float collision = 0.0f;
-                plugin->continueReaction(r, kDt, &collision);
-            }
-        }
-    }
-    Image render() {
-        renderFrame(graph, scene, view, [&](fx::FrameBuilder& frame) { plugin->declarePasses(view, frame); });
-        return graph.readColor();
-    }
+    void step(int steps) { simulate(1.0f, steps); }
     // Mean |a - b| (0..255, RGB) over the pixels where either differs from `bare`.
     static double smokeChange(const Image& a, const Image& b, const Image& bare) {
         double sum = 0.0;
@@ -68,12 +49,7 @@ protected:
         return sum / (double(a.rgba.size()) * 0.75);
     }
 
-    TestHostAdapter host;
-    std::unique_ptr<fx::Plugin> plugin;
-    TestScene scene;
-    fx::ViewInfo view;
     fx::SceneLight light;
-    TestFrameGraph graph{kWidth, kHeight};
 };
 
 TEST_F(LightStabilityTest, AStillPausedFrameRepeatsExactly) {
