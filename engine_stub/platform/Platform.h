@@ -75,6 +75,12 @@ public:
     bool softwareRenderer() const;
 };
 
+/// Keeps memory the process frees for reuse instead of returning it to the kernel at once
+/// (glibc's mmap and trim thresholds). Platform::create calls it for a software renderer, whose
+/// per-frame driver allocations would otherwise be page-faulted in anew every frame. A no-op
+/// outside glibc.
+void retainFreedMemory();
+
 // Backend factories, one translation unit each (GL/osmesa.h, EGL and glad must not meet).
 std::unique_ptr<Platform> createOSMesaPlatform(const PlatformDesc& desc, std::string* error);
 std::unique_ptr<Platform> createEGLPlatform(const PlatformDesc& desc, std::string* error);
