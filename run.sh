@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 bash scripts/deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+bash scripts/configure.sh
 cmake --build build -j"$(nproc)"
 mkdir -p out
 ./build/bin/cube_game --frames 420 --fixed-dt 0.0166667 --seed 1 \
