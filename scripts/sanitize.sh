@@ -7,7 +7,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh
 build=build-asan
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCUBE_SANITIZE=ON -DCUBE_BENCH=OFF >/dev/null
+# -O1 as the AddressSanitizer documentation advises for reasonable speed (asserts stay on: Debug
+# has no NDEBUG), -g1 for file:line in reports at a fraction of full debug info's compile time.
+# Measured on the 470 tests: ctest 320 s at -O0 -g, 261 s at -O1 -g1.
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCUBE_SANITIZE=ON -DCUBE_BENCH=OFF \
+      "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" "-DCMAKE_C_FLAGS_DEBUG=-O1 -g1" >/dev/null
 cmake --build "$build" -j"$(nproc)"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
