@@ -329,6 +329,11 @@ protected:
     void simulate(float slip, int steps);
     /// One frame of `scene` from `view`, with the plugin's passes when `withPlugin`.
     Image render(bool withPlugin = true);
+    /// The GL-state tests' setting: the ground, a wall behind the smoke, the view from (4, 2, 7).
+    void useWallScene();
+    /// One frame from `v`; with `dirty` the host state is scrambled before declarePasses and
+    /// before every plugin pass, and each state the plugin left changed is appended to *mismatches.
+    Image renderChecked(const fx::ViewInfo& v, bool dirty, std::string* mismatches);
 
     TestHostAdapter host;
     std::unique_ptr<fx::Plugin> plugin;

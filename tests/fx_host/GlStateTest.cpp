@@ -11,48 +11,16 @@ namespace {
 
 constexpr int kW = 160, kH = 120;
 
-class GlStateTest : public FxHostTest {
+class GlStateTest : public PluginHostTest {
 protected:
+    GlStateTest() : PluginHostTest(kW, kH) {}
     void SetUp() override {
-        FxHostTest::SetUp();
-        fx::PluginImports imports;
-        imports.host = &host;
-        plugin = fxCreatePlugin(imports);
-        ASSERT_TRUE(plugin);
-        ASSERT_TRUE(plugin->loadReactions(CUBE_SOURCE_DIR "/reactions", nullptr));
-        host.setRearSlip(1.0f);
-        for (int s = 0; s < 60; ++s) {
-            for (int r = 0; r < plugin->reactionCount(); ++r) plugin->continueReaction(r, 1.0f / 60.0f, nullptr);
-        }
-        scene.quads = {TestScene::ground(40.0f, glm::vec3(0.2f)),
-                       TestScene::wallZ(-5.0f, -20.0f, 20.0f, 0.0f, 3.0f, glm::vec3(0.4f, 0.3f, 0.3f))};
+        PluginHostTest::SetUp();
+        createPlugin(CUBE_SOURCE_DIR "/reactions");
+        simulate(1.0f, 60);
+        useWallScene();
     }
-
-    // One frame; with `dirty`, the host state is scrambled before declarePasses and before every
-    // plugin pass, and compared after each.
-    Image frame(bool dirty, std::string* mismatches) {
-        graph.checkPluginState = dirty;
-        graph.beforePluginPass = dirty ? std::function<void()>(applyDirtyHostState) : nullptr;
-        renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) {
-            if (!dirty) {
-                plugin->declarePasses(view, f);
-                return;
-            }
-            applyDirtyHostState();
-            const GlStateSnapshot before = captureGlState();
-            plugin->declarePasses(view, f);
-            const std::string d = before.diff(captureGlState());
-            if (!d.empty()) *mismatches += "declarePasses: " + d + "\n";
-        });
-        for (const std::string& m : graph.stateMismatches()) *mismatches += m + "\n";
-        return graph.readColor();
-    }
-
-    TestHostAdapter host;
-    std::unique_ptr<fx::Plugin> plugin;
-    TestScene scene;
-    fx::ViewInfo view = makeView(glm::vec3(4.0f, 2.0f, 7.0f), glm::vec3(0.0f, 0.8f, 1.0f), kW, kH);
-    TestFrameGraph graph{kW, kH};
+    Image frame(bool dirty, std::string* mismatches) { return renderChecked(view, dirty, mismatches); }
 };
 
 TEST_F(GlStateTest, EveryPassRestoresTheHostState) {

@@ -218,39 +218,17 @@ TEST_F(MegaTest, TheHalfTowardTheSunIsBrighter) {
 
 // ---- the whole plugin ----------------------------------------------------------------------
 
-class MegaPluginTest : public FxHostTest {
+class MegaPluginTest : public PluginHostTest {
 protected:
     static constexpr int kW = 320, kH = 240;
+    MegaPluginTest() : PluginHostTest(kW, kH) {}
     void SetUp() override {
-        FxHostTest::SetUp();
-        fx::PluginImports imports;
-        imports.host = &host;
-        plugin = fxCreatePlugin(imports);
-        ASSERT_TRUE(plugin);
-        ASSERT_TRUE(plugin->loadReactions(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml", nullptr));
-        host.setRearSlip(1.0f);
-        for (int s = 0; s < 60; ++s) plugin->continueReaction(0, 1.0f / 60.0f, nullptr);
-        scene.quads = {TestScene::ground(40.0f, glm::vec3(0.2f)),
-                       TestScene::wallZ(-5.0f, -20.0f, 20.0f, 0.0f, 3.0f, glm::vec3(0.4f, 0.3f, 0.3f))};
+        PluginHostTest::SetUp();
+        createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
+        simulate(1.0f, 60);
+        useWallScene();
     }
-    void frame(const fx::ViewInfo& v, bool dirty, std::string* mismatches) {
-        graph.checkPluginState = dirty;
-        graph.beforePluginPass = dirty ? std::function<void()>(applyDirtyHostState) : nullptr;
-        renderFrame(graph, scene, v, [&](fx::FrameBuilder& f) {
-            if (dirty) applyDirtyHostState();
-            const GlStateSnapshot before = captureGlState();
-            plugin->declarePasses(v, f);
-            const std::string d = before.diff(captureGlState());
-            if (dirty && !d.empty()) *mismatches += "declarePasses: " + d + "\n";
-        });
-        for (const std::string& m : graph.stateMismatches()) *mismatches += m + "\n";
-    }
-
-    TestHostAdapter host;
-    std::unique_ptr<fx::Plugin> plugin;
-    TestScene scene;
-    fx::ViewInfo view = makeView(glm::vec3(4.0f, 2.0f, 7.0f), glm::vec3(0.0f, 0.8f, 1.0f), kW, kH);
-    TestFrameGraph graph{kW, kH};
+    void frame(const fx::ViewInfo& v, bool dirty, std::string* mismatches) { renderChecked(v, dirty, mismatches); }
 };
 
 TEST_F(MegaPluginTest, OverrideMegaIsAcceptedAndRoutesEveryBatchToMega) {

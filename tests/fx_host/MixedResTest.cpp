@@ -96,12 +96,17 @@ TEST_F(MixedResTest, EdgePixelsMatchFullResAndTheRestMatchesDepthAware) {
 // The switch through the plugin: default DepthAware, a bad value refused with nothing changed,
 // the edge pass only with quarter res and MixedResolution, and every plugin pass leaves the
 // host's GL state as it found it.
-TEST_F(MixedResTest, SwitchIsRefusedForABadValueAndThePassesRestoreTheHostState) {
-    TestHostAdapter host;
-    fx::PluginImports imports;
-    imports.host = &host;
-    std::unique_ptr<fx::Plugin> plugin = fxCreatePlugin(imports);
-    ASSERT_TRUE(plugin);
+class MixedResPluginTest : public PluginHostTest {
+protected:
+    MixedResPluginTest() : PluginHostTest(160, 120) {}
+    void SetUp() override {
+        PluginHostTest::SetUp();
+        createPlugin(CUBE_SOURCE_DIR "/reactions");
+    }
+    Image frame(bool dirty, std::string* mismatches) { return renderChecked(view, dirty, mismatches); }
+};
+
+TEST_F(MixedResPluginTest, SwitchIsRefusedForABadValueAndThePassesRestoreTheHostState) {
     EXPECT_EQ(plugin->quarterResEdges(), fx::QuarterResEdges::DepthAware);
     EXPECT_EQ(plugin->setQuarterResEdges(static_cast<fx::QuarterResEdges>(2)), fx::ErrorCode::InvalidValue);
     EXPECT_EQ(plugin->quarterResEdges(), fx::QuarterResEdges::DepthAware);
@@ -112,29 +117,8 @@ TEST_F(MixedResTest, SwitchIsRefusedForABadValueAndThePassesRestoreTheHostState)
     EXPECT_EQ(plugin->setQuarterResEdges(static_cast<fx::QuarterResEdges>(255)), fx::ErrorCode::InvalidValue);
     EXPECT_EQ(plugin->quarterResEdges(), fx::QuarterResEdges::MixedResolution);
 
-    ASSERT_TRUE(plugin->loadReactions(CUBE_SOURCE_DIR "/reactions", nullptr));
-    host.setRearSlip(1.0f);
-    for (int s = 0; s < 60; ++s) {
-        for (int r = 0; r < plugin->reactionCount(); ++r) plugin->continueReaction(r, 1.0f / 60.0f, nullptr);
-    }
-    TestScene scene;
-    scene.quads = {TestScene::ground(40.0f, glm::vec3(0.2f)),
-                   TestScene::wallZ(-5.0f, -20.0f, 20.0f, 0.0f, 3.0f, glm::vec3(0.4f, 0.3f, 0.3f))};
-    const fx::ViewInfo view = makeView(glm::vec3(4.0f, 2.0f, 7.0f), glm::vec3(0.0f, 0.8f, 1.0f), 160, 120);
-    TestFrameGraph graph(160, 120);
-    auto frame = [&](bool dirty, std::string* mismatches) {
-        graph.checkPluginState = dirty;
-        graph.beforePluginPass = dirty ? std::function<void()>(applyDirtyHostState) : nullptr;
-        renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) {
-            if (dirty) applyDirtyHostState();
-            const GlStateSnapshot before = captureGlState();
-            plugin->declarePasses(view, f);
-            const std::string d = before.diff(captureGlState());
-            if (!d.empty()) *mismatches += "declarePasses: " + d + "\n";
-        });
-        for (const std::string& m : graph.stateMismatches()) *mismatches += m + "\n";
-        return graph.readColor();
-    };
+    simulate(1.0f, 60);
+    useWallScene();
     for (const fx::Technique t : {fx::Technique::Hard, fx::Technique::Soft, fx::Technique::Spherical}) {
         fx::RenderOptions o;
         o.techniqueOverride = t;

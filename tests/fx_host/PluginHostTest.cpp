@@ -33,4 +33,28 @@ Image PluginHostTest::render(bool withPlugin) {
     return graph.readColor();
 }
 
+void PluginHostTest::useWallScene() {
+    scene.quads = {TestScene::ground(40.0f, glm::vec3(0.2f)),
+                   TestScene::wallZ(-5.0f, -20.0f, 20.0f, 0.0f, 3.0f, glm::vec3(0.4f, 0.3f, 0.3f))};
+    view = makeView(glm::vec3(4.0f, 2.0f, 7.0f), glm::vec3(0.0f, 0.8f, 1.0f), width_, height_);
+}
+
+Image PluginHostTest::renderChecked(const fx::ViewInfo& v, bool dirty, std::string* mismatches) {
+    graph.checkPluginState = dirty;
+    graph.beforePluginPass = dirty ? std::function<void()>(applyDirtyHostState) : nullptr;
+    renderFrame(graph, scene, v, [&](fx::FrameBuilder& f) {
+        if (!dirty) {
+            plugin->declarePasses(v, f);
+            return;
+        }
+        applyDirtyHostState();
+        const GlStateSnapshot before = captureGlState();
+        plugin->declarePasses(v, f);
+        const std::string d = before.diff(captureGlState());
+        if (!d.empty()) *mismatches += "declarePasses: " + d + "\n";
+    });
+    for (const std::string& m : graph.stateMismatches()) *mismatches += m + "\n";
+    return graph.readColor();
+}
+
 }  // namespace fxtest
