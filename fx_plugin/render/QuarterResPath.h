@@ -172,9 +172,9 @@ public:
                                  ScreenTiles* tiles = nullptr, Footprint footprint = Footprint::Box);
 
     // Pass bodies; each runs inside the caller's GlStateGuard and sets the state it needs. All
-    // three work inside `rect` only (scissor): the half-res target is cleared, downsampled and
-    // drawn there with a 2-texel border, the composite touches only the rect itself, so the
-    // fixed costs follow the smoke's share of the screen instead of the screen.
+    // work inside `rect` only (scissor, with a 2-texel border at half resolution): the clears
+    // cover the rect, the full-screen work (downsample, half-res z-fill, edge mask, composite)
+    // only `tiles`, so the fixed costs follow the smoke's footprint instead of the screen.
     void downsampleDepth(PassContext& ctx, Target sceneDepth, Target halfDepth, const ScreenRect& rect,
                          const ScreenTiles& tiles);
     /// Binds the half-res colour target and clears it (within the rect) to transparent black.
