@@ -39,10 +39,6 @@ void scissorTo(const QuarterResPath::ScreenRect& rect, int divisor, int border, 
     glScissor(x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0));
 }
 
-}  // namespace
-
-namespace {
-
 // NDC to pixels.
 float toPixel(float ndc, int size) { return (ndc * 0.5f + 0.5f) * float(size); }
 
@@ -90,7 +86,8 @@ QuarterResPath::ScreenRect QuarterResPath::screenRect(const ViewInfo& view, cons
         if (c.z - depthExtent >= -view.nearPlane) continue;      // wholly behind the near plane: clipped
         if (c.z + depthExtent >= -view.nearPlane) return wholeView();  // reaches the near plane
         float plo[2] = {1e30f, 1e30f}, phi[2] = {-1e30f, -1e30f};
-        for (int corner = 0; corner < 8; ++corner) {
+        const int corners = depthExtent > 0.0f ? 8 : 4;  // a flat square has 4
+        for (int corner = 0; corner < corners; ++corner) {
             const glm::vec3 q = c + glm::vec3(corner & 1 ? radius : -radius, corner & 2 ? radius : -radius,
                                               corner & 4 ? depthExtent : -depthExtent);
             const glm::vec4 clip = view.proj * glm::vec4(q, 1.0f);
