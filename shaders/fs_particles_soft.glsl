@@ -12,6 +12,9 @@ flat in vec4 vRamp;
 flat in float vFade;
 flat in float vFrame;
 flat in float vRotation;
+#ifdef FX_CLASSIFY
+flat in float vInFront;
+#endif
 #ifdef FX_LIT
 in vec3 vSunLight;
 in float vPhase;
@@ -22,8 +25,15 @@ layout(location = 0) out vec4 oColor;
 void main() {
     vec4 texel = texture(uAtlas, atlasUV(vLocal, vFrame)) * insideFrame(vLocal);
     float depth = -vViewPos.z;
-    float coverage = texel.a * softFade(sceneDepthAt(gl_FragCoord.xy), depth) *
-                     nearFadeFactor(depth);
+#ifdef FX_CLASSIFY
+    // In front of the scene by more than the softness in every tile it covers: the fade is 1
+    // (particles_classify.glsl), and the scene depth is not read.
+    float fade = 1.0;
+    if (vInFront == 0.0) fade = softFade(sceneDepthAt(gl_FragCoord.xy), depth);
+#else
+    float fade = softFade(sceneDepthAt(gl_FragCoord.xy), depth);
+#endif
+    float coverage = texel.a * fade * nearFadeFactor(depth);
 #ifdef FX_LIT
     texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vRotation), texel.a, vSunLight, vPhase);
 #endif

@@ -19,6 +19,9 @@ flat in float vFade;
 flat in float vFrame;
 flat in vec4 vSphere;
 flat in float vRotation;
+#ifdef FX_CLASSIFY
+flat in float vInFront;
+#endif
 #ifdef FX_LIT
 in vec3 vSunLight;
 in float vPhase;
@@ -41,7 +44,14 @@ void main() {
 
     float halfChord = sqrt(r * r - d2);
     float tNear = uNear / depthPerMetre;
+#ifdef FX_CLASSIFY
+    // Wholly in front of the scene in its tiles (particles_classify.glsl): the chord's exit is
+    // never clipped, and the scene depth is not read.
+    float tScene = 3.0e38;
+    if (vInFront == 0.0) tScene = sceneDepthAt(gl_FragCoord.xy) / depthPerMetre;
+#else
     float tScene = sceneDepthAt(gl_FragCoord.xy) / depthPerMetre;
+#endif
     float t0 = max(tMid - halfChord, tNear);
     float t1 = min(tMid + halfChord, tScene);
     float visible = clamp((t1 - t0) / (2.0 * halfChord), 0.0, 1.0);

@@ -20,6 +20,13 @@
 // pixel, and a host z-buffer test against it is conservative: a fragment whose sphere front is
 // behind the scene sees no chord, so nothing visible is ever rejected.
 #include "particles_common.glsl"
+#ifdef FX_CLASSIFY
+// Soft and spherical programs built with classification (particles_classify.glsl): a particle
+// hidden behind the scene in all its tiles is moved outside the clip volume (nothing is
+// rasterised); one in front of it by more than its softness tells the fragment shader to skip the
+// scene depth (vInFront 1).
+#include "particles_classify.glsl"
+#endif
 
 layout(location = 0) in vec2 aCorner;            // (+-1, +-1), triangle strip order
 layout(location = 1) in vec4 aPosSize;           // centre (world, m), size (m)
@@ -38,6 +45,9 @@ flat out float vFade;    // life fade
 flat out float vFrame;   // atlas frame
 flat out vec4 vSphere;   // spherical: view-space centre, radius
 flat out float vRotation;
+#ifdef FX_CLASSIFY
+flat out float vInFront; // 1: the fade is exactly 1 over the whole particle (no depth fetch)
+#endif
 #ifdef FX_LIT
 out vec3 vSunLight;      // sun colour x transmittance through the smoke toward the sun
 out float vPhase;        // Henyey-Greenstein x 4 pi toward the eye
@@ -137,4 +147,13 @@ void main() {
     vPhase = phaseHG(lightAt);
 #endif
     gl_Position = uProj * vec4(viewPos, 1.0);
+#ifdef FX_CLASSIFY
+#ifdef FX_SPHERICAL
+    int fadeKind = fadeClass(centre, radius, true, uSoftScale);
+#else
+    int fadeKind = fadeClass((uView * vec4(aPosSize.xyz, 1.0)).xyz, radius, false, uSoftScale);
+#endif
+    vInFront = fadeKind == kInFront ? 1.0 : 0.0;
+    if (fadeKind == kHidden) gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // every vertex outside: clipped
+#endif
 }

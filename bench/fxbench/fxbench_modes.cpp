@@ -8,13 +8,17 @@ namespace fxbench {
 
 const std::vector<Mode>& allModes() {
     using fx::Technique;
-    // name, setup, effects, technique, prepassEqual, quarterRes, reference[, shape, lit, edges]
+    // name, setup, effects, technique, prepassEqual, quarterRes, reference[, shape, lit, edges, classify]
     static const std::vector<Mode> modes = {
         {"nofx", "No particles (bare engine)", false, Technique::Hard, false, false, "nofx"},
         {"hard", "Hard particles", true, Technique::Hard, false, false, "hard"},
         {"soft", "Soft particles, no optimizations", true, Technique::Soft, false, false, "soft"},
         {"soft-quads", "Soft particles drawn as full quads (untrimmed)", true, Technique::Soft, false, false, "soft",
          fx::ParticleShape::Quad},
+        // Fade classification (issue 14 item 4): the same image, tile depth ranges decide per
+        // particle whether the fade is needed.
+        {"soft+classify", "Soft particles, fades classified by tile depth", true, Technique::Soft, false, false,
+         "soft", fx::ParticleShape::Trimmed, false, fx::QuarterResEdges::DepthAware, fx::FadeClassification::On},
         {"soft+equal", "Soft particles, utilize prepass z-buffer (EQUAL)", true, Technique::Soft, true, false,
          "soft"},
         {"soft+quarter", "Soft particles, 1/4-size texture", true, Technique::Soft, false, true, "soft"},
@@ -26,6 +30,9 @@ const std::vector<Mode>& allModes() {
         {"spherical", "Spherical billboards", true, Technique::Spherical, false, false, "spherical"},
         {"spherical-quads", "Spherical billboards drawn as full quads (untrimmed)", true, Technique::Spherical, false,
          false, "spherical", fx::ParticleShape::Quad},
+        {"spherical+classify", "Spherical billboards, fades classified by tile depth", true, Technique::Spherical,
+         false, false, "spherical", fx::ParticleShape::Trimmed, false, fx::QuarterResEdges::DepthAware,
+         fx::FadeClassification::On},
         {"spherical+quarter", "Spherical billboards, 1/4-size texture", true, Technique::Spherical, false, true,
          "spherical"},
         // Lit smoke (issue 16): normals, sun, scattering and the opacity map; each its own
@@ -92,6 +99,7 @@ void applyMode(cube::Game& game, const Mode& mode) {
     plugin->setRenderOptions(ro);
     plugin->setParticleShape(mode.shape);
     plugin->setQuarterResEdges(mode.edges);
+    plugin->setFadeClassification(mode.classify);
     if (mode.lit) {
         game.specialFX().setSceneLight(game.sun());
     } else {

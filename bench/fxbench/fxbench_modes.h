@@ -31,11 +31,13 @@ struct Mode {
     /// Quarter res only: depth-aware upsample, or the edge pixels redrawn at full res
     /// (`soft+mixed`; Plugin::setQuarterResEdges).
     fx::QuarterResEdges edges = fx::QuarterResEdges::DepthAware;
+    /// Fade classification (Plugin::setFadeClassification; `soft+classify`, `spherical+classify`).
+    fx::FadeClassification classify = fx::FadeClassification::Off;
 };
 
-/// Every mode, in table order: nofx, hard, soft, soft-quads, soft+equal, soft+quarter,
+/// Every mode, in table order: nofx, hard, soft, soft-quads, soft+classify, soft+equal, soft+quarter,
 /// soft+mixed (quarter res with the depth-edge pixels at full res), soft+equal+quarter, spherical,
-/// spherical-quads, spherical+quarter, hard-lit, soft-lit, spherical-lit, mega (image error
+/// spherical-quads, spherical+classify, spherical+quarter, hard-lit, soft-lit, spherical-lit, mega (image error
 /// against spherical: the same particles as exact spheres), mega-lit (against spherical-lit).
 const std::vector<Mode>& allModes();
 /// Null when `name` is not a mode.

@@ -67,6 +67,11 @@ GlStateGuard::GlStateGuard() {
     s.unpackSkipPixels = getInt(GL_UNPACK_SKIP_PIXELS);
     s.unpackImageHeight = getInt(GL_UNPACK_IMAGE_HEIGHT);
     s.unpackSkipImages = getInt(GL_UNPACK_SKIP_IMAGES);
+    s.packBuffer = getInt(GL_PIXEL_PACK_BUFFER_BINDING);
+    s.packAlignment = getInt(GL_PACK_ALIGNMENT);
+    s.packRowLength = getInt(GL_PACK_ROW_LENGTH);
+    s.packSkipRows = getInt(GL_PACK_SKIP_ROWS);
+    s.packSkipPixels = getInt(GL_PACK_SKIP_PIXELS);
 }
 
 GlStateGuard::~GlStateGuard() {
@@ -103,6 +108,11 @@ GlStateGuard::~GlStateGuard() {
     glPixelStorei(GL_UNPACK_SKIP_PIXELS, s.unpackSkipPixels);
     glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, s.unpackImageHeight);
     glPixelStorei(GL_UNPACK_SKIP_IMAGES, s.unpackSkipImages);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, GLuint(s.packBuffer));
+    glPixelStorei(GL_PACK_ALIGNMENT, s.packAlignment);
+    glPixelStorei(GL_PACK_ROW_LENGTH, s.packRowLength);
+    glPixelStorei(GL_PACK_SKIP_ROWS, s.packSkipRows);
+    glPixelStorei(GL_PACK_SKIP_PIXELS, s.packSkipPixels);
 }
 
 }  // namespace fx

@@ -13,7 +13,8 @@
 //   func and equation (separate RGB/alpha), depth test, depth func, depth mask, cull-face
 //   enable, stencil-test enable, scissor-test enable and box, colour mask, clear colour, viewport,
 //   draw and read framebuffers, GL_PIXEL_UNPACK_BUFFER and the unpack alignment / row length /
-//   skip values (texture uploads).
+//   skip values (texture uploads), GL_PIXEL_PACK_BUFFER and the pack alignment / row length /
+//   skip values (the fade-class counter's read-back).
 // Not captured (the renderer neither changes nor depends on them): per-draw-buffer blend state
 // (glEnablei), polygon mode/offset, depth range and clamp, stencil func/ops, sample coverage.
 #include <cstdint>
@@ -23,7 +24,7 @@ namespace fx {
 class GlStateGuard {
 public:
     /// Texture units the renderer may bind (0 .. kTextureUnits-1).
-    static constexpr int kTextureUnits = 4;
+    static constexpr int kTextureUnits = 6;
 
     GlStateGuard();
     ~GlStateGuard();
@@ -48,6 +49,7 @@ private:
         int drawFramebuffer = 0, readFramebuffer = 0;
         int unpackBuffer = 0, unpackAlignment = 4, unpackRowLength = 0, unpackSkipRows = 0,
             unpackSkipPixels = 0, unpackImageHeight = 0, unpackSkipImages = 0;
+        int packBuffer = 0, packAlignment = 4, packRowLength = 0, packSkipRows = 0, packSkipPixels = 0;
     };
     State saved_;
 };

@@ -47,6 +47,8 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
         }
         renderer->setParticleShape(owner->particleShape());
         renderer->setQuarterResEdges(owner->quarterResEdges());
+        renderer->setFadeClassification(owner->fadeClassification() == FadeClassification::On,
+                                        owner->fadeClassCounting());
         renderer->setLight(owner->light());
         const int drawn = renderer->declarePasses(view, frame, batches->data(),
                                                   static_cast<int>(batches->size()), options);
@@ -68,6 +70,7 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
         return renderer->declareShadowPasses(view, frame, batches->data(), static_cast<int>(batches->size()));
     });
     plugin.setShaderReloadHook([renderer](Diagnostics* out) { return renderer->reloadShaders(out); });
+    plugin.setFadeCountsHook([renderer] { return renderer->fadeClassCounts(); });
 }
 
 }  // namespace fx

@@ -55,6 +55,9 @@ ParticleProgram locate(GLuint program) {
     p.shadowed = glGetUniformLocation(program, "uShadowed");
     p.viewToShadow = glGetUniformLocation(program, "uViewToShadow");
     p.opacity = glGetUniformLocation(program, "uOpacity");
+    p.tiles = glGetUniformLocation(program, "uTiles");
+    p.tilesCoarse = glGetUniformLocation(program, "uTilesCoarse");
+    p.viewSize = glGetUniformLocation(program, "uViewSize");
     return p;
 }
 
@@ -68,14 +71,14 @@ ParticlePrograms::~ParticlePrograms() {
     }
 }
 
-void ParticlePrograms::build(const std::string& shaderDir, std::vector<std::string>* errors) {
+void ParticlePrograms::build(const std::string& shaderDir, std::vector<std::string>* errors,
+                             const std::string& defines, uint32_t variants) {
     for (int lit = 0; lit < 2; ++lit) {
         for (int v = 0; v < VariantCount; ++v) {
-            if (programs_[lit][v].program) continue;
+            if (programs_[lit][v].program || (variants & (1u << v)) == 0) continue;
             std::string error;
-            const std::string defines = std::string(kSources[v].defines) + (lit ? "#define FX_LIT 1\n" : "");
-            const GLuint program =
-                buildProgram(shaderDir, "vs_particles.glsl", kSources[v].fragment, defines, &error);
+            const std::string all = defines + kSources[v].defines + (lit ? "#define FX_LIT 1\n" : "");
+            const GLuint program = buildProgram(shaderDir, "vs_particles.glsl", kSources[v].fragment, all, &error);
             if (!program) {
                 errors->push_back(error);
                 continue;

@@ -26,6 +26,8 @@ struct ParticleProgram {
     int atlas = -1, ramp = -1, sceneDepth = -1;
     int trimmed = -1, shapeBuckets = -1, lodScale = -1, shapes = -1;
     int powerWhole = -1, powerHalf = -1;
+    // FX_CLASSIFY only (FadeClassifier.h).
+    int tiles = -1, tilesCoarse = -1, viewSize = -1;
     // FX_LIT only.
     int sunView = -1, sunColor = -1, ambient = -1, normalStrength = -1, scattering = -1, anisotropy = -1,
         absorption = -1, shadowed = -1, viewToShadow = -1, opacity = -1;
@@ -40,8 +42,10 @@ public:
     ParticlePrograms(const ParticlePrograms&) = delete;
     ParticlePrograms& operator=(const ParticlePrograms&) = delete;
 
-    /// Builds every variant; appends one "file:line: message" block per failed one to *errors.
-    void build(const std::string& shaderDir, std::vector<std::string>* errors);
+    /// Builds every variant in `variants` (a mask of 1 << Variant), each with `defines` added;
+    /// appends one "file:line: message" block per failed one to *errors.
+    void build(const std::string& shaderDir, std::vector<std::string>* errors, const std::string& defines = "",
+               uint32_t variants = ~0u);
     /// `lit`: the FX_LIT build of the variant (program 0 when it failed to build: draw unlit).
     const ParticleProgram& get(Variant v, bool lit = false) const { return programs_[lit ? 1 : 0][v]; }
     /// `contrastPower` picks between the two soft programs (see above).

@@ -182,6 +182,11 @@ bool ParticleRenderer::reloadShaders(Diagnostics* out) {
     programs->build(config_.shaderDir, &errors);
     quarter->build(config_.shaderDir, &errors);
     opacity->build(config_.shaderDir, &errors);
+    std::unique_ptr<FadeClassifier> classifier;
+    if (classifier_) {
+        classifier = std::make_unique<FadeClassifier>();
+        classifier->build(config_.shaderDir, &errors);
+    }
     if (!errors.empty()) {
         // The new programs are dropped (their destructors delete what did build); the running
         // ones stay, so the smoke on screen does not change.
@@ -199,7 +204,26 @@ bool ParticleRenderer::reloadShaders(Diagnostics* out) {
     programs_ = std::move(programs);
     quarter_ = std::move(quarter);
     opacity_ = std::move(opacity);
+    if (classifier) classifier_ = std::move(classifier);
     log(LogLevel::Info, "fx: particle shaders reloaded from " + config_.shaderDir);
+    return true;
+}
+
+bool ParticleRenderer::ensureClassifier() {
+    if (classifier_) return true;
+    if (classifierFailed_) return false;
+    GlStateGuard guard;
+    auto classifier = std::make_unique<FadeClassifier>();
+    std::vector<std::string> errors;
+    classifier->build(config_.shaderDir, &errors);
+    if (!errors.empty() || !classifier->ok()) {
+        std::string text = "fx: fade classification is off: its programs did not build";
+        for (const std::string& e : errors) text += "\n" + e;
+        log(LogLevel::Error, text);
+        classifierFailed_ = true;
+        return false;
+    }
+    classifier_ = std::move(classifier);
     return true;
 }
 
@@ -283,16 +307,40 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     const Target opacity = record->opacity;
 
     const Target color = frame.sceneColor();
+    if (!(classify_ && countClasses_)) counts_ = FadeClassCounts{};
     if (!quarterRes) {
         const Target depth = record->list.needsSceneDepth ? frame.sceneDepth() : Target{};
-        addPassReading(frame, kFullResPass, {depth, opacity}, color,
-                       [this, record, depth, color, opacity](PassContext& ctx) {
+        // Fade classification: the scene depth's range per tile, read by the classified programs.
+        Target tiles, coarse;
+        if (classify_ && depth.valid() && ensureClassifier()) {
+            tiles = frame.createTarget(FadeClassifier::kTileTarget,
+                                       FadeClassifier::tileTargetDesc(view.width, view.height, false));
+            coarse = frame.createTarget(FadeClassifier::kCoarseTarget,
+                                        FadeClassifier::tileTargetDesc(view.width, view.height, true));
+            frame.addPass(FadeClassifier::kPass, {depth}, {tiles, coarse},
+                          [this, record, depth, tiles, coarse](PassContext& ctx) {
+                              if (!sizesAgree(ctx, record->view, depth, Target{})) return;
+                              GlStateGuard guard;
+                              DebugGroup group(FadeClassifier::kPass);
+                              classifier_->buildTiles(ctx, depth, tiles, coarse);
+                          });
+        }
+        const bool count = tiles.valid() && countClasses_;
+        addPassReading(frame, kFullResPass, {depth, opacity, tiles, coarse}, color,
+                       [this, record, depth, color, opacity, tiles, coarse, count](PassContext& ctx) {
                            if (!sizesAgree(ctx, record->view, color, depth)) return;
                            GlStateGuard guard;
                            DebugGroup group(kFullResPass);
                            ctx.bindForDraw(color);
+                           const uint32_t tileTexture = tiles.valid() ? ctx.texture(tiles, 0).name : 0;
+                           const uint32_t coarseTexture = coarse.valid() ? ctx.texture(coarse, 0).name : 0;
                            drawBatches(*record, depth.valid() ? ctx.texture(depth, 0).name : 0, false, false,
-                                       opacity.valid() ? ctx.texture(opacity, 0).name : 0);
+                                       opacity.valid() ? ctx.texture(opacity, 0).name : 0, tileTexture,
+                                       coarseTexture);
+                           if (count) {
+                               counts_ = classifier_->count(record->list.batches, stream_, record->view, tileTexture,
+                                                            coarseTexture);
+                           }
                        });
         return drawn;
     }
@@ -364,7 +412,7 @@ void ParticleRenderer::setRampRows(const ParticleBatch* batches, int batchCount)
 }
 
 void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes, bool halfZ,
-                                   uint32_t opacity) {
+                                   uint32_t opacity, uint32_t tiles, uint32_t coarse) {
     const DrawList& list = record.list;
     const ViewInfo& view = record.view;
     glActiveTexture(GL_TEXTURE0);
@@ -384,6 +432,11 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
     if (record.lit) {
         bindTextureUnit(kOpacityUnit, opacity);
     }
+    const bool classified = tiles != 0 && coarse != 0 && classifier_;
+    if (classified) {
+        bindTextureUnit(FadeClassifier::kTileUnit, tiles);
+        bindTextureUnit(FadeClassifier::kCoarseUnit, coarse);
+    }
 
     const glm::vec2 slopes = frustumSlopes(view.proj);
     // Trimmed billboards: the LOD estimate needs the target's height in pixels (the viewport the
@@ -400,7 +453,10 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
             ParticlePrograms::variantFor(batch.technique, quarterRes, batch.contrastPower);
         // Lit when the host set a light and the reaction takes it; unlit if the lit build failed.
         const bool lit = record.lit && batch.lighting.lit(batch.blend) && programs_->get(variant, true).program;
-        const ParticleProgram& p = programs_->get(variant, lit);
+        // Soft and spherical batches take the classified build when the tiles are there.
+        const ParticleProgram& classifiedProgram =
+            classified && batch.technique != Technique::Hard ? classifier_->program(variant, lit) : ParticleProgram{};
+        const ParticleProgram& p = classifiedProgram.program ? classifiedProgram : programs_->get(variant, lit);
         if (!p.program) continue;
         if (record.lit) bindTextureUnit(kAtlasUnit, lit ? atlas_.litTexture() : atlas_.texture());
         // Full resolution tests against the host's z-buffer without writing it. Hard particles
@@ -443,6 +499,11 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         glUniform1i(p.atlas, kAtlasUnit);
         glUniform1i(p.ramp, kRampUnit);
         glUniform1i(p.sceneDepth, kSceneDepthUnit);
+        if (p.tiles >= 0) {
+            glUniform1i(p.tiles, FadeClassifier::kTileUnit);
+            glUniform1i(p.tilesCoarse, FadeClassifier::kCoarseUnit);
+            glUniform2f(p.viewSize, float(view.width), float(view.height));
+        }
         // Spherical particles trim to an octagon around the sphere, computed in the shader.
         const bool trimmed = trimmable;
         glUniform1i(p.trimmed, trimmed ? 1 : 0);

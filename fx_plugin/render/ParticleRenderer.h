@@ -6,7 +6,10 @@
 // Passes (names are data: they show in the host's pass list, debug groups and timings):
 //   nothing at all when no particle is visible in the view (the host allocates nothing);
 //   full res:    "particles"  reads sceneDepth only if a visible batch is soft or spherical,
-//                             writes sceneColor;
+//                             writes sceneColor; with fade classification on (and a soft or
+//                             spherical batch visible) "particles_tile_depth" comes first, reading
+//                             sceneDepth and writing "particles_tiles" and "particles_tiles_coarse"
+//                             (RG32F, FadeClassifier.h), which "particles" reads too;
 //   quarter res: "particles_depth_downsample", "particles_quarter", "particles_composite"
 //                with targets "particles_half_depth" (R32F) and "particles_half_color"
 //                (RGBA16F), both half x half, created through FrameBuilder::createTarget
@@ -33,6 +36,7 @@
 
 #include "ColorRampTexture.h"
 #include "DrawList.h"
+#include "FadeClassifier.h"
 #include "InstanceStream.h"
 #include "ParticlePrograms.h"
 #include "LightState.h"
@@ -93,6 +97,14 @@ public:
     /// Quarter res: depth-aware upsample everywhere, or mixed resolution (the edge pixels redrawn
     /// at full res, QuarterResPath.h), from the next declarePasses on.
     void setQuarterResEdges(QuarterResEdges edges) { edges_ = edges; }
+    /// Fade classification at full res (FadeClassifier.h) and its counting, from the next
+    /// declarePasses on.
+    void setFadeClassification(bool classify, bool count) {
+        classify_ = classify;
+        countClasses_ = count;
+    }
+    /// The classes counted by the last full-res pass that ran with counting on.
+    FadeClassCounts fadeClassCounts() const { return counts_; }
 
     State state() const { return state_; }
     const std::string& shaderDir() const { return config_.shaderDir; }
@@ -122,8 +134,12 @@ private:
     /// texture of that target's size (0 when no batch needs it).
     /// `halfZ`: the bound target's own z-buffer was filled (the half-res z-test, or the mixed-res
     /// edge mask): z-test every batch (GEQUAL, LEQUAL under standard depth).
+    /// `tiles`, `coarse`: the fade classifier's tile textures (0: soft and spherical particles
+    /// drawn unclassified).
     void drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes, bool halfZ = false,
-                     uint32_t opacity = 0);
+                     uint32_t opacity = 0, uint32_t tiles = 0, uint32_t coarse = 0);
+    /// Builds the fade classifier on first use; false (logged once) when it does not build.
+    bool ensureClassifier();
     /// Sets the FX_LIT uniforms of `p` for `batch` (the program is in use).
     void setLightUniforms(const ParticleProgram& p, const DrawBatch& batch, const ViewRecord& record,
                           uint32_t opacity) const;
@@ -136,6 +152,11 @@ private:
     State state_ = State::Unloaded;
     ParticleShape shape_ = ParticleShape::Trimmed;
     QuarterResEdges edges_ = QuarterResEdges::DepthAware;
+    bool classify_ = false;
+    bool countClasses_ = false;
+    bool classifierFailed_ = false;
+    std::unique_ptr<FadeClassifier> classifier_;  ///< built on first use
+    FadeClassCounts counts_;
     std::vector<glm::vec4> shapeTable_;  ///< atlas_.shapes().packed(), uploaded per draw
     bool quarterFallbackLogged_ = false;
     Diagnostics loadDiagnostics_;  ///< what went wrong while loading (prepare() hands them out)

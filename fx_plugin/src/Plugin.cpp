@@ -195,6 +195,16 @@ ErrorCode PluginImpl::setQuarterResEdges(QuarterResEdges mode) {
     return ErrorCode::None;
 }
 
+ErrorCode PluginImpl::setFadeClassification(FadeClassification mode) {
+    const auto m = static_cast<uint8_t>(mode);
+    if (m > static_cast<uint8_t>(FadeClassification::On)) {
+        return errors_.refuse(ErrorCode::InvalidValue, "setFadeClassification",
+                              "mode = " + std::to_string(m) + "; expected Off or On");
+    }
+    classification_ = mode;
+    return ErrorCode::None;
+}
+
 bool PluginImpl::prepareGl(Diagnostics* out) {
     return prepareHook_ ? prepareHook_(out) : true;
 }

@@ -67,6 +67,16 @@ public:
     SmokeShadow declareShadowPasses(const ViewInfo& view, FrameBuilder& frame) override;
     ErrorCode setQuarterResEdges(QuarterResEdges mode) override;
     QuarterResEdges quarterResEdges() const override { return edges_; }
+    ErrorCode setFadeClassification(FadeClassification mode) override;
+    FadeClassification fadeClassification() const override { return classification_; }
+    ErrorCode setFadeClassCounting(bool on) override {
+        countFadeClasses_ = on;
+        return ErrorCode::None;
+    }
+    bool fadeClassCounting() const { return countFadeClasses_; }
+    FadeClassCounts fadeClassCounts() const override { return countsHook_ ? countsHook_() : FadeClassCounts{}; }
+    /// The renderer's Plugin::fadeClassCounts.
+    void setFadeCountsHook(std::function<FadeClassCounts()> hook) { countsHook_ = std::move(hook); }
 
     /// The renderer's entry; pass an empty function to remove it.
     void setRenderHook(RenderHook hook) { renderHook_ = std::move(hook); }
@@ -110,6 +120,9 @@ private:
     RenderOptions options_;
     ParticleShape shape_ = ParticleShape::Trimmed;
     QuarterResEdges edges_ = QuarterResEdges::DepthAware;
+    FadeClassification classification_ = FadeClassification::Off;
+    bool countFadeClasses_ = false;
+    std::function<FadeClassCounts()> countsHook_;
     RenderHook renderHook_;
     PrepareHook prepareHook_;
     PrepareHook shaderReloadHook_;

@@ -4,6 +4,7 @@
 #include <glad/gl.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -32,10 +33,9 @@ void writeText(const std::string& path, const std::string& text) {
 std::string copyShaders(const std::string& name) {
     const std::string dir = scratchDir() + "/" + name;
     std::system(("mkdir -p '" + dir + "'").c_str());
-    for (const char* f : {"particles_common.glsl", "vs_particles.glsl", "fs_particles_hard.glsl",
-                          "fs_particles_soft.glsl", "fs_particles_spherical.glsl",
-                          "vs_particles_fullscreen.glsl", "fs_particles_depth_downsample.glsl",
-                          "fs_particles_composite.glsl"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(kShaders)) {
+        const std::string f = entry.path().filename().string();
+        if (f.find("particles") == std::string::npos) continue;
         writeText(dir + "/" + f, readText(kShaders + "/" + f));
     }
     return dir;

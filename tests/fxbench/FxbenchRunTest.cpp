@@ -103,7 +103,7 @@ TEST_P(FxbenchScenario, TinyRunWritesEveryKeyWithFiniteValues) {
     EXPECT_EQ(run["rounds"].as<int>(), 2);
     EXPECT_FALSE(run["renderer"].as<std::string>().empty());
     ASSERT_TRUE(run["modes"].IsSequence());
-    EXPECT_EQ(run["modes"].size(), 16u);  // every mode by default (lit modes, mega and soft+mixed included)
+    EXPECT_EQ(run["modes"].size(), 18u);  // every mode by default (lit, mega, soft+mixed, *+classify included)
     for (const YAML::Node& m : run["modes"]) {
         const std::string name = m["name"].as<std::string>();
         SCOPED_TRACE(name);
@@ -130,6 +130,25 @@ TEST_P(FxbenchScenario, TinyRunWritesEveryKeyWithFiniteValues) {
 }
 
 INSTANTIATE_TEST_SUITE_P(All, FxbenchScenario, ::testing::Values("standard", "fill", "overdraw", "empty"));
+
+// Fade classification changes no pixel (max abs 0 against soft / spherical) and reports its
+// classes, which cover every soft or spherical particle drawn in the error frame; the modes
+// without it report none.
+TEST(Fxbench, ClassifiedModesDrawTheSameImageAndCountTheirClasses) {
+    const YAML::Node& run = tinyRun("standard");
+    for (const char* name : {"soft+classify", "spherical+classify"}) {
+        SCOPED_TRACE(name);
+        const YAML::Node m = modeNode(run, name);
+        EXPECT_EQ(m["error"]["max_abs"].as<double>(), 0.0);
+        const YAML::Node c = m["fade_classes"];
+        ASSERT_TRUE(c.IsMap()) << "no fade_classes";
+        const double sum = finite(c["fade_needed"], "fade_needed") + finite(c["in_front"], "in_front") +
+                           finite(c["hidden"], "hidden");
+        EXPECT_GT(sum, 0.0);
+        EXPECT_TRUE(m["passes_ms"]["chase.particles_tile_depth"].IsDefined()) << "no tile pass timed";
+    }
+    EXPECT_FALSE(modeNode(run, "soft")["fade_classes"].IsDefined());
+}
 
 TEST(Fxbench, TrimmedSoftShadesFewerFragmentsThanQuadsForTheSameImage) {
     const YAML::Node& run = tinyRun("standard");

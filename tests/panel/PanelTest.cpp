@@ -167,6 +167,12 @@ TEST_F(PanelTest, RenderSwitchesChangeTheRunningOptions) {
     EXPECT_EQ(plugin->particleShape(), fx::ParticleShape::Quad);
     click(rect("trimmed_shapes"));
     EXPECT_EQ(plugin->particleShape(), fx::ParticleShape::Trimmed);
+    ASSERT_EQ(plugin->fadeClassification(), fx::FadeClassification::Off);
+    click(rect("classify_fades"));
+    EXPECT_EQ(plugin->fadeClassification(), fx::FadeClassification::On);
+    frame();  // a classified frame with the panel over it
+    click(rect("classify_fades"));
+    EXPECT_EQ(plugin->fadeClassification(), fx::FadeClassification::Off);
 }
 
 TEST_F(PanelTest, TheSunSlidersMoveTheSunAndLitSmokeSwitchesOff) {

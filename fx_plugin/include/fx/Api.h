@@ -19,7 +19,7 @@
 #endif
 
 #define FX_API_VERSION_MAJOR 1
-#define FX_API_VERSION_MINOR 2
+#define FX_API_VERSION_MINOR 3
 
 namespace fx {
 

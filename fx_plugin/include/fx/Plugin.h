@@ -68,6 +68,24 @@ enum class ParticleShape : uint8_t { Trimmed = 0, Quad = 1 };
 /// rest is upsampled as before. Since API 1.2.
 enum class QuarterResEdges : uint8_t { DepthAware = 0, MixedResolution = 1 };
 
+/// Fade classification of soft and spherical particles at full resolution (API 1.3). On: a small
+/// pass reduces the scene depth to its range per screen tile; a particle in front of all the
+/// geometry in its tiles by more than its softness skips the scene-depth fetch and the fade, one
+/// wholly behind it is not drawn. The image is the same bit for bit. It pays where the fragment
+/// shader branches per particle (GPUs); a CPU rasteriser runs both sides of the branch, so there
+/// it costs the tile pass and saves little. Off: every fragment fetches the depth (the 1.2 path).
+enum class FadeClassification : uint8_t { Off = 0, On = 1 };
+
+/// Particles per fade class in the last full-res particle pass (Plugin::fadeClassCounts, API
+/// 1.3). `counted` is false when nothing was counted (counting off, classification off, no
+/// soft or spherical particle drawn at full res, or the counter could not be built).
+struct FadeClassCounts {
+    int fadeNeeded = 0;  ///< drawn with the per-pixel fade (their footprint meets geometry)
+    int inFront = 0;     ///< drawn without reading the scene depth (the fade is exactly 1)
+    int hidden = 0;      ///< not drawn (wholly behind the geometry in their tiles)
+    bool counted = false;
+};
+
 /// One key of the reaction file schema (reactions/README.md), as an editor needs it: enough to
 /// build a widget, clamp it to the range the loader enforces and explain it in a tooltip.
 /// Defaults: a number in [0, 0] with no unit, help or choices.
@@ -227,6 +245,25 @@ public:
         return ErrorCode::InvalidValue;
     }
     virtual QuarterResEdges quarterResEdges() const { return QuarterResEdges::DepthAware; }
+
+    // ---- API 1.3: fade classification ----
+
+    /// API 1.3: fade classification (FadeClassification), from the next declarePasses on.
+    /// Default Off. Refused (InvalidValue, nothing changes) for a value outside the enum.
+    virtual ErrorCode setFadeClassification(FadeClassification mode) {
+        (void)mode;
+        return ErrorCode::InvalidValue;
+    }
+    virtual FadeClassification fadeClassification() const { return FadeClassification::Off; }
+    /// API 1.3: with classification on, count each frame's particles per class (one point draw
+    /// per reaction and a 16-byte read-back that waits for the GPU: for diagnostics and
+    /// benchmarks, not for shipping frames). Default off.
+    virtual ErrorCode setFadeClassCounting(bool on) {
+        (void)on;
+        return ErrorCode::InvalidValue;
+    }
+    /// API 1.3: the counts of the last full-res particle pass that ran with counting on.
+    virtual FadeClassCounts fadeClassCounts() const { return FadeClassCounts{}; }
 };
 
 /// What the host hands the plugin at creation. Defaults: this header's API version, no host
