@@ -5,6 +5,7 @@
 #include "render/PrivateGl.h"
 
 #include "DrawList.h"
+#include "GlStateGuard.h"
 #include "InstanceStream.h"
 #include "ShaderLoader.h"
 
@@ -15,12 +16,6 @@ constexpr uint32_t kClassifiedVariants = (1u << ParticlePrograms::Soft) | (1u <<
                                          (1u << ParticlePrograms::Spherical);
 
 int tilesFor(int pixels, int tileSize) { return std::max(1, (pixels + tileSize - 1) / tileSize); }
-
-void bindUnit(int unit, GLuint texture) {
-    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glBindSampler(GLuint(unit), 0);
-}
 
 }  // namespace
 
@@ -36,19 +31,19 @@ FadeClassifier::~FadeClassifier() {
 void FadeClassifier::build(const std::string& shaderDir, std::vector<std::string>* errors) {
     programs_.build(shaderDir, errors, "#define FX_CLASSIFY 1\n", kClassifiedVariants);
     std::string error;
-    if (!tileProgram_) {
-        tileProgram_ = buildProgram(shaderDir, "vs_particles_fullscreen.glsl", "fs_particles_tile_depth.glsl", "", &error);
-        if (tileProgram_) {
-            tileSourceLoc_ = glGetUniformLocation(tileProgram_, "uSource");
-        } else {
-            errors->push_back(error);
-        }
-    }
-    if (!coarseProgram_) {
-        coarseProgram_ = buildProgram(shaderDir, "vs_particles_fullscreen.glsl", "fs_particles_tile_depth.glsl",
-                                      "#define FX_TILE_COARSE 1\n", &error);
-        if (coarseProgram_) {
-            coarseSourceLoc_ = glGetUniformLocation(coarseProgram_, "uSource");
+    // The fine tiles from the scene depth, the coarse ones from the fine tiles: one shader.
+    struct TileBuild {
+        uint32_t* program;
+        int* source;
+        const char* defines;
+    };
+    for (const TileBuild& t : {TileBuild{&tileProgram_, &tileSourceLoc_, ""},
+                               TileBuild{&coarseProgram_, &coarseSourceLoc_, "#define FX_TILE_COARSE 1\n"}}) {
+        if (*t.program) continue;
+        *t.program = buildProgram(shaderDir, "vs_particles_fullscreen.glsl", "fs_particles_tile_depth.glsl",
+                                  t.defines, &error);
+        if (*t.program) {
+            *t.source = glGetUniformLocation(*t.program, "uSource");
         } else {
             errors->push_back(error);
         }
@@ -118,13 +113,13 @@ void FadeClassifier::buildTiles(PassContext& ctx, Target sceneDepth, Target tile
 
     ctx.bindForDraw(tiles);
     glUseProgram(tileProgram_);
-    bindUnit(0, ctx.texture(sceneDepth, 0).name);
+    bindTextureUnit(0, ctx.texture(sceneDepth, 0).name);
     glUniform1i(tileSourceLoc_, 0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
     ctx.bindForDraw(coarse);
     glUseProgram(coarseProgram_);
-    bindUnit(0, ctx.texture(tiles, 0).name);
+    bindTextureUnit(0, ctx.texture(tiles, 0).name);
     glUniform1i(coarseSourceLoc_, 0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
@@ -149,8 +144,8 @@ FadeClassCounts FadeClassifier::count(const std::vector<DrawBatch>& batches, Ins
     glUniformMatrix4fv(countProj_, 1, GL_FALSE, &view.proj[0][0]);
     glUniform1f(countNear_, view.nearPlane);
     glUniform2f(countViewSize_, float(view.width), float(view.height));
-    bindUnit(kTileUnit, tiles);
-    bindUnit(kCoarseUnit, coarse);
+    bindTextureUnit(kTileUnit, tiles);
+    bindTextureUnit(kCoarseUnit, coarse);
     glUniform1i(countTiles_, kTileUnit);
     glUniform1i(countCoarse_, kCoarseUnit);
     for (const DrawBatch& batch : batches) {

@@ -27,6 +27,12 @@ void setEnabled(GLenum cap, bool on) {
 
 }  // namespace
 
+void bindTextureUnit(int unit, uint32_t texture) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, GLuint(texture));
+    glBindSampler(GLuint(unit), 0);
+}
+
 GlStateGuard::GlStateGuard() {
     State& s = saved_;
     s.program = getInt(GL_CURRENT_PROGRAM);

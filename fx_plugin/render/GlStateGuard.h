@@ -21,6 +21,11 @@
 
 namespace fx {
 
+/// Binds `texture` to GL_TEXTURE_2D of texture unit `unit` (below GlStateGuard::kTextureUnits, so
+/// a guard puts the host's binding back) with no sampler object: a host sampler bound there would
+/// override the texture's own filtering. Leaves `unit` active.
+void bindTextureUnit(int unit, uint32_t texture);
+
 class GlStateGuard {
 public:
     /// Texture units the renderer may bind (0 .. kTextureUnits-1).

@@ -18,12 +18,6 @@ namespace {
 // Texture units (all below GlStateGuard::kTextureUnits).
 constexpr int kUnit0 = 0, kUnit1 = 1, kUnit2 = 2;
 
-void bindTextureUnit(int unit, GLuint texture) {
-    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glBindSampler(GLuint(unit), 0);  // a host sampler object would override our filtering
-}
-
 void plainState() {
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);

@@ -77,12 +77,6 @@ void addShaderDiagnostics(const std::string& text, Diagnostics* out) {
     }
 }
 
-void bindTextureUnit(int unit, GLuint texture) {
-    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glBindSampler(GLuint(unit), 0);  // a host sampler object would override our filtering
-}
-
 // |x/depth| and |y/depth| slightly past the frustum edges, from a perspective projection.
 glm::vec2 frustumSlopes(const glm::mat4& proj) {
     const float sx = (1.0f + std::fabs(proj[2][0])) / std::fmax(std::fabs(proj[0][0]), 1e-6f);

@@ -5,16 +5,11 @@
 
 #include "render/PrivateGl.h"
 
+#include "GlStateGuard.h"
 #include "ShaderLoader.h"
 
 namespace fx {
 namespace {
-
-void bindTextureUnit(int unit, GLuint texture) {
-    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glBindSampler(GLuint(unit), 0);
-}
 
 void fullscreenState() {
     glDisable(GL_DEPTH_TEST);

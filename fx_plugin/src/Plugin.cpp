@@ -137,6 +137,20 @@ bool finiteMatrix(const glm::mat4& m) {
     return true;
 }
 
+// The API's enum switches: `value` past `last` is refused (InvalidValue, `*field` unchanged) with
+// "<what> = <n>; expected <names>", else stored.
+template <class Enum>
+ErrorCode setSwitch(ApiErrors& errors, Enum value, Enum last, Enum* field, const char* function, const char* what,
+                    const char* names) {
+    const auto v = static_cast<uint8_t>(value);
+    if (v > static_cast<uint8_t>(last)) {
+        return errors.refuse(ErrorCode::InvalidValue, function,
+                             std::string(what) + " = " + std::to_string(v) + "; expected " + names);
+    }
+    *field = value;
+    return ErrorCode::None;
+}
+
 }  // namespace
 
 std::string PluginImpl::reactionName(int index) const {
@@ -176,33 +190,17 @@ ErrorCode PluginImpl::setRenderOptions(const RenderOptions& options) {
 }
 
 ErrorCode PluginImpl::setParticleShape(ParticleShape shape) {
-    const auto s = static_cast<uint8_t>(shape);
-    if (s > static_cast<uint8_t>(ParticleShape::Quad)) {
-        return errors_.refuse(ErrorCode::InvalidValue, "setParticleShape",
-                              "shape = " + std::to_string(s) + "; expected Trimmed or Quad");
-    }
-    shape_ = shape;
-    return ErrorCode::None;
+    return setSwitch(errors_, shape, ParticleShape::Quad, &shape_, "setParticleShape", "shape", "Trimmed or Quad");
 }
 
 ErrorCode PluginImpl::setQuarterResEdges(QuarterResEdges mode) {
-    const auto m = static_cast<uint8_t>(mode);
-    if (m > static_cast<uint8_t>(QuarterResEdges::MixedResolution)) {
-        return errors_.refuse(ErrorCode::InvalidValue, "setQuarterResEdges",
-                              "mode = " + std::to_string(m) + "; expected DepthAware or MixedResolution");
-    }
-    edges_ = mode;
-    return ErrorCode::None;
+    return setSwitch(errors_, mode, QuarterResEdges::MixedResolution, &edges_, "setQuarterResEdges", "mode",
+                     "DepthAware or MixedResolution");
 }
 
 ErrorCode PluginImpl::setFadeClassification(FadeClassification mode) {
-    const auto m = static_cast<uint8_t>(mode);
-    if (m > static_cast<uint8_t>(FadeClassification::On)) {
-        return errors_.refuse(ErrorCode::InvalidValue, "setFadeClassification",
-                              "mode = " + std::to_string(m) + "; expected Off or On");
-    }
-    classification_ = mode;
-    return ErrorCode::None;
+    return setSwitch(errors_, mode, FadeClassification::On, &classification_, "setFadeClassification", "mode",
+                     "Off or On");
 }
 
 bool PluginImpl::prepareGl(Diagnostics* out) {
