@@ -9,6 +9,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+// Named so that the test files of one unity translation unit keep their helpers apart.
+namespace hostile_input_test {
 namespace {
 
 struct Outcome {
@@ -110,3 +112,4 @@ TEST(HostileInput, ShaderThatFailsToCompileNamesFileAndLine) {
     ASSERT_EQ(std::system(("sed -i '4s/.*/this is not glsl;/' " + copy + "/fs_sky.glsl").c_str()), 0);
     expectRejected(launch("", "CUBE_SHADER_DIR=" + copy), "fs_sky.glsl:4", "broken shader");
 }
+}  // namespace hostile_input_test

@@ -13,6 +13,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+// Named so that the test files of one unity translation unit keep their helpers apart.
+namespace platform_loading_test {
 namespace {
 
 struct Result {
@@ -151,3 +153,4 @@ TEST(PlatformLoading, ProductBinariesNeedNoBackendLibrary) {
         }
     }
 }
+}  // namespace platform_loading_test

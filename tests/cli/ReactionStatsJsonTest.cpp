@@ -12,6 +12,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+// Named so that the test files of one unity translation unit keep their helpers apart.
+namespace reaction_stats_json_test {
 namespace {
 
 int runGame(const std::string& args) {
@@ -74,3 +76,4 @@ TEST(ReactionStatsJson, NoReactionsGiveAnEmptyList) {
 }
 
 }  // namespace
+}  // namespace reaction_stats_json_test

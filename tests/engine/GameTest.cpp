@@ -14,6 +14,8 @@
 using namespace cube;
 using cubetest::pixel;
 
+// Named so that the test files of one unity translation unit keep their helpers apart.
+namespace game_test {
 namespace {
 
 size_t indexOf(const std::vector<std::string>& calls, const std::string& name, size_t from = 0) {
@@ -229,3 +231,4 @@ TEST(Game, TheExplosionRecipeFiresAtTheCarOnDemand) {
     game.Update(1.0f / 60.0f);
     EXPECT_GT(explosionEmitted().second, 0u);
 }
+}  // namespace game_test

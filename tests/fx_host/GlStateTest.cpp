@@ -7,7 +7,8 @@
 #include "FxTestHost.h"
 
 namespace fxtest {
-namespace {
+// Named so that the test files of one unity translation unit keep their helpers apart.
+namespace gl_state_test {
 
 constexpr int kW = 160, kH = 120;
 
@@ -102,5 +103,5 @@ TEST_F(GlStateTest, DebugCallbackCountsErrors) {
     resetGlErrors();
 }
 
-}  // namespace
+}  // namespace gl_state_test
 }  // namespace fxtest

@@ -13,7 +13,8 @@
 #include "FxTestHost.h"
 
 namespace fxtest {
-namespace {
+// Named so that the test files of one unity translation unit keep their helpers apart.
+namespace light_stability_test {
 
 constexpr int kWidth = 200, kHeight = 150;
 
@@ -124,5 +125,5 @@ TEST_F(LightStabilityTest, FlyingThroughTheCloudHasNoJump) {
     }
 }
 
-}  // namespace
+}  // namespace light_stability_test
 }  // namespace fxtest

@@ -6,7 +6,8 @@
 #include "FxTestHost.h"
 
 namespace fxtest {
-namespace {
+// Named so that the test files of one unity translation unit keep their helpers apart.
+namespace quarter_res_test {
 
 constexpr int kW = 256, kH = 192;
 
@@ -97,5 +98,5 @@ TEST_F(QuarterResTest, DepthAwareUpsampleBeatsBilinearNextToDepthEdges) {
     EXPECT_LT(eAware.max, eBilinear.max);
 }
 
-}  // namespace
+}  // namespace quarter_res_test
 }  // namespace fxtest

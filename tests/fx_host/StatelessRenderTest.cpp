@@ -12,7 +12,8 @@
 #include "FxTestHost.h"
 
 namespace fxtest {
-namespace {
+// Named so that the test files of one unity translation unit keep their helpers apart.
+namespace stateless_render_test {
 
 constexpr int kW = 192, kH = 144;
 
@@ -114,5 +115,5 @@ TEST_F(StatelessRenderTest, NoPassOnceEveryRecordIsDead) {
     EXPECT_EQ(graph.executed(), std::vector<std::string>{"opaque"});
 }
 
-}  // namespace
+}  // namespace stateless_render_test
 }  // namespace fxtest

@@ -10,6 +10,8 @@
 
 #include "../../fx_plugin/reactions/ReactionLoader.h"
 
+// Named so that the test files of one unity translation unit keep their helpers apart.
+namespace shipped_reactions_test {
 namespace {
 
 const std::string kReactionsDir = std::string(CUBE_SOURCE_DIR) + "/reactions";
@@ -140,3 +142,4 @@ TEST(ShippedReactions, SmokeAndSteamCurlInTurbulence) {
 }
 
 }  // namespace
+}  // namespace shipped_reactions_test

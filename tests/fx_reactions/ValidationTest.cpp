@@ -7,6 +7,8 @@
 
 #include "../../fx_plugin/reactions/ReactionLoader.h"
 
+// Named so that the test files of one unity translation unit keep their helpers apart.
+namespace validation_test {
 namespace {
 
 using fx::ErrorCode;
@@ -460,3 +462,4 @@ TEST(Validation, DiagnosticStrFormat) {
 }
 
 }  // namespace
+}  // namespace validation_test

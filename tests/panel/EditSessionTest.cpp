@@ -37,7 +37,6 @@ protected:
     std::string burnoutFile, original;
 };
 
-}  // namespace
 
 TEST_F(EditSessionTest, AnEditGoesLiveAtOnceAndTheSavedDiffIsOnlyThatScalar) {
     std::string error;
@@ -268,3 +267,5 @@ TEST_F(EditSessionTest, HotReloadOfAnotherFileKeepsTheEditedText) {
     ASSERT_FALSE(diags.empty());
     EXPECT_EQ(diags.front().code, fx::ErrorCode::FileNotFound);
 }
+
+}  // namespace

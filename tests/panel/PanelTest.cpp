@@ -96,7 +96,6 @@ protected:
     int burnout = -1;
 };
 
-}  // namespace
 
 TEST_F(PanelTest, AnInjectedDragOnASliderChangesTheRunningValueWithinItsRange) {
     const Rect r = rect("burnout_smoke/particle.size_variation");  // a slider over [0, 0.9]
@@ -351,3 +350,5 @@ TEST_F(PanelTest, AFileChangedOnDiskDuringEditsAsksTheUserAndKeepsTheEditsWhenTo
     EXPECT_NE(readFile(path).find("size_variation: 0.9"), std::string::npos);
     EXPECT_NE(readFile(path).find("rate: 90"), std::string::npos);
 }
+
+}  // namespace
