@@ -33,6 +33,14 @@ void bindTextureUnit(int unit, uint32_t texture) {
     glBindSampler(GLuint(unit), 0);
 }
 
+DebugGroup::DebugGroup(const char* name) : active_(FXGLAD_GL_KHR_debug != 0) {
+    if (active_) glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name);
+}
+
+DebugGroup::~DebugGroup() {
+    if (active_) glPopDebugGroup();
+}
+
 GlStateGuard::GlStateGuard() {
     State& s = saved_;
     s.program = getInt(GL_CURRENT_PROGRAM);

@@ -26,6 +26,19 @@ namespace fx {
 /// override the texture's own filtering. Leaves `unit` active.
 void bindTextureUnit(int unit, uint32_t texture);
 
+/// A KHR_debug group around a pass's GL calls (names the pass in a GL debugger's capture); nothing
+/// where the context has no KHR_debug.
+class DebugGroup {
+public:
+    explicit DebugGroup(const char* name);
+    ~DebugGroup();
+    DebugGroup(const DebugGroup&) = delete;
+    DebugGroup& operator=(const DebugGroup&) = delete;
+
+private:
+    bool active_;
+};
+
 class GlStateGuard {
 public:
     /// Texture units the renderer may bind (0 .. kTextureUnits-1).

@@ -16,9 +16,6 @@
 namespace fx {
 namespace {
 
-// Texture units of the particle draws (all below GlStateGuard::kTextureUnits).
-constexpr int kAtlasUnit = 0, kRampUnit = 1, kSceneDepthUnit = 2, kOpacityUnit = 3;
-
 // FrameBuilder::addPass with the valid ones of up to four read targets (an invalid Target is
 // "not read": the opacity map is there only for lit smoke).
 void addPassReading(FrameBuilder& frame, const char* name, std::initializer_list<Target> maybeReads,
@@ -36,21 +33,6 @@ void addPassReading(FrameBuilder& frame, const char* name, std::initializer_list
     default: frame.addPass(name, {r[0], r[1], r[2], r[3]}, {write}, std::move(execute)); break;
     }
 }
-
-class DebugGroup {
-public:
-    explicit DebugGroup(const char* name) : active_(FXGLAD_GL_KHR_debug != 0) {
-        if (active_) glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name);
-    }
-    ~DebugGroup() {
-        if (active_) glPopDebugGroup();
-    }
-    DebugGroup(const DebugGroup&) = delete;
-    DebugGroup& operator=(const DebugGroup&) = delete;
-
-private:
-    bool active_;
-};
 
 // "file:line: message" lines of a shader build error, as diagnostics.
 void addShaderDiagnostics(const std::string& text, Diagnostics* out) {
@@ -75,13 +57,6 @@ void addShaderDiagnostics(const std::string& text, Diagnostics* out) {
         }
         out->push_back(d);
     }
-}
-
-// |x/depth| and |y/depth| slightly past the frustum edges, from a perspective projection.
-glm::vec2 frustumSlopes(const glm::mat4& proj) {
-    const float sx = (1.0f + std::fabs(proj[2][0])) / std::fmax(std::fabs(proj[0][0]), 1e-6f);
-    const float sy = (1.0f + std::fabs(proj[2][1])) / std::fmax(std::fabs(proj[1][1]), 1e-6f);
-    return glm::vec2(sx, sy) * 1.02f;
 }
 
 const std::vector<ColorStop>& whiteRamp() {
@@ -403,116 +378,6 @@ void ParticleRenderer::setRampRows(const ParticleBatch* batches, int batchCount)
         rampInputs_.push_back(batches[b].desc ? &batches[b].desc->particle.colorRamp : &whiteRamp());
     }
     ramp_.setRows(rampInputs_);
-}
-
-void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes, bool halfZ,
-                                   uint32_t opacity, uint32_t tiles, uint32_t coarse) {
-    const DrawList& list = record.list;
-    const ViewInfo& view = record.view;
-    glActiveTexture(GL_TEXTURE0);
-    ramp_.upload();
-    stream_.upload(list.instances.data(), list.particleCount());
-
-    glEnable(GL_BLEND);
-    glBlendEquation(GL_FUNC_ADD);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_SCISSOR_TEST);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    bindTextureUnit(kAtlasUnit, atlas_.texture());
-    bindTextureUnit(kRampUnit, ramp_.texture());
-    bindTextureUnit(kSceneDepthUnit, sceneDepth);
-    if (record.lit) {
-        bindTextureUnit(kOpacityUnit, opacity);
-    }
-    const bool classified = tiles != 0 && coarse != 0 && classifier_;
-    if (classified) {
-        bindTextureUnit(FadeClassifier::kTileUnit, tiles);
-        bindTextureUnit(FadeClassifier::kCoarseUnit, coarse);
-    }
-
-    const glm::vec2 slopes = frustumSlopes(view.proj);
-    // Trimmed billboards: the LOD estimate needs the target's height in pixels (the viewport the
-    // pass bound: full or half resolution).
-    static_assert(TrimmedShapes::kFrames * TrimmedShapes::kMaxBuckets * TrimmedShapes::kMaxVertices / 2 == 128,
-                  "uShapes[128] in vs_particles.glsl");
-    GLint viewport[4] = {0, 0, 1, 1};
-    glGetIntegerv(GL_VIEWPORT, viewport);
-    const bool trimmable = record.shape == ParticleShape::Trimmed && !shapeTable_.empty();
-    const float lodScale = 2.0f * float(atlas_.cellTexels()) /
-                           std::fmax(std::fabs(view.proj[1][1]) * float(std::max(viewport[3], 1)), 1e-6f);
-    for (const DrawBatch& batch : list.batches) {
-        const ParticlePrograms::Variant variant =
-            ParticlePrograms::variantFor(batch.technique, quarterRes, batch.contrastPower);
-        // Lit when the host set a light and the reaction takes it; unlit if the lit build failed.
-        const bool lit = record.lit && batch.lighting.lit(batch.blend) && programs_->get(variant, true).program;
-        // Soft and spherical batches take the classified build when the tiles are there.
-        const ParticleProgram& classifiedProgram =
-            classified && batch.technique != Technique::Hard ? classifier_->program(variant, lit) : ParticleProgram{};
-        const ParticleProgram& p = classifiedProgram.program ? classifiedProgram : programs_->get(variant, lit);
-        if (!p.program) continue;
-        if (record.lit) bindTextureUnit(kAtlasUnit, lit ? atlas_.litTexture() : atlas_.texture());
-        // Full resolution tests against the host's z-buffer without writing it. Hard particles
-        // always do (that is their look). Soft and spherical ones only skip fragments there that
-        // would shade to nothing (behind geometry their fade / visible chord is 0), which needs a
-        // z-buffer whose precision holds at any near/far ratio: reversed-Z. With standard depth a
-        // 24-bit buffer at near 0.01, far 1e5 cannot tell 1 m apart at 10 km, so they stay
-        // untested there and the fade alone hides them. (Quarter res has no z-buffer.)
-        // Quarter res: the half-res z-buffer QuarterResPath::beginQuarter filled (reversed-Z only).
-        const bool zTest = quarterRes ? halfZ
-                                      : (batch.technique == Technique::Hard || view.depth == DepthConvention::ReversedZ);
-        if (zTest) {
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(view.depth == DepthConvention::ReversedZ ? GL_GEQUAL : GL_LEQUAL);
-        } else {
-            glDisable(GL_DEPTH_TEST);
-        }
-        if (batch.blend == BlendMode::Additive) {
-            glBlendFunc(GL_ONE, GL_ONE);
-        } else {
-            glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-        }
-        glUseProgram(p.program);
-        glUniformMatrix4fv(p.view, 1, GL_FALSE, &view.view[0][0]);
-        glUniformMatrix4fv(p.proj, 1, GL_FALSE, &view.proj[0][0]);
-        glUniform1f(p.nearPlane, view.nearPlane);
-        glUniform1f(p.farPlane, view.farPlane);
-        glUniform2f(p.slopeMax, slopes.x, slopes.y);
-        glUniform1f(p.rampRow, ramp_.rowV(batch.rampRow));
-        glUniform1i(p.blendMode, static_cast<int>(batch.blend));
-        glUniform1f(p.softScale, batch.softScale);
-        glUniform1f(p.contrastPower, batch.contrastPower);
-        int powerWhole = 0, powerHalf = 0;
-        if (ParticlePrograms::halfWholePower(batch.contrastPower, &powerWhole, &powerHalf)) {
-            glUniform1i(p.powerWhole, powerWhole);
-            glUniform1i(p.powerHalf, powerHalf);
-        }
-        glUniform1f(p.nearFade, batch.nearFade);
-        if (lit) setLightUniforms(p, batch, record, opacity);
-        glUniform1i(p.atlas, kAtlasUnit);
-        glUniform1i(p.ramp, kRampUnit);
-        glUniform1i(p.sceneDepth, kSceneDepthUnit);
-        if (p.tiles >= 0) {
-            glUniform1i(p.tiles, FadeClassifier::kTileUnit);
-            glUniform1i(p.tilesCoarse, FadeClassifier::kCoarseUnit);
-            glUniform2f(p.viewSize, float(view.width), float(view.height));
-        }
-        // Spherical particles trim to an octagon around the sphere, computed in the shader.
-        const bool trimmed = trimmable;
-        glUniform1i(p.trimmed, trimmed ? 1 : 0);
-        if (trimmed) {
-            glUniform1i(p.shapeBuckets, atlas_.shapes().buckets());
-            glUniform1f(p.lodScale, lodScale);
-            glUniform4fv(p.shapes, GLsizei(shapeTable_.size()), &shapeTable_[0][0]);
-        }
-        stream_.bindRange(batch.first);
-        if (trimmed) {
-            glDrawArraysInstanced(GL_TRIANGLE_FAN, 0, TrimmedShapes::kMaxVertices, batch.count);
-        } else {
-            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, batch.count);
-        }
-    }
 }
 
 }  // namespace fx

@@ -111,6 +111,9 @@ public:
     const InstanceStream& instanceStream() const { return stream_; }
 
 private:
+    /// Texture units of the particle draws (all below GlStateGuard::kTextureUnits).
+    static constexpr int kAtlasUnit = 0, kRampUnit = 1, kSceneDepthUnit = 2, kOpacityUnit = 3;
+
     /// One view's recorded draw, shared with the pass bodies until the host has run them.
     struct ViewRecord {
         ViewInfo view;

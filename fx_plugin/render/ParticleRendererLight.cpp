@@ -8,9 +8,6 @@
 #include "GlStateGuard.h"
 
 namespace fx {
-namespace {
-constexpr int kOpacityUnit = 3;  // ParticleRenderer.cpp binds it
-}  // namespace
 
 SmokeShadow ParticleRenderer::declareShadowPasses(const ViewInfo& view, FrameBuilder& frame,
                                                   const ParticleBatch* batches, int batchCount) {
@@ -36,14 +33,13 @@ SmokeShadow ParticleRenderer::declareOpacityPass(const ViewInfo& view, FrameBuil
     const Target target = shadow.opacity;
     frame.addPass(SmokeOpacityMap::kPass, {}, {target}, [this, target](PassContext& ctx) {
         GlStateGuard guard;
-        if (FXGLAD_GL_KHR_debug) glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, SmokeOpacityMap::kPass);
+        DebugGroup group(SmokeOpacityMap::kPass);
         ctx.bindForDraw(target);
         glActiveTexture(GL_TEXTURE0);  // the ramp upload binds on the active unit: a guarded one
         ramp_.upload();
         std::vector<float> rows(rampInputs_.size());
         for (size_t i = 0; i < rows.size(); ++i) rows[i] = ramp_.rowV(int(i));
         opacity_->draw(atlas_.texture(), ramp_.texture(), rows);
-        if (FXGLAD_GL_KHR_debug) glPopDebugGroup();
     });
     return shadow;
 }
