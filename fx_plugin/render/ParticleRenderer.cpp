@@ -174,6 +174,7 @@ bool ParticleRenderer::reloadShaders(Diagnostics* out) {
     quarter_ = std::move(quarter);
     opacity_ = std::move(opacity);
     if (classifier) classifier_ = std::move(classifier);
+    classifierFailed_ = false;  // a classifier that failed to build gets another try with the new files
     log(LogLevel::Info, "fx: particle shaders reloaded from " + config_.shaderDir);
     return true;
 }
