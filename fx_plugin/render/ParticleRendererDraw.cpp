@@ -63,9 +63,9 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         // Lit when the host set a light and the reaction takes it; unlit if the lit build failed.
         const bool lit = record.lit && batch.lighting.lit(batch.blend) && programs_->get(variant, true).program;
         // Soft and spherical batches take the classified build when the tiles are there.
-        const ParticleProgram& classifiedProgram =
-            classified && batch.technique != Technique::Hard ? classifier_->program(variant, lit) : ParticleProgram{};
-        const ParticleProgram& p = classifiedProgram.program ? classifiedProgram : programs_->get(variant, lit);
+        const bool classifiable = classified && batch.technique != Technique::Hard &&
+                                  classifier_->program(variant, lit).program;
+        const ParticleProgram& p = classifiable ? classifier_->program(variant, lit) : programs_->get(variant, lit);
         if (!p.program) continue;
         if (record.lit) bindTextureUnit(kAtlasUnit, lit ? atlas_.litTexture() : atlas_.texture());
         // Full resolution tests against the host's z-buffer without writing it. Hard particles
