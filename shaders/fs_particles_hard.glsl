@@ -9,8 +9,8 @@ in vec3 vViewPos;
 in vec2 vLocal;
 flat in vec4 vRamp;
 flat in float vFade;
-flat in float vFrame;
-flat in float vRotation;
+flat in vec2 vCell;
+flat in vec2 vTurn;
 #ifdef FX_LIT
 in vec3 vSunLight;
 in float vPhase;
@@ -19,14 +19,14 @@ in float vPhase;
 layout(location = 0) out vec4 oColor;
 
 void main() {
-    vec4 texel = texture(uAtlas, atlasUV(vLocal, vFrame)) * insideFrame(vLocal);
+    vec4 texel = texture(uAtlas, atlasUV(vLocal, vCell)) * insideFrame(vLocal);
     float depth = -vViewPos.z;
     float coverage = texel.a * nearFadeFactor(depth);
 #ifdef FX_LINEAR_DEPTH_TEST
     coverage *= depth <= sceneDepthAt(gl_FragCoord.xy) ? 1.0 : 0.0;
 #endif
 #ifdef FX_LIT
-    texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vRotation), texel.a, vSunLight, vPhase);
+    texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vTurn), texel.a, vSunLight, vPhase);
 #endif
     oColor = shadeOutput(vRamp, vFade, texel, coverage);
 }

@@ -10,8 +10,8 @@ in vec3 vViewPos;
 in vec2 vLocal;
 flat in vec4 vRamp;
 flat in float vFade;
-flat in float vFrame;
-flat in float vRotation;
+flat in vec2 vCell;
+flat in vec2 vTurn;
 #ifdef FX_CLASSIFY
 flat in float vInFront;
 #endif
@@ -23,7 +23,7 @@ in float vPhase;
 layout(location = 0) out vec4 oColor;
 
 void main() {
-    vec4 texel = texture(uAtlas, atlasUV(vLocal, vFrame)) * insideFrame(vLocal);
+    vec4 texel = texture(uAtlas, atlasUV(vLocal, vCell)) * insideFrame(vLocal);
     float depth = -vViewPos.z;
 #ifdef FX_CLASSIFY
     // In front of the scene by more than the softness in every tile it covers: the fade is 1
@@ -35,7 +35,7 @@ void main() {
 #endif
     float coverage = texel.a * fade * nearFadeFactor(depth);
 #ifdef FX_LIT
-    texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vRotation), texel.a, vSunLight, vPhase);
+    texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vTurn), texel.a, vSunLight, vPhase);
 #endif
     oColor = shadeOutput(vRamp, vFade, texel, coverage);
 }

@@ -16,9 +16,9 @@
 in vec3 vViewPos;
 flat in vec4 vRamp;
 flat in float vFade;
-flat in float vFrame;
+flat in vec2 vCell;
 flat in vec4 vSphere;
-flat in float vRotation;
+flat in vec2 vTurn;  // (cos, sin) of the particle's angle / radius
 #ifdef FX_CLASSIFY
 flat in float vInFront;
 #endif
@@ -30,38 +30,40 @@ in float vPhase;
 layout(location = 0) out vec4 oColor;
 
 void main() {
-    vec3 dir = normalize(vViewPos);
-    float depthPerMetre = max(-dir.z, 1e-4);  // view depth gained per metre along the ray
+    // The ray through this pixel, not normalised: it gains -ray.z of view depth per unit of its
+    // parameter t, and the chord is worked out in view depth directly (one division).
+    vec3 ray = vViewPos;
     vec3 centre = vSphere.xyz;
     float r = vSphere.w;
-    float tMid = dot(centre, dir);            // ray parameter of the closest approach
-    vec3 offset = dir * tMid - centre;
+    float invLen2 = 1.0 / dot(ray, ray);
+    float tMid = dot(centre, ray) * invLen2;  // ray parameter of the closest approach
+    vec3 offset = ray * tMid - centre;
     float d2 = dot(offset, offset);
 
     // Sampled before any discard: the atlas needs derivatives from the whole 2x2 quad.
-    vec4 texel = texture(uAtlas, atlasUV(rotate2(offset.xy / r, vRotation), vFrame));
+    vec4 texel = texture(uAtlas, atlasUV(turnBy(offset.xy, vTurn), vCell));
     if (d2 >= r * r) discard;
 
-    float halfChord = sqrt(r * r - d2);
-    float tNear = uNear / depthPerMetre;
+    float depthPerT = -ray.z;  // > 0: the quad lies at or past the near plane
+    float halfDepth = sqrt((r * r - d2) * invLen2) * depthPerT;
+    float midZ = tMid * depthPerT;
 #ifdef FX_CLASSIFY
     // Wholly in front of the scene in its tiles (particles_classify.glsl): the chord's exit is
     // never clipped, and the scene depth is not read.
-    float tScene = 3.0e38;
-    if (vInFront == 0.0) tScene = sceneDepthAt(gl_FragCoord.xy) / depthPerMetre;
+    float sceneZ = 3.0e38;
+    if (vInFront == 0.0) sceneZ = sceneDepthAt(gl_FragCoord.xy);
 #else
-    float tScene = sceneDepthAt(gl_FragCoord.xy) / depthPerMetre;
+    float sceneZ = sceneDepthAt(gl_FragCoord.xy);
 #endif
-    float t0 = max(tMid - halfChord, tNear);
-    float t1 = min(tMid + halfChord, tScene);
-    float visible = clamp((t1 - t0) / (2.0 * halfChord), 0.0, 1.0);
-    float midDepth = 0.5 * (t0 + t1) * depthPerMetre;
-    float coverage = texel.a * visible * nearFadeFactor(max(midDepth, uNear));
+    float z0 = max(midZ - halfDepth, uNear);
+    float z1 = min(midZ + halfDepth, sceneZ);
+    float visible = clamp((z1 - z0) / (2.0 * halfDepth), 0.0, 1.0);
+    float coverage = texel.a * visible * nearFadeFactor(max(0.5 * (z0 + z1), uNear));
 #ifdef FX_LIT
     // The sphere's normal where the visible chord starts, bent by the atlas's normal map.
-    vec3 entry = dir * t0;
+    vec3 entry = ray * (z0 / depthPerT);
     vec3 bumps = atlasNormal(texel);
-    vec3 n = normalize((entry - centre) / r + uNormalStrength * 0.6 * vec3(rotate2(bumps.xy, -vRotation), 0.0));
+    vec3 n = normalize((entry - centre) / r + uNormalStrength * 0.6 * vec3(turnBack(bumps.xy, vTurn) * r, 0.0));
     texel.rgb = texel.bbb * smokeLight(n, texel.a, vSunLight, vPhase);
 #endif
     oColor = shadeOutput(vRamp, vFade, texel, coverage);

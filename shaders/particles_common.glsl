@@ -41,16 +41,30 @@ float rampU(float life) {
     return (clamp(life, 0.0, 1.0) * (kRampTexels - 1.0) + 0.5) / kRampTexels;
 }
 
-// Atlas coordinate of a particle-space point `local` in [-1, 1]^2 (+y up, already rotated) on
-// atlas frame `frame`. Rotated corners leave the unit square: they are clamped onto the cell
-// border, where the atlas alpha is exactly 0, so no neighbouring frame ever bleeds in.
-vec2 atlasUV(vec2 local, float frame) {
-    local = clamp(local, -1.0, 1.0);
+// The atlas coordinate of frame `frame`'s top-left corner (frames row-major from the top-left
+// of the 2x2 atlas). The vertex shader passes it flat, so fragments do no integer work for it.
+vec2 atlasCell(float frame) {
     int f = clamp(int(frame + 0.5), 0, 3);
-    vec2 cell = vec2(float(f & 1), float(f >> 1));
-    // The PNG is uploaded top row first, so t = 0 is the image's top: +y (up) goes to smaller t.
-    vec2 inCell = vec2(0.5 + 0.5 * local.x, 0.5 - 0.5 * local.y);
-    return (cell + inCell) * 0.5;
+    return vec2(float(f & 1), float(f >> 1)) * 0.5;
+}
+
+// Atlas coordinate of a particle-space point `local` in [-1, 1]^2 (+y up, already rotated) in
+// the frame whose corner is `cell` (atlasCell). Rotated corners leave the unit square: they are
+// clamped onto the cell border, where the atlas alpha is exactly 0, so no neighbouring frame
+// ever bleeds in. The PNG is uploaded top row first, so t = 0 is the image's top: +y (up) goes
+// to smaller t.
+vec2 atlasUV(vec2 local, vec2 cell) {
+    local = clamp(local, -1.0, 1.0);
+    return cell + vec2(0.25 + 0.25 * local.x, 0.25 - 0.25 * local.y);
+}
+
+// `v` turned by the angle whose (cos, sin) is `turn` (rotate2 with the sine and cosine computed
+// once per particle in the vertex shader), and turned back by it.
+vec2 turnBy(vec2 v, vec2 turn) {
+    return vec2(turn.x * v.x - turn.y * v.y, turn.y * v.x + turn.x * v.y);
+}
+vec2 turnBack(vec2 v, vec2 turn) {
+    return vec2(turn.x * v.x + turn.y * v.y, turn.x * v.y - turn.y * v.x);
 }
 
 // 1 inside the frame's square [-1, 1]^2 (less a 1/256 rim), 0 outside. A rotated quad's corners
@@ -153,10 +167,11 @@ vec3 atlasNormal(vec4 litTexel) {
 }
 
 // A billboard's shading normal in view space: the atlas normal turned with the sprite (texture
-// axes are the screen axes rotated by `rotation`), against a flat card facing the camera.
-vec3 billboardNormal(vec4 litTexel, float rotation) {
+// axes are the screen axes rotated by the particle's angle, whose (cos, sin) is `turn`), against
+// a flat card facing the camera.
+vec3 billboardNormal(vec4 litTexel, vec2 turn) {
     vec3 n = atlasNormal(litTexel);
-    vec3 turned = vec3(rotate2(n.xy, -rotation), n.z);
+    vec3 turned = vec3(turnBack(n.xy, turn), n.z);
     return normalize(mix(vec3(0.0, 0.0, 1.0), turned, uNormalStrength));
 }
 

@@ -42,9 +42,9 @@ out vec3 vViewPos;       // view-space position on the quad
 out vec2 vLocal;         // billboards: rotated particle-space coordinate, [-1,1]^2 inside the quad
 flat out vec4 vRamp;     // ramp colour at this particle's life, straight alpha
 flat out float vFade;    // life fade
-flat out float vFrame;   // atlas frame
+flat out vec2 vCell;     // atlas coordinate of the frame's corner (atlasCell)
 flat out vec4 vSphere;   // spherical: view-space centre, radius
-flat out float vRotation;
+flat out vec2 vTurn;     // (cos, sin) of the particle's angle; spherical: divided by the radius
 #ifdef FX_CLASSIFY
 flat out float vInFront; // 1: the fade is exactly 1 over the whole particle (no depth fetch)
 #endif
@@ -76,8 +76,8 @@ vec2 slopeRange(float a, float depth, float r, float smax) {
 void main() {
     vRamp = texture(uRamp, vec2(rampU(aLifeRotFadeFrame.x), uRampRow));
     vFade = aLifeRotFadeFrame.z;
-    vFrame = aLifeRotFadeFrame.w;
-    vRotation = aLifeRotFadeFrame.y;
+    vCell = atlasCell(aLifeRotFadeFrame.w);
+    vTurn = vec2(cos(aLifeRotFadeFrame.y), sin(aLifeRotFadeFrame.y));
     float radius = 0.5 * aPosSize.w;
 
 #ifdef FX_SPHERICAL
@@ -115,6 +115,7 @@ void main() {
     }
     vec3 viewPos = vec3(slope * quadDepth, -quadDepth);
     vSphere = vec4(centre, radius);
+    vTurn /= radius;  // the fragment shader turns offsets from the centre into units of radius
     vLocal = vec2(0.0);
 #else
     vec3 right = normalize(vec3(uView[0][0], uView[1][0], uView[2][0]));
