@@ -1,9 +1,10 @@
 #version 330 core
 // Soft particles (000 section 2.7): the quad fades out where it approaches the scene behind it,
 // fade = saturate((scene_depth - particle_depth) / softness), shaped by the contrast curve.
-// Both depths are linear view-space metres, so the fade is exact at any near/far ratio; the
-// renderer therefore does not depth-test soft particles (a 24-bit z-buffer with near 0.01 and
-// far 100 km cannot tell 1 m apart at 10 km), the fade alone hides what is behind geometry.
+// Both depths are linear view-space metres, so the fade is exact at any near/far ratio. The
+// renderer depth-tests soft particles only against a reversed-Z float z-buffer, which keeps that
+// precision too; against a standard 24-bit one (near 0.01 and far 100 km cannot tell 1 m apart
+// at 10 km) it does not, and the fade alone hides what is behind geometry.
 #include "particles_common.glsl"
 
 in vec3 vViewPos;

@@ -3,8 +3,9 @@
 // Conventions: view space is right-handed with the camera looking down -Z. "Depth" is always
 // the positive linear view-space distance along the view axis in metres: what the host's
 // FrameBuilder::sceneDepth() holds in its R32F attachment, and what the particle shaders
-// compute for their own fragments (no z-buffer values are compared, so precision does not
-// depend on the near/far ratio).
+// compute for their own fragments (the fade compares these, never z-buffer values, so its
+// precision does not depend on the near/far ratio; the z-test that culls hidden fragments is
+// the renderer's, and only where the host's z-buffer is reversed-Z float).
 //
 // Colour: the ramp and the atlas hold straight (not premultiplied) alpha. Every fragment shader
 // writes premultiplied colour through shadeOutput(), which the renderer blends with

@@ -43,6 +43,8 @@ ParticleProgram locate(GLuint program) {
     p.shapeBuckets = glGetUniformLocation(program, "uShapeBuckets");
     p.lodScale = glGetUniformLocation(program, "uLodScale");
     p.shapes = glGetUniformLocation(program, "uShapes");
+    p.shapeInfo = glGetUniformLocation(program, "uShapeInfo");
+    p.pixelSlope = glGetUniformLocation(program, "uPixelSlope");
     p.powerWhole = glGetUniformLocation(program, "uPowerWhole");
     p.powerHalf = glGetUniformLocation(program, "uPowerHalf");
     p.sunView = glGetUniformLocation(program, "uSunView");

@@ -24,7 +24,7 @@ struct ParticleProgram {
     int view = -1, proj = -1, nearPlane = -1, farPlane = -1, slopeMax = -1;
     int rampRow = -1, blendMode = -1, softScale = -1, contrastPower = -1, nearFade = -1;
     int atlas = -1, ramp = -1, sceneDepth = -1;
-    int trimmed = -1, shapeBuckets = -1, lodScale = -1, shapes = -1;
+    int trimmed = -1, shapeBuckets = -1, lodScale = -1, shapes = -1, shapeInfo = -1, pixelSlope = -1;
     int powerWhole = -1, powerHalf = -1;
     // FX_CLASSIFY only (FadeClassifier.h).
     int tiles = -1, tilesCoarse = -1, viewSize = -1;

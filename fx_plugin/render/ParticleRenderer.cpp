@@ -110,6 +110,8 @@ bool ParticleRenderer::ensureLoaded() {
     stream_.create();
     ramp_.upload();
     shapeTable_ = atlas_.shapes().packed();
+    discTable_ = atlas_.shapes().packed(TrimmedShapes::Clip::Disc);
+    discInfo_ = atlas_.shapes().packedInfo(TrimmedShapes::Clip::Disc);
     if (!config_.shaderDir.empty()) shaderStamp_ = shaderStamp();
     state_ = State::Ready;
     return true;

@@ -161,6 +161,8 @@ private:
     std::unique_ptr<FadeClassifier> classifier_;  ///< built on first use
     FadeClassCounts counts_;
     std::vector<glm::vec4> shapeTable_;  ///< atlas_.shapes().packed(), uploaded per draw
+    std::vector<glm::vec4> discTable_;   ///< the same for spheres (TrimmedShapes::Clip::Disc)
+    std::vector<glm::vec4> discInfo_;    ///< and their (inradius, area share)
     bool quarterFallbackLogged_ = false;
     Diagnostics loadDiagnostics_;  ///< what went wrong while loading (prepare() hands them out)
     SmokeAtlas atlas_;

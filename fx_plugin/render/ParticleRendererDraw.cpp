@@ -52,11 +52,15 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
     // pass bound: full or half resolution).
     static_assert(TrimmedShapes::kFrames * TrimmedShapes::kMaxBuckets * TrimmedShapes::kMaxVertices / 2 == 128,
                   "uShapes[128] in vs_particles.glsl");
+    static_assert(TrimmedShapes::kFrames * TrimmedShapes::kMaxBuckets / 2 == 16, "uShapeInfo[16] in vs_particles.glsl");
     GLint viewport[4] = {0, 0, 1, 1};
     glGetIntegerv(GL_VIEWPORT, viewport);
     const bool trimmable = record.shape == ParticleShape::Trimmed && !shapeTable_.empty();
     const float lodScale = 2.0f * float(atlas_.cellTexels()) /
                            std::fmax(std::fabs(view.proj[1][1]) * float(std::max(viewport[3], 1)), 1e-6f);
+    // Spheres: one pixel of the target in ray slope (y/depth; square pixels), for the margin
+    // their bounds keep against the rasteriser's snapping.
+    const float pixelSlope = 2.0f / std::fmax(std::fabs(view.proj[1][1]) * float(std::max(viewport[3], 1)), 1e-6f);
     for (const DrawBatch& batch : list.batches) {
         const ParticlePrograms::Variant variant =
             ParticlePrograms::variantFor(batch.technique, quarterRes, batch.contrastPower);
@@ -94,6 +98,7 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         glUniform1f(p.nearPlane, view.nearPlane);
         glUniform1f(p.farPlane, view.farPlane);
         glUniform2f(p.slopeMax, slopes.x, slopes.y);
+        glUniform1f(p.pixelSlope, pixelSlope);
         glUniform1f(p.rampRow, ramp_.rowV(batch.rampRow));
         glUniform1i(p.blendMode, static_cast<int>(batch.blend));
         glUniform1f(p.softScale, batch.softScale);
@@ -113,13 +118,17 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
             glUniform1i(p.tilesCoarse, FadeClassifier::kCoarseUnit);
             glUniform2f(p.viewSize, float(view.width), float(view.height));
         }
-        // Spherical particles trim to an octagon around the sphere, computed in the shader.
+        // Spherical particles trim to their frame's polygon clipped to the disc (the octagon
+        // around the sphere where its bounds do not hold: vs_particles.glsl).
         const bool trimmed = trimmable;
         glUniform1i(p.trimmed, trimmed ? 1 : 0);
         if (trimmed) {
+            const bool sphere = variant == ParticlePrograms::Spherical;
+            const std::vector<glm::vec4>& table = sphere ? discTable_ : shapeTable_;
             glUniform1i(p.shapeBuckets, atlas_.shapes().buckets());
             glUniform1f(p.lodScale, lodScale);
-            glUniform4fv(p.shapes, GLsizei(shapeTable_.size()), &shapeTable_[0][0]);
+            glUniform4fv(p.shapes, GLsizei(table.size()), &table[0][0]);
+            if (sphere) glUniform4fv(p.shapeInfo, GLsizei(discInfo_.size()), &discInfo_[0][0]);
         }
         stream_.bindRange(batch.first);
         if (trimmed) {

@@ -74,6 +74,61 @@ std::vector<Point> reduce(std::vector<Point> poly, size_t maxVertices) {
     return poly;
 }
 
+double area(const std::vector<Point>& poly) {
+    double a = 0.0;
+    for (size_t i = 0; i < poly.size(); ++i) a += cross(Point(0.0), poly[i], poly[(i + 1) % poly.size()]);
+    return 0.5 * std::fabs(a);
+}
+
+// The part of convex polygon `poly` (counter-clockwise) on the side n.x <= 1 of a line
+// (Sutherland-Hodgman against one half-plane).
+std::vector<Point> clipHalfPlane(const std::vector<Point>& poly, const Point& n) {
+    std::vector<Point> out;
+    const size_t count = poly.size();
+    for (size_t i = 0; i < count; ++i) {
+        const Point& a = poly[i];
+        const Point& b = poly[(i + 1) % count];
+        const double da = glm::dot(n, a) - 1.0, db = glm::dot(n, b) - 1.0;
+        if (da <= 0.0) out.push_back(a);
+        if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0)) out.push_back(a + (b - a) * (da / (da - db)));
+    }
+    return out;
+}
+
+// Convex polygon `poly` clipped to a regular 64-gon circumscribed about the unit disc: it holds
+// poly's part of the disc, and is at most 1/cos(pi/64) - 1 = 0.12 % outside it.
+std::vector<Point> clipToDisc(std::vector<Point> poly) {
+    constexpr int kSides = 64;
+    for (int i = 0; i < kSides && poly.size() >= 3; ++i) {
+        const double a = 2.0 * 3.14159265358979323846 * double(i) / kSides;
+        poly = clipHalfPlane(poly, Point(std::cos(a), std::sin(a)));
+    }
+    return poly;
+}
+
+// The regular octagon circumscribed about the unit disc (inside the square): the disc polygon of
+// a frame whose clipped support cannot be reduced to kMaxVertices.
+std::vector<Point> discOctagon() {
+    std::vector<Point> p;
+    const double t = std::tan(3.14159265358979323846 / 8.0);
+    for (const Point& v : {Point(1, -t), Point(1, t), Point(t, 1), Point(-t, 1), Point(-1, t), Point(-1, -t),
+                           Point(-t, -1), Point(t, -1)}) {
+        p.push_back(v);
+    }
+    return p;
+}
+
+// Stores `poly` (counter-clockwise, at most kMaxVertices) padded by repeating its last vertex,
+// rounded to float and clamped to the square.
+template <size_t N>
+int store(const std::vector<Point>& poly, std::array<glm::vec2, N>* out) {
+    for (size_t i = 0; i < N; ++i) {
+        const Point p = poly.empty() ? Point(0.0) : poly[std::min(i, poly.size() - 1)];
+        (*out)[i] = glm::vec2(float(glm::clamp(p.x, -1.0, 1.0)), float(glm::clamp(p.y, -1.0, 1.0)));
+    }
+    return int(poly.size());
+}
+
 }  // namespace
 
 bool TrimmedShapes::compute(const uint8_t* rgba, int w, int h, int maxLevel) {
@@ -141,34 +196,54 @@ bool TrimmedShapes::compute(const uint8_t* rgba, int w, int h, int maxLevel) {
                     }
                 }
             }
-            std::vector<Point> hull = convexHull(pts);
+            const std::vector<Point> hull = convexHull(pts);
             std::vector<Point> poly = hull.size() >= 3 ? reduce(hull, kMaxVertices) : std::vector<Point>{};
             if (hull.size() >= 3 && poly.size() < 3) {
                 poly = {Point(-1, -1), Point(1, -1), Point(1, 1), Point(-1, 1)};
             }
-            std::array<glm::vec2, kMaxVertices>& out = polygons_[size_t(f)][size_t(b)];
-            counts_[size_t(f)][size_t(b)] = int(poly.size());
-            for (int i = 0; i < kMaxVertices; ++i) {
-                const Point p = poly.empty() ? Point(0.0) : poly[std::min(size_t(i), poly.size() - 1)];
-                // Rounded outwards to float, clamped to the square.
-                out[size_t(i)] = glm::vec2(float(glm::clamp(p.x, -1.0, 1.0)), float(glm::clamp(p.y, -1.0, 1.0)));
-            }
+            const size_t fi = size_t(f), bi = size_t(b);
+            square_.counts[fi][bi] = store(poly, &square_.polygons[fi][bi]);
+            // Spheres: the hull's part of the unit disc. Clipping keeps it convex and
+            // counter-clockwise; reduce() then only grows it, inside the square.
+            std::vector<Point> clipped = hull.size() >= 3 ? clipToDisc(hull) : std::vector<Point>{};
+            std::vector<Point> round = clipped.size() >= 3 ? reduce(clipped, kMaxVertices) : std::vector<Point>{};
+            if (clipped.size() >= 3 && round.size() < 3) round = discOctagon();
+            // Reducing the clipped polygon can give away more than the square's polygon, which
+            // holds the clipped support too: keep the smaller.
+            if (round.size() >= 3 && poly.size() >= 3 && area(poly) < area(round)) round = poly;
+            disc_.counts[fi][bi] = store(round, &disc_.polygons[fi][bi]);
         }
     }
     return true;
 }
 
-const std::array<glm::vec2, TrimmedShapes::kMaxVertices>& TrimmedShapes::polygon(int frame, int bucket) const {
-    return polygons_[size_t(glm::clamp(frame, 0, kFrames - 1))][size_t(glm::clamp(bucket, 0, std::max(0, buckets_ - 1)))];
+const std::array<glm::vec2, TrimmedShapes::kMaxVertices>& TrimmedShapes::polygon(int frame, int bucket, Clip clip) const {
+    return table(clip).polygons[size_t(glm::clamp(frame, 0, kFrames - 1))][size_t(glm::clamp(bucket, 0, std::max(0, buckets_ - 1)))];
 }
 
-int TrimmedShapes::vertexCount(int frame, int bucket) const {
-    return counts_[size_t(glm::clamp(frame, 0, kFrames - 1))][size_t(glm::clamp(bucket, 0, std::max(0, buckets_ - 1)))];
+int TrimmedShapes::vertexCount(int frame, int bucket, Clip clip) const {
+    return table(clip).counts[size_t(glm::clamp(frame, 0, kFrames - 1))][size_t(glm::clamp(bucket, 0, std::max(0, buckets_ - 1)))];
 }
 
-float TrimmedShapes::areaShare(int frame, int bucket) const {
-    const auto& p = polygon(frame, bucket);
-    const int n = vertexCount(frame, bucket);
+float TrimmedShapes::inradius(int frame, int bucket, Clip clip) const {
+    const auto& p = polygon(frame, bucket, clip);
+    const int n = vertexCount(frame, bucket, clip);
+    if (n < 3) return 0.0f;
+    double least = 1e30;
+    for (int i = 0; i < n; ++i) {
+        const glm::dvec2 a(p[size_t(i)]), b(p[size_t((i + 1) % n)]);
+        const double len = glm::length(b - a);
+        if (len <= 0.0) continue;
+        // Signed distance of (0, 0) to the edge's line, positive on the inner (left) side.
+        least = std::min(least, (a.x * b.y - a.y * b.x) / len);
+    }
+    // Rounded down to float, so the shader's growth never falls short.
+    return least > 0.0 && least < 1e30 ? std::nextafter(float(least), 0.0f) : 0.0f;
+}
+
+float TrimmedShapes::areaShare(int frame, int bucket, Clip clip) const {
+    const auto& p = polygon(frame, bucket, clip);
+    const int n = vertexCount(frame, bucket, clip);
     double a = 0.0;
     for (int i = 0; i < n; ++i) {
         const glm::vec2& u = p[size_t(i)];
@@ -178,15 +253,29 @@ float TrimmedShapes::areaShare(int frame, int bucket) const {
     return float(0.5 * std::fabs(a) / 4.0);
 }
 
-std::vector<glm::vec4> TrimmedShapes::packed() const {
+std::vector<glm::vec4> TrimmedShapes::packed(Clip clip) const {
     std::vector<glm::vec4> out;
     out.reserve(size_t(kFrames * buckets_ * kMaxVertices / 2));
     for (int f = 0; f < kFrames; ++f) {
         for (int b = 0; b < buckets_; ++b) {
-            const auto& p = polygons_[size_t(f)][size_t(b)];
+            const auto& p = table(clip).polygons[size_t(f)][size_t(b)];
             for (int i = 0; i < kMaxVertices; i += 2) out.emplace_back(p[size_t(i)], p[size_t(i + 1)]);
         }
     }
+    return out;
+}
+
+std::vector<glm::vec4> TrimmedShapes::packedInfo(Clip clip) const {
+    std::vector<float> flat;
+    for (int f = 0; f < kFrames; ++f) {
+        for (int b = 0; b < buckets_; ++b) {
+            flat.push_back(inradius(f, b, clip));
+            flat.push_back(areaShare(f, b, clip));
+        }
+    }
+    flat.resize((flat.size() + 3) / 4 * 4, 0.0f);
+    std::vector<glm::vec4> out;
+    for (size_t i = 0; i < flat.size(); i += 4) out.emplace_back(flat[i], flat[i + 1], flat[i + 2], flat[i + 3]);
     return out;
 }
 

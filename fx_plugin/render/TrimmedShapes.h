@@ -17,6 +17,12 @@
 // Coordinates are the particle's texture space: [-1, 1]^2, +y up, as atlasUV() takes them
 // (particles_common.glsl); every polygon lies inside that square, so no fragment samples outside
 // its cell's clamp range. Computed once when the atlas loads (a few ms for 512x512).
+//
+// Spherical billboards read the atlas at the ray's closest approach to the sphere's centre, in
+// units of the radius, which always lies inside the unit disc. Their polygons (Clip::Disc) hold
+// the same support clipped to that disc, and each comes with its inradius about the centre (the
+// distance from (0, 0) to its nearest edge), by which the vertex shader grows it to bound the
+// curved mapping from the screen to the atlas (vs_particles.glsl).
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -27,6 +33,10 @@ namespace fx {
 
 class TrimmedShapes {
 public:
+    /// Which region the polygons bound: the frame's square (billboards) or the square's
+    /// intersection with the unit disc (spherical billboards).
+    enum class Clip { Square, Disc };
+
     static constexpr int kFrames = 4;       ///< the 2x2 atlas
     static constexpr int kMaxVertices = 8;  ///< per polygon (a triangle fan, padded)
     static constexpr int kMaxBuckets = 8;   ///< LOD buckets kept (coarser ones use the last)
@@ -40,13 +50,19 @@ public:
     int buckets() const { return buckets_; }
     /// Polygon of `frame` for LOD bucket `bucket` (clamped), counter-clockwise, padded to
     /// kMaxVertices by repeating its last vertex (zero-area fan triangles).
-    const std::array<glm::vec2, kMaxVertices>& polygon(int frame, int bucket) const;
+    const std::array<glm::vec2, kMaxVertices>& polygon(int frame, int bucket, Clip clip = Clip::Square) const;
     /// Vertices before the padding.
-    int vertexCount(int frame, int bucket) const;
+    int vertexCount(int frame, int bucket, Clip clip = Clip::Square) const;
     /// Area of the polygon / area of the quad (4), for reports.
-    float areaShare(int frame, int bucket) const;
+    float areaShare(int frame, int bucket, Clip clip = Clip::Square) const;
+    /// Distance from the particle's centre (0, 0) to the nearest edge of the polygon; 0 when
+    /// the centre is not strictly inside it (no polygon, or a puff drawn off centre).
+    float inradius(int frame, int bucket, Clip clip = Clip::Square) const;
     /// Packed for the vertex shader: [frame][bucket][vertex] as (x, y) pairs, two per vec4.
-    std::vector<glm::vec4> packed() const;
+    std::vector<glm::vec4> packed(Clip clip = Clip::Square) const;
+    /// (inradius(), areaShare()) of every [frame][bucket], two pairs per vec4
+    /// (kFrames * kMaxBuckets / 2 of them).
+    std::vector<glm::vec4> packedInfo(Clip clip) const;
 
     /// True when sampling can return alpha > 0 at texture-space point `p` of `frame` on mip level
     /// `level` (the test's reference; bilinear support of that level's non-zero texels).
@@ -62,8 +78,12 @@ private:
     std::vector<Level> levels_;
     int cellW_ = 0, cellH_ = 0;  // base level cell size in texels
     int buckets_ = 0;
-    std::array<std::array<std::array<glm::vec2, kMaxVertices>, kMaxBuckets>, kFrames> polygons_{};
-    std::array<std::array<int, kMaxBuckets>, kFrames> counts_{};
+    struct Table {
+        std::array<std::array<std::array<glm::vec2, kMaxVertices>, kMaxBuckets>, kFrames> polygons{};
+        std::array<std::array<int, kMaxBuckets>, kFrames> counts{};
+    };
+    const Table& table(Clip clip) const { return clip == Clip::Disc ? disc_ : square_; }
+    Table square_, disc_;
 };
 
 }  // namespace fx

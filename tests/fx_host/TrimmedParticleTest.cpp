@@ -9,7 +9,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include <filesystem>
+
 #include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
 
 #include "FxTestHost.h"
 #include "../../fx_plugin/render/EmbeddedResources.h"
@@ -121,6 +124,61 @@ TEST(TrimmedShapes, PolygonsAreConvexInsideTheQuadAndLeaveOutTheTransparentCorne
     }
 }
 
+// Spherical billboards: the lookup point o.xy / r lies inside the unit disc. Every point of the
+// disc where the sampler can return alpha > 0 lies inside the frame's disc polygon, on every
+// level its bucket admits (exhaustive over the half-texel grid; rotation turns the disc onto
+// itself, so the sprite's angle does not matter here). The inradius the vertex shader grows the
+// polygon by is the true distance from the centre to the nearest edge.
+TEST(TrimmedShapes, DiscPolygonsHoldEverySampledTexelInsideTheUnitDisc) {
+    const AtlasPixels atlas = embeddedAtlas();
+    ASSERT_GT(atlas.w, 0);
+    fx::TrimmedShapes shapes;
+    ASSERT_TRUE(shapes.compute(atlas.rgba.data(), atlas.w, atlas.h, atlas.maxLevel));
+    using Clip = fx::TrimmedShapes::Clip;
+    const int steps = atlas.w;  // 2 * cell
+    long supported = 0;
+    for (int f = 0; f < fx::TrimmedShapes::kFrames; ++f) {
+        for (int b = 0; b < shapes.buckets(); ++b) {
+            const auto& poly = shapes.polygon(f, b, Clip::Disc);
+            const int n = shapes.vertexCount(f, b, Clip::Disc);
+            ASSERT_GE(n, 3) << "frame " << f << " bucket " << b;
+            ASSERT_LE(n, fx::TrimmedShapes::kMaxVertices);
+            const int topLevel = std::min(b, atlas.maxLevel);
+            for (int j = 0; j <= steps; ++j) {
+                for (int i = 0; i <= steps; ++i) {
+                    const glm::vec2 p(-1.0f + 2.0f * float(i) / float(steps), -1.0f + 2.0f * float(j) / float(steps));
+                    if (glm::dot(p, p) >= 1.0f) continue;
+                    bool any = false;
+                    for (int level = 0; level <= topLevel && !any; ++level) any = shapes.sampleSupport(f, level, p);
+                    if (!any) continue;
+                    ++supported;
+                    ASSERT_TRUE(fx::TrimmedShapes::contains(poly, n, p))
+                        << "frame " << f << " bucket " << b << " point (" << p.x << ", " << p.y << ")";
+                }
+            }
+            // Convex, counter-clockwise, inside the square; the inradius is the nearest edge's
+            // distance (rounded down).
+            double least = 1e30;
+            for (int k = 0; k < n; ++k) {
+                const glm::dvec2 a(poly[size_t(k)]), c(poly[size_t((k + 1) % n)]), d(poly[size_t((k + 2) % n)]);
+                EXPECT_LE(std::fabs(a.x), 1.0);
+                EXPECT_LE(std::fabs(a.y), 1.0);
+                EXPECT_GE((c.x - a.x) * (d.y - a.y) - (c.y - a.y) * (d.x - a.x), -1e-6) << "not convex";
+                least = std::min(least, (a.x * c.y - a.y * c.x) / glm::length(c - a));
+            }
+            const float r = shapes.inradius(f, b, Clip::Disc);
+            EXPECT_GT(r, 0.05f) << "the puffs are centred: the centre lies well inside";
+            EXPECT_LE(double(r), least);
+            EXPECT_GE(double(r), least - 1e-6);
+            std::printf("[ measured ] disc frame %d bucket %d: %d vertices, %.3f of the quad, inradius %.3f\n", f,
+                        b, n, double(shapes.areaShare(f, b, Clip::Disc)), double(r));
+        }
+        // The finest bucket really trims: the octagon around the disc covers 0.83 of the quad.
+        EXPECT_LT(shapes.areaShare(f, 0, Clip::Disc), 0.7f) << "frame " << f;
+    }
+    EXPECT_GT(supported, long(steps) * steps / 4) << "the atlas has almost nothing in it: the test would prove little";
+}
+
 TEST(TrimmedShapes, RejectsAtlasSizesItCannotSplit) {
     const uint8_t px[4 * 9] = {};
     fx::TrimmedShapes shapes;
@@ -210,6 +268,93 @@ TEST_F(TrimmedImageTest, TrimmedShapesDrawTheQuadsImage) {
         renderFrame(graph, bare, view, [](fx::FrameBuilder&) {});
         EXPECT_GT(maxAbsDiff(graph.readColor(), trimmed), 40);
     }
+}
+
+// Spherical billboards draw their frame's disc polygon, grown by the margins that carry it onto
+// the screen (vs_particles.glsl, sphereTrimVertex). Across a 100-degree frustum, centre to
+// corners, and from small far spheres (coarse LOD buckets) to near ones 50 degrees across
+// (where the margins give way to the octagon), with every frame and many angles, the trimmed
+// picture equals the full box's within 1/255.
+// A hard-edged atlas for it: opaque white shapes whose edge is where the alpha drops from 1 to 0
+// (a disc, a turned square, an off-centre blob, a triangle), so a fragment the polygon misses
+// costs a whole pixel of smoke, not the faint rim of a puff.
+std::string writeHardEdgedAtlas() {
+    constexpr int kSize = 256, kCell = kSize / 2;
+    std::vector<uint8_t> px(size_t(kSize) * kSize * 4, 0);
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const int f = (x / kCell) + 2 * (y / kCell);
+            // Texture space of the cell: [-1, 1]^2, +y up.
+            const float u = (float(x % kCell) + 0.5f) / kCell * 2.0f - 1.0f;
+            const float v = 1.0f - (float(y % kCell) + 0.5f) / kCell * 2.0f;
+            bool inside = false;
+            if (f == 0) inside = u * u + v * v < 0.8f;
+            if (f == 1) inside = std::fabs(u + v) < 1.0f && std::fabs(u - v) < 1.0f;
+            if (f == 2) inside = (u - 0.25f) * (u - 0.25f) / 0.5f + (v + 0.1f) * (v + 0.1f) / 0.3f < 1.0f;
+            if (f == 3) inside = v > -0.6f && v < 0.9f - 1.7f * std::fabs(u);
+            uint8_t* p = &px[(size_t(y) * kSize + size_t(x)) * 4];
+            p[0] = p[1] = p[2] = 255;
+            p[3] = inside ? 255 : 0;
+        }
+    }
+    const std::string dir = scratchDir() + "/hard_atlas";
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) return std::string();
+    const std::string path = dir + "/" + fx::SmokeAtlas::kFileName;
+    return stbi_write_png(path.c_str(), kSize, kSize, 4, px.data(), kSize * 4) ? dir : std::string();
+}
+
+TEST_F(TrimmedImageTest, SphericalPolygonsDrawTheQuadsImageAcrossTheFrustum) {
+    constexpr int kW = 320, kH = 240;
+    TestFrameGraph graph(kW, kH);
+    TestScene scene;
+    const std::string atlasDir = writeHardEdgedAtlas();
+    ASSERT_FALSE(atlasDir.empty());
+    DirectParticles hardEdged(&host, std::string(), atlasDir);
+    const auto drawHardEdged = [&](const fx::ViewInfo& v) {
+        renderFrame(graph, scene, v, [&](fx::FrameBuilder& f) { drawn = hardEdged.declare(v, f); });
+        return graph.readColor();
+    };
+    fx::ViewInfo view = makeView(glm::vec3(0.0f), glm::vec3(0, 0, -1), kW, kH);
+    view.proj = glm::perspective(glm::radians(100.0f), float(kW) / float(kH), view.nearPlane, view.farPlane);
+    const glm::mat4 toWorld = glm::inverse(view.view);
+    hardEdged.desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(1.0f)}};
+    hardEdged.options.techniqueOverride = fx::Technique::Spherical;
+    const float halfY = glm::radians(50.0f), halfX = std::atan(std::tan(halfY) * kW / kH);
+    int cases = 0;
+    for (float sinA : {0.03f, 0.1f, 0.22f, 0.42f}) {
+        const float a = std::asin(sinA), step = 2.3f * a;
+        std::vector<HandParticle> ps;
+        for (float ay = -halfY + a; ay <= halfY - 0.2f * a; ay += step) {
+            for (float ax = -halfX + a; ax <= halfX - 0.2f * a; ax += step) {
+                const int i = int(ps.size());
+                const float dist = (i % 2) ? 30.0f : 4.0f;
+                const glm::vec3 dir = glm::normalize(glm::vec3(std::tan(ax), std::tan(ay), -1.0f));
+                HandParticle p;
+                p.position = glm::vec3(toWorld * glm::vec4(dir * dist, 1.0f));
+                p.size = 2.0f * sinA * dist;
+                p.frame = i % 4;
+                p.rotation = 0.9f * float(i % 7);
+                ps.push_back(p);
+            }
+        }
+        ASSERT_GE(ps.size(), 4u);
+        hardEdged.set(ps);
+        hardEdged.renderer.setParticleShape(fx::ParticleShape::Quad);
+        const Image quads = drawHardEdged(view);
+        ASSERT_EQ(drawn, int(ps.size()));
+        hardEdged.renderer.setParticleShape(fx::ParticleShape::Trimmed);
+        const Image trimmed = drawHardEdged(view);
+        writePng(scratchDir() + "/spherical_trimmed_" + std::to_string(cases) + ".png", trimmed);
+        EXPECT_LE(maxAbsDiff(trimmed, quads), 1) << "sin A " << sinA << ", " << ps.size() << " spheres";
+        // Not vacuous: the smoke is in the picture.
+        TestScene bare = scene;
+        renderFrame(graph, bare, view, [](fx::FrameBuilder&) {});
+        EXPECT_GT(maxAbsDiff(graph.readColor(), trimmed), 100) << "sin A " << sinA;
+        ++cases;
+    }
+    EXPECT_EQ(cases, 4);
 }
 
 // A reversed-Z host with a 32-bit float z-buffer: soft and spherical particles are depth-tested
