@@ -273,8 +273,8 @@ TEST_F(TrimmedImageTest, TrimmedShapesDrawTheQuadsImage) {
 // Spherical billboards draw their frame's disc polygon, grown by the margins that carry it onto
 // the screen (vs_particles.glsl, sphereTrimVertex). Across a 100-degree frustum, centre to
 // corners, and from small far spheres (coarse LOD buckets) to near ones 50 degrees across
-// (where the margins give way to the octagon), with every frame and many angles, the trimmed
-// picture equals the full box's within 1/255.
+// (where the margins give way to the octagon), with every frame and many angles, at full and at
+// quarter resolution, the trimmed picture equals the full box's within 1/255.
 // A hard-edged atlas for it: opaque white shapes whose edge is where the alpha drops from 1 to 0
 // (a disc, a turned square, an off-centre blob, a triangle), so a fragment the polygon misses
 // costs a whole pixel of smoke, not the faint rim of a puff.
@@ -323,38 +323,43 @@ TEST_F(TrimmedImageTest, SphericalPolygonsDrawTheQuadsImageAcrossTheFrustum) {
     hardEdged.options.techniqueOverride = fx::Technique::Spherical;
     const float halfY = glm::radians(50.0f), halfX = std::atan(std::tan(halfY) * kW / kH);
     int cases = 0;
-    for (float sinA : {0.03f, 0.1f, 0.22f, 0.42f}) {
-        const float a = std::asin(sinA), step = 2.3f * a;
-        std::vector<HandParticle> ps;
-        for (float ay = -halfY + a; ay <= halfY - 0.2f * a; ay += step) {
-            for (float ax = -halfX + a; ax <= halfX - 0.2f * a; ax += step) {
-                const int i = int(ps.size());
-                const float dist = (i % 2) ? 30.0f : 4.0f;
-                const glm::vec3 dir = glm::normalize(glm::vec3(std::tan(ax), std::tan(ay), -1.0f));
-                HandParticle p;
-                p.position = glm::vec3(toWorld * glm::vec4(dir * dist, 1.0f));
-                p.size = 2.0f * sinA * dist;
-                p.frame = i % 4;
-                p.rotation = 0.9f * float(i % 7);
-                ps.push_back(p);
+    for (bool quarter : {false, true}) {
+        hardEdged.options.quarterRes = quarter;
+        for (float sinA : {0.03f, 0.1f, 0.22f, 0.42f}) {
+            const float a = std::asin(sinA), step = 2.3f * a;
+            std::vector<HandParticle> ps;
+            for (float ay = -halfY + a; ay <= halfY - 0.2f * a; ay += step) {
+                for (float ax = -halfX + a; ax <= halfX - 0.2f * a; ax += step) {
+                    const int i = int(ps.size());
+                    const float dist = (i % 2) ? 30.0f : 4.0f;
+                    const glm::vec3 dir = glm::normalize(glm::vec3(std::tan(ax), std::tan(ay), -1.0f));
+                    HandParticle p;
+                    p.position = glm::vec3(toWorld * glm::vec4(dir * dist, 1.0f));
+                    p.size = 2.0f * sinA * dist;
+                    p.frame = i % 4;
+                    p.rotation = 0.9f * float(i % 7);
+                    ps.push_back(p);
+                }
             }
+            ASSERT_GE(ps.size(), 4u);
+            hardEdged.set(ps);
+            hardEdged.renderer.setParticleShape(fx::ParticleShape::Quad);
+            const Image quads = drawHardEdged(view);
+            ASSERT_EQ(drawn, int(ps.size()));
+            hardEdged.renderer.setParticleShape(fx::ParticleShape::Trimmed);
+            const Image trimmed = drawHardEdged(view);
+            writePng(scratchDir() + "/spherical_trimmed_" + std::to_string(cases) + ".png", trimmed);
+            EXPECT_LE(maxAbsDiff(trimmed, quads), 1) << "sin A " << sinA << ", " << ps.size() << " spheres"
+                                                     << (quarter ? ", quarter res" : "");
+            ASSERT_EQ(graph.ran("particles_quarter"), quarter);
+            // Not vacuous: the smoke is in the picture.
+            TestScene bare = scene;
+            renderFrame(graph, bare, view, [](fx::FrameBuilder&) {});
+            EXPECT_GT(maxAbsDiff(graph.readColor(), trimmed), 100) << "sin A " << sinA;
+            ++cases;
         }
-        ASSERT_GE(ps.size(), 4u);
-        hardEdged.set(ps);
-        hardEdged.renderer.setParticleShape(fx::ParticleShape::Quad);
-        const Image quads = drawHardEdged(view);
-        ASSERT_EQ(drawn, int(ps.size()));
-        hardEdged.renderer.setParticleShape(fx::ParticleShape::Trimmed);
-        const Image trimmed = drawHardEdged(view);
-        writePng(scratchDir() + "/spherical_trimmed_" + std::to_string(cases) + ".png", trimmed);
-        EXPECT_LE(maxAbsDiff(trimmed, quads), 1) << "sin A " << sinA << ", " << ps.size() << " spheres";
-        // Not vacuous: the smoke is in the picture.
-        TestScene bare = scene;
-        renderFrame(graph, bare, view, [](fx::FrameBuilder&) {});
-        EXPECT_GT(maxAbsDiff(graph.readColor(), trimmed), 100) << "sin A " << sinA;
-        ++cases;
     }
-    EXPECT_EQ(cases, 4);
+    EXPECT_EQ(cases, 8);
 }
 
 // A reversed-Z host with a 32-bit float z-buffer: soft and spherical particles are depth-tested
