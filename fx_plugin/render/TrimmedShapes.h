@@ -61,7 +61,7 @@ public:
     /// Packed for the vertex shader: [frame][bucket][vertex] as (x, y) pairs, two per vec4.
     std::vector<glm::vec4> packed(Clip clip = Clip::Square) const;
     /// (inradius(), areaShare()) of every [frame][bucket], two pairs per vec4
-    /// (kFrames * kMaxBuckets / 2 of them).
+    /// (kFrames * buckets() / 2 of them).
     std::vector<glm::vec4> packedInfo(Clip clip) const;
 
     /// True when sampling can return alpha > 0 at texture-space point `p` of `frame` on mip level
