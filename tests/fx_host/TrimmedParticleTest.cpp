@@ -307,22 +307,30 @@ std::string writeHardEdgedAtlas() {
     return stbi_write_png(path.c_str(), kSize, kSize, 4, px.data(), kSize * 4) ? dir : std::string();
 }
 
-TEST_F(TrimmedImageTest, SphericalPolygonsDrawTheQuadsImageAcrossTheFrustum) {
-    constexpr int kW = 320, kH = 240;
-    TestFrameGraph graph(kW, kH);
-    TestScene scene;
-    const std::string atlasDir = writeHardEdgedAtlas();
-    ASSERT_FALSE(atlasDir.empty());
-    DirectParticles hardEdged(&host, std::string(), atlasDir);
-    const auto drawHardEdged = [&](const fx::ViewInfo& v) {
+// Opaque white spherical particles drawn with the hard-edged atlas over an empty scene.
+class HardEdgedSphereTest : public TrimmedImageTest {
+protected:
+    static constexpr int kW = 320, kH = 240;
+    HardEdgedSphereTest() {
+        hardEdged.desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(1.0f)}};
+        hardEdged.options.techniqueOverride = fx::Technique::Spherical;
+    }
+    Image drawHardEdged(const fx::ViewInfo& v) {
         renderFrame(graph, scene, v, [&](fx::FrameBuilder& f) { drawn = hardEdged.declare(v, f); });
         return graph.readColor();
-    };
+    }
+
+    TestFrameGraph graph{kW, kH};
+    TestScene scene;
+    const std::string atlasDir = writeHardEdgedAtlas();
+    DirectParticles hardEdged{&host, std::string(), atlasDir};
+};
+
+TEST_F(HardEdgedSphereTest, SphericalPolygonsDrawTheQuadsImageAcrossTheFrustum) {
+    ASSERT_FALSE(atlasDir.empty());
     fx::ViewInfo view = makeView(glm::vec3(0.0f), glm::vec3(0, 0, -1), kW, kH);
     view.proj = glm::perspective(glm::radians(100.0f), float(kW) / float(kH), view.nearPlane, view.farPlane);
     const glm::mat4 toWorld = glm::inverse(view.view);
-    hardEdged.desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(1.0f)}};
-    hardEdged.options.techniqueOverride = fx::Technique::Spherical;
     const float halfY = glm::radians(50.0f), halfX = std::atan(std::tan(halfY) * kW / kH);
     for (bool quarter : {false, true}) {
         hardEdged.options.quarterRes = quarter;
@@ -367,15 +375,8 @@ TEST_F(TrimmedImageTest, SphericalPolygonsDrawTheQuadsImageAcrossTheFrustum) {
 // but off the puff are not discarded (they blend zero), so GL_SAMPLES_PASSED sees every one the
 // rasteriser hands the shader there: the box and the octagon around the outline would count
 // them all.
-TEST_F(TrimmedImageTest, SphericalPolygonLeavesOutTheOutlineAroundASmallPuff) {
-    constexpr int kW = 320, kH = 240;
-    TestFrameGraph graph(kW, kH);
-    TestScene scene;
-    const std::string atlasDir = writeHardEdgedAtlas();
+TEST_F(HardEdgedSphereTest, SphericalPolygonLeavesOutTheOutlineAroundASmallPuff) {
     ASSERT_FALSE(atlasDir.empty());
-    DirectParticles hardEdged(&host, std::string(), atlasDir);
-    hardEdged.desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(1.0f)}};
-    hardEdged.options.techniqueOverride = fx::Technique::Spherical;
     const fx::ViewInfo view = makeView(glm::vec3(0.0f), glm::vec3(0, 0, -1), kW, kH);
     const glm::mat4 toWorld = glm::inverse(view.view);
     std::vector<HandParticle> ps;
