@@ -95,9 +95,8 @@ vec2 shapeVertex(float frame, float texelsPerPixel, out int polygon) {
 // it, and some outside with 10 % less growth: the bound is tight, 20 % is kept to spare. The
 // lookup's LOD is at most log2(1 + r / depth) above a billboard's at the centre's depth (also
 // checked by brute force): one more margin on the bucket.
-bool sphereTrimVertex(vec3 centre, float radius, float frame, float size, vec2 turn, out vec2 slope) {
+bool sphereTrimVertex(vec3 centre, float dist, float radius, float frame, float size, vec2 turn, out vec2 slope) {
     float depth = -centre.z;
-    float dist = length(centre);
     float sinA = radius / dist;
     if (depth <= 0.0 || sinA > 0.4) return false;
     int polygon;
@@ -165,26 +164,28 @@ void main() {
     }
     vec2 slope = vec2(corner.x < 0.0 ? sx.x : sx.y, corner.y < 0.0 ? sy.x : sy.y);
     float dist = length(centre);
-    vec2 trimmedSlope;
-    if (uTrimmed != 0 && dist > radius * 1.0001 &&
-        sphereTrimVertex(centre, radius, aLifeRotFadeFrame.w, aPosSize.w, vTurn, trimmedSlope)) {
-        slope = trimmedSlope;
-    } else if (uTrimmed != 0 && dist > radius * 1.0001) {
-        // Trimmed: the regular octagon around the cone of rays that touch the sphere (angle
-        // asin(r / dist) around the centre's direction), circumscribed: each vertex direction
-        // is the axis plus tan(angle) / cos(pi / 8) sideways. Projected centrally onto the quad's
-        // plane it still holds the sphere's outline (lines stay lines) while covering 0.83 of
-        // the box. Only when every vertex ray points clearly forward; else the box.
-        vec3 axis = centre / dist;
-        float sinA = radius / dist;
-        float spread = (sinA / sqrt(max(1.0 - sinA * sinA, 1e-12)) + kSnapMarginPixels * uPixelSlope) * 1.0823922;  // 1 / cos(pi/8)
-        vec3 u = normalize(abs(axis.x) < 0.9 ? cross(axis, vec3(1.0, 0.0, 0.0)) : cross(axis, vec3(0.0, 1.0, 0.0)));
-        vec3 v = cross(axis, u);
-        float worstZ = axis.z + spread * length(vec2(u.z, v.z));
-        if (worstZ < -0.05) {
-            float angle = (float(min(gl_VertexID, 7)) + 0.5) * 0.78539816;  // 2 pi / 8
-            vec3 dir = axis + spread * (cos(angle) * u + sin(angle) * v);
-            slope = dir.xy / -dir.z;
+    if (uTrimmed != 0 && dist > radius * 1.0001) {
+        vec2 trimmedSlope;
+        if (sphereTrimVertex(centre, dist, radius, aLifeRotFadeFrame.w, aPosSize.w, vTurn, trimmedSlope)) {
+            slope = trimmedSlope;
+        } else {
+            // The regular octagon around the cone of rays that touch the sphere (angle
+            // asin(r / dist) around the centre's direction), circumscribed: each vertex
+            // direction is the axis plus tan(angle) / cos(pi / 8) sideways. Projected centrally
+            // onto the quad's plane it still holds the sphere's outline (lines stay lines) while
+            // covering 0.83 of the box. Only when every vertex ray points clearly forward; else
+            // the box.
+            vec3 axis = centre / dist;
+            float sinA = radius / dist;
+            float spread = (sinA / sqrt(max(1.0 - sinA * sinA, 1e-12)) + kSnapMarginPixels * uPixelSlope) * 1.0823922;  // 1 / cos(pi/8)
+            vec3 u = normalize(abs(axis.x) < 0.9 ? cross(axis, vec3(1.0, 0.0, 0.0)) : cross(axis, vec3(0.0, 1.0, 0.0)));
+            vec3 v = cross(axis, u);
+            float worstZ = axis.z + spread * length(vec2(u.z, v.z));
+            if (worstZ < -0.05) {
+                float angle = (float(min(gl_VertexID, 7)) + 0.5) * 0.78539816;  // 2 pi / 8
+                vec3 dir = axis + spread * (cos(angle) * u + sin(angle) * v);
+                slope = dir.xy / -dir.z;
+            }
         }
     }
     vec3 viewPos = vec3(slope * quadDepth, -quadDepth);

@@ -56,11 +56,10 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
     GLint viewport[4] = {0, 0, 1, 1};
     glGetIntegerv(GL_VIEWPORT, viewport);
     const bool trimmable = record.shape == ParticleShape::Trimmed && !shapeTable_.empty();
-    const float lodScale = 2.0f * float(atlas_.cellTexels()) /
-                           std::fmax(std::fabs(view.proj[1][1]) * float(std::max(viewport[3], 1)), 1e-6f);
-    // Spheres: one pixel of the target in ray slope (y/depth; square pixels), for the margin
-    // their bounds keep against the rasteriser's snapping.
+    // One pixel of the target in ray slope (y/depth; square pixels): the spheres' margin against
+    // the rasteriser's snapping, and with the atlas cell's texels the billboards' LOD scale.
     const float pixelSlope = 2.0f / std::fmax(std::fabs(view.proj[1][1]) * float(std::max(viewport[3], 1)), 1e-6f);
+    const float lodScale = float(atlas_.cellTexels()) * pixelSlope;
     for (const DrawBatch& batch : list.batches) {
         const ParticlePrograms::Variant variant =
             ParticlePrograms::variantFor(batch.technique, quarterRes, batch.contrastPower);

@@ -120,9 +120,8 @@ std::vector<Point> discOctagon() {
 
 // Stores `poly` (counter-clockwise, at most kMaxVertices) padded by repeating its last vertex,
 // rounded to float and clamped to the square.
-template <size_t N>
-int store(const std::vector<Point>& poly, std::array<glm::vec2, N>* out) {
-    for (size_t i = 0; i < N; ++i) {
+int store(const std::vector<Point>& poly, std::array<glm::vec2, TrimmedShapes::kMaxVertices>* out) {
+    for (size_t i = 0; i < out->size(); ++i) {
         const Point p = poly.empty() ? Point(0.0) : poly[std::min(i, poly.size() - 1)];
         (*out)[i] = glm::vec2(float(glm::clamp(p.x, -1.0, 1.0)), float(glm::clamp(p.y, -1.0, 1.0)));
     }
@@ -243,14 +242,8 @@ float TrimmedShapes::inradius(int frame, int bucket, Clip clip) const {
 
 float TrimmedShapes::areaShare(int frame, int bucket, Clip clip) const {
     const auto& p = polygon(frame, bucket, clip);
-    const int n = vertexCount(frame, bucket, clip);
-    double a = 0.0;
-    for (int i = 0; i < n; ++i) {
-        const glm::vec2& u = p[size_t(i)];
-        const glm::vec2& v = p[size_t((i + 1) % n)];
-        a += double(u.x) * v.y - double(v.x) * u.y;
-    }
-    return float(0.5 * std::fabs(a) / 4.0);
+    const std::vector<Point> points(p.begin(), p.begin() + vertexCount(frame, bucket, clip));
+    return float(area(points) / 4.0);
 }
 
 std::vector<glm::vec4> TrimmedShapes::packed(Clip clip) const {
