@@ -30,6 +30,7 @@ FadeClassifier::~FadeClassifier() {
 
 void FadeClassifier::build(const std::string& shaderDir, std::vector<std::string>* errors) {
     programs_.build(shaderDir, errors, "#define FX_CLASSIFY 1\n", kClassifiedVariants);
+    hostDepth_.create();
     std::string error;
     // The fine tiles from the scene depth, the coarse ones from the fine tiles: one shader.
     struct TileBuild {
@@ -113,7 +114,7 @@ void FadeClassifier::buildTiles(PassContext& ctx, Target sceneDepth, Target tile
 
     ctx.bindForDraw(tiles);
     glUseProgram(tileProgram_);
-    bindTextureUnit(0, ctx.texture(sceneDepth, 0).name);
+    hostDepth_.bindTexture(0, ctx.texture(sceneDepth, 0).name);
     glUniform1i(tileSourceLoc_, 0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 

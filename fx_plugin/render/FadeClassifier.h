@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "GlStateGuard.h"
 #include "ParticlePrograms.h"
 #include "fx/HostAdapter.h"
 #include "fx/Plugin.h"
@@ -64,6 +65,9 @@ public:
     const ParticleProgram& program(ParticlePrograms::Variant variant, bool lit) const {
         return programs_.get(variant, lit);
     }
+    /// The classified programs themselves: per-power soft builds (ParticlePrograms::get with a
+    /// contrast power), their late errors.
+    ParticlePrograms& programs() { return programs_; }
 
     /// Counts the classes of `batches`' soft and spherical particles (the instance stream holds
     /// them, uploaded): draws into the counter and reads it back. Changes the framebuffer,
@@ -74,6 +78,7 @@ public:
 
 private:
     ParticlePrograms programs_;  ///< FX_CLASSIFY builds of Soft, SoftGeneralPower, Spherical
+    NearestSampler hostDepth_;   ///< the host's scene depth, read whatever sampling it set
     uint32_t tileProgram_ = 0, coarseProgram_ = 0, countProgram_ = 0;
     int tileSourceLoc_ = -1, coarseSourceLoc_ = -1;
     int countView_ = -1, countProj_ = -1, countNear_ = -1, countSoftScale_ = -1, countSphere_ = -1,

@@ -33,6 +33,24 @@ void bindTextureUnit(int unit, uint32_t texture) {
     glBindSampler(GLuint(unit), 0);
 }
 
+NearestSampler::~NearestSampler() {
+    if (sampler_) glDeleteSamplers(1, &sampler_);
+}
+
+void NearestSampler::create() {
+    if (sampler_) return;
+    glGenSamplers(1, &sampler_);
+    glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+void NearestSampler::bindTexture(int unit, uint32_t texture) const {
+    bindTextureUnit(unit, texture);
+    glBindSampler(GLuint(unit), sampler_);
+}
+
 DebugGroup::DebugGroup(const char* name) : active_(FXGLAD_GL_KHR_debug != 0) {
     if (active_) glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name);
 }

@@ -26,6 +26,27 @@ namespace fx {
 /// override the texture's own filtering. Leaves `unit` active.
 void bindTextureUnit(int unit, uint32_t texture);
 
+/// A sampler object that reads a texture with GL_NEAREST and GL_CLAMP_TO_EDGE, one level, whatever
+/// the texture's own parameters. The host's scene depth is read through it: a host may leave
+/// linear filtering on it (the particle shaders read it with textureLod at texel centres, exact
+/// only unfiltered), or GL's default mipmapped minification filter on a texture with one level,
+/// which leaves the texture incomplete (texelFetch and texture both read 0 there) unless a
+/// sampler with a plain filter is bound.
+class NearestSampler {
+public:
+    NearestSampler() = default;
+    ~NearestSampler();
+    NearestSampler(const NearestSampler&) = delete;
+    NearestSampler& operator=(const NearestSampler&) = delete;
+    void create();
+    /// bindTextureUnit(unit, texture), then this sampler on `unit` (below
+    /// GlStateGuard::kTextureUnits, so a guard restores the host's).
+    void bindTexture(int unit, uint32_t texture) const;
+
+private:
+    uint32_t sampler_ = 0;
+};
+
 /// A KHR_debug group around a pass's GL calls (names the pass in a GL debugger's capture); nothing
 /// where the context has no KHR_debug.
 class DebugGroup {

@@ -162,6 +162,7 @@ bool MegaRenderer::ensureLoaded() {
     if (!programs_->ok()) return false;
     glGenFramebuffers(1, &fbo_);
     glGenVertexArrays(1, &emptyVao_);
+    hostDepth_.create();
     stream_.create();
     ramp_.upload();
     state_ = State::Ready;
@@ -312,7 +313,7 @@ void MegaRenderer::runDepth(PassContext& ctx, const ViewRecord& r, Target sceneD
     glClearBufferfv(GL_COLOR, 0, zero);
     scissorTo(r, float(w) / float(r.view.width), blurBorder(r), w, h);
     glUseProgram(programs_->depth);
-    bindTextureUnit(kUnit0, ctx.texture(sceneDepth, 0).name);
+    hostDepth_.bindTexture(kUnit0, ctx.texture(sceneDepth, 0).name);
     glUniform1i(programs_->depthScene, kUnit0);
     glUniform2f(programs_->depthRatio, float(r.view.width) / float(std::max(w, 1)),
                 float(r.view.height) / float(std::max(h, 1)));
@@ -409,7 +410,7 @@ void MegaRenderer::runComposite(PassContext& ctx, const ViewRecord& r, Target cl
     glUseProgram(programs_->composite);
     bindTextureUnit(kUnit0, ctx.texture(cloud, 0).name);
     bindTextureUnit(kUnit1, ctx.texture(cloudDepth, 0).name);
-    bindTextureUnit(kUnit2, ctx.texture(sceneDepth, 0).name);
+    hostDepth_.bindTexture(kUnit2, ctx.texture(sceneDepth, 0).name);
     glUniform1i(programs_->cCloud, kUnit0);
     glUniform1i(programs_->cCloudDepth, kUnit1);
     glUniform1i(programs_->cScene, kUnit2);

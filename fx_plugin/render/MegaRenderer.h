@@ -58,6 +58,7 @@
 
 #include "ColorRampTexture.h"
 #include "DrawList.h"
+#include "GlStateGuard.h"
 #include "InstanceStream.h"
 #include "LightState.h"
 #include "QuarterResPath.h"
@@ -147,6 +148,7 @@ private:
     ColorRampTexture ramp_;
     InstanceStream stream_;
     uint32_t fbo_ = 0, emptyVao_ = 0;
+    NearestSampler hostDepth_;  ///< the host's scene depth, read whatever sampling it set
     DrawListBuilder builder_;
     std::vector<std::shared_ptr<ViewRecord>> records_;
     std::vector<const std::vector<ColorStop>*> rampInputs_;

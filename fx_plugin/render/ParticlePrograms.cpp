@@ -71,10 +71,17 @@ ParticlePrograms::~ParticlePrograms() {
             if (p.program) glDeleteProgram(p.program);
         }
     }
+    for (auto& row : powered_) {
+        for (ParticleProgram& p : row) {
+            if (p.program) glDeleteProgram(p.program);
+        }
+    }
 }
 
 void ParticlePrograms::build(const std::string& shaderDir, std::vector<std::string>* errors,
                              const std::string& defines, uint32_t variants) {
+    shaderDir_ = shaderDir;
+    defines_ = defines;
     for (int lit = 0; lit < 2; ++lit) {
         for (int v = 0; v < VariantCount; ++v) {
             if (programs_[lit][v].program || (variants & (1u << v)) == 0) continue;
@@ -88,6 +95,54 @@ void ParticlePrograms::build(const std::string& shaderDir, std::vector<std::stri
             programs_[lit][v] = locate(program);
         }
     }
+}
+
+bool ParticlePrograms::buildPower(int steps, bool lit, std::string* error) {
+    poweredTried_[lit ? 1 : 0][steps] = true;
+    const std::string all = defines_ + kSources[Soft].defines + "#define FX_POWER_STEPS " + std::to_string(steps) +
+                            "\n" + (lit ? "#define FX_LIT 1\n" : "");
+    const GLuint program = buildProgram(shaderDir_, "vs_particles.glsl", kSources[Soft].fragment, all, error);
+    if (!program) return false;
+    powered_[lit ? 1 : 0][steps] = locate(program);
+    return true;
+}
+
+const ParticleProgram& ParticlePrograms::get(Variant v, bool lit, float contrastPower) {
+    const ParticleProgram& fallback = get(v, lit);
+    int whole = 0, half = 0;
+    if (v != Soft || !fallback.program || !halfWholePower(contrastPower, &whole, &half)) return fallback;
+    const int steps = 2 * whole + half;
+    const int l = lit ? 1 : 0;
+    if (!poweredTried_[l][steps]) {
+        std::string error;  // Soft keeps drawing this power; the caller reports the failure
+        if (!buildPower(steps, lit, &error)) lateErrors_.push_back(error);
+    }
+    return powered_[l][steps].program ? powered_[l][steps] : fallback;
+}
+
+void ParticlePrograms::buildPowers(const std::vector<int>& steps, std::vector<std::string>* errors) {
+    for (int s : steps) {
+        if (s < 0 || s > kMaxPowerSteps) continue;
+        for (bool lit : {false, true}) {
+            if (poweredTried_[lit ? 1 : 0][s]) continue;
+            std::string error;
+            if (!buildPower(s, lit, &error)) errors->push_back(error);
+        }
+    }
+}
+
+std::vector<std::string> ParticlePrograms::takeErrors() {
+    std::vector<std::string> taken;
+    taken.swap(lateErrors_);
+    return taken;
+}
+
+std::vector<int> ParticlePrograms::builtPowers() const {
+    std::vector<int> steps;
+    for (int s = 0; s <= kMaxPowerSteps; ++s) {
+        if (powered_[0][s].program || powered_[1][s].program) steps.push_back(s);
+    }
+    return steps;
 }
 
 bool ParticlePrograms::halfWholePower(float contrastPower, int* whole, int* half) {

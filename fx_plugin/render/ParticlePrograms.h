@@ -5,6 +5,10 @@
 //   Soft            vs_particles + fs_particles_soft  (contrast_power whole or half-whole, <= 16:
 //                                                    multiplies and a sqrt)
 //   SoftGeneralPower vs_particles + fs_particles_soft, FX_GENERAL_POWER (any contrast_power: pow)
+//   Soft for one power  vs_particles + fs_particles_soft, FX_POWER_STEPS = 2 contrast_power: built on
+//                   first use for each whole or half-whole power a reaction draws with (the curve's
+//                   multiplies folded; power 1 draws no curve at all); Soft stands in until then
+//                   and wherever that build fails.
 //   Spherical       vs_particles + fs_particles_spherical, FX_SPHERICAL
 // Each again with FX_LIT (lit smoke: particles_common.glsl's smokeLight) for reactions drawn
 // under a scene light; unlit smoke keeps the programs without a line of lighting code.
@@ -48,6 +52,18 @@ public:
                uint32_t variants = ~0u);
     /// `lit`: the FX_LIT build of the variant (program 0 when it failed to build: draw unlit).
     const ParticleProgram& get(Variant v, bool lit = false) const { return programs_[lit ? 1 : 0][v]; }
+    /// The program that draws a batch of `v` with `contrastPower`: for Soft with a whole or
+    /// half-whole power, that power's own build (compiled here the first time it is asked for;
+    /// changes no bound GL state), else get(v, lit). Falls back to get(v, lit) where the power's
+    /// build failed (its messages wait in takeErrors()).
+    const ParticleProgram& get(Variant v, bool lit, float contrastPower);
+    /// The messages of get()'s builds that failed since the last call, for the caller to report.
+    std::vector<std::string> takeErrors();
+    /// Builds the soft programs for the powers in `steps` (2 contrast_power each) now, lit and
+    /// unlit, appending failures to *errors: a shader reload checks the powers in use with it.
+    void buildPowers(const std::vector<int>& steps, std::vector<std::string>* errors);
+    /// The powers (as 2 contrast_power) whose soft programs have been built.
+    std::vector<int> builtPowers() const;
     /// `contrastPower` picks between the two soft programs (see above).
     static Variant variantFor(Technique technique, bool quarterRes, float contrastPower = 1.0f);
     /// contrast_power = whole + half / 2 with whole in [0, 16], half 0 or 1: true and the split.
@@ -55,8 +71,16 @@ public:
     /// techniqueBit() mask of the techniques drawable on a full-res or a quarter-res target.
     uint32_t usableTechniques(bool quarterRes) const;
 
+    static constexpr int kMaxPowerSteps = 32;  ///< contrast_power 16
+
 private:
+    bool buildPower(int steps, bool lit, std::string* error);
+
     ParticleProgram programs_[2][VariantCount];  ///< [unlit, lit]
+    ParticleProgram powered_[2][kMaxPowerSteps + 1];  ///< Soft for one power: [unlit, lit][2 power]
+    bool poweredTried_[2][kMaxPowerSteps + 1] = {};
+    std::string shaderDir_, defines_;         ///< build()'s, for the powers' later builds
+    std::vector<std::string> lateErrors_;     ///< get()'s failed builds, not yet taken
 };
 
 }  // namespace fx

@@ -108,6 +108,7 @@ bool ParticleRenderer::ensureLoaded() {
         return false;
     }
     stream_.create();
+    depthSampler_.create();
     ramp_.upload();
     shapeTable_ = atlas_.shapes().packed();
     discTable_ = atlas_.shapes().packed(TrimmedShapes::Clip::Disc);
@@ -151,12 +152,14 @@ bool ParticleRenderer::reloadShaders(Diagnostics* out) {
     auto opacity = std::make_unique<SmokeOpacityMap>();
     std::vector<std::string> errors;
     programs->build(config_.shaderDir, &errors);
+    programs->buildPowers(programs_->builtPowers(), &errors);  // the contrast powers drawn so far
     quarter->build(config_.shaderDir, &errors);
     opacity->build(config_.shaderDir, &errors);
     std::unique_ptr<FadeClassifier> classifier;
     if (classifier_) {
         classifier = std::make_unique<FadeClassifier>();
         classifier->build(config_.shaderDir, &errors);
+        classifier->programs().buildPowers(classifier_->programs().builtPowers(), &errors);
     }
     if (!errors.empty()) {
         // The new programs are dropped (their destructors delete what did build); the running

@@ -37,6 +37,7 @@
 #include "ColorRampTexture.h"
 #include "DrawList.h"
 #include "FadeClassifier.h"
+#include "GlStateGuard.h"
 #include "InstanceStream.h"
 #include "ParticlePrograms.h"
 #include "LightState.h"
@@ -168,6 +169,7 @@ private:
     SmokeAtlas atlas_;
     ColorRampTexture ramp_;
     InstanceStream stream_;
+    NearestSampler depthSampler_;  ///< the scene depth's unit, whatever sampling the host set
     // Owned through pointers so a shader reload can build new ones beside them and swap.
     std::unique_ptr<ParticlePrograms> programs_ = std::make_unique<ParticlePrograms>();
     std::unique_ptr<QuarterResPath> quarter_ = std::make_unique<QuarterResPath>();

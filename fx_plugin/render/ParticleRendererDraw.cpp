@@ -37,7 +37,7 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     bindTextureUnit(kAtlasUnit, atlas_.texture());
     bindTextureUnit(kRampUnit, ramp_.texture());
-    bindTextureUnit(kSceneDepthUnit, sceneDepth);
+    depthSampler_.bindTexture(kSceneDepthUnit, sceneDepth);  // the host's, or the half-res copy
     if (record.lit) {
         bindTextureUnit(kOpacityUnit, opacity);
     }
@@ -68,7 +68,9 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         // Soft and spherical batches take the classified build when the tiles are there.
         const bool classifiable = classified && batch.technique != Technique::Hard &&
                                   classifier_->program(variant, lit).program;
-        const ParticleProgram& p = classifiable ? classifier_->program(variant, lit) : programs_->get(variant, lit);
+        // Soft batches take their contrast power's own build (ParticlePrograms::get).
+        const ParticleProgram& p = classifiable ? classifier_->programs().get(variant, lit, batch.contrastPower)
+                                                : programs_->get(variant, lit, batch.contrastPower);
         if (!p.program) continue;
         if (record.lit) bindTextureUnit(kAtlasUnit, lit ? atlas_.litTexture() : atlas_.texture());
         // Full resolution tests against the host's z-buffer without writing it. Hard particles
@@ -135,6 +137,15 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         } else {
             glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, batch.count);
         }
+    }
+    // A contrast power whose own build failed was drawn by the general soft program: said once,
+    // when it was tried.
+    std::vector<std::string> errors = programs_->takeErrors();
+    if (classifier_) {
+        for (std::string& e : classifier_->programs().takeErrors()) errors.push_back(std::move(e));
+    }
+    for (const std::string& e : errors) {
+        log(LogLevel::Error, "fx: a soft program for one contrast power did not build; the general one draws it:\n" + e);
     }
 }
 

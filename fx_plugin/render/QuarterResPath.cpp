@@ -189,6 +189,7 @@ QuarterResPath::~QuarterResPath() {
 
 void QuarterResPath::build(const std::string& shaderDir, std::vector<std::string>* errors) {
     std::string error;
+    hostDepth_.create();
     if (!downsample_) {
         downsample_ = buildProgram(shaderDir, "vs_particles_tiles.glsl",
                                    "fs_particles_depth_downsample.glsl", "", &error);
@@ -271,7 +272,7 @@ void QuarterResPath::downsampleDepth(PassContext& ctx, Target sceneDepth, Target
     scissorTo(rect, 2, 2, ctx.width(halfDepth), ctx.height(halfDepth));
     glDisable(GL_BLEND);
     glUseProgram(downsample_);
-    bindTextureUnit(0, ctx.texture(sceneDepth, 0).name);
+    hostDepth_.bindTexture(0, ctx.texture(sceneDepth, 0).name);
     glUniform1i(downsampleDepthLoc_, 0);
     drawTiles(downsampleViewLoc_, tiles);
 }
@@ -303,7 +304,7 @@ bool QuarterResPath::beginQuarter(PassContext& ctx, Target halfColor, const Scre
     glDisable(GL_CULL_FACE);
     glDisable(GL_STENCIL_TEST);
     glUseProgram(halfZ_);
-    bindTextureUnit(0, ctx.texture(sceneDepth, 0).name);
+    hostDepth_.bindTexture(0, ctx.texture(sceneDepth, 0).name);
     glUniform1i(halfZDepthLoc_, 0);
     // Reversed-Z zero-to-one: window z = clip.z / clip.w = P[3][2] / depth - P[2][2].
     glUniform2f(halfZFromLinearLoc_, zView->proj[3][2], -zView->proj[2][2]);
@@ -338,7 +339,7 @@ void QuarterResPath::beginEdges(PassContext& ctx, Target edgeColor, Target halfD
     glDisable(GL_BLEND);
     glUseProgram(edgeMask_);
     bindTextureUnit(0, ctx.texture(halfDepth, 0).name);
-    bindTextureUnit(1, ctx.texture(sceneDepth, 0).name);
+    hostDepth_.bindTexture(1, ctx.texture(sceneDepth, 0).name);
     glUniform1i(maskHalfDepthLoc_, 0);
     glUniform1i(maskSceneDepthLoc_, 1);
     glUniform1f(maskThresholdLoc_, kDepthThreshold);
@@ -363,7 +364,7 @@ void QuarterResPath::composite(PassContext& ctx, Target sceneColor, Target halfC
     glUseProgram(c.program);
     bindTextureUnit(0, ctx.texture(halfColor, 0).name);
     bindTextureUnit(1, ctx.texture(halfDepth, 0).name);
-    bindTextureUnit(2, ctx.texture(sceneDepth, 0).name);
+    hostDepth_.bindTexture(2, ctx.texture(sceneDepth, 0).name);
     // A location a build left out (-1) is ignored by glUniform*.
     glUniform1i(c.halfColor, 0);
     glUniform1i(c.halfDepth, 1);

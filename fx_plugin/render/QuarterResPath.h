@@ -93,6 +93,7 @@
 
 #include "fx/HostAdapter.h"
 #include "fx/Types.h"
+#include "GlStateGuard.h"
 #include "InstanceStream.h"
 
 namespace fx {
@@ -200,6 +201,7 @@ private:
     /// uploaded to this path's own stream buffer.
     void drawTiles(int viewSizeLoc, const ScreenTiles& tiles);
 
+    NearestSampler hostDepth_;  ///< the host's scene depth, read whatever sampling it set
     uint32_t halfZ_ = 0;
     int halfZDepthLoc_ = -1, halfZFromLinearLoc_ = -1, halfZFarLoc_ = -1;
     uint32_t downsample_ = 0;

@@ -158,6 +158,8 @@ public:
     /// GL objects for the host's own passes.
     unsigned colorFramebuffer() const { return colorFbo_; }
     unsigned depthFramebuffer() const { return depthFbo_; }
+    /// The scene's linear depth (R32F, what sceneDepth() names): a test may change its filtering.
+    unsigned sceneDepthTexture() const { return depthTex_; }
 
     static constexpr uint32_t kSceneColor = 1, kSceneDepth = 2;
 

@@ -3,6 +3,8 @@
 // volume, lighting from the sun's side), and the whole plugin with the run-time override (passes
 // declared only when a Mega batch is visible, the billboard path leaving those batches alone, the
 // host's GL state restored after every pass).
+#include <glad/gl.h>
+
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -91,6 +93,34 @@ TEST_F(MegaTest, NoSmokeOverNearerGeometry) {
                 worstBehindWall, bestVisible);
     EXPECT_LE(worstBehindWall, 1);
     EXPECT_GT(bestVisible, 60);
+}
+
+// The host's scene depth is read through the renderer's own nearest sampler: a host that left
+// GL's default sampling on it (a mipmapped minification filter, levels up to 1000, one level
+// there: an incomplete texture that reads 0) or linear filtering gets the same cloud.
+TEST_F(MegaTest, TheHostsDepthSamplingStateDoesNotChangeTheCloud) {
+    constexpr int kW = 157, kH = 113;
+    TestFrameGraph graph(kW, kH);
+    TestScene scene;
+    scene.quads = {TestScene::ground(50.0f, glm::vec3(0.2f, 0.22f, 0.2f)),
+                   TestScene::wallZ(0.0f, -20.0f, 0.0f, 0.0f, 10.0f, glm::vec3(0.3f, 0.5f, 0.3f))};
+    const fx::ViewInfo view = makeView(glm::vec3(0.0f, 1.5f, 6.0f), glm::vec3(0.0f, 1.5f, 0.0f), kW, kH);
+    direct.set({HandParticle{glm::vec3(-0.6f, 1.5f, -2.5f), 2.0f}, HandParticle{glm::vec3(0.6f, 1.7f, -2.0f), 2.0f},
+                HandParticle{glm::vec3(0.0f, 1.2f, -3.0f), 2.4f}});
+    auto sampling = [&](GLint minFilter, GLint magFilter, GLint maxLevel) {
+        glBindTexture(GL_TEXTURE_2D, graph.sceneDepthTexture());
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, minFilter);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, magFilter);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, maxLevel);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    };
+    const Image nearest = draw(graph, scene, view, true);
+    ASSERT_EQ(drawn, 3);
+    sampling(GL_LINEAR, GL_LINEAR, 0);
+    EXPECT_EQ(maxAbsDiff(nearest, draw(graph, scene, view, true)), 0) << "linear";
+    sampling(GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR, 1000);
+    EXPECT_EQ(maxAbsDiff(nearest, draw(graph, scene, view, true)), 0) << "GL defaults";
+    sampling(GL_NEAREST, GL_NEAREST, 0);
 }
 
 // Two renders of the same particles, clock and camera are byte-identical (the noise is a

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "FxTestHost.h"
+#include "../../fx_plugin/render/ParticlePrograms.h"
 #include "../../fx_plugin/render/ShaderLoader.h"
 
 namespace fxtest {
@@ -189,6 +190,160 @@ TEST_F(BrokenShaderTest, RendererReportsABrokenShaderAndDrawsNothingWithIt) {
     renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = particles.declare(view, f); });
     EXPECT_EQ(drawn, 1);
     EXPECT_TRUE(graph.ran("particles"));
+}
+
+// Soft programs per contrast power (ParticlePrograms::get with a power): built the first time a
+// power is drawn, once, with the power's bits folded (no uPowerWhole left in the program), and
+// only for the soft technique's half-whole powers.
+TEST_F(ShaderLoaderTest, SoftProgramsForOnePowerAreBuiltOnFirstUse) {
+    fx::ParticlePrograms programs;
+    std::vector<std::string> errors;
+    programs.build(kShaders, &errors, "",
+                   (1u << fx::ParticlePrograms::Soft) | (1u << fx::ParticlePrograms::SoftGeneralPower));
+    ASSERT_TRUE(errors.empty()) << errors.front();
+    const fx::ParticleProgram& general = programs.get(fx::ParticlePrograms::Soft, false);
+    ASSERT_NE(general.program, 0u);
+    EXPECT_GE(general.powerWhole, 0);
+    EXPECT_TRUE(programs.builtPowers().empty());
+
+    const uint32_t two = programs.get(fx::ParticlePrograms::Soft, false, 2.0f).program;
+    EXPECT_NE(two, 0u);
+    EXPECT_NE(two, general.program);
+    EXPECT_EQ(programs.get(fx::ParticlePrograms::Soft, false, 2.0f).powerWhole, -1);  // folded
+    EXPECT_EQ(programs.get(fx::ParticlePrograms::Soft, false, 2.0f).program, two);    // not rebuilt
+    EXPECT_EQ(programs.builtPowers(), std::vector<int>{4});
+    const uint32_t litOneAndAHalf = programs.get(fx::ParticlePrograms::Soft, true, 1.5f).program;
+    EXPECT_NE(litOneAndAHalf, 0u);
+    EXPECT_NE(litOneAndAHalf, programs.get(fx::ParticlePrograms::Soft, true).program);
+    EXPECT_EQ(programs.builtPowers(), (std::vector<int>{3, 4}));
+    // Other powers and variants are what get(v, lit) gives.
+    EXPECT_EQ(programs.get(fx::ParticlePrograms::SoftGeneralPower, false, 1.3f).program,
+              programs.get(fx::ParticlePrograms::SoftGeneralPower, false).program);
+    EXPECT_EQ(programs.get(fx::ParticlePrograms::Soft, false, 1.3f).program, general.program);
+    EXPECT_EQ(programs.get(fx::ParticlePrograms::HardZBuffer, false, 2.0f).program, 0u);  // not asked for
+    EXPECT_TRUE(programs.takeErrors().empty());
+}
+
+// Puffs sunk into the ground, 0.3 .. 1.1 m in front of a wall that ends 2.2 m up, sky above it
+// (reversed-Z): the ground fades their lower halves gradually, the wall each one by its own
+// amount, and their tops stand against the sky.
+EdgeScene sunkenPuffs(int width, int height) {
+    EdgeScene edge;
+    for (int i = 0; i < 7; ++i) {
+        edge.puffs.push_back(HandParticle{glm::vec3(-3.0f + float(i), 0.4f + 0.3f * float(i % 3), -0.4f * float(i % 3)),
+                                          2.6f, 0.5f, 0.7f * float(i), 1.0f, i & 3});
+    }
+    edge.scene.sky = glm::vec3(0.08f, 0.1f, 0.2f);
+    edge.scene.reversedZ = true;
+    edge.scene.quads = {TestScene::ground(60.0f, glm::vec3(0.1f)),
+                        TestScene::wallZ(-1.5f, -10.0f, 10.0f, 0.0f, 2.2f, glm::vec3(0.2f, 0.1f, 0.1f))};
+    edge.view = makeView(glm::vec3(0.0f, 1.6f, 7.0f), glm::vec3(0.0f, 0.6f, 0.0f), width, height);
+    useReversedZ(&edge.view);
+    edge.softness = 1.5f;
+    return edge;
+}
+
+// Breaks only the per-power build (FX_POWER_STEPS) of a copy of the shaders. Returns the copy
+// and the broken line.
+std::pair<std::string, int> shadersWithABrokenPowerBuild(const std::string& name) {
+    const std::string dir = copyShaders(name);
+    const int line = lineOf(dir + "/particles_common.glsl", "const int kPowerWhole = FX_POWER_STEPS / 2;");
+    if (line > 0) replaceLine(dir + "/particles_common.glsl", line, "const int kPowerWhole = undeclaredPower;");
+    return {dir, line};
+}
+
+// The per-power programs draw what the general one (uniform bits) draws, within 1/255, for
+// powers whose curves differ (0.5 .. 16, power 1 taking no curve at all), over puffs that the
+// wall and ground fade. The general program stands in where a power's build fails: a copy of
+// the shaders breaks only that build, so it draws every power there, and says so once per power.
+TEST_F(BrokenShaderTest, SoftProgramsForOnePowerDrawWhatTheGeneralOneDraws) {
+    constexpr int kW = 160, kH = 120;
+    const auto [brokenDir, line] = shadersWithABrokenPowerBuild("broken_power");
+    ASSERT_GT(line, 0);
+    EdgeScene edge = sunkenPuffs(kW, kH);
+    TestFrameGraph graph(kW, kH, true);
+    TestHostAdapter host, brokenHost;
+    DirectParticles perPower(&host);
+    DirectParticles general(&brokenHost, brokenDir);
+    for (DirectParticles* d : {&perPower, &general}) {
+        d->desc.render.softness = edge.softness;  // wide fades: every part of the curve is on screen
+        d->options.techniqueOverride = fx::Technique::Soft;
+        d->set(edge.puffs);
+    }
+    int logged = 0;
+    Image linearCurve, steepCurve;
+    for (float power : {1.0f, 0.5f, 1.5f, 2.0f, 3.5f, 16.0f}) {
+        Image images[2];
+        int k = 0;
+        for (DirectParticles* d : {&perPower, &general}) {
+            d->desc.render.contrastPower = power;
+            int drawn = 0;
+            renderFrame(graph, edge.scene, edge.view, [&](fx::FrameBuilder& f) { drawn = d->declare(edge.view, f); });
+            ASSERT_EQ(drawn, int(edge.puffs.size()));
+            images[k++] = graph.readColor();
+        }
+        const int diff = maxAbsDiff(images[0], images[1]);
+        std::printf("[ measured ] contrast %.1f: per-power against general program, max diff %d/255\n",
+                    double(power), diff);
+        EXPECT_LE(diff, 1) << "contrast " << power;
+        if (power == 1.0f) linearCurve = images[0];
+        if (power == 16.0f) steepCurve = images[0];
+        ++logged;
+        EXPECT_EQ(int(brokenHost.errors().size()), logged) << "one message per power";
+        EXPECT_TRUE(brokenHost.logged("particles_common.glsl:" + std::to_string(line) + ":"));
+    }
+    EXPECT_TRUE(host.errors().empty()) << host.errors().front();
+    // The curve shows: power 16 against power 1.
+    const int curveDiff = maxAbsDiff(linearCurve, steepCurve);
+    std::printf("[ measured ] contrast 16 against 1: max diff %d/255\n", curveDiff);
+    EXPECT_GT(curveDiff, 20);
+    // Drawn again: no new build, no new message.
+    renderFrame(graph, edge.scene, edge.view, [&](fx::FrameBuilder& f) { general.declare(edge.view, f); });
+    EXPECT_EQ(int(brokenHost.errors().size()), logged);
+}
+
+// The scene depth is read through the renderer's own nearest sampler, whatever sampling state
+// the host left on its linear-depth texture: linear filtering (textureLod reads texel centres),
+// or GL's defaults, a mipmapped minification filter with levels up to 1000 that the texture does
+// not have. That one makes the texture incomplete (reads return 0, "nothing drawn" everywhere),
+// for texelFetch too, unless a sampler object with a plain filter is bound.
+TEST_F(ShaderLoaderTest, TheHostsDepthSamplingStateDoesNotChangeThePicture) {
+    constexpr int kW = 157, kH = 113;  // 1/157 and 1/113 are not exact: texel centres round
+    EdgeScene edge = sunkenPuffs(kW, kH);
+    TestFrameGraph graph(kW, kH, true);
+    TestHostAdapter host;
+    DirectParticles direct(&host);
+    direct.desc.render.softness = edge.softness;
+    direct.set(edge.puffs);
+    auto frame = [&](fx::Technique t, bool quarter) {
+        direct.options.techniqueOverride = t;
+        direct.options.quarterRes = quarter;
+        renderFrame(graph, edge.scene, edge.view, [&](fx::FrameBuilder& f) { direct.declare(edge.view, f); });
+        return graph.readColor();
+    };
+    auto sampling = [&](GLint minFilter, GLint magFilter, GLint maxLevel) {
+        glBindTexture(GL_TEXTURE_2D, graph.sceneDepthTexture());
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, minFilter);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, magFilter);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, maxLevel);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    };
+    for (fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical, fx::Technique::Hard}) {  // mega: MegaTest
+        for (bool quarter : {false, true}) {
+            // Soft and spherical at full res also with fade classification (its tile pass reads
+            // the scene depth).
+            direct.renderer.setFadeClassification(!quarter && t != fx::Technique::Hard, false);
+            sampling(GL_NEAREST, GL_NEAREST, 0);
+            const Image nearest = frame(t, quarter);
+            sampling(GL_LINEAR, GL_LINEAR, 0);
+            EXPECT_EQ(maxAbsDiff(nearest, frame(t, quarter)), 0)
+                << "linear, technique " << int(t) << (quarter ? " quarter" : "");
+            sampling(GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR, 1000);
+            EXPECT_EQ(maxAbsDiff(nearest, frame(t, quarter)), 0)
+                << "GL defaults, technique " << int(t) << (quarter ? " quarter" : "");
+            sampling(GL_NEAREST, GL_NEAREST, 0);
+        }
+    }
 }
 
 TEST_F(ShaderLoaderTest, MissingAtlasDisablesTheRendererWithAMessage) {
