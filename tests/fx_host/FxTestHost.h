@@ -158,8 +158,9 @@ public:
     /// GL objects for the host's own passes.
     unsigned colorFramebuffer() const { return colorFbo_; }
     unsigned depthFramebuffer() const { return depthFbo_; }
-    /// The scene's linear depth (R32F, what sceneDepth() names): a test may change its filtering.
-    unsigned sceneDepthTexture() const { return depthTex_; }
+    /// Sets the sampling state of the scene's linear depth (R32F, what sceneDepth() names), as a
+    /// host might leave it: min / mag filter and GL_TEXTURE_MAX_LEVEL (built with NEAREST, 0).
+    void setSceneDepthSampling(int minFilter, int magFilter, int maxLevel);
 
     static constexpr uint32_t kSceneColor = 1, kSceneDepth = 2;
 

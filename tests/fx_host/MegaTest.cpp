@@ -51,6 +51,19 @@ protected:
         return graph.readColor();
     }
 
+    /// A ground and a wall at z = 0 covering x < 0 (the left half of a view from (0, 1.5, 6)).
+    static TestScene wallOnTheLeft() {
+        TestScene scene;
+        scene.quads = {TestScene::ground(50.0f, glm::vec3(0.2f, 0.22f, 0.2f)),
+                       TestScene::wallZ(0.0f, -20.0f, 0.0f, 0.0f, 10.0f, glm::vec3(0.3f, 0.5f, 0.3f))};
+        return scene;
+    }
+    /// Three spheres 2-3 m behind the wall's plane, across its edge.
+    void setClusterBehindTheWall() {
+        direct.set({HandParticle{glm::vec3(-0.6f, 1.5f, -2.5f), 2.0f}, HandParticle{glm::vec3(0.6f, 1.7f, -2.0f), 2.0f},
+                    HandParticle{glm::vec3(0.0f, 1.2f, -3.0f), 2.4f}});
+    }
+
     TestHostAdapter host;
     DirectParticles direct{&host};
     fx::MegaRenderer mega{fx::MegaRendererConfig{&host, "", nullptr}};
@@ -67,13 +80,10 @@ protected:
 TEST_F(MegaTest, NoSmokeOverNearerGeometry) {
     constexpr int kW = 192, kH = 144;
     TestFrameGraph graph(kW, kH);
-    TestScene scene;
-    scene.quads = {TestScene::ground(50.0f, glm::vec3(0.2f, 0.22f, 0.2f)),
-                   TestScene::wallZ(0.0f, -20.0f, 0.0f, 0.0f, 10.0f, glm::vec3(0.3f, 0.5f, 0.3f))};
+    TestScene scene = wallOnTheLeft();
     const fx::ViewInfo view = makeView(glm::vec3(0.0f, 1.5f, 6.0f), glm::vec3(0.0f, 1.5f, 0.0f), kW, kH);
     direct.desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(1.0f, 1.0f, 1.0f, 1.0f)}};
-    direct.set({HandParticle{glm::vec3(-0.6f, 1.5f, -2.5f), 2.0f}, HandParticle{glm::vec3(0.6f, 1.7f, -2.0f), 2.0f},
-                HandParticle{glm::vec3(0.0f, 1.2f, -3.0f), 2.4f}});
+    setClusterBehindTheWall();
     const Image reference = draw(graph, scene, view, false);
     const Image img = draw(graph, scene, view, true);
     ASSERT_EQ(drawn, 3);
@@ -101,26 +111,16 @@ TEST_F(MegaTest, NoSmokeOverNearerGeometry) {
 TEST_F(MegaTest, TheHostsDepthSamplingStateDoesNotChangeTheCloud) {
     constexpr int kW = 157, kH = 113;
     TestFrameGraph graph(kW, kH);
-    TestScene scene;
-    scene.quads = {TestScene::ground(50.0f, glm::vec3(0.2f, 0.22f, 0.2f)),
-                   TestScene::wallZ(0.0f, -20.0f, 0.0f, 0.0f, 10.0f, glm::vec3(0.3f, 0.5f, 0.3f))};
+    TestScene scene = wallOnTheLeft();
     const fx::ViewInfo view = makeView(glm::vec3(0.0f, 1.5f, 6.0f), glm::vec3(0.0f, 1.5f, 0.0f), kW, kH);
-    direct.set({HandParticle{glm::vec3(-0.6f, 1.5f, -2.5f), 2.0f}, HandParticle{glm::vec3(0.6f, 1.7f, -2.0f), 2.0f},
-                HandParticle{glm::vec3(0.0f, 1.2f, -3.0f), 2.4f}});
-    auto sampling = [&](GLint minFilter, GLint magFilter, GLint maxLevel) {
-        glBindTexture(GL_TEXTURE_2D, graph.sceneDepthTexture());
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, minFilter);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, magFilter);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, maxLevel);
-        glBindTexture(GL_TEXTURE_2D, 0);
-    };
+    setClusterBehindTheWall();
     const Image nearest = draw(graph, scene, view, true);
     ASSERT_EQ(drawn, 3);
-    sampling(GL_LINEAR, GL_LINEAR, 0);
+    graph.setSceneDepthSampling(GL_LINEAR, GL_LINEAR, 0);
     EXPECT_EQ(maxAbsDiff(nearest, draw(graph, scene, view, true)), 0) << "linear";
-    sampling(GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR, 1000);
+    graph.setSceneDepthSampling(GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR, 1000);
     EXPECT_EQ(maxAbsDiff(nearest, draw(graph, scene, view, true)), 0) << "GL defaults";
-    sampling(GL_NEAREST, GL_NEAREST, 0);
+    graph.setSceneDepthSampling(GL_NEAREST, GL_NEAREST, 0);
 }
 
 // Two renders of the same particles, clock and camera are byte-identical (the noise is a

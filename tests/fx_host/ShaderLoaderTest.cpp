@@ -321,27 +321,20 @@ TEST_F(ShaderLoaderTest, TheHostsDepthSamplingStateDoesNotChangeThePicture) {
         renderFrame(graph, edge.scene, edge.view, [&](fx::FrameBuilder& f) { direct.declare(edge.view, f); });
         return graph.readColor();
     };
-    auto sampling = [&](GLint minFilter, GLint magFilter, GLint maxLevel) {
-        glBindTexture(GL_TEXTURE_2D, graph.sceneDepthTexture());
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, minFilter);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, magFilter);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, maxLevel);
-        glBindTexture(GL_TEXTURE_2D, 0);
-    };
     for (fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical, fx::Technique::Hard}) {  // mega: MegaTest
         for (bool quarter : {false, true}) {
             // Soft and spherical at full res also with fade classification (its tile pass reads
             // the scene depth).
             direct.renderer.setFadeClassification(!quarter && t != fx::Technique::Hard, false);
-            sampling(GL_NEAREST, GL_NEAREST, 0);
+            graph.setSceneDepthSampling(GL_NEAREST, GL_NEAREST, 0);
             const Image nearest = frame(t, quarter);
-            sampling(GL_LINEAR, GL_LINEAR, 0);
+            graph.setSceneDepthSampling(GL_LINEAR, GL_LINEAR, 0);
             EXPECT_EQ(maxAbsDiff(nearest, frame(t, quarter)), 0)
                 << "linear, technique " << int(t) << (quarter ? " quarter" : "");
-            sampling(GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR, 1000);
+            graph.setSceneDepthSampling(GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR, 1000);
             EXPECT_EQ(maxAbsDiff(nearest, frame(t, quarter)), 0)
                 << "GL defaults, technique " << int(t) << (quarter ? " quarter" : "");
-            sampling(GL_NEAREST, GL_NEAREST, 0);
+            graph.setSceneDepthSampling(GL_NEAREST, GL_NEAREST, 0);
         }
     }
 }

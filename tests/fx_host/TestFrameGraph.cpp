@@ -234,6 +234,14 @@ void TestFrameGraph::execute() {
     }
 }
 
+void TestFrameGraph::setSceneDepthSampling(int minFilter, int magFilter, int maxLevel) {
+    glBindTexture(GL_TEXTURE_2D, depthTex_);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, minFilter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, magFilter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, maxLevel);
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
 Image TestFrameGraph::readColor() const {
     Image img;
     img.width = width_;
