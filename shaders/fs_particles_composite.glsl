@@ -17,7 +17,7 @@
 // Three builds (QuarterResPath::CompositeVariant), not uniform branches: a CPU rasteriser runs
 // both sides of a branch, so one program with all three paths paid for every path's fetches.
 uniform sampler2D uHalfColor;   // premultiplied RGBA16F, half x half
-uniform sampler2D uHalfDepth;   // R32F min depth per 2x2 block
+uniform sampler2D uHalfDepth;   // red: min depth per 2x2 block (RG32F, green the max)
 uniform sampler2D uSceneDepth;  // full-res R32F
 uniform float uDepthThreshold;  // relative: |low - full| > threshold * full is an edge
 #ifdef FX_COMPOSITE_MIXED

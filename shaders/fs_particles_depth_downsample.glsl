@@ -1,6 +1,7 @@
 #version 330 core
 // Quarter-res step 1: the half-resolution linear depth, one texel per 2x2 block of the scene
-// depth, taking the MINIMUM (nearest) depth of the block. Nearest keeps thin foreground
+// depth: red the MINIMUM (nearest) depth of the block, green its MAXIMUM (farthest), for the
+// half-res z-fill (fs_particles_half_z.glsl) and the composite's tile classes. Nearest keeps thin foreground
 // geometry (poles, barrier tops, a car's roof line) in the low-res depth, so particles behind
 // it are hidden in the half-res pass too; the composite then lets background pixels next to it
 // borrow a neighbouring low-res texel (see QuarterResPath.h for the choice and its measured effect).
@@ -20,7 +21,7 @@ void main() {
     // Texel i covers full-res pixels 2i and 2i + 1 (an odd last row/column is clamped).
     ivec2 p = min(ivec2(gl_FragCoord.xy) * 2, last);
     ivec2 q = min(p + 1, last);
-    float d = min(min(sceneDepth(p), sceneDepth(ivec2(q.x, p.y))),
-                  min(sceneDepth(ivec2(p.x, q.y)), sceneDepth(q)));
-    oDepth = vec4(d);
+    float a = sceneDepth(p), b = sceneDepth(ivec2(q.x, p.y));
+    float c = sceneDepth(ivec2(p.x, q.y)), d = sceneDepth(q);
+    oDepth = vec4(min(min(a, b), min(c, d)), max(max(a, b), max(c, d)), 0.0, 0.0);
 }

@@ -6,7 +6,7 @@
 // particle programs on edge pixels only: with depth writes off the rejection happens before the
 // fragment shader, so the cost follows the edge pixels, not the smoke's area. No colour is
 // written.
-uniform sampler2D uHalfDepth;   // R32F min depth per 2x2 block
+uniform sampler2D uHalfDepth;   // red: min depth per 2x2 block (RG32F, green the max)
 uniform sampler2D uSceneDepth;  // full-res R32F
 uniform float uDepthThreshold;
 uniform float uPassDepth;

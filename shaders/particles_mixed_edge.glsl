@@ -3,7 +3,7 @@
 // (fs_particles_edge_mask.glsl) and the composite both include this, so the pixels the mask lets
 // the full-res redraw touch are exactly the pixels the composite takes that redraw from.
 //
-// Needs uHalfDepth (R32F min depth per 2x2 block) and uSceneDepth (full-res R32F linear depth).
+// Needs uHalfDepth (red: min depth per 2x2 block) and uSceneDepth (full-res R32F linear depth).
 
 // The four low-res texels of the bilinear footprint of the full-res pixel at `fragCoord`, and
 // their bilinear weights (as the composite's own upsample computes them).

@@ -342,15 +342,15 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
                       DebugGroup group(QuarterResPath::kDownsamplePass);
                       quarter_->downsampleDepth(ctx, depth, halfDepth, record->rect, record->tiles);
                   });
-    auto quarterPass = [this, record, halfDepth, halfColor, depth, halfZ, opacity](PassContext& ctx) {
+    auto quarterPass = [this, record, halfDepth, halfColor, halfZ, opacity](PassContext& ctx) {
         GlStateGuard guard;
         DebugGroup group(QuarterResPath::kQuarterPass);
-        const bool zTested = quarter_->beginQuarter(ctx, halfColor, record->rect, record->tiles, halfZ ? depth : Target{},
-                                                    halfZ ? &record->view : nullptr);
+        const bool zTested = quarter_->beginQuarter(ctx, halfColor, record->rect, record->tiles,
+                                                    halfZ ? halfDepth : Target{}, halfZ ? &record->view : nullptr);
         drawBatches(*record, ctx.texture(halfDepth, 0).name, true, zTested,
                     opacity.valid() ? ctx.texture(opacity, 0).name : 0);
     };
-    addPassReading(frame, QuarterResPath::kQuarterPass, {halfDepth, halfZ ? depth : Target{}, opacity}, halfColor,
+    addPassReading(frame, QuarterResPath::kQuarterPass, {halfDepth, opacity}, halfColor,
                    quarterPass);
     const bool bilinear = options.bilinearUpsample;
     // Mixed resolution: the edge pixels redrawn at full res (the full-res programs' linear-depth

@@ -11,7 +11,7 @@
 //                             sceneDepth and writing "particles_tiles" and "particles_tiles_coarse"
 //                             (RG32F, FadeClassifier.h), which "particles" reads too;
 //   quarter res: "particles_depth_downsample", "particles_quarter", "particles_composite"
-//                with targets "particles_half_depth" (R32F) and "particles_half_color"
+//                with targets "particles_half_depth" (RG32F: min, max) and "particles_half_color"
 //                (RGBA16F), both half x half, created through FrameBuilder::createTarget
 //                (see QuarterResPath.h); mixed resolution adds "particles_edges" with the
 //                full-size target "particles_edge_color" (RGBA16F + its own z-buffer).

@@ -153,7 +153,7 @@ QuarterResPath::ScreenRect QuarterResPath::screenRect(const ViewInfo& view, cons
 TargetDesc QuarterResPath::depthTargetDesc() {
     TargetDesc d;
     d.scale = 0.5f;
-    d.format = TargetFormat::R32F;
+    d.format = TargetFormat::RG32F;
     d.linearFilter = false;
     return d;
 }
@@ -203,7 +203,7 @@ void QuarterResPath::build(const std::string& shaderDir, std::vector<std::string
     if (!halfZ_) {
         halfZ_ = buildProgram(shaderDir, "vs_particles_tiles.glsl", "fs_particles_half_z.glsl", "", &error);
         if (halfZ_) {
-            halfZDepthLoc_ = glGetUniformLocation(halfZ_, "uSceneDepth");
+            halfZDepthLoc_ = glGetUniformLocation(halfZ_, "uHalfDepth");
             halfZFromLinearLoc_ = glGetUniformLocation(halfZ_, "uDepthFromLinear");
             halfZFarLoc_ = glGetUniformLocation(halfZ_, "uFar");
             halfZViewLoc_ = glGetUniformLocation(halfZ_, "uViewSize");
@@ -278,14 +278,14 @@ void QuarterResPath::downsampleDepth(PassContext& ctx, Target sceneDepth, Target
 }
 
 bool QuarterResPath::beginQuarter(PassContext& ctx, Target halfColor, const ScreenRect& rect,
-                                  const ScreenTiles& tiles, Target sceneDepth, const ViewInfo* zView) {
+                                  const ScreenTiles& tiles, Target halfDepth, const ViewInfo* zView) {
     ctx.bindForDraw(halfColor);
     scissorTo(rect, 2, 2, ctx.width(halfColor), ctx.height(halfColor));
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     const GLfloat transparent[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearBufferfv(GL_COLOR, 0, transparent);
     GLint depthBits = 0;
-    if (zView && halfZ_ && sceneDepth.valid()) {
+    if (zView && halfZ_ && halfDepth.valid()) {
         glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
                                               GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
     }
@@ -304,7 +304,7 @@ bool QuarterResPath::beginQuarter(PassContext& ctx, Target halfColor, const Scre
     glDisable(GL_CULL_FACE);
     glDisable(GL_STENCIL_TEST);
     glUseProgram(halfZ_);
-    hostDepth_.bindTexture(0, ctx.texture(sceneDepth, 0).name);
+    bindTextureUnit(0, ctx.texture(halfDepth, 0).name);
     glUniform1i(halfZDepthLoc_, 0);
     // Reversed-Z zero-to-one: window z = clip.z / clip.w = P[3][2] / depth - P[2][2].
     glUniform2f(halfZFromLinearLoc_, zView->proj[3][2], -zView->proj[2][2]);

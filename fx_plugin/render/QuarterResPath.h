@@ -111,7 +111,7 @@ public:
     /// Relative depth difference above which a footprint counts as straddling an edge.
     static constexpr float kDepthThreshold = 0.1f;
 
-    /// Half size, R32F, nearest filtering.
+    /// Half size, RG32F (min, max of each 2x2 block), nearest filtering.
     static TargetDesc depthTargetDesc();
     /// Half size, RGBA16F, linear filtering; with its own z-buffer when `withDepth` (the
     /// half-res z-test, reversed-Z hosts only).
@@ -179,12 +179,12 @@ public:
     void downsampleDepth(PassContext& ctx, Target sceneDepth, Target halfDepth, const ScreenRect& rect,
                          const ScreenTiles& tiles);
     /// Binds the half-res colour target and clears it (within the rect) to transparent black.
-    /// With `zView` (a reversed-Z view; halfColor made with a z-buffer, sceneDepth readable):
-    /// also fills that z-buffer with the farthest scene depth of each 2x2 block
-    /// (fs_particles_half_z.glsl) and leaves the depth test on, GEQUAL without writes, so the
-    /// half-res particles skip what is hidden behind all four pixels. True when that was done.
+    /// With `zView` (a reversed-Z view; halfColor made with a z-buffer, halfDepth downsampled):
+    /// also fills that z-buffer with the farthest scene depth of each 2x2 block (halfDepth's
+    /// green, fs_particles_half_z.glsl) and leaves the depth test on, GEQUAL without writes, so
+    /// the half-res particles skip what is hidden behind all four pixels. True when that was done.
     bool beginQuarter(PassContext& ctx, Target halfColor, const ScreenRect& rect, const ScreenTiles& tiles,
-                      Target sceneDepth = Target{}, const ViewInfo* zView = nullptr);
+                      Target halfDepth = Target{}, const ViewInfo* zView = nullptr);
     /// Mixed resolution: binds the full-res edge target, clears its colour (within the rect) to
     /// transparent black and writes the edge mask into its z-buffer (fs_particles_edge_mask.glsl),
     /// then leaves the depth test on without writes, in the view's convention (LEQUAL, GEQUAL
