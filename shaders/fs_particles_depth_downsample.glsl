@@ -1,9 +1,9 @@
 #version 330 core
 // Quarter-res step 1: the half-resolution linear depth, one texel per 2x2 block of the scene
-// depth: red the MINIMUM (nearest) depth of the block, green its MAXIMUM (farthest), for the
-// half-res z-fill (fs_particles_half_z.glsl) and the composite's tile classes. Nearest keeps thin foreground
-// geometry (poles, barrier tops, a car's roof line) in the low-res depth, so particles behind
-// it are hidden in the half-res pass too; the composite then lets background pixels next to it
+// depth: red the MINIMUM (nearest) depth of the block, green its MAXIMUM (farthest, for the
+// half-res z-fill, fs_particles_half_z.glsl). Nearest keeps thin foreground geometry (poles,
+// barrier tops, a car's roof line) in the low-res depth, so particles behind it are hidden in
+// the half-res pass too; the composite then lets background pixels next to it
 // borrow a neighbouring low-res texel (see QuarterResPath.h for the choice and its measured effect).
 uniform sampler2D uSceneDepth;  // full resolution, R32F metres
 

@@ -27,10 +27,10 @@ void setEnabled(GLenum cap, bool on) {
 
 }  // namespace
 
-void bindTextureUnit(int unit, uint32_t texture) {
+void bindTextureUnit(int unit, uint32_t texture, uint32_t sampler) {
     glActiveTexture(GLenum(GL_TEXTURE0 + unit));
     glBindTexture(GL_TEXTURE_2D, GLuint(texture));
-    glBindSampler(GLuint(unit), 0);
+    glBindSampler(GLuint(unit), GLuint(sampler));
 }
 
 NearestSampler::~NearestSampler() {
@@ -46,10 +46,7 @@ void NearestSampler::create() {
     glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-void NearestSampler::bindTexture(int unit, uint32_t texture) const {
-    bindTextureUnit(unit, texture);
-    glBindSampler(GLuint(unit), sampler_);
-}
+void NearestSampler::bindTexture(int unit, uint32_t texture) const { bindTextureUnit(unit, texture, sampler_); }
 
 DebugGroup::DebugGroup(const char* name) : active_(FXGLAD_GL_KHR_debug != 0) {
     if (active_) glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name);

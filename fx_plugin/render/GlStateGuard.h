@@ -22,9 +22,9 @@
 namespace fx {
 
 /// Binds `texture` to GL_TEXTURE_2D of texture unit `unit` (below GlStateGuard::kTextureUnits, so
-/// a guard puts the host's binding back) with no sampler object: a host sampler bound there would
-/// override the texture's own filtering. Leaves `unit` active.
-void bindTextureUnit(int unit, uint32_t texture);
+/// a guard puts the host's binding back) with `sampler` on the unit: by default none, since a host
+/// sampler bound there would override the texture's own filtering. Leaves `unit` active.
+void bindTextureUnit(int unit, uint32_t texture, uint32_t sampler = 0);
 
 /// A sampler object that reads a texture with GL_NEAREST and GL_CLAMP_TO_EDGE, one level, whatever
 /// the texture's own parameters. The host's scene depth is read through it: a host may leave
@@ -39,8 +39,8 @@ public:
     NearestSampler(const NearestSampler&) = delete;
     NearestSampler& operator=(const NearestSampler&) = delete;
     void create();
-    /// bindTextureUnit(unit, texture), then this sampler on `unit` (below
-    /// GlStateGuard::kTextureUnits, so a guard restores the host's).
+    /// bindTextureUnit with this sampler on `unit` (below GlStateGuard::kTextureUnits, so a guard
+    /// restores the host's).
     void bindTexture(int unit, uint32_t texture) const;
 
 private:
