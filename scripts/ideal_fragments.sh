@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# How far the particle shapes are from perfect (README, "How far the shapes are from perfect").
+# Runs fxbench three times over the same frames: with the shaders as they are, then with copies
+# of the soft and spherical fragment shaders that also discard what a perfect shape would never
+# draw (atlas alpha 0; for spheres also a chord wholly behind the scene). `particle_fragments`
+# counts what is not discarded, so the second and third runs count the ideal. A measurement aid
+# only: the copies live in a temporary folder read through CUBE_SHADER_DIR.
+#   scripts/ideal_fragments.sh [fxbench options...]   (default: the standard scene, 1 round)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+fxbench=./build/bin/fxbench
+[ -x "$fxbench" ] || { echo "ideal_fragments.sh: build first (./run.sh or cmake --build build)" >&2; exit 1; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+python3 - "$work" <<'EOF'
+import pathlib, shutil, sys
+work = pathlib.Path(sys.argv[1])
+# (file, text that must be there, replacement): stop loudly when a shader no longer matches.
+edits = {
+    "alpha": [
+        ("fs_particles_soft.glsl", "    float depth = -vViewPos.z;\n",
+         "    if (texel.a <= 0.0) discard;\n    float depth = -vViewPos.z;\n"),
+        ("fs_particles_spherical.glsl", "if (d2 >= r * r) discard;",
+         "if (d2 >= r * r || texel.a <= 0.0) discard;"),
+    ],
+}
+edits["visible"] = edits["alpha"] + [
+    ("fs_particles_spherical.glsl", "    float coverage = texel.a * visible",
+     "    if (visible <= 0.0) discard;\n    float coverage = texel.a * visible"),
+]
+for name, changes in edits.items():
+    folder = work / name
+    shutil.copytree("shaders", folder)
+    for file, old, new in changes:
+        path = folder / file
+        text = path.read_text()
+        if text.count(old) != 1:
+            sys.exit(f"ideal_fragments.sh: {file}: expected exactly one '{old.strip()}'")
+        path.write_text(text.replace(old, new))
+EOF
+
+args=("$@")
+[ ${#args[@]} -gt 0 ] || args=(--rounds 1)
+for variant in now alpha visible; do
+    json="$work/$variant.json"
+    if [ "$variant" = now ]; then
+        "$fxbench" --modes soft,soft-quads,spherical,spherical-quads "${args[@]}" --json "$json" >/dev/null
+    else
+        CUBE_SHADER_DIR="$work/$variant" "$fxbench" --modes soft,soft-quads,spherical,spherical-quads \
+            "${args[@]}" --json "$json" >/dev/null
+    fi
+done
+
+python3 - "$work" <<'EOF'
+import json, sys
+work = sys.argv[1]
+runs = {v: {m["name"]: m["particle_fragments"] for m in json.load(open(f"{work}/{v}.json"))["modes"]}
+        for v in ("now", "alpha", "visible")}
+print("| mode | drawn now | atlas alpha > 0 (spheres: inside the outline) | spheres: and a visible chord |")
+print("|---|---:|---:|---:|")
+for mode in runs["now"]:
+    visible = f"{runs['visible'][mode]:,.0f}" if mode.startswith("spherical") else "-"
+    print(f"| {mode} | {runs['now'][mode]:,.0f} | {runs['alpha'][mode]:,.0f} | {visible} |")
+EOF
