@@ -43,13 +43,11 @@ EOF
 args=("$@")
 [ ${#args[@]} -gt 0 ] || args=(--rounds 1)
 for variant in now alpha visible; do
-    json="$work/$variant.json"
-    if [ "$variant" = now ]; then
-        "$fxbench" --modes soft,soft-quads,spherical,spherical-quads "${args[@]}" --json "$json" >/dev/null
-    else
-        CUBE_SHADER_DIR="$work/$variant" "$fxbench" --modes soft,soft-quads,spherical,spherical-quads \
-            "${args[@]}" --json "$json" >/dev/null
-    fi
+    # An empty CUBE_SHADER_DIR means the shaders built into fxbench (engine_stub/gl/Paths.cpp).
+    shaderDir=""
+    [ "$variant" = now ] || shaderDir="$work/$variant"
+    CUBE_SHADER_DIR="$shaderDir" "$fxbench" --modes soft,soft-quads,spherical,spherical-quads "${args[@]}" \
+        --json "$work/$variant.json" >/dev/null
 done
 
 python3 - "$work" <<'EOF'
