@@ -2,6 +2,7 @@
 // here turns C descriptors and callbacks into the plugin's own C++ types (compiled with the
 // library's standard library, never crossing the boundary) and back.
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -68,7 +69,11 @@ void report(const Diagnostics& diags, const fxDiagnosticSink* out) {
 fxPlugin* create(const fxPluginDesc* desc, int* error) {
     auto fail = [&](ErrorCode c, const std::string& what) -> fxPlugin* {
         if (error) *error = code(c);
-        if (desc && knownSize(desc->size, sizeof(fxPluginDesc)) && desc->host && desc->host->log) {
+        // The host's log is reached when the descriptor's own size says it holds the host pointer
+        // (a wrong size may still cover it), and that callback table's size is the known one.
+        const bool hostReadable = desc && desc->size >= offsetof(fxPluginDesc, host) + sizeof(desc->host) &&
+                                  desc->host && knownSize(desc->host->size, sizeof(fxHostCallbacks));
+        if (hostReadable && desc->host->log) {
             const std::string line = std::string("fx: error[") + fxErrorCodeName(code(c)) + "] fxCreatePlugin: " + what;
             desc->host->log(desc->host->user, FX_LOG_ERROR, line.c_str());
         }
