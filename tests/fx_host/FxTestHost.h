@@ -32,6 +32,9 @@ using ProcAddressFn = void (*(*)(const char*))();
 /// it cannot. The proc-address function is what glad loads the entry points with.
 bool createOsMesaContext(std::string* error);
 ProcAddressFn osMesaProcAddress();
+/// Gives the context's default framebuffer (RGBA8, DEPTH24 + STENCIL8) this size (it starts 4 x 4;
+/// the immediate-path tests draw into it as a host without FBOs would). False when it cannot.
+bool resizeDefaultFramebuffer(int width, int height);
 
 // ---- GL support (GlTestSupport.cpp) ----------------------------------------------------------
 

@@ -1,0 +1,131 @@
+// The host's z-buffer into linear depth: copy (when only a bound framebuffer is given) and the
+// linearise pass.
+#include "HostDepth.h"
+
+#include "PrivateGl.h"
+#include "ShaderLoader.h"
+
+namespace fx {
+
+uint32_t supportedDepthFormat(uint32_t f) {
+    switch (f) {
+    case GL_DEPTH_COMPONENT16:
+    case GL_DEPTH_COMPONENT24:
+    case GL_DEPTH_COMPONENT32F:
+    case GL_DEPTH24_STENCIL8:
+    case GL_DEPTH32F_STENCIL8:
+        return f;
+    default:
+        return 0;
+    }
+}
+
+HostDepth::~HostDepth() { releaseGl(); }
+
+void HostDepth::releaseGl() {
+    if (program_) glDeleteProgram(program_);
+    if (vao_) glDeleteVertexArrays(1, &vao_);
+    if (sampler_) glDeleteSamplers(1, &sampler_);
+    if (copy_) glDeleteTextures(1, &copy_);
+    program_ = vao_ = sampler_ = copy_ = 0;
+    copyWidth_ = copyHeight_ = 0;
+    copyFormat_ = 0;
+}
+
+bool HostDepth::prepare(std::string* error) {
+    if (program_) return true;
+    program_ = buildProgram(shaderDir_, "vs_particles_fullscreen.glsl", "fs_particles_linearize_depth.glsl", "",
+                            error);
+    if (!program_) return false;
+    locDepth_ = glGetUniformLocation(program_, "uDepth");
+    locCoeffs_ = glGetUniformLocation(program_, "uCoeffs");
+    locFarWindow_ = glGetUniformLocation(program_, "uFarWindow");
+    locReversed_ = glGetUniformLocation(program_, "uReversed");
+    locBackground_ = glGetUniformLocation(program_, "uBackground");
+    glGenVertexArrays(1, &vao_);
+    // A host's depth texture may carry shadow comparison or mipmapped filtering: read it through
+    // a sampler that has neither.
+    glGenSamplers(1, &sampler_);
+    glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(sampler_, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    return true;
+}
+
+uint32_t HostDepth::framebufferDepthFormat(uint32_t framebuffer) {
+    GLint previous = 0;
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previous);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+    const GLenum attachment = framebuffer == 0 ? GL_DEPTH : GL_DEPTH_ATTACHMENT;
+    GLint type = GL_NONE, bits = 0, component = GL_NONE;
+    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE,
+                                          &type);
+    if (type != GL_NONE) {
+        glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE,
+                                              &bits);
+        glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment,
+                                              GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &component);
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(previous));
+    if (type == GL_NONE || bits == 0) return 0;
+    // The copy keeps every bit of the source: the same precision, no conversion on the way.
+    if (component == GL_FLOAT) return GL_DEPTH_COMPONENT32F;
+    return bits <= 16 ? GL_DEPTH_COMPONENT16 : bits <= 24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32;
+}
+
+uint32_t HostDepth::textureFormat(uint32_t texture) {
+    glBindTexture(GL_TEXTURE_2D, texture);
+    GLint format = 0;
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    return uint32_t(format);
+}
+
+uint32_t HostDepth::copyFramebufferDepth(uint32_t framebuffer, int x, int y, int width, int height,
+                                         uint32_t format) {
+    glActiveTexture(GL_TEXTURE0);
+    if (!copy_ || copyWidth_ != width || copyHeight_ != height || copyFormat_ != format) {
+        if (!copy_) glGenTextures(1, &copy_);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);  // a null upload must not read from a host PBO
+        glBindTexture(GL_TEXTURE_2D, copy_);
+        const GLenum type = format == GL_DEPTH_COMPONENT32F ? GL_FLOAT : GL_UNSIGNED_INT;
+        glTexImage2D(GL_TEXTURE_2D, 0, GLint(format), width, height, 0, GL_DEPTH_COMPONENT, type, nullptr);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+        copyWidth_ = width;
+        copyHeight_ = height;
+        copyFormat_ = format;
+    }
+    glBindTexture(GL_TEXTURE_2D, copy_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, x, y, width, height);
+    ++copies_;
+    return copy_;
+}
+
+void HostDepth::linearize(uint32_t depthTexture, const glm::mat4& proj, const DepthMapping& mapping,
+                          float background, uint32_t targetFramebuffer, int width, int height) {
+    const LinearizeCoefficients k = linearizeCoefficients(proj, mapping);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetFramebuffer);
+    glViewport(0, 0, width, height);
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glUseProgram(program_);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, depthTexture);
+    glBindSampler(0, sampler_);
+    glUniform1i(locDepth_, 0);
+    glUniform4f(locCoeffs_, k.a, k.b, k.c, k.d);
+    glUniform1f(locFarWindow_, k.farWindow);
+    glUniform1f(locReversed_, k.reversed ? 1.0f : 0.0f);
+    glUniform1f(locBackground_, background);
+    glBindVertexArray(vao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    ++linearizations_;
+}
+
+}  // namespace fx
