@@ -63,6 +63,7 @@ size_t ImmediateTargetPool::acquire(const TargetDesc& desc, int width, int heigh
     const Layout l = layoutOf(desc.format);
     const GLint filter = desc.linearFilter ? GL_LINEAR : GL_NEAREST;
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);  // a null upload must not read from a host PBO
+    glActiveTexture(GL_TEXTURE0);              // a unit the caller's guard restores
     glGenTextures(1, &s.texture);
     glBindTexture(GL_TEXTURE_2D, s.texture);
     glTexImage2D(GL_TEXTURE_2D, 0, GLint(l.internal), width, height, 0, l.format, l.type, nullptr);

@@ -34,9 +34,10 @@ public:
     void beginFrame();
     /// Frees the slots no frame took in the last kKeepFrames frames.
     void endFrame();
-    /// A slot for `desc` at width x height (already resolved from the view); its index. Binds
-    /// GL_TEXTURE_2D of the active unit, GL_RENDERBUFFER and GL_FRAMEBUFFER when it allocates (the
-    /// caller's GlStateGuard restores them; GL_RENDERBUFFER is not captured, so it is put back here).
+    /// A slot for `desc` at width x height (already resolved from the view); its index. When it
+    /// allocates it changes the active texture unit to 0 and binds GL_TEXTURE_2D there, the
+    /// pixel-unpack buffer and GL_FRAMEBUFFER (the caller's GlStateGuard restores them);
+    /// GL_RENDERBUFFER, which no guard captures, is put back here.
     size_t acquire(const TargetDesc& desc, int width, int height);
     PooledTarget& at(size_t index) { return slots_[index]; }
 

@@ -193,6 +193,65 @@ TEST_F(ImmediateRendererTest, SameImageAsTheFrameGraphPerTechniqueAndDepthSource
     ASSERT_TRUE(resizeDefaultFramebuffer(4, 4));
 }
 
+void clipControlZeroToOne(bool on) {
+    using ClipControlFn = void (*)(GLenum, GLenum);
+    static const auto fn = reinterpret_cast<ClipControlFn>(osMesaProcAddress()("glClipControl"));
+    ASSERT_TRUE(fn != nullptr);
+    fn(0x8CA1 /* LOWER_LEFT */, on ? 0x935F /* ZERO_TO_ONE */ : 0x935E /* NEGATIVE_ONE_TO_ONE */);
+}
+
+// A reversed-Z host (ZERO_TO_ONE, float z-buffers, GEQUAL): the plugin learns the convention from
+// the matrix and the mapping alone (ViewInfo::depth is left Standard here on purpose).
+TEST_F(ImmediateRendererTest, ReversedZHostSameImagePerDepthSource) {
+    ASSERT_TRUE(resizeDefaultFramebuffer(kW, kH));
+    TestFrameGraph reversedGraph(kW, kH, /*floatDepth=*/true);
+    scene.reversedZ = true;
+    fx::ViewInfo rv = view;
+    useReversedZ(&rv);
+    HostTarget withDepthTexture(kW, kH, GL_DEPTH_COMPONENT32F);
+    for (const Mode& m : {kModes[1], kModes[2], kModes[3], kModes[4]}) {
+        SCOPED_TRACE(m.name);
+        setMode(m);
+        renderFrame(reversedGraph, scene, rv, [&](fx::FrameBuilder& f) { plugin->declarePasses(rv, f); });
+        const Image reference = reversedGraph.readColor();
+        GLint linear = 0;
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, reversedGraph.depthFramebuffer());
+        glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                              GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &linear);
+        auto run = [&](GLuint fbo, Source source, GLuint texture) {
+            fx::ImmediateView iv = immediateView(source, texture);
+            iv.view = rv;
+            iv.view.depth = fx::DepthConvention::Standard;  // conventionOf decides
+            iv.mapping.clipZeroToOne = true;
+            const fx::ErrorCode e = drawImmediate(fbo, iv);  // drawOpaque leaves ZERO_TO_ONE set
+            clipControlZeroToOne(false);
+            glDepthFunc(GL_LESS);
+            return e;
+        };
+        ASSERT_EQ(run(reversedGraph.colorFramebuffer(), Source::LinearR32F, GLuint(linear)), fx::ErrorCode::None);
+        EXPECT_EQ(maxAbsDiff(reversedGraph.readColor(), reference), 0) << "bit for bit with the same linear depth";
+        ASSERT_EQ(run(reversedGraph.colorFramebuffer(), Source::BoundFramebuffer, 0), fx::ErrorCode::None);
+        const Image fromFbo = reversedGraph.readColor();
+        ASSERT_EQ(run(withDepthTexture.fbo, Source::DepthTexture, withDepthTexture.depth), fx::ErrorCode::None);
+        const Image fromTexture = readFramebuffer(withDepthTexture.fbo, kW, kH);
+        ASSERT_EQ(run(0, Source::LinearR32F, GLuint(linear)), fx::ErrorCode::None);
+        const Image defaultReference = readFramebuffer(0, kW, kH);
+        ASSERT_EQ(run(0, Source::BoundFramebuffer, 0), fx::ErrorCode::None);
+        const Image fromDefault = readFramebuffer(0, kW, kH);
+        for (const auto& [what, img, ref] :
+             {std::tuple<const char*, const Image*, const Image*>{"bound FBO (32F)", &fromFbo, &reference},
+              {"depth texture (32F)", &fromTexture, &reference},
+              {"default framebuffer (24)", &fromDefault, &defaultReference}}) {
+            const int diff = maxAbsDiff(*img, *ref);
+            EXPECT_LE(diff, kDepthSourceTolerance) << what;
+            EXPECT_GE(psnr(*img, *ref), kDepthSourceMinPsnr) << what;
+            std::printf("  reversed %-10s %-24s max |diff| %d/255, PSNR %.1f dB\n", m.name, what, diff,
+                        psnr(*img, *ref));
+        }
+    }
+    ASSERT_TRUE(resizeDefaultFramebuffer(4, 4));
+}
+
 TEST_F(ImmediateRendererTest, FrameWithoutVisibleParticlesAllocatesAndCopiesNothing) {
     setMode(kModes[1]);
     view = makeView(glm::vec3(0.0f, 2.0f, 20.0f), glm::vec3(0.0f, 2.0f, 40.0f), kW, kH);  // looking away
