@@ -11,16 +11,18 @@
 uniform sampler2D uDepth;    // window depth in .r (a depth texture read without comparison)
 uniform vec4 uCoeffs;        // A, B, C, D
 uniform float uFarWindow;    // window depth of the far plane (or of an infinite one's limit)
-uniform float uReversed;     // 1: window depth falls with distance
+uniform float uReversed;     // +1: window depth grows with distance, -1: it falls (reversed)
 uniform float uBackground;
+uniform vec2 uInvSize;       // 1 / the view's size in pixels (uDepth's size, or its copy's)
 
 layout(location = 0) out vec4 oDepth;
 
 void main() {
-    float d = texelFetch(uDepth, ivec2(gl_FragCoord.xy), 0).r;
+    // textureLod at the texel centre through HostDepth's nearest sampler: the texel texelFetch
+    // gives, cheaper on llvmpipe, which bounds-checks every texelFetch lane (particles_common.glsl).
+    float d = textureLod(uDepth, gl_FragCoord.xy * uInvSize, 0.0).r;
     float t = (uCoeffs.x + uCoeffs.y * d) / (uCoeffs.z + uCoeffs.w * d);
-    bool beyond = uReversed > 0.5 ? d <= uFarWindow : d >= uFarWindow;
-    // isinf/isnan need no extension in 330; t > 0.0 is false for NaN.
-    bool drawn = !beyond && t > 0.0 && !isinf(t);
+    // (d - far) has the sign of "beyond the far plane" times uReversed's sign: one compare.
+    bool drawn = (d - uFarWindow) * uReversed < 0.0 && t > 0.0 && t < 3.0e38;
     oDepth = vec4(drawn ? t : uBackground, 0.0, 0.0, 0.0);
 }

@@ -42,6 +42,7 @@ bool HostDepth::prepare(std::string* error) {
     locFarWindow_ = glGetUniformLocation(program_, "uFarWindow");
     locReversed_ = glGetUniformLocation(program_, "uReversed");
     locBackground_ = glGetUniformLocation(program_, "uBackground");
+    locInvSize_ = glGetUniformLocation(program_, "uInvSize");
     glGenVertexArrays(1, &vao_);
     // A host's depth texture may carry shadow comparison or mipmapped filtering: read it through
     // a sampler that has neither.
@@ -121,8 +122,9 @@ void HostDepth::linearize(uint32_t depthTexture, const glm::mat4& proj, const De
     glUniform1i(locDepth_, 0);
     glUniform4f(locCoeffs_, k.a, k.b, k.c, k.d);
     glUniform1f(locFarWindow_, k.farWindow);
-    glUniform1f(locReversed_, k.reversed ? 1.0f : 0.0f);
+    glUniform1f(locReversed_, k.reversed ? -1.0f : 1.0f);
     glUniform1f(locBackground_, background);
+    glUniform2f(locInvSize_, 1.0f / float(width), 1.0f / float(height));
     glBindVertexArray(vao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     ++linearizations_;

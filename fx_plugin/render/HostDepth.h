@@ -59,7 +59,7 @@ private:
     uint32_t program_ = 0, vao_ = 0, sampler_ = 0, copy_ = 0;
     int copyWidth_ = 0, copyHeight_ = 0;
     uint32_t copyFormat_ = 0;
-    int locDepth_ = -1, locCoeffs_ = -1, locFarWindow_ = -1, locReversed_ = -1, locBackground_ = -1;
+    int locDepth_ = -1, locCoeffs_ = -1, locFarWindow_ = -1, locReversed_ = -1, locBackground_ = -1, locInvSize_ = -1;
     int copies_ = 0, linearizations_ = 0;
 };
 
