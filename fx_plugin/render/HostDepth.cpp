@@ -27,7 +27,8 @@ void HostDepth::releaseGl() {
     if (vao_) glDeleteVertexArrays(1, &vao_);
     if (sampler_) glDeleteSamplers(1, &sampler_);
     if (copy_) glDeleteTextures(1, &copy_);
-    program_ = vao_ = sampler_ = copy_ = 0;
+    if (resolveFbo_) glDeleteFramebuffers(1, &resolveFbo_);
+    program_ = vao_ = sampler_ = copy_ = resolveFbo_ = 0;
     copyWidth_ = copyHeight_ = 0;
     copyFormat_ = 0;
 }
@@ -59,21 +60,38 @@ uint32_t HostDepth::framebufferDepthFormat(uint32_t framebuffer) {
     GLint previous = 0;
     glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previous);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
-    const GLenum attachment = framebuffer == 0 ? GL_DEPTH : GL_DEPTH_ATTACHMENT;
-    GLint type = GL_NONE, bits = 0, component = GL_NONE;
-    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE,
-                                          &type);
-    if (type != GL_NONE) {
-        glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE,
-                                              &bits);
-        glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment,
-                                              GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &component);
+    const GLenum depthAttachment = framebuffer == 0 ? GL_DEPTH : GL_DEPTH_ATTACHMENT;
+    const GLenum stencilAttachment = framebuffer == 0 ? GL_STENCIL : GL_STENCIL_ATTACHMENT;
+    auto query = [](GLenum attachment, GLenum what) {
+        GLint v = 0;
+        glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment, what, &v);
+        return v;
+    };
+    GLint bits = 0, component = GL_NONE, stencil = 0;
+    if (query(depthAttachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE) != GL_NONE) {
+        bits = query(depthAttachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE);
+        component = query(depthAttachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE);
+        if (query(stencilAttachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE) != GL_NONE) {
+            stencil = query(stencilAttachment, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE);
+        }
     }
     glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(previous));
-    if (type == GL_NONE || bits == 0) return 0;
-    // The copy keeps every bit of the source: the same precision, no conversion on the way.
-    if (component == GL_FLOAT) return GL_DEPTH_COMPONENT32F;
-    return bits <= 16 ? GL_DEPTH_COMPONENT16 : bits <= 24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT32;
+    if (bits == 0) return 0;
+    // The copy keeps every bit of the source, in the source's own layout: a multisampled source
+    // is resolved with a blit, which needs the formats to match exactly (stencil included).
+    if (component == GL_FLOAT) return stencil ? GL_DEPTH32F_STENCIL8 : GL_DEPTH_COMPONENT32F;
+    if (bits <= 16) return GL_DEPTH_COMPONENT16;
+    if (bits <= 24) return stencil ? GL_DEPTH24_STENCIL8 : GL_DEPTH_COMPONENT24;
+    return GL_DEPTH_COMPONENT32;
+}
+
+int HostDepth::framebufferSamples(uint32_t framebuffer) {
+    GLint previous = 0, samples = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+    glGetIntegerv(GL_SAMPLES, &samples);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(previous));
+    return samples;
 }
 
 uint32_t HostDepth::textureFormat(uint32_t texture) {
@@ -84,22 +102,45 @@ uint32_t HostDepth::textureFormat(uint32_t texture) {
 }
 
 uint32_t HostDepth::copyFramebufferDepth(uint32_t framebuffer, int x, int y, int width, int height,
-                                         uint32_t format) {
+                                         uint32_t format, int samples) {
     glActiveTexture(GL_TEXTURE0);
     if (!copy_ || copyWidth_ != width || copyHeight_ != height || copyFormat_ != format) {
         if (!copy_) glGenTextures(1, &copy_);
         glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);  // a null upload must not read from a host PBO
         glBindTexture(GL_TEXTURE_2D, copy_);
-        const GLenum type = format == GL_DEPTH_COMPONENT32F ? GL_FLOAT : GL_UNSIGNED_INT;
-        glTexImage2D(GL_TEXTURE_2D, 0, GLint(format), width, height, 0, GL_DEPTH_COMPONENT, type, nullptr);
+        const bool packed = format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8;
+        const GLenum layout = packed ? GL_DEPTH_STENCIL : GL_DEPTH_COMPONENT;
+        const GLenum type = format == GL_DEPTH32F_STENCIL8 ? GL_FLOAT_32_UNSIGNED_INT_24_8_REV
+                            : format == GL_DEPTH24_STENCIL8 ? GL_UNSIGNED_INT_24_8
+                            : format == GL_DEPTH_COMPONENT32F ? GL_FLOAT
+                                                              : GL_UNSIGNED_INT;
+        glTexImage2D(GL_TEXTURE_2D, 0, GLint(format), width, height, 0, layout, type, nullptr);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
         copyWidth_ = width;
         copyHeight_ = height;
         copyFormat_ = format;
+        if (resolveFbo_) glDeleteFramebuffers(1, &resolveFbo_);
+        resolveFbo_ = 0;
     }
-    glBindTexture(GL_TEXTURE_2D, copy_);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
-    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, x, y, width, height);
+    if (samples > 0) {
+        // glCopyTexSubImage2D refuses a multisampled source; a blit resolves it (one sample per
+        // pixel, nearest: the z-buffer's own values, as a depth resolve must be).
+        if (!resolveFbo_) {
+            glGenFramebuffers(1, &resolveFbo_);
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolveFbo_);
+            const bool packed = format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8;
+            glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, packed ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
+                                   GL_TEXTURE_2D, copy_, 0);
+            glDrawBuffer(GL_NONE);
+        }
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolveFbo_);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+        glBlitFramebuffer(x, y, x + width, y + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    } else {
+        glBindTexture(GL_TEXTURE_2D, copy_);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, x, y, width, height);
+    }
     ++copies_;
     return copy_;
 }

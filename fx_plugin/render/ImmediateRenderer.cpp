@@ -46,11 +46,13 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
         return ErrorCode::InvalidView;
     }
     uint32_t depthFormat = 0;
+    int samples = 0;
     if (source == Source::DepthTexture) {
         glActiveTexture(GL_TEXTURE0);
         depthFormat = supportedDepthFormat(in.depthFormat ? in.depthFormat : HostDepth::textureFormat(in.depthTexture));
     } else if (source == Source::BoundFramebuffer) {
         depthFormat = HostDepth::framebufferDepthFormat(uint32_t(drawFramebuffer));
+        samples = HostDepth::framebufferSamples(uint32_t(drawFramebuffer));
     }
     if ((source == Source::DepthTexture || source == Source::BoundFramebuffer) && depthFormat == 0) {
         lastError_ = source == Source::DepthTexture ? "depthTexture: not a GL_DEPTH_COMPONENT16/24/32F or DEPTH24_STENCIL8 texture"
@@ -74,7 +76,7 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
     const int w = view.width, h = view.height;
     const uint32_t hostTexture = in.depthTexture;
     setup.produceDepth = [this, source, background, proj, mapping, w, h, hostTexture, depthFormat,
-                          drawFramebuffer](uint32_t target) {
+                          samples, drawFramebuffer](uint32_t target) {
         // Built on first use, like the particle programs: a scene without smoke compiles nothing.
         std::string error;
         const bool ready = source == Source::None || depth_.prepare(&error);
@@ -92,7 +94,8 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
         }
         const uint32_t texture =
             source == Source::DepthTexture ? hostTexture
-                                           : depth_.copyFramebufferDepth(uint32_t(drawFramebuffer), 0, 0, w, h, depthFormat);
+                                           : depth_.copyFramebufferDepth(uint32_t(drawFramebuffer), 0, 0, w, h,
+                                                                      depthFormat, samples);
         depth_.linearize(texture, proj, mapping, background, target, w, h);
     };
     pool_.beginFrame();

@@ -247,12 +247,15 @@ protected:
     }
 
     // Checks every pixel away from the strips' edges; returns the figures.
-    Measured check(const Convention& c, int bits, const std::string& what) {
+    // `tiltedToo` false: the tilted strip is left out (a multisample resolve keeps one sample per
+    // pixel, which lies off the pixel centre, so on a slope it is not the centre's depth).
+    Measured check(const Convention& c, int bits, const std::string& what, bool tiltedToo = true) {
         const std::vector<float> got = readLinear();
         Measured m;
         for (int y = 1; y < kH - 1; ++y) {
             for (int x = 0; x < kW; ++x) {
                 if (x % kStrip == 0 || x % kStrip == kStrip - 1) continue;  // edge rules
+                if (!tiltedToo && x / kStrip == 6) continue;
                 const double want = rayCast(c.proj, x, y);
                 const float v = got[size_t(y) * kW + size_t(x)];
                 if (want == 0.0) {
@@ -356,20 +359,70 @@ TEST_F(HostDepthTest, DefaultFramebufferDepthIsCopiedAndLinearised) {
     ASSERT_TRUE(resizeDefaultFramebuffer(kW, kH));
     {
         fx::GlStateGuard guard;
-        EXPECT_EQ(fx::HostDepth::framebufferDepthFormat(0), uint32_t(GL_DEPTH_COMPONENT24));  // OSMesa: 24 + 8
+        EXPECT_EQ(fx::HostDepth::framebufferDepthFormat(0), uint32_t(GL_DEPTH24_STENCIL8));  // OSMesa: 24 + 8
+        EXPECT_EQ(fx::HostDepth::framebufferSamples(0), 0);
     }
     for (const Convention& c : conventions()) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         drawScene(c);
         {
             fx::GlStateGuard guard;
-            const uint32_t copy = depth.copyFramebufferDepth(0, 0, 0, kW, kH, GL_DEPTH_COMPONENT24);
+            const uint32_t copy = depth.copyFramebufferDepth(0, 0, 0, kW, kH, GL_DEPTH24_STENCIL8);
             depth.linearize(copy, c.proj, c.mapping, kFar, linearFbo, kW, kH);
         }
         check(c, 24, "default framebuffer copy");
     }
     EXPECT_EQ(depth.copies(), int(conventions().size()));
     ASSERT_TRUE(resizeDefaultFramebuffer(4, 4));
+}
+
+// A multisampled host framebuffer (what an engine with MSAA draws into): the copy is a depth
+// resolve (a blit), since glCopyTexSubImage2D refuses a multisampled source.
+TEST_F(HostDepthTest, MultisampledFramebufferDepthIsResolvedAndLinearised) {
+    struct Ms {
+        const char* name;
+        GLenum depth;
+        int bits;
+    };
+    for (const Ms& ms : {Ms{"MSAA4 DEPTH24_STENCIL8", GL_DEPTH24_STENCIL8, 24}, Ms{"MSAA4 DEPTH32F", GL_DEPTH_COMPONENT32F, 0}}) {
+        GLuint rb[2] = {}, fbo = 0;
+        glGenRenderbuffers(2, rb);
+        glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_RGBA8, kW, kH);
+        glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, ms.depth, kW, kH);
+        glBindRenderbuffer(GL_RENDERBUFFER, 0);
+        glGenFramebuffers(1, &fbo);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER,
+                                  ms.depth == GL_DEPTH24_STENCIL8 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
+                                  GL_RENDERBUFFER, rb[1]);
+        ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE)) << ms.name;
+        uint32_t format = 0;
+        int samples = 0;
+        {
+            fx::GlStateGuard guard;
+            format = fx::HostDepth::framebufferDepthFormat(fbo);
+            samples = fx::HostDepth::framebufferSamples(fbo);
+        }
+        EXPECT_EQ(format, uint32_t(ms.depth)) << ms.name;
+        EXPECT_EQ(samples, 4) << ms.name;
+        for (const Convention& c : conventions()) {
+            glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+            drawScene(c);
+            {
+                fx::GlStateGuard guard;
+                const uint32_t copy = depth.copyFramebufferDepth(fbo, 0, 0, kW, kH, format, samples);
+                depth.linearize(copy, c.proj, c.mapping, kFar, linearFbo, kW, kH);
+            }
+            check(c, ms.bits, ms.name, /*tiltedToo=*/false);
+            drainGlErrors(c.name);
+        }
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glDeleteFramebuffers(1, &fbo);
+        glDeleteRenderbuffers(2, rb);
+    }
 }
 
 }  // namespace host_depth
