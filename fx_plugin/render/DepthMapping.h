@@ -66,8 +66,8 @@ double linearDepthOf(const glm::mat4& proj, const DepthMapping& mapping, double 
 /// |dt / dd| at distance t: metres per unit of window depth (for error bounds).
 double depthSlope(const glm::mat4& proj, const DepthMapping& mapping, double t);
 
-/// The linearise pass's coefficients. `farPlane`: the view's far plane (ViewInfo::farPlane), used
-/// when the projection has none of its own (an infinite far plane maps t -> infinity instead).
+/// The linearise pass's coefficients (an infinite far plane's farWindow is the limit of the
+/// window depth as t -> infinity, which is where its cleared buffer sits too).
 LinearizeCoefficients linearizeCoefficients(const glm::mat4& proj, const DepthMapping& mapping);
 
 /// ReversedZ when the near plane lands at a larger window depth than the far plane (so the

@@ -101,6 +101,12 @@ uint32_t HostDepth::textureFormat(uint32_t texture) {
     return uint32_t(format);
 }
 
+void HostDepth::textureSize(uint32_t texture, int* width, int* height) {
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, width);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, height);
+}
+
 uint32_t HostDepth::copyFramebufferDepth(uint32_t framebuffer, int x, int y, int width, int height,
                                          uint32_t format, int samples) {
     glActiveTexture(GL_TEXTURE0);

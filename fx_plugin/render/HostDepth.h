@@ -38,8 +38,10 @@ public:
     static uint32_t framebufferDepthFormat(uint32_t framebuffer);
     /// GL_SAMPLES of `framebuffer` (0: single-sampled).
     static int framebufferSamples(uint32_t framebuffer);
-    /// The internal format of level 0 of GL_TEXTURE_2D `texture`.
+    /// The internal format of level 0 of GL_TEXTURE_2D `texture` (binds it on the active unit).
     static uint32_t textureFormat(uint32_t texture);
+    /// The size of level 0 of GL_TEXTURE_2D `texture` (binds it on the active unit, as textureFormat).
+    static void textureSize(uint32_t texture, int* width, int* height);
 
     /// Copies the depth of `framebuffer`'s rect (x, y, width, height) into the plugin's own depth
     /// texture (format `format`, from framebufferDepthFormat; reallocated when the size or the

@@ -5,6 +5,8 @@
 #include "ImmediateFrame.h"
 #include "PrivateGl.h"
 
+#include <string>
+
 namespace fx {
 
 ImmediateRenderer::ImmediateRenderer(HostAdapter* host, std::string shaderDir)
@@ -17,6 +19,15 @@ void ImmediateRenderer::releaseGl() {
     depth_.releaseGl();
 }
 
+ErrorCode ImmediateRenderer::refuse(ErrorCode code, const std::string& what) {
+    lastError_ = what;
+    if (host_) {
+        host_->log(LogLevel::Error,
+                   (std::string("fx: error[") + errorCodeName(code) + "] immediate render: " + what).c_str());
+    }
+    return code;
+}
+
 ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
     using Source = ImmediateView::DepthSource;
     lastPasses_.clear();
@@ -24,40 +35,47 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
     const Source source = in.depthSource;
     if (source != Source::None && source != Source::LinearR32F && source != Source::DepthTexture &&
         source != Source::BoundFramebuffer) {
-        lastError_ = "depthSource: not a DepthSource value";
-        return ErrorCode::InvalidValue;
+        return refuse(ErrorCode::InvalidValue, "depthSource: not a DepthSource value");
     }
     if ((source == Source::LinearR32F || source == Source::DepthTexture) && in.depthTexture == 0) {
-        lastError_ = "depthTexture: 0 for a depth source that needs a texture";
-        return ErrorCode::InvalidValue;
+        return refuse(ErrorCode::InvalidValue, "depthTexture: 0 for a depth source that needs a texture");
     }
     if (!validDepthMapping(in.view.proj, in.mapping)) {
-        lastError_ = "mapping: depth range outside [0, 1] or empty, or a projection without depth";
-        return ErrorCode::InvalidValue;
+        return refuse(ErrorCode::InvalidValue,
+                      "mapping: depth range outside [0, 1] or empty, or a projection without depth");
     }
-    if (!privateGlLoaded() && !(host_ && loadPrivateGl(*host_, &lastError_))) return ErrorCode::NoGlContext;
+    std::string glError = "no HostAdapter to load GL through";
+    if (!privateGlLoaded() && !(host_ && loadPrivateGl(*host_, &glError))) return refuse(ErrorCode::NoGlContext, glError);
 
     GlStateGuard guard;  // the queries below bind textures and the read framebuffer
     GLint drawFramebuffer = 0, viewport[4] = {};
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
     glGetIntegerv(GL_VIEWPORT, viewport);
     if (viewport[0] != 0 || viewport[1] != 0) {
-        lastError_ = "viewport: origin must be (0, 0) (the particle shaders address depth by gl_FragCoord)";
-        return ErrorCode::InvalidView;
+        return refuse(ErrorCode::InvalidView,
+                      "viewport: origin must be (0, 0) (the particle shaders address depth by gl_FragCoord)");
     }
     uint32_t depthFormat = 0;
     int samples = 0;
     if (source == Source::DepthTexture) {
         glActiveTexture(GL_TEXTURE0);
         depthFormat = supportedDepthFormat(in.depthFormat ? in.depthFormat : HostDepth::textureFormat(in.depthTexture));
+        int tw = 0, th = 0;
+        HostDepth::textureSize(in.depthTexture, &tw, &th);
+        if (depthFormat && (tw != in.view.width || th != in.view.height)) {
+            return refuse(ErrorCode::SizeMismatch, "depthTexture: " + std::to_string(tw) + "x" + std::to_string(th) +
+                                                       ", the view is " + std::to_string(in.view.width) + "x" +
+                                                       std::to_string(in.view.height));
+        }
     } else if (source == Source::BoundFramebuffer) {
         depthFormat = HostDepth::framebufferDepthFormat(uint32_t(drawFramebuffer));
         samples = HostDepth::framebufferSamples(uint32_t(drawFramebuffer));
     }
     if ((source == Source::DepthTexture || source == Source::BoundFramebuffer) && depthFormat == 0) {
-        lastError_ = source == Source::DepthTexture ? "depthTexture: not a GL_DEPTH_COMPONENT16/24/32F or DEPTH24_STENCIL8 texture"
-                                                     : "the framebuffer bound for drawing has no depth attachment";
-        return ErrorCode::InvalidValue;
+        return refuse(ErrorCode::InvalidValue,
+                      source == Source::DepthTexture
+                          ? "depthTexture: not a GL_DEPTH_COMPONENT16/24/32F or DEPTH24_STENCIL8 texture"
+                          : "the framebuffer bound for drawing has no depth attachment");
     }
 
     ViewInfo view = in.view;

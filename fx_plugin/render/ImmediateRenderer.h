@@ -58,7 +58,8 @@ public:
     /// then the running passes in order). Refused, nothing drawn: InvalidValue (a depth source
     /// outside the enum, no texture for LinearR32F / DepthTexture, a texture that is not a supported
     /// depth format, a bound framebuffer without depth, an invalid mapping), InvalidView (as
-    /// declarePasses, or a viewport origin other than (0, 0)), NoGlContext. A linearise program that
+    /// declarePasses, or a viewport origin other than (0, 0)), SizeMismatch (a DepthTexture of
+    /// another size than the view), NoGlContext. Refusals are logged like the plugin's API errors. A linearise program that
     /// does not build is logged (ShaderBuild, also in lastError()); that frame draws as with no depth.
     ErrorCode render(Plugin& plugin, const ImmediateView& view);
     /// Frees the pooled targets and the depth copy (context current). The next render allocates again.
@@ -76,6 +77,9 @@ public:
     const std::string& lastError() const { return lastError_; }
 
 private:
+    /// Logs "fx: error[Code] immediate render: what" and returns `code`.
+    ErrorCode refuse(ErrorCode code, const std::string& what);
+
     HostAdapter* host_;
     ImmediateTargetPool pool_;
     HostDepth depth_;

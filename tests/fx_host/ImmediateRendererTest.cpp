@@ -372,6 +372,10 @@ TEST_F(ImmediateRendererTest, RefusesWhatItCannotDraw) {
     EXPECT_EQ(immediate->render(*plugin, bad), fx::ErrorCode::InvalidValue);
     bad = immediateView(static_cast<Source>(7));
     EXPECT_EQ(immediate->render(*plugin, bad), fx::ErrorCode::InvalidValue);
+    HostTarget wrongSize(kW / 2, kH / 2, GL_DEPTH_COMPONENT24);
+    EXPECT_EQ(immediate->render(*plugin, immediateView(Source::DepthTexture, wrongSize.depth)),
+              fx::ErrorCode::SizeMismatch);
+    EXPECT_TRUE(host.logged("error[SizeMismatch] immediate render")) << "refusals are logged";
     glViewport(8, 0, kW, kH);
     EXPECT_EQ(immediate->render(*plugin, immediateView(Source::BoundFramebuffer)), fx::ErrorCode::InvalidView);
     glViewport(0, 0, kW, kH);
