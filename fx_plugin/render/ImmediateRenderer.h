@@ -18,6 +18,18 @@
 //     included, is what it was.
 // Limitation: the particle shaders address the scene depth by gl_FragCoord, so a viewport whose
 // origin is not (0, 0) is refused (InvalidView) until they take an offset.
+//
+// Measured (tests/fx_host/ImmediateRendererTest.cpp, llvmpipe, 160 x 120 and 640 x 480):
+//   image: with the host's linear R32F depth, equal to the frame-graph path bit for bit (hard, soft,
+//   spherical, quarter res, mega, lit; standard and reversed-Z); from the host's z-buffer (24-bit
+//   texture, bound FBO, default framebuffer) within 1/255 (2/255 once, spherical, default
+//   framebuffer), PSNR 76-96 dB; from a reversed-Z host's 32F z-buffer bit for bit.
+//   time (DISABLED_ImmediateDepthSourceTiming: soft smoke on the wall scene, 640 x 480, 61
+//   interleaved rounds, CPU clock around glFinish, quiet machine, three runs): host frame + plugin
+//   with a depth texture / with linear R32F (the host's own prepass included) 1.05-1.06x (22.1 ->
+//   23.5 ms); the plugin's passes alone 1.12x (+2.35 ms), of which the linearise pass is 1.4-1.7 ms
+//   (~5 ns a pixel on llvmpipe; on a GPU a full-screen 4-byte read + write, microseconds). Not
+//   under the 1.03x target here: the pass covers the whole view while the smoke covers a part.
 #include <cstdint>
 #include <string>
 #include <vector>
