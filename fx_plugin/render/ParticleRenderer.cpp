@@ -11,6 +11,7 @@
 #include "render/PrivateGl.h"
 
 #include "GlStateGuard.h"
+#include "ShaderLoader.h"
 #include "src/ApiErrors.h"
 
 namespace fx {
@@ -31,31 +32,6 @@ void addPassReading(FrameBuilder& frame, const char* name, std::initializer_list
     case 2: frame.addPass(name, {r[0], r[1]}, {write}, std::move(execute)); break;
     case 3: frame.addPass(name, {r[0], r[1], r[2]}, {write}, std::move(execute)); break;
     default: frame.addPass(name, {r[0], r[1], r[2], r[3]}, {write}, std::move(execute)); break;
-    }
-}
-
-// "file:line: message" lines of a shader build error, as diagnostics.
-void addShaderDiagnostics(const std::string& text, Diagnostics* out) {
-    size_t start = 0;
-    while (start < text.size()) {
-        size_t end = text.find('\n', start);
-        if (end == std::string::npos) end = text.size();
-        const std::string line = text.substr(start, end - start);
-        start = end + 1;
-        if (line.empty()) continue;
-        Diagnostic d;
-        d.code = ErrorCode::ShaderBuild;
-        d.message = line;
-        const size_t c1 = line.find(':');
-        const size_t c2 = c1 == std::string::npos ? c1 : line.find(':', c1 + 1);
-        if (c2 != std::string::npos && c2 > c1 + 1 &&
-            line.find_first_not_of("0123456789", c1 + 1) == c2) {
-            d.file = line.substr(0, c1);
-            d.line = std::atoi(line.c_str() + c1 + 1);
-            d.message = line.substr(line.find_first_not_of(' ', c2 + 1) == std::string::npos
-                                        ? line.size() : line.find_first_not_of(' ', c2 + 1));
-        }
-        out->push_back(d);
     }
 }
 
@@ -99,9 +75,15 @@ bool ParticleRenderer::ensureLoaded() {
         log(LogLevel::Warning, "fx: lit smoke is drawn as flat cards: " + atlas_.normalsError());
         normalsWarned_ = true;
     }
+    // One cause fails every variant built from its file (unlit, lit, each soft program): told once.
+    std::string fresh;
     for (const std::string& e : errors) {
-        log(LogLevel::Error, "fx: shader build failed:\n" + e);
-        addShaderDiagnostics(e, &loadDiagnostics_);
+        const std::string lines = loadErrors_.add(e);
+        if (!lines.empty()) fresh += (fresh.empty() ? "" : "\n") + lines;
+    }
+    if (!fresh.empty()) {
+        log(LogLevel::Error, "fx: shader build failed:\n" + fresh);
+        addShaderDiagnostics(fresh, &loadDiagnostics_);
     }
     if (programs_->usableTechniques(false) == 0) {
         log(LogLevel::Error, "fx: particle renderer disabled: no particle program built");
@@ -119,8 +101,10 @@ bool ParticleRenderer::ensureLoaded() {
 }
 
 uint64_t ParticleRenderer::shaderStamp() const {
-    // Size and modification time of every particle shader in the override folder (no file is
-    // opened: a FIFO dropped there cannot block the poll).
+    // Size and modification time of every plugin shader in the override folder: the billboard,
+    // stateless and mega programs' files and their includes ("particles" or "mega" in the name;
+    // the engine's own shaders there are not ours). No file is opened: a FIFO dropped there
+    // cannot block the poll.
     uint64_t h = 1469598103934665603ull;
     auto mix = [&](uint64_t v) {
         h ^= v;
@@ -130,18 +114,20 @@ uint64_t ParticleRenderer::shaderStamp() const {
     std::vector<std::filesystem::path> files;
     for (const auto& e : std::filesystem::directory_iterator(config_.shaderDir, ec)) {
         const std::string name = e.path().filename().string();
-        if (name.find("particles") != std::string::npos && e.path().extension() == ".glsl") files.push_back(e.path());
+        const bool ours = name.find("particles") != std::string::npos || name.find("mega") != std::string::npos;
+        if (ours && e.path().extension() == ".glsl") files.push_back(e.path());
     }
     std::sort(files.begin(), files.end());
     for (const auto& f : files) {
         for (char c : f.filename().string()) mix(uint64_t(uint8_t(c)));
         mix(uint64_t(std::filesystem::file_size(f, ec)));
         mix(uint64_t(std::filesystem::last_write_time(f, ec).time_since_epoch().count()));
+        mix(uint64_t(std::filesystem::status(f, ec).type()));  // a FIFO put in a file's place
     }
     return h;
 }
 
-bool ParticleRenderer::reloadShaders(Diagnostics* out) {
+bool ParticleRenderer::reloadShaders(Diagnostics* out, const std::vector<ShaderRebuild>& others) {
     if (config_.shaderDir.empty() || state_ != State::Ready) return false;
     const uint64_t stamp = shaderStamp();
     if (stamp == shaderStamp_) return false;
@@ -161,24 +147,27 @@ bool ParticleRenderer::reloadShaders(Diagnostics* out) {
         classifier->build(config_.shaderDir, &errors);
         classifier->programs().buildPowers(classifier_->programs().builtPowers(), &errors);
     }
-    if (!errors.empty()) {
-        // The new programs are dropped (their destructors delete what did build); the running
-        // ones stay, so the smoke on screen does not change.
-        std::string text = "fx: particle shaders in " + config_.shaderDir +
-                           " changed but do not build; the last good programs are kept:";
-        Diagnostics diags;
-        for (const std::string& e : errors) {
-            text += "\n" + e;
-            addShaderDiagnostics(e, &diags);
-        }
-        log(LogLevel::Error, text);
-        if (out) out->insert(out->end(), diags.begin(), diags.end());
+    ShaderErrorLog unique;
+    for (const std::string& e : errors) unique.add(e);
+    // The other techniques' programs (mega, stateless) in the same transaction: all go live or
+    // none, and one edit gives one line, whichever technique's file it broke.
+    std::vector<std::function<void()>> commits;
+    for (const ShaderRebuild& other : others) {
+        if (std::function<void()> commit = other(&unique)) commits.push_back(std::move(commit));
+    }
+    if (!unique.empty()) {
+        // The new programs are dropped (their destructors delete what did build; each other
+        // renderer dropped its own); the running ones stay, so the smoke on screen does not change.
+        log(LogLevel::Error, "fx: particle shaders in " + config_.shaderDir +
+                                 " changed but do not build; the last good programs are kept:\n" + unique.text());
+        if (out) addShaderDiagnostics(unique.text(), out);
         return false;
     }
     programs_ = std::move(programs);
     quarter_ = std::move(quarter);
     opacity_ = std::move(opacity);
     if (classifier) classifier_ = std::move(classifier);
+    for (const std::function<void()>& commit : commits) commit();
     classifierFailed_ = false;  // a classifier that failed to build gets another try with the new files
     log(LogLevel::Info, "fx: particle shaders reloaded from " + config_.shaderDir);
     return true;
@@ -202,8 +191,25 @@ bool ParticleRenderer::ensureClassifier() {
     return true;
 }
 
-bool ParticleRenderer::prepare(Diagnostics* out) {
+bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps) {
     const bool ready = ensureLoaded();
+    if (ready && !powerSteps.empty()) {
+        // The soft programs of the contrast powers the loaded reactions draw with, now rather
+        // than at their first visible particle (each power is tried once: reported once).
+        GlStateGuard guard;
+        std::vector<std::string> errors;
+        programs_->buildPowers(powerSteps, &errors);
+        // A power's build fails for the cause that failed the soft programs above: not told twice.
+        std::string fresh;
+        for (const std::string& e : errors) {
+            const std::string lines = loadErrors_.add(e);
+            if (!lines.empty()) fresh += (fresh.empty() ? "" : "\n") + lines;
+        }
+        if (!fresh.empty()) {
+            log(LogLevel::Error, "fx: shader build failed:\n" + fresh);
+            addShaderDiagnostics(fresh, &loadDiagnostics_);
+        }
+    }
     if (out) out->insert(out->end(), loadDiagnostics_.begin(), loadDiagnostics_.end());
     return ready && loadDiagnostics_.empty();
 }
