@@ -100,6 +100,19 @@ bool checkOptions(const Options& o, std::string* error) {
             return false;
         }
     }
+    // --explode-at T acts in the step whose start is before T and whose end reaches it: the drive
+    // starts at --start, so a T at or before it (T = 0 included) never fires; legacy smoke has no
+    // explosion. Whether an on_demand "explosion" is loaded is checked once the reactions are
+    // (Game::checkExplodeAt), still before the first frame.
+    if (o.explodeAt >= 0.0 && o.fx == FxPath::Legacy) {
+        *error = "--explode-at: fires the plugin's explosion recipe; expected --fx plugin (the default), got --fx legacy";
+        return false;
+    }
+    if (o.explodeAt >= 0.0 && o.explodeAt <= o.startTime) {
+        *error = "--explode-at " + std::to_string(o.explodeAt) + ": the drive starts at --start " +
+                 std::to_string(o.startTime) + " s, so it would never fire; expected a time after the start";
+        return false;
+    }
     if (o.panel && o.fx == FxPath::Legacy) {
         *error = "--panel: edits the plugin's reactions; expected --fx plugin (the default), got --fx legacy";
         return false;
