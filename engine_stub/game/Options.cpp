@@ -1,7 +1,9 @@
 #include "game/Options.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <vector>
@@ -108,10 +110,24 @@ bool checkOptions(const Options& o, std::string* error) {
         *error = "--explode-at: fires the plugin's explosion recipe; expected --fx plugin (the default), got --fx legacy";
         return false;
     }
+    auto seconds = [](double s) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", s);
+        return std::string(text);
+    };
     if (o.explodeAt >= 0.0 && o.explodeAt <= o.startTime) {
-        *error = "--explode-at " + std::to_string(o.explodeAt) + ": the drive starts at --start " +
-                 std::to_string(o.startTime) + " s, so it would never fire; expected a time after the start";
+        *error = "--explode-at " + seconds(o.explodeAt) + ": the drive starts at --start " + seconds(o.startTime) +
+                 " s, so it would never fire; expected a time after the start";
         return false;
+    }
+    // With a fixed step the run's last drive time is known: a T past it never comes.
+    if (o.explodeAt >= 0.0 && o.fixedDt > 0.0 && o.frames > 0) {
+        const double end = o.startTime + double(o.frames) * double(float(o.fixedDt));
+        if (o.explodeAt > end + 1e-6 * std::max(1.0, end)) {
+            *error = "--explode-at " + seconds(o.explodeAt) + ": the run ends at drive time " + seconds(end) +
+                     " s (--start + --frames x --fixed-dt), so it would never fire; expected a time up to the end";
+            return false;
+        }
     }
     if (o.panel && o.fx == FxPath::Legacy) {
         *error = "--panel: edits the plugin's reactions; expected --fx plugin (the default), got --fx legacy";
