@@ -3,10 +3,10 @@
 //
 //   BM_LegacyAliasBomb/L    data/legacy_smoke.yaml's loader (cube::loadLegacySmokeText) on an
 //                           alias bomb of L levels, ten aliases wide (10^L paths in ~60 L bytes)
-//                           under `reactions:`: L = 9 nests 10 levels, past the 8-level limit
-//                           (error[TooDeep], issue 32's bomb); L = 7 nests 8, within it, so only
-//                           the 20,000-visit budget of the nesting check bounds the walk (then
-//                           WrongType: a list where a reaction map belongs)
+//                           in the `reactions:` list: L = 9 nests 10 levels, past the 8-level
+//                           limit (error[TooDeep], issue 32's bomb); L = 7 nests 8, within it, so
+//                           only the 20,000-visit budget of the nesting check bounds the walk
+//                           (then WrongType: lists where reaction maps belong)
 //   BM_ReactionAliasBomb/L  the same text as a reaction file (fx::loadReactionText), whose
 //                           YamlCheck::subtreeDepth has the same budget: the reference
 //
@@ -22,16 +22,15 @@
 
 namespace {
 
-// reactions: a list whose entry is the top of `levels` alias levels, each a list of ten
-// aliases of the level below.
+// reactions: a list of `levels` alias levels, each a list of ten aliases of the one before
+// (fuzz/seeds/legacy/alias_bomb_9x10.yaml is levels = 9).
 std::string aliasBomb(int levels) {
-    std::string text = "l0: &l0 [x, x, x, x, x, x, x, x, x, x]\n";
+    std::string text = "reactions:\n  - &l0 [x, x, x, x, x, x, x, x, x, x]\n";
     for (int l = 1; l < levels; ++l) {
         const std::string below = "*l" + std::to_string(l - 1);
-        text += "l" + std::to_string(l) + ": &l" + std::to_string(l) + " [";
+        text += "  - &l" + std::to_string(l) + " [";
         for (int k = 0; k < 10; ++k) text += below + (k < 9 ? ", " : "]\n");
     }
-    text += "reactions: [*l" + std::to_string(levels - 1) + "]\n";
     return text;
 }
 
