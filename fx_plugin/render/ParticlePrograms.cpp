@@ -80,9 +80,14 @@ ParticlePrograms::~ParticlePrograms() {
 
 void ParticlePrograms::build(const std::string& shaderDir, std::vector<std::string>* errors,
                              const std::string& defines, uint32_t variants) {
+    build(snapshotShaderReader(shaderReader(shaderDir)), errors, defines, variants);
+}
+
+void ParticlePrograms::build(const ShaderReader& read, std::vector<std::string>* errors, const std::string& defines,
+                             uint32_t variants) {
     // One snapshot per program set: every later build of it (a power on first use) reads the
     // files this build read, never a newer, maybe broken, edit.
-    if (!reader_) reader_ = snapshotShaderReader(shaderReader(shaderDir));
+    if (!reader_) reader_ = read;
     defines_ = defines;
     for (int lit = 0; lit < 2; ++lit) {
         for (int v = 0; v < VariantCount; ++v) {

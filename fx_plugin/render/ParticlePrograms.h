@@ -53,6 +53,9 @@ public:
     /// power's included, uses the same text, so a rejected edit never reaches a running set.
     void build(const std::string& shaderDir, std::vector<std::string>* errors, const std::string& defines = "",
                uint32_t variants = ~0u);
+    /// The same from `read` (kept for the later builds; a snapshot, see ShaderLoader.h).
+    void build(const ShaderReader& read, std::vector<std::string>* errors, const std::string& defines = "",
+               uint32_t variants = ~0u);
     /// `lit`: the FX_LIT build of the variant (program 0 when it failed to build: draw unlit).
     const ParticleProgram& get(Variant v, bool lit = false) const { return programs_[lit ? 1 : 0][v]; }
     /// The program that draws a batch of `v` with `contrastPower`: for Soft with a whole or

@@ -68,7 +68,11 @@ bool ParticleRenderer::ensureLoaded() {
         return false;
     }
     std::vector<std::string> errors;
-    programs_->build(config_.shaderDir, &errors);
+    // The files of this generation of programs, kept: the classifier built later (when fade
+    // classification is turned on) and each contrast power read these, never a later edit.
+    sources_ = snapshotShaderReader(shaderReader(config_.shaderDir));
+    programs_->build(sources_, &errors);
+    FadeClassifier::readSources(sources_);
     quarter_->build(config_.shaderDir, &errors);
     opacity_->build(config_.shaderDir, &errors);
     if (!atlas_.hasNormals() && !normalsWarned_) {
@@ -137,16 +141,16 @@ bool ParticleRenderer::reloadShaders(Diagnostics* out, const std::vector<ShaderR
     auto quarter = std::make_unique<QuarterResPath>();
     auto opacity = std::make_unique<SmokeOpacityMap>();
     std::vector<std::string> errors;
-    programs->build(config_.shaderDir, &errors);
+    const ShaderReader sources = snapshotShaderReader(shaderReader(config_.shaderDir));
+    programs->build(sources, &errors);
     programs->buildPowers(programs_->builtPowers(), &errors);  // the contrast powers drawn so far
     quarter->build(config_.shaderDir, &errors);
     opacity->build(config_.shaderDir, &errors);
-    std::unique_ptr<FadeClassifier> classifier;
-    if (classifier_) {
-        classifier = std::make_unique<FadeClassifier>();
-        classifier->build(config_.shaderDir, &errors);
-        classifier->programs().buildPowers(classifier_->programs().builtPowers(), &errors);
-    }
+    // The classifier's programs are built even when classification is off, to check its files:
+    // an edit that breaks them is refused now, not when classification is turned on.
+    auto classifier = std::make_unique<FadeClassifier>();
+    classifier->build(sources, &errors);
+    if (classifier_) classifier->programs().buildPowers(classifier_->programs().builtPowers(), &errors);
     ShaderErrorLog unique;
     for (const std::string& e : errors) unique.add(e);
     // The other techniques' programs (mega, stateless) in the same transaction: all go live or
@@ -166,7 +170,8 @@ bool ParticleRenderer::reloadShaders(Diagnostics* out, const std::vector<ShaderR
     programs_ = std::move(programs);
     quarter_ = std::move(quarter);
     opacity_ = std::move(opacity);
-    if (classifier) classifier_ = std::move(classifier);
+    if (classifier_) classifier_ = std::move(classifier);
+    sources_ = sources;
     for (const std::function<void()>& commit : commits) commit();
     classifierFailed_ = false;  // a classifier that failed to build gets another try with the new files
     log(LogLevel::Info, "fx: particle shaders reloaded from " + config_.shaderDir);
@@ -179,7 +184,7 @@ bool ParticleRenderer::ensureClassifier() {
     GlStateGuard guard;
     auto classifier = std::make_unique<FadeClassifier>();
     std::vector<std::string> errors;
-    classifier->build(config_.shaderDir, &errors);
+    classifier->build(sources_, &errors);  // the files of the running programs
     if (!errors.empty() || !classifier->ok()) {
         std::string text = "fx: fade classification is off: its programs did not build";
         for (const std::string& e : errors) text += "\n" + e;

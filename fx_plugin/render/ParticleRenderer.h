@@ -178,6 +178,7 @@ private:
     bool quarterFallbackLogged_ = false;
     Diagnostics loadDiagnostics_;  ///< what went wrong while loading (prepare() hands them out)
     ShaderErrorLog loadErrors_;    ///< the build lines already logged while loading (each once)
+    ShaderReader sources_;         ///< the running programs' files (a snapshot), for later builds
     SmokeAtlas atlas_;
     ColorRampTexture ramp_;
     InstanceStream stream_;

@@ -206,5 +206,42 @@ TEST_F(ShaderTechniquesTest, APowerBuiltAfterARejectedEditComesFromTheGoodSource
     resetGlErrors();
 }
 
+// The same for the fade classifier, built when classification is first turned on: an edit that
+// breaks its files is refused at the edit (checked though classification is off), and turning
+// classification on afterwards builds it from the files that went live.
+TEST_F(ShaderTechniquesTest, TheClassifierBuiltAfterARejectedEditComesFromTheGoodSource) {
+    const std::string dir = freshCopy("classifier_snapshot");
+    fx::PluginImports imports;
+    imports.host = &host;
+    imports.shaderDir = dir;
+    auto p = fxCreatePlugin(imports);
+    ASSERT_TRUE(p && p->loadReactions(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml", nullptr));
+    fx::RenderOptions o;
+    o.techniqueOverride = fx::Technique::Soft;
+    p->setRenderOptions(o);
+    ASSERT_TRUE(p->prepareGl(nullptr));
+
+    allowShaderCompilerMessages();
+    const std::string tiles = dir + "/fs_particles_tile_depth.glsl";
+    writeAhead(tiles, broken(readText(tiles), "syntax"), 10);
+    EXPECT_FALSE(p->pollShaderReload(nullptr));
+    EXPECT_EQ(countIn(host.errors(), "the last good programs are kept"), 1);
+    EXPECT_EQ(countIn(host.errors(), "fs_particles_tile_depth.glsl:"), 2);  // its two errors, once each
+
+    ASSERT_EQ(p->setFadeClassification(fx::FadeClassification::On), fx::ErrorCode::None);
+    host.setRearSlip(1.0f);
+    for (int s = 0; s < 60; ++s) {
+        for (int r = 0; r < p->reactionCount(); ++r) p->continueReaction(r, 1.0f / 60.0f, nullptr);
+    }
+    TestScene scene;
+    scene.quads = {TestScene::ground(40.0f, glm::vec3(0.2f))};
+    TestFrameGraph graph(96, 72);
+    const fx::ViewInfo view = makeView(glm::vec3(3.0f, 1.6f, 6.0f), glm::vec3(0.0f, 0.6f, 1.0f), 96, 72);
+    renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { p->declarePasses(view, f); });
+    EXPECT_FALSE(host.logged("fade classification is off")) << host.errors().back();
+    EXPECT_TRUE(graph.ran("particles_tile_depth"));
+    resetGlErrors();
+}
+
 }  // namespace shader_techniques_test
 }  // namespace fxtest
