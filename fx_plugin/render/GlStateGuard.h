@@ -31,8 +31,9 @@
 //     [compat] texture LOD bias (GL_TEXTURE_FILTER_CONTROL) 0; active texture GL_TEXTURE0;
 //   pixel unpack and pack buffer bindings 0; unpack and pack swap bytes false, lsb first false,
 //     alignment 4, row length 0, skip rows 0, skip pixels 0, image height 0, skip images 0;
-//   [compat] pixel transfer: red/green/blue/alpha/depth scale 1 and bias 0, map colour false,
-//     map stencil false, index shift 0, index offset 0; clamp read colour GL_FIXED_ONLY;
+//   clamp read colour GL_FIXED_ONLY (the fade-class counter reads floats back); [compat] pixel
+//     transfer: red/green/blue/alpha/depth scale 1 and bias 0, map colour false, map stencil
+//     false, index shift 0, index offset 0;
 //   rasteriser discard off; primitive restart off, fixed index off, index 0; provoking vertex
 //     GL_LAST_VERTEX_CONVENTION; clip distances 0..GL_MAX_CLIP_DISTANCES-1 off (in a
 //     compatibility context the same enables are the user clip planes GL_CLIP_PLANEi);
