@@ -177,12 +177,18 @@ std::vector<HostPoison> buildPoisons() {
     add("alpha test (GREATER 0.5)", [] { glEnable(kAlphaTest); compat().alphaFunc(GL_GREATER, 0.5f); }, true);
     add("alpha func / ref", [] { compat().alphaFunc(GL_LESS, 0.25f); }, true);
     add("polygon stipple (empty pattern)", [] {
+        // The pattern is unpacked with GL's default unpack state, whatever earlier poisons set
+        // (Mesa 22's bitmap unpack with GL_UNPACK_SKIP_PIXELS 3 corrupts its heap: ASan sees it).
         static const GLubyte empty[128] = {};
-        GLint unpack = 0;  // the pattern is read from client memory, whatever an earlier poison bound
-        glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpack);
+        const GLenum unpack[] = {GL_PIXEL_UNPACK_BUFFER_BINDING, GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST,
+                                 GL_UNPACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS};
+        GLint saved[7] = {};
+        for (int i = 0; i < 7; ++i) glGetIntegerv(unpack[i], &saved[i]);
         glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+        for (int i = 1; i < 7; ++i) glPixelStorei(unpack[i], unpack[i] == GL_UNPACK_ALIGNMENT ? 4 : 0);
         compat().polygonStipple(empty);
-        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, GLuint(unpack));
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, GLuint(saved[0]));
+        for (int i = 1; i < 7; ++i) glPixelStorei(unpack[i], saved[i]);
         glEnable(kPolygonStipple);
     }, true);
     add("user clip plane 0 (clips everything)", [] {
