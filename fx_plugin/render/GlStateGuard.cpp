@@ -34,7 +34,23 @@ DebugGroup::~DebugGroup() {
     if (active_) glPopDebugGroup();
 }
 
-GlStateGuard::GlStateGuard(DepthConvention depth) {
+namespace {
+// The immediate path's stated mapping (HostDepthMappingScope), while one is alive.
+struct HostMapping {
+    bool active = false;
+    bool clipZeroToOne = false;
+    double rangeNear = 0.0, rangeFar = 1.0;
+};
+HostMapping g_hostMapping;
+}  // namespace
+
+HostDepthMappingScope::HostDepthMappingScope(bool clipZeroToOne, float rangeNear, float rangeFar) {
+    g_hostMapping = HostMapping{true, clipZeroToOne, rangeNear, rangeFar};
+}
+HostDepthMappingScope::~HostDepthMappingScope() { g_hostMapping = HostMapping{}; }
+
+GlStateGuard::GlStateGuard(DepthConvention depth, bool viewDepth) {
+    const bool host = viewDepth && g_hostMapping.active;
     const std::vector<PinnedGlState>& rows = pinnedGlStates();
     rows_ = int(std::min(rows.size(), saved_.size()));
     for (int i = 0; i < rows_; ++i) rows[size_t(i)].get(rows[size_t(i)], &saved_[size_t(i)]);
@@ -46,7 +62,16 @@ GlStateGuard::GlStateGuard(DepthConvention depth) {
         case PinnedGlState::Pin::Restore: continue;
         case PinnedGlState::Pin::Always: break;
         case PinnedGlState::Pin::DepthMode:
-            want.v[1] = depth == DepthConvention::ReversedZ ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE;
+            want.v[1] = (host ? g_hostMapping.clipZeroToOne : depth == DepthConvention::ReversedZ)
+                            ? GL_ZERO_TO_ONE
+                            : GL_NEGATIVE_ONE_TO_ONE;
+            if (saved_[size_t(i)] == want) continue;
+            break;
+        case PinnedGlState::Pin::DepthRange:
+            if (host) {
+                want.v[0] = g_hostMapping.rangeNear;
+                want.v[1] = g_hostMapping.rangeFar;
+            }
             if (saved_[size_t(i)] == want) continue;
             break;
         case PinnedGlState::Pin::Value:

@@ -18,8 +18,9 @@
 //  - the z-mapping follows the view: a guard around a pass that is z-tested against (or
 //    writes) a z-buffer of the view takes the view's DepthConvention and sets clip control to
 //    (GL_LOWER_LEFT, Standard: GL_NEGATIVE_ONE_TO_ONE / ReversedZ: GL_ZERO_TO_ONE) and the depth
-//    range to [0, 1], the mapping fx::ViewInfo::proj was built for; a guard without one (loading,
-//    passes that draw no z-tested geometry) uses Standard;
+//    range to [0, 1], the mapping fx::ViewInfo::proj was built for; inside a
+//    HostDepthMappingScope (the immediate path) the host's stated mapping instead; a guard
+//    without one (loading, passes that draw no z-tested geometry) uses Standard;
 //  - cost: on entry every row is read (about 150 glGet calls for the rows below) and the rows
 //    the host left off their pinned value are set; on exit every row is written back (no
 //    allocation: the saved values live in the guard): 3.4 us per guard from a clean host, 5.0 us
@@ -121,16 +122,34 @@ public:
     /// Rows a guard can hold (PinnedGlState.cpp bounds the per-index rows to fit).
     static constexpr int kMaxRows = 200;
 
+    /// A guard around work that draws no z-tested geometry (loading, full-screen passes): clip
+    /// control and depth range pinned to GL's defaults.
+    GlStateGuard() : GlStateGuard(DepthConvention::Standard, false) {}
     /// `depth`: the z-mapping of the view whose z-buffer the guarded pass tests against or writes
-    /// (see the contract above); Standard for anything else.
-    explicit GlStateGuard(DepthConvention depth = DepthConvention::Standard);
+    /// (see the contract above). Inside a HostDepthMappingScope the scope's mapping wins.
+    explicit GlStateGuard(DepthConvention depth) : GlStateGuard(depth, true) {}
     ~GlStateGuard();
     GlStateGuard(const GlStateGuard&) = delete;
     GlStateGuard& operator=(const GlStateGuard&) = delete;
 
 private:
+    GlStateGuard(DepthConvention depth, bool viewDepth);
     std::array<GlStateValue, kMaxRows> saved_;
     int rows_ = 0;
+};
+
+/// The immediate path (Plugin::renderView): the host states how it drew its z-buffer (clip
+/// control and depth range, DepthMapping), which need not be either of the two mappings a
+/// DepthConvention names (a D3D-style [0, 1] projection under ZERO_TO_ONE without reversal, a
+/// depth range of [0.2, 0.9], ...). While a scope is alive, every guard given a view's
+/// DepthConvention pins clip control's depth mode and the depth range to the scope's mapping, so
+/// the plugin's z-tested fragments land where the host's did. Scopes do not nest.
+class HostDepthMappingScope {
+public:
+    HostDepthMappingScope(bool clipZeroToOne, float rangeNear, float rangeFar);
+    ~HostDepthMappingScope();
+    HostDepthMappingScope(const HostDepthMappingScope&) = delete;
+    HostDepthMappingScope& operator=(const HostDepthMappingScope&) = delete;
 };
 
 }  // namespace fx

@@ -123,6 +123,9 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
     ImmediateFrame frame(pool_, std::move(setup));
     const ErrorCode declared = plugin.declarePasses(view, frame);
     if (declared == ErrorCode::None && !frame.empty()) {
+        // The z-tested passes draw under the clip control and depth range the host drew its
+        // z-buffer with (GlStateGuard pins them to this mapping instead of the convention's).
+        HostDepthMappingScope hostMapping(in.mapping.clipZeroToOne, in.mapping.rangeNear, in.mapping.rangeFar);
         frame.execute();
         lastPasses_ = frame.executed();
     }

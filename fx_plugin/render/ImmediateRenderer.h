@@ -9,9 +9,10 @@
 //   - the host's GL context is current; GL_DRAW_FRAMEBUFFER is the framebuffer to draw into (0 =
 //     the default one), with the host's z-buffer attached for the z-tested passes; the viewport's
 //     origin is the view's lower-left corner, its size the view's (ViewInfo::width x height);
-//   - the host's clip control and depth range are still those it drew its z-buffer with (the
-//     plugin draws with the view's proj, so its clip z lands where the host's did), and
-//     ImmediateView::mapping states them: the plugin does not change them;
+//   - ImmediateView::mapping states the clip control and depth range the host drew its z-buffer
+//     with; the z-tested passes draw under exactly those (GlStateGuard pins them through a
+//     HostDepthMappingScope), whatever the host left current, so with the view's proj the
+//     plugin's clip z lands where the host's did;
 //   - the z-tested passes compare in the direction conventionOf(proj, mapping) gives: the
 //     ViewInfo::depth handed to the plugin is replaced by it;
 //   - after the call every GL state GlStateGuard captures, the bound framebuffers and the viewport

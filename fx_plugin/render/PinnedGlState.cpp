@@ -283,7 +283,7 @@ std::vector<Row> build() {
         add("clip control", false, GL_CLIP_ORIGIN, 0, getClipControl, setClipControl, Pin::DepthMode,
             val(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE));
     }
-    add("depth range", false, GL_DEPTH_RANGE, 0, getDepthRange, setDepthRange, Pin::Value, val(0.0, 1.0));
+    add("depth range", false, GL_DEPTH_RANGE, 0, getDepthRange, setDepthRange, Pin::DepthRange, val(0.0, 1.0));
     enable("depth clamp", GL_DEPTH_CLAMP, false);
     if (g_compatibility) {
         add("polygon mode front", true, GL_POLYGON_MODE, 0, getPolygonFace, setPolygonFace, Pin::Value, val(GL_FILL));

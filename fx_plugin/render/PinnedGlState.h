@@ -26,6 +26,7 @@ struct PinnedGlState {
         Value,      ///< set to `pinned` (only when the host's value differs)
         Always,     ///< set to `pinned` every time (capturing other rows moves it: active texture)
         DepthMode,  ///< clip control: origin lower left, depth mode from the guard's DepthConvention
+        DepthRange, ///< [0, 1], or the HostDepthMappingScope's range for a view's guard
         Restore,    ///< not set: the plugin sets it itself before use (bindings, viewport, scissor
                     ///< box); only captured and restored
     };

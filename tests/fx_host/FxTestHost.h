@@ -225,6 +225,9 @@ public:
     /// Draw the opaque pass with reversed-Z (glClipControl ZERO_TO_ONE, clear 0, GEQUAL); the
     /// view's proj must then be a reversed-Z projection (reversedZProjection()).
     bool reversedZ = false;
+    /// drawOpaque only: draw under glClipControl ZERO_TO_ONE in standard order (a host with [0, 1]
+    /// projection matrices that does not reverse z). Left set afterwards, like reversed-Z.
+    bool clipZeroToOne = false;
 
     void declareHostPasses(TestFrameGraph& graph, const fx::ViewInfo& view);
     /// The "opaque" pass's drawing (clear to the sky, colour and z of the quads) into the

@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <tuple>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "FxTestHost.h"
 #include "../../fx_plugin/render/ImmediateFrame.h"
 #include "../../fx_plugin/render/ImmediateRenderer.h"
@@ -250,6 +252,55 @@ TEST_F(ImmediateRendererTest, ReversedZHostSameImagePerDepthSource) {
         }
     }
     ASSERT_TRUE(resizeDefaultFramebuffer(4, 4));
+}
+
+// Hosts whose z-buffer follows neither mapping a DepthConvention names: a D3D-style [0, 1]
+// projection under GL's default clip control (Irrlicht: window z in [0.5, 1]), the same matrix
+// under ZERO_TO_ONE without reversal, and a GL projection drawn with glDepthRange(0.2, 0.9). The
+// host states the mapping; before the call it leaves clip control and depth range at GL's
+// defaults (as a host that resets them would), so only the plugin's guard can put its z-tested
+// passes back on the host's mapping. Each must match the standard host's picture.
+TEST_F(ImmediateRendererTest, HostsWithOtherDepthMappingsGetTheSamePicture) {
+    HostTarget withDepthTexture(kW, kH, GL_DEPTH_COMPONENT24);
+    struct Case {
+        const char* name;
+        bool zeroToOneMatrix;   // glm::perspectiveRH_ZO instead of glm::perspective
+        bool clipZeroToOne;
+        float rangeNear, rangeFar;
+    };
+    const Case cases[] = {{"D3D-style [0,1] matrix, GL clip control", true, false, 0.0f, 1.0f},
+                          {"[0,1] matrix, ZERO_TO_ONE, not reversed", true, true, 0.0f, 1.0f},
+                          {"GL matrix, depth range [0.2, 0.9]", false, false, 0.2f, 0.9f}};
+    for (const Mode& m : {kModes[0], kModes[1], kModes[2], kModes[3]}) {
+        setMode(m);
+        const Image reference = render(true);
+        ASSERT_GT(plugin->stats().particlesDrawn, 0);
+        for (const Case& c : cases) {
+            SCOPED_TRACE(std::string(m.name) + ", " + c.name);
+            fx::ImmediateView iv = immediateView(Source::BoundFramebuffer);
+            const float aspect = float(kW) / float(kH);
+            iv.view.proj = c.zeroToOneMatrix
+                               ? glm::perspectiveRH_ZO(glm::radians(60.0f), aspect, view.nearPlane, view.farPlane)
+                               : view.proj;
+            iv.mapping.clipZeroToOne = c.clipZeroToOne;
+            iv.mapping.rangeNear = c.rangeNear;
+            iv.mapping.rangeFar = c.rangeFar;
+            glBindFramebuffer(GL_FRAMEBUFFER, withDepthTexture.fbo);
+            scene.clipZeroToOne = c.clipZeroToOne;
+            glDepthRange(c.rangeNear, c.rangeFar);
+            scene.drawOpaque(iv.view);
+            scene.clipZeroToOne = false;
+            clipControlZeroToOne(false);
+            glDepthRange(0.0, 1.0);
+            ASSERT_EQ(immediate->render(*plugin, iv), fx::ErrorCode::None);
+            drainGlErrors("immediate render");
+            const Image image = readFramebuffer(withDepthTexture.fbo, kW, kH);
+            const int diff = maxAbsDiff(image, reference);
+            EXPECT_LE(diff, kDepthSourceTolerance);
+            EXPECT_GE(psnr(image, reference), kDepthSourceMinPsnr);
+            std::printf("  %-10s %-42s max |diff| %d/255, PSNR %.1f dB\n", m.name, c.name, diff, psnr(image, reference));
+        }
+    }
 }
 
 // An MSAA host framebuffer: the depth copy is a resolve (HostDepthTest checks its values); the

@@ -120,12 +120,13 @@ void clipControl(bool zeroToOne) {
 }
 
 // The "opaque" pass's body, into the bound framebuffer.
-void drawOpaqueScene(const std::vector<SceneQuad>& q, const fx::ViewInfo& view, glm::vec3 skyColour, bool reversed) {
+void drawOpaqueScene(const std::vector<SceneQuad>& q, const fx::ViewInfo& view, glm::vec3 skyColour, bool reversed,
+                     bool zeroToOne) {
     hostPassState();
     glClearColor(skyColour.r, skyColour.g, skyColour.b, 1.0f);
     glClearDepth(reversed ? 0.0 : 1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    clipControl(reversed);
+    clipControl(zeroToOne);
     if (reversed) glDepthFunc(GL_GEQUAL);
     drawQuads(sceneGl().colour, q, view, true);
     // The particle passes run with the host's clip control still set (as in a real
@@ -154,13 +155,13 @@ void TestScene::declareHostPasses(TestFrameGraph& graph, const fx::ViewInfo& vie
     });
     graph.addPass("opaque", {}, {graph.sceneColor()}, [q, view, skyColour, reversed](fx::PassContext& ctx) {
         ctx.bindForDraw(fx::Target{TestFrameGraph::kSceneColor});
-        drawOpaqueScene(q, view, skyColour, reversed);
+        drawOpaqueScene(q, view, skyColour, reversed, reversed);
     });
 }
 
 void TestScene::drawOpaque(const fx::ViewInfo& view) const {
     glViewport(0, 0, view.width, view.height);
-    drawOpaqueScene(quads, view, sky, reversedZ);
+    drawOpaqueScene(quads, view, sky, reversedZ, reversedZ || clipZeroToOne);
 }
 
 void useReversedZ(fx::ViewInfo* view) {
