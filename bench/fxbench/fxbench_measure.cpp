@@ -51,10 +51,12 @@ private:
 };
 
 // The plugin's passes: the billboards' ("particles", the quarter-res ones), mega-particles'
-// ("mega_...") and lit smoke's opacity map ("smoke_opacity").
+// ("mega_...") and lit smoke's opacity map ("smoke_opacity"); with the immediate path the engine's
+// one pass around Plugin::renderView ("fx_immediate": the depth copy, its linearisation and every
+// plugin pass inside).
 bool isParticlePass(const std::string& name) {
     return name.find("particles") != std::string::npos || name.find("mega_") != std::string::npos ||
-           name.find("smoke_opacity") != std::string::npos;
+           name.find("smoke_opacity") != std::string::npos || name.find("fx_immediate") != std::string::npos;
 }
 
 /// The rows top-down the mirror inset covers in the chase frame (cubeView's HUD pass), plus its
