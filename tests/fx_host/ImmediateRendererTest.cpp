@@ -262,15 +262,17 @@ TEST_F(ImmediateRendererTest, ReversedZHostSameImagePerDepthSource) {
 // passes back on the host's mapping. Each must match the standard host's picture.
 TEST_F(ImmediateRendererTest, HostsWithOtherDepthMappingsGetTheSamePicture) {
     HostTarget withDepthTexture(kW, kH, GL_DEPTH_COMPONENT24);
+    enum class Matrix { Gl, ZeroToOne, InfiniteGl };
     struct Case {
         const char* name;
-        bool zeroToOneMatrix;   // glm::perspectiveRH_ZO instead of glm::perspective
+        Matrix matrix;
         bool clipZeroToOne;
         float rangeNear, rangeFar;
     };
-    const Case cases[] = {{"D3D-style [0,1] matrix, GL clip control", true, false, 0.0f, 1.0f},
-                          {"[0,1] matrix, ZERO_TO_ONE, not reversed", true, true, 0.0f, 1.0f},
-                          {"GL matrix, depth range [0.2, 0.9]", false, false, 0.2f, 0.9f}};
+    const Case cases[] = {{"D3D-style [0,1] matrix, GL clip control", Matrix::ZeroToOne, false, 0.0f, 1.0f},
+                          {"[0,1] matrix, ZERO_TO_ONE, not reversed", Matrix::ZeroToOne, true, 0.0f, 1.0f},
+                          {"GL matrix, depth range [0.2, 0.9]", Matrix::Gl, false, 0.2f, 0.9f},
+                          {"infinite far plane (GL)", Matrix::InfiniteGl, false, 0.0f, 1.0f}};
     for (const Mode& m : {kModes[0], kModes[1], kModes[2], kModes[3]}) {
         setMode(m);
         const Image reference = render(true);
@@ -278,10 +280,10 @@ TEST_F(ImmediateRendererTest, HostsWithOtherDepthMappingsGetTheSamePicture) {
         for (const Case& c : cases) {
             SCOPED_TRACE(std::string(m.name) + ", " + c.name);
             fx::ImmediateView iv = immediateView(Source::BoundFramebuffer);
-            const float aspect = float(kW) / float(kH);
-            iv.view.proj = c.zeroToOneMatrix
-                               ? glm::perspectiveRH_ZO(glm::radians(60.0f), aspect, view.nearPlane, view.farPlane)
-                               : view.proj;
+            const float aspect = float(kW) / float(kH), fov = glm::radians(60.0f);
+            iv.view.proj = c.matrix == Matrix::ZeroToOne    ? glm::perspectiveRH_ZO(fov, aspect, view.nearPlane, view.farPlane)
+                           : c.matrix == Matrix::InfiniteGl ? glm::infinitePerspectiveRH(fov, aspect, view.nearPlane)
+                                                            : view.proj;
             iv.mapping.clipZeroToOne = c.clipZeroToOne;
             iv.mapping.rangeNear = c.rangeNear;
             iv.mapping.rangeFar = c.rangeFar;

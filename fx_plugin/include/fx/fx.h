@@ -136,7 +136,9 @@ typedef struct fxViewDesc {
     float proj[16];
     float eye[3];
     float nearPlane;       /* > 0 */
-    float farPlane;        /* > nearPlane; may be INFINITY for an infinite projection */
+    float farPlane;        /* > nearPlane, finite: with an infinite projection matrix (which the
+                              plugin linearises exactly), the distance past which depth reads as
+                              "nothing drawn", e.g. the far end of the scene */
     int width, height;     /* pixels of the colour target, > 0 */
     int depthOrder;        /* FX_DEPTH_STANDARD / FX_DEPTH_REVERSED_Z: how the z-buffer is ordered */
     int handedness;        /* FX_RIGHT_HANDED (0) or FX_LEFT_HANDED */
