@@ -1,9 +1,10 @@
 #include "fx/Diagnostic.h"
 
-namespace fx {
-
-const char* errorCodeName(ErrorCode code) {
-    switch (code) {
+// The C boundary's one table of error names (fx/fx.h); fx::errorCodeName and Diagnostic::str in
+// the C++ layer read it.
+extern "C" const char* fxErrorCodeName(int code) {
+    using fx::ErrorCode;
+    switch (static_cast<ErrorCode>(code)) {
     case ErrorCode::None: return "None";
     case ErrorCode::FileNotFound: return "FileNotFound";
     case ErrorCode::EmptyFile: return "EmptyFile";
@@ -29,24 +30,13 @@ const char* errorCodeName(ErrorCode code) {
     case ErrorCode::NoGlContext: return "NoGlContext";
     case ErrorCode::ShaderBuild: return "ShaderBuild";
     case ErrorCode::ResourceMissing: return "ResourceMissing";
+    case ErrorCode::BadDescriptor: return "BadDescriptor";
+    case ErrorCode::UnsupportedDepth: return "UnsupportedDepth";
     }
     return "Unknown";
 }
 
-std::string Diagnostic::str() const {
-    // "file:line:col: error[Code] key: message"; unknown line/column are left out rather than
-    // printed as 0 so editors that jump to file:line do not land on a line that does not exist.
-    std::string s = file.empty() ? std::string("<text>") : file;
-    if (line > 0) {
-        s += ':' + std::to_string(line);
-        if (column > 0) s += ':' + std::to_string(column);
-    }
-    s += ": error[";
-    s += errorCodeName(code);
-    s += "] ";
-    if (!key.empty()) s += key + ": ";
-    s += message;
-    return s;
-}
-
-}  // namespace fx
+static_assert(static_cast<int>(fx::ErrorCode::ResourceMissing) == FX_ERROR_RESOURCE_MISSING,
+              "fx::ErrorCode and FX_ERROR_* must keep the same numbers");
+static_assert(static_cast<int>(fx::ErrorCode::UnsupportedDepth) == FX_ERROR_UNSUPPORTED_DEPTH,
+              "fx::ErrorCode and FX_ERROR_* must keep the same numbers");

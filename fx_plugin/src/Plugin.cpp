@@ -350,31 +350,3 @@ ParticleCheck PluginImpl::checkParticles() const {
 }
 
 }  // namespace fx
-
-std::unique_ptr<fx::Plugin> fxCreatePlugin(const fx::PluginImports& imports, fx::ErrorCode* error) {
-    using fx::ErrorCode;
-    auto refuse = [&](ErrorCode code, const std::string& what) -> std::unique_ptr<fx::Plugin> {
-        if (error) *error = code;
-        if (imports.host) {
-            const std::string line = std::string("fx: error[") + fx::errorCodeName(code) +
-                                     "] fxCreatePlugin: " + what;
-            imports.host->log(fx::LogLevel::Error, line.c_str());
-        }
-        return nullptr;
-    };
-    const uint32_t want = imports.apiVersion;
-    if (fx::apiVersionMajor(want) != fx::apiVersionMajor(fx::kApiVersion) ||
-        fx::apiVersionMinor(want) > fx::apiVersionMinor(fx::kApiVersion)) {
-        auto str = [](uint32_t v) {
-            return std::to_string(fx::apiVersionMajor(v)) + "." + std::to_string(fx::apiVersionMinor(v));
-        };
-        return refuse(ErrorCode::VersionMismatch, "the host asks for API " + str(want) +
-                                                      "; this plugin offers " + str(fx::kApiVersion) +
-                                                      " (same major, minor up to the plugin's)");
-    }
-    if (!imports.host) return refuse(ErrorCode::NullArgument, "PluginImports::host is null; expected the host's HostAdapter");
-    if (error) *error = ErrorCode::None;
-    auto plugin = std::make_unique<fx::PluginImpl>(imports);
-    fx::installParticleRenderer(*plugin, imports.dataDir);  // the particle renderer's hook
-    return plugin;
-}

@@ -135,4 +135,9 @@ private:
     bool everLoaded_ = false;
 };
 
+/// The PluginImpl behind a plugin made by fxCreatePlugin (the C++ layer's wrapper around the C
+/// handle) or a PluginImpl itself; for this repository's tests, which link the library's objects.
+PluginImpl& implOf(Plugin& plugin);
+const PluginImpl& implOf(const Plugin& plugin);
+
 }  // namespace fx

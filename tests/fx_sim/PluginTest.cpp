@@ -97,7 +97,7 @@ TEST(Plugin, ContinueEmitsFromTheHostsWheelsAndCollisions) {
         amount = i == 30 ? 1.0f : 0.0f;
         for (int r = 0; r < plugin->reactionCount(); ++r) plugin->continueReaction(r, 1.0f / 60.0f, &amount);
     }
-    const auto& impl = static_cast<const fx::PluginImpl&>(*plugin);
+    const auto& impl = fx::implOf(*plugin);
     EXPECT_NEAR(impl.runtimes()[static_cast<size_t>(smoke)].pool().alive(), 180, 1);  // 2 x 90/s x 1 s
     EXPECT_EQ(impl.runtimes()[static_cast<size_t>(dust)].pool().alive(), 0);          // on asphalt
     EXPECT_EQ(impl.runtimes()[static_cast<size_t>(burst)].counters().bursts, 1u);
@@ -126,7 +126,7 @@ TEST(Plugin, ReactionStatsNameTechniqueAliveAndEmitted) {
     for (int i = 0; i < 120; ++i) {
         for (int r = 0; r < plugin->reactionCount(); ++r) plugin->continueReaction(r, 1.0f / 60.0f, nullptr);
     }
-    const auto& impl = static_cast<const fx::PluginImpl&>(*plugin);
+    const auto& impl = fx::implOf(*plugin);
     const fx::ReactionStats s = plugin->reactionStats(smoke);
     EXPECT_EQ(s.name, "burnout_smoke");
     EXPECT_EQ(s.technique, "soft");
@@ -219,7 +219,7 @@ TEST(Plugin, ImportedSeedPicksTheParticles) {
         auto plugin = fxCreatePlugin(imports);
         EXPECT_TRUE(plugin->loadReactions(kReactions + "/burnout_smoke.yaml", nullptr));
         for (int i = 0; i < 20; ++i) plugin->continueReaction(0, 1.0f / 60.0f, nullptr);
-        const auto& impl = static_cast<const fx::PluginImpl&>(*plugin);
+        const auto& impl = fx::implOf(*plugin);
         return impl.runtimes()[0].pool().posX()[0];
     };
     EXPECT_EQ(run(0), run(fx::ReactionRuntime::kDefaultSeed));  // 0 = the default seed
@@ -282,7 +282,7 @@ TEST_F(PluginReload, KeepsParticlesWhenNameAndCapacityAreUnchanged) {
     write("3.0", 500, "dust");  // new drag, one more reaction
     ASSERT_TRUE(pollFor(*plugin, nullptr));
     ASSERT_EQ(plugin->reactionCount(), 2);
-    const auto& impl = static_cast<const fx::PluginImpl&>(*plugin);
+    const auto& impl = fx::implOf(*plugin);
     const int smoke = indexOf(*plugin, "smoke");
     EXPECT_EQ(impl.runtimes()[static_cast<size_t>(smoke)].pool().alive(), alive);  // the smoke stays
     EXPECT_EQ(impl.runtimes()[static_cast<size_t>(smoke)].desc().particle.drag, 3.0f);

@@ -10,7 +10,7 @@
 #      it renders hard and soft smoke to PNG and checks smoke, soft != hard at the ground, GL
 #      state and GL errors (--verify);
 #   6. a non-CMake host: compile against the moved prefix with pkg-config only;
-#   7. find_package with an incompatible version (2.0) must fail.
+#   7. find_package with a newer major (3.0) must fail; 1.0 (a 1.x host's request) is accepted.
 #   package_test.sh <source root> <scratch folder>
 set -euo pipefail
 src=$(cd "$1" && pwd)
@@ -110,13 +110,13 @@ c++ -std=c++17 "$work/pc_host.cpp" -o "$work/pc_host" $flags
 LD_LIBRARY_PATH="$prefix/lib" "$work/pc_host"
 
 log "an incompatible version is refused by find_package"
-mkdir -p "$work/v2"
-cat >"$work/v2/CMakeLists.txt" <<'CM'
+mkdir -p "$work/v3"
+cat >"$work/v3/CMakeLists.txt" <<'CM'
 cmake_minimum_required(VERSION 3.20)
-project(v2 LANGUAGES CXX)
-find_package(CubeFx 2.0 CONFIG REQUIRED)
+project(v3 LANGUAGES CXX)
+find_package(CubeFx 3.0 CONFIG REQUIRED)
 CM
-if cmake -S "$work/v2" -B "$work/v2/b" -DCMAKE_PREFIX_PATH="$prefix" >"$work/v2.log" 2>&1; then
-  echo "package_test: FAIL: find_package(CubeFx 2.0) accepted version 1.x"; exit 1
+if cmake -S "$work/v3" -B "$work/v3/b" -DCMAKE_PREFIX_PATH="$prefix" >"$work/v3.log" 2>&1; then
+  echo "package_test: FAIL: find_package(CubeFx 3.0) accepted version 2.x"; exit 1
 fi
 log "passed"

@@ -39,19 +39,37 @@ enum class ErrorCode {
     NoGlContext,     ///< the host's getProcAddress gave no GL entry points (no context current?)
     ShaderBuild,     ///< a particle program failed to compile or link (message has file:line)
     ResourceMissing, ///< the smoke atlas or a shader could not be read (from an override folder)
+    // API 2.0
+    BadDescriptor,    ///< a C descriptor's size is one the library does not know (fx/fx.h)
+    UnsupportedDepth, ///< a depth texture format or depth source the plugin cannot read
 };
 
-FX_API const char* errorCodeName(ErrorCode code);
+/// "FileNotFound", ... (the same numbers as fx/fx.h's FX_ERROR_*).
+inline const char* errorCodeName(ErrorCode code) { return fxErrorCodeName(static_cast<int>(code)); }
 
-struct FX_API Diagnostic {
+struct Diagnostic {
     ErrorCode code = ErrorCode::None;
     std::string file;
     int line = 0;     ///< 1-based; 0 when unknown
     int column = 0;   ///< 1-based; 0 when unknown
     std::string key;  ///< dotted path of the offending key, e.g. "reactions[0].particle.drag"
     std::string message;
-    /// "file:line:col: error[Code] key: message"
-    std::string str() const;
+    /// "file:line:col: error[Code] key: message"; an unknown line or column is left out rather
+    /// than printed as 0, so editors that jump to file:line do not land on a line that does not
+    /// exist.
+    std::string str() const {
+        std::string s = file.empty() ? std::string("<text>") : file;
+        if (line > 0) {
+            s += ':' + std::to_string(line);
+            if (column > 0) s += ':' + std::to_string(column);
+        }
+        s += ": error[";
+        s += errorCodeName(code);
+        s += "] ";
+        if (!key.empty()) s += key + ": ";
+        s += message;
+        return s;
+    }
 };
 
 using Diagnostics = std::vector<Diagnostic>;

@@ -264,6 +264,23 @@ public:
     }
     /// API 1.3: the counts of the last full-res particle pass that ran with counting on.
     virtual FadeClassCounts fadeClassCounts() const { return FadeClassCounts{}; }
+
+    // ---- API 2.0: the immediate path ----
+
+    /// API 2.0: for engines without a frame graph. One call after the opaque scene and the sky
+    /// draws this view's smoke into the framebuffer bound for drawing (GL_DRAW_FRAMEBUFFER, the
+    /// default framebuffer included) over view.width x view.height from its origin, with the
+    /// scene depth from `depth` (by default that framebuffer's own depth attachment, copied only
+    /// when a pass reads depth). The plugin owns and pools its transient targets (resized with
+    /// the view, freed when the plugin is destroyed; a frame without visible particles allocates
+    /// and copies nothing). Needs the host's context current. Refused: InvalidView (see
+    /// ViewInfo), UnsupportedDepth (a depth texture format it cannot read), NullArgument (a
+    /// depth source that needs a texture without one).
+    virtual ErrorCode renderView(const ViewInfo& view, const HostDepth& depth = HostDepth{}) {
+        (void)view;
+        (void)depth;
+        return ErrorCode::InvalidValue;
+    }
 };
 
 /// What the host hands the plugin at creation. Defaults: this header's API version, no host
@@ -280,6 +297,9 @@ struct PluginImports {
 }  // namespace fx
 
 /// The entry point. Returns null, sets *error (when given) and logs through imports.host (when
-/// there is one) on VersionMismatch (see fx/Api.h) or NullArgument (no host).
-FX_API std::unique_ptr<fx::Plugin> fxCreatePlugin(const fx::PluginImports& imports,
+/// there is one) on VersionMismatch (see fx/Api.h) or NullArgument (no host). Inline since API
+/// 2.0: it builds the plugin through the C table (fx/fx.h), see fx/detail/PluginBridge.h.
+inline std::unique_ptr<fx::Plugin> fxCreatePlugin(const fx::PluginImports& imports,
                                                   fx::ErrorCode* error = nullptr);
+
+#include "fx/detail/PluginBridge.h"

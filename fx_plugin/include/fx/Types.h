@@ -29,8 +29,14 @@ enum class LogLevel : uint8_t { Info, Warning, Error };
 /// with a float depth buffer). The linear depth texture is the same under both.
 enum class DepthConvention : uint8_t { Standard = 0, ReversedZ };
 
-/// One view the host is rendering (chase camera, mirror...). Matrices are OpenGL conventions
-/// (right-handed view space, camera looks down -Z). `proj` is the projection the host draws its
+/// Which way the host's camera looks in its view space (API 2.0): right-handed, down -Z (OpenGL),
+/// or left-handed, down +Z (Direct3D-style engines such as Irrlicht). The plugin turns a
+/// left-handed pair into the right-handed one with the same clip coordinates (view' = F view,
+/// proj' = proj F, F = diag(1, 1, -1, 1)), so the host hands in the matrices it draws with.
+enum class Handedness : uint8_t { RightHanded = 0, LeftHanded = 1 };
+
+/// One view the host is rendering (chase camera, mirror...). Matrices as the host draws its scene
+/// (right-handed view space unless `handedness` says otherwise). `proj` is the projection the host draws its
 /// scene with, so it matches `depth`. Valid: width, height > 0; 0 < nearPlane < farPlane, all
 /// finite; finite matrices (declarePasses refuses anything else with ErrorCode::InvalidView).
 /// Defaults: an identity camera at the origin, near 0.1 m, far 1 km, standard depth, size 0
@@ -45,6 +51,25 @@ struct ViewInfo {
     int width = 0;   ///< pixels of the view's colour target (sceneColor), > 0
     int height = 0;
     DepthConvention depth = DepthConvention::Standard;
+    Handedness handedness = Handedness::RightHanded;  ///< API 2.0
+};
+
+/// Where Plugin::renderView (the immediate path, API 2.0) finds the scene depth.
+/// Defaults: the depth attachment of the framebuffer bound for drawing, drawn with GL's default
+/// clip control and depth range.
+struct HostDepth {
+    enum class Source : uint8_t {
+        BoundFramebuffer = 0,  ///< the draw framebuffer's depth attachment (default framebuffer too);
+                               ///< copied into a texture of the plugin's only when a pass reads depth
+        DepthTexture = 1,      ///< `texture`: GL_DEPTH_COMPONENT16/24/32F or GL_DEPTH24_STENCIL8
+        LinearR32F = 2,        ///< `texture`: linear view depth in metres (FrameBuilder::sceneDepth's form)
+        None = 3,              ///< no scene depth: particles are neither z-tested nor faded
+    };
+    Source source = Source::BoundFramebuffer;
+    uint32_t texture = 0;          ///< GL_TEXTURE_2D name for DepthTexture / LinearR32F
+    bool clipDepthZeroToOne = false;  ///< the scene was drawn under glClipControl(.., GL_ZERO_TO_ONE)
+    float depthRangeNear = 0.0f;   ///< glDepthRange the scene was drawn with
+    float depthRangeFar = 1.0f;
 };
 
 /// Colour formats the host's render-to-texture layer must offer to the plugin.

@@ -48,8 +48,9 @@ extern "C" {
 #define FX_API_VERSION_MINOR 0
 #define FX_API_VERSION ((uint32_t)((FX_API_VERSION_MAJOR << 16) | FX_API_VERSION_MINOR))
 
-/* Zero-initialises a descriptor and sets its size: `fxViewDesc v = FX_DESC_INIT(fxViewDesc);` */
-#define FX_DESC_INIT(T) {sizeof(T)}
+/* Zero-initialises a descriptor and sets its size: `fxViewDesc v = FX_DESC_INIT(fxViewDesc);`
+ * (a designated initialiser: C99, C++20, or GCC/Clang in C++17). */
+#define FX_DESC_INIT(T) {.size = sizeof(T)}
 
 typedef int fxBool; /* 0 = false, anything else = true */
 

@@ -1,0 +1,502 @@
+#pragma once
+// The C++ layer of API 2 (included by fx/Plugin.h; not a header to include yourself). Header-only:
+// every line here compiles into the HOST, with the host's compiler and standard library, and talks
+// to the plugin library through the C table of fx/fx.h only. It keeps the 1.x C++ interface
+// (fx::Plugin, fx::HostAdapter, fx::FrameBuilder, fx::PassContext, fxCreatePlugin) source
+// compatible:
+//   - HostAdapter       -> fxHostCallbacks (user pointer = the HostAdapter)
+//   - FrameBuilder      -> fxFrameBuilder for the duration of one declarePasses call; each pass
+//                          the plugin adds becomes a std::function the host's graph owns, whose
+//                          last copy releases the plugin's pass (fxPassCallback::release)
+//   - PassContext       -> fxPassContext for the duration of one pass
+//   - Diagnostics*      -> fxDiagnosticSink
+//   - fx::Plugin        <- CApiPlugin, forwarding every function to the table
+#include <cstring>
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fx {
+namespace detail {
+
+// ---- plain data ---------------------------------------------------------------------------------
+
+inline void copyMat(float out[16], const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) out[c * 4 + r] = m[c][r];
+}
+inline glm::mat4 matFrom(const float in[16]) {
+    glm::mat4 m(1.0f);
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) m[c][r] = in[c * 4 + r];
+    return m;
+}
+
+inline fxViewDesc viewToC(const ViewInfo& v) {
+    fxViewDesc c;
+    std::memset(&c, 0, sizeof c);
+    c.size = sizeof c;
+    c.name = v.name;
+    copyMat(c.view, v.view);
+    copyMat(c.proj, v.proj);
+    c.eye[0] = v.eye.x;
+    c.eye[1] = v.eye.y;
+    c.eye[2] = v.eye.z;
+    c.nearPlane = v.nearPlane;
+    c.farPlane = v.farPlane;
+    c.width = v.width;
+    c.height = v.height;
+    c.depthOrder = v.depth == DepthConvention::ReversedZ ? FX_DEPTH_REVERSED_Z : FX_DEPTH_STANDARD;
+    c.handedness = v.handedness == Handedness::LeftHanded ? FX_LEFT_HANDED : FX_RIGHT_HANDED;
+    return c;
+}
+
+inline void depthToC(const HostDepth& d, fxViewDesc& c) {
+    switch (d.source) {
+    case HostDepth::Source::BoundFramebuffer: c.depthSource = FX_DEPTH_FROM_FRAMEBUFFER; break;
+    case HostDepth::Source::DepthTexture: c.depthSource = FX_DEPTH_FROM_TEXTURE; break;
+    case HostDepth::Source::LinearR32F: c.depthSource = FX_DEPTH_FROM_LINEAR; break;
+    case HostDepth::Source::None: c.depthSource = FX_DEPTH_FROM_NOTHING; break;
+    default: c.depthSource = -1; break;  // refused by the plugin (InvalidValue)
+    }
+    c.depthTexture = d.texture;
+    c.clipDepthZeroToOne = d.clipDepthZeroToOne ? 1 : 0;
+    c.depthRangeNear = d.depthRangeNear;
+    c.depthRangeFar = d.depthRangeFar;
+}
+
+// ---- diagnostics --------------------------------------------------------------------------------
+
+class DiagnosticSink {
+public:
+    explicit DiagnosticSink(Diagnostics* out) : out_(out) {
+        sink_.user = this;
+        sink_.report = &DiagnosticSink::report;
+    }
+    const fxDiagnosticSink* c() const { return out_ ? &sink_ : nullptr; }
+
+private:
+    static void report(void* user, const fxDiagnostic* d) {
+        Diagnostic x;
+        x.code = static_cast<ErrorCode>(d->code);
+        x.file = d->file ? d->file : "";
+        x.line = d->line;
+        x.column = d->column;
+        x.key = d->key ? d->key : "";
+        x.message = d->message ? d->message : "";
+        static_cast<DiagnosticSink*>(user)->out_->push_back(std::move(x));
+    }
+    Diagnostics* out_;
+    fxDiagnosticSink sink_;
+};
+
+/// A string the plugin copies snprintf-style.
+template <typename Fetch>
+std::string fetchString(Fetch fetch) {
+    char small[128];
+    const size_t n = fetch(small, sizeof small);
+    if (n < sizeof small) return std::string(small, n);
+    std::string s(n + 1, '\0');
+    fetch(&s[0], s.size());
+    s.resize(n);
+    return s;
+}
+
+// ---- the host's services -------------------------------------------------------------------------
+
+struct HostTrampolines {
+    static HostAdapter& host(void* user) { return *static_cast<HostAdapter*>(user); }
+    static void* getProcAddress(void* user, const char* name) { return host(user).getProcAddress(name); }
+    static void log(void* user, int level, const char* message) {
+        host(user).log(static_cast<LogLevel>(level), message);
+    }
+    static int wheelCount(void* user) { return host(user).wheelCount(); }
+    static void wheel(void* user, int index, fxWheelContact* out) {
+        const WheelContact w = host(user).wheel(index);
+        for (int k = 0; k < 3; ++k) {
+            out->position[k] = w.position[k];
+            out->velocity[k] = w.velocity[k];
+        }
+        out->slip = w.slip;
+        out->surface = static_cast<int>(w.surface);
+        out->grounded = w.grounded ? 1 : 0;
+        out->rear = w.rear ? 1 : 0;
+    }
+    static void wind(void* user, float out[3]) {
+        const glm::vec3 v = host(user).wind();
+        out[0] = v.x, out[1] = v.y, out[2] = v.z;
+    }
+    static void collisionPoint(void* user, float out[3]) {
+        const glm::vec3 v = host(user).collisionPoint();
+        out[0] = v.x, out[1] = v.y, out[2] = v.z;
+    }
+    static fxHostCallbacks make(HostAdapter* host) {
+        fxHostCallbacks c;
+        std::memset(&c, 0, sizeof c);
+        c.size = sizeof c;
+        c.user = host;
+        c.getProcAddress = &getProcAddress;
+        c.log = &log;
+        c.wheelCount = &wheelCount;
+        c.wheel = &wheel;
+        c.wind = &wind;
+        c.collisionPoint = &collisionPoint;
+        return c;
+    }
+};
+
+// ---- the host's frame graph -------------------------------------------------------------------------
+
+class PassContextBridge {
+public:
+    explicit PassContextBridge(PassContext& ctx) : ctx_(ctx) {
+        std::memset(&c_, 0, sizeof c_);
+        c_.size = sizeof c_;
+        c_.user = this;
+        c_.bindForDraw = [](void* u, uint32_t t) { self(u).bindForDraw(Target{t}); };
+        c_.texture = [](void* u, uint32_t t, int attachment, fxTextureRef* out) {
+            const TextureRef r = self(u).texture(Target{t}, attachment);
+            out->name = r.name;
+            out->format = static_cast<int>(r.format);
+            out->width = r.width;
+            out->height = r.height;
+        };
+        c_.width = [](void* u, uint32_t t) { return self(u).width(Target{t}); };
+        c_.height = [](void* u, uint32_t t) { return self(u).height(Target{t}); };
+    }
+    const fxPassContext* c() const { return &c_; }
+
+private:
+    static PassContext& self(void* u) { return static_cast<PassContextBridge*>(u)->ctx_; }
+    PassContext& ctx_;
+    fxPassContext c_;
+};
+
+/// Owns one plugin pass on the host side: released once, when the host's graph drops the last
+/// copy of the pass's std::function (after it ran, or culled).
+struct PassHolder {
+    explicit PassHolder(fxPassCallback cb) : callback(cb) {}
+    ~PassHolder() {
+        if (callback.release) callback.release(callback.user);
+    }
+    PassHolder(const PassHolder&) = delete;
+    PassHolder& operator=(const PassHolder&) = delete;
+    fxPassCallback callback;
+};
+
+// FrameBuilder::addPass takes initializer lists (1.x); a C pass has counted arrays. Each count
+// up to these is spelled out once at compile time.
+constexpr int kMaxPassReads = 8;
+constexpr int kMaxPassWrites = 4;
+
+template <size_t... R, size_t... W>
+void addPassWith(FrameBuilder& f, const char* name, const uint32_t* reads, const uint32_t* writes,
+                 std::function<void(PassContext&)>&& fn, std::index_sequence<R...>, std::index_sequence<W...>) {
+    (void)reads;
+    (void)writes;
+    f.addPass(name, {Target{reads[R]}...}, {Target{writes[W]}...}, std::move(fn));
+}
+
+template <size_t NR>
+void addPassReads(FrameBuilder& f, const char* name, const uint32_t* reads, const uint32_t* writes,
+                  int writeCount, std::function<void(PassContext&)>&& fn) {
+    using R = std::make_index_sequence<NR>;
+    switch (writeCount) {
+    case 0: addPassWith(f, name, reads, writes, std::move(fn), R{}, std::make_index_sequence<0>{}); break;
+    case 1: addPassWith(f, name, reads, writes, std::move(fn), R{}, std::make_index_sequence<1>{}); break;
+    case 2: addPassWith(f, name, reads, writes, std::move(fn), R{}, std::make_index_sequence<2>{}); break;
+    case 3: addPassWith(f, name, reads, writes, std::move(fn), R{}, std::make_index_sequence<3>{}); break;
+    default: addPassWith(f, name, reads, writes, std::move(fn), R{}, std::make_index_sequence<4>{}); break;
+    }
+}
+
+class FrameBridge {
+public:
+    explicit FrameBridge(FrameBuilder& frame) : frame_(frame) {
+        std::memset(&c_, 0, sizeof c_);
+        c_.size = sizeof c_;
+        c_.user = this;
+        c_.sceneColor = [](void* u) { return self(u).sceneColor().id; };
+        c_.sceneDepth = [](void* u) { return self(u).sceneDepth().id; };
+        c_.createTarget = [](void* u, const char* name, const fxTargetDesc* d) {
+            TargetDesc t;
+            t.scale = d->scale == 0.0f ? 1.0f : d->scale;
+            t.width = d->width;
+            t.height = d->height;
+            t.format = static_cast<TargetFormat>(d->format);
+            t.linearFilter = d->nearestFilter == 0;
+            t.depth = d->depth != 0;
+            return self(u).createTarget(name, t).id;
+        };
+        c_.addPass = &FrameBridge::addPass;
+    }
+    const fxFrameBuilder* c() const { return &c_; }
+
+private:
+    static FrameBuilder& self(void* u) { return static_cast<FrameBridge*>(u)->frame_; }
+    static void addPass(void* u, const char* name, const uint32_t* reads, int readCount,
+                        const uint32_t* writes, int writeCount, fxPassCallback callback) {
+        auto holder = std::make_shared<PassHolder>(callback);
+        if (readCount < 0 || readCount > kMaxPassReads || writeCount < 0 || writeCount > kMaxPassWrites) {
+            return;  // the plugin never declares more (its own check refuses first); released here
+        }
+        std::function<void(PassContext&)> fn = [holder](PassContext& ctx) {
+            PassContextBridge bridge(ctx);
+            holder->callback.run(holder->callback.user, bridge.c());
+        };
+        FrameBuilder& f = self(u);
+        switch (readCount) {
+        case 0: addPassReads<0>(f, name, reads, writes, writeCount, std::move(fn)); break;
+        case 1: addPassReads<1>(f, name, reads, writes, writeCount, std::move(fn)); break;
+        case 2: addPassReads<2>(f, name, reads, writes, writeCount, std::move(fn)); break;
+        case 3: addPassReads<3>(f, name, reads, writes, writeCount, std::move(fn)); break;
+        case 4: addPassReads<4>(f, name, reads, writes, writeCount, std::move(fn)); break;
+        case 5: addPassReads<5>(f, name, reads, writes, writeCount, std::move(fn)); break;
+        case 6: addPassReads<6>(f, name, reads, writes, writeCount, std::move(fn)); break;
+        case 7: addPassReads<7>(f, name, reads, writes, writeCount, std::move(fn)); break;
+        default: addPassReads<8>(f, name, reads, writes, writeCount, std::move(fn)); break;
+        }
+    }
+    FrameBuilder& frame_;
+    fxFrameBuilder c_;
+};
+
+// ---- the plugin -------------------------------------------------------------------------------------
+
+class CApiPlugin final : public Plugin {
+public:
+    CApiPlugin(const fxApi* api, fxPlugin* plugin) : api_(api), p_(plugin) {}
+    ~CApiPlugin() override { api_->destroy(p_); }
+    CApiPlugin(const CApiPlugin&) = delete;
+    CApiPlugin& operator=(const CApiPlugin&) = delete;
+
+    /// The C handle (for code that mixes the C++ layer with the C table).
+    fxPlugin* handle() const { return p_; }
+    const fxApi* api() const { return api_; }
+
+    bool loadReactions(const std::string& path, Diagnostics* out) override {
+        DiagnosticSink sink(out);
+        return api_->loadReactions(p_, path.c_str(), sink.c()) != 0;
+    }
+    bool pollHotReload(Diagnostics* out) override {
+        DiagnosticSink sink(out);
+        return api_->pollHotReload(p_, sink.c()) != 0;
+    }
+    int reactionCount() const override { return api_->reactionCount(p_); }
+    std::string reactionName(int index) const override {
+        return fetchString([&](char* b, size_t n) { return api_->reactionName(p_, index, b, n); });
+    }
+    ErrorCode continueReaction(int index, float dt, float* collision) override {
+        return static_cast<ErrorCode>(api_->continueReaction(p_, index, dt, collision));
+    }
+    ErrorCode setRenderOptions(const RenderOptions& o) override {
+        fxRenderOptions c;
+        std::memset(&c, 0, sizeof c);
+        c.size = sizeof c;
+        c.techniqueOverride = static_cast<int>(o.techniqueOverride);
+        c.quarterRes = o.quarterRes ? 1 : 0;
+        c.bilinearUpsample = o.bilinearUpsample ? 1 : 0;
+        return static_cast<ErrorCode>(api_->setRenderOptions(p_, &c));
+    }
+    RenderOptions renderOptions() const override {
+        fxRenderOptions c;
+        std::memset(&c, 0, sizeof c);
+        c.size = sizeof c;
+        api_->getRenderOptions(p_, &c);
+        RenderOptions o;
+        o.techniqueOverride = static_cast<Technique>(c.techniqueOverride);
+        o.quarterRes = c.quarterRes != 0;
+        o.bilinearUpsample = c.bilinearUpsample != 0;
+        return o;
+    }
+    bool prepareGl(Diagnostics* out) override {
+        DiagnosticSink sink(out);
+        return api_->prepareGl(p_, sink.c()) != 0;
+    }
+    ErrorCode declarePasses(const ViewInfo& view, FrameBuilder& frame) override {
+        const fxViewDesc v = viewToC(view);
+        FrameBridge bridge(frame);
+        return static_cast<ErrorCode>(api_->declarePasses(p_, &v, bridge.c()));
+    }
+    Stats stats() const override {
+        fxStats c{};
+        api_->stats(p_, &c);
+        Stats s;
+        s.reactions = c.reactions;
+        s.particlesAlive = c.particlesAlive;
+        s.particleCapacity = c.particleCapacity;
+        s.particlesDrawn = c.particlesDrawn;
+        s.reloads = c.reloads;
+        s.reloadErrors = c.reloadErrors;
+        s.apiErrors = c.apiErrors;
+        return s;
+    }
+    ParticleCheck checkParticles() const override {
+        fxParticleCheck c{};
+        api_->checkParticles(p_, &c);
+        ParticleCheck k;
+        k.alive = c.alive;
+        k.capacity = c.capacity;
+        k.nonFinite = c.nonFinite;
+        return k;
+    }
+    bool pollShaderReload(Diagnostics* out) override {
+        DiagnosticSink sink(out);
+        return api_->pollShaderReload(p_, sink.c()) != 0;
+    }
+    std::vector<ReactionKeyInfo> reactionSchema() const override {
+        std::vector<ReactionKeyInfo> keys;
+        const int n = api_->reactionKeyCount(p_);
+        keys.reserve(size_t(n > 0 ? n : 0));
+        for (int i = 0; i < n; ++i) {
+            fxReactionKeyInfo c{};
+            if (api_->reactionKey(p_, i, &c) != FX_ERROR_NONE) continue;
+            ReactionKeyInfo k;
+            k.key = c.key ? c.key : "";
+            k.kind = static_cast<ReactionKeyInfo::Kind>(c.kind);
+            k.min = c.min;
+            k.max = c.max;
+            for (int j = 0; j < c.choiceCount; ++j) k.choices.emplace_back(c.choices[j]);
+            k.unit = c.unit ? c.unit : "";
+            k.help = c.help ? c.help : "";
+            keys.push_back(std::move(k));
+        }
+        return keys;
+    }
+    std::vector<std::string> reactionFiles() const override {
+        std::vector<std::string> files;
+        const int n = api_->reactionFileCount(p_);
+        for (int i = 0; i < n; ++i) {
+            files.push_back(fetchString([&](char* b, size_t m) { return api_->reactionFileAt(p_, i, b, m); }));
+        }
+        return files;
+    }
+    std::string reactionFile(int index) const override {
+        return fetchString([&](char* b, size_t n) { return api_->reactionFile(p_, index, b, n); });
+    }
+    std::string reactionValue(int index, const std::string& key) const override {
+        return fetchString([&](char* b, size_t n) { return api_->reactionValue(p_, index, key.c_str(), b, n); });
+    }
+    int reactionParticlesAlive(int index) const override { return api_->reactionParticlesAlive(p_, index); }
+    bool loadReactionsFromText(const std::string& file, const std::string& text, Diagnostics* out) override {
+        DiagnosticSink sink(out);
+        return api_->loadReactionsFromText(p_, file.c_str(), text.data(), text.size(), sink.c()) != 0;
+    }
+    ErrorCode setParticleShape(ParticleShape shape) override {
+        return static_cast<ErrorCode>(api_->setParticleShape(p_, static_cast<int>(shape)));
+    }
+    ParticleShape particleShape() const override { return static_cast<ParticleShape>(api_->particleShape(p_)); }
+    ReactionStats reactionStats(int index) const override {
+        fxReactionStats c{};
+        api_->reactionStats(p_, index, &c);
+        ReactionStats s;
+        s.name = c.name;
+        s.technique = c.technique;
+        s.alive = c.alive;
+        s.emitted = c.emitted;
+        s.dropped = c.dropped;
+        return s;
+    }
+    ErrorCode fireReaction(const std::string& name, const glm::vec3& point) override {
+        const float p[3] = {point.x, point.y, point.z};
+        return static_cast<ErrorCode>(api_->fireReaction(p_, name.c_str(), p));
+    }
+    ErrorCode setSceneLight(const SceneLight& light) override {
+        fxSceneLight c;
+        std::memset(&c, 0, sizeof c);
+        c.size = sizeof c;
+        for (int k = 0; k < 3; ++k) {
+            c.toSun[k] = light.toSun[k];
+            c.sunColor[k] = light.sunColor[k];
+            c.ambient[k] = light.ambient[k];
+        }
+        return static_cast<ErrorCode>(api_->setSceneLight(p_, &c));
+    }
+    void clearSceneLight() override { api_->clearSceneLight(p_); }
+    SmokeShadow declareShadowPasses(const ViewInfo& view, FrameBuilder& frame) override {
+        const fxViewDesc v = viewToC(view);
+        FrameBridge bridge(frame);
+        fxSmokeShadow c{};
+        SmokeShadow s;
+        if (api_->declareShadowPasses(p_, &v, bridge.c(), &c) == FX_ERROR_NONE && c.opacity != 0) {
+            s.opacity = Target{c.opacity};
+            s.worldToShadow = matFrom(c.worldToShadow);
+        }
+        return s;
+    }
+    ErrorCode setQuarterResEdges(QuarterResEdges mode) override {
+        return static_cast<ErrorCode>(api_->setQuarterResEdges(p_, static_cast<int>(mode)));
+    }
+    QuarterResEdges quarterResEdges() const override {
+        return static_cast<QuarterResEdges>(api_->quarterResEdges(p_));
+    }
+    ErrorCode setFadeClassification(FadeClassification mode) override {
+        return static_cast<ErrorCode>(api_->setFadeClassification(p_, static_cast<int>(mode)));
+    }
+    FadeClassification fadeClassification() const override {
+        return static_cast<FadeClassification>(api_->fadeClassification(p_));
+    }
+    ErrorCode setFadeClassCounting(bool on) override {
+        return static_cast<ErrorCode>(api_->setFadeClassCounting(p_, on ? 1 : 0));
+    }
+    FadeClassCounts fadeClassCounts() const override {
+        fxFadeClassCounts c{};
+        api_->fadeClassCounts(p_, &c);
+        FadeClassCounts k;
+        k.fadeNeeded = c.fadeNeeded;
+        k.inFront = c.inFront;
+        k.hidden = c.hidden;
+        k.counted = c.counted != 0;
+        return k;
+    }
+    ErrorCode renderView(const ViewInfo& view, const HostDepth& depth) override {
+        fxViewDesc v = viewToC(view);
+        depthToC(depth, v);
+        return static_cast<ErrorCode>(api_->renderView(p_, &v));
+    }
+
+private:
+    const fxApi* api_;
+    fxPlugin* p_;
+};
+
+}  // namespace detail
+}  // namespace fx
+
+inline std::unique_ptr<fx::Plugin> fxCreatePlugin(const fx::PluginImports& imports, fx::ErrorCode* error) {
+    using fx::ErrorCode;
+    const fxApi* api = fxGetApi(fx::kApiVersion);
+    if (!api) {
+        // The library is older than these headers: nothing to create the plugin with.
+        if (error) *error = ErrorCode::VersionMismatch;
+        if (imports.host) {
+            const uint32_t lib = fxApiVersion();
+            const std::string line =
+                "fx: error[VersionMismatch] fxCreatePlugin: the plugin library offers API " +
+                std::to_string(fx::apiVersionMajor(lib)) + "." + std::to_string(fx::apiVersionMinor(lib)) +
+                "; these headers need " + std::to_string(FX_API_VERSION_MAJOR) + "." +
+                std::to_string(FX_API_VERSION_MINOR);
+            imports.host->log(fx::LogLevel::Error, line.c_str());
+        }
+        return nullptr;
+    }
+    // A host written against 1.x gets the 2.0 table: this layer serves every 1.x function.
+    uint32_t want = imports.apiVersion;
+    if (fx::apiVersionMajor(want) == 1 && want <= fx::kLastApiVersion1) want = fx::kApiVersion;
+    fxHostCallbacks callbacks = fx::detail::HostTrampolines::make(imports.host);
+    fxPluginDesc desc;
+    std::memset(&desc, 0, sizeof desc);
+    desc.size = sizeof desc;
+    desc.apiVersion = want;
+    desc.host = imports.host ? &callbacks : nullptr;
+    desc.shaderDir = imports.shaderDir.c_str();
+    desc.dataDir = imports.dataDir.c_str();
+    desc.seed = imports.seed;
+    int code = FX_ERROR_NONE;
+    fxPlugin* handle = api->create(&desc, &code);
+    if (error) *error = static_cast<ErrorCode>(code);
+    if (!handle) return nullptr;
+    return std::unique_ptr<fx::Plugin>(new fx::detail::CApiPlugin(api, handle));
+}

@@ -1,0 +1,125 @@
+#include "CApiBridge.h"
+
+#include <memory>
+
+namespace fx {
+namespace {
+
+glm::vec3 vec3From(void (*get)(void*, float*), void* user) {
+    float v[3] = {0.0f, 0.0f, 0.0f};
+    if (get) get(user, v);
+    return glm::vec3(v[0], v[1], v[2]);
+}
+
+// The most reads and writes a plugin pass declares (the host side spells these counts out).
+constexpr size_t kMaxReads = 8;
+constexpr size_t kMaxWrites = 4;
+
+using PassFn = std::function<void(PassContext&)>;
+
+void runPass(void* user, const fxPassContext* ctx) {
+    CPassContext pass(*ctx);
+    (*static_cast<PassFn*>(user))(pass);
+}
+void releasePass(void* user) { delete static_cast<PassFn*>(user); }
+
+}  // namespace
+
+WheelContact CHostAdapter::wheel(int index) const {
+    WheelContact w;
+    if (!c_.wheel) return w;
+    fxWheelContact c{};
+    c_.wheel(c_.user, index, &c);
+    w.position = glm::vec3(c.position[0], c.position[1], c.position[2]);
+    w.velocity = glm::vec3(c.velocity[0], c.velocity[1], c.velocity[2]);
+    w.slip = c.slip;
+    // A surface outside the enum reads as asphalt (the emitter's default) rather than indexing
+    // past the per-surface tables.
+    w.surface = c.surface >= 0 && c.surface < static_cast<int>(Surface::Count) ? static_cast<Surface>(c.surface)
+                                                                              : Surface::Asphalt;
+    w.grounded = c.grounded != 0;
+    w.rear = c.rear != 0;
+    return w;
+}
+
+glm::vec3 CHostAdapter::wind() const { return vec3From(c_.wind, c_.user); }
+glm::vec3 CHostAdapter::collisionPoint() const { return vec3From(c_.collisionPoint, c_.user); }
+
+TextureRef CPassContext::texture(Target target, int attachment) {
+    fxTextureRef c{};
+    c_.texture(c_.user, target.id, attachment, &c);
+    TextureRef r;
+    r.name = c.name;
+    r.format = static_cast<TargetFormat>(c.format);
+    r.width = c.width;
+    r.height = c.height;
+    return r;
+}
+
+Target CFrameBuilder::createTarget(const char* name, const TargetDesc& desc) {
+    fxTargetDesc c{};
+    c.size = sizeof c;
+    c.scale = desc.scale;
+    c.width = desc.width;
+    c.height = desc.height;
+    c.format = static_cast<int>(desc.format);
+    c.nearestFilter = desc.linearFilter ? 0 : 1;
+    c.depth = desc.depth ? 1 : 0;
+    return Target{c_.createTarget(c_.user, name, &c)};
+}
+
+void CFrameBuilder::addPass(const char* name, std::initializer_list<Target> reads,
+                            std::initializer_list<Target> writes, PassFn execute) {
+    if (reads.size() > kMaxReads || writes.size() > kMaxWrites) {
+        errors_.refuse(ErrorCode::InvalidValue, "addPass", std::string(name) + " declares more reads or writes "
+                                                           "than the C boundary carries (8, 4)");
+        return;
+    }
+    uint32_t r[kMaxReads] = {}, w[kMaxWrites] = {};
+    size_t i = 0;
+    for (Target t : reads) r[i++] = t.id;
+    i = 0;
+    for (Target t : writes) w[i++] = t.id;
+    auto fn = std::make_unique<PassFn>(std::move(execute));
+    fxPassCallback cb{fn.get(), &runPass, &releasePass};
+    fn.release();  // the host owns it now: release() deletes it
+    c_.addPass(c_.user, name, r, int(reads.size()), w, int(writes.size()), cb);
+}
+
+std::string frameBuilderProblem(const fxFrameBuilder* f) {
+    if (!f) return "frame is null; expected an fxFrameBuilder";
+    if (f->size != sizeof(fxFrameBuilder)) {
+        return "fxFrameBuilder::size = " + std::to_string(f->size) + "; expected " +
+               std::to_string(sizeof(fxFrameBuilder));
+    }
+    if (!f->sceneColor || !f->sceneDepth || !f->createTarget || !f->addPass) {
+        return "fxFrameBuilder: sceneColor, sceneDepth, createTarget and addPass must all be set";
+    }
+    return std::string();
+}
+
+ViewInfo rightHandedView(const fxViewDesc& v) {
+    ViewInfo out;
+    out.name = v.name ? v.name : "";
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) {
+            out.view[c][r] = v.view[c * 4 + r];
+            out.proj[c][r] = v.proj[c * 4 + r];
+        }
+    }
+    if (v.handedness == FX_LEFT_HANDED) {
+        // F view negates the view matrix's third row; proj F negates the projection's third column.
+        for (int c = 0; c < 4; ++c) out.view[c][2] = -out.view[c][2];
+        out.proj[2] = -out.proj[2];
+    }
+    out.eye = glm::vec3(v.eye[0], v.eye[1], v.eye[2]);
+    out.nearPlane = v.nearPlane;
+    out.farPlane = v.farPlane;
+    out.width = v.width;
+    out.height = v.height;
+    out.depth = v.depthOrder == FX_DEPTH_REVERSED_Z ? DepthConvention::ReversedZ : DepthConvention::Standard;
+    out.handedness = Handedness::RightHanded;
+    return out;
+}
+
+}  // namespace fx
