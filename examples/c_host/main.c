@@ -9,7 +9,7 @@
  *   - the smoke is hidden behind the post: no pixel of the post changed;
  *   - the plugin logged no error and raised no GL error.
  *
- *   c_host <out.png>
+ *   c_host <reactions.yaml> <out.png>
  */
 #include <GL/osmesa.h>
 
@@ -24,23 +24,6 @@
 #define WIDTH 320
 #define HEIGHT 240
 #define MIN_SMOKE_PIXELS 3000 /* of 76800; the cloud covers about a fifth of the frame */
-
-/* One reaction, given as text: the host ships no file. Keys: reactions/README.md. */
-static const char kReactions[] =
-    "reactions:\n"
-    "  - name: c_host_smoke\n"
-    "    type: wheel_smoke\n"
-    "    trigger: {slip_threshold: 0.3, surfaces: [asphalt], wheels: rear}\n"
-    "    emission: {rate: 120, capacity: 1024, spawn_height: 0.2}\n"
-    "    particle:\n"
-    "      lifetime: [2.5, 3.5]\n"
-    "      start_size: 0.6\n"
-    "      end_size: 3.5\n"
-    "      rise_speed: 0.5\n"
-    "      colour_ramp:\n"
-    "        - {t: 0.0, rgba: [0.95, 0.95, 0.95, 0.9]}\n"
-    "        - {t: 1.0, rgba: [0.8, 0.8, 0.8, 0.5]}\n"
-    "    render: {technique: soft, softness: 1.5}\n";
 
 /* The few GL entry points the host itself needs, from OSMesaGetProcAddress. */
 static struct {
@@ -209,8 +192,8 @@ int main(int argc, char** argv) {
     unsigned char *before, *after;
     int error = FX_ERROR_NONE, step, r, i, smoke = 0, postPixels = 0, postChanged = 0, glErrors = 0, failed = 0;
 
-    if (argc != 2) {
-        fprintf(stderr, "usage: c_host <out.png>\n");
+    if (argc != 3) {
+        fprintf(stderr, "usage: c_host <reactions.yaml> <out.png>\n");
         return 2;
     }
     context = OSMesaCreateContextAttribs(attribs, NULL);
@@ -234,7 +217,7 @@ int main(int argc, char** argv) {
     sink.user = NULL;
     sink.report = hostReport;
     plugin = fx->create(&desc, &error);
-    if (!plugin || !fx->loadReactionsFromText(plugin, "c_host.yaml", kReactions, sizeof kReactions - 1, &sink) ||
+    if (!plugin || !fx->loadReactions(plugin, argv[1], &sink) ||
         !fx->prepareGl(plugin, &sink)) {
         fprintf(stderr, "c_host: the plugin did not start (%s)\n", fxErrorCodeName(error));
         return 1;
@@ -274,8 +257,8 @@ int main(int argc, char** argv) {
            stats.particlesDrawn);
     printf("smoke pixels %d of %d (need > %d); post pixels %d, changed %d (need 0)\n", smoke, WIDTH * HEIGHT,
            MIN_SMOKE_PIXELS, postPixels, postChanged);
-    if (!stbi_write_png(argv[1], WIDTH, HEIGHT, 4, after, WIDTH * 4)) {
-        fprintf(stderr, "c_host: could not write %s\n", argv[1]);
+    if (!stbi_write_png(argv[2], WIDTH, HEIGHT, 4, after, WIDTH * 4)) {
+        fprintf(stderr, "c_host: could not write %s\n", argv[2]);
         failed = 1;
     }
     if (error != FX_ERROR_NONE || smoke <= MIN_SMOKE_PIXELS || postPixels < 500 || postChanged != 0 ||

@@ -38,7 +38,7 @@ case "$example" in
 c_host)
   log "examples/c_host (C99, fx/fx.h only) against $prefix"
   build c_host
-  "$work/c_host/c_host" "$work/c_host.png"
+  "$work/c_host/c_host" "$work/c_host/smoke.yaml" "$work/c_host.png"
   [ -s "$work/c_host.png" ] || fail "c_host wrote no PNG"
   ;;
 irrlicht_host)
