@@ -50,6 +50,14 @@ const std::vector<Mode>& allModes() {
         {"mega", "Mega-particles (blurred spheres as one volume)", true, Technique::Mega, false, false, "spherical"},
         {"mega-lit", "Mega-particles, lit", true, Technique::Mega, false, false, "spherical-lit",
          fx::ParticleShape::Trimmed, true},
+        // API 2 (issue 30): the plugin's immediate path reading the engine's z-buffer itself
+        // (one copy and a linearising pass) instead of the linear R32F the opaque pass writes.
+        {"soft-zbuffer", "Soft particles, host z-buffer through the immediate path", true, Technique::Soft, false,
+         false, "soft", fx::ParticleShape::Trimmed, false, fx::QuarterResEdges::DepthAware,
+         fx::FadeClassification::Off, true},
+        {"spherical-zbuffer", "Spherical billboards, host z-buffer through the immediate path", true,
+         Technique::Spherical, false, false, "spherical", fx::ParticleShape::Trimmed, false,
+         fx::QuarterResEdges::DepthAware, fx::FadeClassification::Off, true},
     };
     return modes;
 }
@@ -90,6 +98,7 @@ bool parseModeList(const std::string& text, std::vector<std::string>* out, std::
 void applyMode(cube::Game& game, const Mode& mode) {
     game.options().effects = mode.effects;
     game.options().prepassEqual = mode.prepassEqual;
+    game.options().pluginZBuffer = mode.hostZBuffer;
     fx::Plugin* plugin = game.specialFX().plugin();
     if (!plugin) return;
     fx::RenderOptions ro = plugin->renderOptions();

@@ -33,12 +33,17 @@ struct Mode {
     fx::QuarterResEdges edges = fx::QuarterResEdges::DepthAware;
     /// Fade classification (Plugin::setFadeClassification; `soft+classify`, `spherical+classify`).
     fx::FadeClassification classify = fx::FadeClassification::Off;
+    /// API 2's immediate path reading the engine's own z-buffer (copied and linearised by the
+    /// plugin) instead of the frame graph's linear R32F scene depth (`soft-zbuffer`).
+    bool hostZBuffer = false;
 };
 
 /// Every mode, in table order: nofx, hard, soft, soft-quads, soft+classify, soft+equal, soft+quarter,
 /// soft+mixed (quarter res with the depth-edge pixels at full res), soft+equal+quarter, spherical,
 /// spherical-quads, spherical+classify, spherical+quarter, hard-lit, soft-lit, spherical-lit, mega (image error
-/// against spherical: the same particles as exact spheres), mega-lit (against spherical-lit).
+/// against spherical: the same particles as exact spheres), mega-lit (against spherical-lit),
+/// soft-zbuffer and spherical-zbuffer (the immediate path on the engine's z-buffer, against
+/// soft and spherical).
 const std::vector<Mode>& allModes();
 /// Null when `name` is not a mode.
 const Mode* findMode(const std::string& name);

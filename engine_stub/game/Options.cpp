@@ -131,6 +131,9 @@ std::string usage() {
         "  --fx legacy|plugin     old hard sprites or the plugin (default plugin)\n"
         "  --mode hard|soft|spherical|mega|reaction  technique override (default: each reaction's)\n"
         "  --prepass-equal        opaque pass reuses the prepass z-buffer with depth test EQUAL\n"
+        "  --fx-depth linear|zbuffer  the plugin's scene depth: the engine's linear R32F target\n"
+        "                         (default, frame-graph passes) or the engine's own z-buffer, read\n"
+        "                         by the plugin's immediate path (API 2, Plugin::renderView)\n"
         "  --quarter-res          particles into a half x half target, depth-aware composite\n"
         "  --bilinear-upsample    quarter-res with plain bilinear upsampling (comparison)\n"
         "  --watch                reload changed reaction files while running\n"
@@ -263,6 +266,14 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
                 return false;
             }
             o.mode = v;
+        } else if (a == "--fx-depth") {
+            if (!need(i, 1, a)) return false;
+            const std::string v = argv[++i];
+            if (v != "linear" && v != "zbuffer") {
+                *error = "--fx-depth: expected linear or zbuffer, got '" + v + "'";
+                return false;
+            }
+            o.pluginZBuffer = v == "zbuffer";
         } else if (a == "--prepass-equal") {
             o.prepassEqual = true;
         } else if (a == "--quarter-res") {

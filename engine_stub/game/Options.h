@@ -31,6 +31,9 @@ struct Options {
     FxPath fx = FxPath::Plugin;
     std::string mode = "reaction";  ///< hard | soft | spherical | reaction (each reaction's own)
     bool prepassEqual = false;
+    /// --fx-depth zbuffer: the plugin draws through API 2's immediate path and reads the engine's
+    /// own z-buffer (copied and linearised by the plugin) instead of the linear R32F scene depth.
+    bool pluginZBuffer = false;
     bool quarterRes = false;
     bool bilinearUpsample = false;
     bool watch = false;

@@ -18,6 +18,9 @@ namespace cube {
 /// Per-frame switches the views read. Defaults: LESS opaque pass, no plugin, HUD on, no inset.
 struct FrameSettings {
     bool prepassEqual = false;      ///< opaque reuses the prepass z-buffer, depth test EQUAL
+    /// The plugin draws through its immediate path (Plugin::renderView) from one engine pass,
+    /// reading the colour target's own z-buffer, instead of declaring frame-graph passes.
+    bool pluginImmediate = false;
     fx::Plugin* plugin = nullptr;   ///< the particle-bucket hook (null: legacy or no effects)
     bool drawLegacy = true;         ///< draw legacy particle systems (false: the bare engine)
     bool hud = true;

@@ -265,6 +265,21 @@ void cubeView::declarePluginPasses(rtt::FrameGraph& graph, const Targets& t, con
     // visible). A pass of it that reads scene depth is what keeps the depth prepass alive; with
     // prepass-EQUAL the colour target then shares the prepass z-buffer and the opaque pass tests
     // EQUAL without writing depth (pixel-identical, less overdraw).
+    if (settings.plugin && settings.pluginImmediate) {
+        // API 2's immediate path, as an engine without a frame graph uses it: one pass binds the
+        // colour target with its z-buffer and the plugin draws into it, copying and linearising
+        // that z-buffer itself when a technique reads depth. No linear scene depth is declared.
+        fx::Plugin* plugin = settings.plugin;
+        const fx::ViewInfo info = pluginView();
+        const rtt::FrameGraphResource color = t.color;
+        graph.addPass(passName("fx_immediate").c_str(), order(bucketInfo(Bucket::Particles).order),
+                      [&](rtt::PassBuilder& b) { b.write(color); },
+                      [plugin, info, color](rtt::PassContext& ctx) {
+                          if (ctx.bindForDraw(color)) plugin->renderView(info, fx::HostDepth{});
+                      });
+        prepassDeclared_ = false;
+        return;
+    }
     FxFrameBuilder fx(graph, t.color, t.sceneDepth, name_ + ".", order(bucketInfo(Bucket::Particles).order),
                       width_, height_);
     if (settings.plugin) settings.plugin->declarePasses(pluginView(), fx);

@@ -32,6 +32,9 @@ using ProcAddressFn = void (*(*)(const char*))();
 /// it cannot. The proc-address function is what glad loads the entry points with.
 bool createOsMesaContext(std::string* error);
 ProcAddressFn osMesaProcAddress();
+/// Gives the context's default framebuffer (RGBA8, DEPTH24 + STENCIL8) this size (it starts 4 x 4;
+/// the immediate-path tests draw into it as a host without FBOs would). False when it cannot.
+bool resizeDefaultFramebuffer(int width, int height);
 
 // ---- GL support (GlTestSupport.cpp) ----------------------------------------------------------
 
@@ -218,6 +221,9 @@ public:
     bool reversedZ = false;
 
     void declareHostPasses(TestFrameGraph& graph, const fx::ViewInfo& view);
+    /// The "opaque" pass's drawing (clear to the sky, colour and z of the quads) into the
+    /// framebuffer bound now, viewport (0, 0, view size): a host without a frame graph.
+    void drawOpaque(const fx::ViewInfo& view) const;
 
     static SceneQuad ground(float halfExtent, glm::vec3 colour, float y = 0.0f);
     /// A wall in the plane z = `z`, facing +z, spanning x in [x0, x1] and y in [y0, y1].

@@ -48,6 +48,13 @@ bool createOsMesaContext(std::string* error) {
     return true;
 }
 
+bool resizeDefaultFramebuffer(int width, int height) {
+    OsMesa& m = instance();
+    if (!m.context || width < 1 || height < 1) return false;
+    m.buffer.assign(size_t(width) * size_t(height) * 4, 0);
+    return OSMesaMakeCurrent(m.context, m.buffer.data(), GL_UNSIGNED_BYTE, width, height) != 0;
+}
+
 ProcAddressFn osMesaProcAddress() { return &OSMesaGetProcAddress; }
 
 }  // namespace fxtest

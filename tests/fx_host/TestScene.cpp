@@ -119,6 +119,20 @@ void clipControl(bool zeroToOne) {
     if (fn) fn(kLowerLeft, zeroToOne ? kZeroToOne : kNegativeOneToOne);
 }
 
+// The "opaque" pass's body, into the bound framebuffer.
+void drawOpaqueScene(const std::vector<SceneQuad>& q, const fx::ViewInfo& view, glm::vec3 skyColour, bool reversed) {
+    hostPassState();
+    glClearColor(skyColour.r, skyColour.g, skyColour.b, 1.0f);
+    glClearDepth(reversed ? 0.0 : 1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    clipControl(reversed);
+    if (reversed) glDepthFunc(GL_GEQUAL);
+    drawQuads(sceneGl().colour, q, view, true);
+    // The particle passes run with the host's clip control still set (as in a real
+    // reversed-Z engine); the graph's executor resets it after the frame.
+    if (reversed) glDepthFunc(GL_LESS);
+}
+
 }  // namespace
 
 void TestScene::declareHostPasses(TestFrameGraph& graph, const fx::ViewInfo& view) {
@@ -140,17 +154,13 @@ void TestScene::declareHostPasses(TestFrameGraph& graph, const fx::ViewInfo& vie
     });
     graph.addPass("opaque", {}, {graph.sceneColor()}, [q, view, skyColour, reversed](fx::PassContext& ctx) {
         ctx.bindForDraw(fx::Target{TestFrameGraph::kSceneColor});
-        hostPassState();
-        glClearColor(skyColour.r, skyColour.g, skyColour.b, 1.0f);
-        glClearDepth(reversed ? 0.0 : 1.0);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        clipControl(reversed);
-        if (reversed) glDepthFunc(GL_GEQUAL);
-        drawQuads(sceneGl().colour, q, view, true);
-        // The particle passes run with the host's clip control still set (as in a real
-        // reversed-Z engine); the graph's executor resets it after the frame.
-        if (reversed) glDepthFunc(GL_LESS);
+        drawOpaqueScene(q, view, skyColour, reversed);
     });
+}
+
+void TestScene::drawOpaque(const fx::ViewInfo& view) const {
+    glViewport(0, 0, view.width, view.height);
+    drawOpaqueScene(quads, view, sky, reversedZ);
 }
 
 void useReversedZ(fx::ViewInfo* view) {

@@ -1,0 +1,138 @@
+// The immediate path's frame graph: culling, pooled targets, the depth hook.
+#include "ImmediateFrame.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cstdint>
+
+#include "GlStateGuard.h"
+#include "PrivateGl.h"
+
+namespace fx {
+
+class ImmediateFrame::Context final : public PassContext {
+public:
+    explicit Context(ImmediateFrame& f) : f_(f) {}
+    void bindForDraw(Target t) override {
+        const ImmediateFrameSetup& s = f_.setup_;
+        if (t.id == kSceneColor) {
+            glBindFramebuffer(GL_FRAMEBUFFER, s.hostFramebuffer);
+            glViewport(s.viewportX, s.viewportY, s.width, s.height);
+            return;
+        }
+        const PooledTarget* p = f_.slotOf(t.id);
+        assert(p && "bindForDraw: a target this pass did not declare, or the host's sceneDepth");
+        if (!p) return;
+        glBindFramebuffer(GL_FRAMEBUFFER, p->framebuffer);
+        glViewport(0, 0, p->width, p->height);
+    }
+    TextureRef texture(Target t, int attachment) override {
+        const ImmediateFrameSetup& s = f_.setup_;
+        if (attachment != 0 || t.id == kSceneColor) return TextureRef{};  // the host's framebuffer: no texture
+        if (t.id == kSceneDepth && s.hostLinearDepth) {
+            return {s.hostLinearDepth, TargetFormat::R32F, s.width, s.height};
+        }
+        const PooledTarget* p = f_.slotOf(t.id);
+        if (!p) return TextureRef{};
+        return {p->texture, p->desc.format, p->width, p->height};
+    }
+    int width(Target t) override {
+        const PooledTarget* p = t.id == kSceneColor ? nullptr : f_.slotOf(t.id);
+        return p ? p->width : f_.setup_.width;
+    }
+    int height(Target t) override {
+        const PooledTarget* p = t.id == kSceneColor ? nullptr : f_.slotOf(t.id);
+        return p ? p->height : f_.setup_.height;
+    }
+
+private:
+    ImmediateFrame& f_;
+};
+
+ImmediateFrame::ImmediateFrame(ImmediateTargetPool& pool, ImmediateFrameSetup setup)
+    : pool_(pool), setup_(std::move(setup)) {}
+
+Target ImmediateFrame::createTarget(const char* name, const TargetDesc& desc) {
+    created_.push_back(Created{name ? name : "", desc, SIZE_MAX});
+    return Target{uint32_t(created_.size()) + kSceneDepth};
+}
+
+void ImmediateFrame::addPass(const char* name, std::initializer_list<Target> reads,
+                             std::initializer_list<Target> writes, std::function<void(PassContext&)> execute) {
+    Pass p;
+    p.name = name ? name : "";
+    for (Target t : reads) {
+        if (t.valid()) p.reads.push_back(t.id);
+    }
+    for (Target t : writes) {
+        if (t.valid()) p.writes.push_back(t.id);
+    }
+    p.run = std::move(execute);
+    passes_.push_back(std::move(p));
+}
+
+const PooledTarget* ImmediateFrame::slotOf(uint32_t id) const {
+    size_t slot = SIZE_MAX;
+    if (id == kSceneDepth) {
+        slot = depthSlot_;
+    } else if (id > kSceneDepth && id - kSceneDepth - 1 < created_.size()) {
+        slot = created_[id - kSceneDepth - 1].slot;
+    }
+    return slot == SIZE_MAX ? nullptr : &pool_.at(slot);
+}
+
+void ImmediateFrame::allocate(uint32_t id) {
+    if (id == kSceneColor) return;
+    if (id == kSceneDepth) {
+        if (setup_.hostLinearDepth || depthSlot_ != SIZE_MAX) return;
+        TargetDesc d;
+        d.format = TargetFormat::R32F;
+        d.linearFilter = false;
+        depthSlot_ = pool_.acquire(d, setup_.width, setup_.height);
+        return;
+    }
+    if (id - kSceneDepth - 1 >= created_.size()) return;  // not a handle of this frame
+    Created& c = created_[id - kSceneDepth - 1];
+    if (c.slot != SIZE_MAX) return;
+    const int w = c.desc.width > 0 ? c.desc.width : std::max(1, int(float(setup_.width) * c.desc.scale));
+    const int h = c.desc.height > 0 ? c.desc.height : std::max(1, int(float(setup_.height) * c.desc.scale));
+    c.slot = pool_.acquire(c.desc, w, h);
+}
+
+void ImmediateFrame::execute() {
+    // Cull: walk back from the presented target.
+    std::vector<bool> alive(passes_.size(), false);
+    std::vector<uint32_t> needed{kSceneColor};
+    for (size_t k = passes_.size(); k-- > 0;) {
+        const Pass& p = passes_[k];
+        bool keep = false;
+        for (uint32_t w : p.writes) keep = keep || std::find(needed.begin(), needed.end(), w) != needed.end();
+        if (!keep) continue;
+        alive[k] = true;
+        needed.insert(needed.end(), p.reads.begin(), p.reads.end());
+    }
+    {
+        GlStateGuard guard;  // allocation binds textures and framebuffers
+        for (size_t k = 0; k < passes_.size(); ++k) {
+            if (!alive[k]) continue;
+            for (uint32_t r : passes_[k].reads) allocate(r);
+            for (uint32_t w : passes_[k].writes) allocate(w);
+        }
+    }
+    Context ctx(*this);
+    for (size_t k = 0; k < passes_.size(); ++k) {
+        if (!alive[k]) continue;
+        Pass& p = passes_[k];
+        const bool readsDepth = std::find(p.reads.begin(), p.reads.end(), kSceneDepth) != p.reads.end();
+        if (readsDepth && !depthReady_ && depthSlot_ != SIZE_MAX && setup_.produceDepth) {
+            GlStateGuard guard;
+            DebugGroup group("fx_linearize_depth");
+            setup_.produceDepth(pool_.at(depthSlot_).framebuffer);
+            depthReady_ = true;
+        }
+        p.run(ctx);
+        executed_.push_back(p.name);
+    }
+}
+
+}  // namespace fx

@@ -1,0 +1,79 @@
+#pragma once
+// The immediate path's frame graph (ImmediateRenderer): fx::FrameBuilder and fx::PassContext over
+// the framebuffer the host had bound for drawing and the plugin's own pooled targets, for one
+// view, one frame. The semantics the plugin's passes expect from engine_stub's frame graph
+// (engine_stub/rtt/) and fx_host's (tests/fx_host/TestFrameGraph.cpp):
+//   - passes run in declaration order; a pass runs only if it writes sceneColor or a target a
+//     later running pass reads (walked back from sceneColor); targets are allocated only for
+//     running passes;
+//   - sceneColor is the host's framebuffer (its z-buffer attached); bindForDraw binds it with the
+//     viewport the host had at the call, at the view's size;
+//   - sceneDepth is the linear R32F depth: the host's own texture (LinearR32F), or a pooled R32F
+//     target that the depth hook fills right before the first running pass that reads it (so a
+//     frame whose passes read no depth copies and linearises nothing);
+//   - createTarget sizes follow the view (TargetDesc::scale, at least 1 px) unless absolute.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "fx/HostAdapter.h"
+#include "ImmediateTargetPool.h"
+
+namespace fx {
+
+/// What one immediate frame draws into and reads from. Defaults: nothing (set every field).
+struct ImmediateFrameSetup {
+    int width = 0, height = 0;           ///< the view's size (sceneColor, sceneDepth)
+    uint32_t hostFramebuffer = 0;        ///< GL_DRAW_FRAMEBUFFER at the call (0 = default)
+    int viewportX = 0, viewportY = 0;    ///< the host's viewport origin at the call
+    uint32_t hostLinearDepth = 0;        ///< the host's R32F linear depth, or 0 = produce it
+    /// Fills the linear depth into `framebuffer` (R32F colour, width x height). Called at most once
+    /// a frame, inside the frame's GL state guard.
+    std::function<void(uint32_t framebuffer)> produceDepth;
+};
+
+class ImmediateFrame final : public FrameBuilder {
+public:
+    static constexpr uint32_t kSceneColor = 1, kSceneDepth = 2;
+
+    ImmediateFrame(ImmediateTargetPool& pool, ImmediateFrameSetup setup);
+
+    Target sceneColor() override { return Target{kSceneColor}; }
+    Target sceneDepth() override { return Target{kSceneDepth}; }
+    Target createTarget(const char* name, const TargetDesc& desc) override;
+    void addPass(const char* name, std::initializer_list<Target> reads, std::initializer_list<Target> writes,
+                 std::function<void(PassContext&)> execute) override;
+
+    bool empty() const { return passes_.empty(); }
+    /// Culls, allocates and runs the passes. Restores the GL state it changes itself (each plugin
+    /// pass restores its own).
+    void execute();
+    const std::vector<std::string>& executed() const { return executed_; }
+
+private:
+    struct Pass {
+        std::string name;
+        std::vector<uint32_t> reads, writes;
+        std::function<void(PassContext&)> run;
+    };
+    struct Created {
+        std::string name;
+        TargetDesc desc;
+        size_t slot = SIZE_MAX;  ///< pool slot once allocated
+    };
+    class Context;
+
+    void allocate(uint32_t id);
+    const PooledTarget* slotOf(uint32_t id) const;
+
+    ImmediateTargetPool& pool_;
+    ImmediateFrameSetup setup_;
+    std::vector<Pass> passes_;
+    std::vector<Created> created_;  ///< id - kSceneDepth - 1
+    size_t depthSlot_ = SIZE_MAX;   ///< the produced linear depth's pool slot
+    bool depthReady_ = false;
+    std::vector<std::string> executed_;
+};
+
+}  // namespace fx

@@ -1,0 +1,130 @@
+// The immediate path: validation, the host's bindings, the frame graph and the depth hook.
+#include "ImmediateRenderer.h"
+
+#include "GlStateGuard.h"
+#include "ImmediateFrame.h"
+#include "PrivateGl.h"
+
+#include <string>
+
+namespace fx {
+
+ImmediateRenderer::ImmediateRenderer(HostAdapter* host, std::string shaderDir)
+    : host_(host), depth_(std::move(shaderDir)) {}
+
+ImmediateRenderer::~ImmediateRenderer() { releaseGl(); }
+
+void ImmediateRenderer::releaseGl() {
+    pool_.release();
+    depth_.releaseGl();
+}
+
+ErrorCode ImmediateRenderer::refuse(ErrorCode code, const std::string& what) {
+    lastError_ = what;
+    if (host_) {
+        host_->log(LogLevel::Error,
+                   (std::string("fx: error[") + errorCodeName(code) + "] immediate render: " + what).c_str());
+    }
+    return code;
+}
+
+ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
+    using Source = ImmediateView::DepthSource;
+    lastPasses_.clear();
+    lastError_.clear();
+    const Source source = in.depthSource;
+    if (source != Source::None && source != Source::LinearR32F && source != Source::DepthTexture &&
+        source != Source::BoundFramebuffer) {
+        return refuse(ErrorCode::InvalidValue, "depthSource: not a DepthSource value");
+    }
+    if ((source == Source::LinearR32F || source == Source::DepthTexture) && in.depthTexture == 0) {
+        return refuse(ErrorCode::InvalidValue, "depthTexture: 0 for a depth source that needs a texture");
+    }
+    if (!validDepthMapping(in.view.proj, in.mapping)) {
+        return refuse(ErrorCode::InvalidValue,
+                      "mapping: depth range outside [0, 1] or empty, or a projection without depth");
+    }
+    std::string glError = "no HostAdapter to load GL through";
+    if (!privateGlLoaded() && !(host_ && loadPrivateGl(*host_, &glError))) return refuse(ErrorCode::NoGlContext, glError);
+
+    GlStateGuard guard;  // the queries below bind textures and the read framebuffer
+    GLint drawFramebuffer = 0, viewport[4] = {};
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    if (viewport[0] != 0 || viewport[1] != 0) {
+        return refuse(ErrorCode::InvalidView,
+                      "viewport: origin must be (0, 0) (the particle shaders address depth by gl_FragCoord)");
+    }
+    uint32_t depthFormat = 0;
+    int samples = 0;
+    if (source == Source::DepthTexture) {
+        glActiveTexture(GL_TEXTURE0);
+        depthFormat = supportedDepthFormat(in.depthFormat ? in.depthFormat : HostDepth::textureFormat(in.depthTexture));
+        int tw = 0, th = 0;
+        HostDepth::textureSize(in.depthTexture, &tw, &th);
+        if (depthFormat && (tw != in.view.width || th != in.view.height)) {
+            return refuse(ErrorCode::SizeMismatch, "depthTexture: " + std::to_string(tw) + "x" + std::to_string(th) +
+                                                       ", the view is " + std::to_string(in.view.width) + "x" +
+                                                       std::to_string(in.view.height));
+        }
+    } else if (source == Source::BoundFramebuffer) {
+        depthFormat = HostDepth::framebufferDepthFormat(uint32_t(drawFramebuffer));
+        samples = HostDepth::framebufferSamples(uint32_t(drawFramebuffer));
+    }
+    if ((source == Source::DepthTexture || source == Source::BoundFramebuffer) && depthFormat == 0) {
+        return refuse(ErrorCode::InvalidValue,
+                      source == Source::DepthTexture
+                          ? "depthTexture: not a GL_DEPTH_COMPONENT16/24/32F or DEPTH24_STENCIL8 texture"
+                          : "the framebuffer bound for drawing has no depth attachment");
+    }
+
+    ViewInfo view = in.view;
+    view.depth = conventionOf(view.proj, in.mapping);
+
+    ImmediateFrameSetup setup;
+    setup.width = view.width;
+    setup.height = view.height;
+    setup.hostFramebuffer = uint32_t(drawFramebuffer);
+    setup.viewportX = viewport[0];
+    setup.viewportY = viewport[1];
+    if (source == Source::LinearR32F) setup.hostLinearDepth = in.depthTexture;
+    const float background = view.farPlane;
+    const glm::mat4 proj = view.proj;
+    const DepthMapping mapping = in.mapping;
+    const int w = view.width, h = view.height;
+    const uint32_t hostTexture = in.depthTexture;
+    setup.produceDepth = [this, source, background, proj, mapping, w, h, hostTexture, depthFormat,
+                          samples, drawFramebuffer](uint32_t target) {
+        // Built on first use, like the particle programs: a scene without smoke compiles nothing.
+        std::string error;
+        const bool ready = source == Source::None || depth_.prepare(&error);
+        if (!ready) {
+            lastError_ = error;
+            if (host_) host_->log(LogLevel::Error, ("fx: error[ShaderBuild] immediate render: " + error).c_str());
+        }
+        if (!ready || source == Source::None) {
+            // No depth (or no linearise program): the view's far plane everywhere, which every
+            // reader takes as nothing drawn.
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
+            const GLfloat far[4] = {background, 0.0f, 0.0f, 0.0f};
+            glClearBufferfv(GL_COLOR, 0, far);
+            return;
+        }
+        const uint32_t texture =
+            source == Source::DepthTexture ? hostTexture
+                                           : depth_.copyFramebufferDepth(uint32_t(drawFramebuffer), 0, 0, w, h,
+                                                                      depthFormat, samples);
+        depth_.linearize(texture, proj, mapping, background, target, w, h);
+    };
+    pool_.beginFrame();
+    ImmediateFrame frame(pool_, std::move(setup));
+    const ErrorCode declared = plugin.declarePasses(view, frame);
+    if (declared == ErrorCode::None && !frame.empty()) {
+        frame.execute();
+        lastPasses_ = frame.executed();
+    }
+    pool_.endFrame();
+    return declared;
+}
+
+}  // namespace fx
