@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang and runs each for a bounded time (FUZZ_SECONDS, default
-# 60) on a seed corpus from reactions/ and data/. Any crash, leak or sanitizer report fails the
+# 60) on a seed corpus from reactions/, data/ and fuzz/seeds/. Any crash, leak or sanitizer report fails the
 # script; the crashing input is copied into fuzz/regressions/<target>/ so it becomes a test.
 # Then every file in fuzz/regressions/ is replayed once (the regression tests).
 set -euo pipefail
@@ -17,6 +17,11 @@ mkdir -p "$work/corpus_reactions" "$work/corpus_scene" "$work/corpus_legacy"
 cp reactions/*.yaml data/legacy_smoke.yaml "$work/corpus_reactions/"
 cp data/legacy_smoke.yaml "$work/corpus_legacy/"
 cp data/race.gltf data/race.glb "$work/corpus_scene/"
+# Hand-made seeds for the classes of bad input each loader must refuse (issue 32: alias bombs,
+# recipes with a bad layer): fuzz/seeds/<target>/.
+for target in reactions legacy; do
+  [ -d "fuzz/seeds/$target" ] && cp fuzz/seeds/$target/* "$work/corpus_$target/"
+done
 # Seeds for the limits: JSON nested past the pre-scan's depth (in extras) and a long node chain.
 python3 - "$work/corpus_scene" <<'PY'
 import json, sys

@@ -47,6 +47,12 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "cube_game: %s\n", error.c_str());
         return 1;
     }
+    // A flag that needs the loaded reactions is checked now, before the first frame; refused as
+    // every other flag is (exit 2).
+    if (!game.checkExplodeAt(&error)) {
+        std::fprintf(stderr, "cube_game: %s\n", error.c_str());
+        return 2;
+    }
     for (const std::string& w : game.warnings()) std::fprintf(stderr, "cube_game: warning: %s\n", w.c_str());
     // Declared after the game: destroyed first, while the game's GL context still exists.
     cube::TweakPanel panel;

@@ -203,6 +203,23 @@ bool Game::fireExplosionAtCar() {
                          fx::ErrorCode::None;
 }
 
+bool Game::checkExplodeAt(std::string* error) const {
+    if (options_.explodeAt < 0.0) return true;
+    const fx::Plugin* plugin = specialFX_.plugin();
+    const int count = plugin ? plugin->reactionCount() : 0;
+    // The plugin's fireReaction rule: "explosion" itself or one of its layers, type on_demand.
+    for (int i = 0; i < count; ++i) {
+        const std::string name = plugin->reactionName(i);
+        const bool match = name == "explosion" || name.compare(0, 10, "explosion.") == 0;
+        if (match && plugin->reactionValue(i, "type") == "on_demand") return true;
+    }
+    const std::string from = options_.reactions.empty() ? paths::reactions() : options_.reactions;
+    *error = "--explode-at: " + from +
+             " loads no on_demand reaction named 'explosion' (or 'explosion.<layer>'), so nothing would "
+             "fire; expected reactions/explosion.yaml or a recipe like it among --reactions";
+    return false;
+}
+
 void Game::Update(float dt) {
     if (!std::isfinite(dt) || dt < 0.0f) dt = 0.0f;
     dt = std::min(dt, 10.0f);

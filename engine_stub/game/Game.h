@@ -62,6 +62,10 @@ public:
     /// just above the car, in the next simulation step (--explode-at, window key E). False when
     /// no such reaction runs.
     bool fireExplosionAtCar();
+    /// With --explode-at: true when fireExplosionAtCar() can act (an on_demand reaction named
+    /// "explosion" or "explosion.<layer>" is loaded); else false with a message naming the flag.
+    /// Called after Init, before the first frame (the reactions are known only then).
+    bool checkExplodeAt(std::string* error) const;
     double RenderFrame();
 
     /// Asks for a read-back of the next rendered frame (lastFrame()).

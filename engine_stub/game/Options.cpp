@@ -1,7 +1,9 @@
 #include "game/Options.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <vector>
@@ -97,6 +99,33 @@ bool checkOptions(const Options& o, std::string* error) {
         if (glm::length(glm::cross(d / len, glm::vec3(0.0f, 1.0f, 0.0f))) < 1e-3f) {
             *error = "--camera: the view from eye to target is parallel to the up axis (+Y); "
                      "expected a view that is not straight up or down";
+            return false;
+        }
+    }
+    // --explode-at T acts in the step whose start is before T and whose end reaches it: the drive
+    // starts at --start, so a T at or before it (T = 0 included) never fires; legacy smoke has no
+    // explosion. Whether an on_demand "explosion" is loaded is checked once the reactions are
+    // (Game::checkExplodeAt), still before the first frame.
+    if (o.explodeAt >= 0.0 && o.fx == FxPath::Legacy) {
+        *error = "--explode-at: fires the plugin's explosion recipe; expected --fx plugin (the default), got --fx legacy";
+        return false;
+    }
+    auto seconds = [](double s) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", s);
+        return std::string(text);
+    };
+    if (o.explodeAt >= 0.0 && o.explodeAt <= o.startTime) {
+        *error = "--explode-at " + seconds(o.explodeAt) + ": the drive starts at --start " + seconds(o.startTime) +
+                 " s, so it would never fire; expected a time after the start";
+        return false;
+    }
+    // With a fixed step the run's last drive time is known: a T past it never comes.
+    if (o.explodeAt >= 0.0 && o.fixedDt > 0.0 && o.frames > 0) {
+        const double end = o.startTime + double(o.frames) * double(float(o.fixedDt));
+        if (o.explodeAt > end + 1e-6 * std::max(1.0, end)) {
+            *error = "--explode-at " + seconds(o.explodeAt) + ": the run ends at drive time " + seconds(end) +
+                     " s (--start + --frames x --fixed-dt), so it would never fire; expected a time up to the end";
             return false;
         }
     }

@@ -68,13 +68,6 @@ bool SpecialFX::Init(const Options& options, cubeScene& scene, fx::HostAdapter* 
             *error = path + ": reactions could not be loaded (errors above)";
             return false;
         }
-        // Compile the particle programs now, so a broken shader stops start-up with file:line
-        // instead of surfacing at the first frame with smoke. A set with no reaction never
-        // draws a particle and compiles nothing.
-        if (plugin_->reactionCount() > 0 && !plugin_->prepareGl(nullptr)) {
-            *error = "fx_plugin: particle shaders or atlas failed to load (errors above)";
-            return false;
-        }
         fx::RenderOptions ro;
         ro.techniqueOverride = options.mode == "hard"        ? fx::Technique::Hard
                                : options.mode == "soft"      ? fx::Technique::Soft
@@ -84,6 +77,15 @@ bool SpecialFX::Init(const Options& options, cubeScene& scene, fx::HostAdapter* 
         ro.quarterRes = options.quarterRes || options.bilinearUpsample;
         ro.bilinearUpsample = options.bilinearUpsample;
         plugin_->setRenderOptions(ro);
+        // Compile the particle programs now, so a broken shader stops start-up with file:line
+        // instead of surfacing at the first frame with smoke. After the options: what the
+        // plugin builds is every program the loaded reactions *and* the options can draw with
+        // (--mode mega needs the mega programs though no reaction asks for them). A set with no
+        // reaction never draws a particle and compiles nothing.
+        if (plugin_->reactionCount() > 0 && !plugin_->prepareGl(nullptr)) {
+            *error = "fx_plugin: particle shaders or atlas failed to load (errors above)";
+            return false;
+        }
     }
     createReactions(scene);
     return true;
@@ -132,6 +134,10 @@ void SpecialFX::pollHotReload(cubeScene& scene) {
     if (reloaded) {
         std::fprintf(stderr, "reactions reloaded: %d live\n", plugin_->reactionCount());
         createReactions(scene);
+        // A reloaded set may use a technique the old one did not (stateless, mega): its programs
+        // are built now, not at its first particle; a failure is logged once by the plugin and
+        // that technique is not drawn (the run goes on, as for a broken shader edit).
+        (void)plugin_->prepareGl(nullptr);
     }
 }
 

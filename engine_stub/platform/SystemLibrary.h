@@ -26,9 +26,11 @@ struct SystemLibraryDesc {
 /// Opening the same library again (a second Platform) only takes another reference.
 class SystemLibrary {
 public:
-    /// Opens desc.soname, or $desc.overrideEnv when that is set and not empty. On failure returns
-    /// false with e.g. "--backend osmesa: cannot load libOSMesa.so.8 (<dlerror>); install
-    /// Debian's libosmesa6".
+    /// Opens desc.soname, or $desc.overrideEnv when that is set and not empty. A name holding a
+    /// '/' is a path and must be a regular file (a FIFO or a folder is refused, named, without
+    /// blocking); a plain soname goes through the system search. On failure returns false with
+    /// e.g. "--backend osmesa: cannot load libOSMesa.so.8 (<dlerror>); install Debian's
+    /// libosmesa6".
     bool open(const SystemLibraryDesc& desc, std::string* error);
 
     /// Looks up `name` into *fn (a function pointer). On failure returns false with a message

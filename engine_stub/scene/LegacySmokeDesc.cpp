@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <map>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/eventhandler.h>
@@ -53,13 +55,28 @@ private:
     int errors_ = 0;
 };
 
-int nesting(const YAML::Node& n, int depth) {
-    if (depth > kLegacyMaxNesting) return depth;
-    int deepest = depth;
-    if (n.IsSequence()) {
-        for (const YAML::Node& c : n) deepest = std::max(deepest, nesting(c, depth + 1));
-    } else if (n.IsMap()) {
-        for (const auto& kv : n) deepest = std::max(deepest, nesting(kv.second, depth + 1));
+// Collection levels of `root`, counted until they pass kLegacyMaxNesting and no further. Aliases
+// make the parsed tree a DAG that expands exponentially (nine levels of ten aliases each is 10^9
+// paths in a few hundred bytes), so the walk is iterative, depth-first (a path past the limit is
+// found after at most limit + 1 pops per level), stops at the first level past the limit, and
+// stops after kLegacyNestingVisits nodes whatever it found, as the reaction loader's
+// YamlCheck::subtreeDepth does.
+int nesting(const YAML::Node& root) {
+    std::vector<std::pair<YAML::Node, int>> stack;
+    stack.emplace_back(root, 0);
+    int deepest = 0;
+    for (int visits = 0; !stack.empty() && visits < kLegacyNestingVisits; ++visits) {
+        const YAML::Node n = stack.back().first;
+        const int depth = stack.back().second;
+        stack.pop_back();
+        if (!n.IsMap() && !n.IsSequence()) continue;
+        deepest = std::max(deepest, depth);
+        if (deepest > kLegacyMaxNesting) return deepest;
+        if (n.IsSequence()) {
+            for (const YAML::Node& c : n) stack.emplace_back(c, depth + 1);
+        } else {
+            for (const auto& kv : n) stack.emplace_back(kv.second, depth + 1);
+        }
     }
     return deepest;
 }
@@ -237,7 +254,7 @@ bool loadChecked(const std::string& text, Report& report, std::vector<LegacySmok
                    "the file holds nothing; expected a map with a 'reactions' list");
         return false;
     }
-    if (nesting(root, 0) > kLegacyMaxNesting) {
+    if (nesting(root) > kLegacyMaxNesting) {
         report.add(ErrorCode::TooDeep, root.Mark(), "",
                    "nesting deeper than " + std::to_string(kLegacyMaxNesting) + " levels");
         return false;

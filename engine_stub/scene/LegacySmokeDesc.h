@@ -38,6 +38,7 @@ struct LegacySmokeDesc {
 constexpr size_t kLegacyMaxFileBytes = 1u << 20;  ///< 1 MiB: the shipped file is 600 bytes
 constexpr int kLegacyMaxReactions = 64;
 constexpr int kLegacyMaxNesting = 8;               ///< collection levels; the schema needs 4
+constexpr int kLegacyNestingVisits = 20000;        ///< nodes the nesting check visits at most (aliases)
 
 /// Loads every reaction in `path`. On any error returns false, leaves `out` untouched and
 /// appends one diagnostic per problem to `diags` (may be null).

@@ -272,10 +272,12 @@ void cubeView::declarePluginPasses(rtt::FrameGraph& graph, const Targets& t, con
         fx::Plugin* plugin = settings.plugin;
         const fx::ViewInfo info = pluginView();
         const rtt::FrameGraphResource color = t.color;
+        fx::HostDepth depth;  // the colour target's own z-buffer, as the scene was drawn into it
+        depth.clipDepthZeroToOne = reversedZ_;
         graph.addPass(passName("fx_immediate").c_str(), order(bucketInfo(Bucket::Particles).order),
                       [&](rtt::PassBuilder& b) { b.write(color); },
-                      [plugin, info, color](rtt::PassContext& ctx) {
-                          if (ctx.bindForDraw(color)) plugin->renderView(info, fx::HostDepth{});
+                      [plugin, info, depth, color](rtt::PassContext& ctx) {
+                          if (ctx.bindForDraw(color)) plugin->renderView(info, depth);
                       });
         prepassDeclared_ = false;
         return;

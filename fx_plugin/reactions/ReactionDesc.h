@@ -134,6 +134,8 @@ struct ReactionDesc {
     MegaDesc mega;                 ///< technique mega only
     std::string sourceFile;        ///< where it was read, for messages
     int sourceLine = 0;            ///< 1-based line of the reaction's first key
+    std::string sourceKey;         ///< its key path in that file, as the author wrote it:
+                                   ///< "reactions[1]", or "reactions[0].layers[2]" for a layer
 };
 
 /// The defaults for one type; the loader starts from these and overlays the file's keys.

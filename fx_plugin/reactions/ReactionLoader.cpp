@@ -155,7 +155,9 @@ bool loadReactionSources(const std::vector<ReactionSource>& sources, ReactionSet
         }
         for (size_t i = 0; i < one.reactions.size(); ++i) {
             const ReactionDesc& d = one.reactions[i];
-            const std::string key = "reactions[" + std::to_string(i) + "]";
+            // The file's own key path (a layer's "reactions[0].layers[2]"): positions in the
+            // merged set are not the file's.
+            const std::string key = d.sourceKey.empty() ? "reactions[" + std::to_string(i) + "]" : d.sourceKey;
             for (const ReactionDesc& earlier : merged.reactions) {
                 if (earlier.name == d.name) {
                     add(diags, ErrorCode::DuplicateName, d.sourceFile, d.sourceLine, 0,

@@ -356,9 +356,14 @@ void checkStateless(YamlCheck& c, const MapReader& m, const ReactionDesc& d) {
 // one reaction per layer, named "<name>.<layer name>", each with its own type, technique and
 // blend, and a trigger read from the parent's trigger and then the layer's own: the layers fire
 // together on the same contact, and the runtime and renderer see plain reactions.
+struct ReadMarks {
+    YAML::Mark name;      ///< the reaction's (layer's) name, else its first key
+    YAML::Mark capacity;  ///< its emission.capacity, else its first key
+};
+
 void readReaction(YamlCheck& c, const Node& node, const std::string& path, bool isLayer,
-                  const Node* parentTrigger, const std::string& namePrefix, std::vector<ReactionDesc>* outs,
-                  std::vector<YAML::Mark>* nameMarks) {
+                  const Node* parentTrigger, bool reportParentTrigger, const std::string& namePrefix,
+                  std::vector<ReactionDesc>* outs, std::vector<ReadMarks>* marks) {
     if (!c.isMap(node, path)) return;
     MapReader m(c, node, path, {"name", "type", "trigger", "emission", "particle", "render",
                                 "turbulence", "vortex", "lighting", "mega", "layers"});
@@ -386,8 +391,9 @@ void readReaction(YamlCheck& c, const Node& node, const std::string& path, bool 
         if (!c.isList(*layers, m.path("layers"), 1, kMaxLayers)) return;
         size_t i = 0;
         for (auto it = layers->begin(); it != layers->end(); ++it, ++i) {
-            readReaction(c, *it, indexed(m.path("layers"), i), true, m.get("trigger"),
-                         name.empty() ? std::string() : name + ".", outs, nameMarks);
+            // The parent's trigger is one key: its problems are reported with the first layer only.
+            readReaction(c, *it, indexed(m.path("layers"), i), true, m.get("trigger"), i == 0,
+                         name.empty() ? std::string() : name + ".", outs, marks);
         }
         return;
     }
@@ -405,6 +411,7 @@ void readReaction(YamlCheck& c, const Node& node, const std::string& path, bool 
     ReactionDesc d = defaultReaction(type);
     d.sourceFile = c.file();
     d.sourceLine = node.Mark().line + 1;
+    d.sourceKey = path;
 
     YAML::Mark nameMark = node.Mark();
     if (const Node* n = m.get("name")) {
@@ -425,8 +432,16 @@ void readReaction(YamlCheck& c, const Node& node, const std::string& path, bool 
         c.report(ErrorCode::MissingKey, node.Mark(), m.path("name"),
                  "missing required key 'name' (a unique name for the reaction)");
     }
-    // The parent's trigger (reported against its own keys; a bad one is reported per layer).
-    if (parentTrigger) readTrigger(c, *parentTrigger, path.substr(0, path.rfind(".layers[")) + ".trigger", &d.trigger);
+    // The parent's trigger (reported against its own key path, once: with the first layer).
+    if (parentTrigger) {
+        const std::string key = path.substr(0, path.rfind(".layers[")) + ".trigger";
+        if (reportParentTrigger) {
+            readTrigger(c, *parentTrigger, key, &d.trigger);
+        } else {
+            YamlCheck quiet(c.file(), nullptr);  // the same values, already reported
+            readTrigger(quiet, *parentTrigger, key, &d.trigger);
+        }
+    }
     if (const Node* n = m.get("trigger")) readTrigger(c, *n, m.path("trigger"), &d.trigger);
     if (const Node* n = m.get("emission")) readEmission(c, *n, m.path("emission"), &d.emission);
     if (const Node* n = m.get("particle")) readParticle(c, *n, m.path("particle"), &d.particle);
@@ -436,8 +451,12 @@ void readReaction(YamlCheck& c, const Node& node, const std::string& path, bool 
     if (const Node* n = m.get("lighting")) readLighting(c, *n, m.path("lighting"), &d.lighting);
     if (const Node* n = m.get("mega")) readMega(c, *n, m.path("mega"), &d.mega);
     if (d.render.stateless) checkStateless(c, m, d);
+    YAML::Mark capacityMark = node.Mark();
+    if (const Node* e = m.get("emission")) {
+        if (e->IsMap() && (*e)["capacity"]) capacityMark = (*e)["capacity"].Mark();
+    }
     outs->push_back(std::move(d));
-    nameMarks->push_back(nameMark);
+    marks->push_back(ReadMarks{nameMark, capacityMark});
 }
 
 }  // namespace
@@ -459,14 +478,14 @@ void readReactionDocument(YamlCheck& c, const YAML::Node& root, std::vector<Reac
     for (auto it = list->begin(); it != list->end(); ++it, ++i) {
         const std::string path = indexed("reactions", i);
         std::vector<ReactionDesc> read;
-        std::vector<YAML::Mark> marks;
-        readReaction(c, *it, path, false, nullptr, std::string(), &read, &marks);
+        std::vector<ReadMarks> marks;
+        readReaction(c, *it, path, false, nullptr, false, std::string(), &read, &marks);
         for (size_t r = 0; r < read.size(); ++r) {
             ReactionDesc& d = read[r];
             if (d.name.empty()) continue;  // not a map, or no valid name: already reported
             for (const ReactionDesc& earlier : *out) {
                 if (earlier.name == d.name) {
-                    c.report(ErrorCode::DuplicateName, marks[r], path + ".name",
+                    c.report(ErrorCode::DuplicateName, marks[r].name, d.sourceKey + ".name",
                              "reaction name '" + d.name + "' is already used at line " +
                                  std::to_string(earlier.sourceLine));
                     break;
@@ -474,7 +493,8 @@ void readReactionDocument(YamlCheck& c, const YAML::Node& root, std::vector<Reac
             }
             totalCapacity += d.emission.capacity;
             if (totalCapacity > kMaxTotalCapacity && !capacityReported) {
-                c.report(ErrorCode::OutOfRange, it->Mark(), path + ".emission.capacity",
+                // Blamed on the reaction (the layer) whose capacity crosses the limit.
+                c.report(ErrorCode::OutOfRange, marks[r].capacity, d.sourceKey + ".emission.capacity",
                          "the reactions' capacities add up to more than " +
                              std::to_string(kMaxTotalCapacity) + " particles");
                 capacityReported = true;

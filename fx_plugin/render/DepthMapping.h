@@ -1,6 +1,6 @@
 #pragma once
 // How a host's z-buffer maps distance, and its inversion back to linear view depth (issue 30
-// item 2). Pure maths, no GL: HostDepth's linearise pass evaluates linearDepthOf() per pixel with
+// item 2). Pure maths, no GL: DepthLinearizer's linearise pass evaluates linearDepthOf() per pixel with
 // the coefficients built here, and the z-tested passes take their compare direction from
 // conventionOf().
 //

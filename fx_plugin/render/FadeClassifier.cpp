@@ -29,6 +29,19 @@ FadeClassifier::~FadeClassifier() {
 }
 
 void FadeClassifier::build(const std::string& shaderDir, std::vector<std::string>* errors) {
+    build(snapshotShaderReader(shaderReader(shaderDir)), errors);
+}
+
+void FadeClassifier::readSources(const ShaderReader& read) {
+    for (const char* file : {"vs_particles_fullscreen.glsl", "fs_particles_tile_depth.glsl", "vs_particles_count.glsl",
+                             "fs_particles_count.glsl"}) {
+        ShaderSource ignored;
+        std::string error;  // a file that cannot be read is reported by the build that needs it
+        (void)expandShaderSource(read, file, "", &ignored, &error);
+    }
+}
+
+void FadeClassifier::build(const ShaderReader& shaderDir, std::vector<std::string>* errors) {
     programs_.build(shaderDir, errors, "#define FX_CLASSIFY 1\n", kClassifiedVariants);
     hostDepth_.create();
     std::string error;

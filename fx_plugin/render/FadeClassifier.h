@@ -25,6 +25,7 @@
 
 #include "GlStateGuard.h"
 #include "ParticlePrograms.h"
+#include "ShaderLoader.h"
 #include "fx/HostAdapter.h"
 #include "fx/Plugin.h"
 
@@ -51,6 +52,12 @@ public:
     /// Builds the tile programs, the counting program and the classified soft and spherical
     /// programs; appends one "file:line: message" block per failure to *errors.
     void build(const std::string& shaderDir, std::vector<std::string>* errors);
+    /// The same from `read` (a snapshot: the files of the running particle programs).
+    void build(const ShaderReader& read, std::vector<std::string>* errors);
+    /// Reads the classifier's files (and their includes) through `read` without building
+    /// anything: a snapshot then holds them for a build later (enabling classification after a
+    /// rejected edit builds from the files that went live).
+    static void readSources(const ShaderReader& read);
     /// Everything built.
     bool ok() const;
 

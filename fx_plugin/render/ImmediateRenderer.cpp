@@ -21,6 +21,7 @@ void ImmediateRenderer::releaseGl() {
 
 ErrorCode ImmediateRenderer::refuse(ErrorCode code, const std::string& what) {
     lastError_ = what;
+    if (errors_) return errors_->refuse(code, "renderView", what);
     if (host_) {
         host_->log(LogLevel::Error,
                    (std::string("fx: error[") + errorCodeName(code) + "] immediate render: " + what).c_str());
@@ -38,7 +39,7 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
         return refuse(ErrorCode::InvalidValue, "depthSource: not a DepthSource value");
     }
     if ((source == Source::LinearR32F || source == Source::DepthTexture) && in.depthTexture == 0) {
-        return refuse(ErrorCode::InvalidValue, "depthTexture: 0 for a depth source that needs a texture");
+        return refuse(ErrorCode::NullArgument, "depthTexture: 0 for a depth source that needs a texture");
     }
     if (!validDepthMapping(in.view.proj, in.mapping)) {
         return refuse(ErrorCode::InvalidValue,
@@ -59,23 +60,25 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
     int samples = 0;
     if (source == Source::DepthTexture) {
         glActiveTexture(GL_TEXTURE0);
-        depthFormat = supportedDepthFormat(in.depthFormat ? in.depthFormat : HostDepth::textureFormat(in.depthTexture));
+        depthFormat = supportedDepthFormat(in.depthFormat ? in.depthFormat : DepthLinearizer::textureFormat(in.depthTexture));
         int tw = 0, th = 0;
-        HostDepth::textureSize(in.depthTexture, &tw, &th);
+        DepthLinearizer::textureSize(in.depthTexture, &tw, &th);
         if (depthFormat && (tw != in.view.width || th != in.view.height)) {
             return refuse(ErrorCode::SizeMismatch, "depthTexture: " + std::to_string(tw) + "x" + std::to_string(th) +
                                                        ", the view is " + std::to_string(in.view.width) + "x" +
                                                        std::to_string(in.view.height));
         }
     } else if (source == Source::BoundFramebuffer) {
-        depthFormat = HostDepth::framebufferDepthFormat(uint32_t(drawFramebuffer));
-        samples = HostDepth::framebufferSamples(uint32_t(drawFramebuffer));
+        depthFormat = DepthLinearizer::framebufferDepthFormat(uint32_t(drawFramebuffer));
+        samples = DepthLinearizer::framebufferSamples(uint32_t(drawFramebuffer));
     }
-    if ((source == Source::DepthTexture || source == Source::BoundFramebuffer) && depthFormat == 0) {
-        return refuse(ErrorCode::InvalidValue,
-                      source == Source::DepthTexture
-                          ? "depthTexture: not a GL_DEPTH_COMPONENT16/24/32F or DEPTH24_STENCIL8 texture"
-                          : "the framebuffer bound for drawing has no depth attachment");
+    if (source == Source::DepthTexture && depthFormat == 0) {
+        return refuse(ErrorCode::UnsupportedDepth,
+                      "depthTexture: not a GL_DEPTH_COMPONENT16/24/32F or DEPTH24_STENCIL8 texture");
+    }
+    if (source == Source::BoundFramebuffer && depthFormat == 0) {
+        return refuse(ErrorCode::UnsupportedDepth, "the framebuffer bound for drawing has no depth attachment "
+                                                   "(give FX_DEPTH_FROM_NOTHING, or a depth texture)");
     }
 
     ViewInfo view = in.view;

@@ -3,7 +3,7 @@
 // draws the plugin's passes into the framebuffer bound for drawing at the call; the plugin brings
 // its own frame graph (ImmediateFrame), its own render targets (ImmediateTargetPool, kept across
 // frames) and, when the host has no linear depth, its own linear depth from the host's z-buffer
-// (HostDepth). The C API (API 2.0) calls this; a C++ host may too.
+// (DepthLinearizer). The C API (API 2.0) calls this; a C++ host may too.
 //
 // The call's contract:
 //   - the host's GL context is current; GL_DRAW_FRAMEBUFFER is the framebuffer to draw into (0 =
@@ -36,8 +36,9 @@
 
 #include "fx/Plugin.h"
 #include "DepthMapping.h"
-#include "HostDepth.h"
+#include "DepthLinearizer.h"
 #include "ImmediateTargetPool.h"
+#include "../src/ApiErrors.h"
 
 namespace fx {
 
@@ -68,12 +69,16 @@ public:
 
     /// Draws `plugin`'s passes for `view` (Plugin::declarePasses with this renderer's frame graph,
     /// then the running passes in order). Refused, nothing drawn: InvalidValue (a depth source
-    /// outside the enum, no texture for LinearR32F / DepthTexture, a texture that is not a supported
-    /// depth format, a bound framebuffer without depth, an invalid mapping), InvalidView (as
-    /// declarePasses, or a viewport origin other than (0, 0)), SizeMismatch (a DepthTexture of
+    /// outside the enum, an invalid mapping), NullArgument (no texture for LinearR32F /
+    /// DepthTexture), InvalidView (as
+    /// declarePasses, or a viewport origin other than (0, 0)), UnsupportedDepth (a texture of a
+    /// format it cannot read, a bound framebuffer without a depth attachment), SizeMismatch (a DepthTexture of
     /// another size than the view), NoGlContext. Refusals are logged like the plugin's API errors. A linearise program that
     /// does not build is logged (ShaderBuild, also in lastError()); that frame draws as with no depth.
     ErrorCode render(Plugin& plugin, const ImmediateView& view);
+    /// Refusals go to `errors` under "renderView" (counted in Stats::apiErrors, repeats limited)
+    /// instead of straight to the host's log. Null: the log.
+    void setApiErrors(ApiErrors* errors) { errors_ = errors; }
     /// Frees the pooled targets and the depth copy (context current). The next render allocates again.
     void releaseGl();
 
@@ -93,8 +98,9 @@ private:
     ErrorCode refuse(ErrorCode code, const std::string& what);
 
     HostAdapter* host_;
+    ApiErrors* errors_ = nullptr;
     ImmediateTargetPool pool_;
-    HostDepth depth_;
+    DepthLinearizer depth_;
     std::vector<std::string> lastPasses_;
     std::string lastError_;
 };

@@ -1,5 +1,6 @@
 #include "InstallParticleRenderer.h"
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -18,6 +19,31 @@ bool wantsMega(const PluginImpl& plugin) {
         if (!r.stateless() && r.desc().render.technique == Technique::Mega) return true;
     }
     return false;
+}
+
+bool wantsStateless(const PluginImpl& plugin) {
+    for (const ReactionRuntime& r : plugin.runtimes()) {
+        if (r.stateless()) return true;
+    }
+    return false;
+}
+
+// The soft programs' contrast powers (2 contrast_power) the loaded reactions can draw with: a
+// soft reaction's own, and every billboard reaction's under a Soft override.
+std::vector<int> softPowerSteps(const PluginImpl& plugin) {
+    const Technique override = plugin.renderOptions().techniqueOverride;
+    std::vector<int> steps;
+    for (const ReactionRuntime& r : plugin.runtimes()) {
+        if (r.stateless()) continue;
+        const Technique t = override == Technique::FromReaction ? r.desc().render.technique : override;
+        int whole = 0, half = 0;
+        if (t != Technique::Soft || !ParticlePrograms::halfWholePower(r.desc().render.contrastPower, &whole, &half)) {
+            continue;
+        }
+        const int s = 2 * whole + half;
+        if (std::find(steps.begin(), steps.end(), s) == steps.end()) steps.push_back(s);
+    }
+    return steps;
 }
 
 }  // namespace
@@ -56,9 +82,13 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
                                                   options, owner->light());
         owner->setParticlesDrawn(drawn + megaDrawn + stateless->declarePasses(view, frame, runtimes));
     });
-    plugin.setPrepareHook([renderer, mega, owner](Diagnostics* out) {
-        const bool billboards = renderer->prepare(out);
-        return wantsMega(*owner) ? mega->prepare(out) && billboards : billboards;
+    // Every program the loaded reactions and the options can draw with is built here (a broken
+    // shader of any technique stops start-up), each technique's failures reported once.
+    plugin.setPrepareHook([renderer, mega, stateless, owner](Diagnostics* out) {
+        bool ok = renderer->prepare(out, softPowerSteps(*owner));
+        if (wantsMega(*owner)) ok = mega->prepare(out) && ok;
+        if (wantsStateless(*owner)) ok = stateless->prepare(out) && ok;
+        return ok;
     });
     plugin.setShadowHook([renderer, batches, owner](const ViewInfo& view, FrameBuilder& frame,
                                                     const std::vector<ReactionRuntime>& runtimes) {
@@ -69,7 +99,12 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
         renderer->setLight(owner->light());
         return renderer->declareShadowPasses(view, frame, batches->data(), static_cast<int>(batches->size()));
     });
-    plugin.setShaderReloadHook([renderer](Diagnostics* out) { return renderer->reloadShaders(out); });
+    // One edit, one transaction over every technique's programs, one line.
+    plugin.setShaderReloadHook([renderer, mega, stateless](Diagnostics* out) {
+        return renderer->reloadShaders(
+            out, {[mega](ShaderErrorLog* e) { return mega->rebuildShaders(e); },
+                  [stateless](ShaderErrorLog* e) { return stateless->rebuildShaders(e); }});
+    });
     plugin.setFadeCountsHook([renderer] { return renderer->fadeClassCounts(); });
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <utility>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -155,9 +156,13 @@ bool MegaRenderer::ensureLoaded() {
     programs_ = std::make_unique<Programs>();
     std::vector<std::string> errors;
     programs_->build(config_.shaderDir, &errors);
-    for (const std::string& e : errors) {
-        log(LogLevel::Error, "fx: mega-particle shader build failed:\n" + e);
-        loadDiagnostics_.push_back(Diagnostic{ErrorCode::ShaderBuild, "", 0, 0, "", e});
+    // The blur and shade programs share fs_mega_blur.glsl, and four programs share
+    // vs_particles_fullscreen.glsl: one cause is told once.
+    ShaderErrorLog unique;
+    for (const std::string& e : errors) unique.add(e);
+    if (!unique.empty()) {
+        log(LogLevel::Error, "fx: mega-particle shader build failed:\n" + unique.text());
+        addShaderDiagnostics(unique.text(), &loadDiagnostics_);
     }
     if (!programs_->ok()) return false;
     glGenFramebuffers(1, &fbo_);
@@ -167,6 +172,18 @@ bool MegaRenderer::ensureLoaded() {
     ramp_.upload();
     state_ = State::Ready;
     return true;
+}
+
+std::function<void()> MegaRenderer::rebuildShaders(ShaderErrorLog* errors) {
+    // Built whether or not mega is in use, so a broken mega file is reported at the edit and not
+    // later, when a reaction or the override first asks for mega; made live only when loaded.
+    auto next = std::make_shared<std::unique_ptr<Programs>>(std::make_unique<Programs>());
+    std::vector<std::string> failed;
+    (*next)->build(config_.shaderDir, &failed);
+    for (const std::string& e : failed) errors->add(e);
+    if (!failed.empty() || state_ != State::Ready) return {};  // deleted here, with `next`
+    // After the swap `next` holds the old programs: deleted when the caller drops the function.
+    return [this, next]() { programs_.swap(*next); };
 }
 
 bool MegaRenderer::prepare(Diagnostics* out) {

@@ -40,8 +40,8 @@
 // and the reaction's lighting is on (LightingDesc::lit); otherwise the ramp colour, unlit.
 //
 // RenderOptions::quarterRes does not apply (mega.resolution is the technique's own). Live shader
-// edits (Plugin::pollShaderReload) rebuild the billboard programs only; the mega programs are
-// built once.
+// edits (Plugin::pollShaderReload) rebuild the mega programs with the billboard ones, in one
+// transaction (rebuildShaders): a broken mega file keeps every last good program and is reported.
 //
 // The noise is animated by the first Mega batch's simulation clock (ParticleBatch::time): two
 // frames of a paused simulation from a still camera are byte-identical.
@@ -52,6 +52,7 @@
 // not drawn. No z-buffer of the host is used: every depth test compares linear depths, so the
 // technique works alike under standard and reversed-Z.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -62,6 +63,7 @@
 #include "InstanceStream.h"
 #include "LightState.h"
 #include "QuarterResPath.h"
+#include "ShaderLoader.h"
 #include "fx/Diagnostic.h"
 #include "fx/HostAdapter.h"
 #include "fx/Plugin.h"
@@ -103,6 +105,11 @@ public:
 
     /// Builds the programs now (Plugin::prepareGl); false with the problems appended to `out`.
     bool prepare(Diagnostics* out);
+    /// A shader reload's mega part (ParticleRenderer::ShaderRebuild): builds the five programs
+    /// from the folder's current files, adds failures to `errors`, and returns the swap that
+    /// makes them live (empty when any failed, or when mega is not loaded: then the build only
+    /// checked the files, so a broken mega edit is reported at once). Context current.
+    std::function<void()> rebuildShaders(ShaderErrorLog* errors);
     bool ready() const { return state_ == State::Ready; }
 
 private:

@@ -80,14 +80,21 @@ ParticlePrograms::~ParticlePrograms() {
 
 void ParticlePrograms::build(const std::string& shaderDir, std::vector<std::string>* errors,
                              const std::string& defines, uint32_t variants) {
-    shaderDir_ = shaderDir;
+    build(snapshotShaderReader(shaderReader(shaderDir)), errors, defines, variants);
+}
+
+void ParticlePrograms::build(const ShaderReader& read, std::vector<std::string>* errors, const std::string& defines,
+                             uint32_t variants) {
+    // One snapshot per program set: every later build of it (a power on first use) reads the
+    // files this build read, never a newer, maybe broken, edit.
+    if (!reader_) reader_ = read;
     defines_ = defines;
     for (int lit = 0; lit < 2; ++lit) {
         for (int v = 0; v < VariantCount; ++v) {
             if (programs_[lit][v].program || (variants & (1u << v)) == 0) continue;
             std::string error;
             const std::string all = defines + kSources[v].defines + (lit ? "#define FX_LIT 1\n" : "");
-            const GLuint program = buildProgram(shaderDir, "vs_particles.glsl", kSources[v].fragment, all, &error);
+            const GLuint program = buildProgram(reader_, "vs_particles.glsl", kSources[v].fragment, all, &error);
             if (!program) {
                 errors->push_back(error);
                 continue;
@@ -101,7 +108,11 @@ bool ParticlePrograms::buildPower(int steps, bool lit, std::string* error) {
     poweredTried_[lit ? 1 : 0][steps] = true;
     const std::string all = defines_ + kSources[Soft].defines + "#define FX_POWER_STEPS " + std::to_string(steps) +
                             "\n" + (lit ? "#define FX_LIT 1\n" : "");
-    const GLuint program = buildProgram(shaderDir_, "vs_particles.glsl", kSources[Soft].fragment, all, error);
+    if (!reader_) {
+        *error = "fs_particles_soft.glsl:0: the soft programs were never built";
+        return false;
+    }
+    const GLuint program = buildProgram(reader_, "vs_particles.glsl", kSources[Soft].fragment, all, error);
     if (!program) return false;
     powered_[lit ? 1 : 0][steps] = locate(program);
     return true;

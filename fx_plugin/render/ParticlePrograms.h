@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "fx/Plugin.h"
+#include "shader/ShaderSource.h"
 
 namespace fx {
 
@@ -47,8 +48,13 @@ public:
     ParticlePrograms& operator=(const ParticlePrograms&) = delete;
 
     /// Builds every variant in `variants` (a mask of 1 << Variant), each with `defines` added;
-    /// appends one "file:line: message" block per failed one to *errors.
+    /// appends one "file:line: message" block per failed one to *errors. The files are read once
+    /// per ParticlePrograms (the first build) and kept: a later build of this set, a contrast
+    /// power's included, uses the same text, so a rejected edit never reaches a running set.
     void build(const std::string& shaderDir, std::vector<std::string>* errors, const std::string& defines = "",
+               uint32_t variants = ~0u);
+    /// The same from `read` (kept for the later builds; a snapshot, see ShaderLoader.h).
+    void build(const ShaderReader& read, std::vector<std::string>* errors, const std::string& defines = "",
                uint32_t variants = ~0u);
     /// `lit`: the FX_LIT build of the variant (program 0 when it failed to build: draw unlit).
     const ParticleProgram& get(Variant v, bool lit = false) const { return programs_[lit ? 1 : 0][v]; }
@@ -79,7 +85,8 @@ private:
     ParticleProgram programs_[2][VariantCount];  ///< [unlit, lit]
     ParticleProgram powered_[2][kMaxPowerSteps + 1];  ///< Soft for one power: [unlit, lit][2 power]
     bool poweredTried_[2][kMaxPowerSteps + 1] = {};
-    std::string shaderDir_, defines_;         ///< build()'s, for the powers' later builds
+    ShaderReader reader_;                     ///< build()'s files (a snapshot), for the powers' later builds
+    std::string defines_;                     ///< build()'s, for the same
     std::vector<std::string> lateErrors_;     ///< get()'s failed builds, not yet taken
 };
 

@@ -11,6 +11,7 @@
 #include "render/PrivateGl.h"
 
 #include "GlStateGuard.h"
+#include "ShaderLoader.h"
 #include "src/ApiErrors.h"
 
 namespace fx {
@@ -31,31 +32,6 @@ void addPassReading(FrameBuilder& frame, const char* name, std::initializer_list
     case 2: frame.addPass(name, {r[0], r[1]}, {write}, std::move(execute)); break;
     case 3: frame.addPass(name, {r[0], r[1], r[2]}, {write}, std::move(execute)); break;
     default: frame.addPass(name, {r[0], r[1], r[2], r[3]}, {write}, std::move(execute)); break;
-    }
-}
-
-// "file:line: message" lines of a shader build error, as diagnostics.
-void addShaderDiagnostics(const std::string& text, Diagnostics* out) {
-    size_t start = 0;
-    while (start < text.size()) {
-        size_t end = text.find('\n', start);
-        if (end == std::string::npos) end = text.size();
-        const std::string line = text.substr(start, end - start);
-        start = end + 1;
-        if (line.empty()) continue;
-        Diagnostic d;
-        d.code = ErrorCode::ShaderBuild;
-        d.message = line;
-        const size_t c1 = line.find(':');
-        const size_t c2 = c1 == std::string::npos ? c1 : line.find(':', c1 + 1);
-        if (c2 != std::string::npos && c2 > c1 + 1 &&
-            line.find_first_not_of("0123456789", c1 + 1) == c2) {
-            d.file = line.substr(0, c1);
-            d.line = std::atoi(line.c_str() + c1 + 1);
-            d.message = line.substr(line.find_first_not_of(' ', c2 + 1) == std::string::npos
-                                        ? line.size() : line.find_first_not_of(' ', c2 + 1));
-        }
-        out->push_back(d);
     }
 }
 
@@ -92,16 +68,26 @@ bool ParticleRenderer::ensureLoaded() {
         return false;
     }
     std::vector<std::string> errors;
-    programs_->build(config_.shaderDir, &errors);
+    // The files of this generation of programs, kept: the classifier built later (when fade
+    // classification is turned on) and each contrast power read these, never a later edit.
+    sources_ = snapshotShaderReader(shaderReader(config_.shaderDir));
+    programs_->build(sources_, &errors);
+    FadeClassifier::readSources(sources_);
     quarter_->build(config_.shaderDir, &errors);
     opacity_->build(config_.shaderDir, &errors);
     if (!atlas_.hasNormals() && !normalsWarned_) {
         log(LogLevel::Warning, "fx: lit smoke is drawn as flat cards: " + atlas_.normalsError());
         normalsWarned_ = true;
     }
+    // One cause fails every variant built from its file (unlit, lit, each soft program): told once.
+    std::string fresh;
     for (const std::string& e : errors) {
-        log(LogLevel::Error, "fx: shader build failed:\n" + e);
-        addShaderDiagnostics(e, &loadDiagnostics_);
+        const std::string lines = loadErrors_.add(e);
+        if (!lines.empty()) fresh += (fresh.empty() ? "" : "\n") + lines;
+    }
+    if (!fresh.empty()) {
+        log(LogLevel::Error, "fx: shader build failed:\n" + fresh);
+        addShaderDiagnostics(fresh, &loadDiagnostics_);
     }
     if (programs_->usableTechniques(false) == 0) {
         log(LogLevel::Error, "fx: particle renderer disabled: no particle program built");
@@ -119,8 +105,10 @@ bool ParticleRenderer::ensureLoaded() {
 }
 
 uint64_t ParticleRenderer::shaderStamp() const {
-    // Size and modification time of every particle shader in the override folder (no file is
-    // opened: a FIFO dropped there cannot block the poll).
+    // Size and modification time of every plugin shader in the override folder: the billboard,
+    // stateless and mega programs' files and their includes ("particles" or "mega" in the name;
+    // the engine's own shaders there are not ours). No file is opened: a FIFO dropped there
+    // cannot block the poll.
     uint64_t h = 1469598103934665603ull;
     auto mix = [&](uint64_t v) {
         h ^= v;
@@ -130,18 +118,20 @@ uint64_t ParticleRenderer::shaderStamp() const {
     std::vector<std::filesystem::path> files;
     for (const auto& e : std::filesystem::directory_iterator(config_.shaderDir, ec)) {
         const std::string name = e.path().filename().string();
-        if (name.find("particles") != std::string::npos && e.path().extension() == ".glsl") files.push_back(e.path());
+        const bool ours = name.find("particles") != std::string::npos || name.find("mega") != std::string::npos;
+        if (ours && e.path().extension() == ".glsl") files.push_back(e.path());
     }
     std::sort(files.begin(), files.end());
     for (const auto& f : files) {
         for (char c : f.filename().string()) mix(uint64_t(uint8_t(c)));
         mix(uint64_t(std::filesystem::file_size(f, ec)));
         mix(uint64_t(std::filesystem::last_write_time(f, ec).time_since_epoch().count()));
+        mix(uint64_t(std::filesystem::status(f, ec).type()));  // a FIFO put in a file's place
     }
     return h;
 }
 
-bool ParticleRenderer::reloadShaders(Diagnostics* out) {
+bool ParticleRenderer::reloadShaders(Diagnostics* out, const std::vector<ShaderRebuild>& others) {
     if (config_.shaderDir.empty() || state_ != State::Ready) return false;
     const uint64_t stamp = shaderStamp();
     if (stamp == shaderStamp_) return false;
@@ -151,34 +141,38 @@ bool ParticleRenderer::reloadShaders(Diagnostics* out) {
     auto quarter = std::make_unique<QuarterResPath>();
     auto opacity = std::make_unique<SmokeOpacityMap>();
     std::vector<std::string> errors;
-    programs->build(config_.shaderDir, &errors);
+    const ShaderReader sources = snapshotShaderReader(shaderReader(config_.shaderDir));
+    programs->build(sources, &errors);
     programs->buildPowers(programs_->builtPowers(), &errors);  // the contrast powers drawn so far
     quarter->build(config_.shaderDir, &errors);
     opacity->build(config_.shaderDir, &errors);
-    std::unique_ptr<FadeClassifier> classifier;
-    if (classifier_) {
-        classifier = std::make_unique<FadeClassifier>();
-        classifier->build(config_.shaderDir, &errors);
-        classifier->programs().buildPowers(classifier_->programs().builtPowers(), &errors);
+    // The classifier's programs are built even when classification is off, to check its files:
+    // an edit that breaks them is refused now, not when classification is turned on.
+    auto classifier = std::make_unique<FadeClassifier>();
+    classifier->build(sources, &errors);
+    if (classifier_) classifier->programs().buildPowers(classifier_->programs().builtPowers(), &errors);
+    ShaderErrorLog unique;
+    for (const std::string& e : errors) unique.add(e);
+    // The other techniques' programs (mega, stateless) in the same transaction: all go live or
+    // none, and one edit gives one line, whichever technique's file it broke.
+    std::vector<std::function<void()>> commits;
+    for (const ShaderRebuild& other : others) {
+        if (std::function<void()> commit = other(&unique)) commits.push_back(std::move(commit));
     }
-    if (!errors.empty()) {
-        // The new programs are dropped (their destructors delete what did build); the running
-        // ones stay, so the smoke on screen does not change.
-        std::string text = "fx: particle shaders in " + config_.shaderDir +
-                           " changed but do not build; the last good programs are kept:";
-        Diagnostics diags;
-        for (const std::string& e : errors) {
-            text += "\n" + e;
-            addShaderDiagnostics(e, &diags);
-        }
-        log(LogLevel::Error, text);
-        if (out) out->insert(out->end(), diags.begin(), diags.end());
+    if (!unique.empty()) {
+        // The new programs are dropped (their destructors delete what did build; each other
+        // renderer dropped its own); the running ones stay, so the smoke on screen does not change.
+        log(LogLevel::Error, "fx: particle shaders in " + config_.shaderDir +
+                                 " changed but do not build; the last good programs are kept:\n" + unique.text());
+        if (out) addShaderDiagnostics(unique.text(), out);
         return false;
     }
     programs_ = std::move(programs);
     quarter_ = std::move(quarter);
     opacity_ = std::move(opacity);
-    if (classifier) classifier_ = std::move(classifier);
+    if (classifier_) classifier_ = std::move(classifier);
+    sources_ = sources;
+    for (const std::function<void()>& commit : commits) commit();
     classifierFailed_ = false;  // a classifier that failed to build gets another try with the new files
     log(LogLevel::Info, "fx: particle shaders reloaded from " + config_.shaderDir);
     return true;
@@ -190,7 +184,7 @@ bool ParticleRenderer::ensureClassifier() {
     GlStateGuard guard;
     auto classifier = std::make_unique<FadeClassifier>();
     std::vector<std::string> errors;
-    classifier->build(config_.shaderDir, &errors);
+    classifier->build(sources_, &errors);  // the files of the running programs
     if (!errors.empty() || !classifier->ok()) {
         std::string text = "fx: fade classification is off: its programs did not build";
         for (const std::string& e : errors) text += "\n" + e;
@@ -202,8 +196,25 @@ bool ParticleRenderer::ensureClassifier() {
     return true;
 }
 
-bool ParticleRenderer::prepare(Diagnostics* out) {
+bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps) {
     const bool ready = ensureLoaded();
+    if (ready && !powerSteps.empty()) {
+        // The soft programs of the contrast powers the loaded reactions draw with, now rather
+        // than at their first visible particle (each power is tried once: reported once).
+        GlStateGuard guard;
+        std::vector<std::string> errors;
+        programs_->buildPowers(powerSteps, &errors);
+        // A power's build fails for the cause that failed the soft programs above: not told twice.
+        std::string fresh;
+        for (const std::string& e : errors) {
+            const std::string lines = loadErrors_.add(e);
+            if (!lines.empty()) fresh += (fresh.empty() ? "" : "\n") + lines;
+        }
+        if (!fresh.empty()) {
+            log(LogLevel::Error, "fx: shader build failed:\n" + fresh);
+            addShaderDiagnostics(fresh, &loadDiagnostics_);
+        }
+    }
     if (out) out->insert(out->end(), loadDiagnostics_.begin(), loadDiagnostics_.end());
     return ready && loadDiagnostics_.empty();
 }

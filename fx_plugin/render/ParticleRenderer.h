@@ -30,6 +30,7 @@
 // GEQUAL when ViewInfo::depth is ReversedZ), the legacy look. Soft and spherical particles do not: they compare linear depths in the shader,
 // which stays exact at near 0.01 / far 100 km where a 24-bit z-buffer cannot resolve 100 m at
 // 10 km, and a spherical particle's front may be visible where its quad is behind geometry.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,6 +44,7 @@
 #include "LightState.h"
 #include "QuarterResPath.h"
 #include "SmokeAtlas.h"
+#include "ShaderLoader.h"
 #include "SmokeOpacityMap.h"
 #include "fx/Diagnostic.h"
 #include "fx/HostAdapter.h"
@@ -76,15 +78,24 @@ public:
     int declarePasses(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
                       int batchCount, const RenderOptions& options);
 
-    /// Loads GL resources now (Plugin::prepareGl). True when everything built; otherwise false
-    /// with every problem appended to `out` (the technique that did build still draws).
-    bool prepare(Diagnostics* out);
+    /// Loads GL resources now (Plugin::prepareGl), and the soft programs of the contrast powers
+    /// in `powerSteps` (2 contrast_power each: those the loaded reactions draw with). True when
+    /// everything built; otherwise false with every problem appended to `out` (the technique
+    /// that did build still draws). Each distinct "file:line: message" is logged once.
+    bool prepare(Diagnostics* out, const std::vector<int>& powerSteps = {});
 
-    /// With Config::shaderDir set and the renderer loaded: when a particle shader file there
-    /// changed since the running programs were built, builds new programs; all build -> they go
-    /// live (true); any fails -> the running programs stay, the failure is logged once for this
-    /// edit and appended to `out`, false. Needs the host's context current.
-    bool reloadShaders(Diagnostics* out);
+    /// Another renderer's part of a shader reload: builds its programs from the folder's current
+    /// files, adds every failure to the log, and returns what makes them live (empty: nothing to
+    /// swap). Its new programs are dropped when the returned function is dropped uncalled.
+    using ShaderRebuild = std::function<std::function<void()>(ShaderErrorLog*)>;
+
+    /// With Config::shaderDir set and the renderer loaded: when a plugin shader file there
+    /// ("particles" or "mega" in its name) changed since the running programs were built, builds
+    /// new programs, this renderer's and each of `others`'; all build -> they all go live
+    /// (true); any fails -> every running program stays, the failure is logged once for this
+    /// edit (each distinct line once) and appended to `out`, false. Needs the host's context
+    /// current.
+    bool reloadShaders(Diagnostics* out, const std::vector<ShaderRebuild>& others = {});
 
     /// The scene light (Plugin::setSceneLight) from the next declarePasses on.
     void setLight(const LightState& light) { light_ = light; }
@@ -166,6 +177,8 @@ private:
     std::vector<glm::vec4> discInfo_;    ///< and their (inradius, area share)
     bool quarterFallbackLogged_ = false;
     Diagnostics loadDiagnostics_;  ///< what went wrong while loading (prepare() hands them out)
+    ShaderErrorLog loadErrors_;    ///< the build lines already logged while loading (each once)
+    ShaderReader sources_;         ///< the running programs' files (a snapshot), for later builds
     SmokeAtlas atlas_;
     ColorRampTexture ramp_;
     InstanceStream stream_;

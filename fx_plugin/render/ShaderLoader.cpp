@@ -1,5 +1,10 @@
 #include "ShaderLoader.h"
 
+#include <algorithm>
+#include <cstdlib>
+#include <map>
+#include <memory>
+
 #include "render/EmbeddedResources.h"
 #include "render/PrivateGl.h"
 
@@ -21,10 +26,10 @@ ShaderReader shaderReader(const std::string& dir) {
 
 namespace {
 
-GLuint compileStage(GLenum stage, const std::string& dir, const std::string& file,
+GLuint compileStage(GLenum stage, const ShaderReader& read, const std::string& file,
                     const std::string& defines, std::string* error) {
     ShaderSource src;
-    if (!loadShaderSource(dir, file, defines, &src, error)) return 0;
+    if (expandShaderSource(read, file, defines, &src, error) != ShaderError::None) return 0;
     const GLuint shader = glCreateShader(stage);
     const char* text = src.text.c_str();
     glShaderSource(shader, 1, &text, nullptr);
@@ -52,12 +57,76 @@ bool loadShaderSource(const std::string& dir, const std::string& name, const std
     return expandShaderSource(shaderReader(dir), name, defines, out, error) == ShaderError::None;
 }
 
+ShaderReader snapshotShaderReader(ShaderReader read) {
+    auto files = std::make_shared<std::map<std::string, std::string>>();
+    return [read = std::move(read), files](const std::string& name, std::string* text, std::string* why) {
+        const auto it = files->find(name);
+        if (it != files->end()) {
+            *text = it->second;
+            return true;
+        }
+        if (!read(name, text, why)) return false;  // not kept: a missing file is asked for again
+        (*files)[name] = *text;
+        return true;
+    };
+}
+
+void addShaderDiagnostics(const std::string& text, Diagnostics* out) {
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        const std::string line = text.substr(start, end - start);
+        start = end + 1;
+        if (line.empty()) continue;
+        Diagnostic d;
+        d.code = ErrorCode::ShaderBuild;
+        d.message = line;
+        const size_t c1 = line.find(':');
+        const size_t c2 = c1 == std::string::npos ? c1 : line.find(':', c1 + 1);
+        if (c2 != std::string::npos && c2 > c1 + 1 && line.find_first_not_of("0123456789", c1 + 1) == c2) {
+            d.file = line.substr(0, c1);
+            d.line = std::atoi(line.c_str() + c1 + 1);
+            const size_t text0 = line.find_first_not_of(' ', c2 + 1);
+            d.message = line.substr(text0 == std::string::npos ? line.size() : text0);
+        }
+        out->push_back(d);
+    }
+}
+
+std::string ShaderErrorLog::add(const std::string& error) {
+    std::string fresh;
+    size_t start = 0;
+    while (start < error.size()) {
+        size_t end = error.find('\n', start);
+        if (end == std::string::npos) end = error.size();
+        std::string line = error.substr(start, end - start);
+        start = end + 1;
+        if (line.empty() || std::find(lines_.begin(), lines_.end(), line) != lines_.end()) continue;
+        fresh += (fresh.empty() ? "" : "\n") + line;
+        lines_.push_back(std::move(line));
+    }
+    return fresh;
+}
+
+std::string ShaderErrorLog::text() const {
+    std::string all;
+    for (const std::string& l : lines_) all += (all.empty() ? "" : "\n") + l;
+    return all;
+}
+
 uint32_t buildProgram(const std::string& dir, const std::string& vertexFile,
                       const std::string& fragmentFile, const std::string& defines,
                       std::string* error) {
-    const GLuint vs = compileStage(GL_VERTEX_SHADER, dir, vertexFile, defines, error);
+    return buildProgram(shaderReader(dir), vertexFile, fragmentFile, defines, error);
+}
+
+uint32_t buildProgram(const ShaderReader& read, const std::string& vertexFile,
+                      const std::string& fragmentFile, const std::string& defines,
+                      std::string* error) {
+    const GLuint vs = compileStage(GL_VERTEX_SHADER, read, vertexFile, defines, error);
     if (!vs) return 0;
-    const GLuint fs = compileStage(GL_FRAGMENT_SHADER, dir, fragmentFile, defines, error);
+    const GLuint fs = compileStage(GL_FRAGMENT_SHADER, read, fragmentFile, defines, error);
     if (!fs) {
         glDeleteShader(vs);
         return 0;

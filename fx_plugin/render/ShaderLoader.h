@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "fx/Diagnostic.h"
 #include "shader/ShaderSource.h"
 
 namespace fx {
@@ -26,5 +27,35 @@ bool loadShaderSource(const std::string& dir, const std::string& name, const std
 uint32_t buildProgram(const std::string& dir, const std::string& vertexFile,
                       const std::string& fragmentFile, const std::string& defines,
                       std::string* error);
+/// The same through any reader (a snapshot, below).
+uint32_t buildProgram(const ShaderReader& read, const std::string& vertexFile,
+                      const std::string& fragmentFile, const std::string& defines,
+                      std::string* error);
+
+/// A reader that keeps the text of every file it gave out and gives the same text again on each
+/// later read of that name, whatever the file holds by then. A program set built through one
+/// snapshot, and any variant of it built later (a contrast power on first use), is built from
+/// one version of each file: the version that built and went live, never a later broken edit.
+ShaderReader snapshotShaderReader(ShaderReader read);
+
+/// "file:line: message" lines of a build error as ShaderBuild diagnostics (file and line
+/// split out where the line has them).
+void addShaderDiagnostics(const std::string& text, Diagnostics* out);
+
+/// The build errors of one load or reload, each distinct line once: one cause (a syntax error
+/// in fs_particles_soft.glsl) fails every variant built from the file (unlit, lit, general
+/// power, ...) with the same "file:line: message", and the user is told it once.
+class ShaderErrorLog {
+public:
+    /// Adds the lines of one build's error not seen before (in order) and returns those lines
+    /// ("" when every one was already there).
+    std::string add(const std::string& error);
+    bool empty() const { return lines_.empty(); }
+    /// Every distinct line, joined by newlines.
+    std::string text() const;
+
+private:
+    std::vector<std::string> lines_;
+};
 
 }  // namespace fx

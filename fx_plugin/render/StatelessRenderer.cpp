@@ -92,22 +92,68 @@ bool StatelessRenderer::ensureProgram() {
     if (g.program) return true;
     if (g.failed) return false;
     std::string error;
-    g.program = buildProgram(shaderDir_, "vs_stateless_particles.glsl", "fs_stateless_particles.glsl", "", &error);
-    if (!g.program) {
+    const GLuint program =
+        buildProgram(shaderDir_, "vs_stateless_particles.glsl", "fs_stateless_particles.glsl", "", &error);
+    if (!program) {
         g.failed = true;  // reported once; the other techniques keep drawing
-        host_->log(LogLevel::Error, ("fx: error[ShaderBuild] stateless particles: " + error).c_str());
+        error_ = error;
+        host_->log(LogLevel::Error, ("fx: error[ShaderBuild] stateless particles:\n" + error).c_str());
         return false;
     }
+    adopt(program);
+    return true;
+}
+
+void StatelessRenderer::adopt(uint32_t program) {
+    Gpu& g = *gpu_;
+    if (g.program) glDeleteProgram(g.program);
+    g.program = program;
+    g.failed = false;
+    error_.clear();
     auto loc = [&](const char* name) { return glGetUniformLocation(g.program, name); };
     g.u = {loc("uView"), loc("uProj"), loc("uTime"), loc("uTerminal"), loc("uGravity"), loc("uDrag"),
            loc("uFadeIn"), loc("uFadeOut"), loc("uRampCount"), loc("uRampT"), loc("uRampC"),
            loc("uAlphaCount"), loc("uAlphaT"), loc("uAlphaV"), loc("uSizeCount"), loc("uSizeT"),
            loc("uSizeV")};
+    if (g.corners) return;
     static const float kCorners[8] = {-1.0f, -1.0f, 1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 1.0f};
     glGenBuffers(1, &g.corners);
     glBindBuffer(GL_ARRAY_BUFFER, g.corners);
     glBufferData(GL_ARRAY_BUFFER, sizeof kCorners, kCorners, GL_STATIC_DRAW);
-    return true;
+}
+
+bool StatelessRenderer::prepare(Diagnostics* out) {
+    GlStateGuard guard;
+    const bool ok = ensureProgram();
+    if (!ok && out) addShaderDiagnostics(error_, out);
+    return ok;
+}
+
+std::function<void()> StatelessRenderer::rebuildShaders(ShaderErrorLog* errors) {
+    std::string error;
+    const GLuint program =
+        buildProgram(shaderDir_, "vs_stateless_particles.glsl", "fs_stateless_particles.glsl", "", &error);
+    if (!program) {
+        errors->add(error);
+        return {};
+    }
+    if (!gpu_) {  // not in use: the build only checked the files
+        glDeleteProgram(program);
+        return {};
+    }
+    // Made live only with every other program of the edit; deleted if that never happens.
+    struct Owned {
+        GLuint program = 0;
+        ~Owned() {
+            if (program) glDeleteProgram(program);
+        }
+    };
+    auto owned = std::make_shared<Owned>();  // never copied: one owner deletes it
+    owned->program = program;
+    return [this, owned]() {
+        adopt(owned->program);
+        owned->program = 0;
+    };
 }
 
 void StatelessRenderer::draw(const ViewInfo& view, const std::vector<Draw>& draws) {

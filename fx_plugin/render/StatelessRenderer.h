@@ -7,13 +7,18 @@
 // stateless reaction may have a live particle (ring liveUntil() > clock: O(1) per reaction); it
 // writes the view's colour with the hard technique's depth test (Standard: LEQUAL, ReversedZ:
 // GEQUAL, no depth writes) and additive blending (order-independent: never sorted). Every GL
-// call runs inside a GlStateGuard. A program that fails to build is reported once through the
-// host's log and the pass draws nothing; the other techniques are unaffected.
+// call runs inside a GlStateGuard. The program is built by prepare() (Plugin::prepareGl, when a
+// stateless reaction is loaded) or at the first draw; one that fails to build is reported once
+// through the host's log and the pass draws nothing; the other techniques are unaffected. Live
+// shader edits rebuild it with the other particle programs (rebuildShaders).
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "ShaderLoader.h"
+#include "fx/Diagnostic.h"
 #include "fx/HostAdapter.h"
 #include "fx/Plugin.h"
 
@@ -33,6 +38,16 @@ public:
     int declarePasses(const ViewInfo& view, FrameBuilder& frame,
                       const std::vector<ReactionRuntime>& runtimes);
 
+    /// Builds the program now (Plugin::prepareGl with a stateless reaction loaded); false with
+    /// the build's "file:line: message" lines appended to `out` (logged once, as at a draw).
+    /// Context current.
+    bool prepare(Diagnostics* out);
+    /// A shader reload's stateless part (ParticleRenderer::ShaderRebuild): builds the program
+    /// from the folder's current files, adds a failure to `errors`, and returns what makes it
+    /// live (empty when it failed, or when nothing stateless was ever drawn or prepared: then
+    /// the build only checked the files). Context current.
+    std::function<void()> rebuildShaders(ShaderErrorLog* errors);
+
     static constexpr const char* kPass = "particles_stateless";
 
 private:
@@ -40,9 +55,12 @@ private:
     struct Draw;
     void draw(const ViewInfo& view, const std::vector<Draw>& draws);
     bool ensureProgram();
+    /// Makes `program` the one drawn with (deleting the previous one), with its uniforms.
+    void adopt(uint32_t program);
 
     HostAdapter* host_;
     std::string shaderDir_;
+    std::string error_;  ///< the failed build's message (prepare() hands it out)
     std::unique_ptr<Gpu> gpu_;
 };
 

@@ -91,6 +91,14 @@ struct Expander {
             }
             *out += line;
             *out += '\n';
+            // An #include inside a group the preprocessor skips (#ifdef FX_MEGA_SHADE with the
+            // define off) is expanded all the same, and the #line that follows it is skipped with
+            // the group: the lines after it would be counted on from the included file's length.
+            // A marker after each group boundary puts the count right again wherever it resumes.
+            if (startsWithDirective(line, "#else", &at) || startsWithDirective(line, "#elif", &at) ||
+                startsWithDirective(line, "#endif", &at)) {
+                *out += lineDirective(lineNo + 1, index);
+            }
         }
         return true;
     }

@@ -11,6 +11,7 @@
 #include "fx/fx.h"
 #include "CApiBridge.h"
 #include "PluginImpl.h"
+#include "../render/ImmediateRenderer.h"
 #include "../render/InstallParticleRenderer.h"
 
 extern "C" uint32_t fxApiVersion(void) { return FX_API_VERSION; }
@@ -18,6 +19,9 @@ extern "C" uint32_t fxApiVersion(void) { return FX_API_VERSION; }
 struct fxPlugin {
     fx::CHostAdapter host;
     std::unique_ptr<fx::PluginImpl> impl;
+    // The immediate path's frame graph, target pool and depth copy (fxApi::renderView); made on
+    // first use, freed (with the context current) when the plugin is destroyed.
+    std::unique_ptr<fx::ImmediateRenderer> immediate;
     // The schema as C structs; its strings point into `schema`, both live as long as the plugin.
     std::vector<fx::ReactionKeyInfo> schema;
     std::vector<std::vector<const char*>> schemaChoices;
@@ -357,8 +361,27 @@ int renderView(fxPlugin* p, const fxViewDesc* v) {
     ViewInfo view;
     const ErrorCode bad = viewFrom(p, v, "renderView", &view);
     if (bad != ErrorCode::None) return code(bad);
-    // Wired to the immediate renderer in the next commit.
-    return code(refuse(p, ErrorCode::UnsupportedDepth, "renderView", "the immediate path is not built yet"));
+    ImmediateView iv;
+    iv.view = view;
+    switch (v->depthSource) {
+    case FX_DEPTH_FROM_FRAMEBUFFER: iv.depthSource = ImmediateView::DepthSource::BoundFramebuffer; break;
+    case FX_DEPTH_FROM_TEXTURE: iv.depthSource = ImmediateView::DepthSource::DepthTexture; break;
+    case FX_DEPTH_FROM_LINEAR: iv.depthSource = ImmediateView::DepthSource::LinearR32F; break;
+    case FX_DEPTH_FROM_NOTHING: iv.depthSource = ImmediateView::DepthSource::None; break;
+    default:
+        return code(refuse(p, ErrorCode::InvalidValue, "renderView",
+                           "depthSource " + std::to_string(v->depthSource) + "; expected an FX_DEPTH_FROM_* value"));
+    }
+    iv.depthTexture = v->depthTexture;
+    iv.mapping.clipZeroToOne = v->clipDepthZeroToOne != 0;
+    const bool defaultRange = v->depthRangeNear == 0.0f && v->depthRangeFar == 0.0f;
+    iv.mapping.rangeNear = defaultRange ? 0.0f : v->depthRangeNear;
+    iv.mapping.rangeFar = defaultRange ? 1.0f : v->depthRangeFar;
+    if (!p->immediate) {
+        p->immediate = std::make_unique<ImmediateRenderer>(&p->host, p->impl->shaderDir());
+        p->immediate->setApiErrors(&p->impl->apiErrors());
+    }
+    return code(p->immediate->render(*p->impl, iv));
 }
 
 void stats(const fxPlugin* p, fxStats* out) {

@@ -1,4 +1,4 @@
-// Issue 30 item 2: the host's own z-buffer as the plugin's linear depth (fx_plugin/render/HostDepth.h,
+// Issue 30 item 2: the host's own z-buffer as the plugin's linear depth (fx_plugin/render/DepthLinearizer.h,
 // DepthMapping.h). Per convention (GL and D3D-style projections, ZERO_TO_ONE, reversed-Z, infinite
 // far plane, orthographic, non-default depth ranges) planes at known distances are drawn into a
 // depth texture of each format (16, 24, 32F, 24_8) and into the default framebuffer; the
@@ -24,7 +24,7 @@
 #include "FxTestHost.h"
 #include "../../fx_plugin/render/DepthMapping.h"
 #include "../../fx_plugin/render/GlStateGuard.h"
-#include "../../fx_plugin/render/HostDepth.h"
+#include "../../fx_plugin/render/DepthLinearizer.h"
 
 namespace fxtest {
 namespace host_depth {  // named: the fx_host tests build as unity batches
@@ -277,7 +277,7 @@ protected:
         return m;
     }
 
-    fx::HostDepth depth;
+    fx::DepthLinearizer depth;
     GLuint linearTex = 0, linearFbo = 0;
 };
 
@@ -326,7 +326,7 @@ TEST_F(HostDepthTest, DepthTexturesOfEveryFormatLinearisePerConvention) {
         ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE)) << f.name;
         {
             fx::GlStateGuard guard;
-            EXPECT_EQ(fx::HostDepth::textureFormat(tex), f.internal) << f.name;
+            EXPECT_EQ(fx::DepthLinearizer::textureFormat(tex), f.internal) << f.name;
             EXPECT_EQ(fx::supportedDepthFormat(f.internal), f.internal);
         }
         for (const Convention& c : conventions()) {
@@ -340,7 +340,7 @@ TEST_F(HostDepthTest, DepthTexturesOfEveryFormatLinearisePerConvention) {
             // (c): the same z-buffer as "the framebuffer bound for drawing": copied, then linearised.
             {
                 fx::GlStateGuard guard;
-                const uint32_t format = fx::HostDepth::framebufferDepthFormat(fbo);
+                const uint32_t format = fx::DepthLinearizer::framebufferDepthFormat(fbo);
                 EXPECT_NE(format, 0u) << f.name;
                 const uint32_t copy = depth.copyFramebufferDepth(fbo, 0, 0, kW, kH, format);
                 depth.linearize(copy, c.proj, c.mapping, kFar, linearFbo, kW, kH);
@@ -359,8 +359,8 @@ TEST_F(HostDepthTest, DefaultFramebufferDepthIsCopiedAndLinearised) {
     ASSERT_TRUE(resizeDefaultFramebuffer(kW, kH));
     {
         fx::GlStateGuard guard;
-        EXPECT_EQ(fx::HostDepth::framebufferDepthFormat(0), uint32_t(GL_DEPTH24_STENCIL8));  // OSMesa: 24 + 8
-        EXPECT_EQ(fx::HostDepth::framebufferSamples(0), 0);
+        EXPECT_EQ(fx::DepthLinearizer::framebufferDepthFormat(0), uint32_t(GL_DEPTH24_STENCIL8));  // OSMesa: 24 + 8
+        EXPECT_EQ(fx::DepthLinearizer::framebufferSamples(0), 0);
     }
     for (const Convention& c : conventions()) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -403,8 +403,8 @@ TEST_F(HostDepthTest, MultisampledFramebufferDepthIsResolvedAndLinearised) {
         int samples = 0;
         {
             fx::GlStateGuard guard;
-            format = fx::HostDepth::framebufferDepthFormat(fbo);
-            samples = fx::HostDepth::framebufferSamples(fbo);
+            format = fx::DepthLinearizer::framebufferDepthFormat(fbo);
+            samples = fx::DepthLinearizer::framebufferSamples(fbo);
         }
         EXPECT_EQ(format, uint32_t(ms.depth)) << ms.name;
         EXPECT_EQ(samples, 4) << ms.name;

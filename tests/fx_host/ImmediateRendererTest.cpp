@@ -357,14 +357,14 @@ TEST_F(ImmediateRendererTest, RefusesWhatItCannotDraw) {
     setMode(kModes[1]);
     glBindFramebuffer(GL_FRAMEBUFFER, graph.colorFramebuffer());
     glViewport(0, 0, kW, kH);
-    EXPECT_EQ(immediate->render(*plugin, immediateView(Source::LinearR32F, 0)), fx::ErrorCode::InvalidValue);
-    EXPECT_EQ(immediate->render(*plugin, immediateView(Source::DepthTexture, 0)), fx::ErrorCode::InvalidValue);
+    EXPECT_EQ(immediate->render(*plugin, immediateView(Source::LinearR32F, 0)), fx::ErrorCode::NullArgument);
+    EXPECT_EQ(immediate->render(*plugin, immediateView(Source::DepthTexture, 0)), fx::ErrorCode::NullArgument);
     HostTarget colourOnly(kW, kH, 0);
     EXPECT_EQ(immediate->render(*plugin, immediateView(Source::DepthTexture, colourOnly.colour)),
-              fx::ErrorCode::InvalidValue)
+              fx::ErrorCode::UnsupportedDepth)
         << "an RGBA8 texture is not a depth texture";
     glBindFramebuffer(GL_FRAMEBUFFER, colourOnly.fbo);
-    EXPECT_EQ(immediate->render(*plugin, immediateView(Source::BoundFramebuffer)), fx::ErrorCode::InvalidValue)
+    EXPECT_EQ(immediate->render(*plugin, immediateView(Source::BoundFramebuffer)), fx::ErrorCode::UnsupportedDepth)
         << "no depth attachment";
     glBindFramebuffer(GL_FRAMEBUFFER, graph.colorFramebuffer());
     fx::ImmediateView bad = immediateView(Source::BoundFramebuffer);
@@ -487,7 +487,7 @@ TEST_F(FxHostTest, DISABLED_ImmediateDepthSourceTiming) {
             (variant == 0 ? pluginLinear : pluginTexture).push_back(t2 - t1);
         }
     }
-    // The linearise pass alone (HostDepth, full view, into an R32F target), for the breakdown.
+    // The linearise pass alone (DepthLinearizer, full view, into an R32F target), for the breakdown.
     std::vector<double> passAlone;
     {
         HostTarget linear(W, H, 0);
@@ -497,7 +497,7 @@ TEST_F(FxHostTest, DISABLED_ImmediateDepthSourceTiming) {
         glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, W, H, 0, GL_RED, GL_FLOAT, nullptr);
         glBindFramebuffer(GL_FRAMEBUFFER, linear.fbo);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, r32f, 0);
-        fx::HostDepth depth;
+        fx::DepthLinearizer depth;
         std::string error;
         ASSERT_TRUE(depth.prepare(&error)) << error;
         for (int round = 0; round < kRounds; ++round) {

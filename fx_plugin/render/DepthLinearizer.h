@@ -2,7 +2,7 @@
 // The host's own z-buffer as the plugin's linear scene depth (issue 30 item 2). A host that has no
 // linear R32F depth gives either a depth texture (GL_DEPTH_COMPONENT16/24/32F or
 // GL_DEPTH24_STENCIL8, GL_TEXTURE_2D, drawn with the view's projection) or nothing but the
-// framebuffer bound for drawing; HostDepth copies the latter's depth attachment into a depth
+// framebuffer bound for drawing; DepthLinearizer copies the latter's depth attachment into a depth
 // texture of its own (glCopyTexSubImage2D from the read framebuffer: works on the default
 // framebuffer and on an FBO; a multisampled one is resolved with a depth blit), then one
 // full-screen pass (vs_particles_fullscreen + fs_particles_linearize_depth) writes the linear
@@ -20,15 +20,15 @@
 
 namespace fx {
 
-/// Depth internal formats HostDepth reads (0 for anything else).
+/// Depth internal formats DepthLinearizer reads (0 for anything else).
 uint32_t supportedDepthFormat(uint32_t internalFormat);
 
-class HostDepth {
+class DepthLinearizer {
 public:
-    explicit HostDepth(std::string shaderDir = std::string()) : shaderDir_(std::move(shaderDir)) {}
-    ~HostDepth();  ///< frees its GL objects: the context must be current if any exist
-    HostDepth(const HostDepth&) = delete;
-    HostDepth& operator=(const HostDepth&) = delete;
+    explicit DepthLinearizer(std::string shaderDir = std::string()) : shaderDir_(std::move(shaderDir)) {}
+    ~DepthLinearizer();  ///< frees its GL objects: the context must be current if any exist
+    DepthLinearizer(const DepthLinearizer&) = delete;
+    DepthLinearizer& operator=(const DepthLinearizer&) = delete;
 
     /// Builds the linearise program (once). False with "file:line: message" in *error.
     bool prepare(std::string* error);

@@ -1,6 +1,6 @@
 // The host's z-buffer into linear depth: copy (when only a bound framebuffer is given) and the
 // linearise pass.
-#include "HostDepth.h"
+#include "DepthLinearizer.h"
 
 #include "PrivateGl.h"
 #include "ShaderLoader.h"
@@ -20,9 +20,9 @@ uint32_t supportedDepthFormat(uint32_t f) {
     }
 }
 
-HostDepth::~HostDepth() { releaseGl(); }
+DepthLinearizer::~DepthLinearizer() { releaseGl(); }
 
-void HostDepth::releaseGl() {
+void DepthLinearizer::releaseGl() {
     if (program_) glDeleteProgram(program_);
     if (vao_) glDeleteVertexArrays(1, &vao_);
     if (sampler_) glDeleteSamplers(1, &sampler_);
@@ -33,7 +33,7 @@ void HostDepth::releaseGl() {
     copyFormat_ = 0;
 }
 
-bool HostDepth::prepare(std::string* error) {
+bool DepthLinearizer::prepare(std::string* error) {
     if (program_) return true;
     program_ = buildProgram(shaderDir_, "vs_particles_fullscreen.glsl", "fs_particles_linearize_depth.glsl", "",
                             error);
@@ -56,7 +56,7 @@ bool HostDepth::prepare(std::string* error) {
     return true;
 }
 
-uint32_t HostDepth::framebufferDepthFormat(uint32_t framebuffer) {
+uint32_t DepthLinearizer::framebufferDepthFormat(uint32_t framebuffer) {
     GLint previous = 0;
     glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previous);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
@@ -85,7 +85,7 @@ uint32_t HostDepth::framebufferDepthFormat(uint32_t framebuffer) {
     return GL_DEPTH_COMPONENT32;
 }
 
-int HostDepth::framebufferSamples(uint32_t framebuffer) {
+int DepthLinearizer::framebufferSamples(uint32_t framebuffer) {
     GLint previous = 0, samples = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
@@ -94,20 +94,20 @@ int HostDepth::framebufferSamples(uint32_t framebuffer) {
     return samples;
 }
 
-uint32_t HostDepth::textureFormat(uint32_t texture) {
+uint32_t DepthLinearizer::textureFormat(uint32_t texture) {
     glBindTexture(GL_TEXTURE_2D, texture);
     GLint format = 0;
     glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
     return uint32_t(format);
 }
 
-void HostDepth::textureSize(uint32_t texture, int* width, int* height) {
+void DepthLinearizer::textureSize(uint32_t texture, int* width, int* height) {
     glBindTexture(GL_TEXTURE_2D, texture);
     glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, width);
     glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, height);
 }
 
-uint32_t HostDepth::copyFramebufferDepth(uint32_t framebuffer, int x, int y, int width, int height,
+uint32_t DepthLinearizer::copyFramebufferDepth(uint32_t framebuffer, int x, int y, int width, int height,
                                          uint32_t format, int samples) {
     glActiveTexture(GL_TEXTURE0);
     if (!copy_ || copyWidth_ != width || copyHeight_ != height || copyFormat_ != format) {
@@ -151,7 +151,7 @@ uint32_t HostDepth::copyFramebufferDepth(uint32_t framebuffer, int x, int y, int
     return copy_;
 }
 
-void HostDepth::linearize(uint32_t depthTexture, const glm::mat4& proj, const DepthMapping& mapping,
+void DepthLinearizer::linearize(uint32_t depthTexture, const glm::mat4& proj, const DepthMapping& mapping,
                           float background, uint32_t targetFramebuffer, int width, int height) {
     const LinearizeCoefficients k = linearizeCoefficients(proj, mapping);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetFramebuffer);
