@@ -56,8 +56,23 @@ DebugGroup::~DebugGroup() {
     if (active_) glPopDebugGroup();
 }
 
+namespace {
+constexpr GLenum kAlphaTest = 0x0BC0;  // GL_ALPHA_TEST: compatibility only, not in the core loader
+}  // namespace
+
 GlStateGuard::GlStateGuard() {
     State& s = saved_;
+    // A compatibility context applies the fixed-function alpha test to shader output too, and a
+    // legacy host may leave it on: Irrlicht 1.8 does (GL_GREATER 0) after a transparent material,
+    // which discarded the linear-depth pass's alpha-0 fragments and with them every occlusion. It is
+    // the one pre-shader per-fragment state the passes do not set themselves, so the guard turns it
+    // off for the plugin's calls and back on after. (A core context has no GL_ALPHA_TEST.)
+    GLint profile = 0;
+    glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
+    if ((profile & GL_CONTEXT_COMPATIBILITY_PROFILE_BIT) != 0 && glIsEnabled(kAlphaTest) == GL_TRUE) {
+        s.alphaTest = true;
+        glDisable(kAlphaTest);
+    }
     s.program = getInt(GL_CURRENT_PROGRAM);
     s.vertexArray = getInt(GL_VERTEX_ARRAY_BINDING);
     s.arrayBuffer = getInt(GL_ARRAY_BUFFER_BINDING);
@@ -127,6 +142,7 @@ GlStateGuard::~GlStateGuard() {
     setEnabled(GL_CULL_FACE, s.cullFace);
     setEnabled(GL_STENCIL_TEST, s.stencilTest);
     setEnabled(GL_SCISSOR_TEST, s.scissorTest);
+    if (s.alphaTest) glEnable(kAlphaTest);
     glScissor(s.scissorBox[0], s.scissorBox[1], s.scissorBox[2], s.scissorBox[3]);
     glColorMask(s.colorMask[0], s.colorMask[1], s.colorMask[2], s.colorMask[3]);
     glClearColor(s.clearColor[0], s.clearColor[1], s.clearColor[2], s.clearColor[3]);

@@ -14,7 +14,8 @@
 //   enable, stencil-test enable, scissor-test enable and box, colour mask, clear colour, viewport,
 //   draw and read framebuffers, GL_PIXEL_UNPACK_BUFFER and the unpack alignment / row length /
 //   skip values (texture uploads), GL_PIXEL_PACK_BUFFER and the pack alignment / row length /
-//   skip values (the fade-class counter's read-back).
+//   skip values (the fade-class counter's read-back). In a compatibility context also
+//   GL_ALPHA_TEST, which the guard disables for its scope (it applies to shader output there).
 // Not captured (the renderer neither changes nor depends on them): per-draw-buffer blend state
 // (glEnablei), polygon mode/offset, depth range and clamp, stencil func/ops, sample coverage.
 #include <cstdint>
@@ -81,6 +82,7 @@ private:
         bool depthTest = false, depthMask = true;
         int depthFunc = 0;
         bool cullFace = false, stencilTest = false, scissorTest = false;
+        bool alphaTest = false;  // compatibility context: was on, disabled for the guard's scope
         int scissorBox[4] = {};
         bool colorMask[4] = {true, true, true, true};
         float clearColor[4] = {};
