@@ -158,9 +158,13 @@ int main(int argc, char** argv) {
             return 1;
         }
     }
-    const core::recti r = scene.label->getAbsolutePosition();
-    std::printf("label_rect %d %d %d %d\n", r.UpperLeftCorner.X, r.UpperLeftCorner.Y, r.LowerRightCorner.X,
-                r.LowerRightCorner.Y);
+    // For the package test: where the GUI label is, and a rectangle inside the crate in front of the smoke.
+    const core::recti rects[2] = {scene.label->getAbsolutePosition(), occluderRect(device, scene)};
+    for (int i = 0; i < 2; ++i) {
+        const core::recti& r = rects[i];
+        std::printf("%s %d %d %d %d\n", i == 0 ? "label_rect" : "occluder_rect", r.UpperLeftCorner.X,
+                    r.UpperLeftCorner.Y, r.LowerRightCorner.X, r.LowerRightCorner.Y);
+    }
     // The first frames build textures and the plugin's targets: the median of the rest.
     const size_t skip = std::min<size_t>(10, frameMs.size() / 2);
     std::vector<double> steady(frameMs.begin() + long(skip), frameMs.end());

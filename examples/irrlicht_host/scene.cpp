@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 
 using namespace irr;
 
@@ -13,6 +14,8 @@ constexpr float kTrackInner = 5.4f, kTrackOuter = 8.6f;
 constexpr float kGroundSize = 48.0f;   // the textured ground plane's side
 constexpr float kSpeed = 9.0f;         // m/s along the ring
 constexpr float kDriftDegrees = 25.0f; // body yawed into the turn: the rear wheels slide out
+const core::vector3df kNearCrate(1.0f, 0.0f, -9.6f);  // on the ground, in front of the ring
+constexpr float kNearCrateSize = 1.6f;
 
 // A small deterministic hash for texture noise (the same image on every run and machine).
 uint32_t hash(uint32_t x, uint32_t y) {
@@ -113,8 +116,9 @@ Scene buildScene(IrrlichtDevice* device) {
     field->drop();
 
     video::ITexture* crate = makeTexture(driver, "crate", 64, crateTexel);
-    const struct { float x, z, size; } crates[] = {{1.5f, -9.8f, 1.4f}, {-9.6f, -1.0f, 1.8f}, {4.0f, 0.5f, 1.6f},
-                                                   {-1.0f, 9.9f, 2.0f}, {2.6f, -4.3f, 1.2f}};
+    // The first crate stands between the camera and the smoke trail: the smoke must be hidden there.
+    const struct { float x, z, size; } crates[] = {{kNearCrate.X, kNearCrate.Z, kNearCrateSize}, {-9.6f, -1.0f, 1.8f},
+                                                   {4.0f, 0.5f, 1.6f}, {-1.0f, 9.9f, 2.0f}, {2.6f, -4.3f, 1.2f}};
     for (const auto& c : crates) {
         scene::ISceneNode* box = smgr->addCubeSceneNode(c.size, nullptr, -1, core::vector3df(c.x, 0.5f * c.size, c.z));
         setCommon(box, crate);
@@ -149,6 +153,18 @@ Scene buildScene(IrrlichtDevice* device) {
     s.label->setBackgroundColor(video::SColor(255, 30, 30, 36));  // opaque: no smoke shows through
     s.label->setOverrideColor(video::SColor(255, 255, 230, 120));
     return s;
+}
+
+core::recti occluderRect(IrrlichtDevice* device, const Scene& scene) {
+    scene::ISceneCollisionManager* collision = device->getSceneManager()->getSceneCollisionManager();
+    const float h = 0.5f * kNearCrateSize, inset = 0.3f * h;  // the middle of the front face
+    core::recti r(INT32_MAX, INT32_MAX, INT32_MIN, INT32_MIN);
+    for (float dx : {-h + inset, h - inset})
+        for (float y : {inset, 2.0f * h - inset}) {
+            const core::vector3df corner(kNearCrate.X + dx, y, kNearCrate.Z - h);
+            r.addInternalPoint(collision->getScreenCoordinatesFrom3DPosition(corner, scene.camera));
+        }
+    return r;
 }
 
 void placeCar(Scene& scene, const CarState& car) {

@@ -22,5 +22,8 @@ struct Scene {
 
 /// Builds the scene into the device's scene manager and GUI environment.
 Scene buildScene(irr::IrrlichtDevice* device);
+/// Screen rectangle (pixels, top row 0) inside the crate that stands between the camera and the
+/// smoke trail: nothing the plugin draws may show there. Valid after a frame was drawn.
+irr::core::recti occluderRect(irr::IrrlichtDevice* device, const Scene& scene);
 /// Moves the car's node to `car`.
 void placeCar(Scene& scene, const CarState& car);
