@@ -43,8 +43,10 @@ static struct {
 } gl;
 
 static int loadGl(void) {
-    /* A cast between function pointer types is defined in C; the table is filled by name. */
-#define LOAD(f) (gl.f = (void*)0, *(OSMESAproc*)&gl.f = OSMesaGetProcAddress("gl" #f), gl.f != (void*)0)
+    /* Each member takes the address OSMesa gives for its name; function pointers share one
+     * representation here, so the bytes are copied rather than the pointer type punned. */
+    OSMESAproc proc;
+#define LOAD(f) (proc = OSMesaGetProcAddress("gl" #f), memcpy(&gl.f, &proc, sizeof proc), proc != NULL)
     return LOAD(ClearColor) && LOAD(Clear) && LOAD(Enable) && LOAD(DepthFunc) && LOAD(Viewport) &&
            LOAD(MatrixMode) && LOAD(LoadMatrixf) && LOAD(Begin) && LOAD(End) && LOAD(Color3f) &&
            LOAD(Vertex3f) && LOAD(ReadPixels) && LOAD(GetError);
