@@ -1,8 +1,11 @@
-# The plugin's private GL loader: Debian's glad2 generates a GL 3.3 core loader, then every
-# symbol it defines is renamed (glad_gl* -> fxglad_gl*, GLAD_GL_* -> FXGLAD_GL_*, gladLoadGL* ->
-# fxgladLoadGL*) and the header moves to <fx_glad/gl.h>. A host that links its own global glad
-# (most GL engines do) therefore never meets a second definition of glad_glCreateShader, in the
-# shared library (where these are hidden anyway) and in the static form used by our tests alike.
+# The plugin's private GL loader: Debian's glad2 generates a GL 3.3 compatibility-profile loader
+# (a superset of core: the GL state guard pins compatibility-only state such as glAlphaFunc and
+# glPixelTransferf when the host's context is a compatibility one, and calls none of them in a
+# core context) plus ARB_clip_control (glClipControl), then every symbol it defines is renamed
+# (glad_gl* -> fxglad_gl*, GLAD_GL_* -> FXGLAD_GL_*, gladLoadGL* -> fxgladLoadGL*) and the header
+# moves to <fx_glad/gl.h>. A host that links its own global glad (most GL engines do) therefore
+# never meets a second definition of glad_glCreateShader, in the shared library (where these are
+# hidden anyway) and in the static form used by our tests alike.
 # The plugin fills these pointers only through the host's getProcAddress.
 #
 #   fx_add_private_glad(<target> <output dir>)  -> an OBJECT library <target>, PIC, hidden
@@ -12,8 +15,8 @@ function(fx_add_private_glad target out)
   set(gen_c ${out}/src/fx_glad.c)
   add_custom_command(
     OUTPUT ${gen_c} ${gen_h} ${out}/include/KHR/khrplatform.h
-    COMMAND ${GLAD_EXECUTABLE} --quiet --reproducible --api gl:core=3.3
-            --extensions GL_KHR_debug,GL_ARB_timer_query --out-path ${raw} c
+    COMMAND ${GLAD_EXECUTABLE} --quiet --reproducible --api gl:compatibility=3.3
+            --extensions GL_KHR_debug,GL_ARB_timer_query,GL_ARB_clip_control --out-path ${raw} c
     COMMAND ${CMAKE_COMMAND} -DRAW=${raw} -DOUT=${out} -P ${CUBEFX_CMAKE_DIR}/RenameGlad.cmake
     DEPENDS ${CUBEFX_CMAKE_DIR}/RenameGlad.cmake
     COMMENT "Generating the plugin's private GL 3.3 loader (glad, renamed fxglad_)"

@@ -133,7 +133,8 @@ struct MegaRenderer::Programs {
 MegaRenderer::MegaRenderer(MegaRendererConfig config) : config_(std::move(config)) {}
 
 MegaRenderer::~MegaRenderer() {
-    if (state_ == State::Unloaded) return;  // no GL was ever touched
+    if (state_ == State::Unloaded || !privateGlLoaded()) return;  // no GL was ever touched
+    GlStateGuard guard;
     programs_.reset();
     if (fbo_) glDeleteFramebuffers(1, &fbo_);
     if (emptyVao_) glDeleteVertexArrays(1, &emptyVao_);

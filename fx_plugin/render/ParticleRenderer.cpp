@@ -44,7 +44,17 @@ const std::vector<ColorStop>& whiteRamp() {
 
 ParticleRenderer::ParticleRenderer(ParticleRendererConfig config) : config_(std::move(config)) {}
 
-ParticleRenderer::~ParticleRenderer() = default;
+ParticleRenderer::~ParticleRenderer() {
+    if (state_ == State::Unloaded || !privateGlLoaded()) return;  // no GL was ever touched
+    // The programs go inside a guard; the atlas, ramp, stream and sampler members delete their
+    // objects after this body: deleting changes no state of the host's (none of them is bound
+    // once a guard has restored the host's bindings).
+    GlStateGuard guard;
+    programs_.reset();
+    quarter_.reset();
+    opacity_.reset();
+    classifier_.reset();
+}
 
 void ParticleRenderer::log(LogLevel level, const std::string& message) const {
     if (config_.host) config_.host->log(level, message.c_str());
@@ -315,7 +325,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
         addPassReading(frame, kFullResPass, {depth, opacity, tiles, coarse}, color,
                        [this, record, depth, color, opacity, tiles, coarse, count](PassContext& ctx) {
                            if (!sizesAgree(ctx, record->view, color, depth)) return;
-                           GlStateGuard guard;
+                           GlStateGuard guard(record->view.depth);  // z-tested against the host's z-buffer
                            DebugGroup group(kFullResPass);
                            ctx.bindForDraw(color);
                            const uint32_t tileTexture = tiles.valid() ? ctx.texture(tiles, 0).name : 0;
@@ -354,7 +364,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
                       quarter_->downsampleDepth(ctx, depth, halfDepth, record->rect, record->tiles);
                   });
     auto quarterPass = [this, record, halfDepth, halfColor, halfZ, opacity](PassContext& ctx) {
-        GlStateGuard guard;
+        GlStateGuard guard(record->view.depth);  // z-tested against the half z written for this view
         DebugGroup group(QuarterResPath::kQuarterPass);
         const bool zTested = quarter_->beginQuarter(ctx, halfColor, record->rect, record->tiles,
                                                     halfZ ? halfDepth : Target{}, halfZ ? &record->view : nullptr);
@@ -371,7 +381,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
         edgeColor = frame.createTarget(QuarterResPath::kEdgeTarget, QuarterResPath::edgeTargetDesc());
         addPassReading(frame, QuarterResPath::kEdgePass, {halfDepth, depth, opacity}, edgeColor,
                        [this, record, edgeColor, halfDepth, depth, opacity](PassContext& ctx) {
-                           GlStateGuard guard;
+                           GlStateGuard guard(record->view.depth);
                            DebugGroup group(QuarterResPath::kEdgePass);
                            quarter_->beginEdges(ctx, edgeColor, halfDepth, depth, record->rect, record->tiles,
                                                 record->view);

@@ -79,7 +79,7 @@ int StatelessRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     v.name = "";  // the host's string is not ours to keep
     const Target color = frame.sceneColor();
     frame.addPass(kPass, {}, {color}, [this, v, draws, color](PassContext& ctx) {
-        GlStateGuard guard;
+        GlStateGuard guard(v.depth);  // z-tested against the host's z-buffer
         ctx.bindForDraw(color);
         draw(v, *draws);
     });

@@ -28,9 +28,13 @@ namespace fxtest {
 // ---- context (OsMesaContext.cpp) -------------------------------------------------------------
 
 using ProcAddressFn = void (*(*)(const char*))();
-/// Creates the process's OSMesa 3.3 core context once and makes it current; false + *error when
-/// it cannot. The proc-address function is what glad loads the entry points with.
+/// Creates the process's OSMesa context once and makes it current; false + *error when it cannot.
+/// A 3.3 core context, or a compatibility-profile one (3.3 or later) when the environment has
+/// CUBE_FX_HOST_PROFILE=compat (the poisoned-host test's second run). The proc-address function
+/// is what glad loads the entry points with.
 bool createOsMesaContext(std::string* error);
+/// True when the process's context is a compatibility-profile one.
+bool osMesaCompatibilityProfile();
 ProcAddressFn osMesaProcAddress();
 /// Gives the context's default framebuffer (RGBA8, DEPTH24 + STENCIL8) this size (it starts 4 x 4;
 /// the immediate-path tests draw into it as a host without FBOs would). False when it cannot.
@@ -151,6 +155,8 @@ public:
     /// When set, runs before every plugin pass; the state is snapshotted after it and compared
     /// after the pass. Mismatches are collected in stateMismatches().
     std::function<void()> beforePluginPass;
+    /// When set, runs right after every plugin pass (before the GL error drain), with its name.
+    std::function<void(const std::string&)> afterPluginPass;
     bool checkPluginState = false;
     const std::vector<std::string>& stateMismatches() const { return stateMismatches_; }
 

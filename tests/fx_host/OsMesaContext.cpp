@@ -2,6 +2,8 @@
 // so it must never include glad: GL is called through glad's pointers elsewhere.
 #include <GL/osmesa.h>
 
+#include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -23,19 +25,26 @@ OsMesa& instance() {
 
 }  // namespace
 
+bool osMesaCompatibilityProfile() {
+    const char* profile = std::getenv("CUBE_FX_HOST_PROFILE");
+    return profile && std::strcmp(profile, "compat") == 0;
+}
+
 bool createOsMesaContext(std::string* error) {
     OsMesa& m = instance();
     if (m.context) return true;
+    const bool compat = osMesaCompatibilityProfile();
     const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA,
                            OSMESA_DEPTH_BITS, 24,
                            OSMESA_STENCIL_BITS, 8,
-                           OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                           OSMESA_PROFILE, compat ? OSMESA_COMPAT_PROFILE : OSMESA_CORE_PROFILE,
                            OSMESA_CONTEXT_MAJOR_VERSION, 3,
                            OSMESA_CONTEXT_MINOR_VERSION, 3,
                            0};
     m.context = OSMesaCreateContextAttribs(attribs, nullptr);
     if (!m.context) {
-        *error = "OSMesa: cannot create a 3.3 core context";
+        *error = compat ? "OSMesa: cannot create a 3.3 compatibility-profile context"
+                        : "OSMesa: cannot create a 3.3 core context";
         return false;
     }
     m.buffer.assign(4 * 4 * 4, 0);

@@ -225,6 +225,7 @@ void TestFrameGraph::execute() {
         GlStateSnapshot before;
         if (check) before = captureGlState();
         p.execute(ctx);
+        if (p.plugin && afterPluginPass) afterPluginPass(p.name);
         drainGlErrors(p.name.c_str());
         if (check) {
             const std::string d = before.diff(captureGlState());

@@ -15,6 +15,8 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "FxTestHost.h"
 #include "../../fx_plugin/render/EmbeddedResources.h"
 #include "../../fx_plugin/render/ParticlePrograms.h"

@@ -1,34 +1,37 @@
 #pragma once
-// The plugin's versioned entry point (one exported function taking the host's imports and
-// returning the plugin, or null on a version mismatch) and the interface the host drives.
+// The C++ layer of the plugin's API (API 2: a header-only face over the C table of fx/fx.h,
+// compiled into the host; fx/detail/PluginBridge.h). fxCreatePlugin takes the host's imports and
+// returns the plugin, or null on a version mismatch; fx::Plugin is the interface the host drives.
 //
 // What a host does, in order:
 //   1. fxApiVersion() (optional): which plugin library was loaded.
 //   2. fxCreatePlugin(imports) with apiVersion = kApiVersion and its HostAdapter. No GL needed.
 //   3. loadReactions(path) (a .yaml file or a folder of them). No GL needed.
-//   4. prepareGl() with its GL context current (optional but recommended: compiles every
-//      particle program and uploads the atlas now, so a broken shader fails start-up instead of
-//      the first frame with smoke).
+//   4. setRenderOptions(...) if the host overrides techniques, then prepareGl() with its GL
+//      context current (optional but recommended: compiles every program the loaded reactions
+//      and the options can draw with and uploads the atlas now, so a broken shader of any
+//      technique fails start-up with file:line instead of the first frame with smoke).
 //   5. Each simulation step: continueReaction(i, dt, &collision) for i in 0 .. reactionCount()-1.
-//   6. Each frame, each view, while building its frame graph: declarePasses(view, frame); then
-//      the host executes the declared passes (in order, after its opaque scene and sky) with its
-//      context current.
+//   6. Each frame, each view, after its opaque scene and sky, either
+//        - renderView(view, depth) (API 2, engines without a frame graph): draws the smoke into the
+//          framebuffer bound for drawing, reading the scene depth from its own z-buffer by
+//          default; or
+//        - declarePasses(view, frame) while building the host's frame graph; the host then
+//          executes the declared passes in order with its context current.
 //   7. pollHotReload() whenever it likes (e.g. once a second); no GL needed. With a shaderDir
 //      override, pollShaderReload() (context current) picks up shader edits.
 //   8. Destroy the plugin with the same GL context current (it deletes its GL objects).
 //
 // Threading: the plugin is not thread-safe. Call it from one thread at a time; the calls that
-// touch GL (prepareGl, declarePasses, the pass callbacks, destruction) from the thread where the
-// host's context is current. Several plugin instances may live in one process if they share a
-// GL context family (the private loader's entry points are process-wide).
+// touch GL (prepareGl, declarePasses, renderView, the pass callbacks, destruction) from the
+// thread where the host's context is current. Several plugin instances may live in one process
+// if they share a GL context family (the private loader's entry points are process-wide).
 //
-// GL state: every GL call of the plugin runs inside a scoped guard that captures and restores
-// what it changes: current program, vertex array, GL_ARRAY_BUFFER, active texture, the
-// GL_TEXTURE_2D binding and sampler object of texture units 0..3, blend enable/func/equation,
-// depth test/func/mask, cull face, stencil and scissor test enables, colour mask, clear colour,
-// viewport, draw and read framebuffers, the pixel-unpack buffer and unpack alignment/row
-// length/skips. After any plugin call or pass, that state equals the state before. The plugin
-// creates its own textures, buffers, vertex arrays and programs and deletes them on destruction.
+// GL state: around every plugin call and pass that touches GL, the plugin sets every GL state
+// its image depends on to the value it needs and restores every state it touched, in core and
+// compatibility contexts; fx_plugin/render/GlStateGuard.h lists each state and the value set.
+// The plugin creates its own textures, buffers, vertex arrays and programs and deletes them on
+// destruction.
 #include <cstdint>
 #include <memory>
 #include <string>

@@ -1,0 +1,59 @@
+#pragma once
+// Shared by PoisonedHostState.cpp and HostStateReadback.cpp: the tests' glad is 3.3 core, so the
+// compatibility-profile enums are defined and its entry points fetched here by hand.
+#include <glad/gl.h>
+
+namespace fxtest {
+namespace poisoned_host_gl {
+
+constexpr GLenum kAlphaTest = 0x0BC0, kAlphaTestFunc = 0x0BC1, kAlphaTestRef = 0x0BC2;
+constexpr GLenum kPolygonStipple = 0x0B42, kClipPlane0 = 0x3000;
+constexpr GLenum kClampVertexColor = 0x891A, kClampFragmentColor = 0x891B;
+constexpr GLenum kMapColor = 0x0D10, kMapStencil = 0x0D11, kIndexShift = 0x0D12, kIndexOffset = 0x0D13;
+constexpr GLenum kRedScale = 0x0D14, kRedBias = 0x0D15, kGreenScale = 0x0D18, kGreenBias = 0x0D19;
+constexpr GLenum kBlueScale = 0x0D1A, kBlueBias = 0x0D1B, kAlphaScale = 0x0D1C, kAlphaBias = 0x0D1D;
+constexpr GLenum kDepthScale = 0x0D1E, kDepthBias = 0x0D1F;
+constexpr GLenum kTextureFilterControl = 0x8500, kTextureLodBias = 0x8501;
+constexpr GLenum kPrimitiveRestartFixedIndex = 0x8D69;
+constexpr int kUnits = 6;  // GlStateGuard::kTextureUnits
+
+struct Compat {
+    void (*alphaFunc)(GLenum, GLfloat) = nullptr;
+    void (*pixelTransferf)(GLenum, GLfloat) = nullptr;
+    void (*texEnvf)(GLenum, GLenum, GLfloat) = nullptr;
+    void (*getTexEnvfv)(GLenum, GLenum, GLfloat*) = nullptr;
+    void (*clipPlane)(GLenum, const GLdouble*) = nullptr;
+    void (*polygonStipple)(const GLubyte*) = nullptr;
+    void (*clipControl)(GLenum, GLenum) = nullptr;
+};
+
+template <typename F>
+inline void load(F* fn, const char* name) {
+    *fn = reinterpret_cast<F>(osMesaProcAddress()(name));
+}
+
+inline const Compat& compat() {
+    static const Compat c = [] {
+        Compat k;
+        load(&k.alphaFunc, "glAlphaFunc");
+        load(&k.pixelTransferf, "glPixelTransferf");
+        load(&k.texEnvf, "glTexEnvf");
+        load(&k.getTexEnvfv, "glGetTexEnvfv");
+        load(&k.clipPlane, "glClipPlane");
+        load(&k.polygonStipple, "glPolygonStipple");
+        load(&k.clipControl, "glClipControl");
+        return k;
+    }();
+    return c;
+}
+
+inline int glVersion() {
+    GLint major = 0, minor = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &major);
+    glGetIntegerv(GL_MINOR_VERSION, &minor);
+    return major * 10 + minor;
+}
+
+
+}  // namespace poisoned_host_gl
+}  // namespace fxtest

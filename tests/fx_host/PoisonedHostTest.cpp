@@ -1,0 +1,198 @@
+// No host state reaches the plugin's image (issue 30, item 4). Before every plugin call (the
+// plugin's prepareGl, declarePasses and each pass it declared) the host is put into GL's default
+// state and then poisoned with one state of PoisonedHostState.h (or all of them at once); after
+// the call every poisoned and listed state must read back the host's poisoned value, with no GL
+// error, and the frame must equal the clean host's bit for bit, for every technique. ctest runs
+// this file twice: in the fx_host's 3.3 core context and, with CUBE_FX_HOST_PROFILE=compat, in a
+// compatibility-profile context where the fixed-function leftovers of a legacy engine (alpha
+// test, user clip planes, pixel transfer, colour clamping, polygon stipple, LOD bias) exist too.
+#include <glad/gl.h>
+
+#include <cstdio>
+#include <set>
+
+#include "FxTestHost.h"
+#include "PoisonedHostState.h"
+#include "render/PinnedGlState.h"
+
+namespace fxtest {
+namespace poisoned_host_test {
+
+constexpr int kW = 160, kH = 120;
+
+struct Mode {
+    const char* label;
+    fx::Technique technique;
+    bool quarter = false, mixed = false, lit = false;
+};
+
+const Mode kModes[] = {
+    {"hard", fx::Technique::Hard},
+    {"soft", fx::Technique::Soft},
+    {"spherical", fx::Technique::Spherical},
+    {"hard quarter", fx::Technique::Hard, true},
+    {"soft quarter", fx::Technique::Soft, true},
+    {"spherical quarter mixed-res", fx::Technique::Spherical, true, true},
+    {"mega", fx::Technique::Mega},
+    {"soft lit", fx::Technique::Soft, false, false, true},
+    {"spherical quarter lit", fx::Technique::Spherical, true, false, true},
+    {"from reactions (stateless sparks too)", fx::Technique::FromReaction},
+};
+
+class PoisonedHostTest : public PluginHostTest {
+protected:
+    PoisonedHostTest() : PluginHostTest(kW, kH) {}
+    void SetUp() override {
+        PluginHostTest::SetUp();
+        resetHostState();
+        createPlugin(CUBE_SOURCE_DIR "/reactions");
+        prepare(nullptr);
+    }
+    void TearDown() override {
+        graph.beforePluginPass = nullptr;
+        graph.afterPluginPass = nullptr;
+        PluginHostTest::TearDown();
+    }
+
+    /// The smoke and sparks every frame shows (no simulation between frames: frames repeat).
+    void prepare(const std::function<void()>* poison) {
+        simulate(1.0f, 60);
+        ASSERT_EQ(plugin->fireReaction("explosion", glm::vec3(-0.5f, 0.8f, 1.5f)), fx::ErrorCode::None);
+        simulate(1.0f, 6);
+        useWallScene();
+        begin(poison);
+        fx::Diagnostics diags;
+        EXPECT_TRUE(plugin->prepareGl(&diags)) << (diags.empty() ? "" : diags.front().str());
+        end("prepareGl");
+    }
+
+    void setMode(const Mode& m) {
+        fx::RenderOptions o;
+        o.techniqueOverride = m.technique;
+        o.quarterRes = m.quarter;
+        plugin->setRenderOptions(o);
+        plugin->setQuarterResEdges(m.mixed ? fx::QuarterResEdges::MixedResolution : fx::QuarterResEdges::DepthAware);
+        if (m.lit) {
+            ASSERT_EQ(plugin->setSceneLight(fx::SceneLight{}), fx::ErrorCode::None);
+        } else {
+            plugin->clearSceneLight();
+        }
+    }
+
+    // Around every plugin call: clean + poison, then check + clean.
+    void begin(const std::function<void()>* poison) {
+        resetHostState();
+        if (poison) (*poison)();
+        drainGlErrors("poisoning");
+        errorsBefore_ = glErrorCount();
+        snapshot_ = readHostState();
+    }
+    void end(const std::string& where) {
+        drainGlErrors(where.c_str());
+        if (glErrorCount() != errorsBefore_) problems_ += where + ": GL error\n";
+        const std::string d = diffHostState(snapshot_, readHostState());
+        if (!d.empty()) problems_ += where + " changed host state:\n" + d;
+        resetHostState();
+    }
+
+    /// One frame with `poison` (null: the clean host) before every plugin call.
+    Image frame(const std::function<void()>* poison) {
+        problems_.clear();
+        graph.beforePluginPass = [this, poison] { begin(poison); };
+        graph.afterPluginPass = [this](const std::string& pass) { end(pass); };
+        renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) {
+            begin(poison);
+            plugin->declarePasses(view, f);
+            end("declarePasses");
+        });
+        graph.beforePluginPass = nullptr;
+        graph.afterPluginPass = nullptr;
+        return graph.readColor();
+    }
+
+    std::string problems_;
+    HostStateReadback snapshot_;
+    int errorsBefore_ = 0;
+};
+
+std::function<void()> allPoisons() {
+    return [] {
+        for (const HostPoison& p : hostPoisons()) p.apply();
+    };
+}
+
+TEST_F(PoisonedHostTest, EveryTechniqueIgnoresEachPoisonedState) {
+    const auto& poisons = hostPoisons();
+    int compat = 0;
+    for (const HostPoison& p : poisons) compat += p.compatibility;
+    std::printf("[ measured ] %s context: %zu poisoned states (%zu core, %d compatibility-only)\n",
+                osMesaCompatibilityProfile() ? "compatibility" : "core", poisons.size(), poisons.size() - size_t(compat),
+                compat);
+    const fx::PinnedGlStateCount rows = fx::pinnedGlStateCount();
+    std::printf("[ measured ] the plugin's guard: %d rows (%d core, %d compatibility-only)\n",
+                rows.core + rows.compatibility, rows.core, rows.compatibility);
+    EXPECT_GE(rows.core + rows.compatibility, osMesaCompatibilityProfile() ? 80 : 60);
+    EXPECT_EQ(rows.compatibility > 0, osMesaCompatibilityProfile());
+    std::set<std::string> changedImage;
+    for (const Mode& m : kModes) {
+        setMode(m);
+        const Image bare = render(false);
+        const Image clean = frame(nullptr);
+        ASSERT_TRUE(problems_.empty()) << m.label << " (clean host):\n" << problems_;
+        ASSERT_GT(maxAbsDiff(clean, bare), 0) << m.label << ": nothing drawn, the test would prove nothing";
+        int changed = 0;
+        for (const HostPoison& p : poisons) {
+            const Image img = frame(&p.apply);
+            const int diff = maxAbsDiff(img, clean);
+            EXPECT_TRUE(problems_.empty()) << m.label << ", poisoned " << p.name << ":\n" << problems_;
+            EXPECT_EQ(diff, 0) << m.label << ": poisoned " << p.name << " reached the image";
+            if (diff != 0) {
+                ++changed;
+                changedImage.insert(p.name);
+            }
+        }
+        const std::function<void()> all = allPoisons();
+        const Image img = frame(&all);
+        EXPECT_TRUE(problems_.empty()) << m.label << ", all poisons at once:\n" << problems_;
+        EXPECT_EQ(maxAbsDiff(img, clean), 0) << m.label << ": all poisons at once reached the image";
+        std::printf("[ measured ] %-40s %d of %zu poisons changed the image; all at once: max diff %d\n", m.label,
+                    changed, poisons.size(), maxAbsDiff(img, clean));
+    }
+    std::string names;
+    for (const std::string& n : changedImage) names += "  " + n + "\n";
+    std::printf("[ measured ] poisons that changed some technique's image: %zu\n%s", changedImage.size(),
+                names.c_str());
+}
+
+// prepareGl (the atlas, ramp and normal uploads, every program) under each poison: a fresh
+// plugin per poison, its first frame compared with a plugin prepared by a clean host.
+TEST_F(PoisonedHostTest, PrepareGlUnderEachPoisonUploadsTheSameData) {
+    const Mode& soft = kModes[7];  // lit soft: atlas, normals, ramp and the opacity map all show
+    setMode(soft);
+    const Image clean = frame(nullptr);
+    ASSERT_TRUE(problems_.empty()) << problems_;
+    std::vector<const HostPoison*> list;
+    for (const HostPoison& p : hostPoisons()) list.push_back(&p);
+    const HostPoison all{"all at once", false, allPoisons()};
+    list.push_back(&all);
+    int changed = 0;
+    for (const HostPoison* p : list) {
+        plugin.reset();
+        createPlugin(CUBE_SOURCE_DIR "/reactions");
+        problems_.clear();
+        prepare(&p->apply);
+        EXPECT_TRUE(problems_.empty()) << "prepareGl, poisoned " << p->name << ":\n" << problems_;
+        setMode(soft);
+        const Image img = frame(nullptr);
+        const int diff = maxAbsDiff(img, clean);
+        EXPECT_EQ(diff, 0) << "prepareGl, poisoned " << p->name << " reached the image";
+        if (diff != 0) {
+            ++changed;
+            std::printf("[ measured ] prepareGl poisoned by %s: max diff %d\n", p->name.c_str(), diff);
+        }
+    }
+    std::printf("[ measured ] prepareGl: %d of %zu poisons changed the image\n", changed, list.size());
+}
+
+}  // namespace poisoned_host_test
+}  // namespace fxtest
