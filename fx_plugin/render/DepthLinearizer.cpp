@@ -2,6 +2,8 @@
 // linearise pass.
 #include "DepthLinearizer.h"
 
+#include <algorithm>
+
 #include "PrivateGl.h"
 #include "ShaderLoader.h"
 
@@ -108,7 +110,7 @@ void DepthLinearizer::textureSize(uint32_t texture, int* width, int* height) {
 }
 
 uint32_t DepthLinearizer::copyFramebufferDepth(uint32_t framebuffer, int x, int y, int width, int height,
-                                         uint32_t format, int samples) {
+                                         uint32_t format, int samples, const DepthRegion& region) {
     glActiveTexture(GL_TEXTURE0);
     if (!copy_ || copyWidth_ != width || copyHeight_ != height || copyFormat_ != format) {
         if (!copy_) glGenTextures(1, &copy_);
@@ -128,6 +130,10 @@ uint32_t DepthLinearizer::copyFramebufferDepth(uint32_t framebuffer, int x, int 
         if (resolveFbo_) glDeleteFramebuffers(1, &resolveFbo_);
         resolveFbo_ = 0;
     }
+    // The pixels to copy: the region (clamped to the texture) or all of it.
+    const int rx = region.whole ? 0 : std::max(0, region.x0), ry = region.whole ? 0 : std::max(0, region.y0);
+    const int rw = region.whole ? width : std::max(0, std::min(width, region.x1) - rx);
+    const int rh = region.whole ? height : std::max(0, std::min(height, region.y1) - ry);
     if (samples > 0) {
         // glCopyTexSubImage2D refuses a multisampled source; a blit resolves it (one sample per
         // pixel, nearest: the z-buffer's own values, as a depth resolve must be).
@@ -141,18 +147,20 @@ uint32_t DepthLinearizer::copyFramebufferDepth(uint32_t framebuffer, int x, int 
         }
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolveFbo_);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
-        glBlitFramebuffer(x, y, x + width, y + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        glBlitFramebuffer(x + rx, y + ry, x + rx + rw, y + ry + rh, rx, ry, rx + rw, ry + rh, GL_DEPTH_BUFFER_BIT,
+                          GL_NEAREST);
     } else {
         glBindTexture(GL_TEXTURE_2D, copy_);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
-        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, x, y, width, height);
+        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, rx, ry, x + rx, y + ry, rw, rh);
     }
     ++copies_;
     return copy_;
 }
 
 void DepthLinearizer::linearize(uint32_t depthTexture, const glm::mat4& proj, const DepthMapping& mapping,
-                          float background, uint32_t targetFramebuffer, int width, int height) {
+                          float background, uint32_t targetFramebuffer, int width, int height,
+                          const DepthRegion& region) {
     const LinearizeCoefficients k = linearizeCoefficients(proj, mapping);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetFramebuffer);
     glViewport(0, 0, width, height);
@@ -162,6 +170,13 @@ void DepthLinearizer::linearize(uint32_t depthTexture, const glm::mat4& proj, co
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_STENCIL_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    if (!region.whole) {
+        // Outside the region nobody reads: "nothing drawn" there, the pass only inside.
+        const GLfloat far[4] = {background, 0.0f, 0.0f, 0.0f};
+        glClearBufferfv(GL_COLOR, 0, far);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(region.x0, region.y0, std::max(0, region.x1 - region.x0), std::max(0, region.y1 - region.y0));
+    }
     glUseProgram(program_);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, depthTexture);

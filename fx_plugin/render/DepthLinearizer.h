@@ -47,14 +47,16 @@ public:
     /// texture (format `format`, from framebufferDepthFormat; reallocated when the size or the
     /// format changes) and returns it. Single-sampled: glCopyTexSubImage2D (any framebuffer, the
     /// default one included); multisampled (`samples` > 0): a depth blit, which resolves it.
+    /// With a `region` only its pixels are copied (the rest of the texture keeps old values).
     uint32_t copyFramebufferDepth(uint32_t framebuffer, int x, int y, int width, int height, uint32_t format,
-                                  int samples = 0);
+                                  int samples = 0, const DepthRegion& region = DepthRegion{});
 
     /// Draws the linear depth of `depthTexture` (window depth, read without comparison, nearest)
     /// into `targetFramebuffer` (an R32F colour attachment of width x height). `background` goes
-    /// where nothing was drawn. Needs prepare().
+    /// where nothing was drawn. Needs prepare(). With a `region` only its pixels are linearised;
+    /// the rest of the target is cleared to `background` (nothing drawn).
     void linearize(uint32_t depthTexture, const glm::mat4& proj, const DepthMapping& mapping, float background,
-                   uint32_t targetFramebuffer, int width, int height);
+                   uint32_t targetFramebuffer, int width, int height, const DepthRegion& region = DepthRegion{});
 
     /// Depth copies made so far (a frame whose passes read no depth makes none).
     int copies() const { return copies_; }

@@ -40,6 +40,13 @@
 
 namespace fx {
 
+/// Where a pass reads the scene depth: pixels [x0, x1) x [y0, y1) of the view, or all of it
+/// (the immediate path copies and linearises only the union of what its passes read).
+struct DepthRegion {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool whole = true;
+};
+
 /// How the host's window depth relates to its clip-space z when it drew the z-buffer.
 /// Defaults: GL's own: clip z in [-w, w] (glClipControl GL_NEGATIVE_ONE_TO_ONE) and
 /// glDepthRange(0, 1).

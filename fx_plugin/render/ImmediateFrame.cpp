@@ -68,6 +68,10 @@ void ImmediateFrame::addPass(const char* name, std::initializer_list<Target> rea
         if (t.valid()) p.writes.push_back(t.id);
     }
     p.run = std::move(execute);
+    if (std::find(p.reads.begin(), p.reads.end(), kSceneDepth) != p.reads.end()) {
+        p.depthRegion = nextRegion_;
+        nextRegion_ = DepthRegion{};
+    }
     passes_.push_back(std::move(p));
 }
 
@@ -119,6 +123,34 @@ void ImmediateFrame::execute() {
             for (uint32_t w : passes_[k].writes) allocate(w);
         }
     }
+    // The depth the running passes read: the union of their regions (whole if any reads it all).
+    produced_ = DepthRegion{0, 0, 0, 0, false};
+    bool anyReader = false;
+    for (size_t k = 0; k < passes_.size(); ++k) {
+        const Pass& p = passes_[k];
+        if (!alive[k] || std::find(p.reads.begin(), p.reads.end(), kSceneDepth) == p.reads.end()) continue;
+        const DepthRegion& r = p.depthRegion;
+        if (r.whole || produced_.whole) {
+            produced_ = DepthRegion{};
+        } else if (!anyReader) {
+            produced_ = r;
+        } else {
+            produced_.x0 = std::min(produced_.x0, r.x0);
+            produced_.y0 = std::min(produced_.y0, r.y0);
+            produced_.x1 = std::max(produced_.x1, r.x1);
+            produced_.y1 = std::max(produced_.y1, r.y1);
+        }
+        anyReader = true;
+    }
+    if (!produced_.whole) {
+        produced_.x0 = std::max(0, produced_.x0);
+        produced_.y0 = std::max(0, produced_.y0);
+        produced_.x1 = std::min(setup_.width, produced_.x1);
+        produced_.y1 = std::min(setup_.height, produced_.y1);
+        if (produced_.x0 == 0 && produced_.y0 == 0 && produced_.x1 == setup_.width && produced_.y1 == setup_.height) {
+            produced_ = DepthRegion{};
+        }
+    }
     Context ctx(*this);
     for (size_t k = 0; k < passes_.size(); ++k) {
         if (!alive[k]) continue;
@@ -127,7 +159,7 @@ void ImmediateFrame::execute() {
         if (readsDepth && !depthReady_ && depthSlot_ != SIZE_MAX && setup_.produceDepth) {
             GlStateGuard guard;
             DebugGroup group("fx_linearize_depth");
-            setup_.produceDepth(pool_.at(depthSlot_).framebuffer);
+            setup_.produceDepth(pool_.at(depthSlot_).framebuffer, produced_);
             depthReady_ = true;
         }
         p.run(ctx);

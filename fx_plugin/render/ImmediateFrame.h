@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "fx/HostAdapter.h"
+#include "DepthMapping.h"
 #include "ImmediateTargetPool.h"
 
 namespace fx {
@@ -28,9 +29,10 @@ struct ImmediateFrameSetup {
     uint32_t hostFramebuffer = 0;        ///< GL_DRAW_FRAMEBUFFER at the call (0 = default)
     int viewportX = 0, viewportY = 0;    ///< the host's viewport origin at the call
     uint32_t hostLinearDepth = 0;        ///< the host's R32F linear depth, or 0 = produce it
-    /// Fills the linear depth into `framebuffer` (R32F colour, width x height). Called at most once
-    /// a frame, inside the frame's GL state guard.
-    std::function<void(uint32_t framebuffer)> produceDepth;
+    /// Fills the linear depth into `framebuffer` (R32F colour, width x height) over `region` at
+    /// least (the union of what the running passes read; outside it the value may be anything
+    /// that reads as nothing drawn). Called at most once a frame, inside the frame's GL state guard.
+    std::function<void(uint32_t framebuffer, const DepthRegion& region)> produceDepth;
 };
 
 class ImmediateFrame final : public FrameBuilder {
@@ -45,6 +47,15 @@ public:
     void addPass(const char* name, std::initializer_list<Target> reads, std::initializer_list<Target> writes,
                  std::function<void(PassContext&)> execute) override;
 
+    /// The plugin's renderers (not the host): the next pass added that reads sceneDepth reads it
+    /// only inside `region` (a bound of its fragments' footprint, tiles included). A depth-reading
+    /// pass added without one reads the whole view. Only the union over the running passes is
+    /// copied and linearised: on a CPU rasteriser the full-screen depth passes cost what their
+    /// pixels cost.
+    void setNextDepthRegion(const DepthRegion& region) { nextRegion_ = region; }
+    /// The union the last execute() produced depth over (whole when nothing narrowed it).
+    const DepthRegion& producedDepthRegion() const { return produced_; }
+
     bool empty() const { return passes_.empty(); }
     /// Culls, allocates and runs the passes. Restores the GL state it changes itself (each plugin
     /// pass restores its own).
@@ -56,6 +67,7 @@ private:
         std::string name;
         std::vector<uint32_t> reads, writes;
         std::function<void(PassContext&)> run;
+        DepthRegion depthRegion;  ///< where it reads sceneDepth (whole unless a renderer narrowed it)
     };
     struct Created {
         std::string name;
@@ -73,6 +85,8 @@ private:
     std::vector<Created> created_;  ///< id - kSceneDepth - 1
     size_t depthSlot_ = SIZE_MAX;   ///< the produced linear depth's pool slot
     bool depthReady_ = false;
+    DepthRegion nextRegion_;
+    DepthRegion produced_;
     std::vector<std::string> executed_;
 };
 

@@ -97,7 +97,7 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
     const int w = view.width, h = view.height;
     const uint32_t hostTexture = in.depthTexture;
     setup.produceDepth = [this, source, background, proj, mapping, w, h, hostTexture, depthFormat,
-                          samples, drawFramebuffer](uint32_t target) {
+                          samples, drawFramebuffer](uint32_t target, const DepthRegion& region) {
         // Built on first use, like the particle programs: a scene without smoke compiles nothing.
         std::string error;
         const bool ready = source == Source::None || depth_.prepare(&error);
@@ -116,8 +116,8 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
         const uint32_t texture =
             source == Source::DepthTexture ? hostTexture
                                            : depth_.copyFramebufferDepth(uint32_t(drawFramebuffer), 0, 0, w, h,
-                                                                      depthFormat, samples);
-        depth_.linearize(texture, proj, mapping, background, target, w, h);
+                                                                      depthFormat, samples, region);
+        depth_.linearize(texture, proj, mapping, background, target, w, h, region);
     };
     pool_.beginFrame();
     ImmediateFrame frame(pool_, std::move(setup));
@@ -128,6 +128,7 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
         HostDepthMappingScope hostMapping(in.mapping.clipZeroToOne, in.mapping.rangeNear, in.mapping.rangeFar);
         frame.execute();
         lastPasses_ = frame.executed();
+        lastRegion_ = frame.producedDepthRegion();
     }
     pool_.endFrame();
     return declared;

@@ -90,6 +90,9 @@ public:
     /// Depth copies from a bound framebuffer / linearise passes since creation.
     int depthCopies() const { return depth_.copies(); }
     int depthLinearizations() const { return depth_.linearizations(); }
+    /// Where the last render copied and linearised the host's depth (the union of what its running
+    /// passes read; whole when a pass reads all of it or nothing narrowed it).
+    const DepthRegion& lastDepthRegion() const { return lastRegion_; }
     /// The passes the last render ran, in order.
     const std::vector<std::string>& lastPasses() const { return lastPasses_; }
     const std::string& lastError() const { return lastError_; }
@@ -103,6 +106,7 @@ private:
     ImmediateTargetPool pool_;
     DepthLinearizer depth_;
     std::vector<std::string> lastPasses_;
+    DepthRegion lastRegion_;
     std::string lastError_;
 };
 

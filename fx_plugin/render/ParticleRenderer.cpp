@@ -11,11 +11,34 @@
 #include "render/PrivateGl.h"
 
 #include "GlStateGuard.h"
+#include "ImmediateFrame.h"
 #include "ShaderLoader.h"
 #include "src/ApiErrors.h"
 
 namespace fx {
 namespace {
+
+// The immediate path (ImmediateFrame) copies and linearises the host's z-buffer only where the
+// plugin's passes read it. A pass of this renderer reads the scene depth inside its particles'
+// screen bound, grown by the quarter-res tiles' reach (16 px tiles, 6 px border) and aligned to
+// the fade classifier's coarse tiles, whose depth ranges it reduces whole. Other frame builders
+// read the whole depth anyway: nothing to say to them.
+void narrowDepthRead(FrameBuilder& frame, const QuarterResPath::ScreenRect& bound, int width, int height) {
+    auto* immediate = dynamic_cast<ImmediateFrame*>(&frame);
+    if (!immediate) return;
+    DepthRegion r;  // whole
+    if (!bound.whole) {
+        constexpr int kReach = QuarterResPath::kTileSize + 16, kAlign = FadeClassifier::kCoarseTileSize;
+        auto down = [](int v) { return v <= 0 ? 0 : v / kAlign * kAlign; };
+        auto up = [](int v, int limit) { return std::min(limit, (v + kAlign - 1) / kAlign * kAlign); };
+        r.whole = false;
+        r.x0 = down(bound.x0 - kReach);
+        r.y0 = down(bound.y0 - kReach);
+        r.x1 = up(bound.x1 + kReach, width);
+        r.y1 = up(bound.y1 + kReach, height);
+    }
+    immediate->setNextDepthRegion(r);
+}
 
 // FrameBuilder::addPass with the valid ones of up to four read targets (an invalid Target is
 // "not read": the opacity map is there only for lit smoke).
@@ -304,8 +327,17 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
 
     const Target color = frame.sceneColor();
     if (!(classify_ && countClasses_)) counts_ = FadeClassCounts{};
+    bool spheres = false;
+    for (const DrawBatch& batch : record->list.batches) spheres = spheres || batch.technique == Technique::Spherical;
+    const QuarterResPath::Footprint footprint =
+        spheres ? QuarterResPath::Footprint::Box : QuarterResPath::Footprint::Billboard;
     if (!quarterRes) {
         const Target depth = record->list.needsSceneDepth ? frame.sceneDepth() : Target{};
+        QuarterResPath::ScreenRect bound;  // whole
+        if (depth.valid() && dynamic_cast<ImmediateFrame*>(&frame)) {
+            bound = QuarterResPath::screenRect(view, record->list.instances.data(), record->list.particleCount(),
+                                               nullptr, footprint);
+        }
         // Fade classification: the scene depth's range per tile, read by the classified programs.
         Target tiles, coarse;
         if (classify_ && depth.valid() && ensureClassifier()) {
@@ -313,6 +345,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
                                        FadeClassifier::tileTargetDesc(view.width, view.height, false));
             coarse = frame.createTarget(FadeClassifier::kCoarseTarget,
                                         FadeClassifier::tileTargetDesc(view.width, view.height, true));
+            narrowDepthRead(frame, bound, view.width, view.height);
             frame.addPass(FadeClassifier::kPass, {depth}, {tiles, coarse},
                           [this, record, depth, tiles, coarse](PassContext& ctx) {
                               if (!sizesAgree(ctx, record->view, depth, Target{})) return;
@@ -322,6 +355,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
                           });
         }
         const bool count = tiles.valid() && countClasses_;
+        narrowDepthRead(frame, bound, view.width, view.height);
         addPassReading(frame, kFullResPass, {depth, opacity, tiles, coarse}, color,
                        [this, record, depth, color, opacity, tiles, coarse, count](PassContext& ctx) {
                            if (!sizesAgree(ctx, record->view, color, depth)) return;
@@ -342,12 +376,8 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     }
 
     // Where the smoke can be: the quarter-res passes' fixed costs stay inside it.
-    bool spheres = false;
-    for (const DrawBatch& batch : record->list.batches) spheres = spheres || batch.technique == Technique::Spherical;
     record->rect = QuarterResPath::screenRect(view, record->list.instances.data(), record->list.particleCount(),
-                                              &record->tiles,
-                                              spheres ? QuarterResPath::Footprint::Box
-                                                      : QuarterResPath::Footprint::Billboard);
+                                              &record->tiles, footprint);
     const Target depth = frame.sceneDepth();
     const Target halfDepth = frame.createTarget(QuarterResPath::kDepthTarget,
                                                 QuarterResPath::depthTargetDesc());
@@ -355,6 +385,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     const bool halfZ = view.depth == DepthConvention::ReversedZ && quarter_->halfZOk();
     const Target halfColor = frame.createTarget(QuarterResPath::kColorTarget,
                                                 QuarterResPath::colorTargetDesc(halfZ));
+    narrowDepthRead(frame, record->rect, view.width, view.height);
     frame.addPass(QuarterResPath::kDownsamplePass, {depth}, {halfDepth},
                   [this, record, depth, halfDepth](PassContext& ctx) {
                       // Only what this pass declared may be touched: the scene depth.
@@ -379,6 +410,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     Target edgeColor;
     if (edges_ == QuarterResEdges::MixedResolution && quarter_->mixedOk() && !bilinear) {
         edgeColor = frame.createTarget(QuarterResPath::kEdgeTarget, QuarterResPath::edgeTargetDesc());
+        narrowDepthRead(frame, record->rect, view.width, view.height);
         addPassReading(frame, QuarterResPath::kEdgePass, {halfDepth, depth, opacity}, edgeColor,
                        [this, record, edgeColor, halfDepth, depth, opacity](PassContext& ctx) {
                            GlStateGuard guard(record->view.depth);
@@ -389,6 +421,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
                                        opacity.valid() ? ctx.texture(opacity, 0).name : 0);
                        });
     }
+    narrowDepthRead(frame, record->rect, view.width, view.height);
     addPassReading(frame, QuarterResPath::kCompositePass, {halfColor, halfDepth, depth, edgeColor}, color,
                    [this, record, color, halfColor, halfDepth, depth, bilinear, edgeColor](PassContext& ctx) {
                        GlStateGuard guard;

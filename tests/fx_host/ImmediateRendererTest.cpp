@@ -13,6 +13,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "FxTestHost.h"
+#include "../../fx_plugin/src/PluginImpl.h"
 #include "../../fx_plugin/render/ImmediateFrame.h"
 #include "../../fx_plugin/render/ImmediateRenderer.h"
 
@@ -141,7 +142,7 @@ protected:
     fx::ErrorCode drawImmediate(GLuint fbo, const fx::ImmediateView& iv) {
         glBindFramebuffer(GL_FRAMEBUFFER, fbo);
         scene.drawOpaque(iv.view);
-        const fx::ErrorCode e = immediate->render(*plugin, iv);
+        const fx::ErrorCode e = immediate->render(fx::implOf(*plugin), iv);
         drainGlErrors("immediate render");
         return e;
     }
@@ -254,6 +255,38 @@ TEST_F(ImmediateRendererTest, ReversedZHostSameImagePerDepthSource) {
     ASSERT_TRUE(resizeDefaultFramebuffer(4, 4));
 }
 
+// The host's z-buffer is copied and linearised only where the plugin's passes read it (the
+// particles' screen bound, grown to the classifier's 64 px tiles), and the picture is the one a
+// whole-view depth gives: with the smoke in one corner of the view, the region is a part of it.
+TEST_F(ImmediateRendererTest, DepthIsMadeOnlyWhereThePassesReadIt) {
+    constexpr int W = 480, H = 360;  // large enough for 64 px tiles to leave some of it out
+    TestFrameGraph bigGraph(W, H);
+    HostTarget host24(W, H, GL_DEPTH_COMPONENT24);
+    const fx::ViewInfo v = makeView(glm::vec3(-7.0f, 2.5f, 8.0f), glm::vec3(-3.0f, 0.8f, -1.0f), W, H);
+    for (const Mode& m : {kModes[1], kModes[2], kModes[3]}) {
+        SCOPED_TRACE(m.name);
+        setMode(m);
+        renderFrame(bigGraph, scene, v, [&](fx::FrameBuilder& f) { plugin->declarePasses(v, f); });
+        const Image reference = bigGraph.readColor();
+        ASSERT_GT(plugin->stats().particlesDrawn, 0);
+        fx::ImmediateView iv = immediateView(Source::BoundFramebuffer);
+        iv.view = v;
+        ASSERT_EQ(drawImmediate(host24.fbo, iv), fx::ErrorCode::None);
+        const fx::DepthRegion r = immediate->lastDepthRegion();
+        EXPECT_FALSE(r.whole);
+        const int area = (r.x1 - r.x0) * (r.y1 - r.y0);
+        EXPECT_GT(area, 0);
+        EXPECT_LT(area, W * H);
+        EXPECT_EQ(r.x0 % 64, 0);
+        EXPECT_EQ(r.y0 % 64, 0);
+        const Image image = readFramebuffer(host24.fbo, W, H);
+        EXPECT_LE(maxAbsDiff(image, reference), kDepthSourceTolerance);
+        EXPECT_GE(psnr(image, reference), kDepthSourceMinPsnr);
+        std::printf("  %-10s region [%d, %d) x [%d, %d) of %dx%d (%.0f %%), max |diff| %d/255\n", m.name, r.x0, r.x1,
+                    r.y0, r.y1, W, H, 100.0 * area / (W * H), maxAbsDiff(image, reference));
+    }
+}
+
 // Hosts whose z-buffer follows neither mapping a DepthConvention names: a D3D-style [0, 1]
 // projection under GL's default clip control (Irrlicht: window z in [0.5, 1]), the same matrix
 // under ZERO_TO_ONE without reversal, and a GL projection drawn with glDepthRange(0.2, 0.9). The
@@ -294,7 +327,7 @@ TEST_F(ImmediateRendererTest, HostsWithOtherDepthMappingsGetTheSamePicture) {
             scene.clipZeroToOne = false;
             clipControlZeroToOne(false);
             glDepthRange(0.0, 1.0);
-            ASSERT_EQ(immediate->render(*plugin, iv), fx::ErrorCode::None);
+            ASSERT_EQ(immediate->render(fx::implOf(*plugin), iv), fx::ErrorCode::None);
             drainGlErrors("immediate render");
             const Image image = readFramebuffer(withDepthTexture.fbo, kW, kH);
             const int diff = maxAbsDiff(image, reference);
@@ -400,7 +433,7 @@ TEST_F(ImmediateRendererTest, HostBindingsAndStateAreUnchanged) {
         scene.drawOpaque(view);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, graph.depthFramebuffer());  // read != draw, as a host may
         const GlStateSnapshot before = captureGlState();
-        ASSERT_EQ(immediate->render(*plugin, immediateView(s)), fx::ErrorCode::None);
+        ASSERT_EQ(immediate->render(fx::implOf(*plugin), immediateView(s)), fx::ErrorCode::None);
         EXPECT_EQ(before.diff(captureGlState()), "");
         EXPECT_FALSE(immediate->lastPasses().empty());
     }
@@ -410,31 +443,31 @@ TEST_F(ImmediateRendererTest, RefusesWhatItCannotDraw) {
     setMode(kModes[1]);
     glBindFramebuffer(GL_FRAMEBUFFER, graph.colorFramebuffer());
     glViewport(0, 0, kW, kH);
-    EXPECT_EQ(immediate->render(*plugin, immediateView(Source::LinearR32F, 0)), fx::ErrorCode::NullArgument);
-    EXPECT_EQ(immediate->render(*plugin, immediateView(Source::DepthTexture, 0)), fx::ErrorCode::NullArgument);
+    EXPECT_EQ(immediate->render(fx::implOf(*plugin), immediateView(Source::LinearR32F, 0)), fx::ErrorCode::NullArgument);
+    EXPECT_EQ(immediate->render(fx::implOf(*plugin), immediateView(Source::DepthTexture, 0)), fx::ErrorCode::NullArgument);
     HostTarget colourOnly(kW, kH, 0);
-    EXPECT_EQ(immediate->render(*plugin, immediateView(Source::DepthTexture, colourOnly.colour)),
+    EXPECT_EQ(immediate->render(fx::implOf(*plugin), immediateView(Source::DepthTexture, colourOnly.colour)),
               fx::ErrorCode::UnsupportedDepth)
         << "an RGBA8 texture is not a depth texture";
     glBindFramebuffer(GL_FRAMEBUFFER, colourOnly.fbo);
-    EXPECT_EQ(immediate->render(*plugin, immediateView(Source::BoundFramebuffer)), fx::ErrorCode::UnsupportedDepth)
+    EXPECT_EQ(immediate->render(fx::implOf(*plugin), immediateView(Source::BoundFramebuffer)), fx::ErrorCode::UnsupportedDepth)
         << "no depth attachment";
     glBindFramebuffer(GL_FRAMEBUFFER, graph.colorFramebuffer());
     fx::ImmediateView bad = immediateView(Source::BoundFramebuffer);
     bad.mapping.rangeNear = bad.mapping.rangeFar = 0.5f;
-    EXPECT_EQ(immediate->render(*plugin, bad), fx::ErrorCode::InvalidValue);
+    EXPECT_EQ(immediate->render(fx::implOf(*plugin), bad), fx::ErrorCode::InvalidValue);
     bad = immediateView(static_cast<Source>(7));
-    EXPECT_EQ(immediate->render(*plugin, bad), fx::ErrorCode::InvalidValue);
+    EXPECT_EQ(immediate->render(fx::implOf(*plugin), bad), fx::ErrorCode::InvalidValue);
     HostTarget wrongSize(kW / 2, kH / 2, GL_DEPTH_COMPONENT24);
-    EXPECT_EQ(immediate->render(*plugin, immediateView(Source::DepthTexture, wrongSize.depth)),
+    EXPECT_EQ(immediate->render(fx::implOf(*plugin), immediateView(Source::DepthTexture, wrongSize.depth)),
               fx::ErrorCode::SizeMismatch);
     EXPECT_TRUE(host.logged("error[SizeMismatch] immediate render")) << "refusals are logged";
     glViewport(8, 0, kW, kH);
-    EXPECT_EQ(immediate->render(*plugin, immediateView(Source::BoundFramebuffer)), fx::ErrorCode::InvalidView);
+    EXPECT_EQ(immediate->render(fx::implOf(*plugin), immediateView(Source::BoundFramebuffer)), fx::ErrorCode::InvalidView);
     glViewport(0, 0, kW, kH);
     fx::ImmediateView zero = immediateView(Source::None);
     zero.view.width = 0;
-    EXPECT_EQ(immediate->render(*plugin, zero), fx::ErrorCode::InvalidView);
+    EXPECT_EQ(immediate->render(fx::implOf(*plugin), zero), fx::ErrorCode::InvalidView);
     EXPECT_EQ(immediate->targetAllocations(), 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
@@ -449,7 +482,7 @@ TEST_F(FxHostTest, ImmediateFrameCullsUnreadPassesAndProducesDepthBeforeItsFirst
     fx::ImmediateFrameSetup setup;
     setup.width = 64;
     setup.height = 32;
-    setup.produceDepth = [&](uint32_t) {
+    setup.produceDepth = [&](uint32_t, const fx::DepthRegion&) {
         ++produced;
         order.push_back("depth");
     };
@@ -532,7 +565,7 @@ TEST_F(FxHostTest, DISABLED_ImmediateDepthSourceTiming) {
             }
             glFinish();
             const double t1 = seconds();
-            ASSERT_EQ(immediate.render(*plugin, iv), fx::ErrorCode::None);
+            ASSERT_EQ(immediate.render(fx::implOf(*plugin), iv), fx::ErrorCode::None);
             glFinish();
             const double t2 = seconds();
             if (round == 0) continue;  // warm-up (programs, targets)
