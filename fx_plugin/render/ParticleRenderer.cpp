@@ -79,6 +79,18 @@ ParticleRenderer::~ParticleRenderer() {
     classifier_.reset();
 }
 
+void ParticleRenderer::reportLoadErrors(const std::vector<std::string>& errors) {
+    std::string fresh;
+    for (const std::string& e : errors) {
+        const std::string lines = loadErrors_.add(e);
+        if (!lines.empty()) fresh += (fresh.empty() ? "" : "\n") + lines;
+    }
+    if (!fresh.empty()) {
+        log(LogLevel::Error, "fx: shader build failed:\n" + fresh);
+        addShaderDiagnostics(fresh, &loadDiagnostics_);
+    }
+}
+
 void ParticleRenderer::log(LogLevel level, const std::string& message) const {
     if (config_.host) config_.host->log(level, message.c_str());
 }
@@ -113,15 +125,7 @@ bool ParticleRenderer::ensureLoaded() {
         normalsWarned_ = true;
     }
     // One cause fails every variant built from its file (unlit, lit, each soft program): told once.
-    std::string fresh;
-    for (const std::string& e : errors) {
-        const std::string lines = loadErrors_.add(e);
-        if (!lines.empty()) fresh += (fresh.empty() ? "" : "\n") + lines;
-    }
-    if (!fresh.empty()) {
-        log(LogLevel::Error, "fx: shader build failed:\n" + fresh);
-        addShaderDiagnostics(fresh, &loadDiagnostics_);
-    }
+    reportLoadErrors(errors);
     if (programs_->usableTechniques(false) == 0) {
         log(LogLevel::Error, "fx: particle renderer disabled: no particle program built");
         return false;
@@ -238,15 +242,7 @@ bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSt
         std::vector<std::string> errors;
         programs_->buildPowers(powerSteps, &errors);
         // A power's build fails for the cause that failed the soft programs above: not told twice.
-        std::string fresh;
-        for (const std::string& e : errors) {
-            const std::string lines = loadErrors_.add(e);
-            if (!lines.empty()) fresh += (fresh.empty() ? "" : "\n") + lines;
-        }
-        if (!fresh.empty()) {
-            log(LogLevel::Error, "fx: shader build failed:\n" + fresh);
-            addShaderDiagnostics(fresh, &loadDiagnostics_);
-        }
+        reportLoadErrors(errors);
     }
     if (out) out->insert(out->end(), loadDiagnostics_.begin(), loadDiagnostics_.end());
     return ready && loadDiagnostics_.empty();

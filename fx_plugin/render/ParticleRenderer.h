@@ -145,6 +145,9 @@ private:
     bool sizesAgree(PassContext& ctx, const ViewInfo& view, Target first, Target second);
     std::shared_ptr<ViewRecord> acquireRecord();
     void log(LogLevel level, const std::string& message) const;
+    /// Logs the build lines of `errors` not logged before (each once, loadErrors_) and keeps them
+    /// as diagnostics for prepare().
+    void reportLoadErrors(const std::vector<std::string>& errors);
     /// Draws every batch of `record` into the bound target. `sceneDepth` is the linear depth
     /// texture of that target's size (0 when no batch needs it).
     /// `halfZ`: the bound target's own z-buffer was filled (the half-res z-test, or the mixed-res

@@ -321,16 +321,22 @@ ErrorCode viewFrom(const fxPlugin* p, const fxViewDesc* v, const char* function,
     return ErrorCode::None;
 }
 
+/// The view and the frame builder of a declare call, checked (the refusal logged under `function`).
+ErrorCode viewAndFrame(const fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* f, const char* function,
+                       ViewInfo* view) {
+    const ErrorCode bad = viewFrom(p, v, function, view);
+    if (bad != ErrorCode::None) return bad;
+    const std::string frameBad = frameBuilderProblem(f);
+    if (frameBad.empty()) return ErrorCode::None;
+    return refuse(p, f && knownSize(f->size, sizeof *f) ? ErrorCode::NullArgument : ErrorCode::BadDescriptor,
+                  function, frameBad);
+}
+
 int declarePasses(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* f) {
     if (!p) return FX_ERROR_NULL_ARGUMENT;
     ViewInfo view;
-    const ErrorCode bad = viewFrom(p, v, "declarePasses", &view);
+    const ErrorCode bad = viewAndFrame(p, v, f, "declarePasses", &view);
     if (bad != ErrorCode::None) return code(bad);
-    const std::string frameBad = frameBuilderProblem(f);
-    if (!frameBad.empty()) {
-        return code(refuse(p, f && knownSize(f->size, sizeof *f) ? ErrorCode::NullArgument : ErrorCode::BadDescriptor,
-                           "declarePasses", frameBad));
-    }
     CFrameBuilder frame(*f, p->impl->apiErrors());
     return code(impl(p).declarePasses(view, frame));
 }
@@ -339,13 +345,8 @@ int declareShadowPasses(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* 
     if (!p) return FX_ERROR_NULL_ARGUMENT;
     if (out) std::memset(out, 0, sizeof *out);
     ViewInfo view;
-    const ErrorCode bad = viewFrom(p, v, "declareShadowPasses", &view);
+    const ErrorCode bad = viewAndFrame(p, v, f, "declareShadowPasses", &view);
     if (bad != ErrorCode::None) return code(bad);
-    const std::string frameBad = frameBuilderProblem(f);
-    if (!frameBad.empty()) {
-        return code(refuse(p, f && knownSize(f->size, sizeof *f) ? ErrorCode::NullArgument : ErrorCode::BadDescriptor,
-                           "declareShadowPasses", frameBad));
-    }
     CFrameBuilder frame(*f, p->impl->apiErrors());
     const SmokeShadow s = impl(p).declareShadowPasses(view, frame);
     if (out && s.valid()) {

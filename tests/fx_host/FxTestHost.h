@@ -95,6 +95,9 @@ struct Image {
     /// Channel c of pixel (x, y) in [0, 1].
     float value(int x, int y, int c) const { return at(x, y)[c] / 255.0f; }
 };
+/// The RGBA8 pixels of `framebuffer`'s colour attachment 0 (0 = the default one), width x height
+/// from the origin; leaves the read framebuffer at 0.
+Image readFramebuffer(uint32_t framebuffer, int width, int height);
 /// Writes a PNG (top row first) for looking at; returns false when it cannot.
 bool writePng(const std::string& path, const Image& image);
 /// PSNR over RGB, in dB (infinity when equal); `mask` (optional, width*height) selects pixels.

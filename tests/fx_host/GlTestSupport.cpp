@@ -300,6 +300,19 @@ void applyDefaultHostState() {
 
 // ---- images -----------------------------------------------------------------------------------
 
+Image readFramebuffer(uint32_t framebuffer, int width, int height) {
+    Image img;
+    img.width = width;
+    img.height = height;
+    img.rgba.resize(size_t(width) * size_t(height) * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(framebuffer));
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    return img;
+}
+
 bool writePng(const std::string& path, const Image& image) {
     const size_t row = size_t(image.width) * 4;
     std::vector<uint8_t> flipped(image.rgba.size());

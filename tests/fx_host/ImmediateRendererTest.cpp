@@ -80,18 +80,6 @@ struct HostTarget {
     }
 };
 
-Image readFramebuffer(GLuint fbo, int w, int h) {
-    Image img;
-    img.width = w;
-    img.height = h;
-    img.rgba.resize(size_t(w) * size_t(h) * 4);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    return img;
-}
 
 class ImmediateRendererTest : public PluginHostTest {
 protected:

@@ -243,18 +243,7 @@ void TestFrameGraph::setSceneDepthSampling(int minFilter, int magFilter, int max
     glBindTexture(GL_TEXTURE_2D, 0);
 }
 
-Image TestFrameGraph::readColor() const {
-    Image img;
-    img.width = width_;
-    img.height = height_;
-    img.rgba.resize(size_t(width_) * size_t(height_) * 4);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, colorFbo_);
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    return img;
-}
+Image TestFrameGraph::readColor() const { return readFramebuffer(colorFbo_, width_, height_); }
 
 std::vector<float> TestFrameGraph::readLinearDepth() const {
     std::vector<float> depth(size_t(width_) * size_t(height_));
