@@ -164,6 +164,55 @@ TEST_F(PoisonedHostTest, EveryTechniqueIgnoresEachPoisonedState) {
                 names.c_str());
 }
 
+// The immediate path (Plugin::renderView, API 2) under each poison: the host draws its scene into
+// its framebuffer (colour + its own z-buffer), is poisoned, and calls renderView once with the
+// depth left in that framebuffer; the plugin copies and linearises it itself. The picture equals
+// the clean host's bit for bit and the host's state reads back unchanged.
+TEST_F(PoisonedHostTest, TheImmediatePathIgnoresEachPoisonedState) {
+    const GLuint fbo = graph.colorFramebuffer();
+    auto immediateFrame = [&](const std::function<void()>* poison) {
+        problems_.clear();
+        resetHostState();
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        scene.drawOpaque(view);
+        resetHostState();
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        glViewport(0, 0, kW, kH);
+        if (poison) (*poison)();
+        // Where to draw is the call's input, not a leftover: the draw framebuffer and the viewport
+        // are put back after the poisons that move them (the read framebuffer, programs, textures
+        // and buffers they bind stay poisoned).
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
+        glViewport(0, 0, kW, kH);
+        drainGlErrors("poisoning");
+        errorsBefore_ = glErrorCount();
+        snapshot_ = readHostState();
+        EXPECT_EQ(plugin->renderView(view, fx::HostDepth{}), fx::ErrorCode::None);
+        end("renderView");
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        return readFramebuffer(fbo, kW, kH);
+    };
+    for (const Mode& m : {kModes[0], kModes[1], kModes[2], kModes[4], kModes[6], kModes[7]}) {
+        setMode(m);
+        const Image clean = immediateFrame(nullptr);
+        ASSERT_TRUE(problems_.empty()) << m.label << " (clean host):\n" << problems_;
+        ASSERT_GT(maxAbsDiff(clean, render(false)), 0) << m.label << ": nothing drawn, the test would prove nothing";
+        int changed = 0;
+        for (const HostPoison& p : hostPoisons()) {
+            const Image img = immediateFrame(&p.apply);
+            EXPECT_TRUE(problems_.empty()) << m.label << ", poisoned " << p.name << ":\n" << problems_;
+            EXPECT_EQ(maxAbsDiff(img, clean), 0) << m.label << ": poisoned " << p.name << " reached the image";
+            changed += maxAbsDiff(img, clean) != 0;
+        }
+        const std::function<void()> all = allPoisons();
+        const Image img = immediateFrame(&all);
+        EXPECT_TRUE(problems_.empty()) << m.label << ", all poisons at once:\n" << problems_;
+        EXPECT_EQ(maxAbsDiff(img, clean), 0) << m.label << ": all poisons at once reached the image";
+        std::printf("[ measured ] renderView %-28s %d of %zu poisons changed the image; all at once: max diff %d\n",
+                    m.label, changed, hostPoisons().size(), maxAbsDiff(img, clean));
+    }
+}
+
 // prepareGl (the atlas, ramp and normal uploads, every program) under each poison: a fresh
 // plugin per poison, its first frame compared with a plugin prepared by a clean host.
 TEST_F(PoisonedHostTest, PrepareGlUnderEachPoisonUploadsTheSameData) {
