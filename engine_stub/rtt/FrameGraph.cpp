@@ -384,6 +384,12 @@ bool FrameGraph::isKept(const char* name) const {
     return false;
 }
 
+bool FrameGraph::declared(const char* name) const {
+    for (uint32_t i = 0; i < passCount_; ++i)
+        if (passes_[i].name == name) return true;
+    return false;
+}
+
 // --- PassBuilder -------------------------------------------------------------------------------
 
 FrameGraphResource PassBuilder::read(FrameGraphResource target) {

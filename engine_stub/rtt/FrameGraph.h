@@ -108,8 +108,12 @@ public:
     const char* timingMethod() const { return timer_.method(); }
     const PassTimer& timer() const { return timer_; }
     RenderTargetPool& pool() const { return pool_; }
-    /// True when the pass named `name` was kept by the last compile().
+    /// True when the pass named `name` was kept by the last compile(); false when it was culled
+    /// or never declared: a check by name asserts declared() first, so that a renamed pass fails
+    /// the check instead of passing it vacuously.
     bool isKept(const char* name) const;
+    /// True when a pass named `name` was declared since the last reset (kept or culled).
+    bool declared(const char* name) const;
 
 private:
     friend class PassBuilder;

@@ -1,6 +1,8 @@
 // engine_stub's fx::FrameBuilder adapter over the frame graph.
 #include <gtest/gtest.h>
 
+#include "PassChecks.h"
+
 #include "GlTestContext.h"
 #include "scene/FxFrameBuilder.h"
 #include "rtt/RenderTargetPool.h"
@@ -41,8 +43,8 @@ TEST_F(FxFrameBuilderTest, RelativePluginTargetsFollowTheViewNotThePoolsMainView
     pool.endFrame();
     EXPECT_EQ(seenW, 48);
     EXPECT_EQ(seenH, 17);  // ceil(33 / 2)
-    EXPECT_TRUE(graph.isKept("mirror.particles_quarter"));
-    EXPECT_TRUE(graph.isKept("depth"));  // kept because the plugin's pass reads scene depth
+    EXPECT_TRUE(passKept(graph, "mirror.particles_quarter"));
+    EXPECT_TRUE(passKept(graph, "depth"));  // kept because the plugin's pass reads scene depth
     // Textures cross the boundary typed: name, format and size.
     EXPECT_NE(ref.name, 0u);
     EXPECT_EQ(ref.format, fx::TargetFormat::RGBA8);
