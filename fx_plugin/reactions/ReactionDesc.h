@@ -188,10 +188,16 @@ constexpr int kMaxNesting = 16;                  ///< collection levels in a fil
 constexpr size_t kMaxFileBytes = 4u << 20;       ///< 4 MiB
 constexpr size_t kMaxDiagnosticsPerFile = 100;   ///< then one TooManyErrors
 
+/// The words of a reaction file's enums, indexed by the enum's value (ReactionNames.cpp): the
+/// loader accepts exactly these and the editor schema offers exactly these. Techniques:
+/// TechniqueTable.h.
+const std::vector<std::string>& reactionTypeWords();
+const std::vector<std::string>& wheelSetWords();
+const std::vector<std::string>& blendModeWords();
+const std::vector<std::string>& surfaceWords();  ///< Surface::Count words
 const char* reactionTypeName(ReactionType type);
 const char* wheelSetName(WheelSet wheels);
 const char* blendModeName(BlendMode blend);
-const char* techniqueName(Technique technique);
 const char* surfaceName(Surface surface);
 
 }  // namespace fx

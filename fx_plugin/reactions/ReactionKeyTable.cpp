@@ -2,6 +2,8 @@
 
 #include <charconv>
 
+#include "reactions/TechniqueTable.h"
+
 namespace fx {
 namespace {
 
@@ -20,16 +22,28 @@ ReactionKeyInfo key(const char* path, Kind kind, double lo, double hi, const cha
     return k;
 }
 
+// "hard sprites, soft particles (depth fade), ... or mega-particles (...)": the table's names.
+std::string techniqueHelp() {
+    std::string help;
+    const std::vector<TechniqueRow>& rows = techniqueTable();
+    for (size_t i = 0; i < rows.size(); ++i) {
+        help += (i == 0 ? "" : i + 1 == rows.size() ? " or " : ", ") + std::string(rows[i].displayName);
+    }
+    return help;
+}
+
 std::vector<ReactionKeyInfo> buildTable() {
-    const std::vector<std::string> surfaces = {"asphalt", "kerb", "grass", "gravel", "sand"};
+    // Enum words: ReactionNames.cpp and TechniqueTable.cpp, the lists the loader parses with.
+    const std::vector<std::string>& surfaces = surfaceWords();
+    const std::string techniques = techniqueHelp();
     // Ranges: the literals of ReactionSchema.cpp; meanings: reactions/README.md.
     return {
         key("name", Kind::Name, 1, 64, "", "unique name; a reaction keeps its live particles across a reload when its name and capacity stay the same"),
         key("type", Kind::Choice, 0, 0, "", "what drives it: wheel slip (wheel_smoke), speed on loose ground (dust) or a collision (collision_burst)",
-            {"wheel_smoke", "dust", "collision_burst"}),
+            reactionTypeWords()),
         key("trigger.slip_threshold", Kind::Number, 0.0, 1.0, "slip fraction", "combined wheel slip at which emission starts"),
         key("trigger.surfaces", Kind::ChoiceList, 1, 8, "", "ground under the wheel that emits", surfaces),
-        key("trigger.wheels", Kind::Choice, 0, 0, "", "which wheels emit", {"rear", "front", "all"}),
+        key("trigger.wheels", Kind::Choice, 0, 0, "", "which wheels emit", wheelSetWords()),
         key("trigger.min_speed", Kind::Number, 0.0, 200.0, "m/s", "hub speed below which a wheel emits nothing"),
         key("trigger.collision_threshold", Kind::Number, 0.0, 1.0, "collision amount", "collision_burst only: amount that fires a burst"),
         key("emission.rate", Kind::Number, 0.0, 100000.0, "particles/s per wheel", "emission at full strength (wheel_smoke, dust)"),
@@ -53,10 +67,9 @@ std::vector<ReactionKeyInfo> buildTable() {
             "colour over life, piecewise linear; t in [0, 1] non-decreasing, rgba each in [0, 1], straight alpha; two stops with one t make a hard step"),
         key("particle.atlas", Kind::IntegerPair, 0, 4, "frames",
             "[first, count] frames of the 2x2 smoke atlas picked at random per particle: first in [0, 3], count in [1, 4], first + count <= 4"),
-        key("render.technique", Kind::Choice, 0, 0, "", "hard sprites, soft particles (depth fade), spherical billboards (ray length through a sphere) or mega-particles (blurred spheres as one volume)",
-            {"hard", "soft", "spherical", "mega"}),
+        key("render.technique", Kind::Choice, 0, 0, "", techniques.c_str(), techniqueWords()),
         key("render.blend", Kind::Choice, 0, 0, "", "how particles combine with what is behind them; additive is order-independent",
-            {"alpha", "premultiplied", "additive"}),
+            blendModeWords()),
         key("render.softness", Kind::Number, 1.0e-6, 1.0e6, "m", "depth difference over which the soft fade reaches 1 (the shader's scale is 1/softness)"),
         key("render.contrast_power", Kind::Number, 0.1, 16.0, "", "exponent of the soft-fade contrast curve; 1 = linear"),
         key("render.near_fade", Kind::Number, 0.0, 100.0, "m", "distance in front of the near plane over which particles fade out"),
@@ -134,7 +147,7 @@ std::string reactionValueText(const ReactionDesc& d, const std::string& k) {
         return "[" + s + "]";
     }
     if (k == "particle.atlas") return pair(std::to_string(p.atlasFirst), std::to_string(p.atlasCount));
-    if (k == "render.technique") return techniqueName(r.technique);
+    if (k == "render.technique") return techniqueRow(r.technique, r.stateless).word;
     if (k == "render.blend") return blendModeName(r.blend);
     if (k == "render.softness") return num(r.softness);
     if (k == "render.contrast_power") return num(r.contrastPower);

@@ -1,58 +1,41 @@
-// Spellings of the enum words, shared by the loader (parsing), messages and README examples.
+// Spellings of the enum words of reaction files, one list per enum indexed by its value: the
+// loader (parsing, messages), the editor schema (ReactionKeyTable) and reactionValue all read
+// these lists, so a word the loader accepts is always a word the schema offers. Techniques have
+// their own table (TechniqueTable.h): a technique word carries more than its enum value.
 #include "reactions/ReactionDesc.h"
 
 namespace fx {
+namespace {
 
-const char* reactionTypeName(ReactionType type) {
-    switch (type) {
-    case ReactionType::WheelSmoke: return "wheel_smoke";
-    case ReactionType::Dust: return "dust";
-    case ReactionType::CollisionBurst: return "collision_burst";
-    case ReactionType::CollisionScrape: return "collision_scrape";
-    case ReactionType::OnDemand: return "on_demand";
-    }
-    return "?";
+const char* wordOf(const std::vector<std::string>& words, int i) {
+    return i >= 0 && size_t(i) < words.size() ? words[size_t(i)].c_str() : "?";
 }
 
-const char* wheelSetName(WheelSet wheels) {
-    switch (wheels) {
-    case WheelSet::Rear: return "rear";
-    case WheelSet::Front: return "front";
-    case WheelSet::All: return "all";
-    }
-    return "?";
+}  // namespace
+
+const std::vector<std::string>& reactionTypeWords() {
+    static const std::vector<std::string> words = {"wheel_smoke", "dust", "collision_burst", "collision_scrape", "on_demand"};
+    return words;
 }
 
-const char* blendModeName(BlendMode blend) {
-    switch (blend) {
-    case BlendMode::Alpha: return "alpha";
-    case BlendMode::Premultiplied: return "premultiplied";
-    case BlendMode::Additive: return "additive";
-    }
-    return "?";
+const std::vector<std::string>& wheelSetWords() {
+    static const std::vector<std::string> words = {"rear", "front", "all"};
+    return words;
 }
 
-const char* techniqueName(Technique technique) {
-    switch (technique) {
-    case Technique::FromReaction: return "from_reaction";
-    case Technique::Hard: return "hard";
-    case Technique::Soft: return "soft";
-    case Technique::Spherical: return "spherical";
-    case Technique::Mega: return "mega";
-    }
-    return "?";
+const std::vector<std::string>& blendModeWords() {
+    static const std::vector<std::string> words = {"alpha", "premultiplied", "additive"};
+    return words;
 }
 
-const char* surfaceName(Surface surface) {
-    switch (surface) {
-    case Surface::Asphalt: return "asphalt";
-    case Surface::Kerb: return "kerb";
-    case Surface::Grass: return "grass";
-    case Surface::Gravel: return "gravel";
-    case Surface::Sand: return "sand";
-    case Surface::Count: break;
-    }
-    return "?";
+const std::vector<std::string>& surfaceWords() {
+    static const std::vector<std::string> words = {"asphalt", "kerb", "grass", "gravel", "sand"};
+    return words;
 }
+
+const char* reactionTypeName(ReactionType type) { return wordOf(reactionTypeWords(), int(type)); }
+const char* wheelSetName(WheelSet wheels) { return wordOf(wheelSetWords(), int(wheels)); }
+const char* blendModeName(BlendMode blend) { return wordOf(blendModeWords(), int(blend)); }
+const char* surfaceName(Surface surface) { return wordOf(surfaceWords(), int(surface)); }
 
 }  // namespace fx

@@ -2,16 +2,18 @@
 
 #include <string>
 
+#include "reactions/TechniqueTable.h"
+
 namespace fx {
 namespace {
 
 using YAML::Node;
 
-constexpr std::initializer_list<const char*> kTypeWords = {"wheel_smoke", "dust",
-                                                           "collision_burst", "collision_scrape",
-                                                           "on_demand"};
-constexpr std::initializer_list<const char*> kSurfaceWords = {"asphalt", "kerb", "grass",
-                                                              "gravel", "sand"};
+std::string joined(const std::vector<std::string>& words) {
+    std::string list;
+    for (const std::string& w : words) list += (list.empty() ? "" : "|") + w;
+    return list;
+}
 
 std::string indexed(const std::string& path, size_t i) {
     return path + "[" + std::to_string(i) + "]";
@@ -59,7 +61,7 @@ void optRange(YamlCheck& c, const MapReader& m, const char* key, double lo, doub
 
 template <class Enum>
 void optChoice(YamlCheck& c, const MapReader& m, const char* key,
-               std::initializer_list<const char*> words, Enum first, Enum* out) {
+               const std::vector<std::string>& words, Enum first, Enum* out) {
     const Node* n = m.get(key);
     int i = 0;
     if (n && c.choice(*n, m.path(key), words, &i)) {
@@ -74,7 +76,7 @@ void readTrigger(YamlCheck& c, const Node& node, const std::string& path, Trigge
     optNumber(c, m, "slip_threshold", 0.0, 1.0, &t->slipThreshold);
     optNumber(c, m, "min_speed", 0.0, 200.0, &t->minSpeed);
     optNumber(c, m, "collision_threshold", 0.0, 1.0, &t->collisionThreshold);
-    optChoice(c, m, "wheels", {"rear", "front", "all"}, WheelSet::Rear, &t->wheels);
+    optChoice(c, m, "wheels", wheelSetWords(), WheelSet::Rear, &t->wheels);
     if (const Node* n = m.get("surfaces")) {
         const std::string p = m.path("surfaces");
         if (c.isList(*n, p, 1, 8)) {
@@ -83,7 +85,7 @@ void readTrigger(YamlCheck& c, const Node& node, const std::string& path, Trigge
             size_t i = 0;
             for (auto it = n->begin(); it != n->end(); ++it, ++i) {
                 int s = 0;
-                if (c.choice(*it, indexed(p, i), kSurfaceWords, &s)) {
+                if (c.choice(*it, indexed(p, i), surfaceWords(), &s)) {
                     mask |= surfaceBit(static_cast<Surface>(s));
                 } else {
                     ok = false;
@@ -274,14 +276,13 @@ void readRender(YamlCheck& c, const Node& node, const std::string& path, RenderD
                  "sort_back_to_front"});
     if (const Node* n = m.get("technique")) {
         int i = 0;
-        if (c.choice(*n, m.path("technique"), {"hard", "soft", "spherical", "stateless", "mega"}, &i)) {
-            r->stateless = i == 3;
-            r->technique = r->stateless ? Technique::Hard
-                         : i == 4       ? Technique::Mega
-                                        : static_cast<Technique>(static_cast<int>(Technique::Hard) + i);
+        if (c.choice(*n, m.path("technique"), techniqueWords(), &i)) {
+            const TechniqueRow& row = techniqueTable()[size_t(i)];
+            r->stateless = row.stateless;
+            r->technique = row.technique;
         }
     }
-    optChoice(c, m, "blend", {"alpha", "premultiplied", "additive"}, BlendMode::Alpha, &r->blend);
+    optChoice(c, m, "blend", blendModeWords(), BlendMode::Alpha, &r->blend);
     optNumber(c, m, "softness", 1.0e-6, 1.0e6, &r->softness);
     optNumber(c, m, "contrast_power", 0.1, 16.0, &r->contrastPower);
     optNumber(c, m, "near_fade", 0.0, 100.0, &r->nearFade);
@@ -403,10 +404,10 @@ void readReaction(YamlCheck& c, const Node& node, const std::string& path, bool 
     ReactionType type = ReactionType::WheelSmoke;
     if (const Node* n = m.get("type")) {
         int i = 0;
-        if (c.choice(*n, m.path("type"), kTypeWords, &i)) type = static_cast<ReactionType>(i);
+        if (c.choice(*n, m.path("type"), reactionTypeWords(), &i)) type = static_cast<ReactionType>(i);
     } else {
         c.report(ErrorCode::MissingKey, node.Mark(), m.path("type"),
-                 "missing required key 'type'; expected one of wheel_smoke|dust|collision_burst|collision_scrape|on_demand");
+                 "missing required key 'type'; expected one of " + joined(reactionTypeWords()));
     }
     ReactionDesc d = defaultReaction(type);
     d.sourceFile = c.file();

@@ -279,15 +279,15 @@ bool YamlCheck::boolean(const YAML::Node& node, const std::string& key, bool* ou
 }
 
 bool YamlCheck::choice(const YAML::Node& node, const std::string& key,
-                       std::initializer_list<const char*> words, int* out) {
+                       const std::vector<std::string>& words, int* out) {
     std::string list;
-    for (const char* w : words) list += (list.empty() ? "" : "|") + std::string(w);
+    for (const std::string& w : words) list += (list.empty() ? "" : "|") + w;
     if (!node.IsScalar()) {
         wrongType(node, key, "one of " + list);
         return false;
     }
     int i = 0;
-    for (const char* w : words) {
+    for (const std::string& w : words) {
         if (node.Scalar() == w) {
             *out = i;
             return true;

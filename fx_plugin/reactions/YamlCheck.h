@@ -44,7 +44,7 @@ public:
     bool boolean(const YAML::Node& node, const std::string& key, bool* out);
     /// One of `words` (exact spelling); stores its index.
     bool choice(const YAML::Node& node, const std::string& key,
-                std::initializer_list<const char*> words, int* out);
+                const std::vector<std::string>& words, int* out);
     /// A reaction name: 1-64 characters of [A-Za-z0-9_.-].
     bool name(const YAML::Node& node, const std::string& key, std::string* out);
 

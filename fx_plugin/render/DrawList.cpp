@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "ViewFrustum.h"
+#include "reactions/TechniqueTable.h"
 
 namespace fx {
 
@@ -70,7 +71,7 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
         batch.nearFade = render.nearFade;
         batch.lighting = in.desc->lighting;
         out->batches.push_back(batch);
-        if (technique != Technique::Hard) out->needsSceneDepth = true;
+        if (techniqueRow(technique, false).needsSceneDepth) out->needsSceneDepth = true;
     }
 }
 

@@ -13,6 +13,7 @@
 #include "GlStateGuard.h"
 #include "ImmediateFrame.h"
 #include "ShaderLoader.h"
+#include "reactions/TechniqueTable.h"
 #include "src/ApiErrors.h"
 
 namespace fx {
@@ -324,7 +325,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     const Target color = frame.sceneColor();
     if (!(classify_ && countClasses_)) counts_ = FadeClassCounts{};
     bool spheres = false;
-    for (const DrawBatch& batch : record->list.batches) spheres = spheres || batch.technique == Technique::Spherical;
+    for (const DrawBatch& batch : record->list.batches) spheres = spheres || techniqueRow(batch.technique, false).raySphere;
     const QuarterResPath::Footprint footprint =
         spheres ? QuarterResPath::Footprint::Box : QuarterResPath::Footprint::Billboard;
     if (!quarterRes) {

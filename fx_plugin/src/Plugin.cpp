@@ -5,6 +5,7 @@
 
 #include "PluginImpl.h"
 #include "../reactions/ReactionKeyTable.h"
+#include "../reactions/TechniqueTable.h"
 #include "../render/InstallParticleRenderer.h"
 
 namespace fx {
@@ -294,7 +295,7 @@ ReactionStats PluginImpl::reactionStats(int index) const {
     }
     const ReactionRuntime& r = runtimes_[static_cast<size_t>(index)];
     s.name = r.name();
-    s.technique = r.stateless() ? "stateless" : techniqueName(r.desc().render.technique);
+    s.technique = techniqueRow(r.desc().render.technique, r.stateless()).word;
     s.alive = r.alive();
     s.emitted = r.counters().emitted;
     s.dropped = r.counters().dropped;

@@ -230,19 +230,101 @@ TEST_F(EditSessionTest, ASaveThatCannotWriteSaysWhereAndKeepsTheEdits) {
     EXPECT_EQ(value("particle.drag"), "2.5");
 }
 
-TEST_F(EditSessionTest, TheSchemaTablesWordsAreTheLoadersWords) {
+// The shipped files plus one stateless reaction of its own (the shipped ones are layers, which
+// the edit session does not edit): burnout_smoke takes every enum word but `stateless`, which
+// the loader allows only with additive blending and no turbulence or vortex.
+class EnumWordTest : public EditSessionTest {
+protected:
+    void SetUp() override {
+        writeFile(copy.file("stateless_sparks.yaml"),
+                  "reactions:\n"
+                  "  - name: stateless_sparks\n"
+                  "    type: collision_burst\n"
+                  "    emission: {burst: 64, capacity: 256}\n"
+                  "    render:\n"
+                  "      technique: stateless\n"
+                  "      blend: additive\n");
+        EditSessionTest::SetUp();
+    }
+    static std::string hostOf(const std::string& key, const std::string& word) {
+        return key == "render.technique" && word == "stateless" ? "stateless_sparks" : "burnout_smoke";
+    }
+};
+
+// The words an InvalidEnum message lists: "... expected one of a|b|c, got 'x'".
+std::vector<std::string> wordsInMessage(const std::string& error) {
+    const std::string from = "expected one of ";
+    const size_t begin = error.find(from);
+    if (begin == std::string::npos) return {};
+    const size_t end = error.find(", got", begin);
+    std::vector<std::string> words;
+    std::string list = error.substr(begin + from.size(), end - begin - from.size()) + "|";
+    for (size_t at = 0, bar; (bar = list.find('|', at)) != std::string::npos; at = bar + 1) words.push_back(list.substr(at, bar - at));
+    return words;
+}
+
+// Both directions: every word the schema offers loads, and the loader accepts no word the
+// schema leaves out (its refusal lists exactly the schema's words, in the schema's order).
+// Before the technique table the schema left out `stateless` (and the types collision_scrape
+// and on_demand) although the loader took them.
+TEST_F(EnumWordTest, TheSchemaTablesWordsAreTheLoadersWords) {
     std::string error;
+    int keys = 0;
     for (const fx::ReactionKeyInfo& k : plugin->reactionSchema()) {
         if (k.kind != fx::ReactionKeyInfo::Kind::Choice && k.kind != fx::ReactionKeyInfo::Kind::ChoiceList) continue;
+        ++keys;
         ASSERT_FALSE(k.choices.empty()) << k.key;
         const bool list = k.kind == fx::ReactionKeyInfo::Kind::ChoiceList;
         for (const std::string& word : k.choices) {
-            EXPECT_TRUE(session->set(burnout, k.key, list ? "[" + word + "]" : word, &error)) << k.key << " = " << word << ": " << error;
+            const int host = reactionIndex(*plugin, hostOf(k.key, word));
+            ASSERT_GE(host, 0) << hostOf(k.key, word);
+            EXPECT_TRUE(session->set(host, k.key, list ? "[" + word + "]" : word, &error)) << k.key << " = " << word << ": " << error;
+            ASSERT_TRUE(session->revert(session->documentOf(host), &error)) << error;
         }
         EXPECT_FALSE(session->set(burnout, k.key, list ? "[not_a_word]" : "not_a_word", &error)) << k.key;
         EXPECT_NE(error.find("error[InvalidEnum]"), std::string::npos) << k.key << ": " << error;
+        EXPECT_EQ(wordsInMessage(error), k.choices) << k.key << ": the loader's words are not the schema's: " << error;
         ASSERT_TRUE(session->revert(session->documentOf(burnout), &error)) << error;
     }
+    EXPECT_EQ(keys, 5) << "type, trigger.surfaces, trigger.wheels, render.technique, render.blend";
+}
+
+// Every enum word from a file through the loader, reactionValue, a saved file and a fresh load:
+// the running value reads back the word that was written (a stateless reaction read `hard`).
+TEST_F(EnumWordTest, EveryEnumWordRoundTripsThroughTheLoaderReactionValueAndASavedFile) {
+    std::string error;
+    for (const fx::ReactionKeyInfo& k : plugin->reactionSchema()) {
+        if (k.kind != fx::ReactionKeyInfo::Kind::Choice && k.kind != fx::ReactionKeyInfo::Kind::ChoiceList) continue;
+        const bool list = k.kind == fx::ReactionKeyInfo::Kind::ChoiceList;
+        const std::string before = value(k.key);
+        for (const std::string& word : k.choices) {
+            const std::string name = hostOf(k.key, word), text = list ? "[" + word + "]" : word;
+            const int host = reactionIndex(*plugin, name);
+            ASSERT_GE(host, 0) << name;
+            ASSERT_TRUE(session->set(host, k.key, text, &error)) << k.key << " = " << word << ": " << error;
+            EXPECT_EQ(plugin->reactionValue(host, k.key), text) << k.key;
+            const int doc = session->documentOf(host);
+            ASSERT_TRUE(session->save(doc, &error)) << error;
+            EXPECT_NE(readFile(session->documents()[size_t(doc)].path).find(k.key.substr(k.key.rfind('.') + 1) + ": " + text),
+                      std::string::npos) << k.key << " = " << word << " is in the saved file";
+
+            cube::Game fresh;
+            ASSERT_TRUE(fresh.Init(options(copy.dir()), &error)) << error;
+            fx::Plugin& reloaded = *fresh.specialFX().plugin();
+            const int index = reactionIndex(reloaded, name);
+            ASSERT_GE(index, 0) << name;
+            EXPECT_EQ(reloaded.reactionValue(index, k.key), text) << k.key << " after a save and a fresh load";
+        }
+        ASSERT_TRUE(session->set(burnout, k.key, before, &error)) << error;  // the next key starts from the shipped value
+    }
+}
+
+// The shipped stateless sparks (barrier_scrape.yaml) read `stateless` in the panel, not `hard`.
+TEST_F(EditSessionTest, AStatelessReactionReadsStateless) {
+    const int sparks = reactionIndex(*plugin, "barrier_scrape.sparks");
+    ASSERT_GE(sparks, 0);
+    EXPECT_EQ(plugin->reactionValue(sparks, "render.technique"), "stateless");
+    EXPECT_EQ(value("render.technique"), "soft");
 }
 
 TEST_F(EditSessionTest, HotReloadOfAnotherFileKeepsTheEditedText) {
