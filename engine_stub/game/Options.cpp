@@ -1,5 +1,7 @@
 #include "game/Options.h"
 
+#include "game/TechniqueModes.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -290,8 +292,10 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
         } else if (a == "--mode") {
             if (!need(i, 1, a)) return false;
             std::string v = argv[++i];
-            if (v != "hard" && v != "soft" && v != "spherical" && v != "mega" && v != "reaction") {
-                *error = "--mode: expected hard, soft, spherical, mega or reaction, got '" + v + "'";
+            if (!findTechniqueMode(v)) {
+                std::string words;
+                for (const TechniqueMode& m : kTechniqueModes) words += std::string(words.empty() ? "" : ", ") + m.word;
+                *error = "--mode: expected one of " + words + ", got '" + v + "'";
                 return false;
             }
             o.mode = v;

@@ -29,7 +29,7 @@ struct Options {
     bool window = false;
     std::string statsJson;
     FxPath fx = FxPath::Plugin;
-    std::string mode = "reaction";  ///< hard | soft | spherical | reaction (each reaction's own)
+    std::string mode = "reaction";  ///< a TechniqueModes.h word: reaction (each reaction's own), hard, soft, ...
     bool prepassEqual = false;
     /// --fx-depth zbuffer: the plugin draws through API 2's immediate path and reads the engine's
     /// own z-buffer (copied and linearised by the plugin) instead of the linear R32F scene depth.

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "game/Game.h"
+#include "game/TechniqueModes.h"
 #include "game/Trace.h"
 #include "rtt/Blit.h"
 #include "rtt/Readback.h"
@@ -24,25 +25,12 @@ void Render::handleKeys(Game& game) {
     if (p.keyPressed(Key::B)) ro.bilinearUpsample = !ro.bilinearUpsample;
     if (p.keyPressed(Key::M)) {
         // FromReaction -> Hard -> Soft -> Spherical -> Mega -> FromReaction
-        ro.techniqueOverride = fx::Technique((int(ro.techniqueOverride) + 1) % 5);
+        ro.techniqueOverride = fx::Technique((size_t(ro.techniqueOverride) + 1) % kTechniqueModeCount);
     }
     if (p.keyPressed(Key::H)) o.hud = !o.hud;
     if (p.keyPressed(Key::E)) game.fireExplosionAtCar();
     if (plugin) plugin->setRenderOptions(ro);
 }
-
-namespace {
-const char* techniqueLabel(fx::Technique t) {
-    switch (t) {
-        case fx::Technique::FromReaction: return "per reaction";
-        case fx::Technique::Hard: return "hard";
-        case fx::Technique::Soft: return "soft";
-        case fx::Technique::Spherical: return "spherical";
-        case fx::Technique::Mega: return "mega";
-    }
-    return "?";
-}
-}  // namespace
 
 void Render::Dyn(Game& game) {
     Trace::call("Render::Dyn");
@@ -78,7 +66,7 @@ void Render::Dyn(Game& game) {
         const fx::RenderOptions ro = settings.plugin ? settings.plugin->renderOptions() : fx::RenderOptions{};
         std::snprintf(text, sizeof text, "%s  %s%s%s  t=%.2fs  particles %d",
                       game.specialFX_.path() == FxPath::Legacy ? "legacy smoke" : "fx plugin",
-                      settings.plugin ? techniqueLabel(ro.techniqueOverride) : "hard sprites",
+                      settings.plugin ? techniqueMode(ro.techniqueOverride).label : "hard sprites",
                       settings.prepassEqual ? " +prepass-EQUAL" : "",
                       ro.quarterRes ? (ro.bilinearUpsample ? " +quarter(bilinear)" : " +quarter") : "",
                       game.time_, game.specialFX_.particlesAlive());

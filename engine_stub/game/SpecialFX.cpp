@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "game/TechniqueModes.h"
 #include "game/Trace.h"
 #include "game/Vehicle.h"
 #include "gl/Paths.h"
@@ -69,11 +70,8 @@ bool SpecialFX::Init(const Options& options, cubeScene& scene, fx::HostAdapter* 
             return false;
         }
         fx::RenderOptions ro;
-        ro.techniqueOverride = options.mode == "hard"        ? fx::Technique::Hard
-                               : options.mode == "soft"      ? fx::Technique::Soft
-                               : options.mode == "spherical" ? fx::Technique::Spherical
-                               : options.mode == "mega"      ? fx::Technique::Mega
-                                                             : fx::Technique::FromReaction;
+        const TechniqueMode* mode = findTechniqueMode(options.mode);  // Options checked the word
+        ro.techniqueOverride = mode ? mode->technique : fx::Technique::FromReaction;
         ro.quarterRes = options.quarterRes || options.bilinearUpsample;
         ro.bilinearUpsample = options.bilinearUpsample;
         plugin_->setRenderOptions(ro);

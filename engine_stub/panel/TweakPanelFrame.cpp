@@ -8,6 +8,8 @@
 
 #include <imgui.h>
 
+#include "game/TechniqueModes.h"
+
 namespace cube {
 
 void TweakPanel::buildFrameWindow(Game& game) {
@@ -20,9 +22,10 @@ void TweakPanel::buildFrameWindow(Game& game) {
 
     if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) {
         fx::RenderOptions ro = plugin_->renderOptions();
-        const char* techniques[] = {"per reaction", "hard", "soft", "spherical", "mega"};
+        const char* techniques[kTechniqueModeCount];
+        for (size_t i = 0; i < kTechniqueModeCount; ++i) techniques[i] = kTechniqueModes[i].label;
         int t = int(ro.techniqueOverride);
-        bool changed = ImGui::Combo("technique", &t, techniques, 5);
+        bool changed = ImGui::Combo("technique", &t, techniques, int(kTechniqueModeCount));
         note("technique");
         ro.techniqueOverride = fx::Technique(t);
         ImGui::Checkbox("prepass-EQUAL", &game.options().prepassEqual);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "game/Options.h"
+#include "game/TechniqueModes.h"
 
 using cube::Options;
 
@@ -63,6 +64,24 @@ TEST(Options, ModeMegaParses) {
     Options bad;
     EXPECT_FALSE(parse({"--mode", "megaa"}, &bad, &err));
     EXPECT_NE(err.find("mega"), std::string::npos) << err;  // the message lists it
+}
+
+// Every override word of the table parses to its technique, and --help and the refusal list it.
+TEST(Options, EveryTechniqueModeWordParsesAndIsListed) {
+    std::string err;
+    Options bad;
+    EXPECT_FALSE(parse({"--mode", "not_a_mode"}, &bad, &err));
+    for (const cube::TechniqueMode& m : cube::kTechniqueModes) {
+        Options o;
+        std::string e;
+        ASSERT_TRUE(parse({"--mode", m.word}, &o, &e)) << m.word << ": " << e;
+        EXPECT_EQ(o.mode, m.word);
+        ASSERT_NE(cube::findTechniqueMode(o.mode), nullptr);
+        EXPECT_EQ(cube::findTechniqueMode(o.mode)->technique, m.technique);
+        EXPECT_EQ(&cube::techniqueMode(m.technique), &m) << m.word << ": row i is fx::Technique(i)";
+        EXPECT_NE(err.find(m.word), std::string::npos) << err;
+        EXPECT_NE(cube::usage().find(m.word), std::string::npos) << m.word << " is missing from --help";
+    }
 }
 
 TEST(Options, BadValuesAreRejectedNamingTheFlag) {
