@@ -2,6 +2,7 @@
 // validation, saves rewrite only the changed characters, undo/redo, revert, disk changes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
@@ -316,6 +317,28 @@ TEST_F(EnumWordTest, EveryEnumWordRoundTripsThroughTheLoaderReactionValueAndASav
             EXPECT_EQ(reloaded.reactionValue(index, k.key), text) << k.key << " after a save and a fresh load";
         }
         ASSERT_TRUE(session->set(burnout, k.key, before, &error)) << error;  // the next key starts from the shipped value
+    }
+}
+
+// reactions/README.md's key tables list each enum's words as the schema does, in its order.
+TEST_F(EditSessionTest, TheReadmeListsEachEnumsWordsAsTheSchemaDoes) {
+    const std::vector<std::string> readme = lines(readFile(cube::paths::reactions() + "/README.md"));
+    for (const fx::ReactionKeyInfo& k : plugin->reactionSchema()) {
+        if (k.kind != fx::ReactionKeyInfo::Kind::Choice && k.kind != fx::ReactionKeyInfo::Kind::ChoiceList) continue;
+        const std::string row = "| `" + k.key.substr(k.key.rfind('.') + 1) + "` |";
+        auto line = std::find_if(readme.begin(), readme.end(), [&](const std::string& l) {
+            return l.rfind(row, 0) == 0 && l.find("enum") != std::string::npos;
+        });
+        ASSERT_NE(line, readme.end()) << k.key << ": no enum row in reactions/README.md";
+        std::vector<std::string> cells;  // | key | type | default | unit | range | meaning |
+        for (size_t at = 0, bar; (bar = line->find('|', at)) != std::string::npos; at = bar + 1) cells.push_back(line->substr(at, bar - at));
+        ASSERT_GE(cells.size(), 6u) << *line;
+        std::vector<std::string> words;
+        const std::string& range = cells[5];
+        for (size_t open = range.find('`'); open != std::string::npos; open = range.find('`', range.find('`', open + 1) + 1)) {
+            words.push_back(range.substr(open + 1, range.find('`', open + 1) - open - 1));
+        }
+        EXPECT_EQ(words, k.choices) << k.key << ": " << *line;
     }
 }
 
