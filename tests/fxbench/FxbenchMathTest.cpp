@@ -2,9 +2,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "fxbench_image_error.h"
+#include "fxbench_modes.h"
 #include "fxbench_stats.h"
+#include "game/TechniqueModes.h"
 
 namespace {
 
@@ -94,3 +97,19 @@ TEST(FxbenchStats, QuantilesInterpolateBetweenRanks) {
 }
 
 }  // namespace
+
+// A mode named after a technique ("soft+quarter", "spherical-lit") draws that technique: the
+// word before the first '+' or '-' is a --mode word of game/TechniqueModes.h whose override is
+// the mode's technique. A renamed word or a mislabelled row fails here.
+TEST(FxbenchModes, ATechniqueNamedModeDrawsThatTechnique) {
+    int named = 0;
+    for (const fxbench::Mode& m : fxbench::allModes()) {
+        if (!m.effects) continue;  // nofx
+        const std::string name = m.name;
+        const cube::TechniqueMode* mode = cube::findTechniqueMode(name.substr(0, name.find_first_of("+-")));
+        ASSERT_NE(mode, nullptr) << name << " does not start with a technique word";
+        EXPECT_EQ(mode->technique, m.technique) << name;
+        ++named;
+    }
+    EXPECT_GT(named, 10);
+}
