@@ -125,7 +125,7 @@ struct ParticleCheck {
 /// index outside the running set).
 struct ReactionStats {
     std::string name;       ///< the reaction's name in its file
-    std::string technique;  ///< how it is drawn: "hard", "soft", "spherical" or "stateless"
+    std::string technique;  ///< its render.technique word: "hard", "soft", "spherical", "stateless" or "mega"
     int alive = 0;          ///< live particles now
     uint64_t emitted = 0;   ///< particles that entered its pool since it was loaded (kept across
                             ///< a hot reload that keeps its particles)
