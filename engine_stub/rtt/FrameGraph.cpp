@@ -57,6 +57,12 @@ FrameGraphResource FrameGraph::create(const char* name, const TargetDesc& desc) 
     r.sharedDepthOf = desc.sharedDepthOf.valid() ? resourceIndex(desc.sharedDepthOf) : -1;
     if (desc.sharedDepthOf.valid() && r.sharedDepthOf < 0 && declError_.empty())
         declError_ = "target '" + r.name + "': sharedDepthOf is not a target of this frame";
+    r.sharedDepthIfWritten = desc.sharedDepthIfWritten.valid() ? resourceIndex(desc.sharedDepthIfWritten) : -1;
+    if (desc.sharedDepthIfWritten.valid() && (r.sharedDepthIfWritten < 0 || r.sharedDepthOf >= 0) &&
+        declError_.empty())
+        declError_ = "target '" + r.name + "': sharedDepthIfWritten is not a target of this frame, or " +
+                     "the target also has sharedDepthOf";
+    r.ownDepth = r.desc.depth;
     r.imported = r.persistent = r.sampledDepth = r.failed = false;
     r.handle = {};
     r.first = r.last = -1;
@@ -70,7 +76,8 @@ FrameGraphResource FrameGraph::import(const char* name, RenderTargetHandle handl
     const RenderTargetDesc* d = pool_.desc(handle);
     r.desc = d ? *d : RenderTargetDesc{};
     r.desc.name = "";
-    r.sharedDepthOf = -1;
+    r.sharedDepthOf = r.sharedDepthIfWritten = -1;
+    r.ownDepth = r.desc.depth;
     r.imported = true;
     r.persistent = persistent;
     r.sampledDepth = r.failed = false;
@@ -89,7 +96,7 @@ PassBuilder FrameGraph::beginPass(const char* name, int order, ExecuteFn execute
     p.name.assign(name ? name : "");
     p.order = order;
     p.declaredBegin = p.declaredEnd = uint32_t(declared_.size());
-    p.sideEffect = p.kept = p.skipped = false;
+    p.sideEffect = p.kept = p.skipped = p.offersOnly = false;
     p.execute = std::move(execute);
     compiled_ = false;
     return PassBuilder(*this, passCount_++);
@@ -135,8 +142,8 @@ void FrameGraph::expandAccesses() {
             // The shared depth is the owner's storage: depth testing reads it, depth writes change it.
             const int owner = resources_[a.resource].sharedDepthOf;
             if (owner >= 0 && (a.access & (kWrite | kReadDepth)))
-                accesses_.push_back({uint32_t(owner),
-                                     uint8_t((a.access & kWrite ? kRead | kWrite : 0) | (a.access & kReadDepth))});
+                accesses_.push_back({uint32_t(owner), uint8_t((a.access & kWrite ? kRead | kWrite : 0) |
+                                                              (a.access & kReadDepth) | kImplicit)});
         }
         p.accessEnd = uint32_t(accesses_.size());
     }
@@ -150,7 +157,7 @@ void FrameGraph::setSharedDepth(FrameGraphResource target, FrameGraphResource ow
         return;
     }
     resources_[size_t(r)].sharedDepthOf = o;
-    if (o >= 0) resources_[size_t(r)].desc.depth = DepthFormat::None;
+    if (o >= 0) resources_[size_t(r)].desc.depth = resources_[size_t(r)].ownDepth = DepthFormat::None;
     compiled_ = false;
 }
 
@@ -160,7 +167,7 @@ void FrameGraph::setDepthFormat(FrameGraphResource target, DepthFormat depth) {
         if (declError_.empty()) declError_ = "setDepthFormat: not a virtual target of this frame";
         return;
     }
-    resources_[size_t(r)].desc.depth = depth;
+    resources_[size_t(r)].desc.depth = resources_[size_t(r)].ownDepth = depth;
     compiled_ = false;
 }
 
@@ -177,11 +184,110 @@ bool FrameGraph::fail(std::string message) {
     return false;
 }
 
+void FrameGraph::cull() {
+    // Walk back from side effects; a pass lives if a live later pass reads what it writes.
+    // A fallback write (kWriteIfRead) keeps nothing: it only notes whether a later kept pass reads.
+    needed_.assign(resourceCount_, 0);
+    for (size_t pos = passCount_; pos-- > 0;) {
+        Pass& p = passes_[order_[pos]];
+        bool kept = p.sideEffect, writes = false, offerRead = false;
+        for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i) {
+            AccessRecord& a = accesses_[i];
+            writes |= (a.access & kWrite) != 0;
+            kept |= (a.access & kWrite) && (needed_[a.resource] || resources_[a.resource].persistent);
+            if ((a.access & kWriteIfRead) && needed_[a.resource]) {
+                a.access |= kReadLater;
+                offerRead = true;
+            }
+        }
+        p.offersOnly = !writes && !p.sideEffect && p.accessBegin != p.accessEnd;
+        p.kept = kept || (p.offersOnly && offerRead);
+        if (!p.kept) continue;
+        for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i)
+            if (accesses_[i].access & (kRead | kReadDepth)) needed_[accesses_[i].resource] = 1;
+    }
+    // Forward: an offer is taken when it is read later, unless an earlier kept pass wrote the
+    // target outright or this pass draws into it already through a shared z-buffer (reuses
+    // needed_ as "written outright so far"; a taken offer of an offers-only pass is outright).
+    std::fill(needed_.begin(), needed_.end(), uint8_t(0));
+    for (size_t pos = 0; pos < passCount_; ++pos) {
+        const Pass& p = passes_[order_[pos]];
+        if (!p.kept) continue;
+        for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i) {
+            AccessRecord& a = accesses_[i];
+            if (!(a.access & kWriteIfRead) || !(a.access & kReadLater) || needed_[a.resource]) continue;
+            bool implicit = false;
+            for (uint32_t j = p.accessBegin; j < p.accessEnd; ++j)
+                implicit |= accesses_[j].resource == a.resource && (accesses_[j].access & kImplicit);
+            if (implicit) continue;
+            a.access |= kWrite;
+            if (p.offersOnly) needed_[a.resource] = 1;
+        }
+        for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i)
+            if ((accesses_[i].access & (kWrite | kWriteIfRead)) == kWrite) needed_[accesses_[i].resource] = 1;
+    }
+}
+
+bool FrameGraph::decideSharedDepths() {
+    // sharedDepthIfWritten: share when a kept pass writes the owner before the target's first use.
+    bool any = false;
+    for (uint32_t i = 0; i < resourceCount_; ++i) any |= resources_[i].sharedDepthIfWritten >= 0;
+    if (!any) return false;
+    firstWrite_.assign(resourceCount_, -1);
+    firstUse_.assign(resourceCount_, -1);
+    for (size_t pos = 0; pos < passCount_; ++pos) {
+        const Pass& p = passes_[order_[pos]];
+        if (!p.kept) continue;
+        for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i) {
+            const AccessRecord& a = accesses_[i];
+            if (!(a.access & (kRead | kWrite | kReadDepth))) continue;
+            if (firstUse_[a.resource] < 0) firstUse_[a.resource] = int(pos);
+            if ((a.access & kWrite) && firstWrite_[a.resource] < 0) firstWrite_[a.resource] = int(pos);
+        }
+    }
+    bool changed = false;
+    for (uint32_t i = 0; i < resourceCount_; ++i) {
+        Resource& r = resources_[i];
+        const int o = r.sharedDepthIfWritten;
+        if (o < 0 || firstUse_[i] < 0 || firstWrite_[size_t(o)] < 0 || firstWrite_[size_t(o)] >= firstUse_[i]) continue;
+        r.sharedDepthOf = o;
+        r.desc.depth = DepthFormat::None;
+        changed = true;
+    }
+    // An owner's depth exists to be shared: dropped when no target took it.
+    for (uint32_t i = 0; i < resourceCount_; ++i) {
+        const int o = resources_[i].sharedDepthIfWritten;
+        if (o < 0) continue;
+        bool shared = false;
+        for (uint32_t j = 0; j < resourceCount_; ++j) shared |= resources_[j].sharedDepthOf == o;
+        if (!shared) resources_[size_t(o)].desc.depth = DepthFormat::None;
+    }
+    return changed;
+}
+
 bool FrameGraph::compile() {
     compiled_ = false;
     report_.error.assign(declError_);
     if (!report_.error.empty()) return false;  // a declaration already failed
+    for (uint32_t i = 0; i < resourceCount_; ++i) {  // undo a previous compile's depth decisions
+        Resource& r = resources_[i];
+        if (r.sharedDepthIfWritten < 0) continue;
+        r.sharedDepthOf = -1;
+        r.desc.depth = r.ownDepth;
+        resources_[size_t(r.sharedDepthIfWritten)].desc.depth = resources_[size_t(r.sharedDepthIfWritten)].ownDepth;
+    }
+
+    order_.resize(passCount_);
+    for (uint32_t i = 0; i < passCount_; ++i) order_[i] = i;
+    std::sort(order_.begin(), order_.end(), [this](uint32_t a, uint32_t b) {
+        return passes_[a].order != passes_[b].order ? passes_[a].order < passes_[b].order : a < b;
+    });
     expandAccesses();
+    cull();
+    if (decideSharedDepths()) {  // the shared z-buffer adds accesses to its owner: cull again
+        expandAccesses();
+        cull();
+    }
 
     for (uint32_t i = 0; i < resourceCount_; ++i) {
         const Resource& r = resources_[i];
@@ -207,27 +313,6 @@ bool FrameGraph::compile() {
             return fail("target '" + r.name + "': " + rttErrorName(e) + ": " + message);
     }
 
-    order_.resize(passCount_);
-    for (uint32_t i = 0; i < passCount_; ++i) order_[i] = i;
-    std::sort(order_.begin(), order_.end(), [this](uint32_t a, uint32_t b) {
-        return passes_[a].order != passes_[b].order ? passes_[a].order < passes_[b].order : a < b;
-    });
-
-    // Cull: walk back from side effects; a pass lives if a live later pass reads what it writes.
-    needed_.assign(resourceCount_, 0);
-    for (size_t pos = passCount_; pos-- > 0;) {
-        Pass& p = passes_[order_[pos]];
-        bool kept = p.sideEffect;
-        for (uint32_t i = p.accessBegin; i < p.accessEnd && !kept; ++i) {
-            const AccessRecord& a = accesses_[i];
-            kept = (a.access & kWrite) && (needed_[a.resource] || resources_[a.resource].persistent);
-        }
-        p.kept = kept;
-        if (!kept) continue;
-        for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i)
-            if (accesses_[i].access & (kRead | kReadDepth)) needed_[accesses_[i].resource] = 1;
-    }
-
     // Lifetimes over kept passes; reuse needed_ as "written so far".
     std::fill(needed_.begin(), needed_.end(), uint8_t(0));
     for (uint32_t i = 0; i < resourceCount_; ++i) {
@@ -239,6 +324,7 @@ bool FrameGraph::compile() {
         if (!p.kept) continue;
         for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i) {
             const AccessRecord& a = accesses_[i];
+            if (!(a.access & (kRead | kWrite | kReadDepth))) continue;  // a fallback write not taken
             Resource& r = resources_[a.resource];
             if (r.first < 0) r.first = int(pos);
             r.last = int(pos);
@@ -269,10 +355,17 @@ bool FrameGraph::compile() {
             return fail("imported target '" + r.name + "' is read as depth but its depth is not a texture");
     }
 
-    size_t culled = 0;
-    for (size_t pos = 0; pos < passCount_; ++pos)
-        if (!passes_[order_[pos]].kept) setAt(report_.culled, culled++, passes_[order_[pos]].name);
+    size_t culled = 0, notTaken = 0;
+    for (size_t pos = 0; pos < passCount_; ++pos) {
+        const Pass& p = passes_[order_[pos]];
+        if (p.kept) continue;
+        if (p.offersOnly)
+            setAt(report_.notTaken, notTaken++, p.name);
+        else
+            setAt(report_.culled, culled++, p.name);
+    }
     report_.culled.resize(culled);
+    report_.notTaken.resize(notTaken);
     culledAtCompile_ = culled;
     compiled_ = true;
     return true;
@@ -398,6 +491,11 @@ FrameGraphResource PassBuilder::readDepth(FrameGraphResource target) {
 
 FrameGraphResource PassBuilder::write(FrameGraphResource target) {
     graph_.addAccess(pass_, target, FrameGraph::kWrite);
+    return target;
+}
+
+FrameGraphResource PassBuilder::writeIfRead(FrameGraphResource target) {
+    graph_.addAccess(pass_, target, FrameGraph::kWriteIfRead);
     return target;
 }
 
