@@ -166,6 +166,8 @@ private:
         uint8_t access;
     };
 
+    /// Reuses the strings already in `v` so a steady frame does not reallocate them.
+    static void setAt(std::vector<std::string>& v, size_t i, const std::string& s);
     PassBuilder beginPass(const char* name, int order, ExecuteFn execute);
     void addAccess(uint32_t pass, FrameGraphResource target, uint8_t access);
     void expandAccesses();
