@@ -10,15 +10,12 @@
 
 namespace cube::rtt {
 
-namespace {
-// Reuses the strings already in `v` so a steady frame does not reallocate them.
-void setAt(std::vector<std::string>& v, size_t i, const std::string& s) {
+void FrameGraph::setAt(std::vector<std::string>& v, size_t i, const std::string& s) {
     if (i < v.size())
         v[i].assign(s);
     else
         v.push_back(s);
 }
-}  // namespace
 
 FrameGraph::FrameGraph(RenderTargetPool& pool, bool softwareRenderer, TimingMode timing)
     : pool_(pool), timer_(softwareRenderer, timing) {
@@ -57,6 +54,12 @@ FrameGraphResource FrameGraph::create(const char* name, const TargetDesc& desc) 
     r.sharedDepthOf = desc.sharedDepthOf.valid() ? resourceIndex(desc.sharedDepthOf) : -1;
     if (desc.sharedDepthOf.valid() && r.sharedDepthOf < 0 && declError_.empty())
         declError_ = "target '" + r.name + "': sharedDepthOf is not a target of this frame";
+    r.sharedDepthIfWritten = desc.sharedDepthIfWritten.valid() ? resourceIndex(desc.sharedDepthIfWritten) : -1;
+    if (desc.sharedDepthIfWritten.valid() && (r.sharedDepthIfWritten < 0 || r.sharedDepthOf >= 0) &&
+        declError_.empty())
+        declError_ = "target '" + r.name + "': sharedDepthIfWritten is not a target of this frame, or " +
+                     "the target also has sharedDepthOf";
+    r.ownDepth = r.desc.depth;
     r.imported = r.persistent = r.sampledDepth = r.failed = false;
     r.handle = {};
     r.first = r.last = -1;
@@ -70,7 +73,8 @@ FrameGraphResource FrameGraph::import(const char* name, RenderTargetHandle handl
     const RenderTargetDesc* d = pool_.desc(handle);
     r.desc = d ? *d : RenderTargetDesc{};
     r.desc.name = "";
-    r.sharedDepthOf = -1;
+    r.sharedDepthOf = r.sharedDepthIfWritten = -1;
+    r.ownDepth = r.desc.depth;
     r.imported = true;
     r.persistent = persistent;
     r.sampledDepth = r.failed = false;
@@ -89,7 +93,7 @@ PassBuilder FrameGraph::beginPass(const char* name, int order, ExecuteFn execute
     p.name.assign(name ? name : "");
     p.order = order;
     p.declaredBegin = p.declaredEnd = uint32_t(declared_.size());
-    p.sideEffect = p.kept = p.skipped = false;
+    p.sideEffect = p.kept = p.skipped = p.offersOnly = false;
     p.execute = std::move(execute);
     compiled_ = false;
     return PassBuilder(*this, passCount_++);
@@ -123,25 +127,6 @@ void FrameGraph::addAccess(uint32_t pass, FrameGraphResource target, uint8_t acc
     passes_[pass].declaredEnd = uint32_t(declared_.size());
 }
 
-void FrameGraph::expandAccesses() {
-    // Done at compile time so a target's shared depth may be set after passes declared it.
-    accesses_.clear();
-    for (uint32_t pi = 0; pi < passCount_; ++pi) {
-        Pass& p = passes_[pi];
-        p.accessBegin = uint32_t(accesses_.size());
-        for (uint32_t i = p.declaredBegin; i < p.declaredEnd; ++i) {
-            const AccessRecord a = declared_[i];
-            accesses_.push_back(a);
-            // The shared depth is the owner's storage: depth testing reads it, depth writes change it.
-            const int owner = resources_[a.resource].sharedDepthOf;
-            if (owner >= 0 && (a.access & (kWrite | kReadDepth)))
-                accesses_.push_back({uint32_t(owner),
-                                     uint8_t((a.access & kWrite ? kRead | kWrite : 0) | (a.access & kReadDepth))});
-        }
-        p.accessEnd = uint32_t(accesses_.size());
-    }
-}
-
 void FrameGraph::setSharedDepth(FrameGraphResource target, FrameGraphResource owner) {
     const int r = resourceIndex(target);
     const int o = owner.valid() ? resourceIndex(owner) : -1;
@@ -150,7 +135,7 @@ void FrameGraph::setSharedDepth(FrameGraphResource target, FrameGraphResource ow
         return;
     }
     resources_[size_t(r)].sharedDepthOf = o;
-    if (o >= 0) resources_[size_t(r)].desc.depth = DepthFormat::None;
+    if (o >= 0) resources_[size_t(r)].desc.depth = resources_[size_t(r)].ownDepth = DepthFormat::None;
     compiled_ = false;
 }
 
@@ -160,7 +145,7 @@ void FrameGraph::setDepthFormat(FrameGraphResource target, DepthFormat depth) {
         if (declError_.empty()) declError_ = "setDepthFormat: not a virtual target of this frame";
         return;
     }
-    resources_[size_t(r)].desc.depth = depth;
+    resources_[size_t(r)].desc.depth = resources_[size_t(r)].ownDepth = depth;
     compiled_ = false;
 }
 
@@ -175,107 +160,6 @@ bool FrameGraph::fail(std::string message) {
     if (report_.error.empty()) report_.error = std::move(message);
     compiled_ = false;
     return false;
-}
-
-bool FrameGraph::compile() {
-    compiled_ = false;
-    report_.error.assign(declError_);
-    if (!report_.error.empty()) return false;  // a declaration already failed
-    expandAccesses();
-
-    for (uint32_t i = 0; i < resourceCount_; ++i) {
-        const Resource& r = resources_[i];
-        if (r.imported) {
-            if (!pool_.isValid(r.handle)) return fail("imported target '" + r.name + "': stale or invalid handle");
-            continue;
-        }
-        if (r.desc.sharedDepth.valid())
-            return fail("target '" + r.name + "': use TargetDesc::sharedDepthOf, not a pool handle");
-        RenderTargetDesc check = r.desc;
-        if (r.sharedDepthOf >= 0) {
-            check.sharedDepth = {0, 1};  // stands in for the owner's handle, acquired later
-            const Resource& o = resources_[size_t(r.sharedDepthOf)];
-            if (o.desc.depth == DepthFormat::None || o.desc.sharedDepth.valid() || o.sharedDepthOf >= 0)
-                return fail("target '" + r.name + "': shares the depth of '" + o.name +
-                            "', which does not own a depth attachment");
-            if (!sameSizeRule(r.desc, o.desc))
-                return fail("target '" + r.name + "': SharedDepthSizeMismatch: '" + o.name +
-                            "' has a different width/height/scale rule");
-        }
-        std::string message;
-        if (RttError e = validateDesc(check, pool_.limits(), &message); e != RttError::None)
-            return fail("target '" + r.name + "': " + rttErrorName(e) + ": " + message);
-    }
-
-    order_.resize(passCount_);
-    for (uint32_t i = 0; i < passCount_; ++i) order_[i] = i;
-    std::sort(order_.begin(), order_.end(), [this](uint32_t a, uint32_t b) {
-        return passes_[a].order != passes_[b].order ? passes_[a].order < passes_[b].order : a < b;
-    });
-
-    // Cull: walk back from side effects; a pass lives if a live later pass reads what it writes.
-    needed_.assign(resourceCount_, 0);
-    for (size_t pos = passCount_; pos-- > 0;) {
-        Pass& p = passes_[order_[pos]];
-        bool kept = p.sideEffect;
-        for (uint32_t i = p.accessBegin; i < p.accessEnd && !kept; ++i) {
-            const AccessRecord& a = accesses_[i];
-            kept = (a.access & kWrite) && (needed_[a.resource] || resources_[a.resource].persistent);
-        }
-        p.kept = kept;
-        if (!kept) continue;
-        for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i)
-            if (accesses_[i].access & (kRead | kReadDepth)) needed_[accesses_[i].resource] = 1;
-    }
-
-    // Lifetimes over kept passes; reuse needed_ as "written so far".
-    std::fill(needed_.begin(), needed_.end(), uint8_t(0));
-    for (uint32_t i = 0; i < resourceCount_; ++i) {
-        resources_[i].first = resources_[i].last = -1;
-        resources_[i].sampledDepth = false;
-    }
-    for (size_t pos = 0; pos < passCount_; ++pos) {
-        const Pass& p = passes_[order_[pos]];
-        if (!p.kept) continue;
-        for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i) {
-            const AccessRecord& a = accesses_[i];
-            Resource& r = resources_[a.resource];
-            if (r.first < 0) r.first = int(pos);
-            r.last = int(pos);
-            if (a.access & kReadDepth) r.sampledDepth = true;
-        }
-        for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i) {
-            const AccessRecord& a = accesses_[i];
-            const Resource& r = resources_[a.resource];
-            bool writesHere = false;
-            for (uint32_t j = p.accessBegin; j < p.accessEnd; ++j)
-                writesHere |= accesses_[j].resource == a.resource && (accesses_[j].access & kWrite);
-            if ((a.access & (kRead | kReadDepth)) && !r.imported && !needed_[a.resource] && !writesHere)
-                return fail("pass '" + p.name + "' reads '" + r.name + "', which no earlier kept pass writes");
-        }
-        for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i)
-            if (accesses_[i].access & kWrite) needed_[accesses_[i].resource] = 1;
-    }
-    for (uint32_t i = 0; i < resourceCount_; ++i) {
-        Resource& r = resources_[i];
-        if (r.sharedDepthOf < 0 || r.first < 0) continue;
-        Resource& o = resources_[size_t(r.sharedDepthOf)];  // the owner must be live when r is made
-        if (o.first < 0 || o.first > r.first) o.first = r.first;
-        if (o.last < 0) o.last = r.first;
-    }
-    for (uint32_t i = 0; i < resourceCount_; ++i) {
-        const Resource& r = resources_[i];
-        if (r.imported && r.sampledDepth && pool_.depthTexture(r.handle) == 0)
-            return fail("imported target '" + r.name + "' is read as depth but its depth is not a texture");
-    }
-
-    size_t culled = 0;
-    for (size_t pos = 0; pos < passCount_; ++pos)
-        if (!passes_[order_[pos]].kept) setAt(report_.culled, culled++, passes_[order_[pos]].name);
-    report_.culled.resize(culled);
-    culledAtCompile_ = culled;
-    compiled_ = true;
-    return true;
 }
 
 void FrameGraph::acquire(Resource& r) {
@@ -404,6 +288,11 @@ FrameGraphResource PassBuilder::readDepth(FrameGraphResource target) {
 
 FrameGraphResource PassBuilder::write(FrameGraphResource target) {
     graph_.addAccess(pass_, target, FrameGraph::kWrite);
+    return target;
+}
+
+FrameGraphResource PassBuilder::writeIfRead(FrameGraphResource target) {
+    graph_.addAccess(pass_, target, FrameGraph::kWriteIfRead);
     return target;
 }
 

@@ -16,6 +16,18 @@
 // later passes can reuse them in the same frame. Writes are not versioned: every kept-later
 // reader of a target keeps every earlier writer of it (passes may blend onto earlier results).
 //
+// Where a result comes from can be left to compile() (a depth prepass, or the opaque pass as a
+// second render target):
+//  - PassBuilder::writeIfRead(t): an offer to write t. It is taken (t allocated and written)
+//    only when a later kept pass reads t, no earlier kept pass wrote t outright, and the pass
+//    does not already draw into t through a shared z-buffer; the pass asks
+//    PassContext::isNeeded(t) as it runs. An offer keeps no pass, except in a pass that only
+//    offers (a depth prepass): that pass runs when an offer of it is taken, and is then t's
+//    writer outright; untaken, it is listed in report().notTaken, not as culled.
+//  - TargetDesc::sharedDepthIfWritten = owner: the target draws on owner's z-buffer when a kept
+//    pass writes owner before the target's first use (a prepass laid it down), else on a depth
+//    of its own (desc.depth), and owner's depth is dropped. PassContext::sharesDepth(t) says which.
+//
 // Rebuild it every frame: reset() keeps the graph's storage, and the pool hands back the same
 // GL objects, so a steady frame creates no GL objects and allocates little on the heap
 // (std::function may for large captures).
@@ -44,6 +56,10 @@ public:
     /// the virtual target whose depth it uses. Defaults: as RenderTargetDesc, no shared depth.
     struct TargetDesc : RenderTargetDesc {
         FrameGraphResource sharedDepthOf;  ///< that target must own its depth (depth != None)
+        /// Decided by compile(): that target's z-buffer if a kept pass writes that target before
+        /// this one's first use (this desc's depth is then unused), else this desc's own depth
+        /// (that target's depth is then dropped: it exists to be shared). Unset: no such choice.
+        FrameGraphResource sharedDepthIfWritten;
     };
 
     /// `softwareRenderer`: Platform::softwareRenderer(), picks the timing method under Auto.
@@ -85,7 +101,8 @@ public:
                  const FrameGraphResource* writes, size_t writeCount, ExecuteFn execute,
                  bool sideEffect = false);
 
-    /// Sorts and culls. False (report().error says why) on a broken graph: a bad descriptor,
+    /// Sorts, culls, resolves fallback writers (writeIfRead) and conditional depth sharing
+    /// (sharedDepthIfWritten). False (report().error says why) on a broken graph: a bad descriptor,
     /// a shared depth whose owner has no depth, a kept pass reading a virtual target that no
     /// earlier kept pass writes, readDepth on an imported renderbuffer depth.
     bool compile();
@@ -118,13 +135,19 @@ public:
 private:
     friend class PassBuilder;
     friend class PassContext;
-    enum Access : uint8_t { kRead = 1, kWrite = 2, kReadDepth = 4 };
+    // kWriteIfRead: declared by writeIfRead; compile() adds kWrite when the write counts.
+    // kReadLater: set while culling on a kWriteIfRead whose target a later kept pass reads.
+    // kImplicit: an access to a shared depth's owner that expandAccesses() added.
+    enum Access : uint8_t {
+        kRead = 1, kWrite = 2, kReadDepth = 4, kWriteIfRead = 8, kReadLater = 16, kImplicit = 32
+    };
     struct Pass {
         std::string name;
         int order = 0;
         uint32_t declaredBegin = 0, declaredEnd = 0;  // in declared_
         uint32_t accessBegin = 0, accessEnd = 0;      // in accesses_ (compile: with implicit ones)
         bool sideEffect = false;
+        bool offersOnly = false;  // every write is writeIfRead (compile)
         bool kept = false;
         bool skipped = false;
         ExecuteFn execute;
@@ -133,6 +156,8 @@ private:
         std::string name;
         RenderTargetDesc desc;
         int sharedDepthOf = -1;
+        int sharedDepthIfWritten = -1;  // decided in compile(); sharedDepthOf is then the answer
+        DepthFormat ownDepth = DepthFormat::None;  // desc.depth as declared (compile may drop it)
         bool imported = false;
         bool persistent = false;
         bool sampledDepth = false;
@@ -145,9 +170,13 @@ private:
         uint8_t access;
     };
 
+    /// Reuses the strings already in `v` so a steady frame does not reallocate them.
+    static void setAt(std::vector<std::string>& v, size_t i, const std::string& s);
     PassBuilder beginPass(const char* name, int order, ExecuteFn execute);
     void addAccess(uint32_t pass, FrameGraphResource target, uint8_t access);
     void expandAccesses();
+    void cull();
+    bool decideSharedDepths();
     int resourceIndex(FrameGraphResource target) const;
     bool declared(uint32_t pass, int resource) const;
     bool fail(std::string message);
@@ -164,6 +193,7 @@ private:
     std::vector<AccessRecord> accesses_;
     std::vector<uint32_t> order_;  // pass indices sorted by (order, declaration)
     std::vector<uint8_t> needed_;
+    std::vector<int> firstWrite_, firstUse_;  // compile scratch: positions in order_, -1 none
     bool compiled_ = false;
     size_t culledAtCompile_ = 0;
     int acquired_ = 0;

@@ -19,6 +19,9 @@ struct PassTiming {
 struct FrameGraphReport {
     std::vector<std::string> executed;  ///< passes run, in run order
     std::vector<std::string> culled;    ///< passes culled, in run order
+    /// Passes that only offer their writes (PassBuilder::writeIfRead) and were not needed, in
+    /// run order: an alternative the graph did not pick, not work it saved.
+    std::vector<std::string> notTaken;
     std::vector<PassTiming> timings;    ///< one per executed pass, same order
     int targetsAcquired = 0;            ///< virtual targets the frame took from the pool
     int targetsAllocatedThisFrame = 0;  ///< pool creations since RenderTargetPool::beginFrame

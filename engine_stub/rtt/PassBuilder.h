@@ -18,6 +18,13 @@ public:
     /// The pass draws into (or clears) the target. Drawing into a target that shares another's
     /// depth also reads and writes that other target (depth test and depth writes).
     FrameGraphResource write(FrameGraphResource target);
+    /// The pass offers to write the target (the opaque pass writing the linear scene depth as a
+    /// second render target; a depth prepass): taken only when a later kept pass reads it, no
+    /// earlier kept pass wrote it outright, and the pass does not draw into it already through
+    /// a shared z-buffer. Untaken, the target is neither allocated nor bound for this pass. An
+    /// offer keeps no pass, except one whose writes are all offers. The pass asks
+    /// PassContext::isNeeded(target) when it runs.
+    FrameGraphResource writeIfRead(FrameGraphResource target);
     /// Keep the pass even if nobody reads what it writes (presenting, read-back, statistics).
     void sideEffect();
 

@@ -14,6 +14,22 @@ RenderTargetHandle PassContext::checked(FrameGraphResource target) const {
     return r >= 0 ? graph_.resources_[size_t(r)].handle : RenderTargetHandle{};
 }
 
+bool PassContext::isNeeded(FrameGraphResource target) const {
+    const int r = graph_.resourceIndex(target);
+    assert(r >= 0 && graph_.declared(pass_, r) && "pass asks about a target it did not declare");
+    const FrameGraph::Pass& p = graph_.passes_[pass_];
+    for (uint32_t i = p.accessBegin; i < p.accessEnd; ++i) {
+        const FrameGraph::AccessRecord& a = graph_.accesses_[i];
+        if (int(a.resource) == r && (a.access & FrameGraph::kWrite) && !(a.access & FrameGraph::kImplicit)) return true;
+    }
+    return false;
+}
+
+bool PassContext::sharesDepth(FrameGraphResource target) const {
+    const int r = graph_.resourceIndex(target);
+    return r >= 0 && graph_.resources_[size_t(r)].sharedDepthOf >= 0;
+}
+
 bool PassContext::bindForDraw(FrameGraphResource target) {
     const RenderTargetHandle h = checked(target);
     if (!graph_.pool_.isValid(h)) return false;

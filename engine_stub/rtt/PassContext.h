@@ -29,6 +29,12 @@ public:
     uint32_t depthTexture(FrameGraphResource target) const;
     int width(FrameGraphResource target) const;
     int height(FrameGraphResource target) const;
+    /// True when this pass must write the target: declared with write(), or with writeIfRead()
+    /// and compile() found a later reader and no earlier writer.
+    bool isNeeded(FrameGraphResource target) const;
+    /// True when the target draws on another target's z-buffer this frame (sharedDepthOf, or
+    /// sharedDepthIfWritten that compile() took): that z-buffer already holds the scene.
+    bool sharesDepth(FrameGraphResource target) const;
     /// Clears through rtt::clear (masks and scissor ignored, bindings restored).
     RttError clear(FrameGraphResource target, const ClearValues& values = {});
     /// Pool handle, for the rtt helpers (blit, read-back); valid until the target's last use.

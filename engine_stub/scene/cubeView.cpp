@@ -70,20 +70,21 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
     proj_ = camera_.proj(height_ > 0 ? float(width_) / float(height_) : 1.0f, reversedZ_);
     recordBuckets(scene);
 
-    // The view's frame. Each pass declares what it reads and writes; the graph culls a pass
-    // whose output nobody reads and allocates only what kept passes use. Passes run in bucket
-    // order (their order keys), whatever the order of the calls here: the particle bucket is
-    // declared before the scene passes because what it reads decides how they are drawn.
+    // The view's frame, top to bottom in pipeline order. Each pass declares what it reads and
+    // writes; compile() culls a pass whose output nobody reads, allocates only what kept passes
+    // use, and decides where the linear scene depth comes from: the depth prepass when it is
+    // declared and something reads scene_depth (the colour target then draws on its z-buffer,
+    // PassContext::sharesDepth), else the opaque and alpha-tested passes as a second render
+    // target when something reads it (PassContext::isNeeded), else nobody.
     const Targets t = declareTargets(graph);
     declareSmokeShadow(graph, t, settings);          // CUBE's shadow maps: here only the smoke's
+    declareDepthPrepass(scene, graph, t, settings);  // prepass-EQUAL only; not taken unless scene_depth is read
+    declareOpaque(scene, graph, t, settings);        // writes the linear depth too when read, no prepass
+    declareAlphaTested(scene, graph, t);
+    declareSky(scene, graph, t);
     declareLegacySprites(scene, graph, t, settings);
     declarePluginPasses(graph, t, settings);         // soft/spherical read scene depth; quarter-res composites
     declareDepthReadback(graph, t, settings);        // only when the application asked for it
-    decideSceneDepth(graph, t, settings);
-    declareDepthPrepass(scene, graph, t, settings);  // only for prepass-EQUAL
-    declareOpaque(scene, graph, t, settings);        // writes the linear depth too when it is read
-    declareAlphaTested(scene, graph, t);
-    declareSky(scene, graph, t);
     declareHud(scene, graph, t, settings);           // mirror inset and text
     return t.color;
 }
@@ -99,17 +100,18 @@ cubeView::Targets cubeView::declareTargets(rtt::FrameGraph& graph) {
     names_.push_back(name_ + ".scene_depth");
     rtt::RenderTargetDesc depthDesc;
     depthDesc.color[0] = rtt::ColorFormat::R32F;
-    depthDesc.depth = zBufferFormat();
+    depthDesc.depth = zBufferFormat();  // the prepass's z-buffer; compile() drops it unless shared
     depthDesc.filter = rtt::Filter::Nearest;
     Targets t;
     t.sceneDepth = graph.create(names_.back().c_str(), sized(depthDesc));
-    // (Its z-buffer stays only for prepass-EQUAL: decideSceneDepth.)
 
-    // Its own z-buffer unless prepass-EQUAL turns out to be on (declarePluginPasses decides).
+    // Draws on the prepass z-buffer when a kept prepass wrote it (prepass-EQUAL), else on its own.
     names_.push_back(name_ + ".color");
-    rtt::RenderTargetDesc colorDesc = sized(rtt::RenderTargetDesc{});
+    rtt::FrameGraph::TargetDesc colorDesc;
+    static_cast<rtt::RenderTargetDesc&>(colorDesc) = sized(rtt::RenderTargetDesc{});
     colorDesc.color[0] = rtt::ColorFormat::RGBA8;
     colorDesc.depth = zBufferFormat();
+    colorDesc.sharedDepthIfWritten = t.sceneDepth;
     t.color = graph.create(names_.back().c_str(), colorDesc);
     return t;
 }
@@ -127,33 +129,20 @@ CameraMatrices cubeView::cameraMatrices() const {
     return cam;
 }
 
-void cubeView::decideSceneDepth(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& settings) {
-    // Who writes the linear scene depth, if anyone reads it:
-    //  - prepass-EQUAL: the depth prepass (linear depth + the z-buffer the colour target then
-    //    shares; the opaque pass tests EQUAL without writing depth: less overdraw);
-    //  - otherwise the opaque pass itself, as a second render target: no second scene pass.
-    const bool pluginReads = prepassDeclared_;
-    const bool read = pluginReads || settings.sceneDepthOut;
-    equal_ = settings.prepassEqual && pluginReads;
-    opaqueWritesDepth_ = read && !equal_;
-    if (equal_) {
-        graph.setSharedDepth(t.color, t.sceneDepth);
-    } else {
-        graph.setDepthFormat(t.sceneDepth, rtt::DepthFormat::None);
-    }
-}
-
 void cubeView::declareDepthPrepass(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t,
                                    const FrameSettings& settings) {
-    // Linear view depth + z-buffer, for prepass-EQUAL only (decideSceneDepth).
-    if (!equal_) return;
+    // Linear view depth + z-buffer, for prepass-EQUAL only. The pass only offers scene_depth: it
+    // runs when a later kept pass reads it (and is then its writer: the colour target draws on
+    // its z-buffer, the opaque pass's offer is not taken), else it is not taken. The immediate
+    // path reads the colour target's own z-buffer: no prepass to offer.
+    if (!settings.prepassEqual || (settings.plugin && settings.pluginImmediate)) return;
     const CameraMatrices cam = cameraMatrices();
     const CameraQuads quads = settings.cameraQuads ? *settings.cameraQuads : CameraQuads{};
     SceneRenderer* r = &scene.renderer();
     const rtt::FrameGraphResource depth = t.sceneDepth;
     graph.addPass(passName(bucketInfo(Bucket::DepthPrepass).name).c_str(),
                   order(bucketInfo(Bucket::DepthPrepass).order),
-                  [&](rtt::PassBuilder& b) { b.write(depth); },
+                  [&](rtt::PassBuilder& b) { b.writeIfRead(depth); },
                   [this, r, depth, cam, quads, reversed = reversedZ_](rtt::PassContext& ctx) {
                       rtt::ClearValues cv;
                       cv.color[0] = {1e30f, 0.0f, 0.0f, 0.0f};  // "infinitely far" where nothing is drawn
@@ -166,32 +155,33 @@ void cubeView::declareDepthPrepass(cubeScene& scene, rtt::FrameGraph& graph, con
 
 void cubeView::declareOpaque(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t,
                              const FrameSettings& settings) {
-    // LEQUAL with its own z-buffer, or EQUAL on the prepass z-buffer without depth writes: which
-    // one is settled once the plugin has declared its passes, and read here at execution.
+    // LEQUAL with its own z-buffer, or EQUAL on the prepass z-buffer without depth writes when
+    // compile() gave the colour target the prepass's (sharesDepth); the linear depth as a second
+    // render target only when it is read and no prepass wrote it (isNeeded).
     const CameraMatrices cam = cameraMatrices();
     const CameraQuads quads = settings.cameraQuads ? *settings.cameraQuads : CameraQuads{};
     SceneRenderer* r = &scene.renderer();
     const rtt::FrameGraphResource color = t.color, depth = t.sceneDepth;
-    const bool writesDepth = opaqueWritesDepth_;
     // The smoke's shadow darkens the ground (and whatever else lies under the cloud).
     const rtt::FrameGraphResource smoke{smokeShadow_.opacity.id};
     const glm::mat4 worldToSmoke = smokeShadow_.worldToShadow;
     graph.addPass(passName(bucketInfo(Bucket::Opaque).name).c_str(), order(bucketInfo(Bucket::Opaque).order),
                   [&](rtt::PassBuilder& b) {
                       b.write(color);
-                      if (writesDepth) b.write(depth);
+                      b.writeIfRead(depth);
                       if (smoke.valid()) b.read(smoke);
                   },
-                  [this, r, color, depth, writesDepth, cam, quads, smoke, worldToSmoke,
+                  [this, r, color, depth, cam, quads, smoke, worldToSmoke,
                    reversed = reversedZ_](rtt::PassContext& ctx) {
                       r->setSmokeShadow(smoke.valid() ? ctx.texture(smoke, 0) : 0u, worldToSmoke);
+                      const bool equal = ctx.sharesDepth(color);
                       rtt::ClearValues cv;
                       cv.color[0] = {0.0f, 0.0f, 0.0f, 1.0f};
                       cv.depth = reversed ? 0.0f : 1.0f;
-                      cv.clearDepth = !equal_;
-                      cv.clearStencil = !equal_;
+                      cv.clearDepth = !equal;
+                      cv.clearStencil = !equal;
                       ctx.clear(color, cv);
-                      if (writesDepth) {
+                      if (ctx.isNeeded(depth)) {
                           rtt::ClearValues far;
                           far.color[0] = {1e30f, 0.0f, 0.0f, 0.0f};  // "infinitely far" where nothing is drawn
                           ctx.clear(depth, far);
@@ -199,7 +189,7 @@ void cubeView::declareOpaque(cubeScene& scene, rtt::FrameGraph& graph, const Tar
                       } else {
                           ctx.bindForDraw(color);
                       }
-                      r->opaque(opaque_, cam, equal_, quads);
+                      r->opaque(opaque_, cam, equal, quads);
                   });
 }
 
@@ -209,16 +199,15 @@ void cubeView::declareAlphaTested(cubeScene& scene, rtt::FrameGraph& graph, cons
     const CameraMatrices cam = cameraMatrices();
     SceneRenderer* r = &scene.renderer();
     const rtt::FrameGraphResource color = t.color, depth = t.sceneDepth;
-    const bool writesDepth = opaqueWritesDepth_;
     graph.addPass(passName(bucketInfo(Bucket::AlphaTested).name).c_str(),
                   order(bucketInfo(Bucket::AlphaTested).order),
                   [&](rtt::PassBuilder& b) {
                       b.write(color);
-                      if (writesDepth) b.write(depth);
+                      b.writeIfRead(depth);  // as the opaque pass: blends onto its linear depth
                   },
-                  [this, r, color, depth, writesDepth, cam](rtt::PassContext& ctx) {
-                      if (writesDepth ? !ctx.bindForDraw(color, depth) : !ctx.bindForDraw(color)) return;
-                      r->alphaTested(alphaTested_, cam, equal_);
+                  [this, r, color, depth, cam](rtt::PassContext& ctx) {
+                      if (ctx.isNeeded(depth) ? !ctx.bindForDraw(color, depth) : !ctx.bindForDraw(color)) return;
+                      r->alphaTested(alphaTested_, cam, ctx.sharesDepth(color));
                   });
 }
 
@@ -262,9 +251,8 @@ void cubeView::declareLegacySprites(cubeScene& scene, rtt::FrameGraph& graph, co
 
 void cubeView::declarePluginPasses(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& settings) {
     // The plugin adds its passes here, straight into the graph (nothing when no particle is
-    // visible). A pass of it that reads scene depth is what keeps the depth prepass alive; with
-    // prepass-EQUAL the colour target then shares the prepass z-buffer and the opaque pass tests
-    // EQUAL without writing depth (pixel-identical, less overdraw).
+    // visible). A pass of it that reads scene depth is what keeps the depth prepass (or the
+    // opaque pass's second render target) alive: compile() decides, nothing here does.
     if (settings.plugin && settings.pluginImmediate) {
         // API 2's immediate path, as an engine without a frame graph uses it: one pass binds the
         // colour target with its z-buffer and the plugin draws into it, copying and linearising
@@ -279,13 +267,11 @@ void cubeView::declarePluginPasses(rtt::FrameGraph& graph, const Targets& t, con
                       [plugin, info, depth, color](rtt::PassContext& ctx) {
                           if (ctx.bindForDraw(color)) plugin->renderView(info, depth);
                       });
-        prepassDeclared_ = false;
         return;
     }
     FxFrameBuilder fx(graph, t.color, t.sceneDepth, name_ + ".", order(bucketInfo(Bucket::Particles).order),
                       width_, height_);
     if (settings.plugin) settings.plugin->declarePasses(pluginView(), fx);
-    prepassDeclared_ = fx.readsSceneDepth();
 }
 
 fx::ViewInfo cubeView::pluginView() const {
@@ -313,7 +299,7 @@ void cubeView::declareSmokeShadow(rtt::FrameGraph& graph, const Targets& t, cons
 
 void cubeView::declareDepthReadback(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& settings) {
     // The frame's own scene depth, for an application that measures against it (fxbench's
-    // depth-edge mask): reading it keeps the prepass, so no second copy of it is ever drawn.
+    // depth-edge mask): it reads whichever writer compile() picked, so no second copy is drawn.
     if (!settings.sceneDepthOut) return;
     std::vector<float>* out = settings.sceneDepthOut;
     const rtt::FrameGraphResource depth = t.sceneDepth;

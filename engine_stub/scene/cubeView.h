@@ -2,7 +2,11 @@
 // One viewport of the scene (CUBE's cubeView): a camera, a colour target, and the passes that
 // fill it. cubeView::Render -> RenderObjects: set camera parameters, sort the scene's objects into
 // buckets, and declare the view's frame in pipeline order (RenderObjects reads top to bottom:
-// depth prepass, opaque, alpha-tested, sky, legacy sprites, the plugin's passes, HUD). The passes
+// smoke shadow, depth prepass (prepass-EQUAL only), opaque, alpha-tested, sky, legacy sprites,
+// the plugin's passes, depth read-back, HUD). Nothing is decided ahead: the frame graph's
+// compile() picks where the linear scene depth comes from (the prepass, whose z-buffer the colour
+// target then shares, or the opaque pass's second render target, or nobody when nothing reads
+// it), and the passes ask their PassContext at execution (sharesDepth, isNeeded). The passes
 // describe what to draw; the GL work is the back end's (render/SceneRenderer).
 #include <string>
 #include <vector>
@@ -48,17 +52,14 @@ public:
 
     /// Draws recorded in the last RenderObjects, per bucket (for tests and stats).
     size_t opaqueDraws() const { return opaque_.size(); }
-    /// True when the last frame's particle passes read the scene depth.
-    bool prepassDeclared() const { return prepassDeclared_; }
 
 private:
     struct Targets {
-        rtt::FrameGraphResource sceneDepth;  ///< R32F linear depth + z-buffer (the prepass's)
-        rtt::FrameGraphResource color;       ///< RGBA8 + its own z-buffer, or the prepass's (EQUAL)
+        rtt::FrameGraphResource sceneDepth;  ///< R32F linear depth (+ the z-buffer, if shared)
+        rtt::FrameGraphResource color;       ///< RGBA8 + its own z-buffer, or the prepass's (compile decides)
     };
     rtt::FrameGraphResource RenderObjects(cubeScene& scene, rtt::FrameGraph& graph, const FrameSettings& settings);
     Targets declareTargets(rtt::FrameGraph& graph);
-    void decideSceneDepth(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
     rtt::DepthFormat zBufferFormat() const;
     void declareDepthPrepass(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
     void declareOpaque(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
@@ -86,9 +87,6 @@ private:
     // Buckets, recorded by the game side; the pass callbacks only draw them.
     std::vector<MeshDraw> all_, opaque_, alphaTested_;
     std::vector<std::string> names_;
-    bool prepassDeclared_ = false;
-    bool opaqueWritesDepth_ = false;  ///< the linear scene depth comes from the opaque pass (MRT)
-    bool equal_ = false;  ///< this frame's opaque pass tests EQUAL on the prepass z-buffer
     fx::SmokeShadow smokeShadow_;  ///< this frame's smoke opacity map (invalid: no lit smoke)
 };
 

@@ -349,6 +349,97 @@ TEST_F(FrameGraphTest, SharedDepthCanBeDecidedAfterThePassesAreDeclared) {
     }
 }
 
+// The frame in pipeline order (issue 31): passes declared top to bottom, and compile() picks
+// who writes the linear scene depth. The prepass only offers it (writeIfRead), the opaque and
+// alpha-tested passes offer it as a second render target, the colour target takes the
+// prepass's z-buffer only if the prepass runs (sharedDepthIfWritten). Nobody reading it: no
+// prepass, no offer taken, no depth target allocated.
+TEST_F(FrameGraphTest, CompilePicksWhoWritesSceneDepthFromWhoReadsIt) {
+    struct Case {
+        bool prepass, reader;
+    };
+    for (const Case c : {Case{true, false}, Case{false, false}, Case{false, true}, Case{true, true}}) {
+        SCOPED_TRACE(std::string(c.prepass ? "prepass" : "no prepass") + (c.reader ? ", read" : ", not read"));
+        RenderTargetPool pool;  // this case's own, so its allocation count is exact
+        FrameGraph graph(pool, true);
+        auto sceneDepth = graph.create("scene_depth", fixed(8, 8, ColorFormat::R32F, DepthFormat::Depth24));
+        FrameGraph::TargetDesc colorDesc;
+        static_cast<RenderTargetDesc&>(colorDesc) = fixed(8, 8, ColorFormat::RGBA8, DepthFormat::Depth24);
+        colorDesc.sharedDepthIfWritten = sceneDepth;
+        auto color = graph.create("scene_color", colorDesc);
+        bool prepassRan = false, opaqueRan = false, opaqueWrites = false, alphaWrites = false, shares = false;
+        std::vector<float> depthRead;
+        const RenderTargetDesc *depthDescUsed = nullptr, *colorDescUsed = nullptr;
+        RenderTargetDesc depthSeen, colorSeen;
+        if (c.prepass)
+            graph.addPass("prepass", 10, [&](PassBuilder& b) { b.writeIfRead(sceneDepth); }, [&](PassContext& ctx) {
+                prepassRan = true;
+                EXPECT_TRUE(ctx.isNeeded(sceneDepth));
+                ctx.clear(sceneDepth, clearTo(7, 0, 0, 0));
+            });
+        graph.addPass("opaque", 20, [&](PassBuilder& b) { b.write(color); b.writeIfRead(sceneDepth); },
+                      [&](PassContext& ctx) {
+                          opaqueRan = true;
+                          opaqueWrites = ctx.isNeeded(sceneDepth);
+                          shares = ctx.sharesDepth(color);
+                          ClearValues cv = clearTo(0, 0, 0, 1);
+                          cv.clearDepth = !shares;
+                          ctx.clear(color, cv);
+                          if (opaqueWrites) ctx.clear(sceneDepth, clearTo(3, 0, 0, 0));
+                      });
+        graph.addPass("alpha_tested", 30, [&](PassBuilder& b) { b.write(color); b.writeIfRead(sceneDepth); },
+                      [&](PassContext& ctx) { alphaWrites = ctx.isNeeded(sceneDepth); });
+        if (c.reader)
+            graph.addPass("particles", 50, [&](PassBuilder& b) { b.read(sceneDepth); b.write(color); },
+                          [&](PassContext& ctx) {
+                              readFloat(ctx.pool(), ctx.handle(sceneDepth), 0, FloatLayout::Native, &depthRead);
+                              if ((depthDescUsed = ctx.pool().desc(ctx.handle(sceneDepth)))) depthSeen = *depthDescUsed;
+                          });
+        graph.addPass("present", 90, [&](PassBuilder& b) { b.read(color); b.sideEffect(); },
+                      [&](PassContext& ctx) {
+                          if ((colorDescUsed = ctx.pool().desc(ctx.handle(color)))) colorSeen = *colorDescUsed;
+                      });
+        ASSERT_TRUE(graph.compile()) << graph.report().error;
+        ASSERT_TRUE(graph.execute()) << graph.report().error;
+
+        EXPECT_TRUE(opaqueRan);
+        EXPECT_TRUE(graph.report().culled.empty());
+        ASSERT_NE(colorDescUsed, nullptr);
+        if (!c.reader) {
+            EXPECT_FALSE(prepassRan) << "nobody reads scene_depth: the prepass must not run";
+            EXPECT_FALSE(opaqueWrites);
+            EXPECT_FALSE(alphaWrites);
+            EXPECT_FALSE(shares);
+            EXPECT_EQ(pool.stats().totalAllocations, 1u) << "scene_depth must never be allocated";
+            EXPECT_EQ(graph.report().targetsAcquired, 1);
+            EXPECT_EQ(colorSeen.depth, DepthFormat::Depth24);  // its own z-buffer
+            EXPECT_EQ(graph.report().notTaken,
+                      c.prepass ? std::vector<std::string>{"prepass"} : std::vector<std::string>{});
+            continue;
+        }
+        EXPECT_EQ(pool.stats().totalAllocations, 2u);
+        EXPECT_TRUE(graph.report().notTaken.empty());
+        ASSERT_NE(depthDescUsed, nullptr);
+        ASSERT_EQ(depthRead.size(), 64u);
+        if (c.prepass) {  // prepass-EQUAL: the prepass writes it, the colour target shares its z-buffer
+            EXPECT_TRUE(prepassRan);
+            EXPECT_FALSE(opaqueWrites);
+            EXPECT_FALSE(alphaWrites);
+            EXPECT_TRUE(shares);
+            EXPECT_EQ(depthSeen.depth, DepthFormat::Depth24);
+            EXPECT_EQ(colorSeen.depth, DepthFormat::None);  // no z-buffer of its own
+            EXPECT_EQ(depthRead[0], 7.0f);
+        } else {  // the opaque and alpha-tested passes write it as a second target, no z-buffer on it
+            EXPECT_TRUE(opaqueWrites);
+            EXPECT_TRUE(alphaWrites);
+            EXPECT_FALSE(shares);
+            EXPECT_EQ(depthSeen.depth, DepthFormat::None);
+            EXPECT_EQ(colorSeen.depth, DepthFormat::Depth24);
+            EXPECT_EQ(depthRead[0], 3.0f);
+        }
+    }
+}
+
 TEST_F(FrameGraphTest, CompileRejectsBrokenGraphsWithoutRunningAnything) {
     bool ran = false;
     auto run = [&](PassContext&) { ran = true; };
