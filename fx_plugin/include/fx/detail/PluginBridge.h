@@ -18,6 +18,8 @@
 #include <utility>
 #include <vector>
 
+#include "fx/detail/FrameBridge.h"
+
 namespace fx {
 namespace detail {
 
@@ -145,122 +147,6 @@ struct HostTrampolines {
         c.collisionPoint = &collisionPoint;
         return c;
     }
-};
-
-// ---- the host's frame graph -------------------------------------------------------------------------
-
-class PassContextBridge {
-public:
-    explicit PassContextBridge(PassContext& ctx) : ctx_(ctx) {
-        std::memset(&c_, 0, sizeof c_);
-        c_.size = sizeof c_;
-        c_.user = this;
-        c_.bindForDraw = [](void* u, uint32_t t) { self(u).bindForDraw(Target{t}); };
-        c_.texture = [](void* u, uint32_t t, int attachment, fxTextureRef* out) {
-            const TextureRef r = self(u).texture(Target{t}, attachment);
-            out->name = r.name;
-            out->format = static_cast<int>(r.format);
-            out->width = r.width;
-            out->height = r.height;
-        };
-        c_.width = [](void* u, uint32_t t) { return self(u).width(Target{t}); };
-        c_.height = [](void* u, uint32_t t) { return self(u).height(Target{t}); };
-    }
-    const fxPassContext* c() const { return &c_; }
-
-private:
-    static PassContext& self(void* u) { return static_cast<PassContextBridge*>(u)->ctx_; }
-    PassContext& ctx_;
-    fxPassContext c_;
-};
-
-/// Owns one plugin pass on the host side: released once, when the host's graph drops the last
-/// copy of the pass's std::function (after it ran, or culled).
-struct PassHolder {
-    explicit PassHolder(fxPassCallback cb) : callback(cb) {}
-    ~PassHolder() {
-        if (callback.release) callback.release(callback.user);
-    }
-    PassHolder(const PassHolder&) = delete;
-    PassHolder& operator=(const PassHolder&) = delete;
-    fxPassCallback callback;
-};
-
-// FrameBuilder::addPass takes initializer lists (1.x); a C pass has counted arrays. Each count
-// up to these is spelled out once at compile time.
-constexpr int kMaxPassReads = 8;
-constexpr int kMaxPassWrites = 4;
-
-template <size_t... R, size_t... W>
-void addPassWith(FrameBuilder& f, const char* name, const uint32_t* reads, const uint32_t* writes,
-                 std::function<void(PassContext&)>&& fn, std::index_sequence<R...>, std::index_sequence<W...>) {
-    (void)reads;
-    (void)writes;
-    f.addPass(name, {Target{reads[R]}...}, {Target{writes[W]}...}, std::move(fn));
-}
-
-template <size_t NR>
-void addPassReads(FrameBuilder& f, const char* name, const uint32_t* reads, const uint32_t* writes,
-                  int writeCount, std::function<void(PassContext&)>&& fn) {
-    using R = std::make_index_sequence<NR>;
-    switch (writeCount) {
-    case 0: addPassWith(f, name, reads, writes, std::move(fn), R{}, std::make_index_sequence<0>{}); break;
-    case 1: addPassWith(f, name, reads, writes, std::move(fn), R{}, std::make_index_sequence<1>{}); break;
-    case 2: addPassWith(f, name, reads, writes, std::move(fn), R{}, std::make_index_sequence<2>{}); break;
-    case 3: addPassWith(f, name, reads, writes, std::move(fn), R{}, std::make_index_sequence<3>{}); break;
-    default: addPassWith(f, name, reads, writes, std::move(fn), R{}, std::make_index_sequence<4>{}); break;
-    }
-}
-
-class FrameBridge {
-public:
-    explicit FrameBridge(FrameBuilder& frame) : frame_(frame) {
-        std::memset(&c_, 0, sizeof c_);
-        c_.size = sizeof c_;
-        c_.user = this;
-        c_.sceneColor = [](void* u) { return self(u).sceneColor().id; };
-        c_.sceneDepth = [](void* u) { return self(u).sceneDepth().id; };
-        c_.createTarget = [](void* u, const char* name, const fxTargetDesc* d) {
-            TargetDesc t;
-            t.scale = d->scale == 0.0f ? 1.0f : d->scale;
-            t.width = d->width;
-            t.height = d->height;
-            t.format = static_cast<TargetFormat>(d->format);
-            t.linearFilter = d->nearestFilter == 0;
-            t.depth = d->depth != 0;
-            return self(u).createTarget(name, t).id;
-        };
-        c_.addPass = &FrameBridge::addPass;
-    }
-    const fxFrameBuilder* c() const { return &c_; }
-
-private:
-    static FrameBuilder& self(void* u) { return static_cast<FrameBridge*>(u)->frame_; }
-    static void addPass(void* u, const char* name, const uint32_t* reads, int readCount,
-                        const uint32_t* writes, int writeCount, fxPassCallback callback) {
-        auto holder = std::make_shared<PassHolder>(callback);
-        if (readCount < 0 || readCount > kMaxPassReads || writeCount < 0 || writeCount > kMaxPassWrites) {
-            return;  // the plugin never declares more (its own check refuses first); released here
-        }
-        std::function<void(PassContext&)> fn = [holder](PassContext& ctx) {
-            PassContextBridge bridge(ctx);
-            holder->callback.run(holder->callback.user, bridge.c());
-        };
-        FrameBuilder& f = self(u);
-        switch (readCount) {
-        case 0: addPassReads<0>(f, name, reads, writes, writeCount, std::move(fn)); break;
-        case 1: addPassReads<1>(f, name, reads, writes, writeCount, std::move(fn)); break;
-        case 2: addPassReads<2>(f, name, reads, writes, writeCount, std::move(fn)); break;
-        case 3: addPassReads<3>(f, name, reads, writes, writeCount, std::move(fn)); break;
-        case 4: addPassReads<4>(f, name, reads, writes, writeCount, std::move(fn)); break;
-        case 5: addPassReads<5>(f, name, reads, writes, writeCount, std::move(fn)); break;
-        case 6: addPassReads<6>(f, name, reads, writes, writeCount, std::move(fn)); break;
-        case 7: addPassReads<7>(f, name, reads, writes, writeCount, std::move(fn)); break;
-        default: addPassReads<8>(f, name, reads, writes, writeCount, std::move(fn)); break;
-        }
-    }
-    FrameBuilder& frame_;
-    fxFrameBuilder c_;
 };
 
 // ---- the plugin -------------------------------------------------------------------------------------
