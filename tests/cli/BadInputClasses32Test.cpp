@@ -20,6 +20,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "CubeGameRun.h"
+
 // Named so that the test files of one unity translation unit keep their helpers apart.
 namespace bad_input_32_test {
 namespace {
@@ -28,23 +30,9 @@ namespace fs = std::filesystem;
 
 constexpr int kBoundSeconds = 60;
 
-struct Outcome {
-    int status = -1;  ///< exit code; 124 = killed at the bound (a hang); 200 = died of a signal
-    std::string output;
-};
+using clitest::Outcome;
 
-Outcome run(const std::string& args, const std::string& env = "") {
-    const std::string cmd = env + " timeout -k 5 " + std::to_string(kBoundSeconds) + " " +
-                            std::string(CUBE_TEST_BIN_DIR) + "/cube_game " + args + " 2>&1";
-    Outcome r;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf{};
-    while (fgets(buf.data(), int(buf.size()), p)) r.output += buf.data();
-    const int st = pclose(p);
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 200;
-    return r;
-}
+Outcome run(const std::string& args, const std::string& env = "") { return clitest::runCubeGame(args, env, kBoundSeconds); }
 
 Outcome runSmall(const std::string& args, const std::string& env = "") {
     return run("--frames 2 --size 64x48 --fixed-dt 0.016 " + args, env);
@@ -63,23 +51,9 @@ std::string slurp(const std::string& path) {
     return ss.str();
 }
 
-class Scratch {
+class Scratch : public clitest::ScratchDir {
 public:
-    Scratch() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() / ("cube_bad32_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    ~Scratch() {
-        std::error_code ec;
-        fs::remove_all(dir_, ec);
-    }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-    std::string write(const std::string& name, const std::string& bytes) const {
-        std::ofstream(path(name), std::ios::binary) << bytes;
-        return path(name);
-    }
+    Scratch() : ScratchDir("cube_bad32_") {}
     // A copy of shaders/ with `file` broken as `how` says; returns the folder.
     std::string brokenShaders(const std::string& name, const std::string& file, const std::string& how) const {
         const std::string dir = path(name);
@@ -97,8 +71,6 @@ public:
         return dir;
     }
 
-private:
-    fs::path dir_;
 };
 
 // The first line of `output` that names `file` with a line number ("file:NN: ..."), or "".

@@ -17,70 +17,35 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "CubeGameRun.h"
+
 namespace fs = std::filesystem;
 
 namespace {
 
 constexpr int kBoundSeconds = 20;
 
-struct Outcome {
-    int status = -1;  ///< exit code; 124 = killed at the bound (a hang); 200 = died of a signal
-    std::string output;
-    double seconds = 0.0;
-};
+using clitest::Outcome;
 
 std::string bin() { return std::string(CUBE_TEST_BIN_DIR) + "/cube_game"; }
 
-// cube_game with `args`, killed after kBoundSeconds (coreutils timeout: exit 124).
-Outcome run(const std::string& args, const std::string& env = "") {
-    const std::string cmd = env + " timeout -k 5 " + std::to_string(kBoundSeconds) + " " + bin() + " " + args + " 2>&1";
-    Outcome r;
-    const auto start = std::chrono::steady_clock::now();
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf{};
-    while (fgets(buf.data(), int(buf.size()), p)) r.output += buf.data();
-    const int st = pclose(p);
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 200;
-    return r;
-}
+// cube_game with `args`, killed after kBoundSeconds.
+Outcome run(const std::string& args, const std::string& env = "") { return clitest::runCubeGame(args, env, kBoundSeconds); }
 
 // A run that renders nothing much: tiny, two frames, the fixed step.
 Outcome runSmall(const std::string& args, const std::string& env = "") {
     return run("--frames 2 --size 64x48 --fixed-dt 0.016 " + args, env);
 }
 
-class Scratch {
+class Scratch : public clitest::ScratchDir {
 public:
-    Scratch() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() / ("cube_bad_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    ~Scratch() {
-        std::error_code ec;
-        fs::remove_all(dir_, ec);
-    }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-    std::string write(const std::string& name, const std::string& bytes) const {
-        std::ofstream(path(name), std::ios::binary) << bytes;
-        return path(name);
-    }
-    std::string fifo(const std::string& name) const {
-        EXPECT_EQ(::mkfifo(path(name).c_str(), 0644), 0);
-        return path(name);
-    }
+    Scratch() : ScratchDir("cube_bad_") {}
     std::string symlinkLoop(const std::string& name) const {
         // a -> b -> a
         fs::create_symlink(path(name + ".other"), path(name));
         fs::create_symlink(path(name), path(name + ".other"));
         return path(name);
     }
-
-private:
-    fs::path dir_;
 };
 
 size_t count(const std::string& text, const std::string& what) {
