@@ -12,9 +12,6 @@
 namespace fx {
 namespace {
 
-constexpr uint32_t kClassifiedVariants = (1u << ParticlePrograms::Soft) | (1u << ParticlePrograms::SoftGeneralPower) |
-                                         (1u << ParticlePrograms::Spherical);
-
 int tilesFor(int pixels, int tileSize) { return std::max(1, (pixels + tileSize - 1) / tileSize); }
 
 }  // namespace
@@ -42,7 +39,6 @@ void FadeClassifier::readSources(const ShaderReader& read) {
 }
 
 void FadeClassifier::build(const ShaderReader& shaderDir, std::vector<std::string>* errors) {
-    programs_.build(shaderDir, errors, "#define FX_CLASSIFY 1\n", kClassifiedVariants);
     hostDepth_.create();
     std::string error;
     // The fine tiles from the scene depth, the coarse ones from the fine tiles: one shader.
@@ -98,10 +94,6 @@ void FadeClassifier::build(const ShaderReader& shaderDir, std::vector<std::strin
 }
 
 bool FadeClassifier::ok() const {
-    for (ParticlePrograms::Variant v : {ParticlePrograms::Soft, ParticlePrograms::SoftGeneralPower,
-                                        ParticlePrograms::Spherical}) {
-        if (!programs_.get(v, false).program) return false;
-    }
     return tileProgram_ && coarseProgram_ && countProgram_ && counterFbo_;
 }
 

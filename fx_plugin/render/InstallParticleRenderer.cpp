@@ -37,7 +37,7 @@ std::vector<int> softPowerSteps(const PluginImpl& plugin) {
         if (r.stateless()) continue;
         const Technique t = override == Technique::FromReaction ? r.desc().render.technique : override;
         int whole = 0, half = 0;
-        if (t != Technique::Soft || !ParticlePrograms::halfWholePower(r.desc().render.contrastPower, &whole, &half)) {
+        if (t != Technique::Soft || !ProgramCache::halfWholePower(r.desc().render.contrastPower, &whole, &half)) {
             continue;
         }
         const int s = 2 * whole + half;
@@ -85,6 +85,8 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
     // Every program the loaded reactions and the options can draw with is built here (a broken
     // shader of any technique stops start-up), each technique's failures reported once.
     plugin.setPrepareHook([renderer, mega, stateless, owner](Diagnostics* out) {
+        renderer->setFadeClassification(owner->fadeClassification() == FadeClassification::On,
+                                        owner->fadeClassCounting());
         bool ok = renderer->prepare(out, softPowerSteps(*owner));
         if (wantsMega(*owner)) ok = mega->prepare(out) && ok;
         if (wantsStateless(*owner)) ok = stateless->prepare(out) && ok;

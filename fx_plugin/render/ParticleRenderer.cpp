@@ -117,7 +117,8 @@ bool ParticleRenderer::ensureLoaded() {
     // The files of this generation of programs, kept: the classifier built later (when fade
     // classification is turned on) and each contrast power read these, never a later edit.
     sources_ = snapshotShaderReader(shaderReader(config_.shaderDir));
-    programs_->build(sources_, &errors);
+    programs_ = std::make_unique<ProgramCache>(sources_);
+    programs_->build(ProgramCache::techniqueKeys(), &errors);
     FadeClassifier::readSources(sources_);
     quarter_->build(config_.shaderDir, &errors);
     opacity_->build(config_.shaderDir, &errors);
@@ -175,20 +176,21 @@ bool ParticleRenderer::reloadShaders(Diagnostics* out, const std::vector<ShaderR
     if (stamp == shaderStamp_) return false;
     shaderStamp_ = stamp;  // one attempt (and one message) per edit
     GlStateGuard guard;
-    auto programs = std::make_unique<ParticlePrograms>();
+    const ShaderReader sources = snapshotShaderReader(shaderReader(config_.shaderDir));
+    auto programs = std::make_unique<ProgramCache>(sources);
     auto quarter = std::make_unique<QuarterResPath>();
     auto opacity = std::make_unique<SmokeOpacityMap>();
     std::vector<std::string> errors;
-    const ShaderReader sources = snapshotShaderReader(shaderReader(config_.shaderDir));
-    programs->build(sources, &errors);
-    programs->buildPowers(programs_->builtPowers(), &errors);  // the contrast powers drawn so far
+    // The same variants as the running cache (every key it tried), so nothing is missing after
+    // the swap; the classified ones even when classification is off, to check their files: an
+    // edit that breaks them is refused now, not when classification is turned on.
+    std::vector<ProgramCache::Key> keys = programs_->keys();
+    for (const ProgramCache::Key& k : ProgramCache::classifiedKeys()) keys.push_back(k);
+    programs->build(keys, &errors);
     quarter->build(config_.shaderDir, &errors);
     opacity->build(config_.shaderDir, &errors);
-    // The classifier's programs are built even when classification is off, to check its files:
-    // an edit that breaks them is refused now, not when classification is turned on.
     auto classifier = std::make_unique<FadeClassifier>();
     classifier->build(sources, &errors);
-    if (classifier_) classifier->programs().buildPowers(classifier_->programs().builtPowers(), &errors);
     ShaderErrorLog unique;
     for (const std::string& e : errors) unique.add(e);
     // The other techniques' programs (mega, stateless) in the same transaction: all go live or
@@ -222,11 +224,15 @@ bool ParticleRenderer::ensureClassifier() {
     GlStateGuard guard;
     auto classifier = std::make_unique<FadeClassifier>();
     std::vector<std::string> errors;
-    classifier->build(sources_, &errors);  // the files of the running programs
-    if (!errors.empty() || !classifier->ok()) {
-        std::string text = "fx: fade classification is off: its programs did not build";
-        for (const std::string& e : errors) text += "\n" + e;
-        log(LogLevel::Error, text);
+    classifier->build(sources_, &errors);                          // the files of the running programs
+    programs_->build(ProgramCache::classifiedKeys(), &errors);  // tried once per cache
+    bool programsOk = true;
+    for (const ProgramCache::Key& k : ProgramCache::classifiedKeys()) {
+        programsOk = programsOk && (k.lit || programs_->find(k));
+    }
+    if (!errors.empty() || !classifier->ok() || !programsOk) {
+        reportLoadErrors(errors);  // each line once, and a diagnostic for prepare()
+        log(LogLevel::Error, "fx: fade classification is off: its programs did not build");
         classifierFailed_ = true;
         return false;
     }
@@ -236,17 +242,44 @@ bool ParticleRenderer::ensureClassifier() {
 
 bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps) {
     const bool ready = ensureLoaded();
-    if (ready && !powerSteps.empty()) {
+    if (ready) {
         // The soft programs of the contrast powers the loaded reactions draw with, now rather
-        // than at their first visible particle (each power is tried once: reported once).
+        // than at their first visible particle (each key is tried once: reported once); with
+        // fade classification on, the classifier and the classified builds of the same.
         GlStateGuard guard;
+        std::vector<ProgramCache::Key> keys;
+        for (int s : powerSteps) {
+            ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), false, false, &keys);
+            if (classify_) ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), false, true, &keys);
+        }
         std::vector<std::string> errors;
-        programs_->buildPowers(powerSteps, &errors);
+        programs_->build(keys, &errors);
         // A power's build fails for the cause that failed the soft programs above: not told twice.
         reportLoadErrors(errors);
+        if (classify_) ensureClassifier();  // a failure is logged and kept in loadDiagnostics_
     }
     if (out) out->insert(out->end(), loadDiagnostics_.begin(), loadDiagnostics_.end());
     return ready && loadDiagnostics_.empty();
+}
+
+void ParticleRenderer::ensureDrawPrograms(const ViewRecord& record, bool quarterRes, bool classified) {
+    drawKeys_.clear();
+    for (const DrawBatch& batch : record.list.batches) {
+        ProgramCache::addDrawKeys(batch.technique, batch.contrastPower, quarterRes, classified, &drawKeys_);
+    }
+    bool missing = false;
+    for (const ProgramCache::Key& k : drawKeys_) missing = missing || !programs_->tried(k);
+    if (!missing) return;
+    GlStateGuard guard;
+    std::vector<std::string> errors;
+    const int built = programs_->build(drawKeys_, &errors);
+    if (!frameBuildLogged_) {
+        log(LogLevel::Warning, "fx: " + std::to_string(built) +
+                                   " particle program(s) built while declaring a frame: call prepareGl after "
+                                   "changing options or reactions to build them up front");
+        frameBuildLogged_ = true;
+    }
+    reportLoadErrors(errors);
 }
 
 bool ParticleRenderer::sizesAgree(PassContext& ctx, const ViewInfo& view, Target first, Target second) {
@@ -309,6 +342,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     }
     const int drawn = record->list.particleCount();
     if (drawn == 0) return 0;
+    ensureDrawPrograms(*record, quarterRes, classify_ && !quarterRes && record->list.needsSceneDepth);
 
     setRampRows(batches, batchCount);
 

@@ -40,7 +40,7 @@
 #include "FadeClassifier.h"
 #include "GlStateGuard.h"
 #include "InstanceStream.h"
-#include "ParticlePrograms.h"
+#include "ProgramCache.h"
 #include "LightState.h"
 #include "QuarterResPath.h"
 #include "SmokeAtlas.h"
@@ -78,10 +78,13 @@ public:
     int declarePasses(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
                       int batchCount, const RenderOptions& options);
 
-    /// Loads GL resources now (Plugin::prepareGl), and the soft programs of the contrast powers
-    /// in `powerSteps` (2 contrast_power each: those the loaded reactions draw with). True when
-    /// everything built; otherwise false with every problem appended to `out` (the technique
-    /// that did build still draws). Each distinct "file:line: message" is logged once.
+    /// Loads GL resources now (Plugin::prepareGl) and builds every program the options can reach
+    /// (ProgramCache::techniqueKeys, the fade classifier's when classification is on) and the
+    /// soft programs of the contrast powers in `powerSteps` (2 contrast_power each: those the
+    /// loaded reactions draw with). Called again after options or reactions change, it builds
+    /// only what is missing. True when everything built; otherwise false with every problem
+    /// appended to `out` (the technique that did build still draws). Each distinct
+    /// "file:line: message" is logged once.
     bool prepare(Diagnostics* out, const std::vector<int>& powerSteps = {});
 
     /// Another renderer's part of a shader reload: builds its programs from the folder's current
@@ -156,8 +159,12 @@ private:
     /// drawn unclassified).
     void drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes, bool halfZ = false,
                      uint32_t opacity = 0, uint32_t tiles = 0, uint32_t coarse = 0);
-    /// Builds the fade classifier on first use; false (logged once) when it does not build.
+    /// Builds the fade classifier (its tile and counting programs and the classified particle
+    /// programs) if it is not built; false (logged once) when it does not build.
     bool ensureClassifier();
+    /// Builds the programs `record`'s batches draw with that prepare() has not built (options or
+    /// reactions changed since without another prepareGl): before any pass, never inside one.
+    void ensureDrawPrograms(const ViewRecord& record, bool quarterRes, bool classified);
     /// Sets the FX_LIT uniforms of `p` for `batch` (the program is in use).
     void setLightUniforms(const ParticleProgram& p, const DrawBatch& batch, const ViewRecord& record,
                           uint32_t opacity) const;
@@ -173,7 +180,7 @@ private:
     bool classify_ = false;
     bool countClasses_ = false;
     bool classifierFailed_ = false;
-    std::unique_ptr<FadeClassifier> classifier_;  ///< built on first use
+    std::unique_ptr<FadeClassifier> classifier_;  ///< built by prepare() when classification is on
     FadeClassCounts counts_;
     std::vector<glm::vec4> shapeTable_;  ///< atlas_.shapes().packed(), uploaded per draw
     std::vector<glm::vec4> discTable_;   ///< the same for spheres (TrimmedShapes::Clip::Disc)
@@ -187,7 +194,9 @@ private:
     InstanceStream stream_;
     NearestSampler depthSampler_;  ///< the scene depth's unit, whatever sampling the host set
     // Owned through pointers so a shader reload can build new ones beside them and swap.
-    std::unique_ptr<ParticlePrograms> programs_ = std::make_unique<ParticlePrograms>();
+    std::unique_ptr<ProgramCache> programs_ = std::make_unique<ProgramCache>();
+    std::vector<ProgramCache::Key> drawKeys_;  ///< ensureDrawPrograms' scratch, kept for its capacity
+    bool frameBuildLogged_ = false;
     std::unique_ptr<QuarterResPath> quarter_ = std::make_unique<QuarterResPath>();
     std::unique_ptr<SmokeOpacityMap> opacity_ = std::make_unique<SmokeOpacityMap>();
     LightState light_;

@@ -61,16 +61,16 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
     const float pixelSlope = 2.0f / std::fmax(std::fabs(view.proj[1][1]) * float(std::max(viewport[3], 1)), 1e-6f);
     const float lodScale = float(atlas_.cellTexels()) * pixelSlope;
     for (const DrawBatch& batch : list.batches) {
-        const ParticlePrograms::Variant variant =
-            ParticlePrograms::variantFor(batch.technique, quarterRes, batch.contrastPower);
+        const ProgramCache::Variant variant =
+            ProgramCache::variantFor(batch.technique, quarterRes, batch.contrastPower);
         // Lit when the host set a light and the reaction takes it; unlit if the lit build failed.
         const bool lit = record.lit && batch.lighting.lit(batch.blend) && programs_->get(variant, true).program;
         // Soft and spherical batches take the classified build when the tiles are there.
-        const bool classifiable = classified && batch.technique != Technique::Hard &&
-                                  classifier_->program(variant, lit).program;
-        // Soft batches take their contrast power's own build (ParticlePrograms::get).
-        const ParticleProgram& p = classifiable ? classifier_->programs().get(variant, lit, batch.contrastPower)
-                                                : programs_->get(variant, lit, batch.contrastPower);
+        const bool classifiable =
+            classified && batch.technique != Technique::Hard && programs_->get(variant, lit, true).program;
+        // Soft batches take their contrast power's own build; nothing here compiles (the cache
+        // was filled by prepare() or ensureDrawPrograms before any pass).
+        const ParticleProgram& p = programs_->get(variant, lit, batch.contrastPower, classifiable);
         if (!p.program) continue;
         if (record.lit) bindTextureUnit(kAtlasUnit, lit ? atlas_.litTexture() : atlas_.texture());
         // Full resolution tests against the host's z-buffer without writing it. Hard particles
@@ -105,7 +105,7 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         glUniform1f(p.softScale, batch.softScale);
         glUniform1f(p.contrastPower, batch.contrastPower);
         int powerWhole = 0, powerHalf = 0;
-        if (ParticlePrograms::halfWholePower(batch.contrastPower, &powerWhole, &powerHalf)) {
+        if (ProgramCache::halfWholePower(batch.contrastPower, &powerWhole, &powerHalf)) {
             glUniform1i(p.powerWhole, powerWhole);
             glUniform1i(p.powerHalf, powerHalf);
         }
@@ -124,7 +124,7 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         const bool trimmed = trimmable;
         glUniform1i(p.trimmed, trimmed ? 1 : 0);
         if (trimmed) {
-            const bool sphere = variant == ParticlePrograms::Spherical;
+            const bool sphere = variant == ProgramCache::Spherical;
             const std::vector<glm::vec4>& table = sphere ? discTable_ : shapeTable_;
             glUniform1i(p.shapeBuckets, atlas_.shapes().buckets());
             glUniform1f(p.lodScale, lodScale);
@@ -137,15 +137,6 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         } else {
             glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, batch.count);
         }
-    }
-    // A contrast power whose own build failed was drawn by the general soft program: said once,
-    // when it was tried.
-    std::vector<std::string> errors = programs_->takeErrors();
-    if (classifier_) {
-        for (std::string& e : classifier_->programs().takeErrors()) errors.push_back(std::move(e));
-    }
-    for (const std::string& e : errors) {
-        log(LogLevel::Error, "fx: a soft program for one contrast power did not build; the general one draws it:\n" + e);
     }
 }
 

@@ -75,6 +75,11 @@ int StatelessRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
         slots += static_cast<int>(std::min<uint64_t>(ring.written(), uint64_t(ring.capacity())));
     }
     if (draws->empty()) return 0;
+    {
+        // Built by prepare() (prepareGl); for a host that skipped it, here, before any pass.
+        GlStateGuard guard;
+        if (!ensureProgram()) return 0;
+    }
     ViewInfo v = view;
     v.name = "";  // the host's string is not ours to keep
     const Target color = frame.sceneColor();
@@ -157,7 +162,7 @@ std::function<void()> StatelessRenderer::rebuildShaders(ShaderErrorLog* errors) 
 }
 
 void StatelessRenderer::draw(const ViewInfo& view, const std::vector<Draw>& draws) {
-    if (!ensureProgram()) return;
+    if (!gpu_ || !gpu_->program) return;  // declarePasses built it (a reload may have swapped it)
     Gpu& g = *gpu_;
     ++g.frame;
     glUseProgram(g.program);

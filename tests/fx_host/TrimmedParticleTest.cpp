@@ -19,7 +19,7 @@
 
 #include "FxTestHost.h"
 #include "../../fx_plugin/render/EmbeddedResources.h"
-#include "../../fx_plugin/render/ParticlePrograms.h"
+#include "../../fx_plugin/render/ProgramCache.h"
 #include "../../fx_plugin/render/SmokeAtlas.h"
 #include "../../fx_plugin/render/TrimmedShapes.h"
 
@@ -454,17 +454,17 @@ TEST(SoftContrastProgram, HalfWholePowersAreSplitAndOthersUsePow) {
     int whole = -1, half = -1;
     const struct { float p; int whole, half; } cases[] = {{1.0f, 1, 0}, {1.5f, 1, 1}, {2.0f, 2, 0}, {0.5f, 0, 1}, {16.0f, 16, 0}};
     for (const auto& c : cases) {
-        ASSERT_TRUE(fx::ParticlePrograms::halfWholePower(c.p, &whole, &half)) << c.p;
+        ASSERT_TRUE(fx::ProgramCache::halfWholePower(c.p, &whole, &half)) << c.p;
         EXPECT_EQ(whole, c.whole) << c.p;
         EXPECT_EQ(half, c.half) << c.p;
-        EXPECT_EQ(fx::ParticlePrograms::variantFor(fx::Technique::Soft, false, c.p), fx::ParticlePrograms::Soft);
+        EXPECT_EQ(fx::ProgramCache::variantFor(fx::Technique::Soft, false, c.p), fx::ProgramCache::Soft);
     }
     for (float p : {0.1f, 1.3f, 2.25f, 15.9f}) {
-        EXPECT_FALSE(fx::ParticlePrograms::halfWholePower(p, &whole, &half)) << p;
-        EXPECT_EQ(fx::ParticlePrograms::variantFor(fx::Technique::Soft, false, p), fx::ParticlePrograms::SoftGeneralPower);
+        EXPECT_FALSE(fx::ProgramCache::halfWholePower(p, &whole, &half)) << p;
+        EXPECT_EQ(fx::ProgramCache::variantFor(fx::Technique::Soft, false, p), fx::ProgramCache::SoftGeneralPower);
     }
     // Other techniques do not care.
-    EXPECT_EQ(fx::ParticlePrograms::variantFor(fx::Technique::Hard, false, 1.3f), fx::ParticlePrograms::HardZBuffer);
+    EXPECT_EQ(fx::ProgramCache::variantFor(fx::Technique::Hard, false, 1.3f), fx::ProgramCache::HardZBuffer);
 }
 
 }  // namespace
