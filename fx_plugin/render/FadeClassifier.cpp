@@ -116,13 +116,7 @@ TargetDesc FadeClassifier::tileTargetDesc(int width, int height, bool coarse) {
 }
 
 void FadeClassifier::buildTiles(PassContext& ctx, Target sceneDepth, Target tiles, Target coarse) {
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_BLEND);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    plainDrawState();
     glBindVertexArray(vao_);
 
     ctx.bindForDraw(tiles);
