@@ -79,7 +79,7 @@ Halves halves(const Image& img, int cx) {
 class LightingTest : public FxHostTest {
 protected:
     Image draw(const fx::LightState* light) {
-        direct.renderer.setLight(light ? *light : fx::LightState{});
+        direct.settings.light = light ? *light : fx::LightState{};
         renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = direct.declare(view, f); });
         return graph.readColor();
     }
@@ -112,7 +112,7 @@ TEST_F(LightingTest, TheSunsSideOfAParticleIsBrighterAndAmbientAloneIsEven) {
     const int cx = int(std::lround(projectToPixel(view, p.position).x));
     const glm::vec3 white(1.0f), grey(0.25f);
     for (fx::Technique t : {fx::Technique::Hard, fx::Technique::Soft, fx::Technique::Spherical}) {
-        direct.options.techniqueOverride = t;
+        direct.settings.options.techniqueOverride = t;
         const Image unlit = draw(nullptr);
         ASSERT_EQ(drawn, 1);
         const fx::LightState fromLeft = sun(glm::vec3(-1.0f, 0.1f, 0.25f), white, grey);
@@ -158,7 +158,7 @@ TEST_F(LightingTest, AThickCloudShadowsItsFarSide) {
                 cloud.push_back(p);
             }
     direct.set(cloud);
-    direct.options.techniqueOverride = fx::Technique::Soft;
+    direct.settings.options.techniqueOverride = fx::Technique::Soft;
     const fx::LightState light = sun(glm::vec3(1.0f, 0.15f, 0.0f), glm::vec3(1.0f), glm::vec3(0.3f));
     const int cx = int(std::lround(projectToPixel(view, glm::vec3(0, 1, 0)).x));
     direct.desc.lighting.absorption = 0.0f;
