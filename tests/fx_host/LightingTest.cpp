@@ -180,5 +180,29 @@ TEST_F(LightingTest, AThickCloudShadowsItsFarSide) {
     EXPECT_EQ(maxAbsDiff(again, shadowed), 0);
 }
 
+// FrameSettings: the switches are read once, when a view's passes are declared. A caller that
+// changes them before the graph runs those passes changes the next frame, not this one.
+TEST_F(LightingTest, PendingPassesDrawWithTheSettingsTheirViewWasDeclaredWith) {
+    scene.sky = glm::vec3(0.0f);
+    direct.desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(0.8f, 0.8f, 0.8f, 0.9f)}};
+    HandParticle p;
+    p.position = glm::vec3(0, 1, 0);
+    p.size = 2.5f;
+    direct.set({p});
+    direct.settings.options.techniqueOverride = fx::Technique::Soft;
+    const fx::LightState fromLeft = sun(glm::vec3(-1.0f, 0.1f, 0.25f), glm::vec3(1.0f), glm::vec3(0.25f));
+    const fx::LightState fromRight = sun(glm::vec3(1.0f, 0.1f, 0.25f), glm::vec3(1.0f), glm::vec3(0.25f));
+    const Image left = draw(&fromLeft);
+    const Image right = draw(&fromRight);
+    ASSERT_EQ(drawn, 1);
+    ASSERT_GT(maxAbsDiff(left, right), 0) << "the light's side must show, or this tells nothing";
+    direct.settings.light = fromLeft;
+    renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) {
+        drawn = direct.declare(view, f);
+        direct.settings.light = fromRight;  // after declaring, before the passes run
+    });
+    EXPECT_EQ(maxAbsDiff(graph.readColor(), left), 0);
+}
+
 }  // namespace
 }  // namespace fxtest
