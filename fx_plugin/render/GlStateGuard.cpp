@@ -4,6 +4,8 @@
 
 #include "render/PrivateGl.h"
 
+#include "PinnedGlState.h"
+
 namespace fx {
 void bindTextureUnit(int unit, uint32_t texture, uint32_t sampler) {
     glActiveTexture(GLenum(GL_TEXTURE0 + unit));

@@ -72,7 +72,7 @@
 #include <cstdint>
 
 #include "fx/Types.h"
-#include "render/PinnedGlState.h"
+#include "render/GlStateRow.h"
 
 namespace fx {
 
@@ -125,7 +125,7 @@ private:
 class GlStateGuard {
 public:
     /// Texture units the renderer may bind (0 .. kTextureUnits-1).
-    static constexpr int kTextureUnits = 6;
+    static constexpr int kTextureUnits = kPinnedTextureUnits;
     /// Rows a guard can hold (PinnedGlState.cpp bounds the per-index rows to fit).
     static constexpr int kMaxRows = 200;
 

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "GlStateGuard.h"
-#include "PinnedGlStateIo.h"
 #include "render/PrivateGl.h"
 
 namespace fx {
@@ -60,7 +58,7 @@ std::vector<Row> build() {
         Pin::Restore, val(0));
     add("viewport", false, GL_VIEWPORT, 0, getInts, setViewport, Pin::Restore, val(0));
     add("scissor box", false, GL_SCISSOR_BOX, 0, getInts, setScissor, Pin::Restore, val(0));
-    for (int u = 0; u < GlStateGuard::kTextureUnits; ++u) {
+    for (int u = 0; u < kPinnedTextureUnits; ++u) {
         add("texture 2D binding", false, GL_TEXTURE_BINDING_2D, GLuint(u), getTexture2D, setTexture2D, Pin::Value,
             val(0));
         add("sampler binding", false, GL_SAMPLER_BINDING, GLuint(u), getSampler, setSampler, Pin::Value, val(0));

@@ -1,4 +1,4 @@
-#include "PinnedGlStateIo.h"
+#include "GlStateRow.h"
 
 #include <cstdint>
 #include <initializer_list>
