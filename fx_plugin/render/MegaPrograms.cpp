@@ -1,10 +1,26 @@
 #include "MegaPrograms.h"
 
+#include <initializer_list>
+
 #include "render/PrivateGl.h"
 
 #include "ShaderLoader.h"
 
 namespace fx {
+namespace {
+
+struct Uniform {
+    int* location;
+    const char* name;
+};
+
+// The locations of `uniforms` in `program`; left at -1 when the program did not build.
+void locate(GLuint program, std::initializer_list<Uniform> uniforms) {
+    if (!program) return;
+    for (const Uniform& u : uniforms) *u.location = glGetUniformLocation(program, u.name);
+}
+
+}  // namespace
 
 MegaPrograms::~MegaPrograms() {
     for (GLuint p : {depth, spheres, blur, shade, composite}) {
@@ -24,53 +40,22 @@ void MegaPrograms::build(const std::string& dir, std::vector<std::string>* error
     blur = make("vs_particles_fullscreen.glsl", "fs_mega_blur.glsl", "");
     shade = make("vs_particles_fullscreen.glsl", "fs_mega_blur.glsl", "#define FX_MEGA_SHADE 1\n");
     composite = make("vs_particles_fullscreen.glsl", "fs_mega_composite.glsl", "");
-    auto loc = [](GLuint program, const char* name) { return glGetUniformLocation(program, name); };
-    if (depth) {
-        depthScene = loc(depth, "uSceneDepth");
-        depthRatio = loc(depth, "uRatio");
-    }
-    if (spheres) {
-        sView = loc(spheres, "uView");
-        sProj = loc(spheres, "uProj");
-        sNear = loc(spheres, "uNear");
-        sFar = loc(spheres, "uFar");
-        sSlope = loc(spheres, "uSlopeMax");
-        sRamp = loc(spheres, "uRamp");
-        sRampRow = loc(spheres, "uRampRow");
-        sMegaDepth = loc(spheres, "uMegaDepth");
-        sDensity = loc(spheres, "uDensity");
-    }
+    locate(depth, {{&depthScene, "uSceneDepth"}, {&depthRatio, "uRatio"}});
+    locate(spheres, {{&sView, "uView"}, {&sProj, "uProj"}, {&sNear, "uNear"}, {&sFar, "uFar"}, {&sSlope, "uSlopeMax"},
+                     {&sRamp, "uRamp"}, {&sRampRow, "uRampRow"}, {&sMegaDepth, "uMegaDepth"}, {&sDensity, "uDensity"}});
     const GLuint blurs[2] = {blur, shade};
     for (int i = 0; i < 2; ++i) {
-        const GLuint p = blurs[i];
-        if (!p) continue;
         Blur& u = b[i];
-        u.color = loc(p, "uColor");
-        u.density = loc(p, "uDensity");
-        u.encoded = loc(p, "uEncodedDepth");
-        u.direction = loc(p, "uDirection");
-        u.taps = loc(p, "uTaps");
-        u.sigma = loc(p, "uSigma");
-        u.falloff = loc(p, "uDepthFalloff");
-        u.invView = loc(p, "uInvView");
-        u.projTerms = loc(p, "uProjTerms");
-        u.time = loc(p, "uTime");
-        u.noiseStrength = loc(p, "uNoiseStrength");
-        u.noiseScale = loc(p, "uNoiseScale");
-        u.lit = loc(p, "uLit");
-        u.toSun = loc(p, "uToSun");
-        u.sunColor = loc(p, "uSunColor");
-        u.ambient = loc(p, "uAmbient");
-        u.scattering = loc(p, "uScattering");
-        u.anisotropy = loc(p, "uAnisotropy");
-        u.absorption = loc(p, "uAbsorption");
+        locate(blurs[i], {{&u.color, "uColor"}, {&u.density, "uDensity"}, {&u.encoded, "uEncodedDepth"},
+                          {&u.direction, "uDirection"}, {&u.taps, "uTaps"}, {&u.sigma, "uSigma"},
+                          {&u.falloff, "uDepthFalloff"}, {&u.invView, "uInvView"}, {&u.projTerms, "uProjTerms"},
+                          {&u.time, "uTime"}, {&u.noiseStrength, "uNoiseStrength"}, {&u.noiseScale, "uNoiseScale"},
+                          {&u.lit, "uLit"}, {&u.toSun, "uToSun"}, {&u.sunColor, "uSunColor"}, {&u.ambient, "uAmbient"},
+                          {&u.scattering, "uScattering"}, {&u.anisotropy, "uAnisotropy"},
+                          {&u.absorption, "uAbsorption"}});
     }
-    if (composite) {
-        cCloud = loc(composite, "uCloud");
-        cCloudDepth = loc(composite, "uCloudDepth");
-        cScene = loc(composite, "uSceneDepth");
-        cSoft = loc(composite, "uSoftScale");
-    }
+    locate(composite, {{&cCloud, "uCloud"}, {&cCloudDepth, "uCloudDepth"}, {&cScene, "uSceneDepth"},
+                       {&cSoft, "uSoftScale"}});
 }
 
 }  // namespace fx
