@@ -8,6 +8,7 @@
 #include "GlStateGuard.h"
 #include "InstanceStream.h"
 #include "ShaderLoader.h"
+#include "Uniforms.h"
 
 namespace fx {
 namespace {
@@ -65,14 +66,10 @@ void FadeClassifier::build(const ShaderReader& shaderDir, std::vector<std::strin
     if (!countProgram_) {
         countProgram_ = buildProgram(shaderDir, "vs_particles_count.glsl", "fs_particles_count.glsl", "", &error);
         if (countProgram_) {
-            countView_ = glGetUniformLocation(countProgram_, "uView");
-            countProj_ = glGetUniformLocation(countProgram_, "uProj");
-            countNear_ = glGetUniformLocation(countProgram_, "uNear");
-            countSoftScale_ = glGetUniformLocation(countProgram_, "uSoftScale");
-            countSphere_ = glGetUniformLocation(countProgram_, "uSphere");
-            countTiles_ = glGetUniformLocation(countProgram_, "uTiles");
-            countCoarse_ = glGetUniformLocation(countProgram_, "uTilesCoarse");
-            countViewSize_ = glGetUniformLocation(countProgram_, "uViewSize");
+            locateUniforms(countProgram_, {{&countView_, "uView"}, {&countProj_, "uProj"}, {&countNear_, "uNear"},
+                                           {&countSoftScale_, "uSoftScale"}, {&countSphere_, "uSphere"},
+                                           {&countTiles_, "uTiles"}, {&countCoarse_, "uTilesCoarse"},
+                                           {&countViewSize_, "uViewSize"}});
         } else {
             errors->push_back(error);
         }

@@ -1,26 +1,11 @@
 #include "MegaPrograms.h"
 
-#include <initializer_list>
-
 #include "render/PrivateGl.h"
 
 #include "ShaderLoader.h"
+#include "Uniforms.h"
 
 namespace fx {
-namespace {
-
-struct Uniform {
-    int* location;
-    const char* name;
-};
-
-// The locations of `uniforms` in `program`; left at -1 when the program did not build.
-void locate(GLuint program, std::initializer_list<Uniform> uniforms) {
-    if (!program) return;
-    for (const Uniform& u : uniforms) *u.location = glGetUniformLocation(program, u.name);
-}
-
-}  // namespace
 
 MegaPrograms::~MegaPrograms() {
     for (GLuint p : {depth, spheres, blur, shade, composite}) {
@@ -40,22 +25,24 @@ void MegaPrograms::build(const std::string& dir, std::vector<std::string>* error
     blur = make("vs_particles_fullscreen.glsl", "fs_mega_blur.glsl", "");
     shade = make("vs_particles_fullscreen.glsl", "fs_mega_blur.glsl", "#define FX_MEGA_SHADE 1\n");
     composite = make("vs_particles_fullscreen.glsl", "fs_mega_composite.glsl", "");
-    locate(depth, {{&depthScene, "uSceneDepth"}, {&depthRatio, "uRatio"}});
-    locate(spheres, {{&sView, "uView"}, {&sProj, "uProj"}, {&sNear, "uNear"}, {&sFar, "uFar"}, {&sSlope, "uSlopeMax"},
-                     {&sRamp, "uRamp"}, {&sRampRow, "uRampRow"}, {&sMegaDepth, "uMegaDepth"}, {&sDensity, "uDensity"}});
+    locateUniforms(depth, {{&depthScene, "uSceneDepth"}, {&depthRatio, "uRatio"}});
+    locateUniforms(spheres, {{&sView, "uView"}, {&sProj, "uProj"}, {&sNear, "uNear"}, {&sFar, "uFar"},
+                             {&sSlope, "uSlopeMax"}, {&sRamp, "uRamp"}, {&sRampRow, "uRampRow"},
+                             {&sMegaDepth, "uMegaDepth"}, {&sDensity, "uDensity"}});
     const GLuint blurs[2] = {blur, shade};
     for (int i = 0; i < 2; ++i) {
         Blur& u = b[i];
-        locate(blurs[i], {{&u.color, "uColor"}, {&u.density, "uDensity"}, {&u.encoded, "uEncodedDepth"},
-                          {&u.direction, "uDirection"}, {&u.taps, "uTaps"}, {&u.sigma, "uSigma"},
-                          {&u.falloff, "uDepthFalloff"}, {&u.invView, "uInvView"}, {&u.projTerms, "uProjTerms"},
-                          {&u.time, "uTime"}, {&u.noiseStrength, "uNoiseStrength"}, {&u.noiseScale, "uNoiseScale"},
-                          {&u.lit, "uLit"}, {&u.toSun, "uToSun"}, {&u.sunColor, "uSunColor"}, {&u.ambient, "uAmbient"},
-                          {&u.scattering, "uScattering"}, {&u.anisotropy, "uAnisotropy"},
-                          {&u.absorption, "uAbsorption"}});
+        locateUniforms(blurs[i],
+                       {{&u.color, "uColor"}, {&u.density, "uDensity"}, {&u.encoded, "uEncodedDepth"},
+                        {&u.direction, "uDirection"}, {&u.taps, "uTaps"}, {&u.sigma, "uSigma"},
+                        {&u.falloff, "uDepthFalloff"}, {&u.invView, "uInvView"}, {&u.projTerms, "uProjTerms"},
+                        {&u.time, "uTime"}, {&u.noiseStrength, "uNoiseStrength"}, {&u.noiseScale, "uNoiseScale"},
+                        {&u.lit, "uLit"}, {&u.toSun, "uToSun"}, {&u.sunColor, "uSunColor"}, {&u.ambient, "uAmbient"},
+                        {&u.scattering, "uScattering"}, {&u.anisotropy, "uAnisotropy"},
+                        {&u.absorption, "uAbsorption"}});
     }
-    locate(composite, {{&cCloud, "uCloud"}, {&cCloudDepth, "uCloudDepth"}, {&cScene, "uSceneDepth"},
-                       {&cSoft, "uSoftScale"}});
+    locateUniforms(composite, {{&cCloud, "uCloud"}, {&cCloudDepth, "uCloudDepth"}, {&cScene, "uSceneDepth"},
+                               {&cSoft, "uSoftScale"}});
 }
 
 }  // namespace fx

@@ -3,6 +3,7 @@
 #include "render/PrivateGl.h"
 
 #include "ShaderLoader.h"
+#include "Uniforms.h"
 
 namespace fx {
 
@@ -27,36 +28,26 @@ void QuarterResPrograms::build(const std::string& shaderDir, std::vector<std::st
         if (!*program) errors->push_back(error);
         return *program != 0;
     };
-    auto loc = [](uint32_t program, const char* name) { return glGetUniformLocation(program, name); };
     if (make(&downsample, "fs_particles_depth_downsample.glsl", "")) {
-        downsampleDepthLoc = loc(downsample, "uSceneDepth");
-        downsampleViewLoc = loc(downsample, "uViewSize");
+        locateUniforms(downsample, {{&downsampleDepthLoc, "uSceneDepth"}, {&downsampleViewLoc, "uViewSize"}});
     }
     if (make(&halfZ, "fs_particles_half_z.glsl", "")) {
-        halfZDepthLoc = loc(halfZ, "uHalfDepth");
-        halfZFromLinearLoc = loc(halfZ, "uDepthFromLinear");
-        halfZFarLoc = loc(halfZ, "uFar");
-        halfZViewLoc = loc(halfZ, "uViewSize");
+        locateUniforms(halfZ, {{&halfZDepthLoc, "uHalfDepth"}, {&halfZFromLinearLoc, "uDepthFromLinear"},
+                               {&halfZFarLoc, "uFar"}, {&halfZViewLoc, "uViewSize"}});
     }
     static const char* const kCompositeDefines[CompositeVariantCount] = {
         "", "#define FX_COMPOSITE_BILINEAR 1\n", "#define FX_COMPOSITE_MIXED 1\n"};
     for (int v = 0; v < CompositeVariantCount; ++v) {
         CompositeProgram& c = composite[v];
         if (!make(&c.program, "fs_particles_composite.glsl", kCompositeDefines[v])) continue;
-        c.halfColor = loc(c.program, "uHalfColor");
-        c.halfDepth = loc(c.program, "uHalfDepth");
-        c.sceneDepth = loc(c.program, "uSceneDepth");
-        c.threshold = loc(c.program, "uDepthThreshold");
-        c.edgeColor = loc(c.program, "uEdgeColor");
-        c.viewSize = loc(c.program, "uViewSize");
+        locateUniforms(c.program, {{&c.halfColor, "uHalfColor"}, {&c.halfDepth, "uHalfDepth"},
+                                   {&c.sceneDepth, "uSceneDepth"}, {&c.threshold, "uDepthThreshold"},
+                                   {&c.edgeColor, "uEdgeColor"}, {&c.viewSize, "uViewSize"}});
     }
     if (make(&edgeMask, "fs_particles_edge_mask.glsl", "")) {
-        maskHalfDepthLoc = loc(edgeMask, "uHalfDepth");
-        maskSceneDepthLoc = loc(edgeMask, "uSceneDepth");
-        maskThresholdLoc = loc(edgeMask, "uDepthThreshold");
-        maskPassLoc = loc(edgeMask, "uPassDepth");
-        maskFailLoc = loc(edgeMask, "uFailDepth");
-        maskViewLoc = loc(edgeMask, "uViewSize");
+        locateUniforms(edgeMask, {{&maskHalfDepthLoc, "uHalfDepth"}, {&maskSceneDepthLoc, "uSceneDepth"},
+                                  {&maskThresholdLoc, "uDepthThreshold"}, {&maskPassLoc, "uPassDepth"},
+                                  {&maskFailLoc, "uFailDepth"}, {&maskViewLoc, "uViewSize"}});
     }
     if (!tileVao_) {
         glGenVertexArrays(1, &tileVao_);
