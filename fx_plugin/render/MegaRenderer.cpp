@@ -38,18 +38,10 @@ MegaRenderer::~MegaRenderer() {
     passes_.releaseGl();
 }
 
-void MegaRenderer::log(LogLevel level, const std::string& message) const {
-    if (config_.host) config_.host->log(level, message.c_str());
-}
-
 bool MegaRenderer::ensureLoaded() {
     if (state_ != State::Unloaded) return state_ == State::Ready;
     state_ = State::Failed;
-    std::string error;
-    if (!loadPrivateGlOrDiagnose(config_.host, &loadDiagnostics_, &error)) {
-        log(LogLevel::Error, "fx: mega-particles disabled: " + error);
-        return false;
-    }
+    if (!loadGlFor(config_, "mega-particles", &loadDiagnostics_)) return false;
     GlStateGuard guard;
     glActiveTexture(GL_TEXTURE0);
     auto programs = std::make_unique<MegaPrograms>();

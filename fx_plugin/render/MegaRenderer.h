@@ -105,7 +105,7 @@ private:
     enum class State { Unloaded, Ready, Failed };
 
     bool ensureLoaded();
-    void log(LogLevel level, const std::string& message) const;
+    void log(LogLevel level, const std::string& message) const { logTo(config_, level, message); }
 
     RendererConfig config_;
     State state_ = State::Unloaded;

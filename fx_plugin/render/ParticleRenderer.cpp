@@ -81,22 +81,13 @@ void ParticleRenderer::reportLoadErrors(const std::vector<std::string>& errors) 
     }
 }
 
-void ParticleRenderer::log(LogLevel level, const std::string& message) const {
-    if (config_.host) config_.host->log(level, message.c_str());
-}
-
 bool ParticleRenderer::ensureLoaded() {
     if (state_ != State::Unloaded) return state_ == State::Ready;
     state_ = State::Failed;
-    // The plugin's private GL table, filled through the host (never a global loader).
-    std::string error;
-    if (!loadPrivateGlOrDiagnose(config_.host, &loadDiagnostics_, &error)) {
-        log(LogLevel::Error, "fx: particle renderer disabled: " + error);
-        return false;
-    }
-
+    if (!loadGlFor(config_, "particle renderer", &loadDiagnostics_)) return false;
     GlStateGuard guard;
     glActiveTexture(GL_TEXTURE0);  // every texture we touch goes through a guarded unit
+    std::string error;
     if (!draw_.loadAtlas(config_.dataDir, &error)) {
         log(LogLevel::Error, "fx: particle renderer disabled: " + error);
         loadDiagnostics_.push_back(Diagnostic{ErrorCode::ResourceMissing, "", 0, 0, "", error});

@@ -105,7 +105,7 @@ public:
 
 private:
     bool ensureLoaded();
-    void log(LogLevel level, const std::string& message) const;
+    void log(LogLevel level, const std::string& message) const { logTo(config_, level, message); }
     /// Logs the build lines of `errors` not logged before (each once, loadErrors_) and keeps them
     /// as diagnostics for prepare().
     void reportLoadErrors(const std::vector<std::string>& errors);

@@ -1,6 +1,19 @@
 #include "RendererConfig.h"
 
+#include "PrivateGlLoader.h"
+
 namespace fx {
+
+void logTo(const RendererConfig& config, LogLevel level, const std::string& message) {
+    if (config.host) config.host->log(level, message.c_str());
+}
+
+bool loadGlFor(const RendererConfig& config, const char* what, Diagnostics* diagnostics) {
+    std::string error;
+    if (loadPrivateGlOrDiagnose(config.host, diagnostics, &error)) return true;
+    logTo(config, LogLevel::Error, std::string("fx: ") + what + " disabled: " + error);
+    return false;
+}
 
 bool targetsFitView(PassContext& ctx, const ViewInfo& view, Target first, Target second,
                     const SizeMismatchReport& report) {

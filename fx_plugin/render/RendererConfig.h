@@ -1,12 +1,13 @@
 #pragma once
-// What the particle renderers (ParticleRenderer, MegaRenderer) are made with, and the two things
-// their passes do alike: check that the host's targets have the view's size, and keep one view's
-// recorded draw alive until the host has run its passes.
+// What the particle renderers (ParticleRenderer, MegaRenderer) are made with, and what they do
+// alike: log through the host, load the private GL table, check that the host's targets have the
+// view's size, and keep one view's recorded draw alive until the host has run its passes.
 #include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "fx/Diagnostic.h"
 #include "fx/HostAdapter.h"
 #include "fx/Types.h"
 
@@ -22,6 +23,14 @@ struct RendererConfig {
     std::string dataDir;          ///< empty = the atlas embedded in the library
     ApiErrors* errors = nullptr;  ///< where SizeMismatch is reported (may be null)
 };
+
+/// `message` through the config's host; nothing without one.
+void logTo(const RendererConfig& config, LogLevel level, const std::string& message);
+
+/// A renderer's first load step: the plugin's private GL table, filled through the host (never a
+/// global loader). False when it cannot be: logged as "fx: <what> disabled: <why>" and added to
+/// `diagnostics`.
+bool loadGlFor(const RendererConfig& config, const char* what, Diagnostics* diagnostics);
 
 /// Told "the scene targets are ..., ViewInfo ...; they must be equal; nothing drawn" when a pass's
 /// targets do not fit its view (the renderer reports it as SizeMismatch).
