@@ -168,16 +168,11 @@ void StatelessRenderer::draw(const ViewInfo& view, const std::vector<Draw>& draw
     glUseProgram(g.program);
     glUniformMatrix4fv(g.u.view, 1, GL_FALSE, &view.view[0][0]);
     glUniformMatrix4fv(g.u.proj, 1, GL_FALSE, &view.proj[0][0]);
+    plainDrawState();
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(view.depth == DepthConvention::ReversedZ ? GL_GEQUAL : GL_LEQUAL);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_SCISSOR_TEST);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    depthTestFor(view.depth);  // the hard technique's test, no depth writes
 
     for (const Draw& d : draws) {
         const StatelessRing& ring = *d.ring;

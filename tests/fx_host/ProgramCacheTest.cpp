@@ -141,7 +141,9 @@ TEST_F(ProgramCacheTest, NoFrameCompilesAcrossOptionSwitchesWhenTheHostPreparesA
         const int drawnBefore = drawn;
         const uint64_t built = prepareThenDraw(s.label);
         EXPECT_GT(drawn, drawnBefore) << s.label << ": nothing drawn";
-        if (s.reachesNew) EXPECT_GT(built, 0u) << s.label << ": prepareGl built nothing for it";
+        if (s.reachesNew) {
+            EXPECT_GT(built, 0u) << s.label << ": prepareGl built nothing for it";
+        }
         std::printf("[ measured ] %-26s prepareGl built %llu programs, frames 0\n", s.label,
                     static_cast<unsigned long long>(built));
     }

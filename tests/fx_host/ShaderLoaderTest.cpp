@@ -187,7 +187,7 @@ TEST_F(BrokenShaderTest, RendererReportsABrokenShaderAndDrawsNothingWithIt) {
         << (host.errors().empty() ? std::string("no error logged") : host.errors().front());
     EXPECT_EQ(particles.renderer.state(), fx::ParticleRenderer::State::Ready);
 
-    particles.options.techniqueOverride = fx::Technique::Hard;
+    particles.settings.options.techniqueOverride = fx::Technique::Hard;
     renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = particles.declare(view, f); });
     EXPECT_EQ(drawn, 1);
     EXPECT_TRUE(graph.ran("particles"));
@@ -291,7 +291,7 @@ TEST_F(BrokenShaderTest, SoftProgramsForOnePowerDrawWhatTheGeneralOneDraws) {
     DirectParticles general(&brokenHost, brokenDir);
     for (DirectParticles* d : {&perPower, &general}) {
         d->desc.render.softness = edge.softness;  // wide fades: every part of the curve is on screen
-        d->options.techniqueOverride = fx::Technique::Soft;
+        d->settings.options.techniqueOverride = fx::Technique::Soft;
         d->set(edge.puffs);
     }
     int logged = 0;
@@ -340,8 +340,8 @@ TEST_F(ShaderLoaderTest, TheHostsDepthSamplingStateDoesNotChangeThePicture) {
     direct.desc.render.softness = edge.softness;
     direct.set(edge.puffs);
     auto frame = [&](fx::Technique t, bool quarter) {
-        direct.options.techniqueOverride = t;
-        direct.options.quarterRes = quarter;
+        direct.settings.options.techniqueOverride = t;
+        direct.settings.options.quarterRes = quarter;
         renderFrame(graph, edge.scene, edge.view, [&](fx::FrameBuilder& f) { direct.declare(edge.view, f); });
         return graph.readColor();
     };
@@ -349,7 +349,7 @@ TEST_F(ShaderLoaderTest, TheHostsDepthSamplingStateDoesNotChangeThePicture) {
         for (bool quarter : {false, true}) {
             // Soft and spherical at full res also with fade classification (its tile pass reads
             // the scene depth).
-            direct.renderer.setFadeClassification(!quarter && t != fx::Technique::Hard, false);
+            direct.settings.classify = !quarter && t != fx::Technique::Hard;
             graph.setSceneDepthSampling(GL_NEAREST, GL_NEAREST, 0);
             const Image nearest = frame(t, quarter);
             graph.setSceneDepthSampling(GL_LINEAR, GL_LINEAR, 0);
