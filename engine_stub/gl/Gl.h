@@ -27,13 +27,23 @@ bool hasClipControl();
 /// clip control.
 bool setClipDepthZeroToOne(bool zeroToOne);
 
+/// Base of the classes that own GL objects or GL state (a program, buffers, a pushed debug
+/// group): a copy would delete or pop them twice, so none of them can be copied (nor moved).
+class NonCopyable {
+public:
+    NonCopyable(const NonCopyable&) = delete;
+    NonCopyable& operator=(const NonCopyable&) = delete;
+
+protected:
+    NonCopyable() = default;
+    ~NonCopyable() = default;
+};
+
 /// RAII GL debug group: the pass, bucket or view name shows in debuggers (RenderDoc, apitrace).
-class DebugGroup {
+class DebugGroup : NonCopyable {
 public:
     explicit DebugGroup(const char* name);
     ~DebugGroup();
-    DebugGroup(const DebugGroup&) = delete;
-    DebugGroup& operator=(const DebugGroup&) = delete;
 };
 
 }  // namespace cube::gl
