@@ -13,6 +13,7 @@
 
 using namespace cube;
 using cubetest::pixel;
+using cubetest::project;
 
 // Named so that the test files of one unity translation unit keep their helpers apart.
 namespace game_test {
@@ -22,15 +23,6 @@ size_t indexOf(const std::vector<std::string>& calls, const std::string& name, s
     for (size_t i = from; i < calls.size(); ++i)
         if (calls[i] == name) return i;
     return std::string::npos;
-}
-
-// Projects a world point with the chase camera into top-down pixel coordinates.
-glm::ivec2 project(Game& g, glm::vec3 p) {
-    const cubeView& v = g.chaseView();
-    const glm::mat4 vp = v.camera().proj(float(v.width()) / float(v.height())) * v.camera().view();
-    const glm::vec4 c = vp * glm::vec4(p, 1.0f);
-    const glm::vec3 ndc = glm::vec3(c) / c.w;
-    return {int((ndc.x * 0.5f + 0.5f) * float(v.width())), int((0.5f - ndc.y * 0.5f) * float(v.height()))};
 }
 
 }  // namespace
