@@ -82,6 +82,14 @@ public:
 void retainFreedMemory();
 
 // Backend factories, one translation unit each (GL/osmesa.h, EGL and glad must not meet).
+/// A new back end P initialised by P::init(desc, error); null (and *error set) when that fails.
+template <class P>
+std::unique_ptr<Platform> initialisedPlatform(const PlatformDesc& desc, std::string* error) {
+    auto p = std::make_unique<P>();
+    if (!p->init(desc, error)) return nullptr;
+    return p;
+}
+
 std::unique_ptr<Platform> createOSMesaPlatform(const PlatformDesc& desc, std::string* error);
 std::unique_ptr<Platform> createEGLPlatform(const PlatformDesc& desc, std::string* error);
 std::unique_ptr<Platform> createGLFWPlatform(const PlatformDesc& desc, std::string* error);

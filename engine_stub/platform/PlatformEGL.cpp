@@ -26,23 +26,13 @@ namespace {
     X(eglChooseConfig) X(eglCreateContext) X(eglDestroyContext) X(eglMakeCurrent)
 
 struct EGLApi {
-#define CUBE_DECLARE(name) decltype(&::name) name = nullptr;
-    CUBE_EGL_FUNCTIONS(CUBE_DECLARE)
-#undef CUBE_DECLARE
+    CUBE_SYSTEM_LIBRARY_TABLE(CUBE_EGL_FUNCTIONS)
 };
 
 bool loadEGL(EGLApi* api, std::string* error) {
-    SystemLibraryDesc desc;
-    desc.backend = "egl";
-    desc.soname = "libEGL.so.1";
-    desc.overrideEnv = "CUBE_EGL_LIBRARY";
-    desc.install = "Debian's libegl1 and a vendor driver (libegl-mesa0, or the GPU vendor's)";
-    SystemLibrary lib;
-    if (!lib.open(desc, error)) return false;
-#define CUBE_RESOLVE(name) if (!lib.resolve(#name, &api->name, error)) return false;
-    CUBE_EGL_FUNCTIONS(CUBE_RESOLVE)
-#undef CUBE_RESOLVE
-    return true;
+    return loadSystemLibrary({"egl", "libEGL.so.1", "CUBE_EGL_LIBRARY",
+                              "Debian's libegl1 and a vendor driver (libegl-mesa0, or the GPU vendor's)"},
+                             api, error);
 }
 
 class EGLPlatform final : public Platform {
@@ -139,9 +129,7 @@ private:
 }  // namespace
 
 std::unique_ptr<Platform> createEGLPlatform(const PlatformDesc& desc, std::string* error) {
-    auto p = std::make_unique<EGLPlatform>();
-    if (!p->init(desc, error)) return nullptr;
-    return p;
+    return initialisedPlatform<EGLPlatform>(desc, error);
 }
 
 }  // namespace cube

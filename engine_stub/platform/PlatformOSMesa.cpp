@@ -20,23 +20,11 @@ namespace {
     X(OSMesaCreateContextAttribs) X(OSMesaMakeCurrent) X(OSMesaDestroyContext) X(OSMesaGetProcAddress)
 
 struct OSMesaApi {
-#define CUBE_DECLARE(name) decltype(&::name) name = nullptr;
-    CUBE_OSMESA_FUNCTIONS(CUBE_DECLARE)
-#undef CUBE_DECLARE
+    CUBE_SYSTEM_LIBRARY_TABLE(CUBE_OSMESA_FUNCTIONS)
 };
 
 bool loadOSMesa(OSMesaApi* api, std::string* error) {
-    SystemLibraryDesc desc;
-    desc.backend = "osmesa";
-    desc.soname = "libOSMesa.so.8";
-    desc.overrideEnv = "CUBE_OSMESA_LIBRARY";
-    desc.install = "Debian's libosmesa6";
-    SystemLibrary lib;
-    if (!lib.open(desc, error)) return false;
-#define CUBE_RESOLVE(name) if (!lib.resolve(#name, &api->name, error)) return false;
-    CUBE_OSMESA_FUNCTIONS(CUBE_RESOLVE)
-#undef CUBE_RESOLVE
-    return true;
+    return loadSystemLibrary({"osmesa", "libOSMesa.so.8", "CUBE_OSMESA_LIBRARY", "Debian's libosmesa6"}, api, error);
 }
 
 class OSMesaPlatform final : public Platform {
@@ -104,9 +92,7 @@ private:
 }  // namespace
 
 std::unique_ptr<Platform> createOSMesaPlatform(const PlatformDesc& desc, std::string* error) {
-    auto p = std::make_unique<OSMesaPlatform>();
-    if (!p->init(desc, error)) return nullptr;
-    return p;
+    return initialisedPlatform<OSMesaPlatform>(desc, error);
 }
 
 }  // namespace cube
