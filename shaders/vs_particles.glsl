@@ -50,20 +50,8 @@ uniform vec4 uShapes[128];     // [frame][bucket][vertex] (x, y), two vertices p
 uniform float uPixelSlope;     // spherical: one pixel of the target in ray slope
 uniform vec4 uShapeInfo[16];   // spherical: [frame][bucket] (inradius, area / 4) of each disc polygon, two per vec4
 
-out vec3 vViewPos;       // view-space position on the quad
-out vec2 vLocal;         // billboards: rotated particle-space coordinate, [-1,1]^2 inside the quad
-flat out vec4 vRamp;     // ramp colour at this particle's life, straight alpha
-flat out float vFade;    // life fade
-flat out vec2 vCell;     // atlas coordinate of the frame's corner (atlasCell)
-flat out vec4 vSphere;   // spherical: view-space centre, radius
-flat out vec2 vTurn;     // (cos, sin) of the particle's angle; spherical: divided by the radius
-#ifdef FX_CLASSIFY
-flat out float vInFront; // 1: the fade is exactly 1 over the whole particle (no depth fetch)
-#endif
-#ifdef FX_LIT
-out vec3 vSunLight;      // sun colour x transmittance through the smoke toward the sun
-out float vPhase;        // Henyey-Greenstein x 4 pi toward the eye
-#endif
+#define FX_VARYING out
+#include "particles_varyings.glsl"
 
 // The trimmed polygon's vertex gl_VertexID for a particle whose texture maps `texelsPerPixel`
 // texels of level 0 onto a pixel (its LOD bucket: TrimmedShapes.h), and that polygon's index
