@@ -16,8 +16,6 @@
 
 namespace cube {
 
-namespace {
-
 bool parseInt(const std::string& s, long long lo, long long hi, long long* out) {
     if (s.empty()) return false;
     errno = 0;
@@ -38,7 +36,6 @@ bool parseDouble(const std::string& s, double lo, double hi, double* out) {
     return true;
 }
 
-// "a,b,c": the parts between commas (an empty part stays, so "1,,2" has three).
 std::vector<std::string> splitCommas(const std::string& text) {
     std::vector<std::string> parts;
     for (size_t start = 0;;) {
@@ -49,6 +46,8 @@ std::vector<std::string> splitCommas(const std::string& text) {
     }
     return parts;
 }
+
+namespace {
 
 bool parseSize(const std::string& s, int* w, int* h) {
     size_t x = s.find('x');
@@ -210,6 +209,21 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
         *dst = v;
         return true;
     };
+    // The next argument as a number in [lo, hi] into *dst; else "flag: expected <what>, got '...'".
+    auto real = [&](int& i, const std::string& flag, double lo, double hi, const char* what, double* dst) -> bool {
+        if (!need(i, 1, flag)) return false;
+        if (parseDouble(argv[++i], lo, hi, dst)) return true;
+        *error = flag + ": expected " + what + ", got '" + argv[i] + "'";
+        return false;
+    };
+    // The same for a whole number.
+    auto whole = [&](int& i, const std::string& flag, long long lo, long long hi, const char* what,
+                     long long* dst) -> bool {
+        if (!need(i, 1, flag)) return false;
+        if (parseInt(argv[++i], lo, hi, dst)) return true;
+        *error = flag + ": expected " + what + ", got '" + argv[i] + "'";
+        return false;
+    };
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         long long n = 0;
@@ -217,11 +231,7 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
         if (a == "--help" || a == "-h") {
             o.help = true;
         } else if (a == "--frames") {
-            if (!need(i, 1, a)) return false;
-            if (!parseInt(argv[++i], 0, 100000000, &n)) {
-                *error = "--frames: expected a whole number 0..100000000, got '" + std::string(argv[i]) + "'";
-                return false;
-            }
+            if (!whole(i, a, 0, 100000000, "a whole number 0..100000000", &n)) return false;
             o.frames = int(n);
         } else if (a == "--size") {
             if (!need(i, 1, a)) return false;
@@ -230,41 +240,22 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
                 return false;
             }
         } else if (a == "--fixed-dt") {
-            if (!need(i, 1, a)) return false;
-            if (!parseDouble(argv[++i], 0.0, 10.0, &d)) {
-                *error = "--fixed-dt: expected seconds in 0..10, got '" + std::string(argv[i]) + "'";
-                return false;
-            }
+            if (!real(i, a, 0.0, 10.0, "seconds in 0..10", &d)) return false;
             o.fixedDt = d;
         } else if (a == "--start") {
-            if (!need(i, 1, a)) return false;
-            if (!parseDouble(argv[++i], 0.0, 1e6, &d)) {
-                *error = "--start: expected seconds in 0..1e6, got '" + std::string(argv[i]) + "'";
-                return false;
-            }
+            if (!real(i, a, 0.0, 1e6, "seconds in 0..1e6", &d)) return false;
             o.startTime = d;
         } else if (a == "--explode-at") {
-            if (!need(i, 1, a)) return false;
-            if (!parseDouble(argv[++i], 0.0, 1e6, &d)) {
-                *error = "--explode-at: expected seconds in 0..1e6, got '" + std::string(argv[i]) + "'";
-                return false;
-            }
+            if (!real(i, a, 0.0, 1e6, "seconds in 0..1e6", &d)) return false;
             o.explodeAt = d;
         } else if (a == "--seed") {
-            if (!need(i, 1, a)) return false;
-            if (!parseInt(argv[++i], 0, 4294967295LL, &n)) {
-                *error = "--seed: expected a whole number 0..4294967295, got '" + std::string(argv[i]) + "'";
-                return false;
-            }
+            if (!whole(i, a, 0, 4294967295LL, "a whole number 0..4294967295", &n)) return false;
             o.seed = unsigned(n);
         } else if (a == "--screenshot") {
             if (!path(i, a, &o.screenshot)) return false;
         } else if (a == "--screenshot-every") {
             if (!need(i, 2, a)) return false;
-            if (!parseInt(argv[++i], 1, 100000000, &n)) {
-                *error = "--screenshot-every: expected K >= 1, got '" + std::string(argv[i]) + "'";
-                return false;
-            }
+            if (!whole(i, a, 1, 100000000, "K >= 1", &n)) return false;
             o.screenshotEvery = int(n);
             if (!path(i, a, &o.screenshotDir)) return false;
         } else if (a == "--scene") {
@@ -326,11 +317,7 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
             }
             if (o.backend == Backend::GLFW) o.window = true;
         } else if (a == "--near" || a == "--far") {
-            if (!need(i, 1, a)) return false;
-            if (!parseDouble(argv[++i], 1e-4, 1e9, &d)) {
-                *error = a + ": expected a distance in 1e-4..1e9 metres, got '" + std::string(argv[i]) + "'";
-                return false;
-            }
+            if (!real(i, a, 1e-4, 1e9, "a distance in 1e-4..1e9 metres", &d)) return false;
             (a == "--near" ? o.nearPlane : o.farPlane) = float(d);
         } else if (a == "--depth") {
             if (!need(i, 1, a)) return false;
