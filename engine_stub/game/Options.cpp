@@ -224,6 +224,18 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
         *error = flag + ": expected " + what + ", got '" + argv[i] + "'";
         return false;
     };
+    // The next argument, one of two words: *isFirst says whether it is `first`. Else
+    // "flag: expected <first> or <second>, got '...'".
+    auto either = [&](int& i, const std::string& flag, const char* first, const char* second, bool* isFirst) -> bool {
+        if (!need(i, 1, flag)) return false;
+        const std::string v = argv[++i];
+        if (v != first && v != second) {
+            *error = flag + ": expected " + first + " or " + second + ", got '" + v + "'";
+            return false;
+        }
+        *isFirst = v == first;
+        return true;
+    };
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         long long n = 0;
@@ -272,14 +284,9 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
                 return false;
             }
         } else if (a == "--fx") {
-            if (!need(i, 1, a)) return false;
-            std::string v = argv[++i];
-            if (v == "legacy") o.fx = FxPath::Legacy;
-            else if (v == "plugin") o.fx = FxPath::Plugin;
-            else {
-                *error = "--fx: expected legacy or plugin, got '" + v + "'";
-                return false;
-            }
+            bool legacy = false;
+            if (!either(i, a, "legacy", "plugin", &legacy)) return false;
+            o.fx = legacy ? FxPath::Legacy : FxPath::Plugin;
         } else if (a == "--mode") {
             if (!need(i, 1, a)) return false;
             std::string v = argv[++i];
@@ -291,13 +298,9 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
             }
             o.mode = v;
         } else if (a == "--fx-depth") {
-            if (!need(i, 1, a)) return false;
-            const std::string v = argv[++i];
-            if (v != "linear" && v != "zbuffer") {
-                *error = "--fx-depth: expected linear or zbuffer, got '" + v + "'";
-                return false;
-            }
-            o.pluginZBuffer = v == "zbuffer";
+            bool linear = true;
+            if (!either(i, a, "linear", "zbuffer", &linear)) return false;
+            o.pluginZBuffer = !linear;
         } else if (a == "--prepass-equal") {
             o.prepassEqual = true;
         } else if (a == "--quarter-res") {
@@ -320,13 +323,7 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
             if (!real(i, a, 1e-4, 1e9, "a distance in 1e-4..1e9 metres", &d)) return false;
             (a == "--near" ? o.nearPlane : o.farPlane) = float(d);
         } else if (a == "--depth") {
-            if (!need(i, 1, a)) return false;
-            const std::string v = argv[++i];
-            if (v != "reversed" && v != "standard") {
-                *error = "--depth: expected reversed or standard, got '" + v + "'";
-                return false;
-            }
-            o.reversedZ = v == "reversed";
+            if (!either(i, a, "reversed", "standard", &o.reversedZ)) return false;
         } else if (a == "--camera") {
             if (!need(i, 1, a)) return false;
             const std::string text = argv[++i];
