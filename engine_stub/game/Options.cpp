@@ -190,6 +190,17 @@ std::string usage() {
 }
 
 bool parseOptions(int argc, const char* const* argv, Options* out, std::string* error) {
+    // The flags without a value: each sets one option.
+    struct Switch {
+        const char* flag;
+        bool Options::*option;
+        bool value;
+    };
+    static const Switch kSwitches[] = {
+        {"--prepass-equal", &Options::prepassEqual, true}, {"--quarter-res", &Options::quarterRes, true},
+        {"--bilinear-upsample", &Options::bilinearUpsample, true}, {"--watch", &Options::watch, true},
+        {"--no-mirror", &Options::mirror, false}, {"--no-hud", &Options::hud, false},
+        {"--unlit-smoke", &Options::litSmoke, false}, {"--panel", &Options::panel, true}};
     Options o;
     auto need = [&](int& i, int count, const std::string& flag) -> bool {
         if (i + count >= argc) {
@@ -240,7 +251,11 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
         const std::string a = argv[i];
         long long n = 0;
         double d = 0.0;
-        if (a == "--help" || a == "-h") {
+        const Switch* const sw = std::find_if(std::begin(kSwitches), std::end(kSwitches),
+                                              [&](const Switch& s) { return a == s.flag; });
+        if (sw != std::end(kSwitches)) {
+            o.*(sw->option) = sw->value;
+        } else if (a == "--help" || a == "-h") {
             o.help = true;
         } else if (a == "--frames") {
             if (!whole(i, a, 0, 100000000, "a whole number 0..100000000", &n)) return false;
@@ -301,14 +316,6 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
             bool linear = true;
             if (!either(i, a, "linear", "zbuffer", &linear)) return false;
             o.pluginZBuffer = !linear;
-        } else if (a == "--prepass-equal") {
-            o.prepassEqual = true;
-        } else if (a == "--quarter-res") {
-            o.quarterRes = true;
-        } else if (a == "--bilinear-upsample") {
-            o.bilinearUpsample = true;
-        } else if (a == "--watch") {
-            o.watch = true;
         } else if (a == "--window") {
             o.window = true;
             o.backend = Backend::GLFW;
@@ -358,14 +365,6 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
             }
             o.sunAzimuth = az;
             o.sunElevation = el;
-        } else if (a == "--no-mirror") {
-            o.mirror = false;
-        } else if (a == "--no-hud") {
-            o.hud = false;
-        } else if (a == "--unlit-smoke") {
-            o.litSmoke = false;
-        } else if (a == "--panel") {
-            o.panel = true;
         } else if (a == "--stats-json") {
             if (!path(i, a, &o.statsJson)) return false;
         } else {
