@@ -109,12 +109,18 @@ TEST(SceneLoaderErrors, IndexPastVertexCountIsIndexOutOfRange) {
     EXPECT_NE(err.message.find("car_cabin"), std::string::npos) << err.message;
 }
 
-TEST(SceneLoaderErrors, MissingImageIsMissingTexture) {
-    TempDir dir;
+// The race model with one more image, at `uri` beside the .gltf.
+tinygltf::Model raceModelWithImage(const std::string& uri) {
     tinygltf::Model m = raceModel();
     tinygltf::Image img;
-    img.uri = "no_such_smoke.png";
+    img.uri = uri;
     m.images.push_back(img);
+    return m;
+}
+
+TEST(SceneLoaderErrors, MissingImageIsMissingTexture) {
+    TempDir dir;
+    tinygltf::Model m = raceModelWithImage("no_such_smoke.png");
     tinygltf::Texture tex;
     tex.source = 0;
     m.textures.push_back(tex);
@@ -126,20 +132,14 @@ TEST(SceneLoaderErrors, MissingImageIsMissingTexture) {
 
 TEST(SceneLoaderErrors, ImageThatIsNotAnImageIsMissingTexture) {
     TempDir dir;
-    tinygltf::Model m = raceModel();
-    tinygltf::Image img;
-    img.uri = "smoke.png";
-    m.images.push_back(img);
+    tinygltf::Model m = raceModelWithImage("smoke.png");
     writeBytes(dir.file("smoke.png"), "this is not a png");
     expectFailure(writeModel(dir, m, "race"), SceneErrorCode::MissingTexture);
 }
 
 TEST(SceneLoaderErrors, PresentImageLoads) {
     TempDir dir;
-    tinygltf::Model m = raceModel();
-    tinygltf::Image img;
-    img.uri = "smoke.png";
-    m.images.push_back(img);
+    tinygltf::Model m = raceModelWithImage("smoke.png");
     writeBytes(dir.file("smoke.png"), readBytes(dataPath("smoke_atlas.png")));
     SceneData scene;
     SceneError err;
