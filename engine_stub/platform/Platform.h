@@ -75,6 +75,22 @@ public:
     bool softwareRenderer() const;
 };
 
+/// What the headless back ends (OSMesa, EGL) share: the size they were last given, no window to
+/// present or poll, no keys, and the GL_RENDERER string read once the context was made.
+class HeadlessPlatform : public Platform {
+public:
+    int width() const override { return width_; }
+    int height() const override { return height_; }
+    void present() override {}
+    bool pollEvents() override { return true; }
+    bool keyPressed(Key) override { return false; }
+    std::string rendererName() const override { return renderer_; }
+
+protected:
+    int width_ = 0, height_ = 0;
+    std::string renderer_;
+};
+
 /// Keeps memory the process frees for reuse instead of returning it to the kernel at once
 /// (glibc's mmap and trim thresholds). Platform::create calls it for a software renderer, whose
 /// per-frame driver allocations would otherwise be page-faulted in anew every frame. A no-op

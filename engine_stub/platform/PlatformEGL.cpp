@@ -35,7 +35,7 @@ bool loadEGL(EGLApi* api, std::string* error) {
                              api, error);
 }
 
-class EGLPlatform final : public Platform {
+class EGLPlatform final : public HeadlessPlatform {
 public:
     ~EGLPlatform() override {
         if (display_ != EGL_NO_DISPLAY) {
@@ -101,13 +101,7 @@ public:
     }
 
     Backend backend() const override { return Backend::EGL; }
-    int width() const override { return width_; }
-    int height() const override { return height_; }
-    void present() override {}
-    bool pollEvents() override { return true; }
-    bool keyPressed(Key) override { return false; }
     void resize(int w, int h) override { width_ = w; height_ = h; }
-    std::string rendererName() const override { return renderer_; }
     void* getProcAddress(const char* name) const override {
         return reinterpret_cast<void*>(api_.eglGetProcAddress(name));
     }
@@ -122,8 +116,6 @@ private:
     EGLApi api_;
     EGLDisplay display_ = EGL_NO_DISPLAY;
     EGLContext context_ = EGL_NO_CONTEXT;
-    int width_ = 0, height_ = 0;
-    std::string renderer_;
 };
 
 }  // namespace

@@ -27,7 +27,7 @@ bool loadOSMesa(OSMesaApi* api, std::string* error) {
     return loadSystemLibrary({"osmesa", "libOSMesa.so.8", "CUBE_OSMESA_LIBRARY", "Debian's libosmesa6"}, api, error);
 }
 
-class OSMesaPlatform final : public Platform {
+class OSMesaPlatform final : public HeadlessPlatform {
 public:
     ~OSMesaPlatform() override {
         if (ctx_) {
@@ -60,13 +60,7 @@ public:
     }
 
     Backend backend() const override { return Backend::OSMesa; }
-    int width() const override { return width_; }
-    int height() const override { return height_; }
-    void present() override {}
-    bool pollEvents() override { return true; }
-    bool keyPressed(Key) override { return false; }
     void resize(int w, int h) override { makeCurrent(w, h); }
-    std::string rendererName() const override { return renderer_; }
     void* getProcAddress(const char* name) const override {
         return reinterpret_cast<void*>(api_.OSMesaGetProcAddress(name));
     }
@@ -85,8 +79,6 @@ private:
     OSMesaApi api_;
     OSMesaContext ctx_ = nullptr;
     std::vector<unsigned char> buffer_;
-    int width_ = 0, height_ = 0;
-    std::string renderer_;
 };
 
 }  // namespace
