@@ -1,6 +1,8 @@
 #include "fxbench_options.h"
 
+#include <algorithm>
 #include <cstring>
+#include <iterator>
 
 #include "fxbench_modes.h"
 #include "fxbench_scenarios.h"
@@ -95,6 +97,16 @@ bool parseBenchOptions(int argc, const char* const* argv, BenchOptions* out, std
             out->errorFrames = 2;
         }
     }
+    // The flags that set a whole-number option, with the range each accepts.
+    struct IntFlag {
+        const char* flag;
+        long long lo, hi;
+        int BenchOptions::*option;
+    };
+    static const IntFlag kIntFlags[] = {{"--frames", 1, 100000, &BenchOptions::frames},
+                                        {"--rounds", 1, 1000, &BenchOptions::rounds},
+                                        {"--warmup", 0, 10000, &BenchOptions::warmup},
+                                        {"--error-frames", 0, 1000, &BenchOptions::errorFrames}};
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&](std::string* v) {
@@ -117,7 +129,12 @@ bool parseBenchOptions(int argc, const char* const* argv, BenchOptions* out, std
         };
         std::string s;
         long long n = 0;
-        if (a == "--help" || a == "-h") {
+        const IntFlag* const intFlag = std::find_if(std::begin(kIntFlags), std::end(kIntFlags),
+                                                    [&](const IntFlag& f) { return a == f.flag; });
+        if (intFlag != std::end(kIntFlags)) {
+            if (!integer(intFlag->lo, intFlag->hi, &n)) return false;
+            out->*(intFlag->option) = int(n);
+        } else if (a == "--help" || a == "-h") {
             out->help = true;
         } else if (a == "--quick") {
             // applied above
@@ -140,18 +157,6 @@ bool parseBenchOptions(int argc, const char* const* argv, BenchOptions* out, std
                 *error = "--size: expected WxH with each 16..8192, got '" + s + "'";
                 return false;
             }
-        } else if (a == "--frames") {
-            if (!integer(1, 100000, &n)) return false;
-            out->frames = int(n);
-        } else if (a == "--rounds") {
-            if (!integer(1, 1000, &n)) return false;
-            out->rounds = int(n);
-        } else if (a == "--warmup") {
-            if (!integer(0, 10000, &n)) return false;
-            out->warmup = int(n);
-        } else if (a == "--error-frames") {
-            if (!integer(0, 1000, &n)) return false;
-            out->errorFrames = int(n);
         } else if (a == "--seed") {
             if (!integer(0, 4294967295LL, &n)) return false;
             out->seed = unsigned(n);
