@@ -101,22 +101,23 @@ TEST(Render, LegacySmokeAppearsOnceTheRearWheelsSlip) {
     Options o = cubetest::smallOptions(320, 256);
     o.fx = FxPath::Legacy;
     o.mirror = false;
+    // `game` started at drive time `start` and run for `frames` frames.
+    auto runFrom = [&](Game& game, double start, int frames) {
+        std::string err;
+        o.startTime = start;
+        ASSERT_TRUE(game.Init(o, &err)) << err;
+        ASSERT_TRUE(cubetest::runFrames(game, frames));
+    };
     // Before the burnout (t = 1 s): rolling, no sprites.
     {
         Game game;
-        std::string err;
-        o.startTime = 1.0;
-        ASSERT_TRUE(game.Init(o, &err)) << err;
-        ASSERT_TRUE(cubetest::runFrames(game, 30));
+        ASSERT_NO_FATAL_FAILURE(runFrom(game, 1.0, 30));
         EXPECT_EQ(game.specialFX().particlesAlive(), 0);
         EXPECT_EQ(game.passRuns().count("chase.legacy_smoke"), 0u);
     }
     // In the donut (t = 5.5 s): sprites alive and drawn every frame once the first exist.
     Game game;
-    std::string err;
-    o.startTime = 5.5;
-    ASSERT_TRUE(game.Init(o, &err)) << err;
-    ASSERT_TRUE(cubetest::runFrames(game, 45));
+    ASSERT_NO_FATAL_FAILURE(runFrom(game, 5.5, 45));
     EXPECT_GT(game.specialFX().particlesAlive(), 10);
     ASSERT_EQ(game.passRuns().count("chase.legacy_smoke"), 1u);
     EXPECT_GE(game.passRuns().at("chase.legacy_smoke"), 44) << "drawn in every frame after the first emission";
