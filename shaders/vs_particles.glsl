@@ -111,23 +111,8 @@ bool sphereTrimVertex(vec3 centre, float dist, float radius, float frame, float 
     return true;
 }
 
-// Range [lo, hi] of slopes (offset / depth) of the rays that meet a disc of radius r centred
-// `a` across and `depth` ahead in one axis plane (a sphere's x/depth slopes are those of its
-// projection onto the xz plane, a disc of the same radius). Clamped to +-smax; an unbounded side
-// (camera inside the disc, tangent at or behind 90 degrees) is +-smax.
-vec2 slopeRange(float a, float depth, float r, float smax) {
-    float len2 = a * a + depth * depth;
-    if (len2 <= r * r * 1.0001) return vec2(-smax, smax);
-    const float kLimit = 1.5697963;  // just under pi/2
-    float centre = atan(a, depth);
-    float halfAngle = asin(clamp(r / sqrt(len2), 0.0, 1.0));
-    float lo = centre - halfAngle, hi = centre + halfAngle;
-    if (lo >= kLimit) return vec2(smax);   // wholly beside/behind the eye on this axis
-    if (hi <= -kLimit) return vec2(-smax);
-    float slo = lo <= -kLimit ? -smax : tan(lo) - kSnapMarginPixels * uPixelSlope;
-    float shi = hi >= kLimit ? smax : tan(hi) + kSnapMarginPixels * uPixelSlope;
-    return clamp(vec2(slo, shi), -smax, smax);
-}
+// slopeRange(): the sphere's screen box, widened by kSnapMarginPixels.
+#include "particles_sphere_bounds.glsl"
 #endif
 
 void main() {
@@ -140,8 +125,8 @@ void main() {
 #ifdef FX_SPHERICAL
     vec3 centre = (uView * vec4(aPosSize.xyz, 1.0)).xyz;
     float depth = -centre.z;
-    vec2 sx = slopeRange(centre.x, depth, radius, uSlopeMax.x);
-    vec2 sy = slopeRange(centre.y, depth, radius, uSlopeMax.y);
+    vec2 sx = slopeRange(centre.x, depth, radius, uSlopeMax.x, kSnapMarginPixels * uPixelSlope);
+    vec2 sy = slopeRange(centre.y, depth, radius, uSlopeMax.y, kSnapMarginPixels * uPixelSlope);
     float quadDepth = clamp(depth - radius, uNear * 1.01, uFar * 0.99);
     vec2 corner = aCorner;
     if (uTrimmed != 0) {
