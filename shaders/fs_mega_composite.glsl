@@ -11,16 +11,14 @@ uniform sampler2D uCloud;       // RGBA16F premultiplied
 uniform sampler2D uCloudDepth;  // R32F metres, 0 = no cloud
 uniform sampler2D uSceneDepth;  // full resolution R32F metres
 uniform float uSoftScale;       // 1 / render.softness, 1/m
+#include "particles_footprint.glsl"
 
 layout(location = 0) out vec4 oColor;
 
 void main() {
-    ivec2 fullSize = textureSize(uSceneDepth, 0);
-    ivec2 lowSize = textureSize(uCloud, 0);
-    vec2 lowPos = gl_FragCoord.xy * vec2(lowSize) / vec2(fullSize) - 0.5;
-    ivec2 base = ivec2(floor(lowPos));
-    vec2 f = lowPos - vec2(base);
-    ivec2 last = lowSize - 1;
+    ivec2 base, last;
+    vec2 f;
+    lowResFootprint(textureSize(uSceneDepth, 0), textureSize(uCloud, 0), base, f, last);
     float scene = texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r;
     if (scene <= 0.0) scene = 3.0e38;  // nothing drawn (fx/HostAdapter.h)
     vec4 sum = vec4(0.0);

@@ -2,18 +2,10 @@
 // procedural pattern (uCost octaves of value noise), so shading every hidden layer costs real
 // time and depth test EQUAL after a prepass has something to save.
 #include "common.glsl"
+#include "mesh_fragment.glsl"
 
 uniform vec4 uBaseColor;
 uniform int uCost;
-
-in vec3 vNormal;
-in vec3 vViewPos;
-in vec3 vWorldPos;
-
-layout(location = 0) out vec4 oColor;
-// Linear view depth (metres) for a second render target: where the opaque pass also writes the
-// scene depth the particles read (no depth prepass). Without one bound the output is dropped.
-layout(location = 1) out float oLinearDepth;
 
 float hash(vec2 p) { return fract(sin(dot(p, vec2(127.1, 311.7))) * 43758.5453); }
 float noise(vec2 p) {

@@ -24,16 +24,14 @@ uniform float uDepthThreshold;  // relative: |low - full| > threshold * full is 
 uniform sampler2D uEdgeColor;   // premultiplied RGBA16F, full size, the edge pixels' redraw
 #include "particles_mixed_edge.glsl"
 #endif
+#include "particles_footprint.glsl"
 
 layout(location = 0) out vec4 oColor;
 
 void main() {
-    ivec2 fullSize = textureSize(uSceneDepth, 0);
-    ivec2 lowSize = textureSize(uHalfColor, 0);
-    vec2 lowPos = gl_FragCoord.xy * vec2(lowSize) / vec2(fullSize) - 0.5;
-    ivec2 base = ivec2(floor(lowPos));
-    vec2 f = lowPos - vec2(base);
-    ivec2 last = lowSize - 1;
+    ivec2 base, last;
+    vec2 f;
+    lowResFootprint(textureSize(uSceneDepth, 0), textureSize(uHalfColor, 0), base, f, last);
     ivec2 t0 = clamp(base, ivec2(0), last), t1 = clamp(base + ivec2(1, 0), ivec2(0), last);
     ivec2 t2 = clamp(base + ivec2(0, 1), ivec2(0), last), t3 = clamp(base + ivec2(1, 1), ivec2(0), last);
     float w0 = (1.0 - f.x) * (1.0 - f.y), w1 = f.x * (1.0 - f.y), w2 = (1.0 - f.x) * f.y, w3 = f.x * f.y;

@@ -4,17 +4,7 @@
 // FX_LINEAR_DEPTH_TEST (quarter-res target, which has no z-buffer): the same all-or-nothing test
 // made against the half-resolution linear depth instead.
 #include "particles_common.glsl"
-
-in vec3 vViewPos;
-in vec2 vLocal;
-flat in vec4 vRamp;
-flat in float vFade;
-flat in vec2 vCell;
-flat in vec2 vTurn;
-#ifdef FX_LIT
-in vec3 vSunLight;
-in float vPhase;
-#endif
+#include "particles_varyings.glsl"
 
 layout(location = 0) out vec4 oColor;
 

@@ -7,12 +7,7 @@
 // the quarter-slice around its depth instead of being switched at the boundary, so smoke that
 // drifts through a boundary darkens what is below it gradually (no popping).
 #include "particles_common.glsl"
-
-in vec3 vViewPos;
-in vec2 vLocal;
-flat in vec4 vRamp;
-flat in float vFade;
-flat in vec2 vCell;
+#include "particles_varyings.glsl"
 
 uniform vec2 uDepthRange;  // light-view distance (metres) of light depth 0 and 1
 

@@ -6,20 +6,7 @@
 // precision too; against a standard 24-bit one (near 0.01 and far 100 km cannot tell 1 m apart
 // at 10 km) it does not, and the fade alone hides what is behind geometry.
 #include "particles_common.glsl"
-
-in vec3 vViewPos;
-in vec2 vLocal;
-flat in vec4 vRamp;
-flat in float vFade;
-flat in vec2 vCell;
-flat in vec2 vTurn;
-#ifdef FX_CLASSIFY
-flat in float vInFront;
-#endif
-#ifdef FX_LIT
-in vec3 vSunLight;
-in float vPhase;
-#endif
+#include "particles_varyings.glsl"
 
 layout(location = 0) out vec4 oColor;
 

@@ -12,20 +12,7 @@
 // Near fade uses the depth of the middle of the visible chord, which never drops below the
 // near plane, so a camera inside a large particle still sees it, fading as the chord shortens.
 #include "particles_common.glsl"
-
-in vec3 vViewPos;
-flat in vec4 vRamp;
-flat in float vFade;
-flat in vec2 vCell;
-flat in vec4 vSphere;
-flat in vec2 vTurn;  // (cos, sin) of the particle's angle / radius
-#ifdef FX_CLASSIFY
-flat in float vInFront;
-#endif
-#ifdef FX_LIT
-in vec3 vSunLight;
-in float vPhase;
-#endif
+#include "particles_varyings.glsl"
 
 layout(location = 0) out vec4 oColor;
 

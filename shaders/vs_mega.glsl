@@ -23,21 +23,8 @@ flat out vec4 vColor;         // ramp colour, alpha = ramp alpha x life fade
 
 const float kRampTexels = 64.0;  // ColorRampTexture::kTexels
 
-// Range of slopes (offset / depth) of the rays that meet a disc of radius r centred `a` across
-// and `depth` ahead (as vs_particles.glsl FX_SPHERICAL): unbounded sides go to +-smax.
-vec2 slopeRange(float a, float depth, float r, float smax) {
-    float len2 = a * a + depth * depth;
-    if (len2 <= r * r * 1.0001) return vec2(-smax, smax);
-    const float kLimit = 1.5697963;  // just under pi/2
-    float centre = atan(a, depth);
-    float halfAngle = asin(clamp(r / sqrt(len2), 0.0, 1.0));
-    float lo = centre - halfAngle, hi = centre + halfAngle;
-    if (lo >= kLimit) return vec2(smax);
-    if (hi <= -kLimit) return vec2(-smax);
-    float slo = lo <= -kLimit ? -smax : tan(lo);
-    float shi = hi >= kLimit ? smax : tan(hi);
-    return clamp(vec2(slo, shi), -smax, smax);
-}
+// slopeRange(), with no margin.
+#include "particles_sphere_bounds.glsl"
 
 void main() {
     float life = clamp(aLifeRotFadeFrame.x, 0.0, 1.0);
@@ -46,8 +33,8 @@ void main() {
     float radius = 0.5 * aPosSize.w;
     vec3 centre = (uView * vec4(aPosSize.xyz, 1.0)).xyz;
     float depth = -centre.z;
-    vec2 sx = slopeRange(centre.x, depth, radius, uSlopeMax.x);
-    vec2 sy = slopeRange(centre.y, depth, radius, uSlopeMax.y);
+    vec2 sx = slopeRange(centre.x, depth, radius, uSlopeMax.x, 0.0);
+    vec2 sy = slopeRange(centre.y, depth, radius, uSlopeMax.y, 0.0);
     // The box lies at the sphere's front (clamped into the clip range); the fragment shader
     // only uses the ray direction, so its depth changes no pixel.
     float quadDepth = clamp(depth - radius, uNear * 1.01, uFar * 0.99);

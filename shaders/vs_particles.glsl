@@ -50,20 +50,8 @@ uniform vec4 uShapes[128];     // [frame][bucket][vertex] (x, y), two vertices p
 uniform float uPixelSlope;     // spherical: one pixel of the target in ray slope
 uniform vec4 uShapeInfo[16];   // spherical: [frame][bucket] (inradius, area / 4) of each disc polygon, two per vec4
 
-out vec3 vViewPos;       // view-space position on the quad
-out vec2 vLocal;         // billboards: rotated particle-space coordinate, [-1,1]^2 inside the quad
-flat out vec4 vRamp;     // ramp colour at this particle's life, straight alpha
-flat out float vFade;    // life fade
-flat out vec2 vCell;     // atlas coordinate of the frame's corner (atlasCell)
-flat out vec4 vSphere;   // spherical: view-space centre, radius
-flat out vec2 vTurn;     // (cos, sin) of the particle's angle; spherical: divided by the radius
-#ifdef FX_CLASSIFY
-flat out float vInFront; // 1: the fade is exactly 1 over the whole particle (no depth fetch)
-#endif
-#ifdef FX_LIT
-out vec3 vSunLight;      // sun colour x transmittance through the smoke toward the sun
-out float vPhase;        // Henyey-Greenstein x 4 pi toward the eye
-#endif
+#define FX_VARYING out
+#include "particles_varyings.glsl"
 
 // The trimmed polygon's vertex gl_VertexID for a particle whose texture maps `texelsPerPixel`
 // texels of level 0 onto a pixel (its LOD bucket: TrimmedShapes.h), and that polygon's index
@@ -123,23 +111,8 @@ bool sphereTrimVertex(vec3 centre, float dist, float radius, float frame, float 
     return true;
 }
 
-// Range [lo, hi] of slopes (offset / depth) of the rays that meet a disc of radius r centred
-// `a` across and `depth` ahead in one axis plane (a sphere's x/depth slopes are those of its
-// projection onto the xz plane, a disc of the same radius). Clamped to +-smax; an unbounded side
-// (camera inside the disc, tangent at or behind 90 degrees) is +-smax.
-vec2 slopeRange(float a, float depth, float r, float smax) {
-    float len2 = a * a + depth * depth;
-    if (len2 <= r * r * 1.0001) return vec2(-smax, smax);
-    const float kLimit = 1.5697963;  // just under pi/2
-    float centre = atan(a, depth);
-    float halfAngle = asin(clamp(r / sqrt(len2), 0.0, 1.0));
-    float lo = centre - halfAngle, hi = centre + halfAngle;
-    if (lo >= kLimit) return vec2(smax);   // wholly beside/behind the eye on this axis
-    if (hi <= -kLimit) return vec2(-smax);
-    float slo = lo <= -kLimit ? -smax : tan(lo) - kSnapMarginPixels * uPixelSlope;
-    float shi = hi >= kLimit ? smax : tan(hi) + kSnapMarginPixels * uPixelSlope;
-    return clamp(vec2(slo, shi), -smax, smax);
-}
+// slopeRange(): the sphere's screen box, widened by kSnapMarginPixels.
+#include "particles_sphere_bounds.glsl"
 #endif
 
 void main() {
@@ -152,8 +125,8 @@ void main() {
 #ifdef FX_SPHERICAL
     vec3 centre = (uView * vec4(aPosSize.xyz, 1.0)).xyz;
     float depth = -centre.z;
-    vec2 sx = slopeRange(centre.x, depth, radius, uSlopeMax.x);
-    vec2 sy = slopeRange(centre.y, depth, radius, uSlopeMax.y);
+    vec2 sx = slopeRange(centre.x, depth, radius, uSlopeMax.x, kSnapMarginPixels * uPixelSlope);
+    vec2 sy = slopeRange(centre.y, depth, radius, uSlopeMax.y, kSnapMarginPixels * uPixelSlope);
     float quadDepth = clamp(depth - radius, uNear * 1.01, uFar * 0.99);
     vec2 corner = aCorner;
     if (uTrimmed != 0) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "fxbench_named.h"
 #include "game/Game.h"
 
 namespace fxbench {
@@ -62,17 +63,9 @@ const std::vector<Mode>& allModes() {
     return modes;
 }
 
-const Mode* findMode(const std::string& name) {
-    for (const Mode& m : allModes())
-        if (name == m.name) return &m;
-    return nullptr;
-}
+const Mode* findMode(const std::string& name) { return findNamed(allModes(), name); }
 
-std::string modeNameList() {
-    std::string s;
-    for (const Mode& m : allModes()) s += (s.empty() ? "" : ", ") + std::string(m.name);
-    return s;
-}
+std::string modeNameList() { return namedList(allModes()); }
 
 bool parseModeList(const std::string& text, std::vector<std::string>* out, std::string* error) {
     out->clear();

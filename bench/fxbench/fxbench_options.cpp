@@ -1,45 +1,26 @@
 #include "fxbench_options.h"
 
-#include <cerrno>
-#include <cstdlib>
+#include <algorithm>
 #include <cstring>
+#include <iterator>
 
 #include "fxbench_modes.h"
 #include "fxbench_scenarios.h"
+#include "game/Options.h"
 
 namespace fxbench {
 
 namespace {
 
-bool parseInt(const std::string& s, long long lo, long long hi, long long* out) {
-    if (s.empty()) return false;
-    errno = 0;
-    char* end = nullptr;
-    const long long v = std::strtoll(s.c_str(), &end, 10);
-    if (errno != 0 || *end != '\0' || v < lo || v > hi) return false;
-    *out = v;
-    return true;
-}
-
 bool parseSize(const std::string& s, int* w, int* h) {
     const size_t x = s.find('x');
     long long a = 0, b = 0;
-    if (x == std::string::npos || !parseInt(s.substr(0, x), 16, 8192, &a) || !parseInt(s.substr(x + 1), 16, 8192, &b))
+    if (x == std::string::npos || !cube::parseInt(s.substr(0, x), 16, 8192, &a) ||
+        !cube::parseInt(s.substr(x + 1), 16, 8192, &b))
         return false;
     *w = int(a);
     *h = int(b);
     return true;
-}
-
-std::vector<std::string> split(const std::string& s, char sep) {
-    std::vector<std::string> out;
-    size_t start = 0;
-    while (true) {
-        const size_t p = s.find(sep, start);
-        out.push_back(s.substr(start, p == std::string::npos ? std::string::npos : p - start));
-        if (p == std::string::npos) return out;
-        start = p + 1;
-    }
 }
 
 bool parseSweep(const std::string& text, Sweep* out, std::string* error) {
@@ -50,10 +31,10 @@ bool parseSweep(const std::string& text, Sweep* out, std::string* error) {
         return false;
     }
     *out = Sweep{};
-    for (const std::string& item : split(text.substr(eq + 1), ',')) {
+    for (const std::string& item : cube::splitCommas(text.substr(eq + 1))) {
         if (kind == "particles") {
             long long n = 0;
-            if (!parseInt(item, 1, 1000000, &n)) {
+            if (!cube::parseInt(item, 1, 1000000, &n)) {
                 *error = "--sweep particles: expected particle counts 1..1000000, got '" + item + "'";
                 return false;
             }
@@ -116,6 +97,16 @@ bool parseBenchOptions(int argc, const char* const* argv, BenchOptions* out, std
             out->errorFrames = 2;
         }
     }
+    // The flags that set a whole-number option, with the range each accepts.
+    struct IntFlag {
+        const char* flag;
+        long long lo, hi;
+        int BenchOptions::*option;
+    };
+    static const IntFlag kIntFlags[] = {{"--frames", 1, 100000, &BenchOptions::frames},
+                                        {"--rounds", 1, 1000, &BenchOptions::rounds},
+                                        {"--warmup", 0, 10000, &BenchOptions::warmup},
+                                        {"--error-frames", 0, 1000, &BenchOptions::errorFrames}};
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&](std::string* v) {
@@ -129,7 +120,7 @@ bool parseBenchOptions(int argc, const char* const* argv, BenchOptions* out, std
         auto integer = [&](long long lo, long long hi, long long* v) {
             std::string s;
             if (!value(&s)) return false;
-            if (!parseInt(s, lo, hi, v)) {
+            if (!cube::parseInt(s, lo, hi, v)) {
                 *error = a + ": expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got '" +
                          s + "'";
                 return false;
@@ -138,7 +129,12 @@ bool parseBenchOptions(int argc, const char* const* argv, BenchOptions* out, std
         };
         std::string s;
         long long n = 0;
-        if (a == "--help" || a == "-h") {
+        const IntFlag* const intFlag = std::find_if(std::begin(kIntFlags), std::end(kIntFlags),
+                                                    [&](const IntFlag& f) { return a == f.flag; });
+        if (intFlag != std::end(kIntFlags)) {
+            if (!integer(intFlag->lo, intFlag->hi, &n)) return false;
+            out->*(intFlag->option) = int(n);
+        } else if (a == "--help" || a == "-h") {
             out->help = true;
         } else if (a == "--quick") {
             // applied above
@@ -161,18 +157,6 @@ bool parseBenchOptions(int argc, const char* const* argv, BenchOptions* out, std
                 *error = "--size: expected WxH with each 16..8192, got '" + s + "'";
                 return false;
             }
-        } else if (a == "--frames") {
-            if (!integer(1, 100000, &n)) return false;
-            out->frames = int(n);
-        } else if (a == "--rounds") {
-            if (!integer(1, 1000, &n)) return false;
-            out->rounds = int(n);
-        } else if (a == "--warmup") {
-            if (!integer(0, 10000, &n)) return false;
-            out->warmup = int(n);
-        } else if (a == "--error-frames") {
-            if (!integer(0, 1000, &n)) return false;
-            out->errorFrames = int(n);
         } else if (a == "--seed") {
             if (!integer(0, 4294967295LL, &n)) return false;
             out->seed = unsigned(n);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "fxbench_named.h"
 #include "fxbench_options.h"
 #include "gl/Paths.h"
 
@@ -59,17 +60,9 @@ const std::vector<Scenario>& allScenarios() {
     return scenarios;
 }
 
-const Scenario* findScenario(const std::string& name) {
-    for (const Scenario& s : allScenarios())
-        if (name == s.name) return &s;
-    return nullptr;
-}
+const Scenario* findScenario(const std::string& name) { return findNamed(allScenarios(), name); }
 
-std::string scenarioNameList() {
-    std::string s;
-    for (const Scenario& sc : allScenarios()) s += (s.empty() ? "" : ", ") + std::string(sc.name);
-    return s;
-}
+std::string scenarioNameList() { return namedList(allScenarios()); }
 
 cube::CameraQuads cameraQuads(const Scenario& scenario) {
     // `overdrawLayers` opaque panels facing the camera from 40 m down to 20 m, drawn back to

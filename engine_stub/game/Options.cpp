@@ -16,8 +16,6 @@
 
 namespace cube {
 
-namespace {
-
 bool parseInt(const std::string& s, long long lo, long long hi, long long* out) {
     if (s.empty()) return false;
     errno = 0;
@@ -38,7 +36,6 @@ bool parseDouble(const std::string& s, double lo, double hi, double* out) {
     return true;
 }
 
-// "a,b,c": the parts between commas (an empty part stays, so "1,,2" has three).
 std::vector<std::string> splitCommas(const std::string& text) {
     std::vector<std::string> parts;
     for (size_t start = 0;;) {
@@ -49,6 +46,8 @@ std::vector<std::string> splitCommas(const std::string& text) {
     }
     return parts;
 }
+
+namespace {
 
 bool parseSize(const std::string& s, int* w, int* h) {
     size_t x = s.find('x');
@@ -191,6 +190,17 @@ std::string usage() {
 }
 
 bool parseOptions(int argc, const char* const* argv, Options* out, std::string* error) {
+    // The flags without a value: each sets one option.
+    struct Switch {
+        const char* flag;
+        bool Options::*option;
+        bool value;
+    };
+    static const Switch kSwitches[] = {
+        {"--prepass-equal", &Options::prepassEqual, true}, {"--quarter-res", &Options::quarterRes, true},
+        {"--bilinear-upsample", &Options::bilinearUpsample, true}, {"--watch", &Options::watch, true},
+        {"--no-mirror", &Options::mirror, false}, {"--no-hud", &Options::hud, false},
+        {"--unlit-smoke", &Options::litSmoke, false}, {"--panel", &Options::panel, true}};
     Options o;
     auto need = [&](int& i, int count, const std::string& flag) -> bool {
         if (i + count >= argc) {
@@ -210,18 +220,45 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
         *dst = v;
         return true;
     };
+    // The next argument as a number in [lo, hi] into *dst; else "flag: expected <what>, got '...'".
+    auto real = [&](int& i, const std::string& flag, double lo, double hi, const char* what, double* dst) -> bool {
+        if (!need(i, 1, flag)) return false;
+        if (parseDouble(argv[++i], lo, hi, dst)) return true;
+        *error = flag + ": expected " + what + ", got '" + argv[i] + "'";
+        return false;
+    };
+    // The same for a whole number.
+    auto whole = [&](int& i, const std::string& flag, long long lo, long long hi, const char* what,
+                     long long* dst) -> bool {
+        if (!need(i, 1, flag)) return false;
+        if (parseInt(argv[++i], lo, hi, dst)) return true;
+        *error = flag + ": expected " + what + ", got '" + argv[i] + "'";
+        return false;
+    };
+    // The next argument, one of two words: *isFirst says whether it is `first`. Else
+    // "flag: expected <first> or <second>, got '...'".
+    auto either = [&](int& i, const std::string& flag, const char* first, const char* second, bool* isFirst) -> bool {
+        if (!need(i, 1, flag)) return false;
+        const std::string v = argv[++i];
+        if (v != first && v != second) {
+            *error = flag + ": expected " + first + " or " + second + ", got '" + v + "'";
+            return false;
+        }
+        *isFirst = v == first;
+        return true;
+    };
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         long long n = 0;
         double d = 0.0;
-        if (a == "--help" || a == "-h") {
+        const Switch* const sw = std::find_if(std::begin(kSwitches), std::end(kSwitches),
+                                              [&](const Switch& s) { return a == s.flag; });
+        if (sw != std::end(kSwitches)) {
+            o.*(sw->option) = sw->value;
+        } else if (a == "--help" || a == "-h") {
             o.help = true;
         } else if (a == "--frames") {
-            if (!need(i, 1, a)) return false;
-            if (!parseInt(argv[++i], 0, 100000000, &n)) {
-                *error = "--frames: expected a whole number 0..100000000, got '" + std::string(argv[i]) + "'";
-                return false;
-            }
+            if (!whole(i, a, 0, 100000000, "a whole number 0..100000000", &n)) return false;
             o.frames = int(n);
         } else if (a == "--size") {
             if (!need(i, 1, a)) return false;
@@ -230,41 +267,22 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
                 return false;
             }
         } else if (a == "--fixed-dt") {
-            if (!need(i, 1, a)) return false;
-            if (!parseDouble(argv[++i], 0.0, 10.0, &d)) {
-                *error = "--fixed-dt: expected seconds in 0..10, got '" + std::string(argv[i]) + "'";
-                return false;
-            }
+            if (!real(i, a, 0.0, 10.0, "seconds in 0..10", &d)) return false;
             o.fixedDt = d;
         } else if (a == "--start") {
-            if (!need(i, 1, a)) return false;
-            if (!parseDouble(argv[++i], 0.0, 1e6, &d)) {
-                *error = "--start: expected seconds in 0..1e6, got '" + std::string(argv[i]) + "'";
-                return false;
-            }
+            if (!real(i, a, 0.0, 1e6, "seconds in 0..1e6", &d)) return false;
             o.startTime = d;
         } else if (a == "--explode-at") {
-            if (!need(i, 1, a)) return false;
-            if (!parseDouble(argv[++i], 0.0, 1e6, &d)) {
-                *error = "--explode-at: expected seconds in 0..1e6, got '" + std::string(argv[i]) + "'";
-                return false;
-            }
+            if (!real(i, a, 0.0, 1e6, "seconds in 0..1e6", &d)) return false;
             o.explodeAt = d;
         } else if (a == "--seed") {
-            if (!need(i, 1, a)) return false;
-            if (!parseInt(argv[++i], 0, 4294967295LL, &n)) {
-                *error = "--seed: expected a whole number 0..4294967295, got '" + std::string(argv[i]) + "'";
-                return false;
-            }
+            if (!whole(i, a, 0, 4294967295LL, "a whole number 0..4294967295", &n)) return false;
             o.seed = unsigned(n);
         } else if (a == "--screenshot") {
             if (!path(i, a, &o.screenshot)) return false;
         } else if (a == "--screenshot-every") {
             if (!need(i, 2, a)) return false;
-            if (!parseInt(argv[++i], 1, 100000000, &n)) {
-                *error = "--screenshot-every: expected K >= 1, got '" + std::string(argv[i]) + "'";
-                return false;
-            }
+            if (!whole(i, a, 1, 100000000, "K >= 1", &n)) return false;
             o.screenshotEvery = int(n);
             if (!path(i, a, &o.screenshotDir)) return false;
         } else if (a == "--scene") {
@@ -281,14 +299,9 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
                 return false;
             }
         } else if (a == "--fx") {
-            if (!need(i, 1, a)) return false;
-            std::string v = argv[++i];
-            if (v == "legacy") o.fx = FxPath::Legacy;
-            else if (v == "plugin") o.fx = FxPath::Plugin;
-            else {
-                *error = "--fx: expected legacy or plugin, got '" + v + "'";
-                return false;
-            }
+            bool legacy = false;
+            if (!either(i, a, "legacy", "plugin", &legacy)) return false;
+            o.fx = legacy ? FxPath::Legacy : FxPath::Plugin;
         } else if (a == "--mode") {
             if (!need(i, 1, a)) return false;
             std::string v = argv[++i];
@@ -300,21 +313,9 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
             }
             o.mode = v;
         } else if (a == "--fx-depth") {
-            if (!need(i, 1, a)) return false;
-            const std::string v = argv[++i];
-            if (v != "linear" && v != "zbuffer") {
-                *error = "--fx-depth: expected linear or zbuffer, got '" + v + "'";
-                return false;
-            }
-            o.pluginZBuffer = v == "zbuffer";
-        } else if (a == "--prepass-equal") {
-            o.prepassEqual = true;
-        } else if (a == "--quarter-res") {
-            o.quarterRes = true;
-        } else if (a == "--bilinear-upsample") {
-            o.bilinearUpsample = true;
-        } else if (a == "--watch") {
-            o.watch = true;
+            bool linear = true;
+            if (!either(i, a, "linear", "zbuffer", &linear)) return false;
+            o.pluginZBuffer = !linear;
         } else if (a == "--window") {
             o.window = true;
             o.backend = Backend::GLFW;
@@ -326,20 +327,10 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
             }
             if (o.backend == Backend::GLFW) o.window = true;
         } else if (a == "--near" || a == "--far") {
-            if (!need(i, 1, a)) return false;
-            if (!parseDouble(argv[++i], 1e-4, 1e9, &d)) {
-                *error = a + ": expected a distance in 1e-4..1e9 metres, got '" + std::string(argv[i]) + "'";
-                return false;
-            }
+            if (!real(i, a, 1e-4, 1e9, "a distance in 1e-4..1e9 metres", &d)) return false;
             (a == "--near" ? o.nearPlane : o.farPlane) = float(d);
         } else if (a == "--depth") {
-            if (!need(i, 1, a)) return false;
-            const std::string v = argv[++i];
-            if (v != "reversed" && v != "standard") {
-                *error = "--depth: expected reversed or standard, got '" + v + "'";
-                return false;
-            }
-            o.reversedZ = v == "reversed";
+            if (!either(i, a, "reversed", "standard", &o.reversedZ)) return false;
         } else if (a == "--camera") {
             if (!need(i, 1, a)) return false;
             const std::string text = argv[++i];
@@ -374,14 +365,6 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
             }
             o.sunAzimuth = az;
             o.sunElevation = el;
-        } else if (a == "--no-mirror") {
-            o.mirror = false;
-        } else if (a == "--no-hud") {
-            o.hud = false;
-        } else if (a == "--unlit-smoke") {
-            o.litSmoke = false;
-        } else if (a == "--panel") {
-            o.panel = true;
         } else if (a == "--stats-json") {
             if (!path(i, a, &o.statsJson)) return false;
         } else {

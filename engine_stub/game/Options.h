@@ -70,4 +70,11 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
 bool checkOptions(const Options& options, std::string* error);
 std::string usage();
 
+/// The readers parseOptions checks values with, shared with fxbench's command line: true (and
+/// *out set) when `s` is wholly a number in [lo, hi], a double also finite.
+bool parseInt(const std::string& s, long long lo, long long hi, long long* out);
+bool parseDouble(const std::string& s, double lo, double hi, double* out);
+/// "a,b,c": the parts between commas (an empty part stays, so "1,,2" has three).
+std::vector<std::string> splitCommas(const std::string& text);
+
 }  // namespace cube

@@ -27,13 +27,29 @@ bool hasClipControl();
 /// clip control.
 bool setClipDepthZeroToOne(bool zeroToOne);
 
+/// Creates a vertex array and an array buffer whose attribute 0 reads tightly packed vec2s (2D
+/// positions), and leaves both bound.
+void createVec2VertexArray(GLuint* vao, GLuint* vbo);
+/// Deletes a vertex array and the buffers it reads (an index buffer `ibo` too); 0s are skipped.
+void deleteVertexArray(GLuint vao, GLuint vbo, GLuint ibo = 0);
+
+/// Base of the classes that own GL objects or GL state (a program, buffers, a pushed debug
+/// group): a copy would delete or pop them twice, so none of them can be copied (nor moved).
+class NonCopyable {
+public:
+    NonCopyable(const NonCopyable&) = delete;
+    NonCopyable& operator=(const NonCopyable&) = delete;
+
+protected:
+    NonCopyable() = default;
+    ~NonCopyable() = default;
+};
+
 /// RAII GL debug group: the pass, bucket or view name shows in debuggers (RenderDoc, apitrace).
-class DebugGroup {
+class DebugGroup : NonCopyable {
 public:
     explicit DebugGroup(const char* name);
     ~DebugGroup();
-    DebugGroup(const DebugGroup&) = delete;
-    DebugGroup& operator=(const DebugGroup&) = delete;
 };
 
 }  // namespace cube::gl

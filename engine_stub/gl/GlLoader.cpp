@@ -83,6 +83,21 @@ int checkErrors(const char* where) {
     return n;
 }
 
+void createVec2VertexArray(GLuint* vao, GLuint* vbo) {
+    glGenVertexArrays(1, vao);
+    glGenBuffers(1, vbo);
+    glBindVertexArray(*vao);
+    glBindBuffer(GL_ARRAY_BUFFER, *vbo);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+}
+
+void deleteVertexArray(GLuint vao, GLuint vbo, GLuint ibo) {
+    if (ibo) glDeleteBuffers(1, &ibo);
+    if (vbo) glDeleteBuffers(1, &vbo);
+    if (vao) glDeleteVertexArrays(1, &vao);
+}
+
 DebugGroup::DebugGroup(const char* name) {
     if (g_hasDebug) glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name);
 }

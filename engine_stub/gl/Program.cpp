@@ -7,6 +7,17 @@ namespace cube::gl {
 
 namespace {
 
+// The info log of a shader (glGetShaderiv, glGetShaderInfoLog) or a program (glGetProgramiv,
+// glGetProgramInfoLog), up to its first NUL.
+template <class GetIv, class GetLog>
+std::string infoLog(GLuint object, GetIv getIv, GetLog getLog) {
+    GLint len = 0;
+    getIv(object, GL_INFO_LOG_LENGTH, &len);
+    std::string log(size_t(len > 0 ? len : 1), '\0');
+    getLog(object, len, nullptr, log.data());
+    return log.c_str();
+}
+
 GLuint compile(GLenum stage, const std::string& file, const fx::ShaderSource& source, std::string* error) {
     GLuint s = glCreateShader(stage);
     const char* src = source.text.c_str();
@@ -15,11 +26,7 @@ GLuint compile(GLenum stage, const std::string& file, const fx::ShaderSource& so
     GLint ok = 0;
     glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
     if (!ok) {
-        GLint len = 0;
-        glGetShaderiv(s, GL_INFO_LOG_LENGTH, &len);
-        std::string log(size_t(len > 0 ? len : 1), '\0');
-        glGetShaderInfoLog(s, len, nullptr, log.data());
-        *error = fx::translateInfoLog(log.c_str(), source.files, file);
+        *error = fx::translateInfoLog(infoLog(s, glGetShaderiv, glGetShaderInfoLog), source.files, file);
         if (error->empty()) *error = file + ":0: compile failed (the driver gave no log)";
         glDeleteShader(s);
         return 0;
@@ -68,11 +75,7 @@ bool Program::load(const std::string& vsFile, const std::string& fsFile, Program
     GLint ok = 0;
     glGetProgramiv(prog, GL_LINK_STATUS, &ok);
     if (!ok) {
-        GLint len = 0;
-        glGetProgramiv(prog, GL_INFO_LOG_LENGTH, &len);
-        std::string log(size_t(len > 0 ? len : 1), '\0');
-        glGetProgramInfoLog(prog, len, nullptr, log.data());
-        *error = vsFile + " + " + fsFile + ": link failed: " + log.c_str();
+        *error = vsFile + " + " + fsFile + ": link failed: " + infoLog(prog, glGetProgramiv, glGetProgramInfoLog);
         glDeleteProgram(prog);
         return false;
     }

@@ -174,58 +174,59 @@ bool EditSession::apply(int doc, const std::string& text, const std::string& gro
     return true;
 }
 
+template <class Edit>
+bool EditSession::editReaction(int reaction, int doc, std::string* text, const Edit& edit, std::string* error) const {
+    *text = docs_[size_t(doc)].text;
+    try {
+        const YAML::Node root = YAML::Load(*text);
+        YAML::Node reactionMap;
+        if (!findReaction(root, plugin_.reactionName(reaction), &reactionMap)) {
+            *error = docs_[size_t(doc)].path + ": no reaction named '" + plugin_.reactionName(reaction) + "'";
+            return false;
+        }
+        return edit(reactionMap, text);
+    } catch (const YAML::Exception& e) {
+        *error = docs_[size_t(doc)].path + ": " + e.what();
+        return false;
+    }
+}
+
 bool EditSession::set(int reaction, const std::string& key, const std::string& value, std::string* error,
                       const std::string& group) {
     int doc = -1;
     if (!locate(reaction, &doc, error)) return false;
     std::vector<Segment> path;
     if (!splitKey(key, &path, error)) return false;
-    std::string text = docs_[size_t(doc)].text;
-    try {
-        const YAML::Node root = YAML::Load(text);
-        YAML::Node reactionMap;
-        if (!findReaction(root, plugin_.reactionName(reaction), &reactionMap)) {
-            *error = docs_[size_t(doc)].path + ": no reaction named '" + plugin_.reactionName(reaction) + "'";
-            return false;
-        }
+    std::string text;
+    const bool edited = editReaction(reaction, doc, &text, [&](const YAML::Node& reactionMap, std::string* fileText) {
         std::vector<YAML::Node> nodes;
         const size_t found = walk(reactionMap, path, &nodes);
         if (found == path.size()) {
             const YAML::Node& target = nodes.back();
-            if (target.IsScalar()) {
-                if (!replaceScalar(&text, target, value, error)) return false;
-            } else {
-                TextSpan span;
-                if (!valueSpan(text, target, &span, error)) return false;
-                text = replaced(text, span, value);
-            }
-        } else if (found + 1 == path.size() && !path.back().name.empty() && nodes.back().IsMap()) {
-            if (!addToMap(&text, nodes.back(), path.back().name, value, error)) return false;
-        } else if (found + 2 == path.size() && found == 0 && !path.back().name.empty()) {
-            // The whole section is absent: add it as a one-line flow map.
-            if (!addToMap(&text, reactionMap, path[0].name, "{" + path[1].name + ": " + value + "}", error)) return false;
-        } else {
-            *error = "'" + key + "' cannot be set: the file has no such entry to edit";
-            return false;
+            if (target.IsScalar()) return replaceScalar(fileText, target, value, error);
+            TextSpan span;
+            if (!valueSpan(*fileText, target, &span, error)) return false;
+            *fileText = replaced(*fileText, span, value);
+            return true;
         }
-    } catch (const YAML::Exception& e) {
-        *error = docs_[size_t(doc)].path + ": " + e.what();
+        if (found + 1 == path.size() && !path.back().name.empty() && nodes.back().IsMap())
+            return addToMap(fileText, nodes.back(), path.back().name, value, error);
+        if (found + 2 == path.size() && found == 0 && !path.back().name.empty()) {
+            // The whole section is absent: add it as a one-line flow map.
+            return addToMap(fileText, reactionMap, path[0].name, "{" + path[1].name + ": " + value + "}", error);
+        }
+        *error = "'" + key + "' cannot be set: the file has no such entry to edit";
         return false;
-    }
+    }, error);
+    if (!edited) return false;
     return apply(doc, text, group.empty() ? std::string() : std::to_string(reaction) + "/" + group, true, error);
 }
 
 bool EditSession::editStopLine(int reaction, int stop, bool duplicate, std::string* error) {
     int doc = -1;
     if (!locate(reaction, &doc, error)) return false;
-    std::string text = docs_[size_t(doc)].text;
-    try {
-        const YAML::Node root = YAML::Load(text);
-        YAML::Node reactionMap;
-        if (!findReaction(root, plugin_.reactionName(reaction), &reactionMap)) {
-            *error = docs_[size_t(doc)].path + ": no reaction named '" + plugin_.reactionName(reaction) + "'";
-            return false;
-        }
+    std::string text;
+    const bool edited = editReaction(reaction, doc, &text, [&](const YAML::Node& reactionMap, std::string* fileText) {
         const YAML::Node ramp = reactionMap["particle"] ? reactionMap["particle"]["colour_ramp"] : YAML::Node();
         if (!ramp || !ramp.IsSequence() || stop < 0 || size_t(stop) >= ramp.size()) {
             *error = "the file has no colour_ramp stop " + std::to_string(stop) + " to " +
@@ -233,39 +234,33 @@ bool EditSession::editStopLine(int reaction, int stop, bool duplicate, std::stri
             return false;
         }
         TextSpan line;
-        if (!sequenceItemLine(text, ramp[size_t(stop)], &line, error)) return false;
+        if (!sequenceItemLine(*fileText, ramp[size_t(stop)], &line, error)) return false;
         if (duplicate) {
-            text.insert(line.end, text.substr(line.begin, line.end - line.begin));
+            fileText->insert(line.end, fileText->substr(line.begin, line.end - line.begin));
         } else {
-            text.erase(line.begin, line.end - line.begin);
+            fileText->erase(line.begin, line.end - line.begin);
         }
-    } catch (const YAML::Exception& e) {
-        *error = docs_[size_t(doc)].path + ": " + e.what();
-        return false;
-    }
+        return true;
+    }, error);
+    if (!edited) return false;
     groupOpen_ = false;
     return apply(doc, text, "", true, error);
 }
 
-bool EditSession::undo(std::string* error) {
-    if (undo_.empty()) return false;
-    Step s = undo_.back();
-    if (!apply(s.doc, s.before, "", false, error)) return false;
-    undo_.pop_back();
-    redo_.push_back(s);
+bool EditSession::replay(std::vector<Step>* from, std::vector<Step>* to, std::string Step::*text,
+                         std::string* error) {
+    if (from->empty()) return false;
+    Step s = from->back();
+    if (!apply(s.doc, s.*text, "", false, error)) return false;
+    from->pop_back();
+    to->push_back(s);
     groupOpen_ = false;
     return true;
 }
 
-bool EditSession::redo(std::string* error) {
-    if (redo_.empty()) return false;
-    Step s = redo_.back();
-    if (!apply(s.doc, s.after, "", false, error)) return false;
-    redo_.pop_back();
-    undo_.push_back(s);
-    groupOpen_ = false;
-    return true;
-}
+bool EditSession::undo(std::string* error) { return replay(&undo_, &redo_, &Step::before, error); }
+
+bool EditSession::redo(std::string* error) { return replay(&redo_, &undo_, &Step::after, error); }
 
 bool EditSession::save(int doc, std::string* error) {
     Document& d = docs_[size_t(doc)];

@@ -77,6 +77,14 @@ private:
     };
     bool locate(int reaction, int* doc, std::string* error) const;
     bool editStopLine(int reaction, int stop, bool duplicate, std::string* error);
+    /// Parses the text of `doc` (the file that holds `reaction`) into *text and runs
+    /// edit(reactionMap, text) on it. False with *error when the file does not parse, has no
+    /// such reaction, or `edit` fails (it sets *error then).
+    template <class Edit>
+    bool editReaction(int reaction, int doc, std::string* text, const Edit& edit, std::string* error) const;
+    /// Undo (from undo_ to redo_, the text before) or redo (the other way, the text after): applies
+    /// the last step of *from and moves it to *to. False when *from is empty or apply fails.
+    bool replay(std::vector<Step>* from, std::vector<Step>* to, std::string Step::*text, std::string* error);
     /// Validates and applies `text` for `doc`; on success records an undo step.
     bool apply(int doc, const std::string& text, const std::string& group, bool record, std::string* error);
 

@@ -75,6 +75,22 @@ public:
     bool softwareRenderer() const;
 };
 
+/// What the headless back ends (OSMesa, EGL) share: the size they were last given, no window to
+/// present or poll, no keys, and the GL_RENDERER string read once the context was made.
+class HeadlessPlatform : public Platform {
+public:
+    int width() const override { return width_; }
+    int height() const override { return height_; }
+    void present() override {}
+    bool pollEvents() override { return true; }
+    bool keyPressed(Key) override { return false; }
+    std::string rendererName() const override { return renderer_; }
+
+protected:
+    int width_ = 0, height_ = 0;
+    std::string renderer_;
+};
+
 /// Keeps memory the process frees for reuse instead of returning it to the kernel at once
 /// (glibc's mmap and trim thresholds). Platform::create calls it for a software renderer, whose
 /// per-frame driver allocations would otherwise be page-faulted in anew every frame. A no-op
@@ -82,6 +98,14 @@ public:
 void retainFreedMemory();
 
 // Backend factories, one translation unit each (GL/osmesa.h, EGL and glad must not meet).
+/// A new back end P initialised by P::init(desc, error); null (and *error set) when that fails.
+template <class P>
+std::unique_ptr<Platform> initialisedPlatform(const PlatformDesc& desc, std::string* error) {
+    auto p = std::make_unique<P>();
+    if (!p->init(desc, error)) return nullptr;
+    return p;
+}
+
 std::unique_ptr<Platform> createOSMesaPlatform(const PlatformDesc& desc, std::string* error);
 std::unique_ptr<Platform> createEGLPlatform(const PlatformDesc& desc, std::string* error);
 std::unique_ptr<Platform> createGLFWPlatform(const PlatformDesc& desc, std::string* error);

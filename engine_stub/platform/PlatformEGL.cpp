@@ -26,26 +26,16 @@ namespace {
     X(eglChooseConfig) X(eglCreateContext) X(eglDestroyContext) X(eglMakeCurrent)
 
 struct EGLApi {
-#define CUBE_DECLARE(name) decltype(&::name) name = nullptr;
-    CUBE_EGL_FUNCTIONS(CUBE_DECLARE)
-#undef CUBE_DECLARE
+    CUBE_SYSTEM_LIBRARY_TABLE(CUBE_EGL_FUNCTIONS)
 };
 
 bool loadEGL(EGLApi* api, std::string* error) {
-    SystemLibraryDesc desc;
-    desc.backend = "egl";
-    desc.soname = "libEGL.so.1";
-    desc.overrideEnv = "CUBE_EGL_LIBRARY";
-    desc.install = "Debian's libegl1 and a vendor driver (libegl-mesa0, or the GPU vendor's)";
-    SystemLibrary lib;
-    if (!lib.open(desc, error)) return false;
-#define CUBE_RESOLVE(name) if (!lib.resolve(#name, &api->name, error)) return false;
-    CUBE_EGL_FUNCTIONS(CUBE_RESOLVE)
-#undef CUBE_RESOLVE
-    return true;
+    return loadSystemLibrary({"egl", "libEGL.so.1", "CUBE_EGL_LIBRARY",
+                              "Debian's libegl1 and a vendor driver (libegl-mesa0, or the GPU vendor's)"},
+                             api, error);
 }
 
-class EGLPlatform final : public Platform {
+class EGLPlatform final : public HeadlessPlatform {
 public:
     ~EGLPlatform() override {
         if (display_ != EGL_NO_DISPLAY) {
@@ -111,13 +101,7 @@ public:
     }
 
     Backend backend() const override { return Backend::EGL; }
-    int width() const override { return width_; }
-    int height() const override { return height_; }
-    void present() override {}
-    bool pollEvents() override { return true; }
-    bool keyPressed(Key) override { return false; }
     void resize(int w, int h) override { width_ = w; height_ = h; }
-    std::string rendererName() const override { return renderer_; }
     void* getProcAddress(const char* name) const override {
         return reinterpret_cast<void*>(api_.eglGetProcAddress(name));
     }
@@ -132,16 +116,12 @@ private:
     EGLApi api_;
     EGLDisplay display_ = EGL_NO_DISPLAY;
     EGLContext context_ = EGL_NO_CONTEXT;
-    int width_ = 0, height_ = 0;
-    std::string renderer_;
 };
 
 }  // namespace
 
 std::unique_ptr<Platform> createEGLPlatform(const PlatformDesc& desc, std::string* error) {
-    auto p = std::make_unique<EGLPlatform>();
-    if (!p->init(desc, error)) return nullptr;
-    return p;
+    return initialisedPlatform<EGLPlatform>(desc, error);
 }
 
 }  // namespace cube

@@ -27,9 +27,7 @@ namespace {
     X(glfwSetCharCallback) X(glfwGetWindowSize)
 
 struct GLFWApi {
-#define CUBE_DECLARE(name) decltype(&::name) name = nullptr;
-    CUBE_GLFW_FUNCTIONS(CUBE_DECLARE)
-#undef CUBE_DECLARE
+    CUBE_SYSTEM_LIBRARY_TABLE(CUBE_GLFW_FUNCTIONS)
 };
 
 // One table per process, like GLFW's own state: the key callback (a plain function) needs it
@@ -37,17 +35,9 @@ struct GLFWApi {
 GLFWApi g_glfw;
 
 bool loadGLFW(std::string* error) {
-    SystemLibraryDesc desc;
-    desc.backend = "glfw";
-    desc.soname = "libglfw.so.3";
-    desc.overrideEnv = "CUBE_GLFW_LIBRARY";
-    desc.install = "Debian's libglfw3";
-    SystemLibrary lib;
-    if (!lib.open(desc, error)) return false;
     GLFWApi api;
-#define CUBE_RESOLVE(name) if (!lib.resolve(#name, &api.name, error)) return false;
-    CUBE_GLFW_FUNCTIONS(CUBE_RESOLVE)
-#undef CUBE_RESOLVE
+    if (!loadSystemLibrary({"glfw", "libglfw.so.3", "CUBE_GLFW_LIBRARY", "Debian's libglfw3"}, &api, error))
+        return false;
     g_glfw = api;
     return true;
 }
@@ -206,9 +196,7 @@ private:
 }  // namespace
 
 std::unique_ptr<Platform> createGLFWPlatform(const PlatformDesc& desc, std::string* error) {
-    auto p = std::make_unique<GLFWPlatform>();
-    if (!p->init(desc, error)) return nullptr;
-    return p;
+    return initialisedPlatform<GLFWPlatform>(desc, error);
 }
 
 }  // namespace cube

@@ -20,26 +20,14 @@ namespace {
     X(OSMesaCreateContextAttribs) X(OSMesaMakeCurrent) X(OSMesaDestroyContext) X(OSMesaGetProcAddress)
 
 struct OSMesaApi {
-#define CUBE_DECLARE(name) decltype(&::name) name = nullptr;
-    CUBE_OSMESA_FUNCTIONS(CUBE_DECLARE)
-#undef CUBE_DECLARE
+    CUBE_SYSTEM_LIBRARY_TABLE(CUBE_OSMESA_FUNCTIONS)
 };
 
 bool loadOSMesa(OSMesaApi* api, std::string* error) {
-    SystemLibraryDesc desc;
-    desc.backend = "osmesa";
-    desc.soname = "libOSMesa.so.8";
-    desc.overrideEnv = "CUBE_OSMESA_LIBRARY";
-    desc.install = "Debian's libosmesa6";
-    SystemLibrary lib;
-    if (!lib.open(desc, error)) return false;
-#define CUBE_RESOLVE(name) if (!lib.resolve(#name, &api->name, error)) return false;
-    CUBE_OSMESA_FUNCTIONS(CUBE_RESOLVE)
-#undef CUBE_RESOLVE
-    return true;
+    return loadSystemLibrary({"osmesa", "libOSMesa.so.8", "CUBE_OSMESA_LIBRARY", "Debian's libosmesa6"}, api, error);
 }
 
-class OSMesaPlatform final : public Platform {
+class OSMesaPlatform final : public HeadlessPlatform {
 public:
     ~OSMesaPlatform() override {
         if (ctx_) {
@@ -72,13 +60,7 @@ public:
     }
 
     Backend backend() const override { return Backend::OSMesa; }
-    int width() const override { return width_; }
-    int height() const override { return height_; }
-    void present() override {}
-    bool pollEvents() override { return true; }
-    bool keyPressed(Key) override { return false; }
     void resize(int w, int h) override { makeCurrent(w, h); }
-    std::string rendererName() const override { return renderer_; }
     void* getProcAddress(const char* name) const override {
         return reinterpret_cast<void*>(api_.OSMesaGetProcAddress(name));
     }
@@ -97,16 +79,12 @@ private:
     OSMesaApi api_;
     OSMesaContext ctx_ = nullptr;
     std::vector<unsigned char> buffer_;
-    int width_ = 0, height_ = 0;
-    std::string renderer_;
 };
 
 }  // namespace
 
 std::unique_ptr<Platform> createOSMesaPlatform(const PlatformDesc& desc, std::string* error) {
-    auto p = std::make_unique<OSMesaPlatform>();
-    if (!p->init(desc, error)) return nullptr;
-    return p;
+    return initialisedPlatform<OSMesaPlatform>(desc, error);
 }
 
 }  // namespace cube

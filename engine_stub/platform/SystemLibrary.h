@@ -55,4 +55,25 @@ private:
     void* handle_ = nullptr;
 };
 
+/// Opens `desc`'s library and fills the function table `api` from it (a struct declared with
+/// CUBE_SYSTEM_LIBRARY_TABLE). False with the message of the first failure; `api` may then be
+/// partly filled.
+template <class Api>
+bool loadSystemLibrary(const SystemLibraryDesc& desc, Api* api, std::string* error) {
+    SystemLibrary lib;
+    return lib.open(desc, error) && api->resolveAll(lib, error);
+}
+
 }  // namespace cube
+
+/// The body of a back end's function table: for each entry point of the X-macro `LIST`, a
+/// pointer of the system header's type named like the function (null until resolved), and
+/// resolveAll(lib, error), which looks each one up by its own name in order and stops at the
+/// first that is missing.
+#define CUBE_SYSTEM_LIBRARY_TABLE(LIST)                                          \
+    LIST(CUBE_SYSTEM_LIBRARY_DECLARE_)                                           \
+    bool resolveAll(const ::cube::SystemLibrary& lib, std::string* error) {      \
+        return true LIST(CUBE_SYSTEM_LIBRARY_RESOLVE_);                          \
+    }
+#define CUBE_SYSTEM_LIBRARY_DECLARE_(name) decltype(&::name) name = nullptr;
+#define CUBE_SYSTEM_LIBRARY_RESOLVE_(name) &&lib.resolve(#name, &name, error)

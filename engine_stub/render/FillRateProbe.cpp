@@ -11,8 +11,7 @@ namespace cube {
 
 FillRateProbe::~FillRateProbe() {
     if (texture_) glDeleteTextures(1, &texture_);
-    if (vbo_) glDeleteBuffers(1, &vbo_);
-    if (vao_) glDeleteVertexArrays(1, &vao_);
+    gl::deleteVertexArray(vao_, vbo_);
 }
 
 bool FillRateProbe::init(std::string* error) {
@@ -33,12 +32,7 @@ bool FillRateProbe::init(std::string* error) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-    glGenVertexArrays(1, &vao_);
-    glGenBuffers(1, &vbo_);
-    glBindVertexArray(vao_);
-    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+    gl::createVec2VertexArray(&vao_, &vbo_);
     return true;
 }
 

@@ -16,12 +16,9 @@ class RenderTargetPool;
 
 namespace cube {
 
-class FillRateProbe {
+class FillRateProbe : gl::NonCopyable {
 public:
-    FillRateProbe() = default;
     ~FillRateProbe();
-    FillRateProbe(const FillRateProbe&) = delete;
-    FillRateProbe& operator=(const FillRateProbe&) = delete;
 
     /// Builds the program (shaders/vs_fill_probe.glsl, fs_fill_probe.glsl), a 64x64 RGBA8 texture
     /// and the vertex buffer. Needs the context current.

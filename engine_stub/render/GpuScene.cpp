@@ -5,9 +5,7 @@
 namespace cube {
 
 GpuScene::~GpuScene() {
-    if (ibo_) glDeleteBuffers(1, &ibo_);
-    if (vbo_) glDeleteBuffers(1, &vbo_);
-    if (vao_) glDeleteVertexArrays(1, &vao_);
+    gl::deleteVertexArray(vao_, vbo_, ibo_);
 }
 
 void GpuScene::upload(const SceneData& scene) {

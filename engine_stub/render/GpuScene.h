@@ -21,12 +21,9 @@ struct MeshDraw {
     bool alphaTested = false;
 };
 
-class GpuScene {
+class GpuScene : gl::NonCopyable {
 public:
-    GpuScene() = default;
     ~GpuScene();
-    GpuScene(const GpuScene&) = delete;
-    GpuScene& operator=(const GpuScene&) = delete;
 
     void upload(const SceneData& scene);
     /// Records a draw per (node, mesh). Descendants of `movingRoot` get `movingTransform` applied.

@@ -5,18 +5,12 @@
 namespace cube {
 
 Hud::~Hud() {
-    if (vbo_) glDeleteBuffers(1, &vbo_);
-    if (vao_) glDeleteVertexArrays(1, &vao_);
+    gl::deleteVertexArray(vao_, vbo_);
 }
 
 bool Hud::init(std::string* error) {
     if (!gl::Program::load("vs_hud.glsl", "fs_hud.glsl", &program_, error)) return false;
-    glGenVertexArrays(1, &vao_);
-    glGenBuffers(1, &vbo_);
-    glBindVertexArray(vao_);
-    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+    gl::createVec2VertexArray(&vao_, &vbo_);
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     return true;

@@ -7,8 +7,7 @@ namespace cube {
 
 LegacySpriteRenderer::~LegacySpriteRenderer() {
     if (atlas_) glDeleteTextures(1, &atlas_);
-    if (vbo_) glDeleteBuffers(1, &vbo_);
-    if (vao_) glDeleteVertexArrays(1, &vao_);
+    gl::deleteVertexArray(vao_, vbo_);
 }
 
 bool LegacySpriteRenderer::init(std::string* error) {

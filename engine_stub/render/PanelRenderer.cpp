@@ -32,9 +32,7 @@ private:
 
 PanelRenderer::~PanelRenderer() {
     if (font_) glDeleteTextures(1, &font_);
-    if (ebo_) glDeleteBuffers(1, &ebo_);
-    if (vbo_) glDeleteBuffers(1, &vbo_);
-    if (vao_) glDeleteVertexArrays(1, &vao_);
+    gl::deleteVertexArray(vao_, vbo_, ebo_);
 }
 
 bool PanelRenderer::init(std::string* error) {

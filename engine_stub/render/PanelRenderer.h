@@ -18,12 +18,9 @@ struct ImDrawData;
 
 namespace cube {
 
-class PanelRenderer {
+class PanelRenderer : gl::NonCopyable {
 public:
-    PanelRenderer() = default;
     ~PanelRenderer();
-    PanelRenderer(const PanelRenderer&) = delete;
-    PanelRenderer& operator=(const PanelRenderer&) = delete;
 
     /// Builds the program and uploads the font atlas of the current ImGui context (an R8
     /// texture: the atlas's coverage). False + "file:line: message" when the shaders do not build.

@@ -49,12 +49,9 @@ struct CameraQuads {
     bool empty() const { return quads.empty(); }
 };
 
-class SceneRenderer {
+class SceneRenderer : gl::NonCopyable {
 public:
-    SceneRenderer() = default;
     ~SceneRenderer();
-    SceneRenderer(const SceneRenderer&) = delete;
-    SceneRenderer& operator=(const SceneRenderer&) = delete;
 
     /// Uploads the scene's meshes and builds every program. False + error (shader file:line ...).
     /// `reversedZ` asks for reversed-Z (clip z in [0, 1], near = 1, cleared to 0, GREATER); it

@@ -11,15 +11,7 @@ using Kind = ReactionKeyInfo::Kind;
 
 ReactionKeyInfo key(const char* path, Kind kind, double lo, double hi, const char* unit,
                     const char* help, std::vector<std::string> choices = {}) {
-    ReactionKeyInfo k;
-    k.key = path;
-    k.kind = kind;
-    k.min = lo;
-    k.max = hi;
-    k.unit = unit;
-    k.help = help;
-    k.choices = std::move(choices);
-    return k;
+    return {path, kind, lo, hi, std::move(choices), unit, help};
 }
 
 // "hard sprites, soft particles (depth fade), ... or mega-particles (...)": the table's names.

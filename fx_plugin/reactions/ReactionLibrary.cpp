@@ -53,13 +53,7 @@ ReactionLibrary::Snapshot ReactionLibrary::statFiles() const {
 
 bool ReactionLibrary::readAndLoad(Snapshot* snap, ReactionSet* set, Diagnostics* diags) const {
     if (snap->isDirectory && snap->files.empty()) {
-        if (diags) {
-            Diagnostic d;
-            d.code = ErrorCode::FileNotFound;
-            d.file = path_;
-            d.message = "directory holds no *.yaml file";
-            diags->push_back(d);
-        }
+        if (diags) diags->push_back({ErrorCode::FileNotFound, path_, 0, 0, "", "directory holds no *.yaml file"});
         return false;
     }
     std::vector<ReactionSource> sources;
@@ -111,11 +105,8 @@ bool ReactionLibrary::loadOverride(const std::string& file, const std::string& t
     for (const std::string& f : current_.files) watched = watched || f == file;
     if (!loaded_ || !watched) {
         if (diags) {
-            Diagnostic d;
-            d.code = ErrorCode::FileNotFound;
-            d.file = file;
-            d.message = "not one of the loaded reaction files; expected one of the running set's files";
-            diags->push_back(d);
+            diags->push_back({ErrorCode::FileNotFound, file, 0, 0, "",
+                              "not one of the loaded reaction files; expected one of the running set's files"});
         }
         return false;
     }

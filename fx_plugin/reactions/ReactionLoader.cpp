@@ -25,15 +25,7 @@ namespace fs = std::filesystem;
 
 void add(Diagnostics* diags, ErrorCode code, const std::string& file, int line, int column,
          const std::string& key, const std::string& message) {
-    if (!diags) return;
-    Diagnostic d;
-    d.code = code;
-    d.file = file;
-    d.line = line;
-    d.column = column;
-    d.key = key;
-    d.message = message;
-    diags->push_back(std::move(d));
+    if (diags) diags->push_back({code, file, line, column, key, message});
 }
 
 bool loadTextChecked(const std::string& text, YamlCheck& check, ReactionSet* set) {

@@ -6,10 +6,7 @@
 // by bench/bench_loaders.cpp, not here.
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cctype>
-#include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -21,6 +18,7 @@
 #include <unistd.h>
 
 #include "CubeGameRun.h"
+#include "RunCommand.h"
 
 // Named so that the test files of one unity translation unit keep their helpers apart.
 namespace bad_input_32_test {
@@ -44,12 +42,7 @@ size_t count(const std::string& text, const std::string& what) {
     return n;
 }
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+std::string slurp(const std::string& path) { return cubetest::readFile(path); }
 
 class Scratch : public clitest::ScratchDir {
 public:

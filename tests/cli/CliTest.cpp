@@ -1,40 +1,24 @@
 // cube_game as a user runs it: flags, exit codes, messages, PNGs, stats JSON, backends.
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "RunCommand.h"
+
 namespace {
 
-struct Result {
-    int status;
-    std::string output;
-};
+using Result = cubetest::CommandResult;
 
 Result runGame(const std::string& args, const std::string& env = "") {
-    const std::string cmd = env + " " + std::string(CUBE_TEST_BIN_DIR) + "/cube_game " + args + " 2>&1";
-    Result r{-1, ""};
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf{};
-    while (fgets(buf.data(), int(buf.size()), p)) r.output += buf.data();
-    const int st = pclose(p);
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 128;
-    return r;
+    return cubetest::runCommand(env + " " + std::string(CUBE_TEST_BIN_DIR) + "/cube_game " + args + " 2>&1", 128);
 }
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+std::string slurp(const std::string& path) { return cubetest::readFile(path); }
 
 // Mesa's EGL and GLX paths dlopen a DRI driver and unload it at exit; LeakSanitizer then finds
 // 240 bytes it allocated with no symbol to suppress them by ("<unknown module>"). Under the

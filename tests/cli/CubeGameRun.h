@@ -3,9 +3,6 @@
 // scratch folder per test that is removed afterwards.
 #include <gtest/gtest.h>
 
-#include <array>
-#include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -14,29 +11,19 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "RunCommand.h"
+
 namespace clitest {
 
-struct Outcome {
-    int status = -1;  ///< exit code; 124 = killed at the bound (a hang); 200 = died of a signal
-    std::string output;
-    double seconds = 0.0;
-};
+/// status: the exit code; 124 = killed at the bound (a hang); 200 = died of a signal.
+using Outcome = cubetest::CommandResult;
 
 /// cube_game with `args` (stdout and stderr), `env` before it, killed after `boundSeconds`
 /// (coreutils timeout: exit 124).
 inline Outcome runCubeGame(const std::string& args, const std::string& env, int boundSeconds) {
-    const std::string cmd = env + " timeout -k 5 " + std::to_string(boundSeconds) + " " +
-                            std::string(CUBE_TEST_BIN_DIR) + "/cube_game " + args + " 2>&1";
-    Outcome r;
-    const auto start = std::chrono::steady_clock::now();
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf{};
-    while (fgets(buf.data(), int(buf.size()), p)) r.output += buf.data();
-    const int st = pclose(p);
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 200;
-    return r;
+    return cubetest::runCommand(env + " timeout -k 5 " + std::to_string(boundSeconds) + " " +
+                                    std::string(CUBE_TEST_BIN_DIR) + "/cube_game " + args + " 2>&1",
+                                200);
 }
 
 /// A folder under the temp directory named after the running test (and `prefix`), empty at the

@@ -1,34 +1,24 @@
 // Hostile input at start-up: cube_game must say where and what, then exit non-zero, never crash.
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <fstream>
 #include <string>
 
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "RunCommand.h"
+
 // Named so that the test files of one unity translation unit keep their helpers apart.
 namespace hostile_input_test {
 namespace {
 
-struct Outcome {
-    int status;
-    std::string output;
-};
+using Outcome = cubetest::CommandResult;
 
 Outcome launch(const std::string& args, const std::string& env = "") {
-    const std::string cmd = env + " " + std::string(CUBE_TEST_BIN_DIR) + "/cube_game --frames 2 --size 64x48 " + args + " 2>&1";
-    Outcome r{-1, ""};
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf{};
-    while (fgets(buf.data(), int(buf.size()), p)) r.output += buf.data();
-    const int st = pclose(p);
-    // A crash shows as a signal (WIFSIGNALED) or as the shell's 128+N.
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 200;
-    return r;
+    // A crash shows as a signal (WIFSIGNALED: status 200) or as the shell's 128+N.
+    return cubetest::runCommand(
+        env + " " + std::string(CUBE_TEST_BIN_DIR) + "/cube_game --frames 2 --size 64x48 " + args + " 2>&1", 200);
 }
 
 std::string dir() {

@@ -4,34 +4,22 @@
 // CUBE_OSMESA_LIBRARY / CUBE_EGL_LIBRARY / CUBE_GLFW_LIBRARY stand in for an uninstalled package.
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "RunCommand.h"
+
 // Named so that the test files of one unity translation unit keep their helpers apart.
 namespace platform_loading_test {
 namespace {
 
-struct Result {
-    int status;
-    std::string output;
-};
+using Result = cubetest::CommandResult;
 
-Result run(const std::string& cmd) {
-    Result r{-1, ""};
-    FILE* p = popen((cmd + " 2>&1").c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf{};
-    while (fgets(buf.data(), int(buf.size()), p)) r.output += buf.data();
-    const int st = pclose(p);
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 128;
-    return r;
-}
+Result run(const std::string& cmd) { return cubetest::runCommand(cmd + " 2>&1", 128); }
 
 std::string bin(const std::string& name) { return std::string(CUBE_TEST_BIN_DIR) + "/" + name; }
 
@@ -41,12 +29,7 @@ Result runGame(const std::string& args, const std::string& env = "") {
 
 bool exists(const std::string& path) { return ::access(path.c_str(), F_OK) == 0; }
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+std::string slurp(const std::string& path) { return cubetest::readFile(path); }
 
 size_t count(const std::string& text, const std::string& what) {
     size_t n = 0;

@@ -2,15 +2,15 @@
 // technique, particles alive at exit and emitted in total, as the plugin counts them.
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cstdio>
 #include <fstream>
 #include <regex>
-#include <sstream>
 #include <string>
 
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include "RunCommand.h"
 
 // Named so that the test files of one unity translation unit keep their helpers apart.
 namespace reaction_stats_json_test {
@@ -22,12 +22,7 @@ int runGame(const std::string& args) {
     return WIFEXITED(st) ? WEXITSTATUS(st) : 128;
 }
 
-std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+std::string slurp(const std::string& path) { return cubetest::readFile(path); }
 
 struct Entry {
     std::string technique;

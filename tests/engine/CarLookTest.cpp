@@ -8,16 +8,9 @@
 
 using namespace cube;
 using cubetest::pixel;
+using cubetest::project;
 
 namespace {
-
-glm::ivec2 project(Game& g, glm::vec3 p) {
-    const cubeView& v = g.chaseView();
-    const glm::mat4 vp = v.camera().proj(float(v.width()) / float(v.height())) * v.camera().view();
-    const glm::vec4 c = vp * glm::vec4(p, 1.0f);
-    const glm::vec3 ndc = glm::vec3(c) / c.w;
-    return {int((ndc.x * 0.5f + 0.5f) * float(v.width())), int((0.5f - ndc.y * 0.5f) * float(v.height()))};
-}
 
 Options carOptions() {
     Options o = cubetest::smallOptions(320, 256);
@@ -32,12 +25,7 @@ TEST(CarLook, FromTheSideTheRimsShowAtTheHubs) {
     Options o = carOptions();
     o.startTime = 4.0;  // stopped at (-7.5, 0, 4), heading +X, before the donut
     o.stationaryCar = true;
-    o.fixedCamera = true;
-    const float eye[3] = {-7.5f, 0.5f, -3.0f}, target[3] = {-7.5f, 0.4f, 4.0f};  // from the left
-    for (int k = 0; k < 3; ++k) {
-        o.cameraEye[k] = eye[k];
-        o.cameraTarget[k] = target[k];
-    }
+    cubetest::fixCamera(o, {-7.5f, 0.5f, -3.0f}, {-7.5f, 0.4f, 4.0f});  // from the left
     Game game;
     std::string err;
     ASSERT_TRUE(game.Init(o, &err)) << err;

@@ -13,6 +13,7 @@
 
 using namespace cube;
 using cubetest::pixel;
+using cubetest::project;
 
 // Named so that the test files of one unity translation unit keep their helpers apart.
 namespace game_test {
@@ -22,15 +23,6 @@ size_t indexOf(const std::vector<std::string>& calls, const std::string& name, s
     for (size_t i = from; i < calls.size(); ++i)
         if (calls[i] == name) return i;
     return std::string::npos;
-}
-
-// Projects a world point with the chase camera into top-down pixel coordinates.
-glm::ivec2 project(Game& g, glm::vec3 p) {
-    const cubeView& v = g.chaseView();
-    const glm::mat4 vp = v.camera().proj(float(v.width()) / float(v.height())) * v.camera().view();
-    const glm::vec4 c = vp * glm::vec4(p, 1.0f);
-    const glm::vec3 ndc = glm::vec3(c) / c.w;
-    return {int((ndc.x * 0.5f + 0.5f) * float(v.width())), int((0.5f - ndc.y * 0.5f) * float(v.height()))};
 }
 
 }  // namespace
@@ -109,22 +101,23 @@ TEST(Render, LegacySmokeAppearsOnceTheRearWheelsSlip) {
     Options o = cubetest::smallOptions(320, 256);
     o.fx = FxPath::Legacy;
     o.mirror = false;
+    // `game` started at drive time `start` and run for `frames` frames.
+    auto runFrom = [&](Game& game, double start, int frames) {
+        std::string err;
+        o.startTime = start;
+        ASSERT_TRUE(game.Init(o, &err)) << err;
+        ASSERT_TRUE(cubetest::runFrames(game, frames));
+    };
     // Before the burnout (t = 1 s): rolling, no sprites.
     {
         Game game;
-        std::string err;
-        o.startTime = 1.0;
-        ASSERT_TRUE(game.Init(o, &err)) << err;
-        ASSERT_TRUE(cubetest::runFrames(game, 30));
+        ASSERT_NO_FATAL_FAILURE(runFrom(game, 1.0, 30));
         EXPECT_EQ(game.specialFX().particlesAlive(), 0);
         EXPECT_EQ(game.passRuns().count("chase.legacy_smoke"), 0u);
     }
     // In the donut (t = 5.5 s): sprites alive and drawn every frame once the first exist.
     Game game;
-    std::string err;
-    o.startTime = 5.5;
-    ASSERT_TRUE(game.Init(o, &err)) << err;
-    ASSERT_TRUE(cubetest::runFrames(game, 45));
+    ASSERT_NO_FATAL_FAILURE(runFrom(game, 5.5, 45));
     EXPECT_GT(game.specialFX().particlesAlive(), 10);
     ASSERT_EQ(game.passRuns().count("chase.legacy_smoke"), 1u);
     EXPECT_GE(game.passRuns().at("chase.legacy_smoke"), 44) << "drawn in every frame after the first emission";

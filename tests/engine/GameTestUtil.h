@@ -28,6 +28,24 @@ inline bool runFrames(cube::Game& game, int frames) {
     return !game.lastFrame().pixels.empty();
 }
 
+/// Points the chase view from `eye` at `target` (world space) and keeps it there.
+inline void fixCamera(cube::Options& o, const glm::vec3& eye, const glm::vec3& target) {
+    o.fixedCamera = true;
+    for (int k = 0; k < 3; ++k) {
+        o.cameraEye[k] = eye[k];
+        o.cameraTarget[k] = target[k];
+    }
+}
+
+/// Projects a world point with the chase camera into top-down pixel coordinates.
+inline glm::ivec2 project(cube::Game& g, glm::vec3 p) {
+    const cube::cubeView& v = g.chaseView();
+    const glm::mat4 vp = v.camera().proj(float(v.width()) / float(v.height())) * v.camera().view();
+    const glm::vec4 c = vp * glm::vec4(p, 1.0f);
+    const glm::vec3 ndc = glm::vec3(c) / c.w;
+    return {int((ndc.x * 0.5f + 0.5f) * float(v.width())), int((0.5f - ndc.y * 0.5f) * float(v.height()))};
+}
+
 struct Rgb {
     int r, g, b;
 };

@@ -47,6 +47,30 @@ TEST(Options, GoodValuesParse) {
     EXPECT_EQ(o.screenshotDir, "/tmp");
 }
 
+// Each value-less switch flips its own option from the default and nothing else of these.
+TEST(Options, EverySwitchSetsItsOptionAlone) {
+    const struct {
+        const char* flag;
+        bool Options::*option;
+    } switches[] = {{"--prepass-equal", &Options::prepassEqual}, {"--quarter-res", &Options::quarterRes},
+                    {"--bilinear-upsample", &Options::bilinearUpsample}, {"--watch", &Options::watch},
+                    {"--no-mirror", &Options::mirror},          {"--no-hud", &Options::hud},
+                    {"--unlit-smoke", &Options::litSmoke},       {"--panel", &Options::panel}};
+    const Options defaults;
+    for (const auto& s : switches) {
+        Options o;
+        std::string err;
+        ASSERT_TRUE(parse({s.flag}, &o, &err)) << s.flag << ": " << err;
+        for (const auto& other : switches) {
+            if (other.option == s.option) {
+                EXPECT_NE(o.*other.option, defaults.*other.option) << s.flag;
+            } else {
+                EXPECT_EQ(o.*other.option, defaults.*other.option) << s.flag << " changed " << other.flag;
+            }
+        }
+    }
+}
+
 TEST(Options, UnlitSmokeIsASwitchAndLitIsTheDefault) {
     Options o;
     std::string err;

@@ -187,12 +187,7 @@ TEST(RenderModes, PassesAndTargetsExistOnlyWhenNeeded) {
     EXPECT_TRUE(passKept(f.game.graph(), "chase.particles_quarter"));
     EXPECT_TRUE(passKept(f.game.graph(), "chase.particles_composite"));
     // No visible particle (camera looking at the empty sky): no particle pass, no prepass.
-    f.game.options().fixedCamera = true;
-    const float eye[3] = {0.0f, 5.0f, -80.0f}, target[3] = {0.0f, 60.0f, -200.0f};
-    for (int k = 0; k < 3; ++k) {
-        f.game.options().cameraEye[k] = eye[k];
-        f.game.options().cameraTarget[k] = target[k];
-    }
+    cubetest::fixCamera(f.game.options(), {0.0f, 5.0f, -80.0f}, {0.0f, 60.0f, -200.0f});
     f.game.Update(0.0f);
     f.render(false, fx::Technique::Soft, true);
     EXPECT_TRUE(passNotRun(f.game.graph(), "chase.depth_prepass"));

@@ -9,20 +9,13 @@
 
 using namespace cube;
 using cubetest::pixel;
+using cubetest::project;
 
 namespace {
 
 int brightness(const ImageRGBA8& img, glm::ivec2 p) {
     const cubetest::Rgb c = pixel(img, p.x, p.y);
     return c.r + c.g + c.b;
-}
-
-glm::ivec2 project(Game& g, glm::vec3 p) {
-    const cubeView& v = g.chaseView();
-    const glm::mat4 vp = v.camera().proj(float(v.width()) / float(v.height())) * v.camera().view();
-    const glm::vec4 c = vp * glm::vec4(p, 1.0f);
-    const glm::vec3 ndc = glm::vec3(c) / c.w;
-    return {int((ndc.x * 0.5f + 0.5f) * float(v.width())), int((0.5f - ndc.y * 0.5f) * float(v.height()))};
 }
 
 }  // namespace
@@ -50,12 +43,8 @@ TEST(Sun, TheSkyAndTheGroundFollowTheSun) {
     Options o = cubetest::smallOptions(160, 120);
     o.mirror = false;
     o.reactions = std::string(CUBE_SOURCE_DIR) + "/reactions/none.yaml";
-    o.fixedCamera = true;
-    const float eye[3] = {-100.0f, 2.0f, -3.0f}, target[3] = {-90.0f, 4.0f, -3.0f};
-    for (int k = 0; k < 3; ++k) {
-        o.cameraEye[k] = eye[k];
-        o.cameraTarget[k] = target[k];
-    }
+    const glm::vec3 eye(-100.0f, 2.0f, -3.0f);
+    cubetest::fixCamera(o, eye, {-90.0f, 4.0f, -3.0f});
     Game game;
     std::string err;
     ASSERT_TRUE(game.Init(o, &err)) << err;
@@ -67,7 +56,7 @@ TEST(Sun, TheSkyAndTheGroundFollowTheSun) {
         return game.lastFrame();
     };
     const ImageRGBA8 ahead = frameWithSun(0.0, el), behind = frameWithSun(180.0, el);
-    const glm::ivec2 centre = project(game, glm::vec3(eye[0], eye[1], eye[2]) + 1000.0f * sunFromAngles(0.0, el).toSun);
+    const glm::ivec2 centre = project(game, eye + 1000.0f * sunFromAngles(0.0, el).toSun);
     EXPECT_NEAR(centre.x, 80, 1);
     EXPECT_NEAR(centre.y, 60, 1);
     // The disc (pow(cos, 400): about 4 degrees across) over the sky's blue: near white.

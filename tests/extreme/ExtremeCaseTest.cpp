@@ -180,13 +180,8 @@ TEST(Extreme, ClipPlanes) {
 TEST(Extreme, CameraInsideTheSmoke) {
     Options o = base();
     o.startTime = 5.5;
-    o.fixedCamera = true;
     // Eye in the donut cloud, 1 m up, looking across it.
-    const float eye[3] = {-6.5f, 1.0f, 3.0f}, target[3] = {0.0f, 0.8f, 4.0f};
-    for (int k = 0; k < 3; ++k) {
-        o.cameraEye[k] = eye[k];
-        o.cameraTarget[k] = target[k];
-    }
+    cubetest::fixCamera(o, {-6.5f, 1.0f, 3.0f}, {0.0f, 0.8f, 4.0f});
     for (const char* mode : {"hard", "soft", "spherical"}) {
         o.mode = mode;
         runAndCheck(o, 45, 1.0f / 60.0f, (std::string("camera inside, ") + mode).c_str());

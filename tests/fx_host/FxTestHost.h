@@ -57,6 +57,9 @@ int shaderCompilerMessages();
 /// Drains glGetError into the count; returns how many were pending.
 int drainGlErrors(const char* where);
 bool hasKhrDebug();
+/// A GL program from two inline GLSL sources (the tests' own scene, plane and state shaders);
+/// asserts that it links.
+uint32_t compileTestProgram(const char* vs, const char* fs);
 
 /// The GL state a host cares about after a plugin pass (25 values, some of them arrays).
 struct GlStateSnapshot {

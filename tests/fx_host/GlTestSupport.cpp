@@ -4,6 +4,7 @@
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -193,6 +194,24 @@ std::string GlStateSnapshot::diff(const GlStateSnapshot& after) const {
     return out;
 }
 
+uint32_t compileTestProgram(const char* vs, const char* fs) {
+    GLuint v = glCreateShader(GL_VERTEX_SHADER), f = glCreateShader(GL_FRAGMENT_SHADER);
+    glShaderSource(v, 1, &vs, nullptr);
+    glShaderSource(f, 1, &fs, nullptr);
+    glCompileShader(v);
+    glCompileShader(f);
+    GLuint p = glCreateProgram();
+    glAttachShader(p, v);
+    glAttachShader(p, f);
+    glLinkProgram(p);
+    GLint ok = 0;
+    glGetProgramiv(p, GL_LINK_STATUS, &ok);
+    assert(ok && "fx_host test shader failed to link");
+    glDeleteShader(v);
+    glDeleteShader(f);
+    return p;
+}
+
 void applyDirtyHostState() {
     struct Objects {
         GLuint program = 0, vao = 0, vbo = 0, ebo = 0, pbo = 0, fboDraw = 0, fboRead = 0;
@@ -203,17 +222,7 @@ void applyDirtyHostState() {
     if (!o.program) {
         const char* vs = "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n";
         const char* fs = "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n";
-        GLuint v = glCreateShader(GL_VERTEX_SHADER), f = glCreateShader(GL_FRAGMENT_SHADER);
-        glShaderSource(v, 1, &vs, nullptr);
-        glShaderSource(f, 1, &fs, nullptr);
-        glCompileShader(v);
-        glCompileShader(f);
-        o.program = glCreateProgram();
-        glAttachShader(o.program, v);
-        glAttachShader(o.program, f);
-        glLinkProgram(o.program);
-        glDeleteShader(v);
-        glDeleteShader(f);
+        o.program = compileTestProgram(vs, fs);
         glGenVertexArrays(1, &o.vao);
         glGenBuffers(1, &o.vbo);
         glGenBuffers(1, &o.ebo);

@@ -105,17 +105,7 @@ GLuint planeProgram() {
     const char* vs = "#version 330 core\nlayout(location = 0) in vec3 aPos;\nuniform mat4 uProj;\n"
                      "void main() { gl_Position = uProj * vec4(aPos, 1.0); }\n";
     const char* fs = "#version 330 core\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n";
-    GLuint v = glCreateShader(GL_VERTEX_SHADER), f = glCreateShader(GL_FRAGMENT_SHADER);
-    glShaderSource(v, 1, &vs, nullptr);
-    glShaderSource(f, 1, &fs, nullptr);
-    glCompileShader(v);
-    glCompileShader(f);
-    p = glCreateProgram();
-    glAttachShader(p, v);
-    glAttachShader(p, f);
-    glLinkProgram(p);
-    glDeleteShader(v);
-    glDeleteShader(f);
+    p = compileTestProgram(vs, fs);
     return p;
 }
 

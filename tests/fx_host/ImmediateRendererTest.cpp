@@ -8,7 +8,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <tuple>
+#include <initializer_list>
+#include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -138,6 +139,25 @@ protected:
     std::unique_ptr<fx::ImmediateRenderer> immediate;
 };
 
+// One depth source's image and the image it must match.
+struct SourceImage {
+    const char* what;
+    const Image* image;
+    const Image* reference;
+};
+
+// Each source's image within the depth-source tolerances of its reference; prints the measured
+// difference under `label` (the mode).
+void expectSameImagePerSource(const std::string& label, std::initializer_list<SourceImage> sources) {
+    for (const SourceImage& s : sources) {
+        const int diff = maxAbsDiff(*s.image, *s.reference);
+        EXPECT_LE(diff, kDepthSourceTolerance) << s.what;
+        EXPECT_GE(psnr(*s.image, *s.reference), kDepthSourceMinPsnr) << s.what;
+        std::printf("  %-19s %-24s max |diff| %d/255, PSNR %.1f dB\n", label.c_str(), s.what, diff,
+                    psnr(*s.image, *s.reference));
+    }
+}
+
 TEST_F(ImmediateRendererTest, SameImageAsTheFrameGraphPerTechniqueAndDepthSource) {
     ASSERT_TRUE(resizeDefaultFramebuffer(kW, kH));
     HostTarget withDepthTexture(kW, kH, GL_DEPTH_COMPONENT24);
@@ -171,15 +191,9 @@ TEST_F(ImmediateRendererTest, SameImageAsTheFrameGraphPerTechniqueAndDepthSource
         EXPECT_LE(maxAbsDiff(defaultReference, reference), kColourBufferTolerance);
         ASSERT_EQ(drawImmediate(0, immediateView(Source::BoundFramebuffer)), fx::ErrorCode::None);
         const Image fromDefault = readFramebuffer(0, kW, kH);
-        for (const auto& [what, img, ref] :
-             {std::tuple<const char*, const Image*, const Image*>{"bound FBO", &fromFbo, &reference},
-              {"depth texture", &fromTexture, &reference},
-              {"default framebuffer", &fromDefault, &defaultReference}}) {
-            const int diff = maxAbsDiff(*img, *ref);
-            EXPECT_LE(diff, kDepthSourceTolerance) << what;
-            EXPECT_GE(psnr(*img, *ref), kDepthSourceMinPsnr) << what;
-            std::printf("  %-10s %-20s max |diff| %d/255, PSNR %.1f dB\n", m.name, what, diff, psnr(*img, *ref));
-        }
+        expectSameImagePerSource(m.name, {{"bound FBO", &fromFbo, &reference},
+                                          {"depth texture", &fromTexture, &reference},
+                                          {"default framebuffer", &fromDefault, &defaultReference}});
     }
     ASSERT_TRUE(resizeDefaultFramebuffer(4, 4));
 }
@@ -229,16 +243,10 @@ TEST_F(ImmediateRendererTest, ReversedZHostSameImagePerDepthSource) {
         const Image defaultReference = readFramebuffer(0, kW, kH);
         ASSERT_EQ(run(0, Source::BoundFramebuffer, 0), fx::ErrorCode::None);
         const Image fromDefault = readFramebuffer(0, kW, kH);
-        for (const auto& [what, img, ref] :
-             {std::tuple<const char*, const Image*, const Image*>{"bound FBO (32F)", &fromFbo, &reference},
-              {"depth texture (32F)", &fromTexture, &reference},
-              {"default framebuffer (24)", &fromDefault, &defaultReference}}) {
-            const int diff = maxAbsDiff(*img, *ref);
-            EXPECT_LE(diff, kDepthSourceTolerance) << what;
-            EXPECT_GE(psnr(*img, *ref), kDepthSourceMinPsnr) << what;
-            std::printf("  reversed %-10s %-24s max |diff| %d/255, PSNR %.1f dB\n", m.name, what, diff,
-                        psnr(*img, *ref));
-        }
+        expectSameImagePerSource(std::string("reversed ") + m.name,
+                                 {{"bound FBO (32F)", &fromFbo, &reference},
+                                  {"depth texture (32F)", &fromTexture, &reference},
+                                  {"default framebuffer (24)", &fromDefault, &defaultReference}});
     }
     ASSERT_TRUE(resizeDefaultFramebuffer(4, 4));
 }

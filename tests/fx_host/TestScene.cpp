@@ -2,7 +2,6 @@
 // car (fx::HostAdapter) and the one-frame driver.
 #include <glad/gl.h>
 
-#include <cassert>
 #include <cmath>
 #include <cstdio>
 
@@ -36,24 +35,6 @@ out vec4 oDepth;
 void main() { oDepth = vec4(vDepth); }
 )";
 
-GLuint compileProgram(const char* vs, const char* fs) {
-    GLuint v = glCreateShader(GL_VERTEX_SHADER), f = glCreateShader(GL_FRAGMENT_SHADER);
-    glShaderSource(v, 1, &vs, nullptr);
-    glShaderSource(f, 1, &fs, nullptr);
-    glCompileShader(v);
-    glCompileShader(f);
-    GLuint p = glCreateProgram();
-    glAttachShader(p, v);
-    glAttachShader(p, f);
-    glLinkProgram(p);
-    GLint ok = 0;
-    glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    assert(ok && "fx_host scene shader failed to link");
-    glDeleteShader(v);
-    glDeleteShader(f);
-    return p;
-}
-
 struct SceneGl {
     GLuint colour = 0, depth = 0, vao = 0, vbo = 0;
 };
@@ -61,8 +42,8 @@ struct SceneGl {
 SceneGl& sceneGl() {
     static SceneGl g;
     if (!g.colour) {
-        g.colour = compileProgram(kSceneVs, kColourFs);
-        g.depth = compileProgram(kSceneVs, kDepthFs);
+        g.colour = compileTestProgram(kSceneVs, kColourFs);
+        g.depth = compileTestProgram(kSceneVs, kDepthFs);
         glGenVertexArrays(1, &g.vao);
         glGenBuffers(1, &g.vbo);
         glBindVertexArray(g.vao);

@@ -1,43 +1,48 @@
 // The keys of issue 17: alpha_over_life / size_over_life curves, turbulence and vortex. One test
 // per rule, asserting the code, the line and the key (not the wording).
+#include <ostream>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "../../fx_plugin/reactions/ReactionLoader.h"
 #include "../../fx_plugin/sim/Lifecycle.h"
+#include "ReactionTextTest.h"
 
+// Named so that the test files of one unity translation unit keep their helpers apart.
+namespace motion_keys_test {
 namespace {
 
 using fx::ErrorCode;
+using reactiontest::dump;
+using reactiontest::Loaded;
 
-struct Loaded {
-    bool ok = false;
-    fx::ReactionSet set;
-    fx::Diagnostics diags;
+// A reaction "a" of type wheel_smoke whose further keys, from line 4 on, are `body`.
+std::string reaction(const std::string& body) { return "reactions:\n  - name: a\n    type: wheel_smoke\n" + body; }
+
+Loaded load(const std::string& body) { return reactiontest::loadText(reaction(body)); }
+Loaded loadRaw(const std::string& text) { return reactiontest::loadText(text); }
+
+// A file the loader refuses with exactly one diagnostic: this code, line and key.
+struct Rejected {
+    const char* name;  ///< the test's name
+    std::string text;  ///< the whole file
+    ErrorCode code;
+    int line;
+    const char* key;
 };
 
-Loaded load(const std::string& body) {
-    Loaded r;
-    const std::string text = "reactions:\n  - name: a\n    type: wheel_smoke\n" + body;
-    r.ok = fx::loadReactionText(text, "test.yaml", &r.set, &r.diags);
-    return r;
+// gtest names a case by its name (not its bytes) in listings and failures.
+void PrintTo(const Rejected& c, std::ostream* os) { *os << c.name; }
+
+class RejectedKey : public ::testing::TestWithParam<Rejected> {};
+
+TEST_P(RejectedKey, IsTheOnlyDiagnostic) {
+    const Rejected& c = GetParam();
+    reactiontest::expectOnly(loadRaw(c.text), c.code, c.line, 0, c.key);
 }
 
-std::string dump(const fx::Diagnostics& d) {
-    std::string s;
-    for (const auto& x : d) s += x.str() + "\n";
-    return s;
-}
-
-void expectOnly(const Loaded& r, ErrorCode code, int line, const std::string& key) {
-    EXPECT_FALSE(r.ok);
-    ASSERT_EQ(r.diags.size(), 1u) << dump(r.diags);
-    EXPECT_EQ(r.diags[0].code, code) << r.diags[0].str();
-    EXPECT_EQ(r.diags[0].file, "test.yaml");
-    EXPECT_EQ(r.diags[0].line, line) << r.diags[0].str();
-    EXPECT_EQ(r.diags[0].key, key) << r.diags[0].str();
-}
+std::string caseName(const ::testing::TestParamInfo<Rejected>& info) { return info.param.name; }
 
 TEST(MotionKeys, CurvesAndTurbulenceLoad) {
     Loaded r = load(
@@ -72,77 +77,55 @@ TEST(MotionKeys, DefaultsAreOffAndKeepTheOldCurves) {
     EXPECT_FLOAT_EQ(fx::sizeAt(d.particle, 1.0f, 3.0f, 0.3f), fx::sizeAt(1.0f, 3.0f, 0.3f));
 }
 
-TEST(MotionKeys, CurveTimesOutOfOrderAreRejected) {
-    Loaded r = load("    particle:\n"
-                    "      alpha_over_life:\n"
-                    "        - {t: 0.5, v: 1}\n"
-                    "        - {t: 0.2, v: 0}\n");
-    expectOnly(r, ErrorCode::OutOfRange, 7, "reactions[0].particle.alpha_over_life[1].t");
-}
-
-TEST(MotionKeys, CurveValueOutOfRangeIsRejected) {
-    Loaded r = load("    particle:\n"
-                    "      size_over_life: [{t: 0, v: 0}, {t: 1, v: 1.5}]\n");
-    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].particle.size_over_life[1].v");
-}
-
-TEST(MotionKeys, CurveTimeOutsideLifeIsRejected) {
-    Loaded r = load("    particle:\n"
-                    "      size_over_life: [{t: -0.1, v: 0}]\n");
-    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].particle.size_over_life[0].t");
-}
-
-TEST(MotionKeys, CurvePointWithoutValueIsRejected) {
-    Loaded r = load("    particle:\n"
-                    "      alpha_over_life: [{t: 0}]\n");
-    expectOnly(r, ErrorCode::MissingKey, 5, "reactions[0].particle.alpha_over_life[0].v");
-}
-
-TEST(MotionKeys, EmptyCurveIsRejected) {
-    Loaded r = load("    particle:\n"
-                    "      alpha_over_life: []\n");
-    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].particle.alpha_over_life");
-}
-
-TEST(MotionKeys, AlphaCurveAndFadeTogetherAreRejected) {
-    Loaded r = load("    particle:\n"
-                    "      fade_out: 0.5\n"
-                    "      alpha_over_life: [{t: 0, v: 1}]\n");
-    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].particle.fade_out");
-}
-
-TEST(MotionKeys, TooManyOctavesAreRejected) {
-    Loaded r = load("    turbulence:\n"
-                    "      octaves: 7\n");
-    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].turbulence.octaves");
-}
-
-TEST(MotionKeys, NegativeTurbulenceStrengthIsRejected) {
-    Loaded r = load("    turbulence: {strength: -1}\n");
-    expectOnly(r, ErrorCode::OutOfRange, 4, "reactions[0].turbulence.strength");
-}
-
-TEST(MotionKeys, ZeroVortexRadiusIsRejected) {
-    Loaded r = load("    vortex:\n"
-                    "      radius: 0\n");
-    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].vortex.radius");
-}
-
-TEST(MotionKeys, UnknownTurbulenceKeyIsRejected) {
-    Loaded r = load("    turbulence:\n"
-                    "      strenght: 1\n");
-    expectOnly(r, ErrorCode::UnknownKey, 5, "reactions[0].turbulence.strenght");
-}
-
-TEST(MotionKeys, TextForANumberIsRejected) {
-    Loaded r = load("    vortex:\n"
-                    "      strength: fast\n");
-    expectOnly(r, ErrorCode::WrongType, 5, "reactions[0].vortex.strength");
-}
-
-}  // namespace
-
-namespace {
+const Rejected kMotionKeys[] = {
+    {"CurveTimesOutOfOrderAreRejected",
+     reaction("    particle:\n"
+              "      alpha_over_life:\n"
+              "        - {t: 0.5, v: 1}\n"
+              "        - {t: 0.2, v: 0}\n"),
+     ErrorCode::OutOfRange, 7, "reactions[0].particle.alpha_over_life[1].t"},
+    {"CurveValueOutOfRangeIsRejected",
+     reaction("    particle:\n"
+              "      size_over_life: [{t: 0, v: 0}, {t: 1, v: 1.5}]\n"),
+     ErrorCode::OutOfRange, 5, "reactions[0].particle.size_over_life[1].v"},
+    {"CurveTimeOutsideLifeIsRejected",
+     reaction("    particle:\n"
+              "      size_over_life: [{t: -0.1, v: 0}]\n"),
+     ErrorCode::OutOfRange, 5, "reactions[0].particle.size_over_life[0].t"},
+    {"CurvePointWithoutValueIsRejected",
+     reaction("    particle:\n"
+              "      alpha_over_life: [{t: 0}]\n"),
+     ErrorCode::MissingKey, 5, "reactions[0].particle.alpha_over_life[0].v"},
+    {"EmptyCurveIsRejected",
+     reaction("    particle:\n"
+              "      alpha_over_life: []\n"),
+     ErrorCode::OutOfRange, 5, "reactions[0].particle.alpha_over_life"},
+    {"AlphaCurveAndFadeTogetherAreRejected",
+     reaction("    particle:\n"
+              "      fade_out: 0.5\n"
+              "      alpha_over_life: [{t: 0, v: 1}]\n"),
+     ErrorCode::OutOfRange, 5, "reactions[0].particle.fade_out"},
+    {"TooManyOctavesAreRejected",
+     reaction("    turbulence:\n"
+              "      octaves: 7\n"),
+     ErrorCode::OutOfRange, 5, "reactions[0].turbulence.octaves"},
+    {"NegativeTurbulenceStrengthIsRejected",
+     reaction("    turbulence: {strength: -1}\n"),
+     ErrorCode::OutOfRange, 4, "reactions[0].turbulence.strength"},
+    {"ZeroVortexRadiusIsRejected",
+     reaction("    vortex:\n"
+              "      radius: 0\n"),
+     ErrorCode::OutOfRange, 5, "reactions[0].vortex.radius"},
+    {"UnknownTurbulenceKeyIsRejected",
+     reaction("    turbulence:\n"
+              "      strenght: 1\n"),
+     ErrorCode::UnknownKey, 5, "reactions[0].turbulence.strenght"},
+    {"TextForANumberIsRejected",
+     reaction("    vortex:\n"
+              "      strength: fast\n"),
+     ErrorCode::WrongType, 5, "reactions[0].vortex.strength"},
+};
+INSTANTIATE_TEST_SUITE_P(MotionKeys, RejectedKey, ::testing::ValuesIn(kMotionKeys), caseName);
 
 TEST(StatelessKeys, StatelessAdditiveWithGravityLoads) {
     Loaded r = load("    particle: {gravity: 9.81}\n"
@@ -154,34 +137,22 @@ TEST(StatelessKeys, StatelessAdditiveWithGravityLoads) {
     EXPECT_FLOAT_EQ(d.particle.gravity, 9.81f);
 }
 
-TEST(StatelessKeys, StatelessNeedsAdditiveBlending) {
-    Loaded r = load("    render:\n"
-                    "      technique: stateless\n"
-                    "      blend: alpha\n");
-    expectOnly(r, ErrorCode::OutOfRange, 6, "reactions[0].render.blend");
-}
-
-TEST(StatelessKeys, StatelessRefusesTurbulence) {
-    Loaded r = load("    render: {technique: stateless, blend: additive}\n"
-                    "    turbulence: {strength: 1}\n");
-    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].turbulence");
-}
-
-TEST(StatelessKeys, NegativeGravityIsRejected) {
-    Loaded r = load("    particle:\n"
-                    "      gravity: -9.81\n");
-    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].particle.gravity");
-}
-
-}  // namespace
-
-namespace {
-
-Loaded loadRaw(const std::string& text) {
-    Loaded r;
-    r.ok = fx::loadReactionText(text, "test.yaml", &r.set, &r.diags);
-    return r;
-}
+const Rejected kStatelessKeys[] = {
+    {"StatelessNeedsAdditiveBlending",
+     reaction("    render:\n"
+              "      technique: stateless\n"
+              "      blend: alpha\n"),
+     ErrorCode::OutOfRange, 6, "reactions[0].render.blend"},
+    {"StatelessRefusesTurbulence",
+     reaction("    render: {technique: stateless, blend: additive}\n"
+              "    turbulence: {strength: 1}\n"),
+     ErrorCode::OutOfRange, 5, "reactions[0].turbulence"},
+    {"NegativeGravityIsRejected",
+     reaction("    particle:\n"
+              "      gravity: -9.81\n"),
+     ErrorCode::OutOfRange, 5, "reactions[0].particle.gravity"},
+};
+INSTANTIATE_TEST_SUITE_P(StatelessKeys, RejectedKey, ::testing::ValuesIn(kStatelessKeys), caseName);
 
 TEST(LayerKeys, ALayeredReactionExpandsIntoOneReactionPerLayer) {
     Loaded r = loadRaw("reactions:\n"
@@ -203,32 +174,6 @@ TEST(LayerKeys, ALayeredReactionExpandsIntoOneReactionPerLayer) {
     EXPECT_EQ(r.set.reactions[1].sourceLine, 6);  // the layer's own line
 }
 
-TEST(LayerKeys, ALayeredReactionHoldsOnlyNameTriggerAndLayers) {
-    Loaded r = loadRaw("reactions:\n"
-                       "  - name: hit\n"
-                       "    type: dust\n"
-                       "    layers:\n"
-                       "      - {name: a, type: dust}\n");
-    expectOnly(r, ErrorCode::OutOfRange, 3, "reactions[0].type");
-}
-
-TEST(LayerKeys, LayersDoNotNest) {
-    Loaded r = loadRaw("reactions:\n"
-                       "  - name: hit\n"
-                       "    layers:\n"
-                       "      - name: a\n"
-                       "        layers: [{name: b, type: dust}]\n");
-    expectOnly(r, ErrorCode::OutOfRange, 5, "reactions[0].layers[0].layers");
-}
-
-TEST(LayerKeys, ALayerNeedsAType) {
-    Loaded r = loadRaw("reactions:\n"
-                       "  - name: hit\n"
-                       "    layers:\n"
-                       "      - name: a\n");
-    expectOnly(r, ErrorCode::MissingKey, 4, "reactions[0].layers[0].type");
-}
-
 TEST(LayerKeys, LayerNamesCollideWithOtherReactions) {
     Loaded r = loadRaw("reactions:\n"
                        "  - {name: hit.a, type: dust}\n"
@@ -239,4 +184,29 @@ TEST(LayerKeys, LayerNamesCollideWithOtherReactions) {
     EXPECT_EQ(r.diags[0].code, ErrorCode::DuplicateName);
 }
 
+const Rejected kLayerKeys[] = {
+    {"ALayeredReactionHoldsOnlyNameTriggerAndLayers",
+     "reactions:\n"
+     "  - name: hit\n"
+     "    type: dust\n"
+     "    layers:\n"
+     "      - {name: a, type: dust}\n",
+     ErrorCode::OutOfRange, 3, "reactions[0].type"},
+    {"LayersDoNotNest",
+     "reactions:\n"
+     "  - name: hit\n"
+     "    layers:\n"
+     "      - name: a\n"
+     "        layers: [{name: b, type: dust}]\n",
+     ErrorCode::OutOfRange, 5, "reactions[0].layers[0].layers"},
+    {"ALayerNeedsAType",
+     "reactions:\n"
+     "  - name: hit\n"
+     "    layers:\n"
+     "      - name: a\n",
+     ErrorCode::MissingKey, 4, "reactions[0].layers[0].type"},
+};
+INSTANTIATE_TEST_SUITE_P(LayerKeys, RejectedKey, ::testing::ValuesIn(kLayerKeys), caseName);
+
 }  // namespace
+}  // namespace motion_keys_test

@@ -6,44 +6,18 @@
 #include <gtest/gtest.h>
 
 #include "../../fx_plugin/reactions/ReactionLoader.h"
+#include "ReactionTextTest.h"
 
 // Named so that the test files of one unity translation unit keep their helpers apart.
 namespace validation_test {
 namespace {
 
 using fx::ErrorCode;
+using reactiontest::dump;
+using reactiontest::expectOnly;
+using reactiontest::Loaded;
 
-struct Loaded {
-    bool ok = false;
-    fx::ReactionSet set;
-    fx::Diagnostics diags;
-};
-
-Loaded load(const std::string& text) {
-    Loaded r;
-    r.ok = fx::loadReactionText(text, "test.yaml", &r.set, &r.diags);
-    return r;
-}
-
-std::string dump(const fx::Diagnostics& d) {
-    std::string s;
-    for (const auto& x : d) s += x.str() + "\n";
-    return s;
-}
-
-// Exactly one diagnostic, with this code, place and key.
-void expectOnly(const Loaded& r, ErrorCode code, int line, int column, const std::string& key) {
-    EXPECT_FALSE(r.ok);
-    ASSERT_EQ(r.diags.size(), 1u) << dump(r.diags);
-    const fx::Diagnostic& d = r.diags[0];
-    EXPECT_EQ(d.code, code) << d.str();
-    EXPECT_EQ(d.file, "test.yaml");
-    EXPECT_EQ(d.line, line) << d.str();
-    if (column > 0) {
-        EXPECT_EQ(d.column, column) << d.str();
-    }
-    EXPECT_EQ(d.key, key) << d.str();
-}
+Loaded load(const std::string& text) { return reactiontest::loadText(text); }
 
 // A valid reaction with one particle key replaced: line 5, value at column 13 for short keys.
 std::string withParticleKey(const std::string& keyAndValue) {

@@ -9,9 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -19,36 +17,22 @@
 #include <string>
 #include <vector>
 
+#include "RunCommand.h"
+
 namespace {
 
-struct RunOutput {
-    int exitCode = -1;
-    std::string output;  ///< stdout and stderr
-};
+// exit code (-1 when a signal ended it) and stdout + stderr
+using RunOutput = cubetest::CommandResult;
 
 RunOutput runFxbench(const std::string& args) {
-    const std::string cmd = std::string(CUBE_TEST_BIN_DIR) + "/fxbench " + args + " 2>&1";
-    RunOutput r;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf{};
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.output.append(buf.data(), n);
-    const int status = pclose(p);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
+    return cubetest::runCommand(std::string(CUBE_TEST_BIN_DIR) + "/fxbench " + args + " 2>&1", -1);
 }
 
 std::string tempPath(const std::string& name) {
     return (std::filesystem::temp_directory_path() / ("fxbench_test_" + std::to_string(getpid()) + "_" + name)).string();
 }
 
-std::string readFile(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+using cubetest::readFile;
 
 /// One tiny run per scenario, shared by the tests that look at it (the runs are the slow part).
 const YAML::Node& tinyRun(const std::string& scenario) {
@@ -58,7 +42,7 @@ const YAML::Node& tinyRun(const std::string& scenario) {
     const std::string json = tempPath(scenario + ".json");
     const RunOutput r = runFxbench("--scenario " + scenario +
                                    " --size 64x64 --frames 3 --rounds 2 --warmup 1 --error-frames 1 --json " + json);
-    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.status, 0) << r.output;
     YAML::Node node;
     try {
         node = YAML::Load(readFile(json));  // JSON is YAML
@@ -228,7 +212,7 @@ TEST(Fxbench, ModeSubsetKeepsOnlyTheAskedModesAndCsvAndChartAreWritten) {
     const std::string json = tempPath("subset.json"), csv = tempPath("subset.csv"), svg = tempPath("subset.svg");
     const RunOutput r = runFxbench("--modes soft+quarter,soft --size 48x48 --frames 2 --rounds 2 --warmup 0 "
                                    "--error-frames 1 --json " + json + " --csv " + csv + " --chart " + svg);
-    ASSERT_EQ(r.exitCode, 0) << r.output;
+    ASSERT_EQ(r.status, 0) << r.output;
     const YAML::Node run = YAML::Load(readFile(json));
     ASSERT_EQ(run["modes"].size(), 2u);
     EXPECT_EQ(run["modes"][0]["name"].as<std::string>(), "soft");  // table order, not argument order
@@ -249,7 +233,7 @@ TEST(Fxbench, ParticleSweepKeepsTheAskedParticleCountsAlive) {
     const std::string json = tempPath("sweep.json");
     const RunOutput r = runFxbench("--sweep particles=200,2000 --modes soft --size 48x48 --frames 2 --rounds 1 "
                                    "--warmup 0 --error-frames 0 --json " + json);
-    ASSERT_EQ(r.exitCode, 0) << r.output;
+    ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("Cost curve: live particles"), std::string::npos);
     const YAML::Node sweep = YAML::Load(readFile(json));
     EXPECT_EQ(sweep["sweep"].as<std::string>(), "particles");
@@ -265,7 +249,7 @@ TEST(Fxbench, ParticleSweepKeepsTheAskedParticleCountsAlive) {
 
 TEST(Fxbench, UnknownModeIsRejectedWithTheValidNames) {
     const RunOutput r = runFxbench("--modes soft,sofft");
-    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("unknown mode 'sofft'"), std::string::npos) << r.output;
     for (const char* name : {"nofx", "hard", "soft+equal", "soft+equal+quarter", "spherical+quarter"})
         EXPECT_NE(r.output.find(name), std::string::npos) << name;
@@ -284,15 +268,15 @@ TEST(Fxbench, BadValuesAreRejectedWithTheFlagName) {
                           Case{"--bogus", "unknown option"}}) {
         SCOPED_TRACE(c.args);
         const RunOutput r = runFxbench(c.args);
-        EXPECT_EQ(r.exitCode, 2);
+        EXPECT_EQ(r.status, 2);
         EXPECT_NE(r.output.find(c.mentions), std::string::npos) << r.output;
     }
-    EXPECT_EQ(runFxbench("--help").exitCode, 0);
+    EXPECT_EQ(runFxbench("--help").status, 0);
 }
 
 TEST(Fxbench, IntegratorReportShowsEulerDivergingAndExactStable) {
     const RunOutput r = runFxbench("--integrators");
-    ASSERT_EQ(r.exitCode, 0) << r.output;
+    ASSERT_EQ(r.status, 0) << r.output;
     // Stiff row k*dt = 10000: both Euler variants diverge, the exact step does not.
     const size_t row = r.output.find("| 10000 |");
     ASSERT_NE(row, std::string::npos) << r.output;

@@ -4,29 +4,17 @@
 
 #include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <string>
 
 #include "PanelTestUtil.h"
+#include "RunCommand.h"
 
 namespace {
 
-struct Result {
-    int status = -1;
-    std::string output;
-};
+using Result = cubetest::CommandResult;
 
 Result runGame(const std::string& args) {
-    const std::string cmd = std::string(CUBE_TEST_BIN_DIR) + "/cube_game " + args + " 2>&1";
-    Result r;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf{};
-    while (fgets(buf.data(), int(buf.size()), p)) r.output += buf.data();
-    const int st = pclose(p);
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : 128;
-    return r;
+    return cubetest::runCommand(std::string(CUBE_TEST_BIN_DIR) + "/cube_game " + args + " 2>&1", 128);
 }
 
 }  // namespace

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "../engine/GameTestUtil.h"
+#include "RunCommand.h"
 #include "game/Game.h"
 #include "gl/Paths.h"
 
@@ -17,12 +19,7 @@ namespace paneltest {
 
 namespace fs = std::filesystem;
 
-inline std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using cubetest::readFile;
 
 inline void writeFile(const std::string& path, const std::string& text) {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
@@ -60,12 +57,7 @@ private:
 
 /// Options for a headless run over `reactions`: fixed dt, seed 7, no HUD.
 inline cube::Options options(const std::string& reactions, int w = 320, int h = 256) {
-    cube::Options o;
-    o.width = w;
-    o.height = h;
-    o.fixedDt = 1.0 / 60.0;
-    o.seed = 7;
-    o.hud = false;
+    cube::Options o = cubetest::smallOptions(w, h);
     o.reactions = reactions;
     return o;
 }

@@ -456,23 +456,20 @@ TEST_F(FrameGraphTest, CompileRejectsBrokenGraphsWithoutRunningAnything) {
     graph().addPass("writer", 1, {}, {t}, run);
     EXPECT_FALSE(graph().compile());
     EXPECT_NE(graph().report().error.find("no earlier kept pass writes"), std::string::npos);
+    // A kept pass writing a 4x4 target `name` that shares the depth of `owner`.
+    auto writeSharer = [&](const char* name, FrameGraphResource owner) {
+        FrameGraph::TargetDesc sharer;
+        sharer.width = sharer.height = 4;
+        sharer.sharedDepthOf = owner;
+        graph().addPass("w", 0, {}, {graph().create(name, sharer)}, run, true);
+    };
     // Sharing the depth of a target without depth.
     graph().reset();
-    auto noDepth = graph().create("no_depth", fixed(4, 4));
-    FrameGraph::TargetDesc sharer;
-    sharer.width = sharer.height = 4;
-    sharer.sharedDepthOf = noDepth;
-    auto s = graph().create("sharer", sharer);
-    graph().addPass("w", 0, {}, {s}, run, true);
+    writeSharer("sharer", graph().create("no_depth", fixed(4, 4)));
     EXPECT_FALSE(graph().compile());
     // Sharing the depth of a target with a different size rule.
     graph().reset();
-    auto owner8 = graph().create("owner", fixed(8, 8, ColorFormat::RGBA8, DepthFormat::Depth24));
-    FrameGraph::TargetDesc sharer4;
-    sharer4.width = sharer4.height = 4;
-    sharer4.sharedDepthOf = owner8;
-    auto s4 = graph().create("sharer4", sharer4);
-    graph().addPass("w", 0, {}, {s4}, run, true);
+    writeSharer("sharer4", graph().create("owner", fixed(8, 8, ColorFormat::RGBA8, DepthFormat::Depth24)));
     EXPECT_FALSE(graph().compile());
     EXPECT_NE(graph().report().error.find("SharedDepthSizeMismatch"), std::string::npos);
     // A stale import.

@@ -65,11 +65,15 @@ TEST(SceneLoaderErrors, ShortBinIsMissingBuffer) {
     expectFailure(dir.file("race.gltf"), SceneErrorCode::MissingBuffer);
 }
 
+// The index of the POSITION accessor of mesh `mesh`'s first primitive.
+int positionAccessor(const tinygltf::Model& m, const std::string& mesh) {
+    return m.meshes[size_t(meshIndex(m, mesh))].primitives[0].attributes.at("POSITION");
+}
+
 TEST(SceneLoaderErrors, AccessorCountTooLargeIsAccessorOutOfRange) {
     TempDir dir;
     tinygltf::Model m = raceModel();
-    const int position =
-        m.meshes[size_t(meshIndex(m, "car_body"))].primitives[0].attributes.at("POSITION");
+    const int position = positionAccessor(m, "car_body");
     m.accessors[size_t(position)].count *= 2;
     const SceneError err =
         expectFailure(writeModel(dir, m, "race"), SceneErrorCode::AccessorOutOfRange);
@@ -81,8 +85,7 @@ TEST(SceneLoaderErrors, AccessorCountTooLargeIsAccessorOutOfRange) {
 TEST(SceneLoaderErrors, HugeAccessorCountIsRejectedWithoutAllocating) {
     TempDir dir;
     tinygltf::Model m = raceModel();
-    const int position =
-        m.meshes[size_t(meshIndex(m, "wheel"))].primitives[0].attributes.at("POSITION");
+    const int position = positionAccessor(m, "wheel");
     m.accessors[size_t(position)].count = size_t(1) << 62;  // count * stride overflows 64 bits
     expectFailure(writeModel(dir, m, "race"), SceneErrorCode::AccessorOutOfRange);
 }
@@ -109,12 +112,18 @@ TEST(SceneLoaderErrors, IndexPastVertexCountIsIndexOutOfRange) {
     EXPECT_NE(err.message.find("car_cabin"), std::string::npos) << err.message;
 }
 
-TEST(SceneLoaderErrors, MissingImageIsMissingTexture) {
-    TempDir dir;
+// The race model with one more image, at `uri` beside the .gltf.
+tinygltf::Model raceModelWithImage(const std::string& uri) {
     tinygltf::Model m = raceModel();
     tinygltf::Image img;
-    img.uri = "no_such_smoke.png";
+    img.uri = uri;
     m.images.push_back(img);
+    return m;
+}
+
+TEST(SceneLoaderErrors, MissingImageIsMissingTexture) {
+    TempDir dir;
+    tinygltf::Model m = raceModelWithImage("no_such_smoke.png");
     tinygltf::Texture tex;
     tex.source = 0;
     m.textures.push_back(tex);
@@ -126,20 +135,14 @@ TEST(SceneLoaderErrors, MissingImageIsMissingTexture) {
 
 TEST(SceneLoaderErrors, ImageThatIsNotAnImageIsMissingTexture) {
     TempDir dir;
-    tinygltf::Model m = raceModel();
-    tinygltf::Image img;
-    img.uri = "smoke.png";
-    m.images.push_back(img);
+    tinygltf::Model m = raceModelWithImage("smoke.png");
     writeBytes(dir.file("smoke.png"), "this is not a png");
     expectFailure(writeModel(dir, m, "race"), SceneErrorCode::MissingTexture);
 }
 
 TEST(SceneLoaderErrors, PresentImageLoads) {
     TempDir dir;
-    tinygltf::Model m = raceModel();
-    tinygltf::Image img;
-    img.uri = "smoke.png";
-    m.images.push_back(img);
+    tinygltf::Model m = raceModelWithImage("smoke.png");
     writeBytes(dir.file("smoke.png"), readBytes(dataPath("smoke_atlas.png")));
     SceneData scene;
     SceneError err;
@@ -173,8 +176,7 @@ TEST(SceneLoaderErrors, MissingPositionIsBadAttribute) {
 TEST(SceneLoaderErrors, WrongPositionTypeIsBadAttribute) {
     TempDir dir;
     tinygltf::Model m = raceModel();
-    const int position =
-        m.meshes[size_t(meshIndex(m, "track"))].primitives[0].attributes.at("POSITION");
+    const int position = positionAccessor(m, "track");
     m.accessors[size_t(position)].type = TINYGLTF_TYPE_VEC2;
     expectFailure(writeModel(dir, m, "race"), SceneErrorCode::BadAttribute);
     m.accessors[size_t(position)].type = TINYGLTF_TYPE_VEC3;
@@ -185,8 +187,7 @@ TEST(SceneLoaderErrors, WrongPositionTypeIsBadAttribute) {
 TEST(SceneLoaderErrors, SparseAccessorIsUnsupported) {
     TempDir dir;
     tinygltf::Model m = raceModel();
-    const int position =
-        m.meshes[size_t(meshIndex(m, "track"))].primitives[0].attributes.at("POSITION");
+    const int position = positionAccessor(m, "track");
     tinygltf::Accessor& acc = m.accessors[size_t(position)];
     acc.sparse.isSparse = true;
     acc.sparse.count = 1;

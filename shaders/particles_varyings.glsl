@@ -1,0 +1,21 @@
+// What vs_particles.glsl hands the particle fragment shaders (fs_particles_hard, _soft,
+// _spherical, _opacity), declared once for both sides: vs_particles defines FX_VARYING as `out`
+// before including this, the fragment shaders include it as it is (`in`) and read the ones they
+// need.
+#ifndef FX_VARYING
+#define FX_VARYING in
+#endif
+FX_VARYING vec3 vViewPos;       // view-space position on the quad
+FX_VARYING vec2 vLocal;         // billboards: rotated particle-space coordinate, [-1,1]^2 inside the quad
+flat FX_VARYING vec4 vRamp;     // ramp colour at this particle's life, straight alpha
+flat FX_VARYING float vFade;    // life fade
+flat FX_VARYING vec2 vCell;     // atlas coordinate of the frame's corner (atlasCell)
+flat FX_VARYING vec4 vSphere;   // spherical: view-space centre, radius
+flat FX_VARYING vec2 vTurn;     // (cos, sin) of the particle's angle; spherical: divided by the radius
+#ifdef FX_CLASSIFY
+flat FX_VARYING float vInFront; // 1: the fade is exactly 1 over the whole particle (no depth fetch)
+#endif
+#ifdef FX_LIT
+FX_VARYING vec3 vSunLight;      // sun colour x transmittance through the smoke toward the sun
+FX_VARYING float vPhase;        // Henyey-Greenstein x 4 pi toward the eye
+#endif
