@@ -15,6 +15,8 @@
 #include <thread>
 
 #include "FxTestHost.h"
+#include "RunCommand.h"
+#include "FileEdits.h"
 #include "../../fx_plugin/render/ShaderLoader.h"
 
 namespace fxtest {
@@ -26,23 +28,6 @@ std::string copyOf(const std::string& from, const std::string& name) {
     const std::string dir = scratchDir() + "/" + name;
     EXPECT_EQ(std::system(("rm -rf '" + dir + "' && cp -r '" + from + "' '" + dir + "'").c_str()), 0);
     return dir;
-}
-
-std::string readText(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-// Writes `text` with a modification time `secondsAhead` from now (a distinct stamp per edit).
-void writeAhead(const std::string& path, const std::string& text, int secondsAhead) {
-    {
-        std::ofstream out(path, std::ios::binary | std::ios::trunc);
-        out << text;
-    }
-    std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now() +
-                                               std::chrono::seconds(secondsAhead));
 }
 
 class ProgramCacheTest : public FxHostTest {
@@ -158,11 +143,11 @@ TEST_F(ProgramCacheTest, NoFrameCompilesAcrossHotReloads) {
     const uint64_t passBuildsBefore = fx::programBuildCounts().inPass;
     prepareThenDraw("start");
     const std::string burnout = reactions + "/burnout_smoke.yaml";
-    std::string yaml = readText(burnout);
+    std::string yaml = cubetest::readFile(burnout);
     const size_t at = yaml.find("contrast_power: 2.0");
     ASSERT_NE(at, std::string::npos);
     yaml.replace(at, 19, "contrast_power: 3.5");
-    writeAhead(burnout, yaml, 10);
+    cubetest::writeAhead(burnout, yaml, 10);
     bool reloaded = false;  // the library looks at the disk at most every 0.1 s
     for (int i = 0; i < 100 && !reloaded; ++i) {
         reloaded = plugin->pollHotReload(nullptr);
@@ -172,7 +157,7 @@ TEST_F(ProgramCacheTest, NoFrameCompilesAcrossHotReloads) {
     EXPECT_EQ(prepareThenDraw("reaction reload"), 2u) << "contrast_power 3.5: its soft program, lit and unlit";
 
     const std::string soft = shaders + "/fs_particles_soft.glsl";
-    writeAhead(soft, readText(soft) + "\n// an edit that changes nothing\n", 20);
+    cubetest::writeAhead(soft, cubetest::readFile(soft) + "\n// an edit that changes nothing\n", 20);
     const uint64_t before = fx::programBuildCounts().built;
     ASSERT_TRUE(plugin->pollShaderReload(nullptr));
     EXPECT_GT(fx::programBuildCounts().built, before);

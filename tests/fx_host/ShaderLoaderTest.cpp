@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "FxTestHost.h"
+#include "RunCommand.h"
 #include "../../fx_plugin/render/ProgramCache.h"
 #include "../../fx_plugin/render/ShaderLoader.h"
 
@@ -18,13 +19,6 @@ namespace fxtest {
 namespace {
 
 const std::string kShaders = CUBE_SOURCE_DIR "/shaders";
-
-std::string readText(const std::string& path) {
-    std::ifstream in(path);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 void writeText(const std::string& path, const std::string& text) {
     std::ofstream out(path);
@@ -38,14 +32,14 @@ std::string copyShaders(const std::string& name) {
     for (const auto& entry : std::filesystem::directory_iterator(kShaders)) {
         const std::string f = entry.path().filename().string();
         if (f.find("particles") == std::string::npos) continue;
-        writeText(dir + "/" + f, readText(kShaders + "/" + f));
+        writeText(dir + "/" + f, cubetest::readFile(kShaders + "/" + f));
     }
     return dir;
 }
 
 // Replaces line `line` (1-based) of `path` with `text`.
 void replaceLine(const std::string& path, int line, const std::string& text) {
-    std::istringstream in(readText(path));
+    std::istringstream in(cubetest::readFile(path));
     std::string out, l;
     for (int n = 1; std::getline(in, l); ++n) out += (n == line ? text : l) + "\n";
     writeText(path, out);
@@ -53,7 +47,7 @@ void replaceLine(const std::string& path, int line, const std::string& text) {
 
 // The 1-based line of the first occurrence of `needle` in `path`.
 int lineOf(const std::string& path, const std::string& needle) {
-    std::istringstream in(readText(path));
+    std::istringstream in(cubetest::readFile(path));
     std::string l;
     for (int n = 1; std::getline(in, l); ++n) {
         if (l.find(needle) != std::string::npos) return n;

@@ -11,28 +11,13 @@
 #include <string>
 
 #include "FxTestHost.h"
+#include "RunCommand.h"
+#include "FileEdits.h"
 #include "../../fx_plugin/render/ProgramCache.h"
 
 // Named so that the test files of one unity translation unit keep their helpers apart.
 namespace fxtest {
 namespace shader_techniques_test {
-
-std::string readText(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-// Writes `text` with a modification time `secondsAhead` from now (a distinct stamp per edit).
-void writeAhead(const std::string& path, const std::string& text, int secondsAhead) {
-    {
-        std::ofstream out(path, std::ios::binary | std::ios::trunc);
-        out << text;
-    }
-    std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now() +
-                                               std::chrono::seconds(secondsAhead));
-}
 
 std::string freshCopy(const std::string& name) {
     const std::string dir = scratchDir() + "/" + name;
@@ -101,7 +86,7 @@ TEST_F(ShaderTechniquesTest, PrepareGlBuildsEveryTechniqueInUseAndNamesTheBroken
     for (const Breakage& b : kBreakages) {
         SCOPED_TRACE(std::string(b.file) + " " + b.how);
         const std::string dir = freshCopy("prepare_every_technique");
-        writeAhead(dir + "/" + b.file, broken(readText(dir + "/" + b.file), b.how), 0);
+        cubetest::writeAhead(dir + "/" + b.file, broken(cubetest::readFile(dir + "/" + b.file), b.how), 0);
         host = TestHostAdapter();
         auto p = create(dir, true);
         ASSERT_TRUE(p);
@@ -140,14 +125,14 @@ TEST_F(ShaderTechniquesTest, ABrokenEditOfAnyTechniqueIsReportedOnceAndKeepsTheL
         SCOPED_TRACE(std::string(b.file) + " " + b.how);
         const std::string dir = freshCopy("reload_every_technique");
         const std::string path = dir + "/" + b.file;
-        const std::string original = readText(path);
+        const std::string original = cubetest::readFile(path);
         host = TestHostAdapter();
         auto p = create(dir, true);
         ASSERT_TRUE(p);
         ASSERT_TRUE(p->prepareGl(nullptr));
         EXPECT_FALSE(p->pollShaderReload(nullptr));  // nothing changed
 
-        writeAhead(path, broken(original, b.how), 10);
+        cubetest::writeAhead(path, broken(original, b.how), 10);
         fx::Diagnostics diags;
         EXPECT_FALSE(p->pollShaderReload(&diags));
         ASSERT_FALSE(diags.empty());
@@ -161,7 +146,7 @@ TEST_F(ShaderTechniquesTest, ABrokenEditOfAnyTechniqueIsReportedOnceAndKeepsTheL
         EXPECT_FALSE(p->pollShaderReload(nullptr));  // the same edit: not reported again
         EXPECT_EQ(countIn(host.errors(), "the last good programs are kept"), 1);
 
-        writeAhead(path, original, 20);
+        cubetest::writeAhead(path, original, 20);
         EXPECT_TRUE(p->pollShaderReload(nullptr));
         EXPECT_TRUE(host.logged("particle shaders reloaded"));
     }
@@ -196,7 +181,7 @@ TEST_F(ShaderTechniquesTest, APowerBuiltAfterARejectedEditComesFromTheGoodSource
     programs.build({Cache::Key{Cache::Soft}, Cache::Key{Cache::SoftGeneralPower}}, &errors);
     ASSERT_TRUE(errors.empty()) << errors.front();
     const std::string soft = dir + "/fs_particles_soft.glsl";
-    writeAhead(soft, broken(readText(soft), "syntax"), 10);
+    cubetest::writeAhead(soft, broken(cubetest::readFile(soft), "syntax"), 10);
     allowShaderCompilerMessages();
     programs.build({Cache::Key{Cache::Soft, false, false, 5}}, &errors);
     EXPECT_TRUE(errors.empty()) << errors.front();
@@ -223,7 +208,7 @@ TEST_F(ShaderTechniquesTest, TheClassifierBuiltAfterARejectedEditComesFromTheGoo
 
     allowShaderCompilerMessages();
     const std::string tiles = dir + "/fs_particles_tile_depth.glsl";
-    writeAhead(tiles, broken(readText(tiles), "syntax"), 10);
+    cubetest::writeAhead(tiles, broken(cubetest::readFile(tiles), "syntax"), 10);
     EXPECT_FALSE(p->pollShaderReload(nullptr));
     EXPECT_EQ(countIn(host.errors(), "the last good programs are kept"), 1);
     EXPECT_EQ(countIn(host.errors(), "fs_particles_tile_depth.glsl:"), 2);  // its two errors, once each
