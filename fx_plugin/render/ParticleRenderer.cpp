@@ -1,7 +1,6 @@
 #include "ParticleRenderer.h"
 
 #include <algorithm>
-#include <filesystem>
 #include <functional>
 #include <utility>
 
@@ -14,33 +13,6 @@
 
 namespace fx {
 namespace {
-
-// Size and modification time of every plugin shader in the override folder: the billboard,
-// stateless and mega programs' files and their includes ("particles" or "mega" in the name;
-// the engine's own shaders there are not ours). No file is opened: a FIFO dropped there cannot
-// block the poll.
-uint64_t shaderStamp(const std::string& shaderDir) {
-    uint64_t h = 1469598103934665603ull;
-    auto mix = [&](uint64_t v) {
-        h ^= v;
-        h *= 1099511628211ull;
-    };
-    std::error_code ec;
-    std::vector<std::filesystem::path> files;
-    for (const auto& e : std::filesystem::directory_iterator(shaderDir, ec)) {
-        const std::string name = e.path().filename().string();
-        const bool ours = name.find("particles") != std::string::npos || name.find("mega") != std::string::npos;
-        if (ours && e.path().extension() == ".glsl") files.push_back(e.path());
-    }
-    std::sort(files.begin(), files.end());
-    for (const auto& f : files) {
-        for (char c : f.filename().string()) mix(uint64_t(uint8_t(c)));
-        mix(uint64_t(std::filesystem::file_size(f, ec)));
-        mix(uint64_t(std::filesystem::last_write_time(f, ec).time_since_epoch().count()));
-        mix(uint64_t(std::filesystem::status(f, ec).type()));  // a FIFO put in a file's place
-    }
-    return h;
-}
 
 // The passes' SizeMismatch, counted by the plugin's ApiErrors (none: not counted).
 SizeMismatchReport sizeMismatchTo(ApiErrors* errors) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <memory>
 
@@ -171,6 +172,29 @@ uint32_t buildProgram(const ShaderReader& read, const std::string& vertexFile,
         return 0;
     }
     return program;
+}
+
+uint64_t shaderStamp(const std::string& shaderDir) {
+    uint64_t h = 1469598103934665603ull;
+    auto mix = [&](uint64_t v) {
+        h ^= v;
+        h *= 1099511628211ull;
+    };
+    std::error_code ec;
+    std::vector<std::filesystem::path> files;
+    for (const auto& e : std::filesystem::directory_iterator(shaderDir, ec)) {
+        const std::string name = e.path().filename().string();
+        const bool ours = name.find("particles") != std::string::npos || name.find("mega") != std::string::npos;
+        if (ours && e.path().extension() == ".glsl") files.push_back(e.path());
+    }
+    std::sort(files.begin(), files.end());
+    for (const auto& f : files) {
+        for (char c : f.filename().string()) mix(uint64_t(uint8_t(c)));
+        mix(uint64_t(std::filesystem::file_size(f, ec)));
+        mix(uint64_t(std::filesystem::last_write_time(f, ec).time_since_epoch().count()));
+        mix(uint64_t(std::filesystem::status(f, ec).type()));  // a FIFO put in a file's place
+    }
+    return h;
 }
 
 }  // namespace fx

@@ -59,6 +59,12 @@ private:
     Kind kind_;
 };
 
+/// Size and modification time of every plugin shader in the override folder `shaderDir`: the
+/// billboard, stateless and mega programs' files and their includes ("particles" or "mega" in the
+/// name; the engine's own shaders there are not ours), hashed. A change means an edit to reload.
+/// No file is opened: a FIFO dropped there cannot block the poll.
+uint64_t shaderStamp(const std::string& shaderDir);
+
 /// A reader that keeps the text of every file it gave out and gives the same text again on each
 /// later read of that name, whatever the file holds by then. A program set built through one
 /// snapshot, and any variant of it built later (a contrast power on first use), is built from
