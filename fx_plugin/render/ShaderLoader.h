@@ -67,7 +67,7 @@ uint64_t shaderStamp(const std::string& shaderDir);
 
 /// A reader that keeps the text of every file it gave out and gives the same text again on each
 /// later read of that name, whatever the file holds by then. A program set built through one
-/// snapshot, and any variant of it built later (a contrast power on first use), is built from
+/// snapshot, and any variant of it built later (a contrast power a reload asks for), is built from
 /// one version of each file: the version that built and went live, never a later broken edit.
 ShaderReader snapshotShaderReader(ShaderReader read);
 

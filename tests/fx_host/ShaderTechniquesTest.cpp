@@ -2,7 +2,7 @@
 // stateless) are built by prepareGl when a loaded reaction or the options can use them, a live
 // edit of any technique's file is one transaction (a broken one keeps every last good program
 // and is reported once, never announced as reloaded), and a program built after a rejected edit
-// (a contrast power on first use) comes from the source that went live.
+// (a contrast power built later, the classifier switched on later) comes from the source that went live.
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
