@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "fx/Plugin.h"
-#include "shader/ShaderSource.h"
+#include "base/TextIo.h"
 
 namespace fx {
 

@@ -14,7 +14,7 @@
 #include "ImmediateFrame.h"
 #include "ShaderLoader.h"
 #include "reactions/TechniqueTable.h"
-#include "src/ApiErrors.h"
+#include "base/ApiErrors.h"
 
 namespace fx {
 namespace {

@@ -6,7 +6,7 @@
 #include "PluginImpl.h"
 #include "../reactions/ReactionKeyTable.h"
 #include "../reactions/TechniqueTable.h"
-#include "../render/InstallParticleRenderer.h"
+#include "InstallParticleRenderer.h"
 
 namespace fx {
 

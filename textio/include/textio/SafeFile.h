@@ -1,8 +1,8 @@
 #pragma once
 // SafeFile: the one way every loader (reaction files, legacy smoke data, glTF scenes and their
-// buffers/images, shaders) reads a file. Header-only on purpose: the plugin (a shared library
-// that exports only its API) and the engine each compile their own copy, so neither links
-// against the other's internals, and the plugin still includes no engine header.
+// buffers/images, shaders) reads a file, in the engine and in the plugin alike (both link
+// cube_textio; see textio/CMakeLists.txt). Header-only because readFileBounded is a template over
+// the byte container (std::string, std::vector<unsigned char>, ...).
 //
 // Contract of readFileBounded:
 //  - never blocks on a FIFO, socket or device: the file is opened O_NONBLOCK and checked with
@@ -20,7 +20,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace fxio {
+namespace textio {
 
 enum class FileError {
     None = 0,
@@ -130,4 +130,4 @@ inline std::string describeUnreadable(const std::string& path) {
     return "";
 }
 
-}  // namespace fxio
+}  // namespace textio

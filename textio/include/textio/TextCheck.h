@@ -1,13 +1,12 @@
 #pragma once
 // Is this YAML text? The reaction loader and the engine's legacy smoke loader both refuse a file
 // with control bytes or malformed UTF-8 before the YAML parser sees it, and name the first
-// offending byte. Header-only for the same reason as SafeFile.h: the plugin and the engine each
-// compile their own copy.
+// offending byte. Header-only, like SafeFile.h.
 #include <cstddef>
 #include <cstdio>
 #include <string>
 
-namespace fxio {
+namespace textio {
 
 /// Where the first byte that is not UTF-8 text is (0-based line and column, columns counting
 /// characters), and a message for it.
@@ -69,4 +68,4 @@ inline bool isYamlText(const std::string& text, NonTextByte* where) {
     return true;
 }
 
-}  // namespace fxio
+}  // namespace textio
