@@ -20,18 +20,6 @@ namespace {
 
 using fx::ErrorCode;
 
-// The first pass's problem as the plugin's code of the same name (the legacy loader reports
-// with the plugin's codes).
-ErrorCode errorCodeOf(textio::YamlError error) {
-    switch (error) {
-        case textio::YamlError::None: return ErrorCode::None;
-        case textio::YamlError::FileTooLarge: return ErrorCode::FileTooLarge;
-        case textio::YamlError::SyntaxError: return ErrorCode::SyntaxError;
-        case textio::YamlError::TooDeep: return ErrorCode::TooDeep;
-    }
-    return ErrorCode::SyntaxError;
-}
-
 // Collects diagnostics for one file, capped like the reaction loader's.
 class Report {
 public:
@@ -255,7 +243,7 @@ bool loadChecked(const std::string& text, Report& report, std::vector<LegacySmok
     textio::YamlProblem problem;
     bool hasDocument = false;
     if (!textio::preflightYaml(text, kLegacyMaxFileBytes, kLegacyMaxNesting, &problem, &hasDocument)) {
-        report.add(errorCodeOf(problem.code), problem.mark, "", problem.message);
+        report.add(textio::errorCodeAs<ErrorCode>(problem.code), problem.mark, "", problem.message);
         return false;
     }
     const YAML::Node root = YAML::Load(text);

@@ -3,7 +3,6 @@
 // names it: fxio:: for file reading and the YAML first pass, and the shader loader's names in
 // namespace fx, where the plugin's programs use them unqualified. The library is linked into
 // libcubefx.so privately; nothing here reaches the public headers.
-#include "fx/Diagnostic.h"
 #include "textio/SafeFile.h"
 #include "textio/ShaderSource.h"
 #include "textio/YamlPreflight.h"
@@ -22,16 +21,5 @@ using textio::kMaxIncludeDepth;
 using textio::kMaxShaderBytes;
 using textio::shaderErrorName;
 using textio::translateInfoLog;
-
-/// The plugin's code for a problem the YAML first pass found (the same names as the library's).
-inline ErrorCode errorCodeOf(textio::YamlError error) {
-    switch (error) {
-        case textio::YamlError::None: return ErrorCode::None;
-        case textio::YamlError::FileTooLarge: return ErrorCode::FileTooLarge;
-        case textio::YamlError::SyntaxError: return ErrorCode::SyntaxError;
-        case textio::YamlError::TooDeep: return ErrorCode::TooDeep;
-    }
-    return ErrorCode::SyntaxError;
-}
 
 }  // namespace fx

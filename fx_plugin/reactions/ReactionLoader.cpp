@@ -38,7 +38,7 @@ bool loadTextChecked(const std::string& text, YamlCheck& check, ReactionSet* set
     fxio::YamlProblem problem;
     bool hasDocument = false;
     if (!fxio::preflightYaml(text, kMaxFileBytes, kMaxNesting, &problem, &hasDocument)) {
-        check.report(errorCodeOf(problem.code), problem.mark, "", problem.message);
+        check.report(fxio::errorCodeAs<ErrorCode>(problem.code), problem.mark, "", problem.message);
         return false;
     }
 

@@ -7,7 +7,7 @@
 // with a cap and checking for progress avoids that.
 //
 // What went wrong is a YamlError of this library's own; each loader turns it into its own
-// diagnostic code (the plugin's and the engine's are fx::ErrorCode, of the same names).
+// diagnostic code with errorCodeAs.
 #include <cstddef>
 #include <string>
 
@@ -30,6 +30,19 @@ enum class YamlError {
     SyntaxError,   ///< not UTF-8 text, malformed YAML, or more than one document
     TooDeep,       ///< nesting deeper than the loader's limit
 };
+
+/// `error` as a loader's own code enum, which has members of these four names (fx::ErrorCode,
+/// which the plugin and the engine report with, does), so the library names neither side.
+template <class Code>
+Code errorCodeAs(YamlError error) {
+    switch (error) {
+        case YamlError::None: return Code::None;
+        case YamlError::FileTooLarge: return Code::FileTooLarge;
+        case YamlError::SyntaxError: return Code::SyntaxError;
+        case YamlError::TooDeep: return Code::TooDeep;
+    }
+    return Code::SyntaxError;
+}
 
 /// What the first pass found wrong: a named code, where, and what was expected.
 struct YamlProblem {
