@@ -80,7 +80,7 @@ float insideFrame(vec2 local) {
 // t^p for t in [0, 1]. FX_GENERAL_POWER: pow(). Otherwise p is a whole or half-whole number up to
 // 16, built from squarings and one sqrt: a few multiplies instead of exp2(p * log2(t)), which costs
 // more than the rest of the soft fragment on a CPU rasteriser (every lane evaluates both sides of
-// a branch there). FX_POWER_STEPS = 2p (ParticlePrograms::get builds one program per power the
+// a branch there). FX_POWER_STEPS = 2p (a ProgramCache key of its own: one program per power the
 // reactions use): the bits are constants, so only the multiplies that power needs are left.
 // Without it they are uniform bits, and every lane pays for the whole chain and its selects.
 #ifdef FX_POWER_STEPS

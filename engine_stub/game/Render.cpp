@@ -29,7 +29,15 @@ void Render::handleKeys(Game& game) {
     }
     if (p.keyPressed(Key::H)) o.hud = !o.hud;
     if (p.keyPressed(Key::E)) game.fireExplosionAtCar();
-    if (plugin) plugin->setRenderOptions(ro);
+    if (!plugin) return;
+    const fx::RenderOptions was = plugin->renderOptions();
+    plugin->setRenderOptions(ro);
+    // A switch may reach programs the old options did not (quarter-res, mega): built now, between
+    // frames, not while the next frame's passes are declared.
+    if (ro.techniqueOverride != was.techniqueOverride || ro.quarterRes != was.quarterRes ||
+        ro.bilinearUpsample != was.bilinearUpsample) {
+        (void)plugin->prepareGl(nullptr);  // a failure is logged once by the plugin
+    }
 }
 
 void Render::Dyn(Game& game) {

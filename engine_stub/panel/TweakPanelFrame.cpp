@@ -35,7 +35,10 @@ void TweakPanel::buildFrameWindow(Game& game) {
         ImGui::SameLine();
         changed |= ImGui::Checkbox("bilinear upsample", &ro.bilinearUpsample);
         note("bilinear_upsample");
-        if (changed) plugin_->setRenderOptions(ro);
+        if (changed) {
+            plugin_->setRenderOptions(ro);
+            (void)plugin_->prepareGl(nullptr);  // what the new options reach, built between frames
+        }
         // Trimmed polygons / octagons or full quads: the same picture, fewer fragments.
         bool trimmed = plugin_->particleShape() == fx::ParticleShape::Trimmed;
         if (ImGui::Checkbox("trimmed shapes", &trimmed)) {
@@ -48,6 +51,7 @@ void TweakPanel::buildFrameWindow(Game& game) {
         bool classify = plugin_->fadeClassification() == fx::FadeClassification::On;
         if (ImGui::Checkbox("classify fades", &classify)) {
             plugin_->setFadeClassification(classify ? fx::FadeClassification::On : fx::FadeClassification::Off);
+            (void)plugin_->prepareGl(nullptr);  // the classifier's programs, built between frames
         }
         note("classify_fades");
         ImGui::TextDisabled("%s", game.scene().renderer().reversedZ() ? "reversed-Z float depth" : "standard 24-bit depth");

@@ -2,6 +2,7 @@
 
 #include "render/PrivateGl.h"
 
+#include "DrawList.h"
 #include "../sim/Lifecycle.h"
 
 namespace fx {
@@ -15,10 +16,23 @@ bool sameStops(const std::vector<ColorStop>& a, const std::vector<ColorStop>& b)
     return true;
 }
 
+const std::vector<ColorStop>& whiteRamp() {
+    static const std::vector<ColorStop> kWhite{ColorStop{0.0f, glm::vec4(1.0f)}};
+    return kWhite;
+}
+
 }  // namespace
 
 ColorRampTexture::~ColorRampTexture() {
     if (texture_) glDeleteTextures(1, &texture_);
+}
+
+void ColorRampTexture::setRows(const ParticleBatch* batches, int batchCount) {
+    inputs_.clear();
+    for (int b = 0; b < batchCount; ++b) {
+        inputs_.push_back(batches[b].desc ? &batches[b].desc->particle.colorRamp : &whiteRamp());
+    }
+    setRows(inputs_);
 }
 
 void ColorRampTexture::setRows(const std::vector<const std::vector<ColorStop>*>& ramps) {

@@ -14,6 +14,8 @@
 
 namespace fx {
 
+struct ParticleBatch;
+
 class ColorRampTexture {
 public:
     static constexpr int kTexels = 64;  ///< keep equal to kRampTexels in particles_common.glsl
@@ -25,6 +27,8 @@ public:
 
     /// Row i is baked from ramps[i] (which must stay valid for this call only).
     void setRows(const std::vector<const std::vector<ColorStop>*>& ramps);
+    /// Row i from batches[i]'s particle.colorRamp (opaque white for a batch without a desc).
+    void setRows(const ParticleBatch* batches, int batchCount);
     /// Texture v coordinate of row `row`'s texel centres.
     float rowV(int row) const;
     /// Creates or re-specifies the texture when the table changed. Binds GL_TEXTURE_2D on the
@@ -34,6 +38,7 @@ public:
     int rows() const { return rows_; }
 
 private:
+    std::vector<const std::vector<ColorStop>*> inputs_;  ///< setRows(batches)' scratch
     std::vector<std::vector<ColorStop>> stops_;  ///< what each row was baked from
     std::vector<float> texels_;                  ///< rows_ x kTexels x RGBA
     int rows_ = 0;

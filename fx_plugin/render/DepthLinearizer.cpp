@@ -6,6 +6,7 @@
 
 #include "PrivateGl.h"
 #include "ShaderLoader.h"
+#include "Uniforms.h"
 
 namespace fx {
 
@@ -40,12 +41,9 @@ bool DepthLinearizer::prepare(std::string* error) {
     program_ = buildProgram(shaderDir_, "vs_particles_fullscreen.glsl", "fs_particles_linearize_depth.glsl", "",
                             error);
     if (!program_) return false;
-    locDepth_ = glGetUniformLocation(program_, "uDepth");
-    locCoeffs_ = glGetUniformLocation(program_, "uCoeffs");
-    locFarWindow_ = glGetUniformLocation(program_, "uFarWindow");
-    locReversed_ = glGetUniformLocation(program_, "uReversed");
-    locBackground_ = glGetUniformLocation(program_, "uBackground");
-    locInvSize_ = glGetUniformLocation(program_, "uInvSize");
+    locateUniforms(program_, {{&locDepth_, "uDepth"}, {&locCoeffs_, "uCoeffs"}, {&locFarWindow_, "uFarWindow"},
+                              {&locReversed_, "uReversed"}, {&locBackground_, "uBackground"},
+                              {&locInvSize_, "uInvSize"}});
     glGenVertexArrays(1, &vao_);
     // A host's depth texture may carry shadow comparison or mipmapped filtering: read it through
     // a sampler that has neither.

@@ -8,12 +8,10 @@
 #include "GlStateGuard.h"
 #include "InstanceStream.h"
 #include "ShaderLoader.h"
+#include "Uniforms.h"
 
 namespace fx {
 namespace {
-
-constexpr uint32_t kClassifiedVariants = (1u << ParticlePrograms::Soft) | (1u << ParticlePrograms::SoftGeneralPower) |
-                                         (1u << ParticlePrograms::Spherical);
 
 int tilesFor(int pixels, int tileSize) { return std::max(1, (pixels + tileSize - 1) / tileSize); }
 
@@ -42,7 +40,6 @@ void FadeClassifier::readSources(const ShaderReader& read) {
 }
 
 void FadeClassifier::build(const ShaderReader& shaderDir, std::vector<std::string>* errors) {
-    programs_.build(shaderDir, errors, "#define FX_CLASSIFY 1\n", kClassifiedVariants);
     hostDepth_.create();
     std::string error;
     // The fine tiles from the scene depth, the coarse ones from the fine tiles: one shader.
@@ -65,14 +62,10 @@ void FadeClassifier::build(const ShaderReader& shaderDir, std::vector<std::strin
     if (!countProgram_) {
         countProgram_ = buildProgram(shaderDir, "vs_particles_count.glsl", "fs_particles_count.glsl", "", &error);
         if (countProgram_) {
-            countView_ = glGetUniformLocation(countProgram_, "uView");
-            countProj_ = glGetUniformLocation(countProgram_, "uProj");
-            countNear_ = glGetUniformLocation(countProgram_, "uNear");
-            countSoftScale_ = glGetUniformLocation(countProgram_, "uSoftScale");
-            countSphere_ = glGetUniformLocation(countProgram_, "uSphere");
-            countTiles_ = glGetUniformLocation(countProgram_, "uTiles");
-            countCoarse_ = glGetUniformLocation(countProgram_, "uTilesCoarse");
-            countViewSize_ = glGetUniformLocation(countProgram_, "uViewSize");
+            locateUniforms(countProgram_, {{&countView_, "uView"}, {&countProj_, "uProj"}, {&countNear_, "uNear"},
+                                           {&countSoftScale_, "uSoftScale"}, {&countSphere_, "uSphere"},
+                                           {&countTiles_, "uTiles"}, {&countCoarse_, "uTilesCoarse"},
+                                           {&countViewSize_, "uViewSize"}});
         } else {
             errors->push_back(error);
         }
@@ -98,10 +91,6 @@ void FadeClassifier::build(const ShaderReader& shaderDir, std::vector<std::strin
 }
 
 bool FadeClassifier::ok() const {
-    for (ParticlePrograms::Variant v : {ParticlePrograms::Soft, ParticlePrograms::SoftGeneralPower,
-                                        ParticlePrograms::Spherical}) {
-        if (!programs_.get(v, false).program) return false;
-    }
     return tileProgram_ && coarseProgram_ && countProgram_ && counterFbo_;
 }
 
@@ -116,13 +105,7 @@ TargetDesc FadeClassifier::tileTargetDesc(int width, int height, bool coarse) {
 }
 
 void FadeClassifier::buildTiles(PassContext& ctx, Target sceneDepth, Target tiles, Target coarse) {
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_BLEND);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    plainDrawState();
     glBindVertexArray(vao_);
 
     ctx.bindForDraw(tiles);

@@ -24,7 +24,6 @@
 #include <vector>
 
 #include "GlStateGuard.h"
-#include "ParticlePrograms.h"
 #include "ShaderLoader.h"
 #include "fx/HostAdapter.h"
 #include "fx/Plugin.h"
@@ -49,8 +48,9 @@ public:
     FadeClassifier(const FadeClassifier&) = delete;
     FadeClassifier& operator=(const FadeClassifier&) = delete;
 
-    /// Builds the tile programs, the counting program and the classified soft and spherical
-    /// programs; appends one "file:line: message" block per failure to *errors.
+    /// Builds the tile programs and the counting program; appends one "file:line: message" block
+    /// per failure to *errors. The classified particle programs are ProgramCache keys
+    /// (Key::classified), built by the renderer with the rest.
     void build(const std::string& shaderDir, std::vector<std::string>* errors);
     /// The same from `read` (a snapshot: the files of the running particle programs).
     void build(const ShaderReader& read, std::vector<std::string>* errors);
@@ -67,15 +67,6 @@ public:
     /// The tile pass body: fills `tiles` and `coarse` from the linear scene depth.
     void buildTiles(PassContext& ctx, Target sceneDepth, Target tiles, Target coarse);
 
-    /// The classified build of `variant` (Soft, SoftGeneralPower, Spherical), lit or not;
-    /// program 0 when there is none.
-    const ParticleProgram& program(ParticlePrograms::Variant variant, bool lit) const {
-        return programs_.get(variant, lit);
-    }
-    /// The classified programs themselves: per-power soft builds (ParticlePrograms::get with a
-    /// contrast power), their late errors.
-    ParticlePrograms& programs() { return programs_; }
-
     /// Counts the classes of `batches`' soft and spherical particles (the instance stream holds
     /// them, uploaded): draws into the counter and reads it back. Changes the framebuffer,
     /// viewport, program, blend and the texture units kTileUnit / kCoarseUnit (inside the
@@ -84,7 +75,6 @@ public:
                           uint32_t tiles, uint32_t coarse);
 
 private:
-    ParticlePrograms programs_;  ///< FX_CLASSIFY builds of Soft, SoftGeneralPower, Spherical
     NearestSampler hostDepth_;   ///< the host's scene depth, read whatever sampling it set
     uint32_t tileProgram_ = 0, coarseProgram_ = 0, countProgram_ = 0;
     int tileSourceLoc_ = -1, coarseSourceLoc_ = -1;

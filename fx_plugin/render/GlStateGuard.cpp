@@ -4,6 +4,8 @@
 
 #include "render/PrivateGl.h"
 
+#include "PinnedGlState.h"
+
 namespace fx {
 void bindTextureUnit(int unit, uint32_t texture, uint32_t sampler) {
     glActiveTexture(GLenum(GL_TEXTURE0 + unit));
@@ -25,6 +27,21 @@ void NearestSampler::create() {
 }
 
 void NearestSampler::bindTexture(int unit, uint32_t texture) const { bindTextureUnit(unit, texture, sampler_); }
+
+void plainDrawState() {
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_BLEND);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void depthTestFor(DepthConvention depth) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(depth == DepthConvention::ReversedZ ? GL_GEQUAL : GL_LEQUAL);
+}
 
 DebugGroup::DebugGroup(const char* name) : active_(FXGLAD_GL_KHR_debug != 0) {
     if (active_) glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name);

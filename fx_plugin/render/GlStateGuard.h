@@ -72,7 +72,7 @@
 #include <cstdint>
 
 #include "fx/Types.h"
-#include "render/PinnedGlState.h"
+#include "render/GlStateRow.h"
 
 namespace fx {
 
@@ -102,6 +102,13 @@ private:
     uint32_t sampler_ = 0;
 };
 
+/// The state every pass of the plugin starts its draws from (inside a guard): no depth test and
+/// no depth writes, no culling, stencil, scissor or blending, every colour channel written.
+void plainDrawState();
+/// The depth test of a view's convention: on, LEQUAL (GEQUAL under reversed-Z); the depth
+/// writemask is left as it is.
+void depthTestFor(DepthConvention depth);
+
 /// A KHR_debug group around a pass's GL calls (names the pass in a GL debugger's capture); nothing
 /// where the context has no KHR_debug.
 class DebugGroup {
@@ -118,7 +125,7 @@ private:
 class GlStateGuard {
 public:
     /// Texture units the renderer may bind (0 .. kTextureUnits-1).
-    static constexpr int kTextureUnits = 6;
+    static constexpr int kTextureUnits = kPinnedTextureUnits;
     /// Rows a guard can hold (PinnedGlState.cpp bounds the per-index rows to fit).
     static constexpr int kMaxRows = 200;
 

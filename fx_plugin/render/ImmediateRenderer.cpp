@@ -4,6 +4,7 @@
 #include "GlStateGuard.h"
 #include "ImmediateFrame.h"
 #include "PrivateGl.h"
+#include "ShaderLoader.h"
 
 #include <string>
 
@@ -11,6 +12,16 @@ namespace fx {
 
 ImmediateRenderer::ImmediateRenderer(HostAdapter* host, std::string shaderDir)
     : host_(host), depth_(std::move(shaderDir)) {}
+
+bool ImmediateRenderer::prepare(Diagnostics* out) {
+    std::string error;
+    if (!privateGlLoaded() && !(host_ && loadPrivateGl(*host_, &error))) return true;  // prepareGl reports it
+    GlStateGuard guard;
+    if (depth_.prepare(&error)) return true;
+    if (host_) host_->log(LogLevel::Error, ("fx: error[ShaderBuild] immediate render: " + error).c_str());
+    if (out) addShaderDiagnostics(error, out);
+    return false;
+}
 
 ImmediateRenderer::~ImmediateRenderer() { releaseGl(); }
 
@@ -98,14 +109,7 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
     const uint32_t hostTexture = in.depthTexture;
     setup.produceDepth = [this, source, background, proj, mapping, w, h, hostTexture, depthFormat,
                           samples, drawFramebuffer](uint32_t target, const DepthRegion& region) {
-        // Built on first use, like the particle programs: a scene without smoke compiles nothing.
-        std::string error;
-        const bool ready = source == Source::None || depth_.prepare(&error);
-        if (!ready) {
-            lastError_ = error;
-            if (host_) host_->log(LogLevel::Error, ("fx: error[ShaderBuild] immediate render: " + error).c_str());
-        }
-        if (!ready || source == Source::None) {
+        if (!depthReady_ || source == Source::None) {
             // No depth (or no linearise program): the view's far plane everywhere, which every
             // reader takes as nothing drawn.
             glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
@@ -123,9 +127,18 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
     ImmediateFrame frame(pool_, std::move(setup));
     const ErrorCode declared = plugin.declarePasses(view, frame);
     if (declared == ErrorCode::None && !frame.empty()) {
+        // The linearise program: built by prepare() (prepareGl); for a host that skipped it, here,
+        // before any pass (a scene without smoke compiles nothing).
+        std::string error;
+        depthReady_ = source == Source::None || depth_.prepare(&error);
+        if (!depthReady_) {
+            lastError_ = error;
+            if (host_) host_->log(LogLevel::Error, ("fx: error[ShaderBuild] immediate render: " + error).c_str());
+        }
         // The z-tested passes draw under the clip control and depth range the host drew its
         // z-buffer with (GlStateGuard pins them to this mapping instead of the convention's).
         HostDepthMappingScope hostMapping(in.mapping.clipZeroToOne, in.mapping.rangeNear, in.mapping.rangeFar);
+        FrameScope running(FrameScope::Pass);
         frame.execute();
         lastPasses_ = frame.executed();
         lastRegion_ = frame.producedDepthRegion();

@@ -65,6 +65,10 @@ public:
     /// PluginImports::shaderDir (empty = the embedded shaders).
     explicit ImmediateRenderer(HostAdapter* host, std::string shaderDir = std::string());
     ~ImmediateRenderer();  ///< releaseGl(): the context must be current if anything was allocated
+    /// Builds the linearise program now (Plugin::prepareGl), so the first renderView that reads
+    /// the host's z-buffer compiles nothing. False, logged and in `out` ("file:line") when it does
+    /// not build.
+    bool prepare(Diagnostics* out);
     ImmediateRenderer(const ImmediateRenderer&) = delete;
     ImmediateRenderer& operator=(const ImmediateRenderer&) = delete;
 
@@ -108,6 +112,7 @@ private:
     std::vector<std::string> lastPasses_;
     DepthRegion lastRegion_;
     std::string lastError_;
+    bool depthReady_ = false;  ///< this frame's linearise program is there (render sets it)
 };
 
 }  // namespace fx

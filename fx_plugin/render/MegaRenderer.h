@@ -33,11 +33,14 @@
 // renderer's own framebuffer object with the host's textures of the pass as its attachments
 // (FrameBuilder binds one target per pass).
 //
+// The pass bodies and their GL objects are MegaPasses (MegaPasses.h), the programs MegaPrograms.
+//
 // Per view, the first visible Mega batch's `mega:` and `lighting:` keys and render.softness
 // apply to the whole cloud (every Mega reaction of the view melts into one volume); each
 // particle keeps its own reaction's colour ramp. The composite blends premultiplied "over"
 // whatever the reaction's blend mode. Lit when the plugin has a scene light (LightState::on)
-// and the reaction's lighting is on (LightingDesc::lit); otherwise the ramp colour, unlit.
+// (FrameSettings::light) and the reaction's lighting is on (LightingDesc::lit); otherwise the
+// ramp colour, unlit.
 //
 // RenderOptions::quarterRes does not apply (mega.resolution is the technique's own). Live shader
 // edits (Plugin::pollShaderReload) rebuild the mega programs with the billboard ones, in one
@@ -51,34 +54,21 @@
 // ends. A shader that fails to build is logged ("file:line: message") and Mega batches are then
 // not drawn. No z-buffer of the host is used: every depth test compares linear depths, so the
 // technique works alike under standard and reversed-Z.
-#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "ColorRampTexture.h"
 #include "DrawList.h"
-#include "GlStateGuard.h"
-#include "InstanceStream.h"
-#include "LightState.h"
-#include "QuarterResPath.h"
+#include "FrameSettings.h"
+#include "MegaPasses.h"
+#include "RendererConfig.h"
 #include "ShaderLoader.h"
 #include "fx/Diagnostic.h"
 #include "fx/HostAdapter.h"
 #include "fx/Plugin.h"
 
 namespace fx {
-
-class ApiErrors;
-
-/// Defaults: no host (nothing is logged, GL cannot be loaded), the embedded shaders, refused
-/// calls not counted.
-struct MegaRendererConfig {
-    HostAdapter* host = nullptr;
-    std::string shaderDir;        ///< empty = the shaders embedded in the library
-    ApiErrors* errors = nullptr;  ///< where SizeMismatch is reported (may be null)
-};
 
 class MegaRenderer {
 public:
@@ -87,21 +77,20 @@ public:
     static constexpr const char* kBlurHPass = "mega_blur_h";
     static constexpr const char* kBlurVPass = "mega_blur_v";
     static constexpr const char* kCompositePass = "mega_composite";
-    /// Relative depth difference at which a blur tap's weight has fallen to 1/e.
-    static constexpr float kDepthFalloff = 0.35f;
-    /// Optical depth of a sphere of alpha 1 along its diameter (fs_mega_spheres.glsl): coverage
-    /// 1 - exp(-1.25) = 0.71 through the middle of one opaque sphere, more where spheres overlap.
-    static constexpr float kDensity = 1.25f;
+    static constexpr float kDepthFalloff = MegaPasses::kDepthFalloff;
+    static constexpr float kDensity = MegaPasses::kDensity;
 
-    explicit MegaRenderer(MegaRendererConfig config);
+    /// `config.dataDir` is not used (mega draws no atlas).
+    explicit MegaRenderer(RendererConfig config);
     ~MegaRenderer();
     MegaRenderer(const MegaRenderer&) = delete;
     MegaRenderer& operator=(const MegaRenderer&) = delete;
 
-    /// Declares this view's Mega passes (none when no batch resolved to Mega is visible) and
-    /// returns how many particles they draw. `batches` must stay valid for this call only.
+    /// Declares this view's Mega passes (none when no batch resolved to Mega is visible) under
+    /// the frame's `settings` and returns how many particles they draw. `batches` must stay
+    /// valid for this call only.
     int declarePasses(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
-                      int batchCount, const RenderOptions& options, const LightState& light);
+                      int batchCount, const FrameSettings& settings);
 
     /// Builds the programs now (Plugin::prepareGl); false with the problems appended to `out`.
     bool prepare(Diagnostics* out);
@@ -114,51 +103,16 @@ public:
 
 private:
     enum class State { Unloaded, Ready, Failed };
-    struct Programs;
-    /// One view's recorded cloud, shared with the pass bodies until the host has run them.
-    struct ViewRecord {
-        ViewInfo view;
-        DrawList list;
-        MegaDesc mega;
-        LightingDesc lighting;
-        LightState light;
-        float softScale = 2.0f;  ///< 1 / render.softness of the first batch
-        float time = 0.0f;       ///< simulation clock of the first batch, s
-        QuarterResPath::ScreenRect rect;  ///< full-resolution pixels the spheres can touch
-    };
 
     bool ensureLoaded();
-    std::shared_ptr<ViewRecord> acquireRecord();
-    bool sizesAgree(PassContext& ctx, const ViewInfo& view, Target a, Target b);
-    void log(LogLevel level, const std::string& message) const;
-    /// Binds the renderer's framebuffer with `a` and `b` as colour attachments 0 and 1, sets
-    /// the viewport to `a`'s size and clears `a` to `clearA`, `b` to 0 (the whole targets).
-    void beginOwnTarget(PassContext& ctx, Target a, Target b, const float clearA[4]);
-    void endOwnTarget();
-    /// Scissor to the record's rect on a target of w x h (the view's size times `scale`) grown
-    /// by `border` texels; no scissor for a whole-view rect.
-    static void scissorTo(const ViewRecord& record, float scale, int border, int w, int h);
-    /// Blur extent of the record in spheres-target texels (taps each side, + 2).
-    static int blurBorder(const ViewRecord& record);
+    void log(LogLevel level, const std::string& message) const { logTo(config_, level, message); }
 
-    void runDepth(PassContext& ctx, const ViewRecord& r, Target sceneDepth, Target megaDepth);
-    void runSpheres(PassContext& ctx, const ViewRecord& r, Target megaDepth, Target color, Target density);
-    void runBlur(PassContext& ctx, const ViewRecord& r, Target inColor, Target inDensity, Target outColor,
-                 Target outSecond, bool shade);
-    void runComposite(PassContext& ctx, const ViewRecord& r, Target cloud, Target cloudDepth, Target sceneDepth,
-                      Target sceneColor);
-
-    MegaRendererConfig config_;
+    RendererConfig config_;
     State state_ = State::Unloaded;
     Diagnostics loadDiagnostics_;
-    std::unique_ptr<Programs> programs_;
-    ColorRampTexture ramp_;
-    InstanceStream stream_;
-    uint32_t fbo_ = 0, emptyVao_ = 0;
-    NearestSampler hostDepth_;  ///< the host's scene depth, read whatever sampling it set
+    MegaPasses passes_;
     DrawListBuilder builder_;
-    std::vector<std::shared_ptr<ViewRecord>> records_;
-    std::vector<const std::vector<ColorStop>*> rampInputs_;
+    std::vector<std::shared_ptr<MegaCloud>> records_;
 };
 
 }  // namespace fx

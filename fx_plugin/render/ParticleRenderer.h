@@ -1,7 +1,11 @@
 #pragma once
 // The particle renderer behind PluginImpl's render hook: per view it records what is visible
-// (DrawList: culled, sorted, packed instances) and declares its passes through the host's
-// FrameBuilder; the pass bodies upload the instances and draw when the host executes them.
+// (DrawList: culled, sorted, packed instances) and hands the view to one rendering path, which
+// declares its passes through the host's FrameBuilder; the pass bodies upload the instances and
+// draw (ParticleDraw) when the host executes them. The paths: FullResPath, QuarterResPath (depth-
+// aware or mixed), and SmokeOpacityMap's pass for lit smoke; MegaRenderer and StatelessRenderer
+// draw their techniques beside it. How the frame is drawn (shape, quarter res and its edges,
+// fade classification, the light) comes in one FrameSettings value per declarePasses.
 //
 // Passes (names are data: they show in the host's pass list, debug groups and timings):
 //   nothing at all when no particle is visible in the view (the host allocates nothing);
@@ -22,28 +26,28 @@
 // from inside the library, or from Config::shaderDir / Config::dataDir when set. Every shader
 // compile/link error and a missing atlas is reported through HostAdapter::log as
 // "file:line: message" (and as Diagnostics by prepare()); a technique whose program failed is
-// not drawn, a missing atlas draws nothing, a failed quarter-res program falls back to full res. Every GL call runs inside a GlStateGuard, so the
-// host's GL state after each pass (and after loading) equals the state before.
+// not drawn, a missing atlas draws nothing, a failed quarter-res program falls back to full res.
+// Every GL call runs inside a GlStateGuard, so the host's GL state after each pass (and after
+// loading) equals the state before.
 // Destroy the renderer with its GL context current (it deletes its GL objects).
 //
 // Depth testing: hard particles at full res test the host's z-buffer (no writes; LEQUAL, or
-// GEQUAL when ViewInfo::depth is ReversedZ), the legacy look. Soft and spherical particles do not: they compare linear depths in the shader,
-// which stays exact at near 0.01 / far 100 km where a 24-bit z-buffer cannot resolve 100 m at
-// 10 km, and a spherical particle's front may be visible where its quad is behind geometry.
+// GEQUAL when ViewInfo::depth is ReversedZ), the legacy look. Soft and spherical particles do
+// not: they compare linear depths in the shader, which stays exact at near 0.01 / far 100 km
+// where a 24-bit z-buffer cannot resolve 100 m at 10 km, and a spherical particle's front may be
+// visible where its quad is behind geometry.
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "ColorRampTexture.h"
 #include "DrawList.h"
-#include "FadeClassifier.h"
-#include "GlStateGuard.h"
-#include "InstanceStream.h"
-#include "ParticlePrograms.h"
-#include "LightState.h"
+#include "FrameSettings.h"
+#include "FullResPath.h"
+#include "ParticleDraw.h"
 #include "QuarterResPath.h"
-#include "SmokeAtlas.h"
+#include "RendererConfig.h"
 #include "ShaderLoader.h"
 #include "SmokeOpacityMap.h"
 #include "fx/Diagnostic.h"
@@ -52,37 +56,30 @@
 
 namespace fx {
 
-class ApiErrors;
-
-/// Defaults: no host (nothing is logged, and GL cannot be loaded), shaders and atlas embedded in
-/// the library, refused calls not counted.
-struct ParticleRendererConfig {
-    HostAdapter* host = nullptr;
-    std::string shaderDir;  ///< empty = the shaders embedded in the library
-    std::string dataDir;    ///< empty = the atlas embedded in the library
-    ApiErrors* errors = nullptr;  ///< where SizeMismatch is reported (may be null)
-};
-
 class ParticleRenderer {
 public:
-    static constexpr const char* kFullResPass = "particles";
+    static constexpr const char* kFullResPass = FullResPath::kPass;
     enum class State { Unloaded, Ready, Failed };
 
-    explicit ParticleRenderer(ParticleRendererConfig config);
+    explicit ParticleRenderer(RendererConfig config);
     ~ParticleRenderer();
     ParticleRenderer(const ParticleRenderer&) = delete;
     ParticleRenderer& operator=(const ParticleRenderer&) = delete;
 
-    /// Declares this view's particle passes (or none) and returns how many particles they draw.
-    /// `batches` must stay valid for this call only (instances are copied out).
+    /// Declares this view's particle passes (or none) under the frame's `settings` and returns
+    /// how many particles they draw. `batches` must stay valid for this call only (instances are
+    /// copied out).
     int declarePasses(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
-                      int batchCount, const RenderOptions& options);
+                      int batchCount, const FrameSettings& settings);
 
-    /// Loads GL resources now (Plugin::prepareGl), and the soft programs of the contrast powers
-    /// in `powerSteps` (2 contrast_power each: those the loaded reactions draw with). True when
-    /// everything built; otherwise false with every problem appended to `out` (the technique
-    /// that did build still draws). Each distinct "file:line: message" is logged once.
-    bool prepare(Diagnostics* out, const std::vector<int>& powerSteps = {});
+    /// Loads GL resources now (Plugin::prepareGl) and builds every program the options can reach
+    /// (ProgramCache::techniqueKeys; with `classify`, the fade classifier and its classified
+    /// builds) and the soft programs of the contrast powers in `powerSteps` (2 contrast_power
+    /// each: those the loaded reactions draw with). Called again after options or reactions
+    /// change, it builds only what is missing. True when everything built; otherwise false with
+    /// every problem appended to `out` (the technique that did build still draws). Each distinct
+    /// "file:line: message" is logged once.
+    bool prepare(Diagnostics* out, const std::vector<int>& powerSteps = {}, bool classify = false);
 
     /// Another renderer's part of a shader reload: builds its programs from the folder's current
     /// files, adds every failure to the log, and returns what makes them live (empty: nothing to
@@ -97,106 +94,49 @@ public:
     /// current.
     bool reloadShaders(Diagnostics* out, const std::vector<ShaderRebuild>& others = {});
 
-    /// The scene light (Plugin::setSceneLight) from the next declarePasses on.
-    void setLight(const LightState& light) { light_ = light; }
-    /// Plugin::declareShadowPasses: with the light on and shadow casters alive, declares the
+    /// Plugin::declareShadowPasses: with `light` on and shadow casters alive, declares the
     /// opacity map's pass and returns its target; the next declarePasses reuses it.
     SmokeShadow declareShadowPasses(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
-                                    int batchCount);
+                                    int batchCount, const LightState& light);
 
-    /// Trimmed polygons or full quads for billboards, from the next declarePasses on.
-    void setParticleShape(ParticleShape shape) { shape_ = shape; }
-    /// Quarter res: depth-aware upsample everywhere, or mixed resolution (the edge pixels redrawn
-    /// at full res, QuarterResPath.h), from the next declarePasses on.
-    void setQuarterResEdges(QuarterResEdges edges) { edges_ = edges; }
-    /// Fade classification at full res (FadeClassifier.h) and its counting, from the next
-    /// declarePasses on.
-    void setFadeClassification(bool classify, bool count) {
-        classify_ = classify;
-        countClasses_ = count;
-    }
     /// The classes counted by the last full-res pass that ran with counting on.
-    FadeClassCounts fadeClassCounts() const { return counts_; }
+    FadeClassCounts fadeClassCounts() const { return fullRes_.counts(); }
 
     State state() const { return state_; }
     const std::string& shaderDir() const { return config_.shaderDir; }
-    const InstanceStream& instanceStream() const { return stream_; }
+    const InstanceStream& instanceStream() const { return draw_.stream(); }
 
 private:
-    /// Texture units of the particle draws (all below GlStateGuard::kTextureUnits).
-    static constexpr int kAtlasUnit = 0, kRampUnit = 1, kSceneDepthUnit = 2, kOpacityUnit = 3;
-
-    /// One view's recorded draw, shared with the pass bodies until the host has run them.
-    struct ViewRecord {
-        ViewInfo view;
-        DrawList list;
-        ParticleShape shape = ParticleShape::Trimmed;
-        QuarterResPath::ScreenRect rect;  ///< quarter res: where the particles can be
-        QuarterResPath::ScreenTiles tiles;  ///< quarter res: the same, as screen tiles
-        bool lit = false;                 ///< the scene light is on
-        Target opacity;                   ///< the opacity map of this frame (invalid: unshadowed)
-        glm::mat4 worldToShadow{1.0f};
-    };
-
     bool ensureLoaded();
-    uint64_t shaderStamp() const;
-    /// True when `first` (and `second`, if valid: both targets this pass declared, sceneColor or
-    /// sceneDepth) have the view's size; logs SizeMismatch if not.
-    bool sizesAgree(PassContext& ctx, const ViewInfo& view, Target first, Target second);
-    std::shared_ptr<ViewRecord> acquireRecord();
-    void log(LogLevel level, const std::string& message) const;
+    void log(LogLevel level, const std::string& message) const { logTo(config_, level, message); }
     /// Logs the build lines of `errors` not logged before (each once, loadErrors_) and keeps them
     /// as diagnostics for prepare().
     void reportLoadErrors(const std::vector<std::string>& errors);
-    /// Draws every batch of `record` into the bound target. `sceneDepth` is the linear depth
-    /// texture of that target's size (0 when no batch needs it).
-    /// `halfZ`: the bound target's own z-buffer was filled (the half-res z-test, or the mixed-res
-    /// edge mask): z-test every batch (GEQUAL, LEQUAL under standard depth).
-    /// `tiles`, `coarse`: the fade classifier's tile textures (0: soft and spherical particles
-    /// drawn unclassified).
-    void drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes, bool halfZ = false,
-                     uint32_t opacity = 0, uint32_t tiles = 0, uint32_t coarse = 0);
-    /// Builds the fade classifier on first use; false (logged once) when it does not build.
-    bool ensureClassifier();
-    /// Sets the FX_LIT uniforms of `p` for `batch` (the program is in use).
-    void setLightUniforms(const ParticleProgram& p, const DrawBatch& batch, const ViewRecord& record,
-                          uint32_t opacity) const;
+    /// Builds the programs `record`'s batches draw with that prepare() has not built (options or
+    /// reactions changed since without another prepareGl): before any pass, never inside one.
+    void ensureDrawPrograms(const ParticleView& record, bool quarterRes, bool classified);
     /// Loads the renderer if needed, records the casters and declares the opacity pass.
     SmokeShadow declareOpacityPass(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
-                                   int batchCount);
-    void setRampRows(const ParticleBatch* batches, int batchCount);
+                                   int batchCount, const LightState& light);
 
-    ParticleRendererConfig config_;
+    RendererConfig config_;
     State state_ = State::Unloaded;
-    ParticleShape shape_ = ParticleShape::Trimmed;
-    QuarterResEdges edges_ = QuarterResEdges::DepthAware;
-    bool classify_ = false;
-    bool countClasses_ = false;
-    bool classifierFailed_ = false;
-    std::unique_ptr<FadeClassifier> classifier_;  ///< built on first use
-    FadeClassCounts counts_;
-    std::vector<glm::vec4> shapeTable_;  ///< atlas_.shapes().packed(), uploaded per draw
-    std::vector<glm::vec4> discTable_;   ///< the same for spheres (TrimmedShapes::Clip::Disc)
-    std::vector<glm::vec4> discInfo_;    ///< and their (inradius, area share)
+    ParticleDraw draw_;
+    FullResPath fullRes_;
+    QuarterResPath quarter_;
+    // Owned through a pointer so a shader reload can build a new one beside it and swap.
+    std::unique_ptr<SmokeOpacityMap> opacity_ = std::make_unique<SmokeOpacityMap>();
     bool quarterFallbackLogged_ = false;
+    bool frameBuildLogged_ = false;            ///< ensureDrawPrograms' warning, once
+    std::vector<ProgramCache::Key> drawKeys_;  ///< ensureDrawPrograms' scratch, kept for its capacity
     Diagnostics loadDiagnostics_;  ///< what went wrong while loading (prepare() hands them out)
     ShaderErrorLog loadErrors_;    ///< the build lines already logged while loading (each once)
     ShaderReader sources_;         ///< the running programs' files (a snapshot), for later builds
-    SmokeAtlas atlas_;
-    ColorRampTexture ramp_;
-    InstanceStream stream_;
-    NearestSampler depthSampler_;  ///< the scene depth's unit, whatever sampling the host set
-    // Owned through pointers so a shader reload can build new ones beside them and swap.
-    std::unique_ptr<ParticlePrograms> programs_ = std::make_unique<ParticlePrograms>();
-    std::unique_ptr<QuarterResPath> quarter_ = std::make_unique<QuarterResPath>();
-    std::unique_ptr<SmokeOpacityMap> opacity_ = std::make_unique<SmokeOpacityMap>();
-    LightState light_;
     SmokeShadow pendingShadow_;  ///< declared by declareShadowPasses, taken by the next declarePasses
     bool normalsWarned_ = false;
     uint64_t shaderStamp_ = 0;  ///< shaderStamp() when the running programs were built
     DrawListBuilder builder_;
-    std::vector<std::shared_ptr<ViewRecord>> records_;
-    std::vector<const std::vector<ColorStop>*> rampInputs_;
+    std::vector<std::shared_ptr<ParticleView>> records_;
 };
 
 }  // namespace fx

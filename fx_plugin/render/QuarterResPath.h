@@ -1,7 +1,7 @@
 #pragma once
 // Quarter-resolution particles (RenderOptions::quarterRes; the thesis's fourth row of Table 1):
 // particles are drawn into a half-width x half-height RGBA16F target (premultiplied), then
-// composited onto sceneColor. Three passes, each declared through FrameBuilder:
+// composited onto sceneColor. Three passes, each declared through FrameBuilder (declare()):
 //   particles_depth_downsample  reads sceneDepth                   writes particles_half_depth
 //   particles_quarter           reads particles_half_depth         writes particles_half_color
 //   particles_composite         reads half colour + half depth + sceneDepth, writes sceneColor
@@ -87,14 +87,16 @@
 // quarter of the fragments): smaller triangles fill more partial 4x4 blocks, and blending into
 // RGBA16F is dearer than RGBA8 on a CPU rasteriser (RGBA8 measured 15 % faster, 52.0 -> 51.7 dB;
 // not taken, the 8-bit accumulation costs precision where many puffs overlap).
-#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "ParticleDraw.h"
+#include "QuarterResPrograms.h"
+#include "RendererConfig.h"
+#include "ScreenTiles.h"
 #include "fx/HostAdapter.h"
 #include "fx/Types.h"
-#include "GlStateGuard.h"
-#include "InstanceStream.h"
 
 namespace fx {
 
@@ -119,105 +121,49 @@ public:
     /// Mixed resolution: full size, RGBA16F, nearest filtering, with its own z-buffer (the mask).
     static TargetDesc edgeTargetDesc();
 
-    QuarterResPath() = default;
-    ~QuarterResPath();
+    QuarterResPath(ParticleDraw& draw, SizeMismatchReport sizeMismatch);
     QuarterResPath(const QuarterResPath&) = delete;
     QuarterResPath& operator=(const QuarterResPath&) = delete;
 
-    /// Builds the downsample and composite programs; failures go to *errors.
-    void build(const std::string& shaderDir, std::vector<std::string>* errors);
-    bool ok() const {
-        return downsample_ && composite_[0].program && composite_[1].program && composite_[2].program && tileVao_;
+    /// The running programs (QuarterResPrograms::build); a shader reload swaps in a new set and
+    /// gets the old one back.
+    QuarterResPrograms& programs() { return *programs_; }
+    std::unique_ptr<QuarterResPrograms> swapPrograms(std::unique_ptr<QuarterResPrograms> next) {
+        programs_.swap(next);
+        return next;
     }
-    /// The half-res z-test's program built (without it the quarter pass is simply not z-tested).
-    bool halfZOk() const { return halfZ_ != 0; }
-    /// The edge mask program built (without it mixed resolution falls back to depth-aware).
-    bool mixedOk() const { return edgeMask_ != 0; }
+    /// The programs quarter res needs built (else the particles are drawn at full res).
+    bool ok() const { return programs_ && programs_->ok(); }
 
-    /// The part of the view the particles can touch, in full-resolution pixels ([x0, x1) x
-    /// [y0, y1), GL's bottom-up rows); `whole` when it is the whole view (a particle reaches the
-    /// near plane, or the bound covers it anyway).
-    struct ScreenRect {
-        int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-        bool whole = true;
-    };
-    /// Finer than the rect: the screen tiles (kTileSize pixels square) that some particle's bound,
-    /// grown by kTileBorder pixels, touches, as horizontal runs. The downsample, the half-res
-    /// z-fill, the edge mask and the composite draw these runs instead of one triangle over the
-    /// rect, so their per-pixel cost follows the smoke's footprint: in fxbench's standard scene
-    /// the rect spans about 70 % of the view while the smoke covers about 24 %.
-    /// The border: the composite's bilinear footprint reaches 2 pixels, the half-res texels it reads
-    /// hold depth from 2 more; 6 keeps every pixel whose result can differ from "no smoke" inside.
-    static constexpr int kTileSize = 16;
-    static constexpr int kTileBorder = 6;
-    struct ScreenTiles {
-        std::vector<float> vertices;  ///< x, y in full-resolution pixels, 6 per run (2 triangles)
-        std::vector<uint8_t> grid;    ///< scratch: tiles marked this frame (kept for its capacity)
-        int64_t pixels = 0;           ///< pixels the runs cover
-        int viewWidth = 0, viewHeight = 0;
-        int runs() const { return int(vertices.size() / 12); }
-    };
-    /// What a particle's footprint is bounded by. Box: the view-space cube of half-size 0.71 size
-    /// around its centre (holds a rotated billboard's corners and a sphere of diameter size,
-    /// which a spherical particle's quad at the sphere's front covers). Billboard: the square of
-    /// half-size 0.71 size in the view plane through the centre, exactly where vs_particles.glsl
-    /// puts a billboard's corners; much tighter for large particles near the camera.
-    enum class Footprint { Box, Billboard };
-    /// Conservative bound of `instances` on screen, each particle's footprint projected. Empty
-    /// rect (x0 == x1) when none is in front of the camera (one wholly behind the near plane is
-    /// clipped away and counts for nothing); the whole view when one straddles the near plane or
-    /// has a non-finite position or size. With `tiles`, also their tile runs (one run over the whole view for a
-    /// whole-view rect, none for an empty one); the vectors keep their capacity, so a steady
-    /// frame allocates nothing.
-    static ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, int count,
-                                 ScreenTiles* tiles = nullptr, Footprint footprint = Footprint::Box);
+    /// Declares the view's quarter-res passes (and the edge pass under mixed resolution, unless
+    /// the bilinear upsample is asked for or the mask did not build); fills the view's rect and
+    /// tiles.
+    void declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& view);
 
+private:
     // Pass bodies; each runs inside the caller's GlStateGuard and sets the state it needs. All
-    // work inside `rect` only (scissor, with a 2-texel border at half resolution): the clears
-    // cover the rect, the full-screen work (downsample, half-res z-fill, edge mask, composite)
-    // only `tiles`, so the fixed costs follow the smoke's footprint instead of the screen.
-    void downsampleDepth(PassContext& ctx, Target sceneDepth, Target halfDepth, const ScreenRect& rect,
-                         const ScreenTiles& tiles);
+    // work inside the view's rect only (scissor, with a 2-texel border at half resolution): the
+    // clears cover the rect, the full-screen work (downsample, half-res z-fill, edge mask,
+    // composite) only its tiles, so the fixed costs follow the smoke's footprint.
+    void downsampleDepth(PassContext& ctx, const ParticleView& v, Target sceneDepth, Target halfDepth);
     /// Binds the half-res colour target and clears it (within the rect) to transparent black.
-    /// With `zView` (a reversed-Z view; halfColor made with a z-buffer, halfDepth downsampled):
+    /// With `halfDepth` (a reversed-Z view; halfColor made with a z-buffer, halfDepth downsampled):
     /// also fills that z-buffer with the farthest scene depth of each 2x2 block (halfDepth's
     /// green, fs_particles_half_z.glsl) and leaves the depth test on, GEQUAL without writes, so
     /// the half-res particles skip what is hidden behind all four pixels. True when that was done.
-    bool beginQuarter(PassContext& ctx, Target halfColor, const ScreenRect& rect, const ScreenTiles& tiles,
-                      Target halfDepth = Target{}, const ViewInfo* zView = nullptr);
+    bool beginQuarter(PassContext& ctx, const ParticleView& v, Target halfColor, Target halfDepth);
     /// Mixed resolution: binds the full-res edge target, clears its colour (within the rect) to
     /// transparent black and writes the edge mask into its z-buffer (fs_particles_edge_mask.glsl),
     /// then leaves the depth test on without writes, in the view's convention (LEQUAL, GEQUAL
     /// under reversed-Z), so particles drawn next pass it on edge pixels only.
-    void beginEdges(PassContext& ctx, Target edgeColor, Target halfDepth, Target sceneDepth, const ScreenRect& rect,
-                    const ScreenTiles& tiles, const ViewInfo& view);
+    void beginEdges(PassContext& ctx, const ParticleView& v, Target edgeColor, Target halfDepth, Target sceneDepth);
     /// `edgeColor` valid: mixed resolution (edge pixels from it, the rest bilinear).
-    void composite(PassContext& ctx, Target sceneColor, Target halfColor, Target halfDepth,
-                   Target sceneDepth, bool bilinear, const ScreenRect& rect, const ScreenTiles& tiles,
-                   Target edgeColor = Target{});
+    void composite(PassContext& ctx, const ParticleView& v, Target sceneColor, Target halfColor, Target halfDepth,
+                   Target sceneDepth, Target edgeColor);
 
-private:
-    /// Draws `tiles`' runs with the bound program (its uViewSize at `viewSizeLoc`), the vertices
-    /// uploaded to this path's own stream buffer.
-    void drawTiles(int viewSizeLoc, const ScreenTiles& tiles);
-
-    NearestSampler hostDepth_;  ///< the host's scene depth, read whatever sampling it set
-    uint32_t halfZ_ = 0;
-    int halfZDepthLoc_ = -1, halfZFromLinearLoc_ = -1, halfZFarLoc_ = -1;
-    uint32_t downsample_ = 0;
-    /// The composite's builds: depth-aware, plain bilinear, mixed resolution.
-    enum CompositeVariant { DepthAware, Bilinear, Mixed, CompositeVariantCount };
-    struct CompositeProgram {
-        uint32_t program = 0;
-        int halfColor = -1, halfDepth = -1, sceneDepth = -1, threshold = -1, edgeColor = -1, viewSize = -1;
-    };
-    CompositeProgram composite_[CompositeVariantCount];
-    uint32_t tileVao_ = 0, tileVbo_ = 0;
-    int downsampleViewLoc_ = -1, halfZViewLoc_ = -1, maskViewLoc_ = -1;
-    int downsampleDepthLoc_ = -1;
-    uint32_t edgeMask_ = 0;
-    int maskHalfDepthLoc_ = -1, maskSceneDepthLoc_ = -1, maskThresholdLoc_ = -1, maskPassLoc_ = -1,
-        maskFailLoc_ = -1;
+    ParticleDraw& draw_;
+    SizeMismatchReport sizeMismatch_;
+    std::unique_ptr<QuarterResPrograms> programs_ = std::make_unique<QuarterResPrograms>();
 };
 
 }  // namespace fx

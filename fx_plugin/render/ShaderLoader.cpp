@@ -115,6 +115,22 @@ std::string ShaderErrorLog::text() const {
     return all;
 }
 
+namespace {
+ProgramBuildCounts gCounts;
+int gFrameDepth = 0, gPassDepth = 0;
+}  // namespace
+
+ProgramBuildCounts programBuildCounts() { return gCounts; }
+
+FrameScope::FrameScope(Kind kind) : kind_(kind) {
+    ++gFrameDepth;
+    if (kind_ == Pass) ++gPassDepth;
+}
+FrameScope::~FrameScope() {
+    --gFrameDepth;
+    if (kind_ == Pass) --gPassDepth;
+}
+
 uint32_t buildProgram(const std::string& dir, const std::string& vertexFile,
                       const std::string& fragmentFile, const std::string& defines,
                       std::string* error) {
@@ -124,6 +140,9 @@ uint32_t buildProgram(const std::string& dir, const std::string& vertexFile,
 uint32_t buildProgram(const ShaderReader& read, const std::string& vertexFile,
                       const std::string& fragmentFile, const std::string& defines,
                       std::string* error) {
+    ++gCounts.built;  // tried: a failing build costs the compile as well
+    if (gFrameDepth > 0) ++gCounts.inFrame;
+    if (gPassDepth > 0) ++gCounts.inPass;
     const GLuint vs = compileStage(GL_VERTEX_SHADER, read, vertexFile, defines, error);
     if (!vs) return 0;
     const GLuint fs = compileStage(GL_FRAGMENT_SHADER, read, fragmentFile, defines, error);

@@ -32,6 +32,33 @@ uint32_t buildProgram(const ShaderReader& read, const std::string& vertexFile,
                       const std::string& fragmentFile, const std::string& defines,
                       std::string* error);
 
+/// How many programs this process has built (each buildProgram call), how many of those while a
+/// frame was declared or ran (FrameScope open), and how many inside a pass. prepareGl and a
+/// shader reload build every program the reactions and options draw with: a host that calls
+/// prepareGl again after changing options or reactions sees inFrame stay put, and no pass ever
+/// compiles (ProgramCache.h). Tests read these; nothing else does.
+struct ProgramBuildCounts {
+    uint64_t built = 0;
+    uint64_t inFrame = 0;
+    uint64_t inPass = 0;
+};
+ProgramBuildCounts programBuildCounts();
+
+/// Marks a span of a frame for programBuildCounts: declaring passes (Plugin::declarePasses,
+/// declareShadowPasses), running one (`pass`: the C boundary's pass trampoline, the immediate
+/// path's passes). Nests; one thread, as the plugin.
+class FrameScope {
+public:
+    enum Kind { Declare, Pass };
+    explicit FrameScope(Kind kind);
+    ~FrameScope();
+    FrameScope(const FrameScope&) = delete;
+    FrameScope& operator=(const FrameScope&) = delete;
+
+private:
+    Kind kind_;
+};
+
 /// A reader that keeps the text of every file it gave out and gives the same text again on each
 /// later read of that name, whatever the file holds by then. A program set built through one
 /// snapshot, and any variant of it built later (a contrast power on first use), is built from

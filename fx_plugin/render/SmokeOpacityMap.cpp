@@ -6,6 +6,7 @@
 #include "render/PrivateGl.h"
 
 #include "ShaderLoader.h"
+#include "Uniforms.h"
 
 namespace fx {
 namespace {
@@ -30,14 +31,9 @@ void SmokeOpacityMap::build(const std::string& shaderDir, std::vector<std::strin
         errors->push_back(error);
         return;
     }
-    locView_ = glGetUniformLocation(program_, "uView");
-    locProj_ = glGetUniformLocation(program_, "uProj");
-    locRampRow_ = glGetUniformLocation(program_, "uRampRow");
-    locAtlas_ = glGetUniformLocation(program_, "uAtlas");
-    locRamp_ = glGetUniformLocation(program_, "uRamp");
-    locDepthRange_ = glGetUniformLocation(program_, "uDepthRange");
-    locTrimmed_ = glGetUniformLocation(program_, "uTrimmed");
-    locNear_ = glGetUniformLocation(program_, "uNear");
+    locateUniforms(program_, {{&locView_, "uView"}, {&locProj_, "uProj"}, {&locRampRow_, "uRampRow"},
+                              {&locAtlas_, "uAtlas"}, {&locRamp_, "uRamp"}, {&locDepthRange_, "uDepthRange"},
+                              {&locTrimmed_, "uTrimmed"}, {&locNear_, "uNear"}});
 }
 
 int SmokeOpacityMap::sizeFor(int viewWidth, int viewHeight) {

@@ -75,6 +75,11 @@ int StatelessRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
         slots += static_cast<int>(std::min<uint64_t>(ring.written(), uint64_t(ring.capacity())));
     }
     if (draws->empty()) return 0;
+    {
+        // Built by prepare() (prepareGl); for a host that skipped it, here, before any pass.
+        GlStateGuard guard;
+        if (!ensureProgram()) return 0;
+    }
     ViewInfo v = view;
     v.name = "";  // the host's string is not ours to keep
     const Target color = frame.sceneColor();
@@ -157,22 +162,17 @@ std::function<void()> StatelessRenderer::rebuildShaders(ShaderErrorLog* errors) 
 }
 
 void StatelessRenderer::draw(const ViewInfo& view, const std::vector<Draw>& draws) {
-    if (!ensureProgram()) return;
+    if (!gpu_ || !gpu_->program) return;  // declarePasses built it (a reload may have swapped it)
     Gpu& g = *gpu_;
     ++g.frame;
     glUseProgram(g.program);
     glUniformMatrix4fv(g.u.view, 1, GL_FALSE, &view.view[0][0]);
     glUniformMatrix4fv(g.u.proj, 1, GL_FALSE, &view.proj[0][0]);
+    plainDrawState();
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(view.depth == DepthConvention::ReversedZ ? GL_GEQUAL : GL_LEQUAL);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_SCISSOR_TEST);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    depthTestFor(view.depth);  // the hard technique's test, no depth writes
 
     for (const Draw& d : draws) {
         const StatelessRing& ring = *d.ring;

@@ -46,4 +46,12 @@ private:
     float near_, far_;
 };
 
+/// |x/depth| and |y/depth| slightly past the frustum edges, from a perspective projection (the
+/// particle vertex shaders' uSlopeMax).
+inline glm::vec2 frustumSlopes(const glm::mat4& proj) {
+    const float sx = (1.0f + std::fabs(proj[2][0])) / std::fmax(std::fabs(proj[0][0]), 1e-6f);
+    const float sy = (1.0f + std::fabs(proj[2][1])) / std::fmax(std::fabs(proj[1][1]), 1e-6f);
+    return glm::vec2(sx, sy) * 1.02f;
+}
+
 }  // namespace fx

@@ -295,9 +295,23 @@ void clearSceneLight(fxPlugin* p) {
 
 // ---- GL -------------------------------------------------------------------------------------------
 
+// The immediate path's renderer, made at its first use (prepareGl or renderView).
+ImmediateRenderer& immediate(fxPlugin* p) {
+    if (!p->immediate) {
+        p->immediate = std::make_unique<ImmediateRenderer>(&p->host, p->impl->shaderDir());
+        p->immediate->setApiErrors(&p->impl->apiErrors());
+    }
+    return *p->immediate;
+}
+
+
 fxBool prepareGl(fxPlugin* p, const fxDiagnosticSink* out) {
     if (!p) return 0;
-    return withDiagnostics(out, [&](Diagnostics* d) { return impl(p).prepareGl(d); });
+    return withDiagnostics(out, [&](Diagnostics* d) {
+        const bool ok = impl(p).prepareGl(d);
+        // The immediate path's own program too: the first renderView then compiles nothing.
+        return immediate(p).prepare(d) && ok;
+    });
 }
 fxBool pollShaderReload(fxPlugin* p, const fxDiagnosticSink* out) {
     if (!p) return 0;
@@ -378,11 +392,7 @@ int renderView(fxPlugin* p, const fxViewDesc* v) {
     const bool defaultRange = v->depthRangeNear == 0.0f && v->depthRangeFar == 0.0f;
     iv.mapping.rangeNear = defaultRange ? 0.0f : v->depthRangeNear;
     iv.mapping.rangeFar = defaultRange ? 1.0f : v->depthRangeFar;
-    if (!p->immediate) {
-        p->immediate = std::make_unique<ImmediateRenderer>(&p->host, p->impl->shaderDir());
-        p->immediate->setApiErrors(&p->impl->apiErrors());
-    }
-    return code(p->immediate->render(*p->impl, iv));
+    return code(immediate(p).render(*p->impl, iv));
 }
 
 void stats(const fxPlugin* p, fxStats* out) {

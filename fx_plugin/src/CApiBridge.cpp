@@ -2,6 +2,8 @@
 
 #include <memory>
 
+#include "../render/ShaderLoader.h"
+
 namespace fx {
 namespace {
 
@@ -19,6 +21,7 @@ using PassFn = std::function<void(PassContext&)>;
 
 void runPass(void* user, const fxPassContext* ctx) {
     CPassContext pass(*ctx);
+    FrameScope running(FrameScope::Pass);
     (*static_cast<PassFn*>(user))(pass);
 }
 void releasePass(void* user) { delete static_cast<PassFn*>(user); }

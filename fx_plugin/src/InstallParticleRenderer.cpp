@@ -37,7 +37,7 @@ std::vector<int> softPowerSteps(const PluginImpl& plugin) {
         if (r.stateless()) continue;
         const Technique t = override == Technique::FromReaction ? r.desc().render.technique : override;
         int whole = 0, half = 0;
-        if (t != Technique::Soft || !ParticlePrograms::halfWholePower(r.desc().render.contrastPower, &whole, &half)) {
+        if (t != Technique::Soft || !ProgramCache::halfWholePower(r.desc().render.contrastPower, &whole, &half)) {
             continue;
         }
         const int s = 2 * whole + half;
@@ -49,20 +49,19 @@ std::vector<int> softPowerSteps(const PluginImpl& plugin) {
 }  // namespace
 
 void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
-    ParticleRendererConfig config;
+    RendererConfig config;
     config.host = &plugin.host();
     config.shaderDir = plugin.shaderDir();
     config.dataDir = dataDir;
     config.errors = &plugin.apiErrors();
-    auto renderer = std::make_shared<ParticleRenderer>(std::move(config));
+    auto renderer = std::make_shared<ParticleRenderer>(config);
     auto batches = std::make_shared<std::vector<ParticleBatch>>();
     // Stateless reactions have empty pools (the particle renderer sees nothing of them): their
     // own pass follows the other particle passes.
     auto stateless = std::make_shared<StatelessRenderer>(&plugin.host(), plugin.shaderDir());
     // ---- mega-particles: batches resolved to Mega go to MegaRenderer (the billboard renderer
     // never counts Mega among its usable techniques, so it leaves them out) ----
-    auto mega = std::make_shared<MegaRenderer>(
-        MegaRendererConfig{&plugin.host(), plugin.shaderDir(), &plugin.apiErrors()});
+    auto mega = std::make_shared<MegaRenderer>(config);
     PluginImpl* owner = &plugin;  // the hook is owned by the plugin: it never outlives it
     plugin.setRenderHook([renderer, batches, stateless, mega, owner](const ViewInfo& view, FrameBuilder& frame,
                                                     const std::vector<ReactionRuntime>& runtimes,
@@ -71,21 +70,24 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
         for (const ReactionRuntime& r : runtimes) {
             batches->push_back(ParticleBatch{&r.pool(), &r.desc(), r.needsSorting(), float(r.time())});
         }
-        renderer->setParticleShape(owner->particleShape());
-        renderer->setQuarterResEdges(owner->quarterResEdges());
-        renderer->setFadeClassification(owner->fadeClassification() == FadeClassification::On,
-                                        owner->fadeClassCounting());
-        renderer->setLight(owner->light());
-        const int drawn = renderer->declarePasses(view, frame, batches->data(),
-                                                  static_cast<int>(batches->size()), options);
-        const int megaDrawn = mega->declarePasses(view, frame, batches->data(), static_cast<int>(batches->size()),
-                                                  options, owner->light());
+        // The plugin's switches, read once for this frame: every path draws with this value.
+        FrameSettings settings;
+        settings.options = options;
+        settings.shape = owner->particleShape();
+        settings.edges = owner->quarterResEdges();
+        settings.classify = owner->fadeClassification() == FadeClassification::On;
+        settings.countClasses = owner->fadeClassCounting();
+        settings.light = owner->light();
+        const int count = static_cast<int>(batches->size());
+        const int drawn = renderer->declarePasses(view, frame, batches->data(), count, settings);
+        const int megaDrawn = mega->declarePasses(view, frame, batches->data(), count, settings);
         owner->setParticlesDrawn(drawn + megaDrawn + stateless->declarePasses(view, frame, runtimes));
     });
     // Every program the loaded reactions and the options can draw with is built here (a broken
     // shader of any technique stops start-up), each technique's failures reported once.
     plugin.setPrepareHook([renderer, mega, stateless, owner](Diagnostics* out) {
-        bool ok = renderer->prepare(out, softPowerSteps(*owner));
+        const bool classify = owner->fadeClassification() == FadeClassification::On;
+        bool ok = renderer->prepare(out, softPowerSteps(*owner), classify);
         if (wantsMega(*owner)) ok = mega->prepare(out) && ok;
         if (wantsStateless(*owner)) ok = stateless->prepare(out) && ok;
         return ok;
@@ -96,8 +98,8 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
         for (const ReactionRuntime& r : runtimes) {
             batches->push_back(ParticleBatch{&r.pool(), &r.desc(), r.needsSorting(), float(r.time())});
         }
-        renderer->setLight(owner->light());
-        return renderer->declareShadowPasses(view, frame, batches->data(), static_cast<int>(batches->size()));
+        return renderer->declareShadowPasses(view, frame, batches->data(), static_cast<int>(batches->size()),
+                                             owner->light());
     });
     // One edit, one transaction over every technique's programs, one line.
     plugin.setShaderReloadHook([renderer, mega, stateless](Diagnostics* out) {

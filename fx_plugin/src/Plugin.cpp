@@ -6,6 +6,7 @@
 #include "PluginImpl.h"
 #include "../reactions/ReactionKeyTable.h"
 #include "../reactions/TechniqueTable.h"
+#include "../render/ShaderLoader.h"
 #include "InstallParticleRenderer.h"
 
 namespace fx {
@@ -261,6 +262,7 @@ SmokeShadow PluginImpl::declareShadowPasses(const ViewInfo& view, FrameBuilder& 
         return SmokeShadow{};
     }
     if (!light_.on || !shadowHook_) return SmokeShadow{};
+    FrameScope declaring(FrameScope::Declare);
     return shadowHook_(view, frame, runtimes_);
 }
 
@@ -271,6 +273,7 @@ ErrorCode PluginImpl::declarePasses(const ViewInfo& view, FrameBuilder& frame) {
         return errors_.refuse(ErrorCode::InvalidView, "declarePasses", bad);
     }
     // >>> The particle renderer (fx_plugin/render/) plugs in here, through setRenderHook(). <<<
+    FrameScope declaring(FrameScope::Declare);
     if (renderHook_) renderHook_(view, frame, runtimes_, options_);
     return ErrorCode::None;
 }

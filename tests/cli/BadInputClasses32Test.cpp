@@ -66,6 +66,12 @@ public:
         if (how == "syntax") text = original.substr(0, main) + "this is not glsl;\n" + original.substr(main);
         if (how == "include") text = original.substr(0, main) + "#include \"no_such_file.glsl\"\n" + original.substr(main);
         if (how == "version") text = original.substr(original.find('\n') + 1);
+        if (how == "power-branch") {  // inside the branch only the contrast powers' own builds compile
+            const std::string branch = "#ifdef FX_POWER_STEPS\n";
+            const size_t at = original.find(branch);
+            EXPECT_NE(at, std::string::npos) << file;
+            text = original.substr(0, at + branch.size()) + "this is not glsl;\n" + original.substr(at + branch.size());
+        }
         if (how == "garbage") text = std::string("\x7f" "ELF\x02\x01\x01\xff\xfe\x01 garbage\n") + original;
         std::ofstream(dir + "/" + file, std::ios::binary | std::ios::trunc) << text;
         return dir;
@@ -111,6 +117,9 @@ TEST(BadInputClasses32, ShadersOfEveryTechniqueFailStartUpOnce) {
         {"fs_particles_hard.glsl", "include", "--mode hard", "fs_particles_hard.glsl"},
         {"fs_particles_spherical.glsl", "syntax", "--mode spherical", "fs_particles_spherical.glsl"},
         {"particles_common.glsl", "syntax", "", "particles_common.glsl"},
+        // Issue 31: an error that only one variant's #if branch holds (the reactions' contrast
+        // powers, ProgramCache::Key::powerSteps) stops start-up too, not the first frame with smoke.
+        {"particles_common.glsl", "power-branch", "", "particles_common.glsl"},
     };
     for (const auto& c : cases) {
         const std::string what = std::string(c.file) + " " + c.how + " " + c.args;

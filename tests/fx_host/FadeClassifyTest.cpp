@@ -13,7 +13,8 @@ namespace {
 class FadeClassifyTest : public FxHostTest {
 protected:
     Image draw(TestFrameGraph& graph, TestScene& scene, const fx::ViewInfo& view, bool classify) {
-        direct.renderer.setFadeClassification(classify, true);
+        direct.settings.classify = classify;
+        direct.settings.countClasses = true;
         renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = direct.declare(view, f); });
         return graph.readColor();
     }
@@ -50,7 +51,7 @@ TEST_F(FadeClassifyTest, ClassesOfHandPlacedParticlesAndTheImageIsUnchanged) {
         fx::ViewInfo view = makeView(glm::vec3(0.0f, 1.5f, 5.0f), glm::vec3(0.0f, 1.5f, 0.0f), kW, kH);
         if (reversed) useReversedZ(&view);
         for (const fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical}) {
-            direct.options.techniqueOverride = t;
+            direct.settings.options.techniqueOverride = t;
             const std::string label = std::string(t == fx::Technique::Soft ? "soft" : "spherical") +
                                       (reversed ? ", reversed-Z" : ", standard depth");
             const Image plain = draw(graph, scene, view, false);
@@ -81,7 +82,7 @@ TEST_F(FadeClassifyTest, ExtremeClipPlanesKeepTheImageAndTheClasses) {
     constexpr float kDistance = 10000.0f;
     direct.desc.render.softness = 1.0f;
     direct.desc.render.contrastPower = 1.5f;
-    direct.options.techniqueOverride = fx::Technique::Soft;
+    direct.settings.options.techniqueOverride = fx::Technique::Soft;
     direct.set({HandParticle{glm::vec3(0.0f, 0.0f, -kDistance), 2000.0f}});
     for (const bool reversed : {false, true}) {
         TestFrameGraph graph(kW, kH, reversed);

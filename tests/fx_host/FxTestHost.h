@@ -302,7 +302,7 @@ public:
     int declare(const fx::ViewInfo& view, fx::FrameBuilder& frame);
 
     fx::ReactionDesc desc;
-    fx::RenderOptions options;
+    fx::FrameSettings settings;  ///< what the plugin's hook reads from its switches once a frame
     fx::ParticleRenderer renderer;
     fx::ParticlePool pool;
 };

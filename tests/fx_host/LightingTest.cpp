@@ -79,7 +79,7 @@ Halves halves(const Image& img, int cx) {
 class LightingTest : public FxHostTest {
 protected:
     Image draw(const fx::LightState* light) {
-        direct.renderer.setLight(light ? *light : fx::LightState{});
+        direct.settings.light = light ? *light : fx::LightState{};
         renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = direct.declare(view, f); });
         return graph.readColor();
     }
@@ -112,7 +112,7 @@ TEST_F(LightingTest, TheSunsSideOfAParticleIsBrighterAndAmbientAloneIsEven) {
     const int cx = int(std::lround(projectToPixel(view, p.position).x));
     const glm::vec3 white(1.0f), grey(0.25f);
     for (fx::Technique t : {fx::Technique::Hard, fx::Technique::Soft, fx::Technique::Spherical}) {
-        direct.options.techniqueOverride = t;
+        direct.settings.options.techniqueOverride = t;
         const Image unlit = draw(nullptr);
         ASSERT_EQ(drawn, 1);
         const fx::LightState fromLeft = sun(glm::vec3(-1.0f, 0.1f, 0.25f), white, grey);
@@ -158,7 +158,7 @@ TEST_F(LightingTest, AThickCloudShadowsItsFarSide) {
                 cloud.push_back(p);
             }
     direct.set(cloud);
-    direct.options.techniqueOverride = fx::Technique::Soft;
+    direct.settings.options.techniqueOverride = fx::Technique::Soft;
     const fx::LightState light = sun(glm::vec3(1.0f, 0.15f, 0.0f), glm::vec3(1.0f), glm::vec3(0.3f));
     const int cx = int(std::lround(projectToPixel(view, glm::vec3(0, 1, 0)).x));
     direct.desc.lighting.absorption = 0.0f;
@@ -178,6 +178,30 @@ TEST_F(LightingTest, AThickCloudShadowsItsFarSide) {
     // Still frame, paused: the same bytes.
     const Image again = draw(&light);
     EXPECT_EQ(maxAbsDiff(again, shadowed), 0);
+}
+
+// FrameSettings: the switches are read once, when a view's passes are declared. A caller that
+// changes them before the graph runs those passes changes the next frame, not this one.
+TEST_F(LightingTest, PendingPassesDrawWithTheSettingsTheirViewWasDeclaredWith) {
+    scene.sky = glm::vec3(0.0f);
+    direct.desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(0.8f, 0.8f, 0.8f, 0.9f)}};
+    HandParticle p;
+    p.position = glm::vec3(0, 1, 0);
+    p.size = 2.5f;
+    direct.set({p});
+    direct.settings.options.techniqueOverride = fx::Technique::Soft;
+    const fx::LightState fromLeft = sun(glm::vec3(-1.0f, 0.1f, 0.25f), glm::vec3(1.0f), glm::vec3(0.25f));
+    const fx::LightState fromRight = sun(glm::vec3(1.0f, 0.1f, 0.25f), glm::vec3(1.0f), glm::vec3(0.25f));
+    const Image left = draw(&fromLeft);
+    const Image right = draw(&fromRight);
+    ASSERT_EQ(drawn, 1);
+    ASSERT_GT(maxAbsDiff(left, right), 0) << "the light's side must show, or this tells nothing";
+    direct.settings.light = fromLeft;
+    renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) {
+        drawn = direct.declare(view, f);
+        direct.settings.light = fromRight;  // after declaring, before the passes run
+    });
+    EXPECT_EQ(maxAbsDiff(graph.readColor(), left), 0);
 }
 
 }  // namespace

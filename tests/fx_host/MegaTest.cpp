@@ -46,7 +46,9 @@ protected:
             batch.desc = &direct.desc;
             batch.sortBackToFront = true;
             batch.time = time;
-            drawn = mega.declarePasses(view, f, &batch, 1, options, light);
+            fx::FrameSettings settings;
+            settings.light = light;
+            drawn = mega.declarePasses(view, f, &batch, 1, settings);
         });
         return graph.readColor();
     }
@@ -66,8 +68,7 @@ protected:
 
     TestHostAdapter host;
     DirectParticles direct{&host};
-    fx::MegaRenderer mega{fx::MegaRendererConfig{&host, "", nullptr}};
-    fx::RenderOptions options;
+    fx::MegaRenderer mega{fx::RendererConfig{&host, "", "", nullptr}};
     fx::LightState light;
     float time = 1.25f;
     int drawn = 0;

@@ -30,8 +30,8 @@ TEST_F(MixedResTest, EdgePixelsMatchFullResAndTheRestMatchesDepthAware) {
         const fx::ViewInfo& view = edge.view;
         TestFrameGraph graph(kW, kH, reversed);
         auto frame = [&](bool quarter, fx::QuarterResEdges edges) {
-            direct.options.quarterRes = quarter;
-            direct.renderer.setQuarterResEdges(edges);
+            direct.settings.options.quarterRes = quarter;
+            direct.settings.edges = edges;
             renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { direct.declare(view, f); });
             return graph.readColor();
         };

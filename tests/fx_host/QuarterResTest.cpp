@@ -63,8 +63,8 @@ TEST_F(QuarterResTest, DepthAwareUpsampleBeatsBilinearNextToDepthEdges) {
     const fx::ViewInfo& view = edge.view;
     TestFrameGraph graph(kW, kH);
     auto frame = [&](bool quarter, bool bilinear) {
-        direct.options.quarterRes = quarter;
-        direct.options.bilinearUpsample = bilinear;
+        direct.settings.options.quarterRes = quarter;
+        direct.settings.options.bilinearUpsample = bilinear;
         renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { direct.declare(view, f); });
         return graph.readColor();
     };

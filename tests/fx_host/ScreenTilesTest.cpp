@@ -1,4 +1,4 @@
-// QuarterResPath::screenRect's tile runs (the cover the quarter-res downsample, half-res z-fill,
+// ScreenTiles.h: screenRect's tile runs (the cover the quarter-res downsample, half-res z-fill,
 // edge mask and composite are drawn on): they must hold every pixel a particle can change plus
 // the upsample's reach, stay inside the view, never overlap, and leave smoke-free tiles out.
 // CPU only: no GL context.
@@ -11,7 +11,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/QuarterResPath.h"
+#include "render/ScreenTiles.h"
 
 namespace fx {
 namespace {
@@ -32,7 +32,7 @@ ViewInfo testView() {
 
 // The runs as a per-pixel count (0, 1, or more where runs overlap), from the vertex list: each
 // run is two triangles, the first one's corners (x0, y0), (x1, y0), (x1, y1).
-std::vector<int> rasterise(const QuarterResPath::ScreenTiles& tiles, bool* insideView) {
+std::vector<int> rasterise(const ScreenTiles& tiles, bool* insideView) {
     std::vector<int> count(size_t(kW * kH), 0);
     *insideView = true;
     for (int r = 0; r < tiles.runs(); ++r) {
@@ -77,9 +77,9 @@ TEST(ScreenTiles, EveryPixelNearAParticleIsCoveredOnceAndRunsStayInsideTheView) 
             p.z = deep(rng);
             p.size = size(rng);
         }
-        QuarterResPath::ScreenTiles tiles;
-        const QuarterResPath::ScreenRect rect = QuarterResPath::screenRect(
-            view, particles.data(), int(particles.size()), &tiles, QuarterResPath::Footprint::Billboard);
+        ScreenTiles tiles;
+        const ScreenRect rect = screenRect(
+            view, particles.data(), int(particles.size()), &tiles, Footprint::Billboard);
         if (rect.whole && tiles.runs() == 1) continue;  // one reached the near plane: checked below
         bool insideView = false;
         const std::vector<int> count = rasterise(tiles, &insideView);
@@ -113,12 +113,12 @@ TEST(ScreenTiles, OneSmallParticleCoversOnlyItsOwnTiles) {
     p.y = 1.0f;
     p.z = 0.0f;
     p.size = 0.3f;
-    QuarterResPath::ScreenTiles tiles;
-    QuarterResPath::screenRect(view, &p, 1, &tiles, QuarterResPath::Footprint::Billboard);
+    ScreenTiles tiles;
+    screenRect(view, &p, 1, &tiles, Footprint::Billboard);
     float x0, y0, x1, y1;
     billboardBound(view, p, &x0, &y0, &x1, &y1);
     // At most the bound grown by the border, rounded out to whole tiles on each side.
-    const float t = float(QuarterResPath::kTileSize), b = float(QuarterResPath::kTileBorder);
+    const float t = float(ScreenTiles::kTileSize), b = float(ScreenTiles::kTileBorder);
     const float w = (std::ceil((x1 + b) / t) - std::floor((x0 - b) / t)) * t;
     const float h = (std::ceil((y1 + b) / t) - std::floor((y0 - b) / t)) * t;
     EXPECT_GT(tiles.pixels, 0);
@@ -132,9 +132,9 @@ TEST(ScreenTiles, BillboardBoundIsInsideTheBoxBound) {
     particles[0].z = -2.0f, particles[0].size = 2.0f, particles[0].y = 1.0f;
     particles[1].x = 2.0f, particles[1].z = -10.0f, particles[1].size = 1.0f;
     particles[2].x = -3.0f, particles[2].y = 2.0f, particles[2].size = 0.5f;
-    QuarterResPath::ScreenTiles billboard, box;
-    QuarterResPath::screenRect(view, particles.data(), 3, &billboard, QuarterResPath::Footprint::Billboard);
-    QuarterResPath::screenRect(view, particles.data(), 3, &box, QuarterResPath::Footprint::Box);
+    ScreenTiles billboard, box;
+    screenRect(view, particles.data(), 3, &billboard, Footprint::Billboard);
+    screenRect(view, particles.data(), 3, &box, Footprint::Box);
     bool inside = false;
     const std::vector<int> a = rasterise(billboard, &inside), b = rasterise(box, &inside);
     for (size_t i = 0; i < a.size(); ++i) ASSERT_LE(a[i], b[i]) << "pixel " << i;
@@ -152,23 +152,23 @@ TEST(ScreenTiles, NearPlaneGivesTheWholeViewAndNothingInFrontGivesNoRuns) {
     };
     // A box 0.15 m ahead with half-size 0.355 m straddles the 0.1 m near plane: the whole view.
     ParticleInstance straddling = at(0.15f, 0.5f);
-    QuarterResPath::ScreenTiles tiles;
-    QuarterResPath::ScreenRect rect =
-        QuarterResPath::screenRect(view, &straddling, 1, &tiles, QuarterResPath::Footprint::Box);
+    ScreenTiles tiles;
+    ScreenRect rect =
+        screenRect(view, &straddling, 1, &tiles, Footprint::Box);
     EXPECT_TRUE(rect.whole);
     ASSERT_EQ(tiles.runs(), 1);
     EXPECT_EQ(tiles.pixels, int64_t(kW) * kH);
     // A non-finite position: no bound to trust, the whole view.
     ParticleInstance broken = at(3.0f, 0.5f);
     broken.y = std::nanf("");
-    rect = QuarterResPath::screenRect(view, &broken, 1, &tiles, QuarterResPath::Footprint::Billboard);
+    rect = screenRect(view, &broken, 1, &tiles, Footprint::Billboard);
     EXPECT_TRUE(rect.whole);
     EXPECT_EQ(tiles.pixels, int64_t(kW) * kH);
     // A billboard lies in one plane: 0.05 m ahead it is wholly clipped by the near plane, and one
     // behind the eye is too. Neither touches the screen.
     for (float distance : {0.05f, -5.0f}) {
         ParticleInstance hidden = at(distance, 0.5f);
-        rect = QuarterResPath::screenRect(view, &hidden, 1, &tiles, QuarterResPath::Footprint::Billboard);
+        rect = screenRect(view, &hidden, 1, &tiles, Footprint::Billboard);
         EXPECT_FALSE(rect.whole) << distance;
         EXPECT_EQ(rect.x0, rect.x1) << distance;
         EXPECT_EQ(tiles.runs(), 0) << distance;
@@ -185,12 +185,12 @@ TEST(ScreenTiles, ASteadyFrameReusesTheBuffers) {
         particles[size_t(i)].z = -float(i);
         particles[size_t(i)].size = 0.4f;
     }
-    QuarterResPath::ScreenTiles tiles;
-    QuarterResPath::screenRect(view, particles.data(), 20, &tiles, QuarterResPath::Footprint::Billboard);
+    ScreenTiles tiles;
+    screenRect(view, particles.data(), 20, &tiles, Footprint::Billboard);
     const float* vertices = tiles.vertices.data();
     const uint8_t* grid = tiles.grid.data();
     const std::vector<float> first = tiles.vertices;
-    QuarterResPath::screenRect(view, particles.data(), 20, &tiles, QuarterResPath::Footprint::Billboard);
+    screenRect(view, particles.data(), 20, &tiles, Footprint::Billboard);
     EXPECT_EQ(tiles.vertices, first);
     EXPECT_EQ(tiles.vertices.data(), vertices) << "the second frame reallocated the vertices";
     EXPECT_EQ(tiles.grid.data(), grid) << "the second frame reallocated the grid";

@@ -3,6 +3,7 @@
 // HostAdapter::log and draws nothing with it instead of crashing.
 #include <glad/gl.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -10,7 +11,7 @@
 #include <sstream>
 
 #include "FxTestHost.h"
-#include "../../fx_plugin/render/ParticlePrograms.h"
+#include "../../fx_plugin/render/ProgramCache.h"
 #include "../../fx_plugin/render/ShaderLoader.h"
 
 namespace fxtest {
@@ -186,42 +187,64 @@ TEST_F(BrokenShaderTest, RendererReportsABrokenShaderAndDrawsNothingWithIt) {
         << (host.errors().empty() ? std::string("no error logged") : host.errors().front());
     EXPECT_EQ(particles.renderer.state(), fx::ParticleRenderer::State::Ready);
 
-    particles.options.techniqueOverride = fx::Technique::Hard;
+    particles.settings.options.techniqueOverride = fx::Technique::Hard;
     renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = particles.declare(view, f); });
     EXPECT_EQ(drawn, 1);
     EXPECT_TRUE(graph.ran("particles"));
 }
 
-// Soft programs per contrast power (ParticlePrograms::get with a power): built the first time a
-// power is drawn, once, with the power's bits folded (no uPowerWhole left in the program), and
-// only for the soft technique's half-whole powers.
-TEST_F(ShaderLoaderTest, SoftProgramsForOnePowerAreBuiltOnFirstUse) {
-    fx::ParticlePrograms programs;
+// Soft programs per contrast power: a cache key of their own (ProgramCache::Key::powerSteps),
+// built when asked for, once, with the power's bits folded (no uPowerWhole left in the program);
+// get() never builds: an unbuilt power draws with the general soft program.
+TEST_F(ShaderLoaderTest, SoftProgramsForOnePowerAreKeysOfTheCache) {
+    using Cache = fx::ProgramCache;
+    Cache programs(fx::snapshotShaderReader(fx::shaderReader(kShaders)));
     std::vector<std::string> errors;
-    programs.build(kShaders, &errors, "",
-                   (1u << fx::ParticlePrograms::Soft) | (1u << fx::ParticlePrograms::SoftGeneralPower));
+    EXPECT_EQ(programs.build({Cache::Key{Cache::Soft}, Cache::Key{Cache::SoftGeneralPower}}, &errors), 2);
     ASSERT_TRUE(errors.empty()) << errors.front();
-    const fx::ParticleProgram& general = programs.get(fx::ParticlePrograms::Soft, false);
+    const fx::ParticleProgram& general = programs.get(Cache::Soft, false);
     ASSERT_NE(general.program, 0u);
     EXPECT_GE(general.powerWhole, 0);
-    EXPECT_TRUE(programs.builtPowers().empty());
+    const uint64_t before = fx::programBuildCounts().built;
+    EXPECT_EQ(programs.get(Cache::Soft, false, 2.0f).program, general.program);  // not built: the general one
+    EXPECT_EQ(fx::programBuildCounts().built, before);                           // and get() compiled nothing
 
-    const uint32_t two = programs.get(fx::ParticlePrograms::Soft, false, 2.0f).program;
+    std::vector<Cache::Key> keys;
+    Cache::addDrawKeys(fx::Technique::Soft, 2.0f, false, false, &keys);
+    Cache::addDrawKeys(fx::Technique::Soft, 1.5f, false, false, &keys);
+    Cache::addDrawKeys(fx::Technique::Soft, 1.5f, false, false, &keys);  // added once
+    EXPECT_EQ(keys.size(), 6u);  // Soft and Soft at power 2, 1.5; lit and unlit
+    EXPECT_EQ(programs.build(keys, &errors), 5);  // Soft lit and the four powered builds (Soft was built)
+    EXPECT_EQ(fx::programBuildCounts().built, before + 5);
+    const uint32_t two = programs.get(Cache::Soft, false, 2.0f).program;
     EXPECT_NE(two, 0u);
     EXPECT_NE(two, general.program);
-    EXPECT_EQ(programs.get(fx::ParticlePrograms::Soft, false, 2.0f).powerWhole, -1);  // folded
-    EXPECT_EQ(programs.get(fx::ParticlePrograms::Soft, false, 2.0f).program, two);    // not rebuilt
-    EXPECT_EQ(programs.builtPowers(), std::vector<int>{4});
-    const uint32_t litOneAndAHalf = programs.get(fx::ParticlePrograms::Soft, true, 1.5f).program;
+    EXPECT_EQ(programs.get(Cache::Soft, false, 2.0f).powerWhole, -1);  // folded
+    EXPECT_EQ(programs.build(keys, &errors), 0);                        // each key tried once
+    EXPECT_EQ(programs.get(Cache::Soft, false, 2.0f).program, two);
+    const uint32_t litOneAndAHalf = programs.get(Cache::Soft, true, 1.5f).program;
     EXPECT_NE(litOneAndAHalf, 0u);
-    EXPECT_NE(litOneAndAHalf, programs.get(fx::ParticlePrograms::Soft, true).program);
-    EXPECT_EQ(programs.builtPowers(), (std::vector<int>{3, 4}));
+    EXPECT_NE(litOneAndAHalf, programs.get(Cache::Soft, true).program);
+    EXPECT_EQ(programs.keys().size(), 7u);  // every key tried, for a reload to build anew
     // Other powers and variants are what get(v, lit) gives.
-    EXPECT_EQ(programs.get(fx::ParticlePrograms::SoftGeneralPower, false, 1.3f).program,
-              programs.get(fx::ParticlePrograms::SoftGeneralPower, false).program);
-    EXPECT_EQ(programs.get(fx::ParticlePrograms::Soft, false, 1.3f).program, general.program);
-    EXPECT_EQ(programs.get(fx::ParticlePrograms::HardZBuffer, false, 2.0f).program, 0u);  // not asked for
-    EXPECT_TRUE(programs.takeErrors().empty());
+    EXPECT_EQ(programs.get(Cache::SoftGeneralPower, false, 1.3f).program,
+              programs.get(Cache::SoftGeneralPower, false).program);
+    EXPECT_EQ(programs.get(Cache::Soft, false, 1.3f).program, general.program);
+    EXPECT_EQ(programs.get(Cache::HardZBuffer, false, 2.0f).program, 0u);  // not asked for
+    EXPECT_TRUE(errors.empty());
+    // The key packs every field: no two of the variant space share bits.
+    std::vector<uint32_t> bits;
+    for (int v = 0; v < Cache::VariantCount; ++v) {
+        for (int lit = 0; lit < 2; ++lit) {
+            for (int c = 0; c < 2; ++c) {
+                for (int s = -1; s <= Cache::kMaxPowerSteps; ++s) {
+                    bits.push_back(Cache::Key{Cache::Variant(v), lit == 1, c == 1, s}.bits());
+                }
+            }
+        }
+    }
+    std::sort(bits.begin(), bits.end());
+    EXPECT_EQ(std::unique(bits.begin(), bits.end()), bits.end());
 }
 
 // Puffs sunk into the ground, 0.3 .. 1.1 m in front of a wall that ends 2.2 m up, sky above it
@@ -255,7 +278,8 @@ std::pair<std::string, int> shadersWithABrokenPowerBuild(const std::string& name
 // The per-power programs draw what the general one (uniform bits) draws, within 1/255, for
 // powers whose curves differ (0.5 .. 16, power 1 taking no curve at all), over puffs that the
 // wall and ground fade. The general program stands in where a power's build fails: a copy of
-// the shaders breaks only that build, so it draws every power there, and says so once per power.
+// the shaders breaks only that build, so it draws every power there, and says so once (the same
+// file:line breaks each power's build: one message, as for any other shader error).
 TEST_F(BrokenShaderTest, SoftProgramsForOnePowerDrawWhatTheGeneralOneDraws) {
     constexpr int kW = 160, kH = 120;
     const auto [brokenDir, line] = shadersWithABrokenPowerBuild("broken_power");
@@ -267,7 +291,7 @@ TEST_F(BrokenShaderTest, SoftProgramsForOnePowerDrawWhatTheGeneralOneDraws) {
     DirectParticles general(&brokenHost, brokenDir);
     for (DirectParticles* d : {&perPower, &general}) {
         d->desc.render.softness = edge.softness;  // wide fades: every part of the curve is on screen
-        d->options.techniqueOverride = fx::Technique::Soft;
+        d->settings.options.techniqueOverride = fx::Technique::Soft;
         d->set(edge.puffs);
     }
     int logged = 0;
@@ -288,8 +312,8 @@ TEST_F(BrokenShaderTest, SoftProgramsForOnePowerDrawWhatTheGeneralOneDraws) {
         EXPECT_LE(diff, 1) << "contrast " << power;
         if (power == 1.0f) linearCurve = images[0];
         if (power == 16.0f) steepCurve = images[0];
-        ++logged;
-        EXPECT_EQ(int(brokenHost.errors().size()), logged) << "one message per power";
+        logged = 1;  // one cause, one message, whichever powers it breaks (ShaderErrorLog)
+        EXPECT_EQ(int(brokenHost.errors().size()), logged) << "one message for the broken line";
         EXPECT_TRUE(brokenHost.logged("particles_common.glsl:" + std::to_string(line) + ":"));
     }
     EXPECT_TRUE(host.errors().empty()) << host.errors().front();
@@ -316,8 +340,8 @@ TEST_F(ShaderLoaderTest, TheHostsDepthSamplingStateDoesNotChangeThePicture) {
     direct.desc.render.softness = edge.softness;
     direct.set(edge.puffs);
     auto frame = [&](fx::Technique t, bool quarter) {
-        direct.options.techniqueOverride = t;
-        direct.options.quarterRes = quarter;
+        direct.settings.options.techniqueOverride = t;
+        direct.settings.options.quarterRes = quarter;
         renderFrame(graph, edge.scene, edge.view, [&](fx::FrameBuilder& f) { direct.declare(edge.view, f); });
         return graph.readColor();
     };
@@ -325,7 +349,7 @@ TEST_F(ShaderLoaderTest, TheHostsDepthSamplingStateDoesNotChangeThePicture) {
         for (bool quarter : {false, true}) {
             // Soft and spherical at full res also with fade classification (its tile pass reads
             // the scene depth).
-            direct.renderer.setFadeClassification(!quarter && t != fx::Technique::Hard, false);
+            direct.settings.classify = !quarter && t != fx::Technique::Hard;
             graph.setSceneDepthSampling(GL_NEAREST, GL_NEAREST, 0);
             const Image nearest = frame(t, quarter);
             graph.setSceneDepthSampling(GL_LINEAR, GL_LINEAR, 0);

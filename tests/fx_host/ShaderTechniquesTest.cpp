@@ -11,7 +11,7 @@
 #include <string>
 
 #include "FxTestHost.h"
-#include "../../fx_plugin/render/ParticlePrograms.h"
+#include "../../fx_plugin/render/ProgramCache.h"
 
 // Named so that the test files of one unity translation unit keep their helpers apart.
 namespace fxtest {
@@ -190,19 +190,19 @@ TEST_F(ShaderTechniquesTest, AFifoInAShadersPlaceIsReportedOnce) {
 // built from the source that went live, not from the broken file on disk.
 TEST_F(ShaderTechniquesTest, APowerBuiltAfterARejectedEditComesFromTheGoodSource) {
     const std::string dir = freshCopy("power_snapshot");
-    fx::ParticlePrograms programs;
+    using Cache = fx::ProgramCache;
+    Cache programs(fx::snapshotShaderReader(fx::shaderReader(dir)));
     std::vector<std::string> errors;
-    programs.build(dir, &errors, "", (1u << fx::ParticlePrograms::Soft) | (1u << fx::ParticlePrograms::SoftGeneralPower));
+    programs.build({Cache::Key{Cache::Soft}, Cache::Key{Cache::SoftGeneralPower}}, &errors);
     ASSERT_TRUE(errors.empty()) << errors.front();
     const std::string soft = dir + "/fs_particles_soft.glsl";
     writeAhead(soft, broken(readText(soft), "syntax"), 10);
     allowShaderCompilerMessages();
-    programs.buildPowers({5}, &errors);
+    programs.build({Cache::Key{Cache::Soft, false, false, 5}}, &errors);
     EXPECT_TRUE(errors.empty()) << errors.front();
-    EXPECT_EQ(programs.builtPowers(), std::vector<int>{5});
-    const fx::ParticleProgram& twoAndAHalf = programs.get(fx::ParticlePrograms::Soft, false, 2.5f);
-    EXPECT_NE(twoAndAHalf.program, programs.get(fx::ParticlePrograms::Soft, false).program);
-    EXPECT_TRUE(programs.takeErrors().empty());
+    const fx::ParticleProgram& twoAndAHalf = programs.get(Cache::Soft, false, 2.5f);
+    ASSERT_NE(twoAndAHalf.program, 0u);
+    EXPECT_NE(twoAndAHalf.program, programs.get(Cache::Soft, false).program);
     resetGlErrors();
 }
 

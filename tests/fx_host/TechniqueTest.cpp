@@ -74,7 +74,7 @@ TEST_F(TechniqueTest, GroundContactLineIsSmoothForSoftAndSphericalButNotHard) {
 
     float steps[4] = {};
     for (fx::Technique t : {fx::Technique::Hard, fx::Technique::Soft, fx::Technique::Spherical}) {
-        direct.options.techniqueOverride = t;
+        direct.settings.options.techniqueOverride = t;
         const Image img = draw(graph, scene, view, true);
         ASSERT_EQ(drawn, 1);
         writePng(std::string("/tmp/fx_host_ground_") + name(t) + ".png", img);
@@ -101,9 +101,9 @@ TEST_F(TechniqueTest, ParticleBehindAWallContributesNothing) {
     direct.set({HandParticle{glm::vec3(0.0f, 1.5f, -5.0f), 3.0f}});
     const Image reference = draw(graph, scene, view, false);
     for (fx::Technique t : {fx::Technique::Hard, fx::Technique::Soft, fx::Technique::Spherical}) {
-        direct.options.techniqueOverride = t;
+        direct.settings.options.techniqueOverride = t;
         for (bool quarter : {false, true}) {
-            direct.options.quarterRes = quarter;
+            direct.settings.options.quarterRes = quarter;
             const Image img = draw(graph, scene, view, true);
             ASSERT_EQ(drawn, 1) << name(t) << " not even drawn: the test would prove nothing";
             EXPECT_LE(maxAbsDiff(img, reference), 1) << name(t) << (quarter ? " quarter" : "");
@@ -167,7 +167,7 @@ TEST_F(TechniqueTest, CameraMovingThroughASphericalParticleHasNoJump) {
 
     for (float nearFade : {0.0f, 0.5f}) {
         direct.desc.render.nearFade = nearFade;
-        direct.options.techniqueOverride = fx::Technique::Spherical;
+        direct.settings.options.techniqueOverride = fx::Technique::Spherical;
         const FlyThrough s = flyThrough(graph, scene, direct,
                                         nearFade == 0.0f ? "/tmp/fx_host_flythrough_spherical_" : "");
         std::printf("[ measured ] spherical near_fade %.1f: max mean change %.4f, max pixel change %d/255, "
@@ -178,7 +178,7 @@ TEST_F(TechniqueTest, CameraMovingThroughASphericalParticleHasNoJump) {
     }
 
     direct.desc.render.nearFade = 0.0f;
-    direct.options.techniqueOverride = fx::Technique::Soft;
+    direct.settings.options.techniqueOverride = fx::Technique::Soft;
     const FlyThrough soft = flyThrough(graph, scene, direct, "");
     std::printf("[ measured ] soft near_fade 0.0: max mean change %.4f, max pixel change %d/255\n",
                 soft.maxMeanChange, soft.maxPixelChange);

@@ -5,7 +5,7 @@ namespace fxtest {
 DirectParticles::DirectParticles(fx::HostAdapter* host, std::string shaderDir, std::string dataDir,
                                  int capacity)
     : desc(fx::defaultReaction(fx::ReactionType::WheelSmoke)),
-      renderer(fx::ParticleRendererConfig{host, std::move(shaderDir), std::move(dataDir)}),
+      renderer(fx::RendererConfig{host, std::move(shaderDir), std::move(dataDir)}),
       pool(capacity) {
     desc.name = "hand_placed";
     desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(1.0f)}};
@@ -40,7 +40,7 @@ int DirectParticles::declare(const fx::ViewInfo& view, fx::FrameBuilder& frame) 
     batch.pool = &pool;
     batch.desc = &desc;
     batch.sortBackToFront = desc.render.sortBackToFront && desc.render.blend != fx::BlendMode::Additive;
-    return renderer.declarePasses(view, frame, &batch, 1, options);
+    return renderer.declarePasses(view, frame, &batch, 1, settings);
 }
 
 }  // namespace fxtest

@@ -19,7 +19,7 @@
 
 #include "FxTestHost.h"
 #include "../../fx_plugin/render/EmbeddedResources.h"
-#include "../../fx_plugin/render/ParticlePrograms.h"
+#include "../../fx_plugin/render/ProgramCache.h"
 #include "../../fx_plugin/render/SmokeAtlas.h"
 #include "../../fx_plugin/render/TrimmedShapes.h"
 
@@ -258,11 +258,11 @@ TEST_F(TrimmedImageTest, TrimmedShapesDrawTheQuadsImage) {
     }
     direct.set(ps);
     for (fx::Technique t : {fx::Technique::Hard, fx::Technique::Soft, fx::Technique::Spherical}) {
-        direct.options.techniqueOverride = t;
-        direct.renderer.setParticleShape(fx::ParticleShape::Quad);
+        direct.settings.options.techniqueOverride = t;
+        direct.settings.shape = fx::ParticleShape::Quad;
         const Image quads = draw(graph, scene, view);
         ASSERT_EQ(drawn, 16);
-        direct.renderer.setParticleShape(fx::ParticleShape::Trimmed);
+        direct.settings.shape = fx::ParticleShape::Trimmed;
         const Image trimmed = draw(graph, scene, view);
         writePng(scratchDir() + "/trimmed_" + std::to_string(int(t)) + ".png", trimmed);
         EXPECT_LE(maxAbsDiff(trimmed, quads), 1) << "technique " << int(t);
@@ -315,7 +315,7 @@ protected:
     static constexpr int kW = 320, kH = 240;
     HardEdgedSphereTest() {
         hardEdged.desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(1.0f)}};
-        hardEdged.options.techniqueOverride = fx::Technique::Spherical;
+        hardEdged.settings.options.techniqueOverride = fx::Technique::Spherical;
     }
     Image drawHardEdged(const fx::ViewInfo& v) {
         renderFrame(graph, scene, v, [&](fx::FrameBuilder& f) { drawn = hardEdged.declare(v, f); });
@@ -335,7 +335,7 @@ TEST_F(HardEdgedSphereTest, SphericalPolygonsDrawTheQuadsImageAcrossTheFrustum) 
     const glm::mat4 toWorld = glm::inverse(view.view);
     const float halfY = glm::radians(50.0f), halfX = std::atan(std::tan(halfY) * kW / kH);
     for (bool quarter : {false, true}) {
-        hardEdged.options.quarterRes = quarter;
+        hardEdged.settings.options.quarterRes = quarter;
         for (float sinA : {0.03f, 0.1f, 0.22f, 0.38f, 0.45f}) {
             const float a = std::asin(sinA), step = 2.3f * a;
             std::vector<HandParticle> ps;
@@ -354,10 +354,10 @@ TEST_F(HardEdgedSphereTest, SphericalPolygonsDrawTheQuadsImageAcrossTheFrustum) 
             }
             ASSERT_GE(ps.size(), 4u);
             hardEdged.set(ps);
-            hardEdged.renderer.setParticleShape(fx::ParticleShape::Quad);
+            hardEdged.settings.shape = fx::ParticleShape::Quad;
             const Image quads = drawHardEdged(view);
             ASSERT_EQ(drawn, int(ps.size()));
-            hardEdged.renderer.setParticleShape(fx::ParticleShape::Trimmed);
+            hardEdged.settings.shape = fx::ParticleShape::Trimmed;
             const Image trimmed = drawHardEdged(view);
             writePng(scratchDir() + "/spherical_trimmed_" + std::to_string(int(sinA * 100)) +
                          (quarter ? "_quarter" : "") + ".png", trimmed);
@@ -406,10 +406,10 @@ TEST_F(HardEdgedSphereTest, SphericalPolygonLeavesOutTheOutlineAroundASmallPuff)
         return double(n);
     };
     const double bare = samples(false);
-    hardEdged.renderer.setParticleShape(fx::ParticleShape::Quad);
+    hardEdged.settings.shape = fx::ParticleShape::Quad;
     const double box = samples(true) - bare;
     ASSERT_EQ(drawn, 12);
-    hardEdged.renderer.setParticleShape(fx::ParticleShape::Trimmed);
+    hardEdged.settings.shape = fx::ParticleShape::Trimmed;
     const double polygon = samples(true) - bare;
     std::printf("[ measured ] spherical fragments: box %.0f, polygon %.0f (%.3f)\n", box, polygon, polygon / box);
     // The outline is 12 discs of about 24 px radius. The puff's disc is 0.2 of the outline's area;
@@ -433,7 +433,7 @@ TEST_F(TrimmedImageTest, DepthTestedSoftAndSphericalEqualUntested) {
     const fx::ViewInfo& tested = w.tested;
     const fx::ViewInfo& untested = w.untested;
     for (fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical}) {
-        direct.options.techniqueOverride = t;
+        direct.settings.options.techniqueOverride = t;
         const Image a = draw(graph, scene, tested);
         ASSERT_EQ(drawn, 9);
         const Image b = draw(graph, scene, untested);
@@ -454,17 +454,17 @@ TEST(SoftContrastProgram, HalfWholePowersAreSplitAndOthersUsePow) {
     int whole = -1, half = -1;
     const struct { float p; int whole, half; } cases[] = {{1.0f, 1, 0}, {1.5f, 1, 1}, {2.0f, 2, 0}, {0.5f, 0, 1}, {16.0f, 16, 0}};
     for (const auto& c : cases) {
-        ASSERT_TRUE(fx::ParticlePrograms::halfWholePower(c.p, &whole, &half)) << c.p;
+        ASSERT_TRUE(fx::ProgramCache::halfWholePower(c.p, &whole, &half)) << c.p;
         EXPECT_EQ(whole, c.whole) << c.p;
         EXPECT_EQ(half, c.half) << c.p;
-        EXPECT_EQ(fx::ParticlePrograms::variantFor(fx::Technique::Soft, false, c.p), fx::ParticlePrograms::Soft);
+        EXPECT_EQ(fx::ProgramCache::variantFor(fx::Technique::Soft, false, c.p), fx::ProgramCache::Soft);
     }
     for (float p : {0.1f, 1.3f, 2.25f, 15.9f}) {
-        EXPECT_FALSE(fx::ParticlePrograms::halfWholePower(p, &whole, &half)) << p;
-        EXPECT_EQ(fx::ParticlePrograms::variantFor(fx::Technique::Soft, false, p), fx::ParticlePrograms::SoftGeneralPower);
+        EXPECT_FALSE(fx::ProgramCache::halfWholePower(p, &whole, &half)) << p;
+        EXPECT_EQ(fx::ProgramCache::variantFor(fx::Technique::Soft, false, p), fx::ProgramCache::SoftGeneralPower);
     }
     // Other techniques do not care.
-    EXPECT_EQ(fx::ParticlePrograms::variantFor(fx::Technique::Hard, false, 1.3f), fx::ParticlePrograms::HardZBuffer);
+    EXPECT_EQ(fx::ProgramCache::variantFor(fx::Technique::Hard, false, 1.3f), fx::ProgramCache::HardZBuffer);
 }
 
 }  // namespace
@@ -484,9 +484,9 @@ TEST_F(TrimmedImageTest, HalfResZTestChangesNoPixel) {
     TestScene& scene = w.scene;
     const fx::ViewInfo& tested = w.tested;
     const fx::ViewInfo& untested = w.untested;
-    direct.options.quarterRes = true;
+    direct.settings.options.quarterRes = true;
     for (fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical, fx::Technique::Hard}) {
-        direct.options.techniqueOverride = t;
+        direct.settings.options.techniqueOverride = t;
         const Image a = draw(graph, scene, tested);
         ASSERT_EQ(drawn, 9);
         ASSERT_TRUE(graph.ran("particles_quarter"));

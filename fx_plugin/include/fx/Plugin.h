@@ -10,7 +10,10 @@
 //   4. setRenderOptions(...) if the host overrides techniques, then prepareGl() with its GL
 //      context current (optional but recommended: compiles every program the loaded reactions
 //      and the options can draw with and uploads the atlas now, so a broken shader of any
-//      technique fails start-up with file:line instead of the first frame with smoke).
+//      technique fails start-up with file:line instead of the first frame with smoke). Call it
+//      again after changing options or reloading reactions: it builds only what the change
+//      reaches, so no frame compiles. A host that does not gets those programs built while the
+//      next frame is declared (logged once as a warning); no pass ever compiles.
 //   5. Each simulation step: continueReaction(i, dt, &collision) for i in 0 .. reactionCount()-1.
 //   6. Each frame, each view, after its opaque scene and sky, either
 //        - renderView(view, depth) (API 2, engines without a frame graph): draws the smoke into the

@@ -1,50 +1,45 @@
-// ParticleRenderer's draw of one view's batches (drawBatches): the GL state, program and
-// uniforms per batch, and the instanced draw. The passes around it are in ParticleRenderer.cpp.
+#include "ParticleDraw.h"
+
 #include <algorithm>
 #include <cmath>
 
-#include "ParticleRenderer.h"
 #include "render/PrivateGl.h"
 
+#include "FadeClassifier.h"
 #include "GlStateGuard.h"
+#include "ViewFrustum.h"
 
 namespace fx {
-namespace {
 
-// |x/depth| and |y/depth| slightly past the frustum edges, from a perspective projection.
-glm::vec2 frustumSlopes(const glm::mat4& proj) {
-    const float sx = (1.0f + std::fabs(proj[2][0])) / std::fmax(std::fabs(proj[0][0]), 1e-6f);
-    const float sy = (1.0f + std::fabs(proj[2][1])) / std::fmax(std::fabs(proj[1][1]), 1e-6f);
-    return glm::vec2(sx, sy) * 1.02f;
+void ParticleDraw::create() {
+    stream_.create();
+    depthSampler_.create();
+    ramp_.upload();
+    shapeTable_ = atlas_.shapes().packed();
+    discTable_ = atlas_.shapes().packed(TrimmedShapes::Clip::Disc);
+    discInfo_ = atlas_.shapes().packedInfo(TrimmedShapes::Clip::Disc);
 }
 
-}  // namespace
-
-void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth, bool quarterRes, bool halfZ,
-                                   uint32_t opacity, uint32_t tiles, uint32_t coarse) {
+void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
     const DrawList& list = record.list;
     const ViewInfo& view = record.view;
     glActiveTexture(GL_TEXTURE0);
     ramp_.upload();
     stream_.upload(list.instances.data(), list.particleCount());
 
+    plainDrawState();
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_SCISSOR_TEST);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     bindTextureUnit(kAtlasUnit, atlas_.texture());
     bindTextureUnit(kRampUnit, ramp_.texture());
-    depthSampler_.bindTexture(kSceneDepthUnit, sceneDepth);  // the host's, or the half-res copy
-    if (record.lit) {
-        bindTextureUnit(kOpacityUnit, opacity);
+    depthSampler_.bindTexture(kSceneDepthUnit, in.sceneDepth);  // the host's, or the half-res copy
+    if (record.lit()) {
+        bindTextureUnit(kOpacityUnit, in.opacity);
     }
-    const bool classified = tiles != 0 && coarse != 0 && classifier_;
+    const bool classified = in.tiles != 0 && in.coarse != 0;
     if (classified) {
-        bindTextureUnit(FadeClassifier::kTileUnit, tiles);
-        bindTextureUnit(FadeClassifier::kCoarseUnit, coarse);
+        bindTextureUnit(FadeClassifier::kTileUnit, in.tiles);
+        bindTextureUnit(FadeClassifier::kCoarseUnit, in.coarse);
     }
 
     const glm::vec2 slopes = frustumSlopes(view.proj);
@@ -55,24 +50,25 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
     static_assert(TrimmedShapes::kFrames * TrimmedShapes::kMaxBuckets / 2 == 16, "uShapeInfo[16] in vs_particles.glsl");
     GLint viewport[4] = {0, 0, 1, 1};
     glGetIntegerv(GL_VIEWPORT, viewport);
-    const bool trimmable = record.shape == ParticleShape::Trimmed && !shapeTable_.empty();
+    const bool trimmed = record.settings.shape == ParticleShape::Trimmed && !shapeTable_.empty();
     // One pixel of the target in ray slope (y/depth; square pixels): the spheres' margin against
     // the rasteriser's snapping, and with the atlas cell's texels the billboards' LOD scale.
     const float pixelSlope = 2.0f / std::fmax(std::fabs(view.proj[1][1]) * float(std::max(viewport[3], 1)), 1e-6f);
     const float lodScale = float(atlas_.cellTexels()) * pixelSlope;
+    const ProgramCache& programs = *programs_;
     for (const DrawBatch& batch : list.batches) {
-        const ParticlePrograms::Variant variant =
-            ParticlePrograms::variantFor(batch.technique, quarterRes, batch.contrastPower);
+        const ProgramCache::Variant variant =
+            ProgramCache::variantFor(batch.technique, in.quarterRes, batch.contrastPower);
         // Lit when the host set a light and the reaction takes it; unlit if the lit build failed.
-        const bool lit = record.lit && batch.lighting.lit(batch.blend) && programs_->get(variant, true).program;
+        const bool lit = record.lit() && batch.lighting.lit(batch.blend) && programs.get(variant, true).program;
         // Soft and spherical batches take the classified build when the tiles are there.
-        const bool classifiable = classified && batch.technique != Technique::Hard &&
-                                  classifier_->program(variant, lit).program;
-        // Soft batches take their contrast power's own build (ParticlePrograms::get).
-        const ParticleProgram& p = classifiable ? classifier_->programs().get(variant, lit, batch.contrastPower)
-                                                : programs_->get(variant, lit, batch.contrastPower);
+        const bool classifiable =
+            classified && batch.technique != Technique::Hard && programs.get(variant, lit, true).program;
+        // Soft batches take their contrast power's own build; nothing here compiles (the cache
+        // was filled by prepare() or before the passes: ParticleRenderer::ensureDrawPrograms).
+        const ParticleProgram& p = programs.get(variant, lit, batch.contrastPower, classifiable);
         if (!p.program) continue;
-        if (record.lit) bindTextureUnit(kAtlasUnit, lit ? atlas_.litTexture() : atlas_.texture());
+        if (record.lit()) bindTextureUnit(kAtlasUnit, lit ? atlas_.litTexture() : atlas_.texture());
         // Full resolution tests against the host's z-buffer without writing it. Hard particles
         // always do (that is their look). Soft and spherical ones only skip fragments there that
         // would shade to nothing (behind geometry their fade / visible chord is 0), which needs a
@@ -80,11 +76,9 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         // 24-bit buffer at near 0.01, far 1e5 cannot tell 1 m apart at 10 km, so they stay
         // untested there and the fade alone hides them. (Quarter res has no z-buffer.)
         // Quarter res: the half-res z-buffer QuarterResPath::beginQuarter filled (reversed-Z only).
-        const bool zTest = quarterRes ? halfZ
-                                      : (batch.technique == Technique::Hard || view.depth == DepthConvention::ReversedZ);
+        const bool zTest = in.quarterRes ? in.zTested : (batch.technique == Technique::Hard || record.reversedZ);
         if (zTest) {
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(view.depth == DepthConvention::ReversedZ ? GL_GEQUAL : GL_LEQUAL);
+            depthTestFor(view.depth);
         } else {
             glDisable(GL_DEPTH_TEST);
         }
@@ -105,12 +99,12 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         glUniform1f(p.softScale, batch.softScale);
         glUniform1f(p.contrastPower, batch.contrastPower);
         int powerWhole = 0, powerHalf = 0;
-        if (ParticlePrograms::halfWholePower(batch.contrastPower, &powerWhole, &powerHalf)) {
+        if (ProgramCache::halfWholePower(batch.contrastPower, &powerWhole, &powerHalf)) {
             glUniform1i(p.powerWhole, powerWhole);
             glUniform1i(p.powerHalf, powerHalf);
         }
         glUniform1f(p.nearFade, batch.nearFade);
-        if (lit) setLightUniforms(p, batch, record, opacity);
+        if (lit) setLightUniforms(p, batch, record, in.opacity);
         glUniform1i(p.atlas, kAtlasUnit);
         glUniform1i(p.ramp, kRampUnit);
         glUniform1i(p.sceneDepth, kSceneDepthUnit);
@@ -121,10 +115,9 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
         }
         // Spherical particles trim to their frame's polygon clipped to the disc (the octagon
         // around the sphere where its bounds do not hold: vs_particles.glsl).
-        const bool trimmed = trimmable;
         glUniform1i(p.trimmed, trimmed ? 1 : 0);
         if (trimmed) {
-            const bool sphere = variant == ParticlePrograms::Spherical;
+            const bool sphere = variant == ProgramCache::Spherical;
             const std::vector<glm::vec4>& table = sphere ? discTable_ : shapeTable_;
             glUniform1i(p.shapeBuckets, atlas_.shapes().buckets());
             glUniform1f(p.lodScale, lodScale);
@@ -138,15 +131,25 @@ void ParticleRenderer::drawBatches(const ViewRecord& record, uint32_t sceneDepth
             glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, batch.count);
         }
     }
-    // A contrast power whose own build failed was drawn by the general soft program: said once,
-    // when it was tried.
-    std::vector<std::string> errors = programs_->takeErrors();
-    if (classifier_) {
-        for (std::string& e : classifier_->programs().takeErrors()) errors.push_back(std::move(e));
-    }
-    for (const std::string& e : errors) {
-        log(LogLevel::Error, "fx: a soft program for one contrast power did not build; the general one draws it:\n" + e);
-    }
+}
+
+void ParticleDraw::setLightUniforms(const ParticleProgram& p, const DrawBatch& batch, const ParticleView& record,
+                                    uint32_t opacity) const {
+    const LightState& light = record.settings.light;
+    const LightingDesc& l = batch.lighting;
+    const glm::vec3 sunView = glm::normalize(glm::mat3(record.view.view) * light.toSun);
+    const glm::vec3 ambient = light.ambient * l.ambient;
+    glUniform3f(p.sunView, sunView.x, sunView.y, sunView.z);
+    glUniform3f(p.sunColor, light.sunColor.x, light.sunColor.y, light.sunColor.z);
+    glUniform3f(p.ambient, ambient.x, ambient.y, ambient.z);
+    glUniform1f(p.normalStrength, l.normalStrength);
+    glUniform1f(p.scattering, l.scattering);
+    glUniform1f(p.anisotropy, l.anisotropy);
+    glUniform1f(p.absorption, l.absorption);
+    glUniform1i(p.shadowed, opacity ? 1 : 0);
+    const glm::mat4 viewToShadow = record.worldToShadow * glm::inverse(record.view.view);
+    glUniformMatrix4fv(p.viewToShadow, 1, GL_FALSE, &viewToShadow[0][0]);
+    glUniform1i(p.opacity, kOpacityUnit);
 }
 
 }  // namespace fx

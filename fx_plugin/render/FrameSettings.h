@@ -1,0 +1,22 @@
+#pragma once
+// Everything the plugin's switches say about how this frame's particles are drawn, read once per
+// frame (the render hook fills it from the plugin's options) and handed to every rendering path
+// by value. No path reads a switch anywhere else, so a frame is drawn under one set of settings
+// even when a setter is called while its passes are pending.
+#include "LightState.h"
+#include "fx/Plugin.h"
+
+namespace fx {
+
+struct FrameSettings {
+    RenderOptions options;  ///< technique override, quarter res, bilinear upsample (setRenderOptions)
+    ParticleShape shape = ParticleShape::Trimmed;         ///< trimmed polygons or full quads
+    QuarterResEdges edges = QuarterResEdges::DepthAware;  ///< quarter res: depth-aware or mixed
+    bool classify = false;      ///< fade classification at full res (FadeClassifier.h)
+    bool countClasses = false;  ///< and its counting (a read-back: diagnostics only)
+    LightState light;           ///< the scene light (LightState::on false: unlit)
+
+    bool mixedResolution() const { return edges == QuarterResEdges::MixedResolution; }
+};
+
+}  // namespace fx

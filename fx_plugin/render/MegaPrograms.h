@@ -1,0 +1,33 @@
+#pragma once
+// The mega-particles' five programs (MegaRenderer.h) and their uniform locations: the depth
+// downsample, the spheres, the blur, the blur that also shades, and the composite. A set is built
+// whole and swapped whole by a shader reload.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fx {
+
+struct MegaPrograms {
+    uint32_t depth = 0, spheres = 0, blur = 0, shade = 0, composite = 0;
+    int depthScene = -1, depthRatio = -1;
+    int sView = -1, sProj = -1, sNear = -1, sFar = -1, sSlope = -1, sRamp = -1, sRampRow = -1, sMegaDepth = -1,
+        sDensity = -1;
+    struct Blur {
+        int color = -1, density = -1, encoded = -1, direction = -1, taps = -1, sigma = -1, falloff = -1;
+        int invView = -1, projTerms = -1, time = -1, noiseStrength = -1, noiseScale = -1, lit = -1;
+        int toSun = -1, sunColor = -1, ambient = -1, scattering = -1, anisotropy = -1, absorption = -1;
+    } b[2];  // [0] blur, [1] blur + shade
+    int cCloud = -1, cCloudDepth = -1, cScene = -1, cSoft = -1;
+
+    MegaPrograms() = default;
+    ~MegaPrograms();
+    MegaPrograms(const MegaPrograms&) = delete;
+    MegaPrograms& operator=(const MegaPrograms&) = delete;
+
+    bool ok() const { return depth && spheres && blur && shade && composite; }
+    /// Builds all five from `dir` (empty: the embedded shaders); failures go to *errors.
+    void build(const std::string& dir, std::vector<std::string>* errors);
+};
+
+}  // namespace fx

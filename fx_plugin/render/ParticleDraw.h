@@ -1,0 +1,95 @@
+#pragma once
+// The billboard particles' draw, shared by every path that draws them (full res, the half-res
+// pass and the mixed-resolution edge pass of quarter res): one view's batches into the bound
+// target, each with its technique's program (lit or not, classified or not, its contrast
+// power's own build), blend mode, depth test and uniforms, trimmed polygons or full quads. It
+// owns what those draws read: the particle programs, the atlas and its trimmed shapes, the
+// colour ramps, the instance stream and the scene depth's sampler.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "ColorRampTexture.h"
+#include "DrawList.h"
+#include "FrameSettings.h"
+#include "GlStateGuard.h"
+#include "InstanceStream.h"
+#include "ProgramCache.h"
+#include "ScreenTiles.h"
+#include "SmokeAtlas.h"
+#include "fx/HostAdapter.h"
+
+namespace fx {
+
+class FadeClassifier;
+
+/// One view's recorded draw, shared with the pass bodies of every path until the host has run
+/// them.
+struct ParticleView {
+    ViewInfo view;
+    DrawList list;
+    FrameSettings settings;    ///< the frame's settings, read once when the view was declared
+    bool reversedZ = false;    ///< view.depth is ReversedZ
+    ScreenRect rect;           ///< quarter res: where the particles can be
+    ScreenTiles tiles;         ///< quarter res: the same, as screen tiles
+    Target opacity;            ///< the opacity map of this frame (invalid: unshadowed)
+    glm::mat4 worldToShadow{1.0f};
+    bool lit() const { return settings.light.on; }
+};
+
+/// What one pass hands the draw: its textures (0: none) and how its target is tested.
+struct DrawInputs {
+    uint32_t sceneDepth = 0;  ///< linear depth of the bound target's size (0 when no batch needs it)
+    bool quarterRes = false;  ///< the quarter-res programs (HardLinearDepth for hard)
+    /// The bound target's own z-buffer was filled (the half-res z-test, or the mixed-res edge
+    /// mask): every batch is z-tested (GEQUAL, LEQUAL under standard depth).
+    bool zTested = false;
+    uint32_t opacity = 0;                  ///< the opacity map (lit smoke)
+    uint32_t tiles = 0, coarse = 0;        ///< the fade classifier's tiles (0: unclassified)
+};
+
+class ParticleDraw {
+public:
+    /// Texture units of the particle draws (all below GlStateGuard::kTextureUnits).
+    static constexpr int kAtlasUnit = 0, kRampUnit = 1, kSceneDepthUnit = 2, kOpacityUnit = 3;
+
+    ParticleDraw() = default;
+
+    /// Loads the atlas (inside a guard): false with "path: reason" in *error.
+    bool loadAtlas(const std::string& dataDir, std::string* error) { return atlas_.load(dataDir, error); }
+    /// Once the programs built: the stream, the sampler, the ramp texture and the shape tables.
+    void create();
+
+    /// Draws every batch of `view` into the bound target (inside the pass's GlStateGuard).
+    void draw(const ParticleView& view, const DrawInputs& in);
+
+    /// The running program cache (ProgramCache.h: filled by prepare and reloads, never by a
+    /// draw); a shader reload swaps in a new one (the old one is returned).
+    ProgramCache& programs() { return *programs_; }
+    std::unique_ptr<ProgramCache> swapPrograms(std::unique_ptr<ProgramCache> next) {
+        programs_.swap(next);
+        return next;
+    }
+    const SmokeAtlas& atlas() const { return atlas_; }
+    ColorRampTexture& ramp() { return ramp_; }
+    InstanceStream& stream() { return stream_; }
+    const InstanceStream& stream() const { return stream_; }
+
+private:
+    /// Sets the FX_LIT uniforms of `p` for `batch` (the program is in use).
+    void setLightUniforms(const ParticleProgram& p, const DrawBatch& batch, const ParticleView& view,
+                          uint32_t opacity) const;
+
+    std::unique_ptr<ProgramCache> programs_ = std::make_unique<ProgramCache>();
+    SmokeAtlas atlas_;
+    ColorRampTexture ramp_;
+    InstanceStream stream_;
+    NearestSampler depthSampler_;        ///< the scene depth's unit, whatever sampling the host set
+    std::vector<glm::vec4> shapeTable_;  ///< atlas_.shapes().packed(), uploaded per draw
+    std::vector<glm::vec4> discTable_;   ///< the same for spheres (TrimmedShapes::Clip::Disc)
+    std::vector<glm::vec4> discInfo_;    ///< and their (inradius, area share)
+};
+
+}  // namespace fx

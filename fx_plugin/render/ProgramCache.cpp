@@ -1,0 +1,194 @@
+#include "ProgramCache.h"
+
+#include <cmath>
+
+#include "render/PrivateGl.h"
+
+#include "DrawList.h"
+#include "ShaderLoader.h"
+
+namespace fx {
+namespace {
+
+struct VariantSource {
+    const char* fragment;
+    const char* defines;
+};
+
+constexpr VariantSource kSources[ProgramCache::VariantCount] = {
+    {"fs_particles_hard.glsl", ""},
+    {"fs_particles_hard.glsl", "#define FX_LINEAR_DEPTH_TEST 1\n"},
+    {"fs_particles_soft.glsl", ""},
+    {"fs_particles_spherical.glsl", "#define FX_SPHERICAL 1\n"},
+    {"fs_particles_soft.glsl", "#define FX_GENERAL_POWER 1\n"},
+};
+
+ParticleProgram locate(GLuint program) {
+    ParticleProgram p;
+    p.program = program;
+    p.view = glGetUniformLocation(program, "uView");
+    p.proj = glGetUniformLocation(program, "uProj");
+    p.nearPlane = glGetUniformLocation(program, "uNear");
+    p.farPlane = glGetUniformLocation(program, "uFar");
+    p.slopeMax = glGetUniformLocation(program, "uSlopeMax");
+    p.rampRow = glGetUniformLocation(program, "uRampRow");
+    p.blendMode = glGetUniformLocation(program, "uBlendMode");
+    p.softScale = glGetUniformLocation(program, "uSoftScale");
+    p.contrastPower = glGetUniformLocation(program, "uContrastPower");
+    p.nearFade = glGetUniformLocation(program, "uNearFade");
+    p.atlas = glGetUniformLocation(program, "uAtlas");
+    p.ramp = glGetUniformLocation(program, "uRamp");
+    p.sceneDepth = glGetUniformLocation(program, "uSceneDepth");
+    p.trimmed = glGetUniformLocation(program, "uTrimmed");
+    p.shapeBuckets = glGetUniformLocation(program, "uShapeBuckets");
+    p.lodScale = glGetUniformLocation(program, "uLodScale");
+    p.shapes = glGetUniformLocation(program, "uShapes");
+    p.shapeInfo = glGetUniformLocation(program, "uShapeInfo");
+    p.pixelSlope = glGetUniformLocation(program, "uPixelSlope");
+    p.powerWhole = glGetUniformLocation(program, "uPowerWhole");
+    p.powerHalf = glGetUniformLocation(program, "uPowerHalf");
+    p.sunView = glGetUniformLocation(program, "uSunView");
+    p.sunColor = glGetUniformLocation(program, "uSunColor");
+    p.ambient = glGetUniformLocation(program, "uAmbient");
+    p.normalStrength = glGetUniformLocation(program, "uNormalStrength");
+    p.scattering = glGetUniformLocation(program, "uScattering");
+    p.anisotropy = glGetUniformLocation(program, "uAnisotropy");
+    p.absorption = glGetUniformLocation(program, "uAbsorption");
+    p.shadowed = glGetUniformLocation(program, "uShadowed");
+    p.viewToShadow = glGetUniformLocation(program, "uViewToShadow");
+    p.opacity = glGetUniformLocation(program, "uOpacity");
+    p.tiles = glGetUniformLocation(program, "uTiles");
+    p.tilesCoarse = glGetUniformLocation(program, "uTilesCoarse");
+    p.viewSize = glGetUniformLocation(program, "uViewSize");
+    return p;
+}
+
+void addOnce(const ProgramCache::Key& key, std::vector<ProgramCache::Key>* keys) {
+    for (const ProgramCache::Key& k : *keys) {
+        if (k == key) return;
+    }
+    keys->push_back(key);
+}
+
+const ParticleProgram kNone{};
+
+}  // namespace
+
+uint32_t ProgramCache::Key::bits() const {
+    return uint32_t(variant) | (lit ? 1u << 3 : 0u) | (classified ? 1u << 4 : 0u) | (uint32_t(powerSteps + 1) << 5);
+}
+
+std::string ProgramCache::Key::defines() const {
+    std::string d = classified ? "#define FX_CLASSIFY 1\n" : "";
+    d += kSources[variant].defines;
+    if (powerSteps >= 0) d += "#define FX_POWER_STEPS " + std::to_string(powerSteps) + "\n";
+    if (lit) d += "#define FX_LIT 1\n";
+    return d;
+}
+
+ProgramCache::~ProgramCache() {
+    for (auto& entry : built_) glDeleteProgram(entry.second.program);
+}
+
+int ProgramCache::build(const std::vector<Key>& keys, std::vector<std::string>* errors) {
+    int compiled = 0;
+    for (const Key& key : keys) {
+        if (tried(key)) continue;
+        tried_[key.bits()] = true;
+        order_.push_back(key);
+        std::string error;
+        const GLuint program =
+            read_ ? buildProgram(read_, "vs_particles.glsl", kSources[key.variant].fragment, key.defines(), &error) : 0;
+        if (read_) ++compiled;
+        if (!program) {
+            errors->push_back(read_ ? error : std::string(kSources[key.variant].fragment) +
+                                                  ":0: the particle programs have no shader sources");
+            continue;
+        }
+        built_[key.bits()] = locate(program);
+    }
+    return compiled;
+}
+
+const ParticleProgram* ProgramCache::find(const Key& key) const {
+    const auto it = built_.find(key.bits());
+    return it == built_.end() ? nullptr : &it->second;
+}
+
+const ParticleProgram& ProgramCache::get(Variant v, bool lit, bool classified) const {
+    const ParticleProgram* p = find(Key{v, lit, classified, -1});
+    return p ? *p : kNone;
+}
+
+const ParticleProgram& ProgramCache::get(Variant v, bool lit, float contrastPower, bool classified) const {
+    const ParticleProgram& general = get(v, lit, classified);
+    int whole = 0, half = 0;
+    if (v != Soft || !general.program || !halfWholePower(contrastPower, &whole, &half)) return general;
+    const ParticleProgram* own = find(Key{v, lit, classified, 2 * whole + half});
+    return own ? *own : general;
+}
+
+std::vector<ProgramCache::Key> ProgramCache::techniqueKeys() {
+    std::vector<Key> keys;
+    for (bool lit : {false, true}) {
+        for (int v = 0; v < VariantCount; ++v) keys.push_back(Key{Variant(v), lit, false, -1});
+    }
+    return keys;
+}
+
+std::vector<ProgramCache::Key> ProgramCache::classifiedKeys() {
+    std::vector<Key> keys;
+    for (bool lit : {false, true}) {
+        for (Variant v : {Soft, SoftGeneralPower, Spherical}) keys.push_back(Key{v, lit, true, -1});
+    }
+    return keys;
+}
+
+void ProgramCache::addDrawKeys(Technique technique, float contrastPower, bool quarterRes, bool classified,
+                               std::vector<Key>* keys) {
+    const Variant v = variantFor(technique, quarterRes, contrastPower);
+    // Quarter res is never classified (FadeClassifier.h), nor is hard smoke.
+    const bool classify = classified && !quarterRes && v != HardZBuffer && v != HardLinearDepth;
+    int whole = 0, half = 0;
+    const int steps = v == Soft && halfWholePower(contrastPower, &whole, &half) ? 2 * whole + half : -1;
+    for (bool lit : {false, true}) {
+        addOnce(Key{v, lit, classify, -1}, keys);
+        if (steps >= 0) addOnce(Key{v, lit, classify, steps}, keys);
+    }
+}
+
+bool ProgramCache::halfWholePower(float contrastPower, int* whole, int* half) {
+    const float twice = 2.0f * contrastPower;
+    const float rounded = std::round(twice);
+    if (!(std::fabs(twice - rounded) <= 1e-6f * std::fmax(1.0f, twice)) || rounded < 0.0f || rounded > 32.0f) {
+        return false;
+    }
+    const int steps = int(rounded);
+    *whole = steps / 2;
+    *half = steps % 2;
+    return true;
+}
+
+ProgramCache::Variant ProgramCache::variantFor(Technique technique, bool quarterRes, float contrastPower) {
+    switch (technique) {
+    case Technique::Hard: return quarterRes ? HardLinearDepth : HardZBuffer;
+    case Technique::Spherical: return Spherical;
+    case Technique::Soft:
+    case Technique::Mega:  // drawn by its own renderer; soft where a billboard stands in
+    case Technique::FromReaction: break;
+    }
+    int whole = 0, half = 0;
+    return halfWholePower(contrastPower, &whole, &half) ? Soft : SoftGeneralPower;
+}
+
+uint32_t ProgramCache::usableTechniques(bool quarterRes) const {
+    uint32_t mask = 0;
+    for (Technique t : {Technique::Hard, Technique::Soft, Technique::Spherical}) {
+        if (get(variantFor(t, quarterRes)).program) mask |= techniqueBit(t);
+    }
+    // Soft draws with either soft program (by contrast_power): both or neither.
+    if (!get(SoftGeneralPower).program) mask &= ~techniqueBit(Technique::Soft);
+    return mask;
+}
+
+}  // namespace fx

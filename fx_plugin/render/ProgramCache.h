@@ -1,0 +1,119 @@
+#pragma once
+// The billboard particle programs, one cache keyed by the variant a batch draws with:
+//   variant          the technique's shaders and target kind (vs_particles + ...):
+//     HardZBuffer      fs_particles_hard                         (full res, z-buffer test)
+//     HardLinearDepth  fs_particles_hard, FX_LINEAR_DEPTH_TEST   (quarter res, mixed-res edges)
+//     Soft             fs_particles_soft  (contrast_power whole or half-whole, <= 16: multiplies
+//                                          and a sqrt)
+//     Spherical        fs_particles_spherical, FX_SPHERICAL
+//     SoftGeneralPower fs_particles_soft, FX_GENERAL_POWER (any contrast_power: pow)
+//   lit              FX_LIT: particles_common.glsl's smokeLight, for reactions under a scene light
+//   classified       FX_CLASSIFY: fade classification (FadeClassifier.h); soft and spherical only
+//   power            FX_POWER_STEPS = 2 contrast_power: Soft with the curve's multiplies folded
+//                    (power 1 draws no curve at all); -1 = no power folded
+// Key::bits() packs them; nothing else names a program. The resolution path is in the variant
+// (quarter res and mixed-res edges draw HardLinearDepth for hard; quarter res is never classified);
+// the depth convention is no variant: the programs read linear depth, and reversed-Z changes only
+// the depth function the pass sets.
+//
+// Contract:
+//  - build(keys) is the only call that compiles. It runs from prepareGl and a shader reload (and,
+//    for a host that changed options or reactions without calling prepareGl again, from
+//    declarePasses before any pass); get() and find() never compile, so no pass ever does.
+//  - Each key is tried once per cache: a failure is appended to *errors once ("file:line:
+//    message" lines) and the key stays unbuilt; the other keys still build.
+//  - Every build of one cache reads the one snapshot it was made with (ShaderLoader.h): a
+//    variant built later is built from the files that went live, never a later broken edit.
+//  - get(v, lit, power) falls back to the variant's general build where the power's own was not
+//    built (or failed), and returns a program 0 where the variant itself did not build: its
+//    technique is not drawn (usableTechniques), the others still are.
+//  - Changes no bound GL state (no glUseProgram); deletes every program it built.
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "base/TextIo.h"
+#include "fx/Plugin.h"
+
+namespace fx {
+
+/// Uniform locations shared by every particle program (-1 where a program does not use one).
+struct ParticleProgram {
+    uint32_t program = 0;
+    int view = -1, proj = -1, nearPlane = -1, farPlane = -1, slopeMax = -1;
+    int rampRow = -1, blendMode = -1, softScale = -1, contrastPower = -1, nearFade = -1;
+    int atlas = -1, ramp = -1, sceneDepth = -1;
+    int trimmed = -1, shapeBuckets = -1, lodScale = -1, shapes = -1, shapeInfo = -1, pixelSlope = -1;
+    int powerWhole = -1, powerHalf = -1;
+    // FX_CLASSIFY only (FadeClassifier.h).
+    int tiles = -1, tilesCoarse = -1, viewSize = -1;
+    // FX_LIT only.
+    int sunView = -1, sunColor = -1, ambient = -1, normalStrength = -1, scattering = -1, anisotropy = -1,
+        absorption = -1, shadowed = -1, viewToShadow = -1, opacity = -1;
+};
+
+class ProgramCache {
+public:
+    enum Variant : int { HardZBuffer = 0, HardLinearDepth, Soft, Spherical, SoftGeneralPower, VariantCount };
+
+    struct Key {
+        Variant variant = HardZBuffer;
+        bool lit = false;
+        bool classified = false;
+        int powerSteps = -1;  ///< 2 contrast_power, 0 .. kMaxPowerSteps; -1: none (Soft only)
+        /// variant in bits 0-2, lit 3, classified 4, powerSteps + 1 in 5-10.
+        uint32_t bits() const;
+        /// The #defines that select this variant (prepended to each stage).
+        std::string defines() const;
+        bool operator==(const Key& o) const { return bits() == o.bits(); }
+    };
+
+    static constexpr int kMaxPowerSteps = 32;  ///< contrast_power 16
+
+    /// A cache with no sources: every build fails (for a renderer not loaded yet).
+    ProgramCache() = default;
+    /// Every build reads `snapshot` (snapshotShaderReader: one version of each file).
+    explicit ProgramCache(ShaderReader snapshot) : read_(std::move(snapshot)) {}
+    ~ProgramCache();
+    ProgramCache(const ProgramCache&) = delete;
+    ProgramCache& operator=(const ProgramCache&) = delete;
+
+    /// Builds each key of `keys` not tried before; appends one "file:line: message" block per
+    /// key that failed. Returns how many programs it compiled.
+    int build(const std::vector<Key>& keys, std::vector<std::string>* errors);
+    /// The program of `key`, or null where it was never built or failed. Never builds.
+    const ParticleProgram* find(const Key& key) const;
+    bool tried(const Key& key) const { return tried_.count(key.bits()) != 0; }
+    /// The variant's general build (program 0 when it did not build). Never builds.
+    const ParticleProgram& get(Variant v, bool lit = false, bool classified = false) const;
+    /// The program that draws a batch of `v` with `contrastPower`: for Soft with a whole or
+    /// half-whole power, that power's own build where it was built, else get(v, lit, classified).
+    const ParticleProgram& get(Variant v, bool lit, float contrastPower, bool classified = false) const;
+    /// Every key tried (built or failed), in the order tried: a reload builds the same set anew.
+    const std::vector<Key>& keys() const { return order_; }
+    /// techniqueBit() mask of the techniques drawable on a full-res or a quarter-res target.
+    uint32_t usableTechniques(bool quarterRes) const;
+
+    /// Every variant, lit and unlit, unclassified: what prepareGl always builds (a technique
+    /// whose general program fails is not drawn; the run-time override can pick any of them).
+    static std::vector<Key> techniqueKeys();
+    /// The classified builds of soft and spherical, lit and unlit (fade classification on).
+    static std::vector<Key> classifiedKeys();
+    /// Adds (once each) the keys a batch of `technique` with `contrastPower` draws with, lit and
+    /// unlit, on a quarter-res target or not, classified or not.
+    static void addDrawKeys(Technique technique, float contrastPower, bool quarterRes, bool classified,
+                            std::vector<Key>* keys);
+    /// `contrastPower` picks between the two soft programs (see above).
+    static Variant variantFor(Technique technique, bool quarterRes, float contrastPower = 1.0f);
+    /// contrast_power = whole + half / 2 with whole in [0, 16], half 0 or 1: true and the split.
+    static bool halfWholePower(float contrastPower, int* whole, int* half);
+
+private:
+    ShaderReader read_;
+    std::unordered_map<uint32_t, ParticleProgram> built_;
+    std::unordered_map<uint32_t, bool> tried_;
+    std::vector<Key> order_;
+};
+
+}  // namespace fx

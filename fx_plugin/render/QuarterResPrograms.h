@@ -1,0 +1,56 @@
+#pragma once
+// The GL programs of the quarter-res passes (QuarterResPath.h) and their uniform locations: the
+// depth downsample, the half-res z-fill, the edge mask of mixed resolution and the composite's
+// three builds, all drawn over the screen tiles' runs (ScreenTiles.h) from one stream buffer.
+// A set is built whole and swapped whole by a shader reload.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "GlStateGuard.h"
+#include "ScreenTiles.h"
+
+namespace fx {
+
+struct QuarterResPrograms {
+    QuarterResPrograms() = default;
+    ~QuarterResPrograms();
+    QuarterResPrograms(const QuarterResPrograms&) = delete;
+    QuarterResPrograms& operator=(const QuarterResPrograms&) = delete;
+
+    /// Builds every program (vs_particles_tiles + its fragment shader); failures go to *errors.
+    void build(const std::string& shaderDir, std::vector<std::string>* errors);
+    /// The downsample and the composites built: quarter res can draw.
+    bool ok() const {
+        return downsample && composite[0].program && composite[1].program && composite[2].program && tileVao_;
+    }
+    /// The half-res z-test's program built (without it the quarter pass is simply not z-tested).
+    bool halfZOk() const { return halfZ != 0; }
+    /// The edge mask program built (without it mixed resolution falls back to depth-aware).
+    bool mixedOk() const { return edgeMask != 0; }
+
+    /// Draws `tiles`' runs with the bound program (its uViewSize at `viewSizeLoc`), the vertices
+    /// uploaded to this set's own stream buffer.
+    void drawTiles(int viewSizeLoc, const ScreenTiles& tiles);
+
+    NearestSampler hostDepth;  ///< the host's scene depth, read whatever sampling it set
+    uint32_t downsample = 0;
+    int downsampleDepthLoc = -1, downsampleViewLoc = -1;
+    uint32_t halfZ = 0;
+    int halfZDepthLoc = -1, halfZFromLinearLoc = -1, halfZFarLoc = -1, halfZViewLoc = -1;
+    /// The composite's builds: depth-aware, plain bilinear, mixed resolution.
+    enum CompositeVariant { DepthAware, Bilinear, Mixed, CompositeVariantCount };
+    struct CompositeProgram {
+        uint32_t program = 0;
+        int halfColor = -1, halfDepth = -1, sceneDepth = -1, threshold = -1, edgeColor = -1, viewSize = -1;
+    };
+    CompositeProgram composite[CompositeVariantCount];
+    uint32_t edgeMask = 0;
+    int maskHalfDepthLoc = -1, maskSceneDepthLoc = -1, maskThresholdLoc = -1, maskPassLoc = -1, maskFailLoc = -1,
+        maskViewLoc = -1;
+
+private:
+    uint32_t tileVao_ = 0, tileVbo_ = 0;
+};
+
+}  // namespace fx

@@ -1,0 +1,59 @@
+#pragma once
+// Where a view's particles can be on screen (no GL but the scissor): the rect and the 16 px tiles
+// their projected footprints touch. The quarter-res passes (QuarterResPath.h) and the
+// mega-particles (MegaRenderer.h) keep their fixed full-screen costs inside them, and the
+// immediate path reads the scene depth only there.
+#include <cstdint>
+#include <vector>
+
+#include "InstanceStream.h"
+#include "fx/Types.h"
+
+namespace fx {
+
+/// The part of the view the particles can touch, in full-resolution pixels ([x0, x1) x
+/// [y0, y1), GL's bottom-up rows); `whole` when it is the whole view (a particle reaches the
+/// near plane, or the bound covers it anyway).
+struct ScreenRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool whole = true;
+};
+
+/// Finer than the rect: the screen tiles (kTileSize pixels square) that some particle's bound,
+/// grown by kTileBorder pixels, touches, as horizontal runs. The downsample, the half-res
+/// z-fill, the edge mask and the composite draw these runs instead of one triangle over the
+/// rect, so their per-pixel cost follows the smoke's footprint: in fxbench's standard scene
+/// the rect spans about 70 % of the view while the smoke covers about 24 %.
+/// The border: the composite's bilinear footprint reaches 2 pixels, the half-res texels it reads
+/// hold depth from 2 more; 6 keeps every pixel whose result can differ from "no smoke" inside.
+struct ScreenTiles {
+    static constexpr int kTileSize = 16;
+    static constexpr int kTileBorder = 6;
+    std::vector<float> vertices;  ///< x, y in full-resolution pixels, 6 per run (2 triangles)
+    std::vector<uint8_t> grid;    ///< scratch: tiles marked this frame (kept for its capacity)
+    int64_t pixels = 0;           ///< pixels the runs cover
+    int viewWidth = 0, viewHeight = 0;
+    int runs() const { return int(vertices.size() / 12); }
+};
+
+/// What a particle's footprint is bounded by. Box: the view-space cube of half-size 0.71 size
+/// around its centre (holds a rotated billboard's corners and a sphere of diameter size,
+/// which a spherical particle's quad at the sphere's front covers). Billboard: the square of
+/// half-size 0.71 size in the view plane through the centre, exactly where vs_particles.glsl
+/// puts a billboard's corners; much tighter for large particles near the camera.
+enum class Footprint { Box, Billboard };
+
+/// Conservative bound of `instances` on screen, each particle's footprint projected. Empty
+/// rect (x0 == x1) when none is in front of the camera (one wholly behind the near plane is
+/// clipped away and counts for nothing); the whole view when one straddles the near plane or
+/// has a non-finite position or size. With `tiles`, also their tile runs (one run over the whole
+/// view for a whole-view rect, none for an empty one); the vectors keep their capacity, so a
+/// steady frame allocates nothing.
+ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, int count,
+                      ScreenTiles* tiles = nullptr, Footprint footprint = Footprint::Box);
+
+/// Scissor to `rect` on a target of w x h whose pixels are the view's times `scale` (0.5: half
+/// resolution), grown by `border` texels; no scissor for a whole-view rect.
+void scissorTo(const ScreenRect& rect, float scale, int border, int w, int h);
+
+}  // namespace fx
