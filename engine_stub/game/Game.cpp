@@ -8,9 +8,9 @@
 
 #include <unistd.h>
 
-#include "game/Trace.h"
 #include "gl/Gl.h"
 #include "gl/Paths.h"
+#include "platform/Trace.h"
 #include "scene/SceneLoader.h"
 
 namespace cube {

@@ -17,8 +17,8 @@
 #include "platform/Platform.h"
 #include "rtt/FrameGraph.h"
 #include "rtt/RenderTargetPool.h"
-#include "scene/cubeScene.h"
-#include "scene/cubeView.h"
+#include "view/cubeScene.h"
+#include "view/cubeView.h"
 
 namespace cube {
 

@@ -4,10 +4,10 @@
 
 #include "game/Game.h"
 #include "game/TechniqueModes.h"
-#include "game/Trace.h"
+#include "platform/Trace.h"
 #include "rtt/Blit.h"
 #include "rtt/Readback.h"
-#include "scene/Buckets.h"
+#include "view/Buckets.h"
 
 namespace cube {
 

@@ -3,12 +3,12 @@
 #include <cstdio>
 
 #include "game/TechniqueModes.h"
-#include "game/Trace.h"
 #include "game/Vehicle.h"
 #include "gl/Paths.h"
+#include "platform/Trace.h"
 #include "scene/LegacySmokeDesc.h"
 #include "scene/cubeParticleSystem.h"
-#include "scene/cubeScene.h"
+#include "view/cubeScene.h"
 
 namespace cube {
 

@@ -8,17 +8,11 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/WheelState.h"
+
 namespace cube {
 
 struct SceneData;
-
-struct WheelState {
-    glm::vec3 contact{0.0f};   ///< contact patch, world space
-    glm::vec3 velocity{0.0f};  ///< m/s, world space
-    float slip = 0.0f;         ///< 0 rolling .. 1 spinning
-    std::string surface;       ///< from the scene's ground tags ("" off the map)
-    bool rear = false;
-};
 
 /// Script pose at time t (seconds): car centre on the ground plane, heading (radians about +Y,
 /// 0 = facing +X) and the slip of the rear and front wheels.

@@ -6,7 +6,7 @@
 #include <climits>
 #include <vector>
 
-#include "io/SafeFile.h"
+#include "textio/SafeFile.h"
 
 namespace cube {
 
@@ -27,7 +27,7 @@ bool readPng(const std::string& path, ImageRGBA8* image, std::string* error) {
     // Through the shared opener: regular files only, never blocking on a FIFO, 64 MiB at most.
     std::vector<unsigned char> bytes;
     std::string why;
-    if (!fxio::readFileBounded(path, size_t(64) << 20, &bytes, nullptr, &why)) {
+    if (!textio::readFileBounded(path, size_t(64) << 20, &bytes, nullptr, &why)) {
         *error = path + ": cannot read image: " + why;
         return false;
     }

@@ -1,7 +1,7 @@
 #include "gl/Program.h"
 
 #include "gl/Paths.h"
-#include "shader/ShaderSource.h"
+#include "textio/ShaderSource.h"
 
 namespace cube::gl {
 
@@ -18,7 +18,7 @@ std::string infoLog(GLuint object, GetIv getIv, GetLog getLog) {
     return log.c_str();
 }
 
-GLuint compile(GLenum stage, const std::string& file, const fx::ShaderSource& source, std::string* error) {
+GLuint compile(GLenum stage, const std::string& file, const textio::ShaderSource& source, std::string* error) {
     GLuint s = glCreateShader(stage);
     const char* src = source.text.c_str();
     glShaderSource(s, 1, &src, nullptr);
@@ -26,7 +26,7 @@ GLuint compile(GLenum stage, const std::string& file, const fx::ShaderSource& so
     GLint ok = 0;
     glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
     if (!ok) {
-        *error = fx::translateInfoLog(infoLog(s, glGetShaderiv, glGetShaderInfoLog), source.files, file);
+        *error = textio::translateInfoLog(infoLog(s, glGetShaderiv, glGetShaderInfoLog), source.files, file);
         if (error->empty()) *error = file + ":0: compile failed (the driver gave no log)";
         glDeleteShader(s);
         return 0;
@@ -53,12 +53,14 @@ bool Program::load(const std::string& vsFile, const std::string& fsFile, Program
                    std::string* error, const std::string& defines, const std::string& dirIn) {
     const std::string dir = dirIn.empty() ? paths::shaders() : dirIn;
     // The project's one source loader (includes, #line, named errors); GL through the engine's glad.
-    const fx::ShaderReader read = fx::folderShaderReader(dir);
+    const textio::ShaderReader read = textio::folderShaderReader(dir);
     const std::string extra = defines.empty() ? std::string() : defines + "\n";
-    fx::ShaderSource vsSrc, fsSrc;
-    const auto implied = fx::VersionLine::Implied;  // the engine's files start without #version
-    if (fx::expandShaderSource(read, vsFile, extra, &vsSrc, error, implied) != fx::ShaderError::None) return false;
-    if (fx::expandShaderSource(read, fsFile, extra, &fsSrc, error, implied) != fx::ShaderError::None) return false;
+    textio::ShaderSource vsSrc, fsSrc;
+    const auto implied = textio::VersionLine::Implied;  // the engine's files start without #version
+    if (textio::expandShaderSource(read, vsFile, extra, &vsSrc, error, implied) != textio::ShaderError::None)
+        return false;
+    if (textio::expandShaderSource(read, fsFile, extra, &fsSrc, error, implied) != textio::ShaderError::None)
+        return false;
     GLuint vs = compile(GL_VERTEX_SHADER, vsFile, vsSrc, error);
     if (!vs) return false;
     GLuint fs = compile(GL_FRAGMENT_SHADER, fsFile, fsSrc, error);

@@ -1,6 +1,6 @@
 #pragma once
 // GLSL programs loaded from shaders/ (vs_*.glsl / fs_*.glsl) through the project's one source
-// loader (fx_plugin/shader/ShaderSource.h: `#include "file"` from the same folder, `#line`
+// loader (textio/ShaderSource.h: `#include "file"` from the same folder, `#line`
 // markers that carry the file). Compile and link errors are reported as "file:line: message"
 // with the original file and line, not the concatenated source's.
 #include <string>

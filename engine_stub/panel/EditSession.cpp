@@ -5,7 +5,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "io/SafeFile.h"
+#include "textio/SafeFile.h"
 #include "panel/YamlTextEdit.h"
 
 namespace cube::panel {
@@ -15,9 +15,9 @@ namespace {
 constexpr size_t kMaxFileBytes = 4u << 20;  // the plugin's limit for a reaction file
 
 bool readText(const std::string& path, std::string* text, std::string* error) {
-    fxio::FileError code = fxio::FileError::None;
+    textio::FileError code = textio::FileError::None;
     std::string why;
-    if (fxio::readFileBounded(path, kMaxFileBytes, text, &code, &why)) return true;
+    if (textio::readFileBounded(path, kMaxFileBytes, text, &code, &why)) return true;
     *error = path + ": cannot read: " + why;
     return false;
 }

@@ -9,7 +9,7 @@
 #include "panel/PanelHelpers.h"
 #include "panel/YamlTextEdit.h"
 #include "render/PanelRenderer.h"
-#include "scene/Buckets.h"
+#include "view/Buckets.h"
 
 namespace cube {
 

@@ -8,7 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "io/SafeFile.h"
+#include "textio/SafeFile.h"
 
 namespace cube {
 namespace {
@@ -23,7 +23,7 @@ std::string notRegularFile(const std::string& path) {
     const bool statted = ::fstat(fd, &st) == 0;
     ::close(fd);
     if (!statted || S_ISREG(st.st_mode)) return "";
-    return std::string("not a regular file (") + fxio::fileKindName(st.st_mode) + ")";
+    return std::string("not a regular file (") + textio::fileKindName(st.st_mode) + ")";
 }
 
 }  // namespace

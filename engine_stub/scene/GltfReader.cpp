@@ -5,7 +5,7 @@
 #include <cstring>
 #include <filesystem>
 
-#include "io/SafeFile.h"
+#include "textio/SafeFile.h"
 
 namespace cube::gltf {
 
@@ -48,7 +48,7 @@ bool fsReadWholeFile(std::vector<unsigned char>* out, std::string* err, const st
     std::string why;
     if (!insideBase(path, *state)) {
         why = "'" + path + "' resolves to a place outside the model's folder";
-    } else if (fxio::readFileBounded(path, size_t(kMaxFileBytes), out, nullptr, &why)) {
+    } else if (textio::readFileBounded(path, size_t(kMaxFileBytes), out, nullptr, &why)) {
         return true;
     }
     if (err) *err += why;
@@ -134,10 +134,10 @@ bool checkGlbLayout(const std::vector<unsigned char>& bytes, std::string* why, u
 }  // namespace
 
 bool readGltfFile(const std::string& path, GltfFile* file, SceneError* error) {
-    fxio::FileError code = fxio::FileError::None;
+    textio::FileError code = textio::FileError::None;
     std::string why;
-    if (!fxio::readFileBounded(path, size_t(kMaxFileBytes), &file->bytes, &code, &why)) {
-        if (code == fxio::FileError::TooLarge)
+    if (!textio::readFileBounded(path, size_t(kMaxFileBytes), &file->bytes, &code, &why)) {
+        if (code == textio::FileError::TooLarge)
             return fail(path, error, SceneErrorCode::TooLarge, "file is " + why);
         if (why == "no such file")
             return fail(path, error, SceneErrorCode::FileNotFound,

@@ -9,12 +9,10 @@
 #include <utility>
 #include <vector>
 
-#include <yaml-cpp/depthguard.h>
-#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
-#include "io/SafeFile.h"
-#include "io/YamlPreflight.h"
+#include "textio/SafeFile.h"
+#include "textio/YamlPreflight.h"
 
 namespace cube {
 
@@ -241,11 +239,11 @@ private:
 };
 
 bool loadChecked(const std::string& text, Report& report, std::vector<LegacySmokeDesc>* result) {
-    // The reaction loader's first pass (io/YamlPreflight.h): size, text, syntax, one document.
-    fxio::YamlProblem problem;
+    // The reaction loader's first pass (textio/YamlPreflight.h): size, text, syntax, one document.
+    textio::YamlProblem problem;
     bool hasDocument = false;
-    if (!fxio::preflightYaml(text, kLegacyMaxFileBytes, kLegacyMaxNesting, &problem, &hasDocument)) {
-        report.add(problem.code, problem.mark, "", problem.message);
+    if (!textio::preflightYaml(text, kLegacyMaxFileBytes, kLegacyMaxNesting, &problem, &hasDocument)) {
+        report.add(textio::errorCodeAs<ErrorCode>(problem.code), problem.mark, "", problem.message);
         return false;
     }
     const YAML::Node root = YAML::Load(text);
@@ -334,15 +332,15 @@ bool loadLegacySmokeText(const std::string& text, const std::string& nameForMess
 
 bool loadLegacySmoke(const std::string& path, std::vector<LegacySmokeDesc>* out, fx::Diagnostics* diags) {
     std::string text;
-    fxio::FileError code = fxio::FileError::None;
+    textio::FileError code = textio::FileError::None;
     std::string why;
-    if (!fxio::readFileBounded(path, kLegacyMaxFileBytes, &text, &code, &why)) {
+    if (!textio::readFileBounded(path, kLegacyMaxFileBytes, &text, &code, &why)) {
         if (diags) {
             fx::Diagnostic d;
-            d.code = code == fxio::FileError::TooLarge ? ErrorCode::FileTooLarge : ErrorCode::FileNotFound;
+            d.code = code == textio::FileError::TooLarge ? ErrorCode::FileTooLarge : ErrorCode::FileNotFound;
             d.file = path;
-            d.message = (code == fxio::FileError::TooLarge ? "legacy smoke file is " : "cannot open legacy smoke file: ") +
-                        why + (code == fxio::FileError::NotRegular ? "; expected a .yaml file" : "");
+            d.message = (code == textio::FileError::TooLarge ? "legacy smoke file is " : "cannot open legacy smoke file: ") +
+                        why + (code == textio::FileError::NotRegular ? "; expected a .yaml file" : "");
             diags->push_back(std::move(d));
         }
         return false;

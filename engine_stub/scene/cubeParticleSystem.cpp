@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numeric>
 
-#include "game/Trace.h"
-#include "game/Vehicle.h"
+#include "platform/Trace.h"
+#include "scene/WheelState.h"
 
 namespace cube {
 

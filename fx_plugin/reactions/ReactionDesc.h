@@ -10,8 +10,8 @@
 #include <glm/glm.hpp>
 
 #include "fx/Plugin.h"  // Technique
-#include "sim/CurlNoise.h"  // TurbulenceDesc, VortexDesc
 #include "fx/Types.h"   // Surface
+#include "reactions/AirFieldDesc.h"  // TurbulenceDesc, VortexDesc
 
 namespace fx {
 

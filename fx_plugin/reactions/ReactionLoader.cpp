@@ -9,12 +9,9 @@
 #include <sstream>
 #include <system_error>
 
-#include <yaml-cpp/depthguard.h>    // YAML::DeepRecursion (not included by yaml.h)
-#include <yaml-cpp/eventhandler.h>  // YAML::EventHandler (idem)
 #include <yaml-cpp/yaml.h>
 
-#include "../io/SafeFile.h"
-#include "../io/YamlPreflight.h"
+#include "../base/TextIo.h"
 #include "ReactionSchema.h"
 #include "YamlCheck.h"
 
@@ -29,11 +26,11 @@ void add(Diagnostics* diags, ErrorCode code, const std::string& file, int line, 
 }
 
 bool loadTextChecked(const std::string& text, YamlCheck& check, ReactionSet* set) {
-    // Pass 1 (io/YamlPreflight.h): size, text, syntax anywhere, one document at most.
+    // Pass 1 (textio/YamlPreflight.h): size, text, syntax anywhere, one document at most.
     fxio::YamlProblem problem;
     bool hasDocument = false;
     if (!fxio::preflightYaml(text, kMaxFileBytes, kMaxNesting, &problem, &hasDocument)) {
-        check.report(problem.code, problem.mark, "", problem.message);
+        check.report(fxio::errorCodeAs<ErrorCode>(problem.code), problem.mark, "", problem.message);
         return false;
     }
 
@@ -95,7 +92,7 @@ bool loadReactionText(const std::string& text, const std::string& nameForMessage
 }
 
 bool readReactionFileText(const std::string& path, std::string* text, Diagnostics* diags) {
-    // One opener for every loader (io/SafeFile.h): regular files only, never blocks on a FIFO,
+    // One opener for every loader (textio/SafeFile.h): regular files only, never blocks on a FIFO,
     // never reads past the limit.
     fxio::FileError code = fxio::FileError::None;
     std::string why;

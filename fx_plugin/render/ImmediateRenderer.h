@@ -39,7 +39,7 @@
 #include "DepthMapping.h"
 #include "DepthLinearizer.h"
 #include "ImmediateTargetPool.h"
-#include "../src/ApiErrors.h"
+#include "../base/ApiErrors.h"
 
 namespace fx {
 

@@ -8,7 +8,7 @@
 
 #include "GlStateGuard.h"
 #include "ShaderLoader.h"
-#include "src/ApiErrors.h"
+#include "base/ApiErrors.h"
 
 namespace fx {
 namespace {

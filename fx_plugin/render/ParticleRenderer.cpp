@@ -9,7 +9,7 @@
 #include "GlStateGuard.h"
 #include "ShaderLoader.h"
 #include "reactions/TechniqueTable.h"
-#include "src/ApiErrors.h"
+#include "base/ApiErrors.h"
 
 namespace fx {
 namespace {

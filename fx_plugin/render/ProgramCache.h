@@ -33,8 +33,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "base/TextIo.h"
 #include "fx/Plugin.h"
-#include "shader/ShaderSource.h"
 
 namespace fx {
 

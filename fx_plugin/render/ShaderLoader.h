@@ -1,5 +1,5 @@
 #pragma once
-// The plugin's GLSL programs: sources through the project's one loader (shader/ShaderSource.h),
+// The plugin's GLSL programs: sources through the project's one loader (textio/ShaderSource.h),
 // read from the shaders embedded in the library (dir empty) or from a folder (dir, for live
 // edits), compiled and linked with the plugin's private GL table. Every failure is reported as
 // "file:line: message" lines naming the file the line is really in (an error inside
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "fx/Diagnostic.h"
-#include "shader/ShaderSource.h"
+#include "base/TextIo.h"
 
 namespace fx {
 

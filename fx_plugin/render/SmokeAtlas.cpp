@@ -5,7 +5,7 @@
 #include "render/PrivateGl.h"
 #include <stb_image.h>
 
-#include "io/SafeFile.h"
+#include "base/TextIo.h"
 #include "render/EmbeddedResources.h"
 
 namespace fx {

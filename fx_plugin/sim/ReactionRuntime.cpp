@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "CurlNoise.h"
 #include "Integrator.h"
 #include "Lifecycle.h"
 

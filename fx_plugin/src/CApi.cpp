@@ -12,7 +12,7 @@
 #include "CApiBridge.h"
 #include "PluginImpl.h"
 #include "../render/ImmediateRenderer.h"
-#include "../render/InstallParticleRenderer.h"
+#include "InstallParticleRenderer.h"
 
 extern "C" uint32_t fxApiVersion(void) { return FX_API_VERSION; }
 

@@ -6,7 +6,7 @@
 
 #include "fx/HostAdapter.h"
 #include "fx/fx.h"
-#include "ApiErrors.h"
+#include "../base/ApiErrors.h"
 
 namespace fx {
 

@@ -6,8 +6,8 @@
 #include "PluginImpl.h"
 #include "../reactions/ReactionKeyTable.h"
 #include "../reactions/TechniqueTable.h"
-#include "../render/InstallParticleRenderer.h"
 #include "../render/ShaderLoader.h"
+#include "InstallParticleRenderer.h"
 
 namespace fx {
 

@@ -24,7 +24,7 @@
 #include "../reactions/ReactionLibrary.h"
 #include "../render/LightState.h"
 #include "../sim/ReactionRuntime.h"
-#include "ApiErrors.h"
+#include "../base/ApiErrors.h"
 
 namespace fx {
 

@@ -4,8 +4,8 @@
 #include "PassChecks.h"
 
 #include "GlTestContext.h"
-#include "scene/FxFrameBuilder.h"
 #include "rtt/RenderTargetPool.h"
+#include "view/FxFrameBuilder.h"
 
 using namespace cube;
 

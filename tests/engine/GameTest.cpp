@@ -6,10 +6,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "GameTestUtil.h"
-#include "game/Trace.h"
 #include "gl/Gl.h"
 #include "gl/Paths.h"
-#include "scene/Buckets.h"
+#include "platform/Trace.h"
+#include "view/Buckets.h"
 
 using namespace cube;
 using cubetest::pixel;

@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "../engine/GameTestUtil.h"
-#include "game/Trace.h"
 #include "gl/Gl.h"
+#include "platform/Trace.h"
 
 using namespace cube;
 

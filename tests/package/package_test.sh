@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The plugin as a foreign engine gets it (ctest label "package"):
-#   1. copy the plugin's sources (fx_plugin/, its shaders, the atlas) to a scratch folder and
+#   1. copy the plugin's sources (fx_plugin/, textio/, its shaders, the atlas) to a scratch folder and
 #      build them ALONE: cmake -S fx_plugin (no top-level project, no GTest/GLFW/TinyGLTF/EGL);
 #   2. install into a prefix, then delete the copied sources and the build tree;
 #   3. check that no installed file names a path of the source or build tree;
@@ -22,7 +22,7 @@ log() { echo "package_test: $*"; }
 
 copy=$work/src
 mkdir -p "$copy/data"
-cp -r "$src/fx_plugin" "$src/shaders" "$copy/"
+cp -r "$src/fx_plugin" "$src/textio" "$src/shaders" "$copy/"
 cp "$src/data/smoke_atlas.png" "$src/data/smoke_normals.png" "$copy/data/"
 
 log "add_subdirectory(fx_plugin) from a foreign project that has a 'glad' target of its own"

@@ -1,13 +1,13 @@
-#include "shader/ShaderSource.h"
+#include "textio/ShaderSource.h"
 
 #include <cctype>
 #include <cstdlib>
 #include <set>
 #include <sstream>
 
-#include "io/SafeFile.h"
+#include "textio/SafeFile.h"
 
-namespace fx {
+namespace textio {
 namespace {
 
 // Line numbers carry the file: file k's line n is reported as k * kFileLineStride + n. Source-string
@@ -159,7 +159,7 @@ ShaderReader folderShaderReader(const std::string& dir) {
     return [dir](const std::string& name, std::string* text, std::string* why) {
         // Never blocks on a FIFO, reads regular files only, at most 1 MiB (a shader is a few KiB).
         std::string reason;
-        if (fxio::readFileBounded(dir + "/" + name, kMaxShaderBytes, text, nullptr, &reason)) return true;
+        if (textio::readFileBounded(dir + "/" + name, kMaxShaderBytes, text, nullptr, &reason)) return true;
         *why = "cannot open shader file \"" + dir + "/" + name + "\" (" + reason + ")";
         return false;
     };
@@ -204,4 +204,4 @@ std::string translateInfoLog(const std::string& log, const std::vector<std::stri
     return result;
 }
 
-}  // namespace fx
+}  // namespace textio

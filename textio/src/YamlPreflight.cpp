@@ -1,39 +1,18 @@
-#pragma once
-// The first pass both YAML loaders (reaction files in the plugin, the engine's legacy smoke file)
-// make before they build a node tree: the size limit, the text check (io/TextCheck.h), and an
-// events-only parse that finds syntax errors anywhere and counts documents. Not YAML::LoadAll: on
-// some malformed input (a stray ',' at document level) yaml-cpp 0.7 yields empty documents
-// forever without consuming anything, and LoadAll collects them until memory runs out; counting
-// with a cap and checking for progress avoids that. Header-only, like SafeFile.h, so each side
-// compiles its own copy.
+#include "textio/YamlPreflight.h"
+
 #include <algorithm>
 #include <sstream>
-#include <string>
 #include <vector>
 
+#include <yaml-cpp/depthguard.h>    // YAML::DeepRecursion (not included by yaml.h)
+#include <yaml-cpp/eventhandler.h>  // YAML::EventHandler (idem)
 #include <yaml-cpp/yaml.h>
 
-#include "fx/Diagnostic.h"
-#include "io/TextCheck.h"
+#include "textio/TextCheck.h"
 
-namespace fxio {
+namespace textio {
 
-/// A mark at a 0-based line and column.
-inline YAML::Mark yamlMarkAt(int line0, int column0) {
-    YAML::Mark m = YAML::Mark::null_mark();
-    m.line = line0;
-    m.column = column0;
-    return m;
-}
-
-/// What the first pass found wrong: a named code, where, and what was expected.
-struct YamlProblem {
-    fx::ErrorCode code = fx::ErrorCode::None;
-    YAML::Mark mark = YAML::Mark::null_mark();
-    std::string message;
-};
-
-namespace detail {
+namespace {
 class DocumentCounter : public YAML::EventHandler {
 public:
     explicit DocumentCounter(std::vector<YAML::Mark>* starts) : starts_(starts) {}
@@ -50,47 +29,44 @@ public:
 private:
     std::vector<YAML::Mark>* starts_;
 };
-}  // namespace detail
+}  // namespace
 
-/// True when `text` may go to YAML::Load: at most `maxBytes`, UTF-8 text, syntactically valid,
-/// at most one document (*hasDocument says whether there is one). Otherwise false with the
-/// problem (FileTooLarge, SyntaxError or TooDeep; `maxNesting` is named in the message).
-inline bool preflightYaml(const std::string& text, size_t maxBytes, int maxNesting, YamlProblem* problem,
-                          bool* hasDocument) {
+bool preflightYaml(const std::string& text, size_t maxBytes, int maxNesting, YamlProblem* problem,
+                   bool* hasDocument) {
     if (text.size() > maxBytes) {
-        *problem = {fx::ErrorCode::FileTooLarge, YAML::Mark::null_mark(),
+        *problem = {YamlError::FileTooLarge, YAML::Mark::null_mark(),
                     "file is " + std::to_string(text.size()) + " bytes; expected at most " + std::to_string(maxBytes)};
         return false;
     }
     NonTextByte bad;
     if (!isYamlText(text, &bad)) {
-        *problem = {fx::ErrorCode::SyntaxError, yamlMarkAt(bad.line, bad.column), bad.message()};
+        *problem = {YamlError::SyntaxError, yamlMarkAt(bad.line, bad.column), bad.message()};
         return false;
     }
     std::vector<YAML::Mark> starts;
     try {
         std::istringstream stream(text);
         YAML::Parser parser(stream);
-        detail::DocumentCounter counter(&starts);
+        DocumentCounter counter(&starts);
         while (starts.size() < 2 && parser.HandleNextDocument(counter)) {
         }
     } catch (const YAML::DeepRecursion& e) {
-        *problem = {fx::ErrorCode::TooDeep, e.mark,
+        *problem = {YamlError::TooDeep, e.mark,
                     "nesting deeper than " + std::to_string(maxNesting) + " levels (" + e.msg + ")"};
         return false;
     } catch (const YAML::Exception& e) {
-        *problem = {fx::ErrorCode::SyntaxError, e.mark, "malformed YAML: " + e.msg};
+        *problem = {YamlError::SyntaxError, e.mark, "malformed YAML: " + e.msg};
         return false;
     }
     if (starts.size() >= 2) {
         if (starts[1].pos == starts[0].pos) {  // no progress: the parser is stuck on garbage
             const size_t at = static_cast<size_t>(std::max(starts[0].pos, 0));
             const char c = at < text.size() ? text[at] : ' ';
-            *problem = {fx::ErrorCode::SyntaxError, starts[0],
+            *problem = {YamlError::SyntaxError, starts[0],
                         c > ' ' ? std::string("malformed YAML: unexpected '") + c + "'"
                                 : std::string("malformed YAML: the parser cannot continue here")};
         } else {
-            *problem = {fx::ErrorCode::SyntaxError, starts[1], "expected one YAML document, found a second one"};
+            *problem = {YamlError::SyntaxError, starts[1], "expected one YAML document, found a second one"};
         }
         return false;
     }
@@ -98,4 +74,4 @@ inline bool preflightYaml(const std::string& text, size_t maxBytes, int maxNesti
     return true;
 }
 
-}  // namespace fxio
+}  // namespace textio

@@ -1,4 +1,4 @@
-#include "src/ApiErrors.h"
+#include "base/ApiErrors.h"
 
 #include <cstring>
 

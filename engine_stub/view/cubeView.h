@@ -13,8 +13,8 @@
 
 #include <glm/glm.hpp>
 
-#include "render/SceneRenderer.h"
 #include "fx/Plugin.h"
+#include "render/SceneRenderer.h"
 #include "rtt/FrameGraph.h"
 
 namespace cube {

@@ -11,7 +11,7 @@
 #include "rtt/FrameGraph.h"
 #include "scene/SceneData.h"
 #include "scene/cubeParticleSystem.h"
-#include "scene/cubeView.h"
+#include "view/cubeView.h"
 
 namespace cube {
 

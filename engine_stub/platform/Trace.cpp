@@ -1,4 +1,4 @@
-#include "game/Trace.h"
+#include "platform/Trace.h"
 
 namespace cube {
 

@@ -4,10 +4,10 @@
 #include <memory>
 #include <vector>
 
-#include "MegaRenderer.h"
-#include "ParticleRenderer.h"
-#include "StatelessRenderer.h"
-#include "../src/PluginImpl.h"
+#include "../render/MegaRenderer.h"
+#include "../render/ParticleRenderer.h"
+#include "../render/StatelessRenderer.h"
+#include "PluginImpl.h"
 
 namespace fx {
 namespace {

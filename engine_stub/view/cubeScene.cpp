@@ -1,6 +1,6 @@
-#include "scene/cubeScene.h"
+#include "view/cubeScene.h"
 
-#include "game/Trace.h"
+#include "platform/Trace.h"
 
 namespace cube {
 

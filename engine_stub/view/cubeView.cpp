@@ -1,16 +1,16 @@
-#include "scene/cubeView.h"
+#include "view/cubeView.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "game/Trace.h"
-#include "scene/FxFrameBuilder.h"
+#include "platform/Trace.h"
 #include "rtt/Readback.h"
 #include "rtt/RenderTargetPool.h"
-#include "scene/Buckets.h"
-#include "scene/cubeScene.h"
+#include "view/Buckets.h"
+#include "view/FxFrameBuilder.h"
+#include "view/cubeScene.h"
 
 namespace cube {
 

@@ -4,7 +4,7 @@
 // after `#version`, writes `#line` markers that carry the file, and translates a driver's info
 // log back to "file:line: message" lines naming the file the line is really in. Failures have
 // named codes (ShaderError). It calls no GL: each side compiles with its own loader (the plugin
-// through its private one, the engine through its glad), and this library is compiled into both.
+// through its private one, the engine through its glad), and both link this library.
 //
 // Include rules: names are resolved by the reader (a folder, or the plugin's embedded copies);
 // each file is expanded once per stage (a second #include of it is skipped, like an include
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace fx {
+namespace textio {
 
 enum class ShaderError {
     None = 0,
@@ -61,4 +61,4 @@ ShaderError expandShaderSource(const ShaderReader& read, const std::string& name
 std::string translateInfoLog(const std::string& log, const std::vector<std::string>& files,
                              const std::string& fallbackFile);
 
-}  // namespace fx
+}  // namespace textio

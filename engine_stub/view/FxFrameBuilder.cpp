@@ -1,4 +1,4 @@
-#include "scene/FxFrameBuilder.h"
+#include "view/FxFrameBuilder.h"
 
 #include <algorithm>
 #include <cmath>

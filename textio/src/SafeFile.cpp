@@ -1,37 +1,16 @@
-#pragma once
-// SafeFile: the one way every loader (reaction files, legacy smoke data, glTF scenes and their
-// buffers/images, shaders) reads a file. Header-only on purpose: the plugin (a shared library
-// that exports only its API) and the engine each compile their own copy, so neither links
-// against the other's internals, and the plugin still includes no engine header.
-//
-// Contract of readFileBounded:
-//  - never blocks on a FIFO, socket or device: the file is opened O_NONBLOCK and checked with
-//    fstat on the *opened* descriptor (no check-then-open race) before a byte is read;
-//  - only regular files are read; anything else is NotRegular with its kind named
-//    ("a FIFO", "a directory", ...); a symlink loop is NotFound with "symlink loop";
-//  - never reads more than `maxBytes` (+1 to notice a file that grew while being read);
-//  - never throws; `why` is a short phrase without the path ("not a regular file (a FIFO)").
+#include "textio/SafeFile.h"
+
 #include <cerrno>
-#include <cstddef>
 #include <cstring>
-#include <string>
+#include <utility>
 
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace fxio {
+namespace textio {
 
-enum class FileError {
-    None = 0,
-    NotFound,    ///< missing, unreadable (permissions), or a symlink loop
-    NotRegular,  ///< a directory, FIFO, socket or device
-    TooLarge,    ///< more than maxBytes
-    ReadFailed,  ///< an I/O error while reading
-};
-
-/// "a FIFO", "a directory", ... for a st_mode that is not a regular file.
-inline const char* fileKindName(mode_t mode) {
+const char* fileKindName(mode_t mode) {
     if (S_ISDIR(mode)) return "a directory";
     if (S_ISFIFO(mode)) return "a FIFO";
     if (S_ISSOCK(mode)) return "a socket";
@@ -41,8 +20,7 @@ inline const char* fileKindName(mode_t mode) {
     return "not a regular file";
 }
 
-/// Why open(2) failed, in words a user can act on.
-inline std::string openErrorText(int err) {
+std::string openErrorText(int err) {
     switch (err) {
         case ENOENT: return "no such file";
         case ELOOP: return "symlink loop (too many levels of symbolic links)";
@@ -53,11 +31,11 @@ inline std::string openErrorText(int err) {
     }
 }
 
-/// Reads the whole regular file at `path` into `out` (replaced only on success).
-/// On failure returns false and sets `*code` and `*why` (either may be null).
+namespace {
+
+// One reader for both byte containers.
 template <class Bytes>
-inline bool readFileBounded(const std::string& path, size_t maxBytes, Bytes* out, FileError* code,
-                            std::string* why) {
+bool readBounded(const std::string& path, size_t maxBytes, Bytes* out, FileError* code, std::string* why) {
     auto fail = [&](FileError c, const std::string& w) {
         if (code) *code = c;
         if (why) *why = w;
@@ -121,13 +99,22 @@ inline bool readFileBounded(const std::string& path, size_t maxBytes, Bytes* out
     return true;
 }
 
-/// Why `path` is not a regular file that can be opened ("" when it is one). For listings that
-/// must report an entry instead of skipping it. Never blocks (stat only).
-inline std::string describeUnreadable(const std::string& path) {
+}  // namespace
+
+bool readFileBounded(const std::string& path, size_t maxBytes, std::string* out, FileError* code, std::string* why) {
+    return readBounded(path, maxBytes, out, code, why);
+}
+
+bool readFileBounded(const std::string& path, size_t maxBytes, std::vector<unsigned char>* out, FileError* code,
+                     std::string* why) {
+    return readBounded(path, maxBytes, out, code, why);
+}
+
+std::string describeUnreadable(const std::string& path) {
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0) return openErrorText(errno);
     if (!S_ISREG(st.st_mode)) return std::string("not a regular file (") + fileKindName(st.st_mode) + ")";
     return "";
 }
 
-}  // namespace fxio
+}  // namespace textio
