@@ -94,7 +94,7 @@ int ProgramCache::build(const std::vector<Key>& keys, std::vector<std::string>* 
     int compiled = 0;
     for (const Key& key : keys) {
         if (tried(key)) continue;
-        tried_[key.bits()] = true;
+        tried_.insert(key.bits());
         order_.push_back(key);
         std::string error;
         const GLuint program =

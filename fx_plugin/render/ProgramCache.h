@@ -31,6 +31,7 @@
 #include <cstdint>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "base/TextIo.h"
@@ -112,7 +113,7 @@ public:
 private:
     ShaderReader read_;
     std::unordered_map<uint32_t, ParticleProgram> built_;
-    std::unordered_map<uint32_t, bool> tried_;
+    std::unordered_set<uint32_t> tried_;
     std::vector<Key> order_;
 };
 
