@@ -17,9 +17,17 @@ bool ImmediateRenderer::prepare(Diagnostics* out) {
     std::string error;
     if (!privateGlLoaded() && !(host_ && loadPrivateGl(*host_, &error))) return true;  // prepareGl reports it
     GlStateGuard guard;
-    if (depth_.prepare(&error)) return true;
-    if (host_) host_->log(LogLevel::Error, ("fx: error[ShaderBuild] immediate render: " + error).c_str());
-    if (out) addShaderDiagnostics(error, out);
+    if (ensureDepthProgram()) return true;
+    if (out) addShaderDiagnostics(depthError_, out);
+    return false;
+}
+
+bool ImmediateRenderer::ensureDepthProgram() {
+    if (!depthError_.empty()) return false;  // tried once: one compile, one message
+    if (depth_.prepare(&depthError_)) return true;
+    if (depthError_.empty()) depthError_ = "fs_particles_linearize_depth.glsl:0: did not build";
+    lastError_ = depthError_;
+    if (host_) host_->log(LogLevel::Error, ("fx: error[ShaderBuild] immediate render: " + depthError_).c_str());
     return false;
 }
 
@@ -129,12 +137,8 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
     if (declared == ErrorCode::None && !frame.empty()) {
         // The linearise program: built by prepare() (prepareGl); for a host that skipped it, here,
         // before any pass (a scene without smoke compiles nothing).
-        std::string error;
-        depthReady_ = source == Source::None || depth_.prepare(&error);
-        if (!depthReady_) {
-            lastError_ = error;
-            if (host_) host_->log(LogLevel::Error, ("fx: error[ShaderBuild] immediate render: " + error).c_str());
-        }
+        depthReady_ = source == Source::None || ensureDepthProgram();
+        if (!depthReady_) lastError_ = depthError_;
         // The z-tested passes draw under the clip control and depth range the host drew its
         // z-buffer with (GlStateGuard pins them to this mapping instead of the convention's).
         HostDepthMappingScope hostMapping(in.mapping.clipZeroToOne, in.mapping.rangeNear, in.mapping.rangeFar);

@@ -102,6 +102,8 @@ public:
     const std::string& lastError() const { return lastError_; }
 
 private:
+    /// Builds the linearise program unless built; a failure is tried, logged and kept once.
+    bool ensureDepthProgram();
     /// Logs "fx: error[Code] immediate render: what" and returns `code`.
     ErrorCode refuse(ErrorCode code, const std::string& what);
 
@@ -113,6 +115,7 @@ private:
     DepthRegion lastRegion_;
     std::string lastError_;
     bool depthReady_ = false;  ///< this frame's linearise program is there (render sets it)
+    std::string depthError_;   ///< why the linearise program did not build ("": built or not tried)
 };
 
 }  // namespace fx
