@@ -9,7 +9,8 @@
 // creeping over objects in front), and geometry just behind the cloud's front fades it softly.
 uniform sampler2D uCloud;       // RGBA16F premultiplied
 uniform sampler2D uCloudDepth;  // R32F metres, 0 = no cloud
-uniform sampler2D uSceneDepth;  // full resolution R32F metres
+uniform sampler2D uSceneDepth;  // full resolution: the z-buffer or linear R32F
+#include "particles_scene_depth.glsl"
 uniform float uSoftScale;       // 1 / render.softness, 1/m
 #include "particles_footprint.glsl"
 
@@ -19,8 +20,7 @@ void main() {
     ivec2 base, last;
     vec2 f;
     lowResFootprint(textureSize(uSceneDepth, 0), textureSize(uCloud, 0), base, f, last);
-    float scene = texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r;
-    if (scene <= 0.0) scene = 3.0e38;  // nothing drawn (fx/HostAdapter.h)
+    float scene = linearSceneDepth(texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r);  // nothing drawn: 3.0e38
     vec4 sum = vec4(0.0);
     for (int i = 0; i < 4; ++i) {
         ivec2 o = ivec2(i & 1, i >> 1);

@@ -5,15 +5,15 @@
 // fs_particles_depth_downsample.glsl): thin foreground geometry survives, so no sphere is drawn
 // where any covered pixel holds nearer geometry; the blur fills such texels from their
 // neighbours and the composite decides per full-resolution pixel.
-uniform sampler2D uSceneDepth;  // full resolution, R32F metres
+#include "particles_scene_depth.glsl"
+uniform sampler2D uSceneDepth;  // full resolution: the z-buffer or linear R32F (particles_scene_depth.glsl)
 
 layout(location = 0) out vec4 oDepth;
 
 uniform vec2 uRatio;  // full-resolution texels per target texel, per axis (>= 1)
 
 float sceneDepth(ivec2 p) {
-    float d = texelFetch(uSceneDepth, p, 0).r;
-    return d > 0.0 ? d : 3.0e38;  // <= 0: nothing drawn (fx/HostAdapter.h)
+    return linearSceneDepth(texelFetch(uSceneDepth, p, 0).r);  // nothing drawn: 3.0e38
 }
 
 void main() {

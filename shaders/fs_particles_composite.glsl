@@ -18,8 +18,11 @@
 // both sides of a branch, so one program with all three paths paid for every path's fetches.
 uniform sampler2D uHalfColor;   // premultiplied RGBA16F, half x half
 uniform sampler2D uHalfDepth;   // red: min depth per 2x2 block (RG32F, green the max)
-uniform sampler2D uSceneDepth;  // full-res R32F
+uniform sampler2D uSceneDepth;  // full-res scene depth (particles_scene_depth.glsl)
 uniform float uDepthThreshold;  // relative: |low - full| > threshold * full is an edge
+// Before the #ifdef: an include is expanded once per stage, so a first copy inside the mixed
+// build's block would leave the other builds without it.
+#include "particles_scene_depth.glsl"
 #ifdef FX_COMPOSITE_MIXED
 uniform sampler2D uEdgeColor;   // premultiplied RGBA16F, full size, the edge pixels' redraw
 #include "particles_mixed_edge.glsl"
@@ -55,8 +58,7 @@ void main() {
     // On an edge, keep the bilinear weights of the texels on this pixel's side of it (depth
     // within the threshold), renormalised; only when none is, the single nearest-depth texel
     // (the first of equal ones).
-    float full = texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r;
-    if (full <= 0.0) full = 3.0e38;  // nothing drawn (fx/HostAdapter.h), as in the downsample
+    float full = linearSceneDepth(texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r);  // nothing drawn: 3.0e38
     float limit = uDepthThreshold * full;
     vec4 diff = abs(vec4(texelFetch(uHalfDepth, t0, 0).r, texelFetch(uHalfDepth, t1, 0).r,
                          texelFetch(uHalfDepth, t2, 0).r, texelFetch(uHalfDepth, t3, 0).r) - full);

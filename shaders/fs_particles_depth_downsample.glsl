@@ -1,18 +1,18 @@
 #version 330 core
-// Quarter-res step 1: the half-resolution linear depth, one texel per 2x2 block of the scene
-// depth: red the MINIMUM (nearest) depth of the block, green its MAXIMUM (farthest, for the
+// Quarter-res step 1: the half-resolution linear depth (metres), one texel per 2x2 block of the
+// scene depth: red the MINIMUM (nearest) depth of the block, green its MAXIMUM (farthest, for the
 // half-res z-fill, fs_particles_half_z.glsl). Nearest keeps thin foreground geometry (poles,
 // barrier tops, a car's roof line) in the low-res depth, so particles behind it are hidden in
 // the half-res pass too; the composite then lets background pixels next to it
 // borrow a neighbouring low-res texel (see QuarterResPath.h for the choice and its measured effect).
-uniform sampler2D uSceneDepth;  // full resolution, R32F metres
+#include "particles_scene_depth.glsl"
+uniform sampler2D uSceneDepth;  // full resolution: the z-buffer or linear R32F (particles_scene_depth.glsl)
 
 layout(location = 0) out vec4 oDepth;
 
-// <= 0 means nothing was drawn (fx/HostAdapter.h), read as infinitely far.
+// Nothing drawn reads as infinitely far (3.0e38).
 float sceneDepth(ivec2 p) {
-    float d = texelFetch(uSceneDepth, p, 0).r;
-    return d > 0.0 ? d : 3.0e38;
+    return linearSceneDepth(texelFetch(uSceneDepth, p, 0).r);
 }
 
 void main() {

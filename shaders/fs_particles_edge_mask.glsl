@@ -7,7 +7,7 @@
 // fragment shader, so the cost follows the edge pixels, not the smoke's area. No colour is
 // written.
 uniform sampler2D uHalfDepth;   // red: min depth per 2x2 block (RG32F, green the max)
-uniform sampler2D uSceneDepth;  // full-res R32F
+uniform sampler2D uSceneDepth;  // full-res scene depth (particles_scene_depth.glsl)
 uniform float uDepthThreshold;
 uniform float uPassDepth;
 uniform float uFailDepth;

@@ -2,8 +2,11 @@
 // Fade classification, step 1 (particles_classify.glsl): the scene depth's range per tile.
 // Default: one texel per kTileSize x kTileSize pixels of the linear scene depth, (min, max).
 // FX_TILE_COARSE: one texel per 4 x 4 of those (kCoarseTileSize pixels), from the fine tiles.
-// Pixels where nothing was drawn (<= 0, fx/HostAdapter.h) count as infinitely far.
-uniform sampler2D uSource;  // R32F scene depth, or the RG32F fine tiles
+// Pixels where nothing was drawn count as infinitely far (particles_scene_depth.glsl).
+uniform sampler2D uSource;  // the scene depth (z-buffer or linear R32F), or the RG32F fine tiles
+#ifndef FX_TILE_COARSE
+#include "particles_scene_depth.glsl"
+#endif
 
 layout(location = 0) out vec4 oRange;
 
@@ -23,9 +26,7 @@ void main() {
 #ifdef FX_TILE_COARSE
             vec2 t = texelFetch(uSource, p, 0).rg;
 #else
-            float d = texelFetch(uSource, p, 0).r;
-            d = d > 0.0 ? d : 3.0e38;
-            vec2 t = vec2(d);
+            vec2 t = vec2(linearSceneDepth(texelFetch(uSource, p, 0).r));
 #endif
             range = vec2(min(range.x, t.x), max(range.y, t.y));
         }

@@ -1,11 +1,11 @@
 // Shared by the particle shaders (vs_particles + fs_particles_hard/soft/spherical).
 //
 // Conventions: view space is right-handed with the camera looking down -Z. "Depth" is always
-// the positive linear view-space distance along the view axis in metres: what the host's
-// FrameBuilder::sceneDepth() holds in its R32F attachment, and what the particle shaders
-// compute for their own fragments (the fade compares these, never z-buffer values, so its
-// precision does not depend on the near/far ratio; the z-test that culls hidden fragments is
-// the renderer's, and only where the host's z-buffer is reversed-Z float).
+// the positive linear view-space distance along the view axis in metres: what the particle
+// shaders compute for their own fragments, and what sceneDepthAt() decodes from the host's
+// z-buffer or reads from its linear R32F depth (particles_scene_depth.glsl). The fade compares
+// these linear distances; the z-test that culls hidden fragments is the renderer's, and only
+// where the host's z-buffer is reversed-Z float.
 //
 // Colour: the ramp and the atlas hold straight (not premultiplied) alpha. Every fragment shader
 // writes premultiplied colour through shadeOutput(), which the renderer blends with
@@ -28,7 +28,9 @@ uniform float uNearFade;      // render.near_fade, metres in front of the near p
 
 uniform sampler2D uAtlas;      // 2x2 smoke atlas, RGBA8, straight alpha, frames row-major from top-left
 uniform sampler2D uRamp;       // colour by life: one row per reaction, kRampTexels wide
-uniform sampler2D uSceneDepth; // linear depth (R32F, metres) of the target being drawn
+uniform sampler2D uSceneDepth; // the scene depth of the target being drawn (particles_scene_depth.glsl)
+
+#include "particles_scene_depth.glsl"
 
 const float kRampTexels = 64.0;  // keep equal to ColorRampTexture::kTexels
 
@@ -130,15 +132,14 @@ float nearFadeFactor(float depth) {
     return uNearFade > 0.0 ? clamp((depth - uNear) / uNearFade, 0.0, 1.0) : 1.0;
 }
 
-// The host's linear depth; <= 0 means nothing was drawn there, like a value past the far plane
-// (fx/HostAdapter.h: a host may clear its depth to 0 or to a large value). Read with textureLod
+// The scene's linear depth at this pixel (particles_scene_depth.glsl: decoded from the z-buffer,
+// or the host's linear depth; 3.0e38 where nothing was drawn). Read with textureLod
 // at the pixel's texel centre through the renderer's nearest sampler (NearestSampler): the same
 // texel texelFetch gives, and cheaper on llvmpipe, which bounds-checks every texelFetch lane
 // (fxbench standard scenario, medians of three alternations: soft / hard frame 1.256 against
 // 1.278 with texelFetch).
 float sceneDepthAt(vec2 fragCoord) {
-    float d = textureLod(uSceneDepth, fragCoord / vec2(textureSize(uSceneDepth, 0)), 0.0).r;
-    return d > 0.0 ? d : 3.0e38;
+    return linearSceneDepth(textureLod(uSceneDepth, fragCoord / vec2(textureSize(uSceneDepth, 0)), 0.0).r);
 }
 
 // Premultiplied output. `ramp`: the ramp colour (straight alpha); `fade`: the particle's

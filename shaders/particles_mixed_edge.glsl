@@ -3,7 +3,9 @@
 // (fs_particles_edge_mask.glsl) and the composite both include this, so the pixels the mask lets
 // the full-res redraw touch are exactly the pixels the composite takes that redraw from.
 //
-// Needs uHalfDepth (red: min depth per 2x2 block) and uSceneDepth (full-res R32F linear depth).
+// Needs uHalfDepth (red: min depth per 2x2 block) and uSceneDepth (full-res scene depth, read
+// through particles_scene_depth.glsl).
+#include "particles_scene_depth.glsl"
 
 // The four low-res texels of the bilinear footprint of the full-res pixel at `fragCoord`, and
 // their bilinear weights (as the composite's own upsample computes them).
@@ -22,11 +24,10 @@ void particlesFootprint(vec2 fragCoord, ivec2 fullSize, ivec2 lowSize, out ivec2
     weights[3] = f.x * f.y;
 }
 
-// The pixel's full-res linear depth; "nothing drawn" (<= 0, fx/HostAdapter.h) reads as far away,
-// as in the downsample.
+// The pixel's full-res linear depth; "nothing drawn" reads as far away (3.0e38), as in the
+// downsample.
 float particlesFullDepth(sampler2D sceneDepth, vec2 fragCoord) {
-    float full = texelFetch(sceneDepth, ivec2(fragCoord), 0).r;
-    return full <= 0.0 ? 3.0e38 : full;
+    return linearSceneDepth(texelFetch(sceneDepth, ivec2(fragCoord), 0).r);
 }
 
 // True when some footprint texel's depth differs from `full` by more than threshold * full.

@@ -161,9 +161,11 @@ std::string usage() {
         "  --fx legacy|plugin     old hard sprites or the plugin (default plugin)\n"
         "  --mode hard|soft|spherical|mega|reaction  technique override (default: each reaction's)\n"
         "  --prepass-equal        opaque pass reuses the prepass z-buffer with depth test EQUAL\n"
-        "  --fx-depth linear|zbuffer  the plugin's scene depth: the engine's linear R32F target\n"
-        "                         (default, frame-graph passes) or the engine's own z-buffer, read\n"
-        "                         by the plugin's immediate path (API 2, Plugin::renderView)\n"
+        "  --fx-depth graph|linear|zbuffer  the plugin's scene depth: frame-graph passes that sample\n"
+        "                         the z-buffer the opaque pass drew, in place (default); frame-graph\n"
+        "                         passes reading a linear R32F target the opaque pass writes as a\n"
+        "                         second render target (API 2.0's contract, for comparison); or the\n"
+        "                         plugin's immediate path (Plugin::renderView) on the z-buffer\n"
         "  --quarter-res          particles into a half x half target, depth-aware composite\n"
         "  --bilinear-upsample    quarter-res with plain bilinear upsampling (comparison)\n"
         "  --watch                reload changed reaction files while running\n"
@@ -313,9 +315,14 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
             }
             o.mode = v;
         } else if (a == "--fx-depth") {
-            bool linear = true;
-            if (!either(i, a, "linear", "zbuffer", &linear)) return false;
-            o.pluginZBuffer = !linear;
+            if (!need(i, 1, a)) return false;
+            const std::string v = argv[++i];
+            if (v != "graph" && v != "linear" && v != "zbuffer") {
+                *error = a + ": expected graph, linear or zbuffer, got '" + v + "'";
+                return false;
+            }
+            o.pluginZBuffer = v == "zbuffer";
+            o.pluginLinearDepth = v == "linear";
         } else if (a == "--window") {
             o.window = true;
             o.backend = Backend::GLFW;

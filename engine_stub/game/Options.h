@@ -34,6 +34,9 @@ struct Options {
     /// --fx-depth zbuffer: the plugin draws through API 2's immediate path and reads the engine's
     /// own z-buffer (copied and linearised by the plugin) instead of the linear R32F scene depth.
     bool pluginZBuffer = false;
+    /// --fx-depth linear: the frame-graph passes read a linear R32F scene depth the opaque pass
+    /// writes as a second render target (API 2.0's contract) instead of sampling the z-buffer.
+    bool pluginLinearDepth = false;
     bool quarterRes = false;
     bool bilinearUpsample = false;
     bool watch = false;

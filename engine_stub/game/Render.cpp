@@ -60,6 +60,7 @@ void Render::Dyn(Game& game) {
     FrameSettings settings;
     settings.prepassEqual = game.options_.prepassEqual;
     settings.pluginImmediate = game.options_.pluginZBuffer;
+    settings.pluginLinearDepth = game.options_.pluginLinearDepth;
     settings.plugin = game.options_.effects ? game.specialFX_.plugin() : nullptr;
     settings.drawLegacy = game.options_.effects;
     settings.cameraQuads = game.cameraQuads_.empty() ? nullptr : &game.cameraQuads_;

@@ -23,9 +23,18 @@ fx::TargetFormat toTargetFormat(rtt::ColorFormat f) {
 // fx::PassContext over rtt::PassContext (fx target ids are graph resource ids).
 class FxPassContext final : public fx::PassContext {
 public:
-    explicit FxPassContext(rtt::PassContext& ctx) : ctx_(ctx) {}
+    FxPassContext(rtt::PassContext& ctx, rtt::FrameGraphResource zOwner) : ctx_(ctx), zOwner_(zOwner) {}
     void bindForDraw(fx::Target t) override { ctx_.bindForDraw(map(t)); }
     fx::TextureRef texture(fx::Target t, int attachment) override {
+        if (t.id == FxFrameBuilder::kZBufferId) {
+            fx::TextureRef ref;
+            ref.name = zOwner_.valid() && attachment == 0 ? ctx_.depthTexture(zOwner_) : 0u;
+            if (ref.name == 0) return fx::TextureRef{};
+            ref.format = fx::TargetFormat::Depth;
+            ref.width = width(t);
+            ref.height = height(t);
+            return ref;
+        }
         const rtt::FrameGraphResource r = map(t);
         fx::TextureRef ref;
         ref.name = ctx_.texture(r, attachment);
@@ -42,8 +51,12 @@ public:
     int height(fx::Target t) override { return ctx_.height(map(t)); }
 
 private:
-    static rtt::FrameGraphResource map(fx::Target t) { return rtt::FrameGraphResource{t.id}; }
+    /// The z-buffer's handle is its owner's size.
+    rtt::FrameGraphResource map(fx::Target t) const {
+        return t.id == FxFrameBuilder::kZBufferId ? zOwner_ : rtt::FrameGraphResource{t.id};
+    }
     rtt::PassContext& ctx_;
+    rtt::FrameGraphResource zOwner_;
 };
 
 rtt::ColorFormat toColorFormat(fx::TargetFormat f) {
@@ -52,6 +65,7 @@ rtt::ColorFormat toColorFormat(fx::TargetFormat f) {
         case fx::TargetFormat::RGBA16F: return rtt::ColorFormat::RGBA16F;
         case fx::TargetFormat::R32F: return rtt::ColorFormat::R32F;
         case fx::TargetFormat::RG32F: return rtt::ColorFormat::RG32F;
+        case fx::TargetFormat::Depth: break;  // not a target's format (sceneZBuffer's texture only)
     }
     return rtt::ColorFormat::RGBA8;
 }
@@ -88,17 +102,36 @@ void FxFrameBuilder::addPass(const char* name, std::initializer_list<fx::Target>
                              std::function<void(fx::PassContext&)> execute) {
     reads_.clear();
     writes_.clear();
+    bool readsZ = false;
     for (fx::Target t : reads) {
+        if (t.id == kZBufferId) {
+            readsZ = zOwner_.valid();
+            continue;
+        }
         reads_.push_back(rtt::FrameGraphResource{t.id});
         readsDepth_ = readsDepth_ || t.id == depth_.id;
     }
     for (fx::Target t : writes) writes_.push_back(rtt::FrameGraphResource{t.id});
     const std::string passName = prefix_ + (name ? name : "fx_pass");
-    graph_.addPass(passName.c_str(), order_, reads_.data(), reads_.size(), writes_.data(), writes_.size(),
-                   [execute = std::move(execute)](rtt::PassContext& ctx) {
-                       FxPassContext fxCtx(ctx);
-                       execute(fxCtx);
-                   });
+    const rtt::FrameGraphResource zOwner = zOwner_;
+    auto run = [execute = std::move(execute), zOwner](rtt::PassContext& ctx) {
+        FxPassContext fxCtx(ctx, zOwner);
+        execute(fxCtx);
+    };
+    if (!readsZ) {
+        graph_.addPass(passName.c_str(), order_, reads_.data(), reads_.size(), writes_.data(), writes_.size(),
+                       std::move(run));
+        return;
+    }
+    // Sampling the z-buffer is a depth read of its owner: rtt keeps the owner's writers (the
+    // opaque pass, or the depth prepass) and allocates that depth as a texture.
+    graph_.addPass(passName.c_str(), order_,
+                   [&](rtt::PassBuilder& b) {  // runs now
+                       for (rtt::FrameGraphResource r : reads_) b.read(r);
+                       b.readDepth(zOwner);
+                       for (rtt::FrameGraphResource w : writes_) b.write(w);
+                   },
+                   std::move(run));
 }
 
 }  // namespace cube

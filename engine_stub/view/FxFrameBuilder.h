@@ -25,6 +25,11 @@ public:
 
     fx::Target sceneColor() override { return {color_.id}; }
     fx::Target sceneDepth() override { return {depth_.id}; }
+    /// The z-buffer (API 2.1), once offerZBuffer() named its owner: a handle of its own that a
+    /// pass's reads turn into rtt's readDepth(owner) (the owner's depth becomes a texture), and
+    /// that the pass context resolves to the owner's depth texture.
+    fx::Target sceneZBuffer() override { return zOwner_.valid() ? fx::Target{kZBufferId} : fx::Target{}; }
+    fx::HostDepth sceneZBufferMapping() override { return zMapping_; }
     fx::Target createTarget(const char* name, const fx::TargetDesc& desc) override;
     void addPass(const char* name, std::initializer_list<fx::Target> reads,
                  std::initializer_list<fx::Target> writes,
@@ -32,12 +37,22 @@ public:
 
     /// True when a pass the plugin declared reads the scene depth (the prepass will then run).
     bool readsSceneDepth() const { return readsDepth_; }
+    /// Offers the plugin the z-buffer `owner`'s depth attachment holds (the colour target's own,
+    /// or the depth prepass's that it shares), drawn under clip control ZERO_TO_ONE or not.
+    void offerZBuffer(rtt::FrameGraphResource owner, bool clipZeroToOne) {
+        zOwner_ = owner;
+        zMapping_.clipDepthZeroToOne = clipZeroToOne;
+    }
+    /// fx::Target id of sceneZBuffer(): outside the graph's resource ids.
+    static constexpr uint32_t kZBufferId = 0xFFFFFFF0u;
 
     static rtt::RenderTargetDesc toRenderTargetDesc(const fx::TargetDesc& desc, const char* name);
 
 private:
     rtt::FrameGraph& graph_;
     rtt::FrameGraphResource color_, depth_;
+    rtt::FrameGraphResource zOwner_;
+    fx::HostDepth zMapping_;
     std::string prefix_;
     int order_;
     int viewWidth_, viewHeight_;

@@ -21,6 +21,9 @@ struct FrameSettings {
     /// The plugin draws through its immediate path (Plugin::renderView) from one engine pass,
     /// reading the colour target's own z-buffer, instead of declaring frame-graph passes.
     bool pluginImmediate = false;
+    /// The frame-graph passes read the linear R32F scene depth (the opaque pass's second render
+    /// target) instead of sampling the z-buffer in place (the default).
+    bool pluginLinearDepth = false;
     fx::Plugin* plugin = nullptr;   ///< the particle-bucket hook (null: legacy or no effects)
     bool drawLegacy = true;         ///< draw legacy particle systems (false: the bare engine)
     bool hud = true;

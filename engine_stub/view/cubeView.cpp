@@ -271,6 +271,10 @@ void cubeView::declarePluginPasses(rtt::FrameGraph& graph, const Targets& t, con
     }
     FxFrameBuilder fx(graph, t.color, t.sceneDepth, name_ + ".", order(bucketInfo(Bucket::Particles).order),
                       width_, height_);
+    // The z-buffer the opaque pass drew, sampled in place by the plugin: no linear depth is then
+    // written. Under prepass-EQUAL it is the prepass's (the colour target draws on it), and
+    // reading it is what runs the prepass.
+    if (!settings.pluginLinearDepth) fx.offerZBuffer(settings.prepassEqual ? t.sceneDepth : t.color, reversedZ_);
     if (settings.plugin) settings.plugin->declarePasses(pluginView(), fx);
 }
 

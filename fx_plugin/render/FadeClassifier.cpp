@@ -55,6 +55,10 @@ void FadeClassifier::build(const ShaderReader& shaderDir, std::vector<std::strin
                                   t.defines, &error);
         if (*t.program) {
             *t.source = glGetUniformLocation(*t.program, "uSource");
+            if (t.program == &tileProgram_) {
+                tileDecodeLoc_.coeffs = glGetUniformLocation(tileProgram_, "uDepthCoeffs");
+                tileDecodeLoc_.far = glGetUniformLocation(tileProgram_, "uDepthFar");
+            }
         } else {
             errors->push_back(error);
         }
@@ -104,7 +108,8 @@ TargetDesc FadeClassifier::tileTargetDesc(int width, int height, bool coarse) {
     return d;
 }
 
-void FadeClassifier::buildTiles(PassContext& ctx, Target sceneDepth, Target tiles, Target coarse) {
+void FadeClassifier::buildTiles(PassContext& ctx, Target sceneDepth, const SceneDepthDecode& decode, Target tiles,
+                                Target coarse) {
     plainDrawState();
     glBindVertexArray(vao_);
 
@@ -112,6 +117,8 @@ void FadeClassifier::buildTiles(PassContext& ctx, Target sceneDepth, Target tile
     glUseProgram(tileProgram_);
     hostDepth_.bindTexture(0, ctx.texture(sceneDepth, 0).name);
     glUniform1i(tileSourceLoc_, 0);
+    setSceneDepthDecode(tileDecodeLoc_, decode);
+    sceneDepthBarrier(decode);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
     ctx.bindForDraw(coarse);

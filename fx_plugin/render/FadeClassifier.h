@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "GlStateGuard.h"
+#include "SceneDepthSource.h"
 #include "ShaderLoader.h"
 #include "fx/HostAdapter.h"
 #include "fx/Plugin.h"
@@ -65,7 +66,7 @@ public:
     static TargetDesc tileTargetDesc(int width, int height, bool coarse);
 
     /// The tile pass body: fills `tiles` and `coarse` from the linear scene depth.
-    void buildTiles(PassContext& ctx, Target sceneDepth, Target tiles, Target coarse);
+    void buildTiles(PassContext& ctx, Target sceneDepth, const SceneDepthDecode& decode, Target tiles, Target coarse);
 
     /// Counts the classes of `batches`' soft and spherical particles (the instance stream holds
     /// them, uploaded): draws into the counter and reads it back. Changes the framebuffer,
@@ -78,6 +79,7 @@ private:
     NearestSampler hostDepth_;   ///< the host's scene depth, read whatever sampling it set
     uint32_t tileProgram_ = 0, coarseProgram_ = 0, countProgram_ = 0;
     int tileSourceLoc_ = -1, coarseSourceLoc_ = -1;
+    SceneDepthUniforms tileDecodeLoc_;
     int countView_ = -1, countProj_ = -1, countNear_ = -1, countSoftScale_ = -1, countSphere_ = -1,
         countTiles_ = -1, countCoarse_ = -1, countViewSize_ = -1;
     uint32_t vao_ = 0;         ///< empty: the tile pass's triangle comes from gl_VertexID

@@ -9,6 +9,7 @@
 #include "GlStateGuard.h"
 #include "ImmediateFrame.h"
 #include "PassDeclaration.h"
+#include "SceneDepthSource.h"
 
 namespace fx {
 
@@ -53,7 +54,10 @@ void FullResPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleVie
     const ViewInfo& view = record->view;
     const Target color = frame.sceneColor();
     const Target opacity = record->opacity;
-    const Target depth = record->list.needsSceneDepth ? frame.sceneDepth() : Target{};
+    // The z-buffer, sampled in place, where the host offers it; else its linear depth.
+    const SceneDepthSource source = record->list.needsSceneDepth ? sceneDepthSource(frame, view) : SceneDepthSource{};
+    const Target depth = source.target;
+    const SceneDepthDecode decode = source.decode;
     ScreenRect bound;  // whole
     if (depth.valid() && dynamic_cast<ImmediateFrame*>(&frame)) {
         bound = screenRect(view, record->list.instances.data(), record->list.particleCount(), nullptr,
@@ -68,23 +72,24 @@ void FullResPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleVie
                                     FadeClassifier::tileTargetDesc(view.width, view.height, true));
         narrowDepthRead(frame, bound, view.width, view.height);
         frame.addPass(FadeClassifier::kPass, {depth}, {tiles, coarse},
-                      [this, record, depth, tiles, coarse](PassContext& ctx) {
+                      [this, record, depth, decode, tiles, coarse](PassContext& ctx) {
                           if (!targetsFitView(ctx, record->view, depth, Target{}, sizeMismatch_)) return;
                           GlStateGuard guard;
                           DebugGroup group(FadeClassifier::kPass);
-                          classifier_->buildTiles(ctx, depth, tiles, coarse);
+                          classifier_->buildTiles(ctx, depth, decode, tiles, coarse);
                       });
     }
     const bool count = tiles.valid() && record->settings.countClasses;
     narrowDepthRead(frame, bound, view.width, view.height);
     addPassReading(frame, kPass, {depth, opacity, tiles, coarse}, color,
-                   [this, record, depth, color, opacity, tiles, coarse, count](PassContext& ctx) {
+                   [this, record, depth, decode, color, opacity, tiles, coarse, count](PassContext& ctx) {
                        if (!targetsFitView(ctx, record->view, color, depth, sizeMismatch_)) return;
                        GlStateGuard guard(record->view.depth);  // z-tested against the host's z-buffer
                        DebugGroup group(kPass);
                        ctx.bindForDraw(color);
                        DrawInputs in;
                        in.sceneDepth = depth.valid() ? ctx.texture(depth, 0).name : 0;
+                       in.depthDecode = decode;
                        in.opacity = opacity.valid() ? ctx.texture(opacity, 0).name : 0;
                        in.tiles = tiles.valid() ? ctx.texture(tiles, 0).name : 0;
                        in.coarse = coarse.valid() ? ctx.texture(coarse, 0).name : 0;

@@ -32,6 +32,9 @@ public:
         if (t.id == kSceneDepth && s.hostLinearDepth) {
             return {s.hostLinearDepth, TargetFormat::R32F, s.width, s.height};
         }
+        if (t.id == kSceneZBuffer) {
+            return f_.zTexture_ ? TextureRef{f_.zTexture_, TargetFormat::Depth, s.width, s.height} : TextureRef{};
+        }
         const PooledTarget* p = f_.slotOf(t.id);
         if (!p) return TextureRef{};
         return {p->texture, p->desc.format, p->width, p->height};
@@ -54,7 +57,7 @@ ImmediateFrame::ImmediateFrame(ImmediateTargetPool& pool, ImmediateFrameSetup se
 
 Target ImmediateFrame::createTarget(const char* name, const TargetDesc& desc) {
     created_.push_back(Created{name ? name : "", desc, SIZE_MAX});
-    return Target{uint32_t(created_.size()) + kSceneDepth};
+    return Target{uint32_t(created_.size()) - 1 + kFirstCreated};
 }
 
 void ImmediateFrame::addPass(const char* name, std::initializer_list<Target> reads,
@@ -68,25 +71,29 @@ void ImmediateFrame::addPass(const char* name, std::initializer_list<Target> rea
         if (t.valid()) p.writes.push_back(t.id);
     }
     p.run = std::move(execute);
-    if (std::find(p.reads.begin(), p.reads.end(), kSceneDepth) != p.reads.end()) {
+    if (p.readsDepth(kSceneDepth) || p.readsDepth(kSceneZBuffer)) {
         p.depthRegion = nextRegion_;
         nextRegion_ = DepthRegion{};
     }
     passes_.push_back(std::move(p));
 }
 
+bool ImmediateFrame::Pass::readsDepth(uint32_t which) const {
+    return std::find(reads.begin(), reads.end(), which) != reads.end();
+}
+
 const PooledTarget* ImmediateFrame::slotOf(uint32_t id) const {
     size_t slot = SIZE_MAX;
     if (id == kSceneDepth) {
         slot = depthSlot_;
-    } else if (id > kSceneDepth && id - kSceneDepth - 1 < created_.size()) {
-        slot = created_[id - kSceneDepth - 1].slot;
+    } else if (id >= kFirstCreated && id - kFirstCreated < created_.size()) {
+        slot = created_[id - kFirstCreated].slot;
     }
     return slot == SIZE_MAX ? nullptr : &pool_.at(slot);
 }
 
 void ImmediateFrame::allocate(uint32_t id) {
-    if (id == kSceneColor) return;
+    if (id == kSceneColor || id == kSceneZBuffer) return;  // the host's, or the copy hook's
     if (id == kSceneDepth) {
         if (setup_.hostLinearDepth || depthSlot_ != SIZE_MAX) return;
         TargetDesc d;
@@ -95,8 +102,8 @@ void ImmediateFrame::allocate(uint32_t id) {
         depthSlot_ = pool_.acquire(d, setup_.width, setup_.height);
         return;
     }
-    if (id - kSceneDepth - 1 >= created_.size()) return;  // not a handle of this frame
-    Created& c = created_[id - kSceneDepth - 1];
+    if (id < kFirstCreated || id - kFirstCreated >= created_.size()) return;  // not a handle of this frame
+    Created& c = created_[id - kFirstCreated];
     if (c.slot != SIZE_MAX) return;
     const int w = c.desc.width > 0 ? c.desc.width : std::max(1, int(float(setup_.width) * c.desc.scale));
     const int h = c.desc.height > 0 ? c.desc.height : std::max(1, int(float(setup_.height) * c.desc.scale));
@@ -128,7 +135,7 @@ void ImmediateFrame::execute() {
     bool anyReader = false;
     for (size_t k = 0; k < passes_.size(); ++k) {
         const Pass& p = passes_[k];
-        if (!alive[k] || std::find(p.reads.begin(), p.reads.end(), kSceneDepth) == p.reads.end()) continue;
+        if (!alive[k] || !(p.readsDepth(kSceneDepth) || p.readsDepth(kSceneZBuffer))) continue;
         const DepthRegion& r = p.depthRegion;
         if (r.whole || produced_.whole) {
             produced_ = DepthRegion{};
@@ -155,12 +162,20 @@ void ImmediateFrame::execute() {
     for (size_t k = 0; k < passes_.size(); ++k) {
         if (!alive[k]) continue;
         Pass& p = passes_[k];
-        const bool readsDepth = std::find(p.reads.begin(), p.reads.end(), kSceneDepth) != p.reads.end();
-        if (readsDepth && !depthReady_ && depthSlot_ != SIZE_MAX && setup_.produceDepth) {
+        if (p.readsDepth(kSceneDepth) && !depthReady_ && depthSlot_ != SIZE_MAX && setup_.produceDepth) {
             GlStateGuard guard;
             DebugGroup group("fx_linearize_depth");
             setup_.produceDepth(pool_.at(depthSlot_).framebuffer, produced_);
             depthReady_ = true;
+        }
+        if (p.readsDepth(kSceneZBuffer) && !zTexture_) {
+            if (setup_.hostZTexture) {
+                zTexture_ = setup_.hostZTexture;  // sampled in place
+            } else if (setup_.copyZBuffer) {
+                GlStateGuard guard;
+                DebugGroup group("fx_copy_depth");
+                zTexture_ = setup_.copyZBuffer(produced_);
+            }
         }
         p.run(ctx);
         executed_.push_back(p.name);

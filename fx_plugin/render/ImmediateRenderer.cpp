@@ -131,6 +131,16 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
                                                                       depthFormat, samples, region);
         depth_.linearize(texture, proj, mapping, background, target, w, h, region);
     };
+    // The z-buffer itself where the passes can sample it (SceneDepthSource.h): a depth texture in
+    // place, the framebuffer's depth through a copy (no linearise pass); else produceDepth above.
+    setup.zBuffer = source == Source::DepthTexture || source == Source::BoundFramebuffer;
+    setup.zMapping.clipDepthZeroToOne = mapping.clipZeroToOne;
+    setup.zMapping.depthRangeNear = mapping.rangeNear;
+    setup.zMapping.depthRangeFar = mapping.rangeFar;
+    if (source == Source::DepthTexture) setup.hostZTexture = hostTexture;
+    setup.copyZBuffer = [this, w, h, depthFormat, samples, drawFramebuffer](const DepthRegion& region) {
+        return depth_.copyFramebufferDepth(uint32_t(drawFramebuffer), 0, 0, w, h, depthFormat, samples, region);
+    };
     pool_.beginFrame();
     ImmediateFrame frame(pool_, std::move(setup));
     const ErrorCode declared = plugin.declarePasses(view, frame);

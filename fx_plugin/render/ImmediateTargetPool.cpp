@@ -17,6 +17,7 @@ Layout layoutOf(TargetFormat f) {
     case TargetFormat::RGBA16F: return {GL_RGBA16F, GL_RGBA, GL_FLOAT};
     case TargetFormat::R32F: return {GL_R32F, GL_RED, GL_FLOAT};
     case TargetFormat::RG32F: return {GL_RG32F, GL_RG, GL_FLOAT};
+    case TargetFormat::Depth: break;  // not a target's format (sceneZBuffer's texture only)
     }
     return {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE};
 }

@@ -76,6 +76,8 @@ void MegaPasses::runDepth(PassContext& ctx, const MegaCloud& r, Target sceneDept
     glUseProgram(programs_->depth);
     hostDepth_.bindTexture(kUnit0, ctx.texture(sceneDepth, 0).name);
     glUniform1i(programs_->depthScene, kUnit0);
+    setSceneDepthDecode(programs_->depthDecode, r.depthDecode);
+    sceneDepthBarrier(r.depthDecode);
     glUniform2f(programs_->depthRatio, float(r.view.width) / float(std::max(w, 1)),
                 float(r.view.height) / float(std::max(h, 1)));
     drawFullscreen();
@@ -173,6 +175,8 @@ void MegaPasses::runComposite(PassContext& ctx, const MegaCloud& r, Target cloud
     glUniform1i(programs_->cCloud, kUnit0);
     glUniform1i(programs_->cCloudDepth, kUnit1);
     glUniform1i(programs_->cScene, kUnit2);
+    setSceneDepthDecode(programs_->cDecode, r.depthDecode);
+    sceneDepthBarrier(r.depthDecode);
     glUniform1f(programs_->cSoft, r.softScale);
     drawFullscreen();
 }

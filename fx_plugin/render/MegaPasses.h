@@ -18,6 +18,8 @@
 #include "ScreenTiles.h"
 #include "fx/HostAdapter.h"
 
+#include "SceneDepthSource.h"
+
 namespace fx {
 
 /// One view's recorded cloud, shared with the pass bodies until the host has run them.
@@ -30,6 +32,7 @@ struct MegaCloud {
     float softScale = 2.0f;  ///< 1 / render.softness of the first batch
     float time = 0.0f;       ///< simulation clock of the first batch, s
     ScreenRect rect;         ///< full-resolution pixels the spheres can touch
+    SceneDepthDecode depthDecode;  ///< how its scene depth reads (SceneDepthSource.h)
 };
 
 class MegaPasses {

@@ -25,7 +25,8 @@ void MegaPrograms::build(const std::string& dir, std::vector<std::string>* error
     blur = make("vs_particles_fullscreen.glsl", "fs_mega_blur.glsl", "");
     shade = make("vs_particles_fullscreen.glsl", "fs_mega_blur.glsl", "#define FX_MEGA_SHADE 1\n");
     composite = make("vs_particles_fullscreen.glsl", "fs_mega_composite.glsl", "");
-    locateUniforms(depth, {{&depthScene, "uSceneDepth"}, {&depthRatio, "uRatio"}});
+    locateUniforms(depth, {{&depthScene, "uSceneDepth"}, {&depthRatio, "uRatio"},
+                           {&depthDecode.coeffs, "uDepthCoeffs"}, {&depthDecode.far, "uDepthFar"}});
     locateUniforms(spheres, {{&sView, "uView"}, {&sProj, "uProj"}, {&sNear, "uNear"}, {&sFar, "uFar"},
                              {&sSlope, "uSlopeMax"}, {&sRamp, "uRamp"}, {&sRampRow, "uRampRow"},
                              {&sMegaDepth, "uMegaDepth"}, {&sDensity, "uDensity"}});
@@ -42,6 +43,7 @@ void MegaPrograms::build(const std::string& dir, std::vector<std::string>* error
                         {&u.absorption, "uAbsorption"}});
     }
     locateUniforms(composite, {{&cCloud, "uCloud"}, {&cCloudDepth, "uCloudDepth"}, {&cScene, "uSceneDepth"},
+                               {&cDecode.coeffs, "uDepthCoeffs"}, {&cDecode.far, "uDepthFar"},
                                {&cSoft, "uSoftScale"}});
 }
 

@@ -6,11 +6,14 @@
 #include <string>
 #include <vector>
 
+#include "SceneDepthSource.h"
+
 namespace fx {
 
 struct MegaPrograms {
     uint32_t depth = 0, spheres = 0, blur = 0, shade = 0, composite = 0;
     int depthScene = -1, depthRatio = -1;
+    SceneDepthUniforms depthDecode;
     int sView = -1, sProj = -1, sNear = -1, sFar = -1, sSlope = -1, sRamp = -1, sRampRow = -1, sMegaDepth = -1,
         sDensity = -1;
     struct Blur {
@@ -19,6 +22,7 @@ struct MegaPrograms {
         int toSun = -1, sunColor = -1, ambient = -1, scattering = -1, anisotropy = -1, absorption = -1;
     } b[2];  // [0] blur, [1] blur + shade
     int cCloud = -1, cCloudDepth = -1, cScene = -1, cSoft = -1;
+    SceneDepthUniforms cDecode;
 
     MegaPrograms() = default;
     ~MegaPrograms();

@@ -104,7 +104,10 @@ int MegaRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, const
 
     const float scale = std::clamp(record->mega.resolution, 0.25f, 1.0f);
     const Target sceneColor = frame.sceneColor();
-    const Target sceneDepth = frame.sceneDepth();
+    // The z-buffer, sampled in place, where the host offers it; else its linear depth.
+    const SceneDepthSource source = sceneDepthSource(frame, view);
+    const Target sceneDepth = source.target;
+    record->depthDecode = source.decode;
     const Target megaDepth = frame.createTarget("mega_depth", megaTarget(scale, TargetFormat::R32F));
     const Target color = frame.createTarget("mega_color", megaTarget(scale, TargetFormat::RGBA16F));
     const Target density = frame.createTarget("mega_density", megaTarget(scale, TargetFormat::RGBA16F));

@@ -33,6 +33,7 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
     bindTextureUnit(kAtlasUnit, atlas_.texture());
     bindTextureUnit(kRampUnit, ramp_.texture());
     depthSampler_.bindTexture(kSceneDepthUnit, in.sceneDepth);  // the host's, or the half-res copy
+    if (in.sceneDepth) sceneDepthBarrier(in.depthDecode);
     if (record.lit()) {
         bindTextureUnit(kOpacityUnit, in.opacity);
     }
@@ -108,6 +109,7 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
         glUniform1i(p.atlas, kAtlasUnit);
         glUniform1i(p.ramp, kRampUnit);
         glUniform1i(p.sceneDepth, kSceneDepthUnit);
+        setSceneDepthDecode(p.depthDecode, in.depthDecode);
         if (p.tiles >= 0) {
             glUniform1i(p.tiles, FadeClassifier::kTileUnit);
             glUniform1i(p.tilesCoarse, FadeClassifier::kCoarseUnit);

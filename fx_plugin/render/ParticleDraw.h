@@ -41,7 +41,8 @@ struct ParticleView {
 
 /// What one pass hands the draw: its textures (0: none) and how its target is tested.
 struct DrawInputs {
-    uint32_t sceneDepth = 0;  ///< linear depth of the bound target's size (0 when no batch needs it)
+    uint32_t sceneDepth = 0;  ///< scene depth of the bound target's size (0 when no batch needs it)
+    SceneDepthDecode depthDecode;  ///< how to read it (SceneDepthSource.h; default: linear)
     bool quarterRes = false;  ///< the quarter-res programs (HardLinearDepth for hard)
     /// The bound target's own z-buffer was filled (the half-res z-test, or the mixed-res edge
     /// mask): every batch is z-tested (GEQUAL, LEQUAL under standard depth).

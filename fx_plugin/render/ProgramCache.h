@@ -37,6 +37,8 @@
 #include "base/TextIo.h"
 #include "fx/Plugin.h"
 
+#include "SceneDepthSource.h"
+
 namespace fx {
 
 /// Uniform locations shared by every particle program (-1 where a program does not use one).
@@ -45,6 +47,7 @@ struct ParticleProgram {
     int view = -1, proj = -1, nearPlane = -1, farPlane = -1, slopeMax = -1;
     int rampRow = -1, blendMode = -1, softScale = -1, contrastPower = -1, nearFade = -1;
     int atlas = -1, ramp = -1, sceneDepth = -1;
+    SceneDepthUniforms depthDecode;
     int trimmed = -1, shapeBuckets = -1, lodScale = -1, shapes = -1, shapeInfo = -1, pixelSlope = -1;
     int powerWhole = -1, powerHalf = -1;
     // FX_CLASSIFY only (FadeClassifier.h).

@@ -57,18 +57,21 @@ void QuarterResPath::declare(FrameBuilder& frame, const std::shared_ptr<Particle
                               footprintOf(record->list));
     const Target color = frame.sceneColor();
     const Target opacity = record->opacity;
-    const Target depth = frame.sceneDepth();
+    // The z-buffer, sampled in place, where the host offers it; else its linear depth.
+    const SceneDepthSource source = sceneDepthSource(frame, view);
+    const Target depth = source.target;
+    const SceneDepthDecode decode = source.decode;
     const Target halfDepth = frame.createTarget(kDepthTarget, depthTargetDesc());
     // Under reversed-Z the half-res particles are z-tested too (beginQuarter).
     const bool halfZ = record->reversedZ && programs_->halfZOk();
     const Target halfColor = frame.createTarget(kColorTarget, colorTargetDesc(halfZ));
     narrowDepthRead(frame, record->rect, view.width, view.height);
-    frame.addPass(kDownsamplePass, {depth}, {halfDepth}, [this, record, depth, halfDepth](PassContext& ctx) {
+    frame.addPass(kDownsamplePass, {depth}, {halfDepth}, [this, record, depth, decode, halfDepth](PassContext& ctx) {
         // Only what this pass declared may be touched: the scene depth.
         if (!targetsFitView(ctx, record->view, depth, Target{}, sizeMismatch_)) return;
         GlStateGuard guard;
         DebugGroup group(kDownsamplePass);
-        downsampleDepth(ctx, *record, depth, halfDepth);
+        downsampleDepth(ctx, *record, depth, decode, halfDepth);
     });
     addPassReading(frame, kQuarterPass, {halfDepth, opacity}, halfColor,
                    [this, record, halfDepth, halfColor, halfZ, opacity](PassContext& ctx) {
@@ -88,28 +91,30 @@ void QuarterResPath::declare(FrameBuilder& frame, const std::shared_ptr<Particle
         edgeColor = frame.createTarget(kEdgeTarget, edgeTargetDesc());
         narrowDepthRead(frame, record->rect, view.width, view.height);
         addPassReading(frame, kEdgePass, {halfDepth, depth, opacity}, edgeColor,
-                       [this, record, edgeColor, halfDepth, depth, opacity](PassContext& ctx) {
+                       [this, record, edgeColor, halfDepth, depth, decode, opacity](PassContext& ctx) {
                            GlStateGuard guard(record->view.depth);
                            DebugGroup group(kEdgePass);
-                           beginEdges(ctx, *record, edgeColor, halfDepth, depth);
+                           beginEdges(ctx, *record, edgeColor, halfDepth, depth, decode);
                            DrawInputs in;
                            in.quarterRes = true;
                            in.zTested = true;
                            in.sceneDepth = ctx.texture(depth, 0).name;
+                           in.depthDecode = decode;
                            in.opacity = opacity.valid() ? ctx.texture(opacity, 0).name : 0;
                            draw_.draw(*record, in);
                        });
     }
     narrowDepthRead(frame, record->rect, view.width, view.height);
     addPassReading(frame, kCompositePass, {halfColor, halfDepth, depth, edgeColor}, color,
-                   [this, record, color, halfColor, halfDepth, depth, edgeColor](PassContext& ctx) {
+                   [this, record, color, halfColor, halfDepth, depth, decode, edgeColor](PassContext& ctx) {
                        GlStateGuard guard;
                        DebugGroup group(kCompositePass);
-                       composite(ctx, *record, color, halfColor, halfDepth, depth, edgeColor);
+                       composite(ctx, *record, color, halfColor, halfDepth, depth, decode, edgeColor);
                    });
 }
 
-void QuarterResPath::downsampleDepth(PassContext& ctx, const ParticleView& v, Target sceneDepth, Target halfDepth) {
+void QuarterResPath::downsampleDepth(PassContext& ctx, const ParticleView& v, Target sceneDepth,
+                                     const SceneDepthDecode& decode, Target halfDepth) {
     QuarterResPrograms& p = *programs_;
     ctx.bindForDraw(halfDepth);
     plainDrawState();
@@ -117,6 +122,8 @@ void QuarterResPath::downsampleDepth(PassContext& ctx, const ParticleView& v, Ta
     glUseProgram(p.downsample);
     p.hostDepth.bindTexture(0, ctx.texture(sceneDepth, 0).name);
     glUniform1i(p.downsampleDepthLoc, 0);
+    setSceneDepthDecode(p.downsampleDecode, decode);
+    sceneDepthBarrier(decode);
     p.drawTiles(p.downsampleViewLoc, v.tiles);
 }
 
@@ -152,7 +159,7 @@ bool QuarterResPath::beginQuarter(PassContext& ctx, const ParticleView& v, Targe
 }
 
 void QuarterResPath::beginEdges(PassContext& ctx, const ParticleView& v, Target edgeColor, Target halfDepth,
-                                Target sceneDepth) {
+                                Target sceneDepth, const SceneDepthDecode& decode) {
     QuarterResPrograms& p = *programs_;
     ctx.bindForDraw(edgeColor);
     plainDrawState();
@@ -174,6 +181,8 @@ void QuarterResPath::beginEdges(PassContext& ctx, const ParticleView& v, Target 
     p.hostDepth.bindTexture(1, ctx.texture(sceneDepth, 0).name);
     glUniform1i(p.maskHalfDepthLoc, 0);
     glUniform1i(p.maskSceneDepthLoc, 1);
+    setSceneDepthDecode(p.maskDecode, decode);
+    sceneDepthBarrier(decode);
     glUniform1f(p.maskThresholdLoc, kDepthThreshold);
     glUniform1f(p.maskPassLoc, reversed ? 0.0f : 1.0f);
     glUniform1f(p.maskFailLoc, reversed ? 1.0f : 0.0f);
@@ -182,7 +191,8 @@ void QuarterResPath::beginEdges(PassContext& ctx, const ParticleView& v, Target 
 }
 
 void QuarterResPath::composite(PassContext& ctx, const ParticleView& v, Target sceneColor, Target halfColor,
-                               Target halfDepth, Target sceneDepth, Target edgeColor) {
+                               Target halfDepth, Target sceneDepth, const SceneDepthDecode& decode,
+                               Target edgeColor) {
     QuarterResPrograms& p = *programs_;
     ctx.bindForDraw(sceneColor);
     plainDrawState();
@@ -202,6 +212,8 @@ void QuarterResPath::composite(PassContext& ctx, const ParticleView& v, Target s
     glUniform1i(c.halfColor, 0);
     glUniform1i(c.halfDepth, 1);
     glUniform1i(c.sceneDepth, 2);
+    setSceneDepthDecode(c.decode, decode);
+    sceneDepthBarrier(decode);
     glUniform1f(c.threshold, kDepthThreshold);
     glUniform1i(c.edgeColor, 3);
     // Unit 3 is bound either way: a sampler uniform must never read a unit with a texture of

@@ -145,7 +145,8 @@ private:
     // work inside the view's rect only (scissor, with a 2-texel border at half resolution): the
     // clears cover the rect, the full-screen work (downsample, half-res z-fill, edge mask,
     // composite) only its tiles, so the fixed costs follow the smoke's footprint.
-    void downsampleDepth(PassContext& ctx, const ParticleView& v, Target sceneDepth, Target halfDepth);
+    void downsampleDepth(PassContext& ctx, const ParticleView& v, Target sceneDepth, const SceneDepthDecode& decode,
+                         Target halfDepth);
     /// Binds the half-res colour target and clears it (within the rect) to transparent black.
     /// With `halfDepth` (a reversed-Z view; halfColor made with a z-buffer, halfDepth downsampled):
     /// also fills that z-buffer with the farthest scene depth of each 2x2 block (halfDepth's
@@ -156,10 +157,11 @@ private:
     /// transparent black and writes the edge mask into its z-buffer (fs_particles_edge_mask.glsl),
     /// then leaves the depth test on without writes, in the view's convention (LEQUAL, GEQUAL
     /// under reversed-Z), so particles drawn next pass it on edge pixels only.
-    void beginEdges(PassContext& ctx, const ParticleView& v, Target edgeColor, Target halfDepth, Target sceneDepth);
+    void beginEdges(PassContext& ctx, const ParticleView& v, Target edgeColor, Target halfDepth, Target sceneDepth,
+                    const SceneDepthDecode& decode);
     /// `edgeColor` valid: mixed resolution (edge pixels from it, the rest bilinear).
     void composite(PassContext& ctx, const ParticleView& v, Target sceneColor, Target halfColor, Target halfDepth,
-                   Target sceneDepth, Target edgeColor);
+                   Target sceneDepth, const SceneDepthDecode& decode, Target edgeColor);
 
     ParticleDraw& draw_;
     SizeMismatchReport sizeMismatch_;

@@ -29,7 +29,8 @@ void QuarterResPrograms::build(const std::string& shaderDir, std::vector<std::st
         return *program != 0;
     };
     if (make(&downsample, "fs_particles_depth_downsample.glsl", "")) {
-        locateUniforms(downsample, {{&downsampleDepthLoc, "uSceneDepth"}, {&downsampleViewLoc, "uViewSize"}});
+        locateUniforms(downsample, {{&downsampleDepthLoc, "uSceneDepth"}, {&downsampleViewLoc, "uViewSize"},
+                                    {&downsampleDecode.coeffs, "uDepthCoeffs"}, {&downsampleDecode.far, "uDepthFar"}});
     }
     if (make(&halfZ, "fs_particles_half_z.glsl", "")) {
         locateUniforms(halfZ, {{&halfZDepthLoc, "uHalfDepth"}, {&halfZFromLinearLoc, "uDepthFromLinear"},
@@ -42,12 +43,14 @@ void QuarterResPrograms::build(const std::string& shaderDir, std::vector<std::st
         if (!make(&c.program, "fs_particles_composite.glsl", kCompositeDefines[v])) continue;
         locateUniforms(c.program, {{&c.halfColor, "uHalfColor"}, {&c.halfDepth, "uHalfDepth"},
                                    {&c.sceneDepth, "uSceneDepth"}, {&c.threshold, "uDepthThreshold"},
-                                   {&c.edgeColor, "uEdgeColor"}, {&c.viewSize, "uViewSize"}});
+                                   {&c.edgeColor, "uEdgeColor"}, {&c.viewSize, "uViewSize"},
+                                   {&c.decode.coeffs, "uDepthCoeffs"}, {&c.decode.far, "uDepthFar"}});
     }
     if (make(&edgeMask, "fs_particles_edge_mask.glsl", "")) {
         locateUniforms(edgeMask, {{&maskHalfDepthLoc, "uHalfDepth"}, {&maskSceneDepthLoc, "uSceneDepth"},
                                   {&maskThresholdLoc, "uDepthThreshold"}, {&maskPassLoc, "uPassDepth"},
-                                  {&maskFailLoc, "uFailDepth"}, {&maskViewLoc, "uViewSize"}});
+                                  {&maskFailLoc, "uFailDepth"}, {&maskViewLoc, "uViewSize"},
+                                  {&maskDecode.coeffs, "uDepthCoeffs"}, {&maskDecode.far, "uDepthFar"}});
     }
     if (!tileVao_) {
         glGenVertexArrays(1, &tileVao_);

@@ -10,6 +10,8 @@
 #include "GlStateGuard.h"
 #include "ScreenTiles.h"
 
+#include "SceneDepthSource.h"
+
 namespace fx {
 
 struct QuarterResPrograms {
@@ -36,6 +38,7 @@ struct QuarterResPrograms {
     NearestSampler hostDepth;  ///< the host's scene depth, read whatever sampling it set
     uint32_t downsample = 0;
     int downsampleDepthLoc = -1, downsampleViewLoc = -1;
+    SceneDepthUniforms downsampleDecode;
     uint32_t halfZ = 0;
     int halfZDepthLoc = -1, halfZFromLinearLoc = -1, halfZFarLoc = -1, halfZViewLoc = -1;
     /// The composite's builds: depth-aware, plain bilinear, mixed resolution.
@@ -43,11 +46,13 @@ struct QuarterResPrograms {
     struct CompositeProgram {
         uint32_t program = 0;
         int halfColor = -1, halfDepth = -1, sceneDepth = -1, threshold = -1, edgeColor = -1, viewSize = -1;
+        SceneDepthUniforms decode;
     };
     CompositeProgram composite[CompositeVariantCount];
     uint32_t edgeMask = 0;
     int maskHalfDepthLoc = -1, maskSceneDepthLoc = -1, maskThresholdLoc = -1, maskPassLoc = -1, maskFailLoc = -1,
         maskViewLoc = -1;
+    SceneDepthUniforms maskDecode;
 
 private:
     uint32_t tileVao_ = 0, tileVbo_ = 0;

@@ -1,5 +1,6 @@
 #include "CApiBridge.h"
 
+#include <cstddef>
 #include <memory>
 
 #include "../render/ShaderLoader.h"
@@ -89,11 +90,33 @@ void CFrameBuilder::addPass(const char* name, std::initializer_list<Target> read
     c_.addPass(c_.user, name, r, int(reads.size()), w, int(writes.size()), cb);
 }
 
+namespace {
+// API 2.0's fxFrameBuilder ended with addPass; 2.1 appended the z-buffer.
+constexpr size_t kFrameBuilderSize20 = offsetof(fxFrameBuilder, sceneZBuffer);
+bool hasZBufferFields(const fxFrameBuilder& f) { return f.size >= sizeof(fxFrameBuilder); }
+}  // namespace
+
+Target CFrameBuilder::sceneZBuffer() {
+    return Target{hasZBufferFields(c_) && c_.sceneZBuffer ? c_.sceneZBuffer(c_.user) : 0u};
+}
+
+HostDepth CFrameBuilder::sceneZBufferMapping() {
+    HostDepth d;
+    if (!hasZBufferFields(c_)) return d;
+    d.clipDepthZeroToOne = c_.zBufferClipZeroToOne != 0;
+    if (c_.zBufferRangeNear != 0.0f || c_.zBufferRangeFar != 0.0f) {
+        d.depthRangeNear = c_.zBufferRangeNear;
+        d.depthRangeFar = c_.zBufferRangeFar;
+    }
+    return d;
+}
+
 std::string frameBuilderProblem(const fxFrameBuilder* f) {
     if (!f) return "frame is null; expected an fxFrameBuilder";
-    if (f->size != sizeof(fxFrameBuilder)) {
+    if (f->size != sizeof(fxFrameBuilder) && f->size != kFrameBuilderSize20) {
         return "fxFrameBuilder::size = " + std::to_string(f->size) + "; expected " +
-               std::to_string(sizeof(fxFrameBuilder));
+               std::to_string(sizeof(fxFrameBuilder)) + " (API 2.1) or " + std::to_string(kFrameBuilderSize20) +
+               " (API 2.0)";
     }
     if (!f->sceneColor || !f->sceneDepth || !f->createTarget || !f->addPass) {
         return "fxFrameBuilder: sceneColor, sceneDepth, createTarget and addPass must all be set";

@@ -46,6 +46,8 @@ public:
     CFrameBuilder(const fxFrameBuilder& c, ApiErrors& errors) : c_(c), errors_(errors) {}
     Target sceneColor() override { return Target{c_.sceneColor(c_.user)}; }
     Target sceneDepth() override { return Target{c_.sceneDepth(c_.user)}; }
+    Target sceneZBuffer() override;
+    HostDepth sceneZBufferMapping() override;
     Target createTarget(const char* name, const TargetDesc& desc) override;
     void addPass(const char* name, std::initializer_list<Target> reads, std::initializer_list<Target> writes,
                  std::function<void(PassContext&)> execute) override;

@@ -222,3 +222,25 @@ TEST(Options, BadSunValuesAreRejectedNamingTheFlagAndTheExpectation) {
     EXPECT_NE(err.find("--sun"), std::string::npos) << err;
     EXPECT_NE(cube::usage().find("--sun AZ,EL"), std::string::npos);
 }
+
+// --fx-depth: graph (the default: the frame graph samples the z-buffer), linear (the frame graph
+// reads a linear R32F target), zbuffer (the immediate path); anything else names all three.
+TEST(Options, FxDepthPicksOneOfThreeScenePaths) {
+    const struct {
+        const char* word;
+        bool linear, immediate;
+    } cases[] = {{"graph", false, false}, {"linear", true, false}, {"zbuffer", false, true}};
+    const Options defaults;
+    EXPECT_FALSE(defaults.pluginLinearDepth || defaults.pluginZBuffer);
+    for (const auto& c : cases) {
+        Options o;
+        std::string err;
+        ASSERT_TRUE(parse({"--fx-depth", c.word}, &o, &err)) << c.word << ": " << err;
+        EXPECT_EQ(o.pluginLinearDepth, c.linear) << c.word;
+        EXPECT_EQ(o.pluginZBuffer, c.immediate) << c.word;
+    }
+    Options bad;
+    std::string err;
+    EXPECT_FALSE(parse({"--fx-depth", "zbufer"}, &bad, &err));
+    EXPECT_EQ(err, "--fx-depth: expected graph, linear or zbuffer, got 'zbufer'");
+}

@@ -195,3 +195,47 @@ TEST(RenderModes, PassesAndTargetsExistOnlyWhenNeeded) {
     for (const std::string& n : f.game.graph().report().executed) EXPECT_EQ(n.find("particles"), std::string::npos) << n;
 }
 
+
+// The plugin samples the z-buffer the opaque pass drew (the default) instead of a linear R32F
+// target the opaque pass writes as a second render target (--fx-depth linear, API 2.0's
+// contract): one target fewer a frame, no second colour output, and the same picture: both
+// depth forms give the same linear distances to within the z-buffer's precision (reversed-Z
+// float: 6e-8 t; standard 24-bit: 3e-8 t^2 / near, render/DepthMapping.h).
+TEST(RenderModes, ZBufferSampledInPlaceMatchesTheLinearDepthWithOneTargetLess) {
+    for (bool reversed : {true, false}) {
+        SCOPED_TRACE(reversed ? "reversed-Z, 32-bit float" : "standard, 24-bit");
+        Options o = standard();
+        o.reversedZ = reversed;
+        Frames f(o);
+        ASSERT_TRUE(f.ok);
+        struct Case {
+            fx::Technique technique;
+            bool quarter;
+        };
+        for (const Case& c : {Case{fx::Technique::Soft, false}, Case{fx::Technique::Spherical, false},
+                              Case{fx::Technique::Soft, true}, Case{fx::Technique::Mega, false}}) {
+            SCOPED_TRACE(std::to_string(int(c.technique)) + (c.quarter ? " quarter" : ""));
+            f.game.options().pluginLinearDepth = true;
+            const ImageRGBA8 linear = f.render(false, c.technique, c.quarter);
+            const int linearTargets = f.game.graph().report().targetsAcquired;
+            f.game.options().pluginLinearDepth = false;
+            const ImageRGBA8 zbuffer = f.render(false, c.technique, c.quarter);
+            const int zbufferTargets = f.game.graph().report().targetsAcquired;
+            ASSERT_EQ(linear.pixels.size(), zbuffer.pixels.size());
+            int worst = 0;
+            size_t differing = 0;
+            for (size_t i = 0; i < linear.pixels.size(); ++i) {
+                const int d = std::abs(int(linear.pixels[i]) - int(zbuffer.pixels[i]));
+                worst = std::max(worst, d);
+                differing += d != 0;
+            }
+            EXPECT_LE(worst, 1) << differing << " channel values differ";
+            EXPECT_EQ(zbufferTargets, linearTargets - 1) << "no linear scene depth target";
+            EXPECT_GT(f.game.specialFX().plugin()->stats().particlesDrawn, 0);
+        }
+        // Under prepass-EQUAL the prepass is what the particles' z-buffer read keeps running.
+        f.render(true, fx::Technique::Soft, false);
+        EXPECT_TRUE(passKept(f.game.graph(), "chase.depth_prepass"));
+    }
+    EXPECT_EQ(gl::errorCount(), 0) << gl::lastError();
+}

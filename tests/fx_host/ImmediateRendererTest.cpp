@@ -17,6 +17,7 @@
 #include "../../fx_plugin/src/PluginImpl.h"
 #include "../../fx_plugin/render/ImmediateFrame.h"
 #include "../../fx_plugin/render/ImmediateRenderer.h"
+#include "../../fx_plugin/render/SceneDepthSource.h"
 
 namespace fxtest {
 namespace immediate {  // named: the fx_host tests build as unity batches
@@ -393,18 +394,31 @@ TEST_F(ImmediateRendererTest, DepthIsCopiedOnlyWhenAPassReadsIt) {
     EXPECT_EQ(immediate->depthCopies(), 0);
     setMode(kModes[1]);  // soft reads it
     ASSERT_EQ(drawImmediate(graph.colorFramebuffer(), immediateView(Source::BoundFramebuffer)), fx::ErrorCode::None);
+    ASSERT_TRUE(fx::canSampleZBufferInPlace()) << "llvmpipe has glTextureBarrier (GL 4.5)";
+    // The framebuffer's depth cannot be sampled: one copy, decoded by the particle shaders (no
+    // linearise pass, no linear target).
     EXPECT_EQ(immediate->depthCopies(), 1);
-    EXPECT_EQ(immediate->depthLinearizations(), 1);
+    EXPECT_EQ(immediate->depthLinearizations(), 0);
+    EXPECT_EQ(std::count(immediate->lastPasses().begin(), immediate->lastPasses().end(), "particles"), 1);
+    // A depth texture of the host's is sampled where it is, attached to the framebuffer the
+    // particles draw into: no copy either.
+    HostTarget withDepthTexture(kW, kH, GL_DEPTH_COMPONENT24);
+    glBindFramebuffer(GL_FRAMEBUFFER, withDepthTexture.fbo);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    ASSERT_EQ(drawImmediate(withDepthTexture.fbo, immediateView(Source::DepthTexture, withDepthTexture.depth)),
+              fx::ErrorCode::None);
+    EXPECT_EQ(immediate->depthCopies(), 1);
+    EXPECT_EQ(immediate->depthLinearizations(), 0);
 }
 
 TEST_F(ImmediateRendererTest, TargetsAreReusedReallocatedOnResizeAndFreedOnRelease) {
-    setMode(kModes[3]);  // quarter res: transient targets of two sizes + the linear depth
+    setMode(kModes[3]);  // quarter res: the half-res depth and colour (the z-buffer copy is no pooled target)
     for (int f = 0; f < 3; ++f) {
         ASSERT_EQ(drawImmediate(graph.colorFramebuffer(), immediateView(Source::BoundFramebuffer)),
                   fx::ErrorCode::None);
     }
     const int perFrame = immediate->targetsAllocated();
-    EXPECT_GE(perFrame, 3);  // half depth, half colour, linear depth
+    EXPECT_GE(perFrame, 2);  // half depth, half colour
     EXPECT_EQ(immediate->targetAllocations(), perFrame) << "frames 2 and 3 reuse frame 1's targets";
 
     // The view changes size: new targets; the old ones go after ImmediateTargetPool::kKeepFrames.

@@ -47,6 +47,17 @@ public:
     /// Reading it is what makes the host produce it (a depth prepass, or a copy of the opaque
     /// pass's depth); a frame where no plugin pass reads it needs none.
     virtual Target sceneDepth() = 0;
+    /// API 2.1. The z-buffer sceneColor draws on, holding the opaque scene, for passes that
+    /// sample it instead of sceneDepth: a pass lists it among its reads (which is what makes the
+    /// host keep its writers), and PassContext::texture(it) returns the depth texture
+    /// (TargetFormat::Depth). The plugin samples it while sceneColor is bound with depth writes
+    /// off, after a texture barrier; it never writes it. Target{} (the default): the host offers
+    /// none, and the plugin reads sceneDepth, which the host must then produce.
+    virtual Target sceneZBuffer() { return Target{}; }
+    /// API 2.1. How that z-buffer was drawn: clip control and depth range (HostDepth's
+    /// clipDepthZeroToOne, depthRangeNear, depthRangeFar; its source and texture are not read).
+    /// With ViewInfo::proj this is all the plugin needs to turn it into metres.
+    virtual HostDepth sceneZBufferMapping() { return HostDepth{}; }
     /// A transient target for this view's passes; TargetDesc's relative sizes follow the view.
     virtual Target createTarget(const char* name, const TargetDesc& desc) = 0;
     virtual void addPass(const char* name, std::initializer_list<Target> reads,

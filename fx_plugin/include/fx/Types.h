@@ -73,7 +73,8 @@ struct HostDepth {
 };
 
 /// Colour formats the host's render-to-texture layer must offer to the plugin.
-enum class TargetFormat : uint8_t { RGBA8, RGBA16F, R32F, RG32F };
+/// Depth (API 2.1): only in a TextureRef, for FrameBuilder::sceneZBuffer's depth texture.
+enum class TargetFormat : uint8_t { RGBA8, RGBA16F, R32F, RG32F, Depth };
 
 /// A render target the plugin asks the host for.
 /// Defaults: follows the view at full size, RGBA8, linear filtering, clamp to edge, no depth.

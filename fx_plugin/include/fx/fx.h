@@ -45,7 +45,7 @@ extern "C" {
 #endif
 
 #define FX_API_VERSION_MAJOR 2
-#define FX_API_VERSION_MINOR 0
+#define FX_API_VERSION_MINOR 1
 #define FX_API_VERSION ((uint32_t)((FX_API_VERSION_MAJOR << 16) | FX_API_VERSION_MINOR))
 
 /* Zero-initialises a descriptor and sets its size: `fxViewDesc v = FX_DESC_INIT(fxViewDesc);`
@@ -77,7 +77,8 @@ enum { FX_TECHNIQUE_FROM_REACTION = 0, FX_TECHNIQUE_HARD, FX_TECHNIQUE_SOFT, FX_
 enum { FX_SHAPE_TRIMMED = 0, FX_SHAPE_QUAD = 1 };
 enum { FX_EDGES_DEPTH_AWARE = 0, FX_EDGES_MIXED_RESOLUTION = 1 };
 enum { FX_FADE_CLASSIFICATION_OFF = 0, FX_FADE_CLASSIFICATION_ON = 1 };
-enum { FX_FORMAT_RGBA8 = 0, FX_FORMAT_RGBA16F, FX_FORMAT_R32F, FX_FORMAT_RG32F };
+enum { FX_FORMAT_RGBA8 = 0, FX_FORMAT_RGBA16F, FX_FORMAT_R32F, FX_FORMAT_RG32F,
+       FX_FORMAT_DEPTH /* API 2.1: fxTextureRef of fxFrameBuilder.sceneZBuffer only */ };
 /* How the host's z-buffer is ordered: standard (near = 0, LEQUAL) or reversed (near = 1, GEQUAL). */
 enum { FX_DEPTH_STANDARD = 0, FX_DEPTH_REVERSED_Z = 1 };
 enum { FX_RIGHT_HANDED = 0, FX_LEFT_HANDED = 1 };
@@ -204,6 +205,15 @@ typedef struct fxFrameBuilder {
     uint32_t (*createTarget)(void* user, const char* name, const fxTargetDesc* desc);
     void (*addPass)(void* user, const char* name, const uint32_t* reads, int readCount,
                     const uint32_t* writes, int writeCount, fxPassCallback callback);
+    /* API 2.1 (a 2.0 host's smaller size leaves them out: the plugin then reads sceneDepth).
+     * The z-buffer sceneColor draws on, holding the opaque scene: a target a pass lists among
+     * its reads to sample it (fxPassContext.texture gives the depth texture, FX_FORMAT_DEPTH),
+     * and how it was drawn. The plugin samples it in place, with depth writes off and a texture
+     * barrier first, where the context has glTextureBarrier (GL 4.5, ARB_texture_barrier), and
+     * never writes it; then the host needs no linear depth at all. Null or 0 = none offered. */
+    uint32_t (*sceneZBuffer)(void* user);
+    fxBool zBufferClipZeroToOne;            /* drawn under glClipControl(..., GL_ZERO_TO_ONE) */
+    float zBufferRangeNear, zBufferRangeFar; /* glDepthRange it was drawn with; both 0 = [0, 1] */
 } fxFrameBuilder;
 
 /* ---- what the plugin gives back ------------------------------------------------------------ */

@@ -99,6 +99,11 @@ public:
             return self(u).createTarget(name, t).id;
         };
         c_.addPass = &FrameBridge::addPass;
+        c_.sceneZBuffer = [](void* u) { return self(u).sceneZBuffer().id; };
+        const HostDepth mapping = frame.sceneZBufferMapping();
+        c_.zBufferClipZeroToOne = mapping.clipDepthZeroToOne ? 1 : 0;
+        c_.zBufferRangeNear = mapping.depthRangeNear;
+        c_.zBufferRangeFar = mapping.depthRangeFar;
     }
     const fxFrameBuilder* c() const { return &c_; }
 

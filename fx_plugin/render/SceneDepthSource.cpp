@@ -1,0 +1,46 @@
+#include "SceneDepthSource.h"
+
+#include "PrivateGl.h"
+
+namespace fx {
+
+SceneDepthDecode SceneDepthDecode::ofZBuffer(const glm::mat4& proj, const DepthMapping& mapping) {
+    const LinearizeCoefficients k = linearizeCoefficients(proj, mapping);
+    SceneDepthDecode out;
+    out.a = k.a;
+    out.b = k.b;
+    out.c = k.c;
+    out.d = k.d;
+    out.farWindow = k.farWindow;
+    out.direction = k.reversed ? -1.0f : 1.0f;
+    out.zBuffer = true;
+    return out;
+}
+
+bool canSampleZBufferInPlace() { return glTextureBarrier != nullptr; }
+
+SceneDepthSource sceneDepthSource(FrameBuilder& frame, const ViewInfo& view) {
+    if (canSampleZBufferInPlace()) {
+        const Target z = frame.sceneZBuffer();
+        if (z.valid()) {
+            const HostDepth how = frame.sceneZBufferMapping();
+            DepthMapping mapping;
+            mapping.clipZeroToOne = how.clipDepthZeroToOne;
+            mapping.rangeNear = how.depthRangeNear;
+            mapping.rangeFar = how.depthRangeFar;
+            if (validDepthMapping(view.proj, mapping)) return {z, SceneDepthDecode::ofZBuffer(view.proj, mapping)};
+        }
+    }
+    return {frame.sceneDepth(), SceneDepthDecode::linear()};
+}
+
+void sceneDepthBarrier(const SceneDepthDecode& decode) {
+    if (decode.zBuffer && glTextureBarrier) glTextureBarrier();
+}
+
+void setSceneDepthDecode(const SceneDepthUniforms& at, const SceneDepthDecode& decode) {
+    glUniform4f(at.coeffs, decode.a, decode.b, decode.c, decode.d);
+    glUniform2f(at.far, decode.farWindow, decode.direction);
+}
+
+}  // namespace fx

@@ -1,0 +1,63 @@
+#pragma once
+// Where a view's passes read the scene depth, and how they turn it into metres
+// (shaders/particles_scene_depth.glsl).
+//
+// Two forms, chosen once per view when its passes are declared (sceneDepthSource):
+//  - the z-buffer the opaque scene was drawn into (FrameBuilder::sceneZBuffer, API 2.1), sampled
+//    in place while the particle passes depth-test against it with depth writes off, and decoded
+//    per fragment with the inversion of DepthMapping.h. Nothing is written for it: no second
+//    colour target in the host's opaque pass, no copy, no linearise pass. Reading a depth texture
+//    that is attached to the framebuffer being drawn is defined only with texture barriers
+//    (GL 4.5, ARB_texture_barrier) between the writes and the reads, and only while nothing
+//    writes it; so it is taken only where glTextureBarrier is loaded, and every pass that samples
+//    it calls it first (useSceneDepth).
+//  - the linear R32F depth the host makes (FrameBuilder::sceneDepth, the API 2.0 contract):
+//    every host that offers no z-buffer, a z-buffer whose mapping is not one GL can have, and
+//    contexts without texture barriers. Decoded with the identity (t = d, bit for bit).
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "DepthMapping.h"
+#include "fx/HostAdapter.h"
+
+namespace fx {
+
+/// The coefficients of linearSceneDepth() (particles_scene_depth.glsl). Defaults: the identity
+/// for linear depth (A = 0, B = 1, C = 1, D = 0; nothing drawn only where t <= 0).
+struct SceneDepthDecode {
+    float a = 0.0f, b = 1.0f, c = 1.0f, d = 0.0f;
+    float farWindow = 3.0e38f;  ///< window depth of the far plane
+    float direction = 1.0f;     ///< -1 where window depth falls with distance (reversed-Z)
+    bool zBuffer = false;       ///< decodes a z-buffer (the passes need a texture barrier first)
+
+    static SceneDepthDecode linear() { return SceneDepthDecode{}; }
+    /// A z-buffer drawn with `proj` under `mapping` (DepthMapping.h's inversion).
+    static SceneDepthDecode ofZBuffer(const glm::mat4& proj, const DepthMapping& mapping);
+};
+
+/// The scene depth a view's passes read: `target` (sceneZBuffer or sceneDepth) and its decode.
+struct SceneDepthSource {
+    Target target;
+    SceneDepthDecode decode;
+};
+
+/// The z-buffer where the host offers one and it can be sampled in place, else sceneDepth.
+/// Declares nothing; the caller lists `target` among the reads of each pass that samples it.
+SceneDepthSource sceneDepthSource(FrameBuilder& frame, const ViewInfo& view);
+
+/// True when glTextureBarrier is loaded (GL 4.5 or ARB_texture_barrier): the z-buffer can be
+/// sampled while it is attached to the framebuffer a pass draws into.
+bool canSampleZBufferInPlace();
+
+/// Uniform locations of uDepthCoeffs and uDepthFar in one program.
+struct SceneDepthUniforms {
+    int coeffs = -1, far = -1;
+};
+/// Sets the decode on the program in use.
+void setSceneDepthDecode(const SceneDepthUniforms& at, const SceneDepthDecode& decode);
+/// Once per pass that samples the z-buffer, before its first draw: a texture barrier, so the
+/// host's depth writes are visible to the pass's fetches. Nothing for linear depth.
+void sceneDepthBarrier(const SceneDepthDecode& decode);
+
+}  // namespace fx

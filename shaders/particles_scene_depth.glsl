@@ -1,0 +1,18 @@
+// The scene depth as every pass that reads it sees it: linear view depth in metres, from either
+// form a host hands over (fx_plugin/render/SceneDepthSource.h decides which, per view):
+//   - the z-buffer the opaque scene was drawn into (window depth d in .r of a depth texture,
+//     read without comparison): t = (A + B d) / (C + D d), the inversion DepthMapping.h derives
+//     for every convention (GL or [0, 1] clip z, depth range, reversed-Z, infinite far,
+//     orthographic). No linearise pass and no second colour target: the fragment decodes it.
+//   - linear R32F metres (FrameBuilder::sceneDepth): A = 0, B = 1, C = 1, D = 0, so t = d exactly.
+// "Nothing drawn" reads as 3.0e38 (infinitely far): a window depth at or beyond the far plane
+// (farther in the buffer's direction), or a distance that is not positive (a linear host may
+// clear to 0: fx/HostAdapter.h).
+uniform vec4 uDepthCoeffs;  // A, B, C, D
+uniform vec2 uDepthFar;     // window depth of the far plane; +1, or -1 when depth falls with distance
+
+float linearSceneDepth(float d) {
+    float t = (uDepthCoeffs.x + uDepthCoeffs.y * d) / (uDepthCoeffs.z + uDepthCoeffs.w * d);
+    // (d - far) has the sign of "beyond the far plane" times uDepthFar.y's sign: one compare.
+    return (d - uDepthFar.x) * uDepthFar.y < 0.0 && t > 0.0 ? t : 3.0e38;
+}
