@@ -247,6 +247,40 @@ TEST(Fxbench, ParticleSweepKeepsTheAskedParticleCountsAlive) {
     std::filesystem::remove(json);
 }
 
+// Switching modes goes through prepareGl (as the engine's key and panel switches do): no program
+// is built while a frame is declared, fade classification included (it reaches the classified
+// programs). Each mode's per-pass times list only the passes its own renders ran.
+TEST(Fxbench, ModeSwitchesBuildNoProgramWhileDeclaringAndPassTimesStayWithTheirMode) {
+    const std::string json = tempPath("passes.json");
+    const RunOutput r = runFxbench("--modes hard,soft+quarter,soft+classify --size 48x48 --frames 2 --rounds 2 "
+                                   "--warmup 1 --error-frames 0 --json " + json);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.output.find("built while declaring a frame"), std::string::npos) << r.output;
+    const YAML::Node run = YAML::Load(readFile(json));
+    std::filesystem::remove(json);
+    auto passes = [&](const char* mode) {
+        std::vector<std::string> names;
+        for (const auto& kv : modeNode(run, mode)["passes_ms"]) names.push_back(kv.first.as<std::string>());
+        return names;
+    };
+    auto has = [](const std::vector<std::string>& names, const std::string& pass) {
+        return std::find(names.begin(), names.end(), pass) != names.end();
+    };
+    const std::vector<std::string> hard = passes("hard"), quarter = passes("soft+quarter"),
+                                   classify = passes("soft+classify");
+    for (const char* pass : {"chase.particles_quarter", "chase.particles_composite", "chase.particles_depth_downsample"}) {
+        SCOPED_TRACE(pass);
+        EXPECT_TRUE(has(quarter, pass));
+        EXPECT_FALSE(has(hard, pass));
+        EXPECT_FALSE(has(classify, pass));
+    }
+    EXPECT_TRUE(has(hard, "chase.particles"));
+    EXPECT_FALSE(has(quarter, "chase.particles"));
+    EXPECT_TRUE(has(classify, "chase.particles_tile_depth"));
+    EXPECT_FALSE(has(hard, "chase.particles_tile_depth"));
+    EXPECT_FALSE(has(quarter, "chase.particles_tile_depth"));
+}
+
 TEST(Fxbench, UnknownModeIsRejectedWithTheValidNames) {
     const RunOutput r = runFxbench("--modes soft,sofft");
     EXPECT_EQ(r.status, 2);
