@@ -166,6 +166,8 @@ private:
             ms = game_.RenderFrame();
         }
         m.frameMs.push_back(ms);
+        // Game::RenderFrame resolved this render's pass timings after its glFinish (GPU timer
+        // results included), so every lastMs below is this render's, in this mode.
         double particles = 0.0;
         for (const cube::rtt::PassTiming& t : game_.graph().report().timings) {
             if (t.lastMs < 0.0) continue;

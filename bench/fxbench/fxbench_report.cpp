@@ -53,6 +53,10 @@ std::string markdownReport(const Report& r) {
     o += "- scenario: " + r.description + "\n";
     o += "- renderer: " + r.renderer + " (" + r.backend + "); timing: " + r.timingMethod +
          " (frame = Game::RenderFrame wall ms, CPU clock around glFinish)\n";
+    o += r.timingMethod == std::string("cpu-glfinish")
+             ? "- pass times: CPU clock between glFinish calls around each pass\n"
+             : "- pass times: " + r.timingMethod + " results of each render, waited for after its glFinish "
+               "(Game::RenderFrame), so every mode's pass times are its own renders'\n";
     std::snprintf(line, sizeof line,
                   "- %d timed simulated frames x %d rounds per mode (dt 1/60 s, seed %u), after %d warm-up "
                   "frames; modes interleaved per frame, order rotated each round; HUD off, mirror %s\n",
@@ -154,6 +158,9 @@ std::string jsonReport(const Report& r, const std::string& in) {
     o += in + "  \"frame_ms_definition\": " + jsonQuote(std::string(
         "Game::RenderFrame wall ms (CPU clock around glFinish) of the timed render; every mode's render targets stay "
         "pooled across a round, and a render that still created or freed targets is repeated and the repeat timed")) + ",\n";
+    o += in + "  \"pass_ms_definition\": " + jsonQuote(r.timingMethod == std::string("cpu-glfinish")
+        ? std::string("CPU clock between glFinish calls around each pass")
+        : r.timingMethod + " results of each render, waited for after its glFinish (Game::RenderFrame)") + ",\n";
     o += in + "  \"notes\": [";
     for (size_t i = 0; i < r.notes.size(); ++i) o += (i ? ", " : "") + jsonQuote(r.notes[i]);
     o += "],\n";

@@ -93,10 +93,6 @@ Report makeReport(const RunConfig& config, const RunResult& result, unsigned see
     }
     if (!added.empty())
         r.notes.push_back("also measured (not shown) as reference / base: " + added);
-    if (r.timingMethod != std::string("cpu-glfinish"))
-        r.notes.push_back(std::string("per-pass times come from ") + r.timingMethod +
-                          ", whose results arrive frames late: with modes interleaved they mix modes; "
-                          "trust frame times (CPU clock around glFinish) first");
     int allocs = 0;
     for (const ModeRun& m : result.modes) allocs += m.allocatingRenders;
     if (allocs > 0) {

@@ -256,6 +256,7 @@ TEST(Fxbench, ModeSwitchesBuildNoProgramWhileDeclaringAndPassTimesStayWithTheirM
                                    "--warmup 1 --error-frames 0 --json " + json);
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_EQ(r.output.find("built while declaring a frame"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("mix modes"), std::string::npos) << r.output;
     const YAML::Node run = YAML::Load(readFile(json));
     std::filesystem::remove(json);
     auto passes = [&](const char* mode) {
