@@ -168,9 +168,10 @@ private:
         m.frameMs.push_back(ms);
         // Game::RenderFrame resolved this render's pass timings after its glFinish (GPU timer
         // results included), so every lastMs below is this render's, in this mode.
-        double particles = 0.0;
+        double particles = 0.0, passes = 0.0;
         for (const cube::rtt::PassTiming& t : game_.graph().report().timings) {
             if (t.lastMs < 0.0) continue;
+            passes += t.lastMs;
             auto it = m.passMs.find(t.name);
             if (it == m.passMs.end()) {
                 m.passOrder.push_back(t.name);
@@ -180,6 +181,7 @@ private:
             if (isParticlePass(t.name)) particles += t.lastMs;
         }
         m.particleMs.push_back(particles);
+        m.outsidePassesMs.push_back(ms - passes);
         m.frameParticleMs.push_back(particles);
         const fx::Plugin* plugin = game_.specialFX().plugin();
         m.particlesDrawn.push_back(m.mode->effects && plugin ? plugin->stats().particlesDrawn : 0);

@@ -73,15 +73,16 @@ std::string markdownReport(const Report& r) {
                   r.modes.empty() ? 0 : r.modes[0].errorFrames, kPsnrCapDb);
     o += line;
     o += "\n| Method | Setup | Min FPS | Max FPS | Average FPS | p50 ms | p95 ms | p99 ms | vs hard | "
-         "particle ms | fill-limit x | RMSE | PSNR dB | max abs | edge % |\n";
-    o += "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+         "particle ms | outside passes ms | fill-limit x | RMSE | PSNR dB | max abs | edge % |\n";
+    o += "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const ModeSummary& m : r.modes) {
         std::snprintf(line, sizeof line, "| %s (`%s`) | %dx%d, %s | ", m.setup.c_str(), m.name.c_str(), r.width,
                       r.height, r.scenario.c_str());
         o += line;
         o += fmt("%.1f", m.fpsMin) + " | " + fmt("%.1f", m.fpsMax) + " | " + fmt("%.1f", m.fpsAvg) + " | ";
         o += fmt("%.2f", m.p50) + " | " + fmt("%.2f", m.p95) + " | " + fmt("%.2f", m.p99) + " | ";
-        o += fmt("%.3f", m.ratioVsHard) + " | " + fmt("%.2f", m.particleMs) + " | ";
+        o += fmt("%.3f", m.ratioVsHard) + " | " + fmt("%.2f", m.particleMs) + " | " + fmt("%.2f", m.outsidePassesMs) +
+             " | ";
         o += (m.fillLimitRatio > 0 ? fmt("%.1f", m.fillLimitRatio) : std::string("-")) + " | ";
         o += fmt("%.2f", m.rmse) + " | " + psnrText(m.psnrDb) + " | " + fmt("%.0f", m.maxAbs) + " | " +
              fmt("%.2f", m.edgePct) + " |\n";
@@ -124,6 +125,7 @@ std::string markdownReport(const Report& r) {
     o += std::string("- coverage: ") + coverageDefinition() + "; fill-limit x = particle ms / fill-limit ms "
          "(median over error frames; '-' = no particle pass)\n";
     o += std::string("- edge %: ") + edgeDefinition() + "\n";
+    o += std::string("- outside passes ms: ") + outsidePassesDefinition() + "\n";
     std::snprintf(line, sizeof line, "- pixels next to depth edges: %.1f%% of the frame\n", r.edgePixelPct);
     o += line;
     for (const std::string& n : r.notes) o += "- note: " + n + "\n";
@@ -161,6 +163,7 @@ std::string jsonReport(const Report& r, const std::string& in) {
     o += in + "  \"pass_ms_definition\": " + jsonQuote(r.timingMethod == std::string("cpu-glfinish")
         ? std::string("CPU clock between glFinish calls around each pass")
         : r.timingMethod + " results of each render, waited for after its glFinish (Game::RenderFrame)") + ",\n";
+    o += in + "  \"outside_passes_definition\": " + jsonQuote(outsidePassesDefinition()) + ",\n";
     o += in + "  \"notes\": [";
     for (size_t i = 0; i < r.notes.size(); ++i) o += (i ? ", " : "") + jsonQuote(r.notes[i]);
     o += "],\n";
@@ -181,6 +184,7 @@ std::string jsonReport(const Report& r, const std::string& in) {
             o += (k ? ", " : "") + jsonQuote(m.passes[k].first) + ": " + num(m.passes[k].second);
         o += "},\n";
         o += p + "  \"particle_pass_ms\": " + num(m.particleMs) + ",\n";
+        o += p + "  \"outside_passes_ms\": " + num(m.outsidePassesMs) + ",\n";
         o += p + "  \"particle_fragments\": " + num(m.particleFragments) + ",\n";
         o += p + "  \"particles\": " + num(m.particles) + ",\n";
         if (m.classified) {
@@ -206,7 +210,7 @@ std::string csvRows(const Report& r, const std::string& point, bool header) {
     if (header)
         o += "point,scenario,width,height,mode,fps_min,fps_avg,fps_max,p50_ms,p95_ms,p99_ms,ratio_vs_hard,"
              "ratio_vs_nofx,particle_pass_ms,particle_fragments,particles,coverage_pct,fill_limit_ms,fill_limit_ratio,reference,"
-             "rmse,psnr_db,max_abs,edge_pct,passes_ms,fade_needed,in_front,hidden\n";
+             "rmse,psnr_db,max_abs,edge_pct,passes_ms,fade_needed,in_front,hidden,outside_passes_ms\n";
     for (const ModeSummary& m : r.modes) {
         std::string passes;
         for (const auto& p : m.passes) passes += (passes.empty() ? "" : ";") + p.first + "=" + num(p.second);
@@ -216,7 +220,8 @@ std::string csvRows(const Report& r, const std::string& point, bool header) {
              num(m.particleFragments) + "," + num(m.particles) + "," + num(m.coveragePct) + "," + num(m.fillLimitMs) + "," + num(m.fillLimitRatio) +
              "," + m.reference + "," + num(m.rmse) + "," + num(m.psnrDb) + "," + num(m.maxAbs) + "," +
              num(m.edgePct) + ",\"" + passes + "\"," + (m.classified ? num(m.fadeNeeded) : "") + "," +
-             (m.classified ? num(m.inFront) : "") + "," + (m.classified ? num(m.hidden) : "") + "\n";
+             (m.classified ? num(m.inFront) : "") + "," + (m.classified ? num(m.hidden) : "") + "," +
+             num(m.outsidePassesMs) + "\n";
     }
     return o;
 }

@@ -18,6 +18,12 @@ const char* coverageDefinition() {
     return "pixels whose RGB differs from the nofx frame of the same simulated frame";
 }
 
+const char* outsidePassesDefinition() {
+    return "median over timed renders of the frame's ms (CPU clock around glFinish) minus the sum of that "
+           "render's pass ms: declaring, culling and compiling the frame graph and the CPU work between "
+           "passes; with GPU timer queries also GPU time outside any pass";
+}
+
 ModeSummary summarise(const ModeRun& run, const ModeRun* hard, const ModeRun* nofx) {
     ModeSummary s;
     s.name = run.mode->name;
@@ -39,6 +45,7 @@ ModeSummary summarise(const ModeRun& run, const ModeRun* hard, const ModeRun* no
     s.ratioVsNofx = nofxP50 > 0.0 ? s.p50 / nofxP50 : 0.0;
     for (const std::string& name : run.passOrder) s.passes.emplace_back(name, median(run.passMs.at(name)));
     s.particleMs = median(run.particleMs);
+    s.outsidePassesMs = median(run.outsidePassesMs);
     s.particleFragments = median(run.particleFragments);
     s.particles = median(run.particlesDrawn);
     s.classified = !run.fadeNeeded.empty();

@@ -18,6 +18,7 @@ struct ModeSummary {
     double ratioVsHard = 0, ratioVsNofx = 0;    ///< median frame ms / base's median
     std::vector<std::pair<std::string, double>> passes;  ///< median ms per pass, run order
     double particleMs = 0;                      ///< median of the per-frame sum of particle passes
+    double outsidePassesMs = 0;                 ///< median of frame ms - sum of pass ms (ModeRun)
     double particleFragments = 0;               ///< median over error frames of the samples the particle passes wrote
     double particles = 0;                       ///< median particles drawn (0 for nofx)
     bool classified = false;                    ///< fade classes counted (the *+classify modes)
@@ -49,5 +50,6 @@ Report makeReport(const RunConfig& config, const RunResult& result, unsigned see
 /// The edge, coverage and timing definitions, for the table's footer and the JSON.
 const char* edgeDefinition();
 const char* coverageDefinition();
+const char* outsidePassesDefinition();
 
 }  // namespace fxbench

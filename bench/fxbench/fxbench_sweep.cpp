@@ -57,26 +57,28 @@ std::string costTable(const Sweep& sweep, const std::vector<Point>& points) {
     const bool particles = sweep.kind == Sweep::Kind::Particles;
     std::string o = particles ? "\n## Cost curve: live particles (fixed donut camera, generated reaction)\n\n"
                               : "\n## Cost curve: view size\n\n";
-    o += particles ? "| particles asked | alive | mode | p50 ms | particle ms | us / particle (particle ms) | vs hard |\n"
-                   : "| size | Mpixel | mode | p50 ms | ms / Mpixel | particle ms | vs hard |\n";
-    o += "|---|---:|---|---:|---:|---:|---:|\n";
+    o += particles ? "| particles asked | alive | mode | p50 ms | particle ms | outside passes ms | us / particle (particle "
+                     "ms) | vs hard |\n"
+                   : "| size | Mpixel | mode | p50 ms | ms / Mpixel | particle ms | outside passes ms | vs hard |\n";
+    o += "|---|---:|---|---:|---:|---:|---:|---:|\n";
     for (const Point& p : points) {
         for (const ModeSummary& m : p.report.modes) {
             if (particles) {
                 o += "| " + p.label + " | " + fmt("%.0f", p.work) + " | " + m.name + " | " + fmt("%.2f", m.p50) + " | " +
-                     fmt("%.2f", m.particleMs) + " | " +
+                     fmt("%.2f", m.particleMs) + " | " + fmt("%.2f", m.outsidePassesMs) + " | " +
                      (p.work > 0 ? fmt("%.3f", 1000.0 * m.particleMs / p.work) : std::string("-")) + " | " +
                      fmt("%.3f", m.ratioVsHard) + " |\n";
             } else {
                 o += "| " + p.label + " | " + fmt("%.3f", p.work) + " | " + m.name + " | " + fmt("%.2f", m.p50) + " | " +
                      fmt("%.2f", m.p50 / p.work) + " | " + fmt("%.2f", m.particleMs) + " | " +
-                     fmt("%.3f", m.ratioVsHard) + " |\n";
+                     fmt("%.2f", m.outsidePassesMs) + " | " + fmt("%.3f", m.ratioVsHard) + " |\n";
             }
         }
     }
     o += particles ? "\nus / particle = particle-pass ms x 1000 / live particles; growth between rows shows how cost "
                      "scales with particle count (sorting, instance upload, fill).\n"
                    : "\nms / Mpixel = median frame ms / megapixels; a constant value means cost grows with pixels.\n";
+    o += std::string("outside passes ms: ") + outsidePassesDefinition() + ".\n";
     return o;
 }
 
