@@ -130,6 +130,14 @@ public:
         }
         out_->particlesAlive = median(alive);
         out_->simMsPerFrame = median(simMs);
+        if (const fx::Plugin* plugin = game_.specialFX().plugin()) {
+            out_->particleCapacity = plugin->stats().particleCapacity;
+            for (int i = 0; i < plugin->reactionCount(); ++i) {
+                const fx::ReactionStats rs = plugin->reactionStats(i);
+                out_->particlesEmitted += double(rs.emitted);
+                out_->particlesDropped += double(rs.dropped);
+            }
+        }
         out_->edgePixelPct = edgeSamples_ ? 100.0 * double(edgeCount_) / double(edgeSamples_) : 0.0;
         out_->glErrors = cube::gl::errorCount();
         return true;

@@ -52,6 +52,9 @@ struct RunResult {
     double particlesAlive = 0.0;       ///< median over timed frames
     double edgePixelPct = 0.0;         ///< share of pixels next to depth edges (error frames)
     double simMsPerFrame = 0.0;        ///< median Game::Update wall ms
+    /// At the end of the run, over every reaction (Plugin::stats, reactionStats): pool slots,
+    /// particles that entered a pool, particles due while their pool was full.
+    double particleCapacity = 0.0, particlesEmitted = 0.0, particlesDropped = 0.0;
     int glErrors = 0;
 };
 

@@ -62,9 +62,17 @@ std::string markdownReport(const Report& r) {
                   "frames; modes interleaved per frame, order rotated each round; HUD off, mirror %s\n",
                   r.frames, r.rounds, r.seed, r.warmup, r.mirror ? "on" : "off");
     o += line;
-    std::snprintf(line, sizeof line,
-                  "- particles alive (median): %.0f; simulation %.3f ms/frame (not in frame times)\n",
-                  r.particlesAlive, r.simMsPerFrame);
+    if (r.particlesRequested > 0) {
+        std::snprintf(line, sizeof line,
+                      "- particles alive (median): %.0f of %.0f requested (%.1f%%; pools %.0f); simulation %.3f "
+                      "ms/frame (not in frame times)\n",
+                      r.particlesAlive, r.particlesRequested, 100.0 * r.particlesAlive / r.particlesRequested,
+                      r.particleCapacity, r.simMsPerFrame);
+    } else {
+        std::snprintf(line, sizeof line,
+                      "- particles alive (median): %.0f; simulation %.3f ms/frame (not in frame times)\n",
+                      r.particlesAlive, r.simMsPerFrame);
+    }
     o += line;
     std::snprintf(line, sizeof line,
                   "- image error over %d frames per mode against the reference's render of the same simulated "
@@ -151,6 +159,8 @@ std::string jsonReport(const Report& r, const std::string& in) {
     o += in + "  \"psnr_cap_db\": " + num(kPsnrCapDb) + ",\n";
     o += in + "  \"particles_alive\": " + num(r.particlesAlive) + ",\n";
     o += in + "  \"sim_ms_per_frame\": " + num(r.simMsPerFrame) + ",\n";
+    if (r.particlesRequested > 0) o += in + "  \"particles_requested\": " + num(r.particlesRequested) + ",\n";
+    o += in + "  \"particle_capacity\": " + num(r.particleCapacity) + ",\n";
     o += in + "  \"edge_pixel_pct\": " + num(r.edgePixelPct) + ",\n";
     o += in + "  \"edge_definition\": " + jsonQuote(edgeDefinition()) + ",\n";
     o += in + "  \"coverage_definition\": " + jsonQuote(coverageDefinition()) + ",\n";

@@ -82,6 +82,9 @@ Report makeReport(const RunConfig& config, const RunResult& result, unsigned see
     r.particlesAlive = result.particlesAlive;
     r.edgePixelPct = result.edgePixelPct;
     r.simMsPerFrame = result.simMsPerFrame;
+    r.particleCapacity = result.particleCapacity;
+    r.particlesEmitted = result.particlesEmitted;
+    r.particlesDropped = result.particlesDropped;
     const ModeRun* hard = nullptr;
     const ModeRun* nofx = nullptr;
     for (const ModeRun& m : result.modes) {
@@ -127,6 +130,26 @@ Report makeReport(const RunConfig& config, const RunResult& result, unsigned see
     }
     if (result.glErrors > 0) r.notes.push_back("GL errors were reported during the run: " + std::to_string(result.glErrors));
     return r;
+}
+
+void noteParticlesReached(Report* r, double requested) {
+    r->particlesRequested = requested;
+    if (requested <= 0.0 || r->particlesAlive >= (1.0 - kSweepReachTolerance) * requested) return;
+    char line[400];
+    std::snprintf(line, sizeof line, "reached %.0f of %.0f particles asked (%.1f%%; tolerance %.0f%%): ",
+                  r->particlesAlive, requested, 100.0 * r->particlesAlive / requested, 100.0 * kSweepReachTolerance);
+    std::string why = line;
+    if (r->particleCapacity < requested) {
+        std::snprintf(line, sizeof line, "the pools hold %.0f", r->particleCapacity);
+    } else if (r->particlesEmitted < requested) {
+        std::snprintf(line, sizeof line, "emission too slow: %.0f emitted by the end of the run", r->particlesEmitted);
+    } else {
+        std::snprintf(line, sizeof line,
+                      "%.0f emitted (%.0f due at full pools, dropped), but particles died before or during the "
+                      "timed frames",
+                      r->particlesEmitted, r->particlesDropped);
+    }
+    r->notes.push_back(why + line);
 }
 
 }  // namespace fxbench
