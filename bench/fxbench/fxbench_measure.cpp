@@ -130,6 +130,14 @@ public:
         }
         out_->particlesAlive = median(alive);
         out_->simMsPerFrame = median(simMs);
+        if (const fx::Plugin* plugin = game_.specialFX().plugin()) {
+            out_->particleCapacity = plugin->stats().particleCapacity;
+            for (int i = 0; i < plugin->reactionCount(); ++i) {
+                const fx::ReactionStats rs = plugin->reactionStats(i);
+                out_->particlesEmitted += double(rs.emitted);
+                out_->particlesDropped += double(rs.dropped);
+            }
+        }
         out_->edgePixelPct = edgeSamples_ ? 100.0 * double(edgeCount_) / double(edgeSamples_) : 0.0;
         out_->glErrors = cube::gl::errorCount();
         return true;
@@ -166,9 +174,12 @@ private:
             ms = game_.RenderFrame();
         }
         m.frameMs.push_back(ms);
-        double particles = 0.0;
+        // Game::RenderFrame resolved this render's pass timings after its glFinish (GPU timer
+        // results included), so every lastMs below is this render's, in this mode.
+        double particles = 0.0, passes = 0.0;
         for (const cube::rtt::PassTiming& t : game_.graph().report().timings) {
             if (t.lastMs < 0.0) continue;
+            passes += t.lastMs;
             auto it = m.passMs.find(t.name);
             if (it == m.passMs.end()) {
                 m.passOrder.push_back(t.name);
@@ -178,6 +189,7 @@ private:
             if (isParticlePass(t.name)) particles += t.lastMs;
         }
         m.particleMs.push_back(particles);
+        m.outsidePassesMs.push_back(ms - passes);
         m.frameParticleMs.push_back(particles);
         const fx::Plugin* plugin = game_.specialFX().plugin();
         m.particlesDrawn.push_back(m.mode->effects && plugin ? plugin->stats().particlesDrawn : 0);

@@ -30,6 +30,10 @@ struct ModeRun {
     bool selected = false;                          ///< asked for (else measured as a reference)
     std::vector<double> frameMs;                    ///< one per timed render (RenderFrame wall ms)
     std::vector<double> particleMs;                 ///< per timed render: passes named *particles*
+    /// Per timed render: frame ms minus the sum of every pass's ms of that render (the CPU
+    /// clock's frame less the timer's passes): declaring, compiling and culling the graph, the
+    /// CPU work between passes and, with GPU timer queries, GPU time outside any pass.
+    std::vector<double> outsidePassesMs;
     std::map<std::string, std::vector<double>> passMs;
     std::vector<std::string> passOrder;             ///< pass names in first-run order
     std::vector<double> particlesDrawn;
@@ -48,6 +52,9 @@ struct RunResult {
     double particlesAlive = 0.0;       ///< median over timed frames
     double edgePixelPct = 0.0;         ///< share of pixels next to depth edges (error frames)
     double simMsPerFrame = 0.0;        ///< median Game::Update wall ms
+    /// At the end of the run, over every reaction (Plugin::stats, reactionStats): pool slots,
+    /// particles that entered a pool, particles due while their pool was full.
+    double particleCapacity = 0.0, particlesEmitted = 0.0, particlesDropped = 0.0;
     int glErrors = 0;
 };
 

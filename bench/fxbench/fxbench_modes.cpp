@@ -94,7 +94,9 @@ void applyMode(cube::Game& game, const Mode& mode) {
     game.options().pluginZBuffer = mode.hostZBuffer;
     fx::Plugin* plugin = game.specialFX().plugin();
     if (!plugin) return;
-    fx::RenderOptions ro = plugin->renderOptions();
+    const fx::RenderOptions was = plugin->renderOptions();
+    const fx::FadeClassification wasClassify = plugin->fadeClassification();
+    fx::RenderOptions ro = was;
     ro.techniqueOverride = mode.technique;
     ro.quarterRes = mode.quarterRes;
     ro.bilinearUpsample = false;  // the depth-aware composite is the one under test
@@ -102,6 +104,13 @@ void applyMode(cube::Game& game, const Mode& mode) {
     plugin->setParticleShape(mode.shape);
     plugin->setQuarterResEdges(mode.edges);
     plugin->setFadeClassification(mode.classify);
+    // The engine's rule for a window key or a panel switch (Render::handleKeys, the panel): a
+    // switch that may reach programs the old one did not is followed by prepareGl, between
+    // frames, so no program is built while the next frame is declared (nor inside a timed render).
+    if (ro.techniqueOverride != was.techniqueOverride || ro.quarterRes != was.quarterRes ||
+        ro.bilinearUpsample != was.bilinearUpsample || mode.classify != wasClassify) {
+        (void)plugin->prepareGl(nullptr);  // a failure is logged once by the plugin
+    }
     if (mode.lit) {
         game.specialFX().setSceneLight(game.sun());
     } else {

@@ -53,7 +53,9 @@ std::string modeNameList();
 bool parseModeList(const std::string& text, std::vector<std::string>* out, std::string* error);
 
 /// Sets the game's and the plugin's switches for `mode` (HUD text does not depend on them: the
-/// harness runs with the HUD off).
+/// harness runs with the HUD off). A switch of technique, quarter res or fade classification is
+/// followed by Plugin::prepareGl, as the engine does after a key or panel switch: the programs
+/// the mode draws with are built here, never while a frame is declared.
 void applyMode(cube::Game& game, const Mode& mode);
 
 }  // namespace fxbench

@@ -79,7 +79,8 @@ std::string benchUsage() {
            "  --csv PATH             results as CSV (one row per mode)\n"
            "  --chart PATH           SVG: frame time per mode and error vs time (sweeps: cost curves)\n"
            "  --images DIR           PNG of every mode's last error frame, and the depth-edge mask\n"
-           "  --sweep particles=N,N,...   cost curve over live particle counts (generated reaction)\n"
+           "  --sweep particles=N,N,...   cost curve over live particle counts 1..1000000 (generated reactions;\n"
+           "                              each point reports the count it asked for and the count reached)\n"
            "  --sweep size=WxH,WxH,...    cost curve over view sizes (a new game per size)\n"
            "  --integrators          integrator error vs the analytic drag solution, and CPU cost\n";
 }

@@ -53,14 +53,26 @@ std::string markdownReport(const Report& r) {
     o += "- scenario: " + r.description + "\n";
     o += "- renderer: " + r.renderer + " (" + r.backend + "); timing: " + r.timingMethod +
          " (frame = Game::RenderFrame wall ms, CPU clock around glFinish)\n";
+    o += r.timingMethod == std::string("cpu-glfinish")
+             ? "- pass times: CPU clock between glFinish calls around each pass\n"
+             : "- pass times: " + r.timingMethod + " results of each render, waited for after its glFinish "
+               "(Game::RenderFrame), so every mode's pass times are its own renders'\n";
     std::snprintf(line, sizeof line,
                   "- %d timed simulated frames x %d rounds per mode (dt 1/60 s, seed %u), after %d warm-up "
                   "frames; modes interleaved per frame, order rotated each round; HUD off, mirror %s\n",
                   r.frames, r.rounds, r.seed, r.warmup, r.mirror ? "on" : "off");
     o += line;
-    std::snprintf(line, sizeof line,
-                  "- particles alive (median): %.0f; simulation %.3f ms/frame (not in frame times)\n",
-                  r.particlesAlive, r.simMsPerFrame);
+    if (r.particlesRequested > 0) {
+        std::snprintf(line, sizeof line,
+                      "- particles alive (median): %.0f of %.0f requested (%.1f%%; pools %.0f); simulation %.3f "
+                      "ms/frame (not in frame times)\n",
+                      r.particlesAlive, r.particlesRequested, 100.0 * r.particlesAlive / r.particlesRequested,
+                      r.particleCapacity, r.simMsPerFrame);
+    } else {
+        std::snprintf(line, sizeof line,
+                      "- particles alive (median): %.0f; simulation %.3f ms/frame (not in frame times)\n",
+                      r.particlesAlive, r.simMsPerFrame);
+    }
     o += line;
     std::snprintf(line, sizeof line,
                   "- image error over %d frames per mode against the reference's render of the same simulated "
@@ -69,15 +81,16 @@ std::string markdownReport(const Report& r) {
                   r.modes.empty() ? 0 : r.modes[0].errorFrames, kPsnrCapDb);
     o += line;
     o += "\n| Method | Setup | Min FPS | Max FPS | Average FPS | p50 ms | p95 ms | p99 ms | vs hard | "
-         "particle ms | fill-limit x | RMSE | PSNR dB | max abs | edge % |\n";
-    o += "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+         "particle ms | outside passes ms | fill-limit x | RMSE | PSNR dB | max abs | edge % |\n";
+    o += "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const ModeSummary& m : r.modes) {
         std::snprintf(line, sizeof line, "| %s (`%s`) | %dx%d, %s | ", m.setup.c_str(), m.name.c_str(), r.width,
                       r.height, r.scenario.c_str());
         o += line;
         o += fmt("%.1f", m.fpsMin) + " | " + fmt("%.1f", m.fpsMax) + " | " + fmt("%.1f", m.fpsAvg) + " | ";
         o += fmt("%.2f", m.p50) + " | " + fmt("%.2f", m.p95) + " | " + fmt("%.2f", m.p99) + " | ";
-        o += fmt("%.3f", m.ratioVsHard) + " | " + fmt("%.2f", m.particleMs) + " | ";
+        o += fmt("%.3f", m.ratioVsHard) + " | " + fmt("%.2f", m.particleMs) + " | " + fmt("%.2f", m.outsidePassesMs) +
+             " | ";
         o += (m.fillLimitRatio > 0 ? fmt("%.1f", m.fillLimitRatio) : std::string("-")) + " | ";
         o += fmt("%.2f", m.rmse) + " | " + psnrText(m.psnrDb) + " | " + fmt("%.0f", m.maxAbs) + " | " +
              fmt("%.2f", m.edgePct) + " |\n";
@@ -120,6 +133,7 @@ std::string markdownReport(const Report& r) {
     o += std::string("- coverage: ") + coverageDefinition() + "; fill-limit x = particle ms / fill-limit ms "
          "(median over error frames; '-' = no particle pass)\n";
     o += std::string("- edge %: ") + edgeDefinition() + "\n";
+    o += std::string("- outside passes ms: ") + outsidePassesDefinition() + "\n";
     std::snprintf(line, sizeof line, "- pixels next to depth edges: %.1f%% of the frame\n", r.edgePixelPct);
     o += line;
     for (const std::string& n : r.notes) o += "- note: " + n + "\n";
@@ -145,6 +159,8 @@ std::string jsonReport(const Report& r, const std::string& in) {
     o += in + "  \"psnr_cap_db\": " + num(kPsnrCapDb) + ",\n";
     o += in + "  \"particles_alive\": " + num(r.particlesAlive) + ",\n";
     o += in + "  \"sim_ms_per_frame\": " + num(r.simMsPerFrame) + ",\n";
+    if (r.particlesRequested > 0) o += in + "  \"particles_requested\": " + num(r.particlesRequested) + ",\n";
+    o += in + "  \"particle_capacity\": " + num(r.particleCapacity) + ",\n";
     o += in + "  \"edge_pixel_pct\": " + num(r.edgePixelPct) + ",\n";
     o += in + "  \"edge_definition\": " + jsonQuote(edgeDefinition()) + ",\n";
     o += in + "  \"coverage_definition\": " + jsonQuote(coverageDefinition()) + ",\n";
@@ -154,6 +170,10 @@ std::string jsonReport(const Report& r, const std::string& in) {
     o += in + "  \"frame_ms_definition\": " + jsonQuote(std::string(
         "Game::RenderFrame wall ms (CPU clock around glFinish) of the timed render; every mode's render targets stay "
         "pooled across a round, and a render that still created or freed targets is repeated and the repeat timed")) + ",\n";
+    o += in + "  \"pass_ms_definition\": " + jsonQuote(r.timingMethod == std::string("cpu-glfinish")
+        ? std::string("CPU clock between glFinish calls around each pass")
+        : r.timingMethod + " results of each render, waited for after its glFinish (Game::RenderFrame)") + ",\n";
+    o += in + "  \"outside_passes_definition\": " + jsonQuote(outsidePassesDefinition()) + ",\n";
     o += in + "  \"notes\": [";
     for (size_t i = 0; i < r.notes.size(); ++i) o += (i ? ", " : "") + jsonQuote(r.notes[i]);
     o += "],\n";
@@ -174,6 +194,7 @@ std::string jsonReport(const Report& r, const std::string& in) {
             o += (k ? ", " : "") + jsonQuote(m.passes[k].first) + ": " + num(m.passes[k].second);
         o += "},\n";
         o += p + "  \"particle_pass_ms\": " + num(m.particleMs) + ",\n";
+        o += p + "  \"outside_passes_ms\": " + num(m.outsidePassesMs) + ",\n";
         o += p + "  \"particle_fragments\": " + num(m.particleFragments) + ",\n";
         o += p + "  \"particles\": " + num(m.particles) + ",\n";
         if (m.classified) {
@@ -199,7 +220,7 @@ std::string csvRows(const Report& r, const std::string& point, bool header) {
     if (header)
         o += "point,scenario,width,height,mode,fps_min,fps_avg,fps_max,p50_ms,p95_ms,p99_ms,ratio_vs_hard,"
              "ratio_vs_nofx,particle_pass_ms,particle_fragments,particles,coverage_pct,fill_limit_ms,fill_limit_ratio,reference,"
-             "rmse,psnr_db,max_abs,edge_pct,passes_ms,fade_needed,in_front,hidden\n";
+             "rmse,psnr_db,max_abs,edge_pct,passes_ms,fade_needed,in_front,hidden,outside_passes_ms\n";
     for (const ModeSummary& m : r.modes) {
         std::string passes;
         for (const auto& p : m.passes) passes += (passes.empty() ? "" : ";") + p.first + "=" + num(p.second);
@@ -209,7 +230,8 @@ std::string csvRows(const Report& r, const std::string& point, bool header) {
              num(m.particleFragments) + "," + num(m.particles) + "," + num(m.coveragePct) + "," + num(m.fillLimitMs) + "," + num(m.fillLimitRatio) +
              "," + m.reference + "," + num(m.rmse) + "," + num(m.psnrDb) + "," + num(m.maxAbs) + "," +
              num(m.edgePct) + ",\"" + passes + "\"," + (m.classified ? num(m.fadeNeeded) : "") + "," +
-             (m.classified ? num(m.inFront) : "") + "," + (m.classified ? num(m.hidden) : "") + "\n";
+             (m.classified ? num(m.inFront) : "") + "," + (m.classified ? num(m.hidden) : "") + "," +
+             num(m.outsidePassesMs) + "\n";
     }
     return o;
 }

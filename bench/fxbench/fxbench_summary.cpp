@@ -18,6 +18,12 @@ const char* coverageDefinition() {
     return "pixels whose RGB differs from the nofx frame of the same simulated frame";
 }
 
+const char* outsidePassesDefinition() {
+    return "median over timed renders of the frame's ms (CPU clock around glFinish) minus the sum of that "
+           "render's pass ms: declaring, culling and compiling the frame graph and the CPU work between "
+           "passes; with GPU timer queries also GPU time outside any pass";
+}
+
 ModeSummary summarise(const ModeRun& run, const ModeRun* hard, const ModeRun* nofx) {
     ModeSummary s;
     s.name = run.mode->name;
@@ -39,6 +45,7 @@ ModeSummary summarise(const ModeRun& run, const ModeRun* hard, const ModeRun* no
     s.ratioVsNofx = nofxP50 > 0.0 ? s.p50 / nofxP50 : 0.0;
     for (const std::string& name : run.passOrder) s.passes.emplace_back(name, median(run.passMs.at(name)));
     s.particleMs = median(run.particleMs);
+    s.outsidePassesMs = median(run.outsidePassesMs);
     s.particleFragments = median(run.particleFragments);
     s.particles = median(run.particlesDrawn);
     s.classified = !run.fadeNeeded.empty();
@@ -75,6 +82,9 @@ Report makeReport(const RunConfig& config, const RunResult& result, unsigned see
     r.particlesAlive = result.particlesAlive;
     r.edgePixelPct = result.edgePixelPct;
     r.simMsPerFrame = result.simMsPerFrame;
+    r.particleCapacity = result.particleCapacity;
+    r.particlesEmitted = result.particlesEmitted;
+    r.particlesDropped = result.particlesDropped;
     const ModeRun* hard = nullptr;
     const ModeRun* nofx = nullptr;
     for (const ModeRun& m : result.modes) {
@@ -93,10 +103,6 @@ Report makeReport(const RunConfig& config, const RunResult& result, unsigned see
     }
     if (!added.empty())
         r.notes.push_back("also measured (not shown) as reference / base: " + added);
-    if (r.timingMethod != std::string("cpu-glfinish"))
-        r.notes.push_back(std::string("per-pass times come from ") + r.timingMethod +
-                          ", whose results arrive frames late: with modes interleaved they mix modes; "
-                          "trust frame times (CPU clock around glFinish) first");
     int allocs = 0;
     for (const ModeRun& m : result.modes) allocs += m.allocatingRenders;
     if (allocs > 0) {
@@ -124,6 +130,26 @@ Report makeReport(const RunConfig& config, const RunResult& result, unsigned see
     }
     if (result.glErrors > 0) r.notes.push_back("GL errors were reported during the run: " + std::to_string(result.glErrors));
     return r;
+}
+
+void noteParticlesReached(Report* r, double requested) {
+    r->particlesRequested = requested;
+    if (requested <= 0.0 || r->particlesAlive >= (1.0 - kSweepReachTolerance) * requested) return;
+    char line[400];
+    std::snprintf(line, sizeof line, "reached %.0f of %.0f particles asked (%.1f%%; tolerance %.0f%%): ",
+                  r->particlesAlive, requested, 100.0 * r->particlesAlive / requested, 100.0 * kSweepReachTolerance);
+    std::string why = line;
+    if (r->particleCapacity < requested) {
+        std::snprintf(line, sizeof line, "the pools hold %.0f", r->particleCapacity);
+    } else if (r->particlesEmitted < requested) {
+        std::snprintf(line, sizeof line, "emission too slow: %.0f emitted by the end of the run", r->particlesEmitted);
+    } else {
+        std::snprintf(line, sizeof line,
+                      "%.0f emitted (%.0f due at full pools, dropped), but particles died before or during the "
+                      "timed frames",
+                      r->particlesEmitted, r->particlesDropped);
+    }
+    r->notes.push_back(why + line);
 }
 
 }  // namespace fxbench

@@ -18,6 +18,7 @@ struct ModeSummary {
     double ratioVsHard = 0, ratioVsNofx = 0;    ///< median frame ms / base's median
     std::vector<std::pair<std::string, double>> passes;  ///< median ms per pass, run order
     double particleMs = 0;                      ///< median of the per-frame sum of particle passes
+    double outsidePassesMs = 0;                 ///< median of frame ms - sum of pass ms (ModeRun)
     double particleFragments = 0;               ///< median over error frames of the samples the particle passes wrote
     double particles = 0;                       ///< median particles drawn (0 for nofx)
     bool classified = false;                    ///< fade classes counted (the *+classify modes)
@@ -38,6 +39,9 @@ struct Report {
     bool mirror = false;
     std::string renderer, backend, timingMethod;
     double particlesAlive = 0, edgePixelPct = 0, simMsPerFrame = 0;
+    /// The live particles a particle sweep point asked for (0: not a sweep point) and the run's
+    /// pool slots, emitted and dropped particles (RunResult).
+    double particlesRequested = 0, particleCapacity = 0, particlesEmitted = 0, particlesDropped = 0;
     std::vector<ModeSummary> modes;     ///< the selected modes, table order
     std::vector<ModeSummary> internal;  ///< measured only as references / bases
     std::vector<std::string> notes;
@@ -49,5 +53,13 @@ Report makeReport(const RunConfig& config, const RunResult& result, unsigned see
 /// The edge, coverage and timing definitions, for the table's footer and the JSON.
 const char* edgeDefinition();
 const char* coverageDefinition();
+const char* outsidePassesDefinition();
+
+/// A particle sweep point reached its count when the median live particles are within this
+/// share below the requested count (never above: capacity = count).
+constexpr double kSweepReachTolerance = 0.05;
+/// Sets r.particlesRequested and, when the point fell short of it by more than
+/// kSweepReachTolerance, adds a note saying why (pool capacity, emission, deaths).
+void noteParticlesReached(Report* r, double requested);
 
 }  // namespace fxbench

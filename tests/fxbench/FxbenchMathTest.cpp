@@ -7,6 +7,7 @@
 #include "fxbench_image_error.h"
 #include "fxbench_modes.h"
 #include "fxbench_stats.h"
+#include "fxbench_summary.h"
 #include "game/TechniqueModes.h"
 
 namespace {
@@ -112,4 +113,25 @@ TEST(FxbenchModes, ATechniqueNamedModeDrawsThatTechnique) {
         ++named;
     }
     EXPECT_GT(named, 10);
+}
+
+// A sweep point within 5 % below its count gets no note; one further below says why: pools too
+// small, emission too slow, or particles that died after the pools filled.
+TEST(FxbenchSweep, APointShortOfItsCountSaysWhy) {
+    auto note = [](double alive, double capacity, double emitted, double dropped) {
+        fxbench::Report r;
+        r.particlesAlive = alive;
+        r.particleCapacity = capacity;
+        r.particlesEmitted = emitted;
+        r.particlesDropped = dropped;
+        fxbench::noteParticlesReached(&r, 1000.0);
+        EXPECT_EQ(r.particlesRequested, 1000.0);
+        return r.notes.empty() ? std::string() : r.notes.back();
+    };
+    EXPECT_EQ(note(950.0, 1000.0, 950.0, 0.0), "");
+    EXPECT_NE(note(940.0, 1000.0, 940.0, 0.0).find("emission too slow"), std::string::npos);
+    EXPECT_NE(note(500.0, 500.0, 2000.0, 1500.0).find("the pools hold 500"), std::string::npos);
+    const std::string died = note(300.0, 1000.0, 1200.0, 200.0);
+    EXPECT_NE(died.find("reached 300 of 1000"), std::string::npos) << died;
+    EXPECT_NE(died.find("died"), std::string::npos) << died;
 }

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "RunCommand.h"
+#include "fxbench_sweep.h"
 
 namespace {
 
@@ -100,6 +101,8 @@ TEST_P(FxbenchScenario, TinyRunWritesEveryKeyWithFiniteValues) {
         EXPECT_GT(m["passes_ms"].size(), 0u);
         for (const auto& kv : m["passes_ms"]) finite(kv.second, "passes_ms." + kv.first.as<std::string>());
         EXPECT_GE(finite(m["particles"], "particles"), 0.0);
+        // Frame ms less its passes' ms: the passes run inside the frame's clock.
+        EXPECT_GE(finite(m["outside_passes_ms"], "outside_passes_ms"), 0.0);
         EXPECT_GE(finite(m["particle_fragments"], "particle_fragments"), 0.0);
         EXPECT_GE(finite(m["fill_limit_ratio"], "fill_limit_ratio"), 0.0);
         const YAML::Node e = m["error"];
@@ -229,22 +232,97 @@ TEST(Fxbench, ModeSubsetKeepsOnlyTheAskedModesAndCsvAndChartAreWritten) {
     for (const std::string& p : {json, csv, svg}) std::filesystem::remove(p);
 }
 
-TEST(Fxbench, ParticleSweepKeepsTheAskedParticleCountsAlive) {
+// A sweep point reaches the count it asks for (within kSweepReachTolerance, 5 %, and never above:
+// capacity = count), every point from the same drive time, and the counted work grows with the
+// count: particles drawn and the fragments the particle passes wrote (counted, not timed).
+TEST(Fxbench, ParticleSweepReachesTheAskedCountsAndWorkGrowsWithThem) {
     const std::string json = tempPath("sweep.json");
-    const RunOutput r = runFxbench("--sweep particles=200,2000 --modes soft --size 48x48 --frames 2 --rounds 1 "
-                                   "--warmup 0 --error-frames 0 --json " + json);
+    const RunOutput r = runFxbench("--sweep particles=1000,4000,16000 --modes soft --size 48x48 --frames 2 "
+                                   "--rounds 1 --warmup 0 --error-frames 1 --json " + json);
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("Cost curve: live particles"), std::string::npos);
+    EXPECT_NE(r.output.find("| particles requested | reached | reached % |"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("every point did"), std::string::npos) << r.output;
     const YAML::Node sweep = YAML::Load(readFile(json));
     EXPECT_EQ(sweep["sweep"].as<std::string>(), "particles");
-    ASSERT_EQ(sweep["points"].size(), 2u);
-    for (size_t i = 0; i < 2; ++i) {
-        const double asked = sweep["points"][i]["point"].as<double>();
-        const double alive = sweep["points"][i]["work"].as<double>();
-        EXPECT_GE(alive, 0.9 * asked);
-        EXPECT_LE(alive, asked);
+    ASSERT_EQ(sweep["points"].size(), 3u);
+    double lastDrawn = 0.0, lastFragments = 0.0;
+    for (size_t i = 0; i < 3; ++i) {
+        const YAML::Node p = sweep["points"][i];
+        SCOPED_TRACE(p["point"].as<std::string>());
+        const double asked = p["requested"].as<double>();
+        EXPECT_EQ(asked, p["point"].as<double>());
+        const double reached = p["reached"].as<double>();
+        EXPECT_GE(reached, 0.95 * asked);
+        EXPECT_LE(reached, asked);
+        EXPECT_EQ(p["run"]["particles_requested"].as<double>(), asked);
+        const YAML::Node soft = p["run"]["modes"][0];
+        EXPECT_GE(finite(soft["outside_passes_ms"], "outside_passes_ms"), 0.0);
+        const double drawn = soft["particles"].as<double>(), fragments = soft["particle_fragments"].as<double>();
+        EXPECT_GT(drawn, lastDrawn);
+        EXPECT_GT(fragments, lastFragments);
+        lastDrawn = drawn;
+        lastFragments = fragments;
     }
     std::filesystem::remove(json);
+}
+
+// Past one reaction's reach (100000 particles, rate = capacity): the file holds several
+// reactions whose capacities add up to the count.
+TEST(Fxbench, ParticleSweepYamlSplitsLargeCountsOverReactions) {
+    EXPECT_EQ(fxbench::sweepReactionCount(1000), 1);
+    EXPECT_EQ(fxbench::sweepReactionCount(100000), 1);
+    EXPECT_EQ(fxbench::sweepReactionCount(100001), 2);
+    EXPECT_EQ(fxbench::sweepReactionCount(1000000), 10);
+    for (int n : {1000, 250001, 1000000}) {
+        SCOPED_TRACE(n);
+        const YAML::Node doc = YAML::Load(fxbench::particleSweepYaml(n));
+        const YAML::Node reactions = doc["reactions"];
+        ASSERT_EQ(int(reactions.size()), fxbench::sweepReactionCount(n));
+        long long capacity = 0;
+        for (const YAML::Node& reaction : reactions) {
+            const int c = reaction["emission"]["capacity"].as<int>();
+            EXPECT_LE(c, fxbench::kSweepParticlesPerReaction);
+            EXPECT_EQ(reaction["emission"]["rate"].as<int>(), std::max(c, 10));
+            capacity += c;
+        }
+        EXPECT_EQ(capacity, n);
+    }
+}
+
+// Switching modes goes through prepareGl (as the engine's key and panel switches do): no program
+// is built while a frame is declared, fade classification included (it reaches the classified
+// programs). Each mode's per-pass times list only the passes its own renders ran.
+TEST(Fxbench, ModeSwitchesBuildNoProgramWhileDeclaringAndPassTimesStayWithTheirMode) {
+    const std::string json = tempPath("passes.json");
+    const RunOutput r = runFxbench("--modes hard,soft+quarter,soft+classify --size 48x48 --frames 2 --rounds 2 "
+                                   "--warmup 1 --error-frames 0 --json " + json);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.output.find("built while declaring a frame"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("mix modes"), std::string::npos) << r.output;
+    const YAML::Node run = YAML::Load(readFile(json));
+    std::filesystem::remove(json);
+    auto passes = [&](const char* mode) {
+        std::vector<std::string> names;
+        for (const auto& kv : modeNode(run, mode)["passes_ms"]) names.push_back(kv.first.as<std::string>());
+        return names;
+    };
+    auto has = [](const std::vector<std::string>& names, const std::string& pass) {
+        return std::find(names.begin(), names.end(), pass) != names.end();
+    };
+    const std::vector<std::string> hard = passes("hard"), quarter = passes("soft+quarter"),
+                                   classify = passes("soft+classify");
+    for (const char* pass : {"chase.particles_quarter", "chase.particles_composite", "chase.particles_depth_downsample"}) {
+        SCOPED_TRACE(pass);
+        EXPECT_TRUE(has(quarter, pass));
+        EXPECT_FALSE(has(hard, pass));
+        EXPECT_FALSE(has(classify, pass));
+    }
+    EXPECT_TRUE(has(hard, "chase.particles"));
+    EXPECT_FALSE(has(quarter, "chase.particles"));
+    EXPECT_TRUE(has(classify, "chase.particles_tile_depth"));
+    EXPECT_FALSE(has(hard, "chase.particles_tile_depth"));
+    EXPECT_FALSE(has(quarter, "chase.particles_tile_depth"));
 }
 
 TEST(Fxbench, UnknownModeIsRejectedWithTheValidNames) {
