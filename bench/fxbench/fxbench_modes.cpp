@@ -51,14 +51,23 @@ const std::vector<Mode>& allModes() {
         {"mega", "Mega-particles (blurred spheres as one volume)", true, Technique::Mega, false, false, "spherical"},
         {"mega-lit", "Mega-particles, lit", true, Technique::Mega, false, false, "spherical-lit",
          fx::ParticleShape::Trimmed, true},
-        // API 2 (issue 30): the plugin's immediate path reading the engine's z-buffer itself
-        // (one copy and a linearising pass) instead of the linear R32F the opaque pass writes.
+        // The plugin's immediate path (renderView) on the engine's z-buffer: one copy of it,
+        // decoded in the particle shaders, instead of the frame graph's passes.
         {"soft-zbuffer", "Soft particles, host z-buffer through the immediate path", true, Technique::Soft, false,
          false, "soft", fx::ParticleShape::Trimmed, false, fx::QuarterResEdges::DepthAware,
          fx::FadeClassification::Off, true},
         {"spherical-zbuffer", "Spherical billboards, host z-buffer through the immediate path", true,
          Technique::Spherical, false, false, "spherical", fx::ParticleShape::Trimmed, false,
          fx::QuarterResEdges::DepthAware, fx::FadeClassification::Off, true},
+        // API 2.0's depth contract: the opaque pass writes linear R32F depth as a second render
+        // target for the particles to read, instead of their sampling the z-buffer it drew. The
+        // same picture within 1/255; the difference in cost is that second target.
+        {"soft-linear", "Soft particles, linear depth as a second render target", true, Technique::Soft, false,
+         false, "soft", fx::ParticleShape::Trimmed, false, fx::QuarterResEdges::DepthAware,
+         fx::FadeClassification::Off, false, true},
+        {"spherical-linear", "Spherical billboards, linear depth as a second render target", true,
+         Technique::Spherical, false, false, "spherical", fx::ParticleShape::Trimmed, false,
+         fx::QuarterResEdges::DepthAware, fx::FadeClassification::Off, false, true},
     };
     return modes;
 }
@@ -92,6 +101,7 @@ void applyMode(cube::Game& game, const Mode& mode) {
     game.options().effects = mode.effects;
     game.options().prepassEqual = mode.prepassEqual;
     game.options().pluginZBuffer = mode.hostZBuffer;
+    game.options().pluginLinearDepth = mode.linearDepth;
     fx::Plugin* plugin = game.specialFX().plugin();
     if (!plugin) return;
     const fx::RenderOptions was = plugin->renderOptions();

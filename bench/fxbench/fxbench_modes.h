@@ -33,9 +33,12 @@ struct Mode {
     fx::QuarterResEdges edges = fx::QuarterResEdges::DepthAware;
     /// Fade classification (Plugin::setFadeClassification; `soft+classify`, `spherical+classify`).
     fx::FadeClassification classify = fx::FadeClassification::Off;
-    /// API 2's immediate path reading the engine's own z-buffer (copied and linearised by the
-    /// plugin) instead of the frame graph's linear R32F scene depth (`soft-zbuffer`).
+    /// API 2's immediate path on the engine's own z-buffer (`soft-zbuffer`) instead of the frame
+    /// graph's passes.
     bool hostZBuffer = false;
+    /// The frame graph's passes on a linear R32F scene depth the opaque pass writes as a second
+    /// render target (API 2.0's contract, `soft-linear`) instead of sampling the z-buffer.
+    bool linearDepth = false;
 };
 
 /// Every mode, in table order: nofx, hard, soft, soft-quads, soft+classify, soft+equal, soft+quarter,
@@ -43,7 +46,8 @@ struct Mode {
 /// spherical-quads, spherical+classify, spherical+quarter, hard-lit, soft-lit, spherical-lit, mega (image error
 /// against spherical: the same particles as exact spheres), mega-lit (against spherical-lit),
 /// soft-zbuffer and spherical-zbuffer (the immediate path on the engine's z-buffer, against
-/// soft and spherical).
+/// soft and spherical), soft-linear and spherical-linear (the frame graph on a linear R32F depth
+/// target instead of the z-buffer, against soft and spherical).
 const std::vector<Mode>& allModes();
 /// Null when `name` is not a mode.
 const Mode* findMode(const std::string& name);
