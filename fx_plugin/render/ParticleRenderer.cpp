@@ -7,6 +7,7 @@
 #include "render/PrivateGl.h"
 
 #include "GlStateGuard.h"
+#include "ImmediateFrame.h"
 #include "ShaderLoader.h"
 #include "reactions/TechniqueTable.h"
 #include "base/ApiErrors.h"
@@ -182,9 +183,14 @@ void ParticleRenderer::ensureDrawPrograms(const ParticleView& record, bool quart
 int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
                                     int batchCount, const FrameSettings& settings) {
     // The opacity map declareShadowPasses declared for this frame (taken now: a Target is valid
-    // for one frame only).
-    SmokeShadow shadow = pendingShadow_;
-    pendingShadow_ = SmokeShadow{};
+    // for one frame only). Not by the immediate path's own frame (renderView): that map is a
+    // target of the host's frame graph, which this frame cannot read, and it stays for the
+    // host's own next declarePasses; renderView declares a map of its own below.
+    SmokeShadow shadow;
+    if (!dynamic_cast<ImmediateFrame*>(&frame)) {
+        shadow = pendingShadow_;
+        pendingShadow_ = SmokeShadow{};
+    }
     if (state_ == State::Failed) return 0;
     std::shared_ptr<ParticleView> record = reuseRecord(records_);
     record->view = view;

@@ -133,10 +133,12 @@ private:
     ShaderErrorLog loadErrors_;    ///< the build lines already logged while loading (each once)
     ShaderReader sources_;         ///< the running programs' files (a snapshot), for later builds
     SmokeShadow pendingShadow_;  ///< declared by declareShadowPasses, taken by the next declarePasses
+                                 ///< into the host's frame graph (never by renderView's own frame)
     bool normalsWarned_ = false;
     uint64_t shaderStamp_ = 0;  ///< shaderStamp() when the running programs were built
     DrawListBuilder builder_;
     std::vector<std::shared_ptr<ParticleView>> records_;
+    std::vector<std::shared_ptr<SmokeOpacityMap::Casters>> opacityRecords_;  ///< one per map until its pass ran
 };
 
 }  // namespace fx

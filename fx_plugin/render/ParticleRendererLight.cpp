@@ -25,16 +25,18 @@ SmokeShadow ParticleRenderer::declareOpacityPass(const ViewInfo& view, FrameBuil
                                                  const LightState& light) {
     // Nothing is loaded for a frame without shadow casters.
     const int size = SmokeOpacityMap::sizeFor(view.width, view.height);
-    if (!opacity_->record(light, batches, batchCount, size)) return SmokeShadow{};
+    // Recorded for this map alone: another view's map may be declared before this one's pass runs.
+    std::shared_ptr<SmokeOpacityMap::Casters> casters = reuseRecord(opacityRecords_);
+    if (!opacity_->record(light, batches, batchCount, size, casters.get())) return SmokeShadow{};
     if (!ensureLoaded() || !opacity_->ok()) return SmokeShadow{};
     TargetDesc desc;
     desc.width = desc.height = size;
     desc.format = TargetFormat::RGBA16F;
     SmokeShadow shadow;
     shadow.opacity = frame.createTarget(SmokeOpacityMap::kTarget, desc);
-    shadow.worldToShadow = opacity_->worldToShadow();
+    shadow.worldToShadow = casters->worldToShadow;
     const Target target = shadow.opacity;
-    frame.addPass(SmokeOpacityMap::kPass, {}, {target}, [this, target](PassContext& ctx) {
+    frame.addPass(SmokeOpacityMap::kPass, {}, {target}, [this, target, casters](PassContext& ctx) {
         GlStateGuard guard;
         DebugGroup group(SmokeOpacityMap::kPass);
         ctx.bindForDraw(target);
@@ -43,7 +45,7 @@ SmokeShadow ParticleRenderer::declareOpacityPass(const ViewInfo& view, FrameBuil
         ramp.upload();
         std::vector<float> rows(size_t(ramp.rows()));
         for (size_t i = 0; i < rows.size(); ++i) rows[i] = ramp.rowV(int(i));
-        opacity_->draw(draw_.atlas().texture(), ramp.texture(), rows);
+        opacity_->draw(*casters, draw_.atlas().texture(), ramp.texture(), rows);
     });
     return shadow;
 }

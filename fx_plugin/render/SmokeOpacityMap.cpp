@@ -43,9 +43,11 @@ int SmokeOpacityMap::sizeFor(int viewWidth, int viewHeight) {
     return size;
 }
 
-bool SmokeOpacityMap::record(const LightState& light, const ParticleBatch* batches, int batchCount, int size) {
-    instances_.clear();
-    ranges_.clear();
+bool SmokeOpacityMap::record(const LightState& light, const ParticleBatch* batches, int batchCount, int size,
+                             Casters* out) {
+    Casters& c = *out;
+    c.instances.clear();
+    c.ranges.clear();
     if (!light.on) return false;
     // The light's axes: right and up span the map, toSun points back toward the sun.
     const glm::vec3 toSun = light.toSun;
@@ -61,7 +63,7 @@ bool SmokeOpacityMap::record(const LightState& light, const ParticleBatch* batch
         if (!l.lit(in.desc->render.blend) || !l.castsShadow || in.desc->render.stateless) continue;
         const ParticlePool& pool = *in.pool;
         Range range;
-        range.first = int(instances_.size());
+        range.first = int(c.instances.size());
         range.batch = b;
         for (int i = 0; i < pool.alive(); ++i) {
             const float size = pool.size()[i], fade = pool.fade()[i];
@@ -81,19 +83,19 @@ bool SmokeOpacityMap::record(const LightState& light, const ParticleBatch* batch
             inst.rotation = pool.rotation()[i];
             inst.fade = std::min(fade, 1.0f);
             inst.frame = float(pool.frame()[i] & 3u);
-            instances_.push_back(inst);
+            c.instances.push_back(inst);
         }
-        range.count = int(instances_.size()) - range.first;
-        if (range.count > 0) ranges_.push_back(range);
+        range.count = int(c.instances.size()) - range.first;
+        if (range.count > 0) c.ranges.push_back(range);
     }
-    if (instances_.empty()) return false;
+    if (c.instances.empty()) return false;
 
     // Square box, snapped (see the header): side up to a power of 2^(1/4) with a margin of a
     // few texels, centre on whole texels of a grid fixed in the world.
     const float extent = std::max(hi.x - lo.x, hi.y - lo.y);
     const int texels = std::max(size, 1);
-    side_ = quantizeUp(extent * (1.0f + 4.0f / float(texels)) + 1e-3f);
-    const float texel = side_ / float(texels);
+    c.side = quantizeUp(extent * (1.0f + 4.0f / float(texels)) + 1e-3f);
+    const float texel = c.side / float(texels);
     const float uc = std::round(0.5f * (lo.x + hi.x) / texel) * texel;
     const float vc = std::round(0.5f * (lo.y + hi.y) / texel) * texel;
     // Depth: from the top of the casters down, a sixth more than their span below them, so
@@ -101,7 +103,7 @@ bool SmokeOpacityMap::record(const LightState& light, const ParticleBatch* batch
     const float depthSpan = quantizeUp((hi.z - lo.z) * 7.0f / 6.0f + 1e-3f);
     const float step = depthSpan / 64.0f;
     const float top = std::ceil(hi.z / step) * step;
-    depthRange_ = glm::vec2(0.0f, depthSpan);
+    c.depthRange = glm::vec2(0.0f, depthSpan);
 
     // View: x = u - uc, y = v - vc, z = w - top (the distance below the top is -z).
     glm::mat4 rows(0.0f);
@@ -109,32 +111,32 @@ bool SmokeOpacityMap::record(const LightState& light, const ParticleBatch* batch
     rows[1] = glm::vec4(up, -vc);
     rows[2] = glm::vec4(toSun, -top);
     rows[3] = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-    lightView_ = glm::transpose(rows);
+    c.lightView = glm::transpose(rows);
     // Orthographic, depth into [0.05, 0.95] of NDC: inside the clip volume under either clip
     // convention the host may have set (-1..1 or 0..1); the shader computes its own depth.
-    lightProj_ = glm::mat4(1.0f);
-    lightProj_[0][0] = 2.0f / side_;
-    lightProj_[1][1] = 2.0f / side_;
-    lightProj_[2][2] = -0.9f / depthSpan;
-    lightProj_[3][2] = 0.05f;
+    c.lightProj = glm::mat4(1.0f);
+    c.lightProj[0][0] = 2.0f / c.side;
+    c.lightProj[1][1] = 2.0f / c.side;
+    c.lightProj[2][2] = -0.9f / depthSpan;
+    c.lightProj[3][2] = 0.05f;
     // World -> (u, v, depth, 1), each in [0, 1] inside the box.
     glm::mat4 tex(0.0f);
-    tex[0] = glm::vec4(right / side_, 0.5f - uc / side_);
-    tex[1] = glm::vec4(up / side_, 0.5f - vc / side_);
+    tex[0] = glm::vec4(right / c.side, 0.5f - uc / c.side);
+    tex[1] = glm::vec4(up / c.side, 0.5f - vc / c.side);
     tex[2] = glm::vec4(-toSun / depthSpan, top / depthSpan);
     tex[3] = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-    worldToShadow_ = glm::transpose(tex);
+    c.worldToShadow = glm::transpose(tex);
     return true;
 }
 
-void SmokeOpacityMap::draw(uint32_t atlas, uint32_t ramp, const std::vector<float>& rampRows) {
+void SmokeOpacityMap::draw(const Casters& c, uint32_t atlas, uint32_t ramp, const std::vector<float>& rampRows) {
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glClearBufferfv(GL_COLOR, 0, zero);
-    if (!program_ || instances_.empty()) return;
+    if (!program_ || c.instances.empty()) return;
     if (!stream_.created()) stream_.create();
-    stream_.upload(instances_.data(), int(instances_.size()));
+    stream_.upload(c.instances.data(), int(c.instances.size()));
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
@@ -148,14 +150,14 @@ void SmokeOpacityMap::draw(uint32_t atlas, uint32_t ramp, const std::vector<floa
         glBindSampler(GLuint(unit), 0);
     }
     glUseProgram(program_);
-    glUniformMatrix4fv(locView_, 1, GL_FALSE, &lightView_[0][0]);
-    glUniformMatrix4fv(locProj_, 1, GL_FALSE, &lightProj_[0][0]);
+    glUniformMatrix4fv(locView_, 1, GL_FALSE, &c.lightView[0][0]);
+    glUniformMatrix4fv(locProj_, 1, GL_FALSE, &c.lightProj[0][0]);
     glUniform1i(locAtlas_, kAtlasUnit);
     glUniform1i(locRamp_, kRampUnit);
-    glUniform2f(locDepthRange_, depthRange_.x, depthRange_.y);
+    glUniform2f(locDepthRange_, c.depthRange.x, c.depthRange.y);
     glUniform1i(locTrimmed_, 0);
     glUniform1f(locNear_, 0.0f);
-    for (const Range& r : ranges_) {
+    for (const Range& r : c.ranges) {
         glUniform1f(locRampRow_, r.batch < int(rampRows.size()) ? rampRows[size_t(r.batch)] : 0.5f);
         stream_.bindRange(r.first);
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, r.count);

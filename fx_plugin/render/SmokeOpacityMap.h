@@ -52,34 +52,48 @@ public:
     void build(const std::string& shaderDir, std::vector<std::string>* errors);
     bool ok() const { return program_ != 0; }
 
-    /// Collects the shadow casters (lit, casts_shadow, not additive) of `batches` and fits the
-    /// light's box to them. False when there is none (then no pass is needed). No GL.
-    /// `size`: the map's side (sizeFor), for snapping the box to its texels.
-    bool record(const LightState& light, const ParticleBatch* batches, int batchCount, int size = kMaxSize);
-    /// World position -> (u, v, light depth, 1) of the last record(): what SmokeShadow hands out.
-    const glm::mat4& worldToShadow() const { return worldToShadow_; }
-    /// Side of the light's box in metres (for tests and the docs).
-    float side() const { return side_; }
-    int casterCount() const { return int(instances_.size()); }
-
-    /// Draws the recorded casters into the bound size x size RGBA16F target (cleared here).
-    /// Inside a GlStateGuard; `atlas` and `ramp` are textures, `rampRows` the ramp's row v per
-    /// batch index.
-    void draw(uint32_t atlas, uint32_t ramp, const std::vector<float>& rampRows);
-
-private:
     struct Range {
         int first = 0, count = 0, batch = 0;
     };
+    /// What one record() collected: the casters and the light's box. Each declared map keeps its
+    /// own until its pass has run, so the maps of several views declared before any of them runs
+    /// (a host's frame graph, then renderView's own frame) each draw what was recorded for them.
+    struct Casters {
+        std::vector<ParticleInstance> instances;
+        std::vector<Range> ranges;
+        glm::mat4 lightView{1.0f}, lightProj{1.0f}, worldToShadow{1.0f};
+        glm::vec2 depthRange{0.0f, 1.0f};
+        float side = 0.0f;
+    };
+
+    /// Collects the shadow casters (lit, casts_shadow, not additive) of `batches` and fits the
+    /// light's box to them, into `*out` (its storage reused). False when there is none (then no
+    /// pass is needed). No GL. `size`: the map's side (sizeFor), for snapping the box to its texels.
+    bool record(const LightState& light, const ParticleBatch* batches, int batchCount, int size, Casters* out);
+    /// The same into the map's own record (what worldToShadow(), side() and casterCount() read).
+    bool record(const LightState& light, const ParticleBatch* batches, int batchCount, int size = kMaxSize) {
+        return record(light, batches, batchCount, size, &last_);
+    }
+    /// World position -> (u, v, light depth, 1) of the last record(): what SmokeShadow hands out.
+    const glm::mat4& worldToShadow() const { return last_.worldToShadow; }
+    /// Side of the light's box in metres (for tests and the docs).
+    float side() const { return last_.side; }
+    int casterCount() const { return int(last_.instances.size()); }
+
+    /// Draws `casters` into the bound size x size RGBA16F target (cleared here). Inside a
+    /// GlStateGuard; `atlas` and `ramp` are textures, `rampRows` the ramp's row v per batch index.
+    void draw(const Casters& casters, uint32_t atlas, uint32_t ramp, const std::vector<float>& rampRows);
+    /// The same with the map's own record.
+    void draw(uint32_t atlas, uint32_t ramp, const std::vector<float>& rampRows) {
+        draw(last_, atlas, ramp, rampRows);
+    }
+
+private:
     uint32_t program_ = 0;
     int locView_ = -1, locProj_ = -1, locRampRow_ = -1, locAtlas_ = -1, locRamp_ = -1, locDepthRange_ = -1,
         locTrimmed_ = -1, locNear_ = -1;
     InstanceStream stream_;
-    std::vector<ParticleInstance> instances_;
-    std::vector<Range> ranges_;
-    glm::mat4 lightView_{1.0f}, lightProj_{1.0f}, worldToShadow_{1.0f};
-    glm::vec2 depthRange_{0.0f, 1.0f};
-    float side_ = 0.0f;
+    Casters last_;
 };
 
 }  // namespace fx

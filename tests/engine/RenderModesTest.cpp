@@ -239,3 +239,33 @@ TEST(RenderModes, ZBufferSampledInPlaceMatchesTheLinearDepthWithOneTargetLess) {
     }
     EXPECT_EQ(gl::errorCount(), 0) << gl::lastError();
 }
+
+// Every view of a frame, chase and rear-view mirror, with lit self-shadowed smoke: the default
+// frame-graph path and the immediate path (--fx-depth zbuffer) draw the same picture. The engine
+// declares each view's smoke shadow map into its frame graph as it declares the view, but runs
+// renderView only when the frame executes; the immediate path must not take a map declared for
+// another view (or any map of the host's graph, whose targets its own frame cannot read).
+TEST(RenderModes, BothDepthPathsDrawTheSameChaseAndMirror) {
+    // run.sh's moment (t = 7 s, the burnout), at half its size: smoke in both views, and view
+    // sizes whose opacity maps differ (SmokeOpacityMap::sizeFor).
+    Options o = standard(640, 512);
+    o.mirror = true;
+    Frames f(o, 150);
+    ASSERT_TRUE(f.ok);
+    f.game.options().pluginZBuffer = false;
+    const ImageRGBA8 graph = f.render(false, fx::Technique::Soft, false);
+    f.game.options().pluginZBuffer = true;
+    const ImageRGBA8 immediate = f.render(false, fx::Technique::Soft, false);
+    f.game.options().pluginZBuffer = false;
+    ASSERT_EQ(graph.pixels.size(), immediate.pixels.size());
+    ASSERT_GT(f.game.specialFX().plugin()->stats().particlesDrawn, 0);
+    int worst = 0;
+    size_t differing = 0;
+    for (size_t i = 0; i < graph.pixels.size(); ++i) {
+        const int d = std::abs(int(graph.pixels[i]) - int(immediate.pixels[i]));
+        worst = std::max(worst, d);
+        differing += d > 1;
+    }
+    EXPECT_LE(worst, 1) << differing << " channel values differ by more than 1/255";
+    EXPECT_EQ(gl::errorCount(), 0) << gl::lastError();
+}

@@ -16,6 +16,7 @@ GLenum internalFormat(fx::TargetFormat f) {
     case fx::TargetFormat::RGBA16F: return GL_RGBA16F;
     case fx::TargetFormat::R32F: return GL_R32F;
     case fx::TargetFormat::RG32F: return GL_RG32F;
+    case fx::TargetFormat::Depth: break;  // sceneZBuffer's texture only, never a target's
     }
     return GL_RGBA8;
 }
