@@ -182,7 +182,7 @@ int main(int argc, char** argv) {
                            OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
     const float eye[3] = {2.6f, 1.0f, 3.6f}, at[3] = {0.0f, 0.6f, -0.5f};
     const fxApi* fx;
-    /* FX_DESC_INIT(T) is {.size = sizeof(T)}: the size set, every other field zero. */
+    /* In C99 FX_DESC_INIT(T) is {.size = sizeof(T)}: the size set, every other field zero. */
     fxHostCallbacks host = FX_DESC_INIT(fxHostCallbacks);
     fxPluginDesc desc = FX_DESC_INIT(fxPluginDesc);
     fxViewDesc view = FX_DESC_INIT(fxViewDesc);

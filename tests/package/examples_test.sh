@@ -3,7 +3,12 @@
 # fixture "cubefx_package"; label "package"). Each builds with only CMAKE_PREFIX_PATH pointing at
 # the prefix (find_package(CubeFx CONFIG REQUIRED)) and runs:
 #   c_host         C99 through fx/fx.h on OSMesa; checks smoke pixels, the occluding post intact,
-#                  no plugin or GL error (its own exit status).
+#                  no plugin or GL error (its own exit status). Built twice, neither with glm:
+#                  by CMake (find_package(CubeFx COMPONENTS C), glm made unfindable with
+#                  CMAKE_DISABLE_FIND_PACKAGE_glm) on its own smoke.yaml, and by its Makefile
+#                  through pkg-config alone, with a pkg-config path that holds no glm.pc and
+#                  a dependency list (-MD) that must name no glm header, run on the package's
+#                  installed burnout_smoke.yaml (cubefx.pc's reactionsdir).
 #   irrlicht_host  Irrlicht 1.8 under xvfb-run, three 320x240 screenshots after 90 frames:
 #                  --no-plugin (never created), --no-smoke (plugin running, last frame without
 #                  renderView) and the smoke frame. Checks: no-smoke == no-plugin (0 pixels off:
@@ -30,8 +35,8 @@ mkdir -p "$work"
 work=$(cd "$work" && pwd)
 export LD_LIBRARY_PATH="$prefix/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 
-build() {
-  cmake -S "$src/examples/$1" -B "$work/$1" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+build() {  # build <example> [cmake options]
+  cmake -S "$src/examples/$1" -B "$work/$1" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${@:2}" \
         >"$work/$1-configure.log" || { cat "$work/$1-configure.log"; fail "$1 did not configure"; }
   cmake --build "$work/$1" -j"$(nproc)" >"$work/$1-build.log" 2>&1 || { cat "$work/$1-build.log"; fail "$1 did not build"; }
   # Warnings are defects in an example people copy from.
@@ -41,9 +46,27 @@ build() {
 case "$example" in
 c_host)
   log "examples/c_host (C99, fx/fx.h only) against $prefix"
-  build c_host
+  build c_host -DCMAKE_DISABLE_FIND_PACKAGE_glm=ON
+  grep -q "CubeFx example reactions: $prefix/share/cubefx/reactions" "$work/c_host-configure.log" ||
+    fail "CubeFx_REACTIONS_DIR does not name the installed reactions"
   "$work/c_host/c_host" "$work/c_host/smoke.yaml" "$work/c_host.png"
   [ -s "$work/c_host.png" ] || fail "c_host wrote no PNG"
+
+  log "examples/c_host/Makefile: pkg-config only, no glm.pc on the pkg-config path"
+  noglm=$work/pkgconfig-without-glm  # the host's other packages, and not glm
+  mkdir -p "$noglm" "$work/c_make"
+  for pc in osmesa stb; do cp "$(pkg-config --variable=pcfiledir "$pc")/$pc.pc" "$noglm/"; done
+  export PKG_CONFIG_LIBDIR="$prefix/lib/pkgconfig:$noglm"
+  ! pkg-config --exists cubefx-cxx || fail "glm.pc is still visible (cubefx-cxx.pc resolves)"
+  make -C "$work/c_make" -f "$src/examples/c_host/Makefile" "CFLAGS=-O2 -MD" >"$work/c_make.log" 2>&1 ||
+    { cat "$work/c_make.log"; fail "the Makefile build failed"; }
+  if grep -q "warning:" "$work/c_make.log"; then cat "$work/c_make.log"; fail "the Makefile build warns"; fi
+  if grep -q "glm" "$work/c_make/c_host.d"; then fail "the C host read a glm header"; fi
+  reactions=$(pkg-config --variable=reactionsdir cubefx)
+  unset PKG_CONFIG_LIBDIR
+  # The Makefile's rpath finds the library: run without LD_LIBRARY_PATH.
+  env -u LD_LIBRARY_PATH "$work/c_make/c_host" "$reactions/burnout_smoke.yaml" "$work/c_host_make.png"
+  [ -s "$work/c_host_make.png" ] || fail "the Makefile's c_host wrote no PNG"
   ;;
 irrlicht_host)
   if [ ! -e /usr/include/irrlicht/irrlicht.h ]; then

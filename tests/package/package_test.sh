@@ -9,8 +9,13 @@
 #      (find_package(CubeFx 1.0 CONFIG REQUIRED)), build it with its own global glad, and run it:
 #      it renders hard and soft smoke to PNG and checks smoke, soft != hard at the ground, GL
 #      state and GL errors (--verify);
-#   6. a non-CMake host: compile against the moved prefix with pkg-config only;
-#   7. find_package with a newer major (3.0) must fail; 1.0 (a 1.x host's request) is accepted.
+#   6. a non-CMake host: compile against the moved prefix with pkg-config only (cubefx-cxx.pc:
+#      the C++ layer, cubefx and glm);
+#   7. the C side needs no glm: cubefx.pc requires nothing, and find_package(CubeFx COMPONENTS C)
+#      configures with glm made unfindable (CMAKE_DISABLE_FIND_PACKAGE_glm), which the default
+#      (C and CXX) does not; CubeFx_REACTIONS_DIR and the .pc's reactionsdir name the installed
+#      example reactions (examples_test.sh builds and runs the C host that way);
+#   8. find_package with a newer major (3.0) must fail; 1.0 (a 1.x host's request) is accepted.
 #   package_test.sh <source root> <scratch folder>
 set -euo pipefail
 src=$(cd "$1" && pwd)
@@ -22,7 +27,7 @@ log() { echo "package_test: $*"; }
 
 copy=$work/src
 mkdir -p "$copy/data"
-cp -r "$src/fx_plugin" "$src/textio" "$src/shaders" "$copy/"
+cp -r "$src/fx_plugin" "$src/textio" "$src/shaders" "$src/reactions" "$copy/"
 cp "$src/data/smoke_atlas.png" "$src/data/smoke_normals.png" "$copy/data/"
 
 log "add_subdirectory(fx_plugin) from a foreign project that has a 'glad' target of its own"
@@ -70,7 +75,8 @@ if [ -n "$bad" ]; then
   echo "package_test: FAIL: these installed files contain a source or build path:"; echo "$bad"; exit 1
 fi
 for f in lib/libcubefx.so include/fx/Plugin.h include/fx/Api.h lib/cmake/CubeFx/CubeFxConfig.cmake \
-         lib/cmake/CubeFx/CubeFxConfigVersion.cmake lib/pkgconfig/cubefx.pc; do
+         lib/cmake/CubeFx/CubeFxConfigVersion.cmake lib/pkgconfig/cubefx.pc lib/pkgconfig/cubefx-cxx.pc \
+         share/cubefx/reactions/README.md share/cubefx/reactions/burnout_smoke.yaml; do
   [ -e "$work/prefix/$f" ] || { echo "package_test: FAIL: $f was not installed"; exit 1; }
 done
 # The reaction internals stay private.
@@ -103,11 +109,41 @@ int main() {
     return fxApiVersion() == fx::kApiVersion && refused ? 0 : 1;
 }
 CPP
-flags=$(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --cflags --libs cubefx)
+flags=$(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --cflags --libs cubefx-cxx)
 case "$flags" in *"$prefix"*) ;; *) echo "package_test: FAIL: pkg-config flags miss the moved prefix: $flags"; exit 1 ;; esac
 # shellcheck disable=SC2086
 c++ -std=c++17 "$work/pc_host.cpp" -o "$work/pc_host" $flags
 LD_LIBRARY_PATH="$prefix/lib" "$work/pc_host"
+
+log "the C side without glm: cubefx.pc and find_package(CubeFx COMPONENTS C)"
+requires=$(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --print-requires cubefx)
+[ -z "$requires" ] || { echo "package_test: FAIL: cubefx.pc requires '$requires' (the C API needs nothing)"; exit 1; }
+reactions=$(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --variable=reactionsdir cubefx)
+[ -e "$reactions/burnout_smoke.yaml" ] || { echo "package_test: FAIL: reactionsdir '$reactions' holds no reactions"; exit 1; }
+mkdir -p "$work/c_only"
+cat >"$work/c_only/CMakeLists.txt" <<'CM'
+cmake_minimum_required(VERSION 3.20)
+project(c_only LANGUAGES C)
+find_package(CubeFx CONFIG REQUIRED ${CUBEFX_COMPONENTS})
+if(NOT EXISTS "${CubeFx_REACTIONS_DIR}/burnout_smoke.yaml")
+  message(FATAL_ERROR "CubeFx_REACTIONS_DIR='${CubeFx_REACTIONS_DIR}' holds no reactions")
+endif()
+file(WRITE ${CMAKE_BINARY_DIR}/host.c "#include <fx/fx.h>\nint main(void) { return fxGetApi(FX_API_VERSION) ? 0 : 1; }\n")
+add_executable(c_only ${CMAKE_BINARY_DIR}/host.c)
+target_link_libraries(c_only PRIVATE CubeFx::fx_c)
+CM
+# glm made unfindable: the C component must not look it up...
+cmake -S "$work/c_only" -B "$work/c_only/b" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_DISABLE_FIND_PACKAGE_glm=ON \
+      "-DCUBEFX_COMPONENTS=COMPONENTS;C" >"$work/c_only.log" 2>&1 ||
+  { cat "$work/c_only.log"; echo "package_test: FAIL: find_package(CubeFx COMPONENTS C) needs glm"; exit 1; }
+cmake --build "$work/c_only/b" >>"$work/c_only.log" 2>&1 || { cat "$work/c_only.log"; exit 1; }
+LD_LIBRARY_PATH="$prefix/lib" "$work/c_only/b/c_only"
+# ...while the default (C and CXX) does, so the line above would catch a lookup.
+if cmake -S "$work/c_only" -B "$work/c_only/b2" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_DISABLE_FIND_PACKAGE_glm=ON \
+         >"$work/c_only_cxx.log" 2>&1; then
+  echo "package_test: FAIL: find_package(CubeFx) found the C++ layer without glm"; exit 1
+fi
+rm -rf "$work/c_only"
 
 log "an incompatible version is refused by find_package"
 mkdir -p "$work/v3"

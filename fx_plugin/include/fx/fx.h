@@ -4,9 +4,10 @@
  * callbacks (fxHostCallbacks), the plugin hands back a table of functions (fxApi).
  *
  * Contract (every guarantee, in one place):
- *  - C99, no C++ type crosses: opaque handles, plain structs, function pointers with a user
- *    pointer, integers for enums and error codes. A host built with any compiler or standard
- *    library that follows the platform's C calling convention can use it; so can a C host.
+ *  - C89 and later (C++98 and later), no C++ type crosses: opaque handles, plain structs, function
+ *    pointers with a user pointer, integers for enums and error codes. A host built with any
+ *    compiler or standard library that follows the platform's C calling convention can use it; so
+ *    can a C host. (The C++ layer over it, fx/Plugin.h, needs C++11.)
  *  - Versions: FX_API_VERSION is MAJOR << 16 | MINOR. fxGetApi(v) returns the table for MAJOR 2
  *    when v's MINOR is at most the library's; else null. A MINOR release appends functions to
  *    fxApi and fields to the end of structs; it changes no existing one.
@@ -49,8 +50,22 @@ extern "C" {
 #define FX_API_VERSION ((uint32_t)((FX_API_VERSION_MAJOR << 16) | FX_API_VERSION_MINOR))
 
 /* Zero-initialises a descriptor and sets its size: `fxViewDesc v = FX_DESC_INIT(fxViewDesc);`
- * (a designated initialiser: C99, C++20, or GCC/Clang in C++17). */
+ * Valid in every C from C89 and every C++ from C++98, under -pedantic-errors. Every struct it is
+ * meant for begins with `uint32_t size`, so the expansion can be chosen per language:
+ *  - C99 and later: the designated initialiser {.size = sizeof(T)};
+ *  - C89/C90 (no designated initialisers): the positional {sizeof(T)}, which sets the first
+ *    field, size, and zero-fills the rest. GCC's and Clang's -Wextra warn about it
+ *    (-Wmissing-field-initializers); a C89 host that builds with -Wextra adds
+ *    -Wno-missing-field-initializers;
+ *  - C++ (designated initialisers only from C++20): a value-initialised T with its size set
+ *    (fxDescInit_, below), which no warning flags. */
+#if defined(__cplusplus)
+#define FX_DESC_INIT(T) fxDescInit_<T>()
+#elif defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L
 #define FX_DESC_INIT(T) {.size = sizeof(T)}
+#else
+#define FX_DESC_INIT(T) {sizeof(T)}
+#endif
 
 typedef int fxBool; /* 0 = false, anything else = true */
 
@@ -336,6 +351,14 @@ FX_C_API const fxApi* fxGetApi(uint32_t version);
 FX_C_API const char* fxErrorCodeName(int code);
 
 #ifdef __cplusplus
+}
+
+/* FX_DESC_INIT's C++ form: every field zero, size = sizeof(T). */
+template <typename T>
+inline T fxDescInit_() {
+    T desc = T();
+    desc.size = sizeof(T);
+    return desc;
 }
 #endif
 

@@ -15,6 +15,24 @@
 namespace fx {
 namespace detail {
 
+// The C++ layer compiles as C++11: there fx::Target (a default member initialiser) is not an
+// aggregate, so `Target{id}` does not compile; this does under every standard.
+inline Target targetFrom(uint32_t id) {
+    Target t;
+    t.id = id;
+    return t;
+}
+
+// std::index_sequence is C++14; the same, for C++11.
+template <size_t... I>
+struct IndexSequence {};
+template <size_t N, size_t... I>
+struct MakeIndexSequence : MakeIndexSequence<N - 1, N - 1, I...> {};
+template <size_t... I>
+struct MakeIndexSequence<0, I...> {
+    using type = IndexSequence<I...>;
+};
+
 // ---- the host's frame graph -------------------------------------------------------------------------
 
 class PassContextBridge {
@@ -23,16 +41,16 @@ public:
         std::memset(&c_, 0, sizeof c_);
         c_.size = sizeof c_;
         c_.user = this;
-        c_.bindForDraw = [](void* u, uint32_t t) { self(u).bindForDraw(Target{t}); };
+        c_.bindForDraw = [](void* u, uint32_t t) { self(u).bindForDraw(targetFrom(t)); };
         c_.texture = [](void* u, uint32_t t, int attachment, fxTextureRef* out) {
-            const TextureRef r = self(u).texture(Target{t}, attachment);
+            const TextureRef r = self(u).texture(targetFrom(t), attachment);
             out->name = r.name;
             out->format = static_cast<int>(r.format);
             out->width = r.width;
             out->height = r.height;
         };
-        c_.width = [](void* u, uint32_t t) { return self(u).width(Target{t}); };
-        c_.height = [](void* u, uint32_t t) { return self(u).height(Target{t}); };
+        c_.width = [](void* u, uint32_t t) { return self(u).width(targetFrom(t)); };
+        c_.height = [](void* u, uint32_t t) { return self(u).height(targetFrom(t)); };
     }
     const fxPassContext* c() const { return &c_; }
 
@@ -61,22 +79,22 @@ constexpr int kMaxPassWrites = 4;
 
 template <size_t... R, size_t... W>
 void addPassWith(FrameBuilder& f, const char* name, const uint32_t* reads, const uint32_t* writes,
-                 std::function<void(PassContext&)>&& fn, std::index_sequence<R...>, std::index_sequence<W...>) {
+                 std::function<void(PassContext&)>&& fn, IndexSequence<R...>, IndexSequence<W...>) {
     (void)reads;
     (void)writes;
-    f.addPass(name, {Target{reads[R]}...}, {Target{writes[W]}...}, std::move(fn));
+    f.addPass(name, {targetFrom(reads[R])...}, {targetFrom(writes[W])...}, std::move(fn));
 }
 
 template <size_t NR>
 void addPassReads(FrameBuilder& f, const char* name, const uint32_t* reads, const uint32_t* writes,
                   int writeCount, std::function<void(PassContext&)>&& fn) {
-    using R = std::make_index_sequence<NR>;
+    using R = typename MakeIndexSequence<NR>::type;
     switch (writeCount) {
-    case 0: addPassWith(f, name, reads, writes, std::move(fn), R{}, std::make_index_sequence<0>{}); break;
-    case 1: addPassWith(f, name, reads, writes, std::move(fn), R{}, std::make_index_sequence<1>{}); break;
-    case 2: addPassWith(f, name, reads, writes, std::move(fn), R{}, std::make_index_sequence<2>{}); break;
-    case 3: addPassWith(f, name, reads, writes, std::move(fn), R{}, std::make_index_sequence<3>{}); break;
-    default: addPassWith(f, name, reads, writes, std::move(fn), R{}, std::make_index_sequence<4>{}); break;
+    case 0: addPassWith(f, name, reads, writes, std::move(fn), R{}, typename MakeIndexSequence<0>::type{}); break;
+    case 1: addPassWith(f, name, reads, writes, std::move(fn), R{}, typename MakeIndexSequence<1>::type{}); break;
+    case 2: addPassWith(f, name, reads, writes, std::move(fn), R{}, typename MakeIndexSequence<2>::type{}); break;
+    case 3: addPassWith(f, name, reads, writes, std::move(fn), R{}, typename MakeIndexSequence<3>::type{}); break;
+    default: addPassWith(f, name, reads, writes, std::move(fn), R{}, typename MakeIndexSequence<4>::type{}); break;
     }
 }
 

@@ -307,7 +307,7 @@ public:
         fxSmokeShadow c{};
         SmokeShadow s;
         if (api_->declareShadowPasses(p_, &v, bridge.c(), &c) == FX_ERROR_NONE && c.opacity != 0) {
-            s.opacity = Target{c.opacity};
+            s.opacity = targetFrom(c.opacity);
             s.worldToShadow = matFrom(c.worldToShadow);
         }
         return s;
