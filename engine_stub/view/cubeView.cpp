@@ -273,8 +273,13 @@ void cubeView::declarePluginPasses(rtt::FrameGraph& graph, const Targets& t, con
                       width_, height_);
     // The z-buffer the opaque pass drew, sampled in place by the plugin: no linear depth is then
     // written. Under prepass-EQUAL it is the prepass's (the colour target draws on it), and
-    // reading it is what runs the prepass.
-    if (!settings.pluginLinearDepth) fx.offerZBuffer(settings.prepassEqual ? t.sceneDepth : t.color, reversedZ_);
+    // reading it is what runs the prepass. Only the reversed-Z float z-buffer is offered: its
+    // distance error is about 6e-8 t at any near/far; a standard 24-bit one loses 3e-8 t^2 / near
+    // (render/DepthMapping.h: 30 cm at 1 km with near 0.1 m), coarser than a soft particle's
+    // softness out there, so under --depth standard the plugin reads the linear R32F as before.
+    if (!settings.pluginLinearDepth && reversedZ_) {
+        fx.offerZBuffer(settings.prepassEqual ? t.sceneDepth : t.color, true);
+    }
     if (settings.plugin) settings.plugin->declarePasses(pluginView(), fx);
 }
 

@@ -225,7 +225,9 @@ typedef struct fxFrameBuilder {
      * its reads to sample it (fxPassContext.texture gives the depth texture, FX_FORMAT_DEPTH),
      * and how it was drawn. The plugin samples it in place, with depth writes off and a texture
      * barrier first, where the context has glTextureBarrier (GL 4.5, ARB_texture_barrier), and
-     * never writes it; then the host needs no linear depth at all. Null or 0 = none offered. */
+     * never writes it; then the host needs no linear depth at all. Null or 0 = none offered.
+     * Offer it where its precision holds (reversed-Z float: about 6e-8 t; standard 24-bit:
+     * 3e-8 t^2 / near, see fx/HostAdapter.h). */
     uint32_t (*sceneZBuffer)(void* user);
     fxBool zBufferClipZeroToOne;            /* drawn under glClipControl(..., GL_ZERO_TO_ONE) */
     float zBufferRangeNear, zBufferRangeFar; /* glDepthRange it was drawn with; both 0 = [0, 1] */
