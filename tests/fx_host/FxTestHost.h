@@ -132,7 +132,10 @@ MaskError maskedError(const Image& a, const Image& b, const std::vector<uint8_t>
 class TestFrameGraph final : public fx::FrameBuilder {
 public:
     /// `floatDepth`: 32-bit float z-buffers (what a reversed-Z host uses), else 24-bit.
-    TestFrameGraph(int width, int height, bool floatDepth = false);
+    /// `zBuffer`: sceneColor's z-buffer is a depth texture offered through sceneZBuffer() (API
+    /// 2.1), drawn under clip control ZERO_TO_ONE when `floatDepth` (the reversed-Z hosts of
+    /// these tests: useReversedZ); else a renderbuffer and nothing is offered.
+    TestFrameGraph(int width, int height, bool floatDepth = false, bool zBuffer = false);
     ~TestFrameGraph() override;
 
     void beginFrame();
@@ -144,6 +147,8 @@ public:
     // fx::FrameBuilder
     fx::Target sceneColor() override { return fx::Target{kSceneColor}; }
     fx::Target sceneDepth() override { return fx::Target{kSceneDepth}; }
+    fx::Target sceneZBuffer() override { return zBufferTex_ ? fx::Target{kSceneZBuffer} : fx::Target{}; }
+    fx::HostDepth sceneZBufferMapping() override { return zMapping_; }
     fx::Target createTarget(const char* name, const fx::TargetDesc& desc) override;
     void addPass(const char* name, std::initializer_list<fx::Target> reads,
                  std::initializer_list<fx::Target> writes,
@@ -157,6 +162,7 @@ public:
     int targetsAllocated() const { return targetsAllocated_; }  ///< created targets backed by GL
     std::vector<std::string> allocatedTargetNames() const;
     bool sceneDepthUsed() const { return sceneDepthUsed_; }
+    bool zBufferUsed() const { return zBufferUsed_; }
 
     /// When set, runs before every plugin pass; the state is snapshotted after it and compared
     /// after the pass. Mismatches are collected in stateMismatches().
@@ -178,6 +184,7 @@ public:
     void setSceneDepthSampling(int minFilter, int magFilter, int maxLevel);
 
     static constexpr uint32_t kSceneColor = 1, kSceneDepth = 2;
+    static constexpr uint32_t kSceneZBuffer = 0xFFFF0000u;  ///< outside createTarget's ids
 
 private:
     struct Pass {
@@ -200,6 +207,9 @@ private:
 
     int width_, height_;
     unsigned colorTex_ = 0, colorDepth_ = 0, colorFbo_ = 0;
+    unsigned zBufferTex_ = 0;  ///< sceneColor's z-buffer as a texture (zBuffer), else 0
+    fx::HostDepth zMapping_;
+    bool zBufferUsed_ = false;
     unsigned depthTex_ = 0, depthDepth_ = 0, depthFbo_ = 0;
     std::vector<Pass> passes_;
     std::vector<TargetSlot> pool_;              ///< GL targets kept across frames

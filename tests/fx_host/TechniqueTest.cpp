@@ -207,12 +207,15 @@ float cpuSoftFade(float sceneDepth, float particleDepth, float softness, float c
 // compared where the unfaded smoke is above 100/255). Twice: a standard 24-bit host (soft
 // particles untested, the fade alone) and a reversed-Z host with a float z-buffer, where the
 // plugin depth-tests soft particles: the test must not eat fragments 0.1 m in front of a wall
-// 10 km away.
+// 10 km away. The reversed-Z host twice more, offering its z-buffer (sceneZBuffer, API 2.1): the
+// plugin then reads distances decoded from the float z-buffer in the shader, not the linear
+// target, and must hit the same CPU fade.
 TEST_F(TechniqueTest, SoftFadeIsExactWithExtremeClipPlanes) {
     constexpr int kW = 128, kH = 96;
-    for (const bool reversed : {false, true}) {
+    for (const int host : {0, 1, 2}) {
+    const bool reversed = host > 0, zBuffer = host == 2;
     for (const float farPlane : {100000.0f, 1.0e7f}) {
-    TestFrameGraph graph(kW, kH, reversed);
+    TestFrameGraph graph(kW, kH, reversed, zBuffer);
     direct.desc.render.softness = 1.0f;
     direct.desc.render.nearFade = 0.5f;
     for (float distance : {1.0f, 10000.0f}) {
@@ -233,6 +236,8 @@ TEST_F(TechniqueTest, SoftFadeIsExactWithExtremeClipPlanes) {
             };
             const Image full = frameWithWallAt(500.0f);
             ASSERT_EQ(drawn, 1);
+            EXPECT_EQ(graph.zBufferUsed(), zBuffer);
+            EXPECT_EQ(graph.sceneDepthUsed(), !zBuffer);
             for (float gap : {0.1f, 0.3f, 0.7f}) {
                 const Image faded = frameWithWallAt(gap);
                 const float expected = cpuSoftFade(distance + gap, distance, 1.0f, contrast);
@@ -247,9 +252,10 @@ TEST_F(TechniqueTest, SoftFadeIsExactWithExtremeClipPlanes) {
                 }
                 ASSERT_GT(used, 20) << "particle at " << distance << " m barely visible";
                 std::printf("[ measured ] %s far %.0e: soft fade at %.0f m, gap %.1f m, contrast %.1f: "
-                            "expected %.3f, worst error %.4f over %d px\n", reversed ? "reversed-Z" : "standard",
+                            "expected %.3f, worst error %.4f over %d px\n",
+                            zBuffer ? "reversed-Z, z-buffer read" : reversed ? "reversed-Z" : "standard",
                             double(farPlane), distance, gap, contrast, expected, worst, used);
-                EXPECT_LT(worst, 0.03f) << (reversed ? "reversed " : "standard ") << "far " << farPlane
+                EXPECT_LT(worst, 0.03f) << (zBuffer ? "z-buffer " : reversed ? "reversed " : "standard ") << "far " << farPlane
                                         << " distance " << distance << " gap " << gap;
             }
         }

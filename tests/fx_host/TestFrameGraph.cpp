@@ -47,12 +47,26 @@ GLuint makeDepthBuffer(int w, int h, bool floatDepth) {
     return rb;
 }
 
-GLuint makeFramebuffer(GLuint colour, GLuint depth) {
+GLuint makeDepthTexture(int w, int h, bool floatDepth) {
+    GLuint t = 0;
+    glGenTextures(1, &t);
+    glBindTexture(GL_TEXTURE_2D, t);
+    glTexImage2D(GL_TEXTURE_2D, 0, floatDepth ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24, w, h, 0,
+                 GL_DEPTH_COMPONENT, floatDepth ? GL_FLOAT : GL_UNSIGNED_INT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return t;
+}
+
+GLuint makeFramebuffer(GLuint colour, GLuint depth, GLuint depthTexture = 0) {
     GLuint fbo = 0;
     glGenFramebuffers(1, &fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
     if (depth) glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    if (depthTexture) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depthTexture, 0);
     assert(glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return fbo;
@@ -80,6 +94,7 @@ public:
     fx::TextureRef texture(fx::Target t, int) override {
         if (t.id == kSceneColor) return {g_.colorTex_, fx::TargetFormat::RGBA8, g_.width_, g_.height_};
         if (t.id == kSceneDepth) return {g_.depthTex_, fx::TargetFormat::R32F, g_.width_, g_.height_};
+        if (t.id == kSceneZBuffer) return {g_.zBufferTex_, fx::TargetFormat::Depth, g_.width_, g_.height_};
         TargetSlot* s = g_.slotFor(t.id);
         if (!s) return fx::TextureRef{};
         return {s->texture, s->desc.format, s->width, s->height};
@@ -97,10 +112,16 @@ private:
     TestFrameGraph& g_;
 };
 
-TestFrameGraph::TestFrameGraph(int width, int height, bool floatDepth) : width_(width), height_(height) {
+TestFrameGraph::TestFrameGraph(int width, int height, bool floatDepth, bool zBuffer)
+    : width_(width), height_(height) {
     colorTex_ = makeTexture(GL_RGBA8, width, height, true);
-    colorDepth_ = makeDepthBuffer(width, height, floatDepth);
-    colorFbo_ = makeFramebuffer(colorTex_, colorDepth_);
+    if (zBuffer) {
+        zBufferTex_ = makeDepthTexture(width, height, floatDepth);
+        zMapping_.clipDepthZeroToOne = floatDepth;
+    } else {
+        colorDepth_ = makeDepthBuffer(width, height, floatDepth);
+    }
+    colorFbo_ = makeFramebuffer(colorTex_, colorDepth_, zBufferTex_);
     depthTex_ = makeTexture(GL_R32F, width, height, false);
     depthDepth_ = makeDepthBuffer(width, height, floatDepth);
     depthFbo_ = makeFramebuffer(depthTex_, depthDepth_);
@@ -116,7 +137,8 @@ TestFrameGraph::~TestFrameGraph() {
     glDeleteFramebuffers(1, &depthFbo_);
     glDeleteTextures(1, &colorTex_);
     glDeleteTextures(1, &depthTex_);
-    glDeleteRenderbuffers(1, &colorDepth_);
+    if (colorDepth_) glDeleteRenderbuffers(1, &colorDepth_);
+    if (zBufferTex_) glDeleteTextures(1, &zBufferTex_);
     glDeleteRenderbuffers(1, &depthDepth_);
 }
 
@@ -130,6 +152,7 @@ void TestFrameGraph::beginFrame() {
     for (TargetSlot& s : pool_) s.inUse = false;
     targetsCreated_ = targetsAllocated_ = 0;
     sceneDepthUsed_ = false;
+    zBufferUsed_ = false;
     pluginPasses_ = false;
 }
 
@@ -169,6 +192,8 @@ TestFrameGraph::TargetSlot* TestFrameGraph::slotFor(uint32_t id) {
 
 void TestFrameGraph::allocate(uint32_t id) {
     if (id == kSceneDepth) sceneDepthUsed_ = true;
+    if (id == kSceneZBuffer) zBufferUsed_ = true;
+    if (id == kSceneZBuffer) return;
     if (id <= kSceneDepth || frameTargets_.count(id)) return;
     const auto& [name, desc] = created_[id - kSceneDepth - 1];
     const int w = desc.width > 0 ? desc.width : std::max(1, int(float(width_) * desc.scale));
