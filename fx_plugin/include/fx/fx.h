@@ -28,10 +28,10 @@
  *    (a null one with FX_ERROR_NULL_ARGUMENT; destroy(NULL) does nothing, like free(NULL)) and
  *    nothing is done. Not detected: a destroyed handle whose address a later create happens to
  *    get again (it names the new plugin), and a call racing destroy on another thread.
- *  - (GL) calls check first that a context is current (glGetString answers) and that the host's
- *    getProcAddress gave every entry point the plugin's drawing calls; else FX_ERROR_NO_GL_CONTEXT,
- *    naming the missing functions, and nothing is marked failed: the next call with a context
- *    goes ahead. Optional features degrade with one warning line: KHR_debug groups (glPush/
+ *  - (GL) calls check, after their arguments and before any other GL call, that a context is
+ *    current (glGetString answers) and that the host's getProcAddress gave every entry point the
+ *    plugin's drawing calls; else FX_ERROR_NO_GL_CONTEXT, naming the missing functions, and
+ *    nothing is marked failed: the next call with a context goes ahead. Optional features degrade with one warning line: KHR_debug groups (glPush/
  *    PopDebugGroup) and clip control (glClipControl). The entry points are loaded once for all
  *    live plugins; after the last one is destroyed, the next plugin loads them again.
  *  - No call leaves a GL error pending that it caused. Checking a depthTexture name of another
