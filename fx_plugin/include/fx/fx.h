@@ -152,7 +152,7 @@ typedef struct fxPluginDesc {
     const fxHostCallbacks* host;   /* required; copied, its user pointer must outlive the plugin */
     const char* shaderDir;         /* null/"" = embedded shaders; a folder = live shader edits */
     const char* dataDir;           /* null/"" = embedded smoke atlas */
-    uint64_t seed;                 /* 0 = the plugin's default */
+    uint64_t seed;                 /* any value; 0 = the plugin's default */
 } fxPluginDesc;
 
 /* One view. Matrices as the host draws its scene with them; `handedness` says which way its
@@ -181,14 +181,16 @@ typedef struct fxViewDesc {
 
 typedef struct fxRenderOptions {
     uint32_t size;
-    int techniqueOverride;  /* FX_TECHNIQUE_*, 0 = each reaction's own */
+    int techniqueOverride;  /* FX_TECHNIQUE_* (0 .. FX_TECHNIQUE_MEGA), 0 = each reaction's own */
     fxBool quarterRes;
     fxBool bilinearUpsample;
 } fxRenderOptions;
 
 typedef struct fxSceneLight {
     uint32_t size;
-    float toSun[3], sunColor[3], ambient[3];
+    float toSun[3];       /* finite, not zero (the plugin normalises it) */
+    float sunColor[3];    /* finite, each >= 0 */
+    float ambient[3];     /* finite, each >= 0 */
 } fxSceneLight;
 
 /* ---- the host's frame graph (fxApi.declarePasses; engines without one use fxRenderView) ---- */
@@ -322,7 +324,9 @@ typedef struct fxApi {
     int (*continueReaction)(fxPlugin* p, int index, float dt, float* collision);
     int (*fireReaction)(fxPlugin* p, const char* name, const float point[3]);
 
-    /* Options. */
+    /* Options. An int outside its enum (FX_SHAPE_*, FX_EDGES_*, FX_FADE_CLASSIFICATION_*,
+     * FX_TECHNIQUE_*) is FX_ERROR_INVALID_VALUE; an fxBool is any int. Values out of an
+     * fxSceneLight's ranges are FX_ERROR_INVALID_VALUE. */
     int (*setRenderOptions)(fxPlugin* p, const fxRenderOptions* options);
     void (*getRenderOptions)(const fxPlugin* p, fxRenderOptions* out);
     int (*setParticleShape)(fxPlugin* p, int shape);
