@@ -39,10 +39,11 @@ public:
 
 std::mutex g_withoutHostMutex;
 
+// Never destroyed, like the C table's set of live plugins: a refusal may come from a static
+// destructor at exit.
 ApiErrors& withoutHost() {
-    static StderrHost host;
-    static ApiErrors errors(&host);
-    return errors;
+    static auto* errors = new ApiErrors(new StderrHost());
+    return *errors;
 }
 
 }  // namespace

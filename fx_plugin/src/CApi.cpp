@@ -52,9 +52,11 @@ int code(ErrorCode c) { return static_cast<int>(c); }
 // plugin cannot be told apart (fx/fx.h says so).
 std::mutex g_liveMutex;
 
+// Never destroyed: a host may destroy its last plugin from a static destructor that runs after
+// this file's statics would have been.
 std::unordered_set<const fxPlugin*>& liveSet() {
-    static std::unordered_set<const fxPlugin*> live;
-    return live;
+    static auto* live = new std::unordered_set<const fxPlugin*>();
+    return *live;
 }
 
 /// Whether `p` may be used by `function`. Null, destroyed and foreign handles are refused on
