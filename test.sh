@@ -3,7 +3,8 @@
 #   1. the unit, GL and tool tests (ctest, optimized build in build/: scripts/configure.sh)
 #   2. the same suite under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/)
 #   3. the soak (ctest label "soak": 20,000 frames with reaction files rewritten under --watch)
-#   4. libFuzzer on the reaction and scene loaders, about a minute each, plus the kept crashers
+#   4. libFuzzer on the reaction and scene loaders, about a minute each, and on the C table's
+#      descriptors and numbers, 30 s, plus the kept crashers
 # CUBE_TEST_STAGES (default "unit sanitize soak fuzz") picks stages, e.g. CUBE_TEST_STAGES=unit.
 # The soak keeps about one core busy and each fuzzer one, so the soak runs in the background
 # while the stages after it run; its log is printed and counted at the end.

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang and runs each for a bounded time (FUZZ_SECONDS, default
-# 60) on a seed corpus from reactions/, data/ and fuzz/seeds/. Any crash, leak or sanitizer report fails the
+# 60; the C table's target FUZZ_CAPI_SECONDS, default 30) on a seed corpus from reactions/, data/
+# and fuzz/seeds/. Any crash, leak or sanitizer report fails the
 # script; the crashing input is copied into fuzz/regressions/<target>/ so it becomes a test.
 # Then every file in fuzz/regressions/ is replayed once (the regression tests).
 set -euo pipefail
@@ -9,11 +10,11 @@ CUBE_WITH_CLANG=1 bash scripts/deps.sh
 seconds="${FUZZ_SECONDS:-60}"
 build=build-fuzz
 CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCUBE_FUZZ=ON >/dev/null
-cmake --build "$build" -j"$(nproc)" --target fuzz_reactions fuzz_scene fuzz_legacy
+cmake --build "$build" -j"$(nproc)" --target fuzz_reactions fuzz_scene fuzz_legacy fuzz_capi
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-mkdir -p "$work/corpus_reactions" "$work/corpus_scene" "$work/corpus_legacy"
+mkdir -p "$work/corpus_reactions" "$work/corpus_scene" "$work/corpus_legacy" "$work/corpus_capi"
 cp reactions/*.yaml data/legacy_smoke.yaml "$work/corpus_reactions/"
 cp data/legacy_smoke.yaml "$work/corpus_legacy/"
 cp data/race.gltf data/race.glb "$work/corpus_scene/"
@@ -35,11 +36,24 @@ m["scenes"][0]["nodes"].append(n)
 open(d + "/chain.gltf", "w").write(json.dumps(m))
 PY
 
+# The C table: a good descriptor (byte 40 has bit 7 set) followed by one of each call, and a
+# descriptor of 0xAB bytes.
+python3 - "$work/corpus_capi" <<'PY'
+import struct, sys
+d = sys.argv[1]
+good = bytes(40) + b"\x81" + struct.pack("<I", 64)
+calls = b"".join(bytes([k]) + struct.pack("<ifff", 0, 1.0 / 60, 0.5, 0.0) for k in range(14))
+open(d + "/good_calls", "wb").write(good + calls)
+open(d + "/garbage_desc", "wb").write(b"\xab" * 48)
+PY
+
 status=0
-for target in reactions scene legacy; do
-  echo "fuzz: $target for ${seconds}s"
+for target in reactions scene legacy capi; do
+  target_seconds="$seconds"
+  [ "$target" = capi ] && target_seconds="${FUZZ_CAPI_SECONDS:-30}"
+  echo "fuzz: $target for ${target_seconds}s"
   mkdir -p "fuzz/regressions/$target"
-  if ! ASAN_OPTIONS=detect_leaks=1 "$build/bin/fuzz_$target" -max_total_time="$seconds" -timeout=10 \
+  if ! ASAN_OPTIONS=detect_leaks=1 "$build/bin/fuzz_$target" -max_total_time="$target_seconds" -timeout=10 \
        -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 -artifact_prefix="$work/crash_${target}_" \
        "$work/corpus_$target" >"$work/log_$target" 2>&1; then
     tail -40 "$work/log_$target"

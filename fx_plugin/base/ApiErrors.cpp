@@ -1,6 +1,8 @@
 #include "base/ApiErrors.h"
 
+#include <cstdio>
 #include <cstring>
+#include <mutex>
 
 namespace fx {
 
@@ -23,6 +25,37 @@ ErrorCode ApiErrors::refuse(ErrorCode code, const char* function, const std::str
     }
     host_->log(LogLevel::Error, line.c_str());
     return code;
+}
+
+namespace {
+
+class StderrHost final : public HostAdapter {
+public:
+    void* getProcAddress(const char*) override { return nullptr; }
+    int wheelCount() const override { return 0; }
+    WheelContact wheel(int) const override { return {}; }
+    void log(LogLevel, const char* message) override { std::fprintf(stderr, "%s\n", message); }
+};
+
+std::mutex g_withoutHostMutex;
+
+// Never destroyed, like the C table's set of live plugins: a refusal may come from a static
+// destructor at exit.
+ApiErrors& withoutHost() {
+    static auto* errors = new ApiErrors(new StderrHost());
+    return *errors;
+}
+
+}  // namespace
+
+ErrorCode refuseWithoutHost(ErrorCode code, const char* function, const std::string& what) {
+    std::lock_guard<std::mutex> lock(g_withoutHostMutex);
+    return withoutHost().refuse(code, function, what);
+}
+
+int refusalsWithoutHost() {
+    std::lock_guard<std::mutex> lock(g_withoutHostMutex);
+    return withoutHost().count();
 }
 
 }  // namespace fx

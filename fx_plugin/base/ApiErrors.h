@@ -33,4 +33,12 @@ private:
     std::vector<Seen> seen_;
 };
 
+/// Where a refusal goes when no plugin's host can hear it: a descriptor refused by create (which
+/// is not read past the check it failed), a null, destroyed or foreign handle. Writes the same
+/// "fx: error[Code] function: ..." line to stderr, with the same repeat limit per (function,
+/// code), behind a mutex (a dead handle may be used from any thread).
+ErrorCode refuseWithoutHost(ErrorCode code, const char* function, const std::string& what);
+/// How many refusals refuseWithoutHost has taken in this process.
+int refusalsWithoutHost();
+
 }  // namespace fx

@@ -43,7 +43,8 @@ void depthTestFor(DepthConvention depth) {
     glDepthFunc(depth == DepthConvention::ReversedZ ? GL_GEQUAL : GL_LEQUAL);
 }
 
-DebugGroup::DebugGroup(const char* name) : active_(FXGLAD_GL_KHR_debug != 0) {
+DebugGroup::DebugGroup(const char* name)
+    : active_(FXGLAD_GL_KHR_debug != 0 && glPushDebugGroup != nullptr && glPopDebugGroup != nullptr) {
     if (active_) glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name);
 }
 

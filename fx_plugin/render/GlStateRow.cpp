@@ -148,7 +148,10 @@ void setClearColor(const Row&, const Value& v) {
 void setDepthFunc(const Row&, const Value& v) { glDepthFunc(GLenum(v.v[0])); }
 void setDepthMask(const Row&, const Value& v) { glDepthMask(asBool(v.v[0])); }
 void setDepthRange(const Row&, const Value& v) { glDepthRange(v.v[0], v.v[1]); }
-void setClipControl(const Row&, const Value& v) { glClipControl(GLenum(v.v[0]), GLenum(v.v[1])); }
+void setClipControl(const Row&, const Value& v) {
+    // The rows are built once per process; a later host may hand out no glClipControl.
+    if (glClipControl) glClipControl(GLenum(v.v[0]), GLenum(v.v[1]));
+}
 void setProvokingVertex(const Row&, const Value& v) { glProvokingVertex(GLenum(v.v[0])); }
 void setPointSize(const Row&, const Value& v) { glPointSize(GLfloat(v.v[0])); }
 void setLineWidth(const Row&, const Value& v) { glLineWidth(GLfloat(v.v[0])); }

@@ -9,6 +9,24 @@
 #include <string>
 
 namespace fx {
+namespace {
+
+/// Binds `texture` to GL_TEXTURE_2D of the active unit when it is a 2D texture; false when it is
+/// not a texture name (deleted, or generated and never bound) or has another target, and then no
+/// GL error is left behind: glIsTexture raises none, and the one error a bind to the wrong target
+/// raises is taken back at once (a context records only its first error: were the host's own
+/// still pending, that one is the one taken; fx/fx.h says so).
+bool bindAs2D(uint32_t texture) {
+    if (!glIsTexture(texture)) return false;
+    glBindTexture(GL_TEXTURE_2D, texture);
+    GLint bound = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+    if (GLuint(bound) == texture) return true;
+    glGetError();
+    return false;
+}
+
+}  // namespace
 
 ImmediateRenderer::ImmediateRenderer(HostAdapter* host, std::string shaderDir)
     : host_(host), depth_(std::move(shaderDir)) {}
@@ -77,8 +95,19 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
     }
     uint32_t depthFormat = 0;
     int samples = 0;
-    if (source == Source::DepthTexture) {
+    if (source == Source::DepthTexture || source == Source::LinearR32F) {
         glActiveTexture(GL_TEXTURE0);
+        if (!bindAs2D(in.depthTexture)) {
+            return refuse(ErrorCode::UnsupportedDepth, "depthTexture " + std::to_string(in.depthTexture) +
+                                                           ": not a GL_TEXTURE_2D (deleted, never bound, or "
+                                                           "another target)");
+        }
+    }
+    if (source == Source::LinearR32F && DepthLinearizer::textureFormat(in.depthTexture) != GL_R32F) {
+        return refuse(ErrorCode::UnsupportedDepth, "depthTexture: FX_DEPTH_FROM_LINEAR reads a GL_R32F texture "
+                                                   "(linear view depth in metres); this one has another format");
+    }
+    if (source == Source::DepthTexture) {
         depthFormat = supportedDepthFormat(in.depthFormat ? in.depthFormat : DepthLinearizer::textureFormat(in.depthTexture));
         int tw = 0, th = 0;
         DepthLinearizer::textureSize(in.depthTexture, &tw, &th);

@@ -22,8 +22,11 @@ public:
         rate_ = rate;
         dt_ = dt;
         const double total = carry_ + rate * dt;
-        if (total >= kMaxDue) {  // an absurd hitch: release a bounded count, forget the fraction
-            carry_ = 0.0;
+        if (total >= kMaxDue) {
+            // An absurd hitch: only its last kMaxDue / rate seconds count (a particle due before
+            // them is long dead), so the count and every k below it stay far inside int64_t.
+            carry_ = before_ = 0.0;
+            dt_ = kMaxDue / rate;
             return static_cast<int64_t>(kMaxDue);
         }
         const double whole = std::floor(total);
@@ -41,10 +44,13 @@ public:
 
     /// The first k of the last advance() whose age is below `maxAge`: older ones would be dead
     /// on arrival, so a long hitch costs at most (maxAge * rate) spawns, not (dt * rate).
+    /// Never above kMaxDue, the most advance() returns: a value past int64_t's range is never
+    /// converted (that conversion is undefined and read as INT64_MIN, a loop of 2^63 spawns).
     int64_t firstYoungerThan(double maxAge) const {
         if (rate_ <= 0.0) return 0;
         const double x = rate_ * (dt_ - maxAge) + before_ - 1.0;
-        if (x < 0.0) return 0;
+        if (!(x >= 0.0)) return 0;  // NaN too (a non-finite maxAge)
+        if (x >= kMaxDue) return static_cast<int64_t>(kMaxDue);
         return static_cast<int64_t>(std::floor(x)) + 1;
     }
 
@@ -52,8 +58,10 @@ public:
     double carry() const { return carry_; }
     void reset() { carry_ = before_ = rate_ = dt_ = 0.0; }
 
-private:
+    /// The most particles one advance() releases (and the most firstYoungerThan returns).
     static constexpr double kMaxDue = 1e12;
+
+private:
     double carry_ = 0.0;
     double before_ = 0.0;
     double rate_ = 0.0;

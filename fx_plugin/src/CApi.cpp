@@ -3,9 +3,12 @@
 // library's standard library, never crossing the boundary) and back.
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <cstring>
 #include <memory>
+#include <mutex>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "fx/fx.h"
@@ -13,6 +16,8 @@
 #include "PluginImpl.h"
 #include "../render/ImmediateRenderer.h"
 #include "InstallParticleRenderer.h"
+#include "../reactions/ReactionDesc.h"
+#include "../render/PrivateGlLoader.h"
 
 extern "C" uint32_t fxApiVersion(void) { return FX_API_VERSION; }
 
@@ -40,6 +45,42 @@ ErrorCode refuse(const fxPlugin* p, ErrorCode code, const char* function, const 
 }
 
 int code(ErrorCode c) { return static_cast<int>(c); }
+
+// ---- live handles -------------------------------------------------------------------------------
+// Every plugin create returned and destroy has not yet freed. A call with any other pointer is
+// refused before it is dereferenced; a pointer that a later allocation happens to reuse for a new
+// plugin cannot be told apart (fx/fx.h says so).
+std::mutex g_liveMutex;
+
+// Never destroyed: a host may destroy its last plugin from a static destructor that runs after
+// this file's statics would have been.
+std::unordered_set<const fxPlugin*>& liveSet() {
+    static auto* live = new std::unordered_set<const fxPlugin*>();
+    return *live;
+}
+
+/// Whether `p` may be used by `function`. Null, destroyed and foreign handles are refused on
+/// stderr (no host can be reached through them) and counted in refusalsWithoutHost().
+bool usable(const fxPlugin* p, const char* function) {
+    if (!p) {
+        refuseWithoutHost(ErrorCode::NullArgument, function, "plugin is null; expected a handle from create");
+        return false;
+    }
+    {
+        std::lock_guard<std::mutex> lock(g_liveMutex);
+        if (liveSet().count(p)) return true;
+    }
+    char address[32];
+    std::snprintf(address, sizeof address, "%p", static_cast<const void*>(p));
+    refuseWithoutHost(ErrorCode::InvalidHandle, function,
+                      std::string("plugin ") + address + " is not live (destroyed, or not made by create); nothing done");
+    return false;
+}
+
+/// What a refused handle returns from a function that returns an error code.
+int handleError(const fxPlugin* p) { return p ? FX_ERROR_INVALID_HANDLE : FX_ERROR_NULL_ARGUMENT; }
+
+bool finite3(const float* v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
 /// The sizes a descriptor of API 2.x may have: 2.0's (the first); later minors add theirs here.
 bool knownSize(uint32_t size, size_t current) { return size == current; }
@@ -71,15 +112,17 @@ void report(const Diagnostics& diags, const fxDiagnosticSink* out) {
 // ---- creation -----------------------------------------------------------------------------------
 
 fxPlugin* create(const fxPluginDesc* desc, int* error) {
+    // Where the refusal is logged is chosen without reading anything the refused check did not
+    // vouch for: the host's log only once the descriptor's size and version and the callback
+    // table's size are known and its log is set; before that, stderr.
+    const fxHostCallbacks* logHost = nullptr;
     auto fail = [&](ErrorCode c, const std::string& what) -> fxPlugin* {
         if (error) *error = code(c);
-        // The host's log is reached when the descriptor's own size says it holds the host pointer
-        // (a wrong size may still cover it), and that callback table's size is the known one.
-        const bool hostReadable = desc && desc->size >= offsetof(fxPluginDesc, host) + sizeof(desc->host) &&
-                                  desc->host && knownSize(desc->host->size, sizeof(fxHostCallbacks));
-        if (hostReadable && desc->host->log) {
+        if (logHost) {
             const std::string line = std::string("fx: error[") + fxErrorCodeName(code(c)) + "] fxCreatePlugin: " + what;
-            desc->host->log(desc->host->user, FX_LOG_ERROR, line.c_str());
+            logHost->log(logHost->user, FX_LOG_ERROR, line.c_str());
+        } else {
+            refuseWithoutHost(c, "fxCreatePlugin", what);
         }
         return nullptr;
     };
@@ -98,13 +141,11 @@ fxPlugin* create(const fxPluginDesc* desc, int* error) {
     if (!knownSize(h.size, sizeof(fxHostCallbacks))) {
         return fail(ErrorCode::BadDescriptor, sizeProblem("fxHostCallbacks", h.size, sizeof(fxHostCallbacks)));
     }
+    if (h.log) logHost = &h;
     if (!h.getProcAddress || !h.log) {
         return fail(ErrorCode::NullArgument, std::string("fxHostCallbacks::") + (h.log ? "getProcAddress" : "log") +
                                                  " is null; expected a function (wheelCount, wheel, wind and "
                                                  "collisionPoint may be null)");
-    }
-    if ((h.wheelCount == nullptr) != (h.wheel == nullptr)) {
-        return fail(ErrorCode::NullArgument, "fxHostCallbacks: wheelCount and wheel must both be set or both null");
     }
     auto plugin = std::make_unique<fxPlugin>(h);
     PluginImports imports;
@@ -122,10 +163,26 @@ fxPlugin* create(const fxPluginDesc* desc, int* error) {
         plugin->schemaChoices.push_back(std::move(choices));
     }
     if (error) *error = FX_ERROR_NONE;
+    std::lock_guard<std::mutex> lock(g_liveMutex);
+    liveSet().insert(plugin.get());
     return plugin.release();
 }
 
-void destroy(fxPlugin* p) { delete p; }
+void destroy(fxPlugin* p) {
+    if (!p) return;  // like free(NULL)
+    if (!usable(p, "destroy")) return;  // destroyed twice, or never made: refused, nothing freed
+    bool last = false;
+    {
+        std::lock_guard<std::mutex> lock(g_liveMutex);
+        liveSet().erase(p);
+        last = liveSet().empty();
+    }
+    delete p;
+    // The GL table belongs to the live plugins' hosts: with none left, the next plugin loads it
+    // again through its own getProcAddress (another context, another driver, a host that hands
+    // out fewer functions).
+    if (last) forgetPrivateGl();
+}
 
 // ---- reactions -----------------------------------------------------------------------------------
 
@@ -138,7 +195,7 @@ fxBool withDiagnostics(const fxDiagnosticSink* out, Call call) {
 }
 
 fxBool loadReactions(fxPlugin* p, const char* path, const fxDiagnosticSink* out) {
-    if (!p) return 0;
+    if (!usable(p, "loadReactions")) return 0;
     if (!path) {
         refuse(p, ErrorCode::NullArgument, "loadReactions", "path is null; expected a .yaml file or folder");
         return 0;
@@ -146,29 +203,36 @@ fxBool loadReactions(fxPlugin* p, const char* path, const fxDiagnosticSink* out)
     return withDiagnostics(out, [&](Diagnostics* d) { return impl(p).loadReactions(path, d); });
 }
 fxBool pollHotReload(fxPlugin* p, const fxDiagnosticSink* out) {
-    if (!p) return 0;
+    if (!usable(p, "pollHotReload")) return 0;
     return withDiagnostics(out, [&](Diagnostics* d) { return impl(p).pollHotReload(d); });
 }
 fxBool loadReactionsFromText(fxPlugin* p, const char* file, const char* text, size_t length,
                              const fxDiagnosticSink* out) {
-    if (!p) return 0;
+    if (!usable(p, "loadReactionsFromText")) return 0;
     if (!file || (!text && length > 0)) {
         refuse(p, ErrorCode::NullArgument, "loadReactionsFromText", "file or text is null");
+        return 0;
+    }
+    if (length > kMaxFileBytes) {  // refused before a byte is copied
+        refuse(p, ErrorCode::FileTooLarge, "loadReactionsFromText",
+               "length = " + std::to_string(length) + "; expected at most " + std::to_string(kMaxFileBytes) + " bytes");
         return 0;
     }
     const std::string content = text ? std::string(text, length) : std::string();
     return withDiagnostics(out, [&](Diagnostics* d) { return impl(p).loadReactionsFromText(file, content, d); });
 }
-int reactionCount(const fxPlugin* p) { return p ? impl(p).reactionCount() : 0; }
+int reactionCount(const fxPlugin* p) { return usable(p, "reactionCount") ? impl(p).reactionCount() : 0; }
 size_t reactionName(const fxPlugin* p, int index, char* buffer, size_t capacity) {
-    return copyOut(p ? impl(p).reactionName(index) : std::string(), buffer, capacity);
+    return copyOut(usable(p, "reactionName") ? impl(p).reactionName(index) : std::string(), buffer, capacity);
 }
 size_t reactionFile(const fxPlugin* p, int index, char* buffer, size_t capacity) {
-    return copyOut(p ? impl(p).reactionFile(index) : std::string(), buffer, capacity);
+    return copyOut(usable(p, "reactionFile") ? impl(p).reactionFile(index) : std::string(), buffer, capacity);
 }
-int reactionFileCount(const fxPlugin* p) { return p ? int(impl(p).reactionFiles().size()) : 0; }
+int reactionFileCount(const fxPlugin* p) {
+    return usable(p, "reactionFileCount") ? int(impl(p).reactionFiles().size()) : 0;
+}
 size_t reactionFileAt(const fxPlugin* p, int fileIndex, char* buffer, size_t capacity) {
-    if (!p) return copyOut(std::string(), buffer, capacity);
+    if (!usable(p, "reactionFileAt")) return copyOut(std::string(), buffer, capacity);
     const std::vector<std::string> files = impl(p).reactionFiles();
     if (fileIndex < 0 || size_t(fileIndex) >= files.size()) {
         refuse(p, ErrorCode::IndexOutOfRange, "reactionFileAt",
@@ -178,11 +242,25 @@ size_t reactionFileAt(const fxPlugin* p, int fileIndex, char* buffer, size_t cap
     return copyOut(files[size_t(fileIndex)], buffer, capacity);
 }
 size_t reactionValue(const fxPlugin* p, int index, const char* key, char* buffer, size_t capacity) {
-    return copyOut(p && key ? impl(p).reactionValue(index, key) : std::string(), buffer, capacity);
+    if (!usable(p, "reactionValue")) return copyOut(std::string(), buffer, capacity);
+    if (!key) {
+        refuse(p, ErrorCode::NullArgument, "reactionValue", "key is null; expected a dotted key such as render.technique");
+        return copyOut(std::string(), buffer, capacity);
+    }
+    return copyOut(impl(p).reactionValue(index, key), buffer, capacity);
 }
-int reactionParticlesAlive(const fxPlugin* p, int index) { return p ? impl(p).reactionParticlesAlive(index) : 0; }
+int reactionParticlesAlive(const fxPlugin* p, int index) {
+    if (!usable(p, "reactionParticlesAlive")) return 0;
+    if (index < 0 || index >= impl(p).reactionCount()) {
+        refuse(p, ErrorCode::IndexOutOfRange, "reactionParticlesAlive",
+               "index " + std::to_string(index) + " of " + std::to_string(impl(p).reactionCount()) + " reactions");
+        return 0;
+    }
+    return impl(p).reactionParticlesAlive(index);
+}
 int reactionStats(const fxPlugin* p, int index, fxReactionStats* out) {
-    if (!p || !out) return FX_ERROR_NULL_ARGUMENT;
+    if (!usable(p, "reactionStats")) return handleError(p);
+    if (!out) return code(refuse(p, ErrorCode::NullArgument, "reactionStats", "out is null"));
     std::memset(out, 0, sizeof *out);
     const ReactionStats s = impl(p).reactionStats(index);
     copyOut(s.name, out->name, sizeof out->name);
@@ -192,9 +270,10 @@ int reactionStats(const fxPlugin* p, int index, fxReactionStats* out) {
     out->dropped = s.dropped;
     return s.name.empty() ? FX_ERROR_INDEX_OUT_OF_RANGE : FX_ERROR_NONE;
 }
-int reactionKeyCount(const fxPlugin* p) { return p ? int(p->schema.size()) : 0; }
+int reactionKeyCount(const fxPlugin* p) { return usable(p, "reactionKeyCount") ? int(p->schema.size()) : 0; }
 int reactionKey(const fxPlugin* p, int keyIndex, fxReactionKeyInfo* out) {
-    if (!p || !out) return FX_ERROR_NULL_ARGUMENT;
+    if (!usable(p, "reactionKey")) return handleError(p);
+    if (!out) return code(refuse(p, ErrorCode::NullArgument, "reactionKey", "out is null"));
     if (keyIndex < 0 || size_t(keyIndex) >= p->schema.size()) {
         return code(refuse(p, ErrorCode::IndexOutOfRange, "reactionKey",
                            "key index " + std::to_string(keyIndex) + " of " + std::to_string(p->schema.size())));
@@ -215,15 +294,27 @@ int reactionKey(const fxPlugin* p, int keyIndex, fxReactionKeyInfo* out) {
 // ---- simulation and options -------------------------------------------------------------------
 
 int continueReaction(fxPlugin* p, int index, float dt, float* collision) {
-    return p ? code(impl(p).continueReaction(index, dt, collision)) : FX_ERROR_NULL_ARGUMENT;
+    if (!usable(p, "continueReaction")) return handleError(p);
+    if (!(dt >= 0.0f && dt <= FX_MAX_TIME_STEP)) {  // NaN fails both
+        return code(refuse(p, ErrorCode::InvalidValue, "continueReaction",
+                           "dt = " + std::to_string(dt) + " s; expected 0 <= dt <= " +
+                               std::to_string(int(FX_MAX_TIME_STEP)) + " (FX_MAX_TIME_STEP)"));
+    }
+    return code(impl(p).continueReaction(index, dt, collision));
 }
 int fireReaction(fxPlugin* p, const char* name, const float point[3]) {
-    if (!p) return FX_ERROR_NULL_ARGUMENT;
+    if (!usable(p, "fireReaction")) return handleError(p);
     if (!name || !point) return code(refuse(p, ErrorCode::NullArgument, "fireReaction", "name or point is null"));
+    if (!finite3(point) || std::fabs(point[0]) > FX_MAX_WORLD_COORDINATE ||
+        std::fabs(point[1]) > FX_MAX_WORLD_COORDINATE || std::fabs(point[2]) > FX_MAX_WORLD_COORDINATE) {
+        // Past the bound a particle's first step already overflows to infinity.
+        return code(refuse(p, ErrorCode::InvalidValue, "fireReaction",
+                           "point outside the world; expected finite metres within +-1e9 (FX_MAX_WORLD_COORDINATE)"));
+    }
     return code(impl(p).fireReaction(name, glm::vec3(point[0], point[1], point[2])));
 }
 int setRenderOptions(fxPlugin* p, const fxRenderOptions* o) {
-    if (!p) return FX_ERROR_NULL_ARGUMENT;
+    if (!usable(p, "setRenderOptions")) return handleError(p);
     if (!o) return code(refuse(p, ErrorCode::NullArgument, "setRenderOptions", "options is null"));
     if (!knownSize(o->size, sizeof *o)) {
         return code(refuse(p, ErrorCode::BadDescriptor, "setRenderOptions",
@@ -241,7 +332,11 @@ int setRenderOptions(fxPlugin* p, const fxRenderOptions* o) {
     return code(impl(p).setRenderOptions(r));
 }
 void getRenderOptions(const fxPlugin* p, fxRenderOptions* out) {
-    if (!p || !out) return;
+    if (!usable(p, "getRenderOptions")) return;
+    if (!out) {
+        refuse(p, ErrorCode::NullArgument, "getRenderOptions", "out is null");
+        return;
+    }
     const RenderOptions r = impl(p).renderOptions();
     const uint32_t size = out->size;
     std::memset(out, 0, sizeof *out);
@@ -258,27 +353,37 @@ Enum enumFrom(int v) {
     return static_cast<Enum>(v < 0 || v > 255 ? 255 : v);
 }
 int setParticleShape(fxPlugin* p, int s) {
-    return p ? code(impl(p).setParticleShape(enumFrom<ParticleShape>(s))) : FX_ERROR_NULL_ARGUMENT;
+    if (!usable(p, "setParticleShape")) return handleError(p);
+    return code(impl(p).setParticleShape(enumFrom<ParticleShape>(s)));
 }
-int particleShape(const fxPlugin* p) { return p ? int(impl(p).particleShape()) : 0; }
+int particleShape(const fxPlugin* p) { return usable(p, "particleShape") ? int(impl(p).particleShape()) : 0; }
 int setQuarterResEdges(fxPlugin* p, int m) {
-    return p ? code(impl(p).setQuarterResEdges(enumFrom<QuarterResEdges>(m))) : FX_ERROR_NULL_ARGUMENT;
+    if (!usable(p, "setQuarterResEdges")) return handleError(p);
+    return code(impl(p).setQuarterResEdges(enumFrom<QuarterResEdges>(m)));
 }
-int quarterResEdges(const fxPlugin* p) { return p ? int(impl(p).quarterResEdges()) : 0; }
+int quarterResEdges(const fxPlugin* p) { return usable(p, "quarterResEdges") ? int(impl(p).quarterResEdges()) : 0; }
 int setFadeClassification(fxPlugin* p, int m) {
-    return p ? code(impl(p).setFadeClassification(enumFrom<FadeClassification>(m))) : FX_ERROR_NULL_ARGUMENT;
+    if (!usable(p, "setFadeClassification")) return handleError(p);
+    return code(impl(p).setFadeClassification(enumFrom<FadeClassification>(m)));
 }
-int fadeClassification(const fxPlugin* p) { return p ? int(impl(p).fadeClassification()) : 0; }
+int fadeClassification(const fxPlugin* p) {
+    return usable(p, "fadeClassification") ? int(impl(p).fadeClassification()) : 0;
+}
 int setFadeClassCounting(fxPlugin* p, fxBool on) {
-    return p ? code(impl(p).setFadeClassCounting(on != 0)) : FX_ERROR_NULL_ARGUMENT;
+    if (!usable(p, "setFadeClassCounting")) return handleError(p);
+    return code(impl(p).setFadeClassCounting(on != 0));
 }
 void fadeClassCounts(const fxPlugin* p, fxFadeClassCounts* out) {
-    if (!p || !out) return;
+    if (!usable(p, "fadeClassCounts")) return;
+    if (!out) {
+        refuse(p, ErrorCode::NullArgument, "fadeClassCounts", "out is null");
+        return;
+    }
     const FadeClassCounts c = impl(p).fadeClassCounts();
     *out = fxFadeClassCounts{c.fadeNeeded, c.inFront, c.hidden, c.counted ? 1 : 0};
 }
 int setSceneLight(fxPlugin* p, const fxSceneLight* l) {
-    if (!p) return FX_ERROR_NULL_ARGUMENT;
+    if (!usable(p, "setSceneLight")) return handleError(p);
     if (!l) return code(refuse(p, ErrorCode::NullArgument, "setSceneLight", "light is null"));
     if (!knownSize(l->size, sizeof *l)) {
         return code(refuse(p, ErrorCode::BadDescriptor, "setSceneLight", sizeProblem("fxSceneLight", l->size, sizeof *l)));
@@ -290,7 +395,7 @@ int setSceneLight(fxPlugin* p, const fxSceneLight* l) {
     return code(impl(p).setSceneLight(s));
 }
 void clearSceneLight(fxPlugin* p) {
-    if (p) impl(p).clearSceneLight();
+    if (usable(p, "clearSceneLight")) impl(p).clearSceneLight();
 }
 
 // ---- GL -------------------------------------------------------------------------------------------
@@ -305,8 +410,27 @@ ImmediateRenderer& immediate(fxPlugin* p) {
 }
 
 
+/// A (GL) call's first check after its arguments: the table is loaded (through this plugin's host
+/// when it is not yet) and a context is current; else NoGlContext, refused before any GL call so
+/// nothing is marked tried or failed (a later call with a context goes ahead).
+ErrorCode glReady(fxPlugin* p, const char* function, std::string* why = nullptr) {
+    std::string error;
+    if (privateGlLoaded() || loadPrivateGl(p->host, &error)) {
+        if (privateGlContextCurrent()) return ErrorCode::None;
+        error = "no GL context is current on the calling thread (glGetString(GL_VERSION) gave null)";
+    }
+    if (why) *why = error;
+    return refuse(p, ErrorCode::NoGlContext, function, error);
+}
+
 fxBool prepareGl(fxPlugin* p, const fxDiagnosticSink* out) {
-    if (!p) return 0;
+    if (!usable(p, "prepareGl")) return 0;
+    std::string why;
+    if (glReady(p, "prepareGl", &why) != ErrorCode::None) {
+        // The sink hears it too: a host that reads only diagnostics still learns why.
+        report(Diagnostics{Diagnostic{ErrorCode::NoGlContext, "", 0, 0, "", why}}, out);
+        return 0;
+    }
     return withDiagnostics(out, [&](Diagnostics* d) {
         const bool ok = impl(p).prepareGl(d);
         // The immediate path's own program too: the first renderView then compiles nothing.
@@ -314,7 +438,8 @@ fxBool prepareGl(fxPlugin* p, const fxDiagnosticSink* out) {
     });
 }
 fxBool pollShaderReload(fxPlugin* p, const fxDiagnosticSink* out) {
-    if (!p) return 0;
+    if (!usable(p, "pollShaderReload")) return 0;
+    if (glReady(p, "pollShaderReload") != ErrorCode::None) return 0;
     return withDiagnostics(out, [&](Diagnostics* d) { return impl(p).pollShaderReload(d); });
 }
 
@@ -330,6 +455,23 @@ ErrorCode viewFrom(const fxPlugin* p, const fxViewDesc* v, const char* function,
     if (v->depthOrder != FX_DEPTH_STANDARD && v->depthOrder != FX_DEPTH_REVERSED_Z) {
         return refuse(p, ErrorCode::InvalidView, function,
                       "depthOrder " + std::to_string(v->depthOrder) + "; expected FX_DEPTH_STANDARD or FX_DEPTH_REVERSED_Z");
+    }
+    if (v->width <= 0 || v->height <= 0 || v->width > FX_MAX_VIEW_SIZE || v->height > FX_MAX_VIEW_SIZE) {
+        return refuse(p, ErrorCode::InvalidView, function,
+                      "size " + std::to_string(v->width) + "x" + std::to_string(v->height) + "; expected 1 .. " +
+                          std::to_string(FX_MAX_VIEW_SIZE) + " (FX_MAX_VIEW_SIZE) each");
+    }
+    bool finite = finite3(v->eye) && std::isfinite(v->nearPlane) && std::isfinite(v->farPlane) &&
+                  std::isfinite(v->depthRangeNear) && std::isfinite(v->depthRangeFar);
+    for (int i = 0; i < 16; ++i) finite = finite && std::isfinite(v->view[i]) && std::isfinite(v->proj[i]);
+    if (!finite) {
+        return refuse(p, ErrorCode::InvalidView, function,
+                      "a NaN or infinite value in view, proj, eye, the planes or the depth range; expected finite values");
+    }
+    if (!(v->nearPlane > 0.0f) || !(v->farPlane > v->nearPlane)) {
+        return refuse(p, ErrorCode::InvalidView, function,
+                      "near " + std::to_string(v->nearPlane) + ", far " + std::to_string(v->farPlane) +
+                          "; expected 0 < near < far");
     }
     *out = rightHandedView(*v);
     return ErrorCode::None;
@@ -347,23 +489,31 @@ ErrorCode viewAndFrame(const fxPlugin* p, const fxViewDesc* v, const fxFrameBuil
 }
 
 int declarePasses(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* f) {
-    if (!p) return FX_ERROR_NULL_ARGUMENT;
+    if (!usable(p, "declarePasses")) return handleError(p);
     ViewInfo view;
     const ErrorCode bad = viewAndFrame(p, v, f, "declarePasses", &view);
     if (bad != ErrorCode::None) return code(bad);
+    const ErrorCode noGl = glReady(p, "declarePasses");
+    if (noGl != ErrorCode::None) return code(noGl);
     CFrameBuilder frame(*f, p->impl->apiErrors());
     return code(impl(p).declarePasses(view, frame));
 }
 
 int declareShadowPasses(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* f, fxSmokeShadow* out) {
-    if (!p) return FX_ERROR_NULL_ARGUMENT;
-    if (out) std::memset(out, 0, sizeof *out);
+    if (!usable(p, "declareShadowPasses")) return handleError(p);
+    if (!out) {
+        return code(refuse(p, ErrorCode::NullArgument, "declareShadowPasses",
+                           "out is null; expected an fxSmokeShadow for the opacity map"));
+    }
+    std::memset(out, 0, sizeof *out);
     ViewInfo view;
     const ErrorCode bad = viewAndFrame(p, v, f, "declareShadowPasses", &view);
     if (bad != ErrorCode::None) return code(bad);
+    const ErrorCode noGl = glReady(p, "declareShadowPasses");
+    if (noGl != ErrorCode::None) return code(noGl);
     CFrameBuilder frame(*f, p->impl->apiErrors());
     const SmokeShadow s = impl(p).declareShadowPasses(view, frame);
-    if (out && s.valid()) {
+    if (s.valid()) {
         out->opacity = s.opacity.id;
         for (int c = 0; c < 4; ++c)
             for (int r = 0; r < 4; ++r) out->worldToShadow[c * 4 + r] = s.worldToShadow[c][r];
@@ -372,7 +522,7 @@ int declareShadowPasses(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* 
 }
 
 int renderView(fxPlugin* p, const fxViewDesc* v) {
-    if (!p) return FX_ERROR_NULL_ARGUMENT;
+    if (!usable(p, "renderView")) return handleError(p);
     ViewInfo view;
     const ErrorCode bad = viewFrom(p, v, "renderView", &view);
     if (bad != ErrorCode::None) return code(bad);
@@ -392,16 +542,26 @@ int renderView(fxPlugin* p, const fxViewDesc* v) {
     const bool defaultRange = v->depthRangeNear == 0.0f && v->depthRangeFar == 0.0f;
     iv.mapping.rangeNear = defaultRange ? 0.0f : v->depthRangeNear;
     iv.mapping.rangeFar = defaultRange ? 1.0f : v->depthRangeFar;
+    const ErrorCode noGl = glReady(p, "renderView");
+    if (noGl != ErrorCode::None) return code(noGl);
     return code(immediate(p).render(*p->impl, iv));
 }
 
 void stats(const fxPlugin* p, fxStats* out) {
-    if (!p || !out) return;
+    if (!usable(p, "stats")) return;
+    if (!out) {
+        refuse(p, ErrorCode::NullArgument, "stats", "out is null");
+        return;
+    }
     const Stats s = impl(p).stats();
     *out = fxStats{s.reactions, s.particlesAlive, s.particleCapacity, s.particlesDrawn, s.reloads, s.reloadErrors, s.apiErrors};
 }
 void checkParticles(const fxPlugin* p, fxParticleCheck* out) {
-    if (!p || !out) return;
+    if (!usable(p, "checkParticles")) return;
+    if (!out) {
+        refuse(p, ErrorCode::NullArgument, "checkParticles", "out is null");
+        return;
+    }
     const ParticleCheck c = impl(p).checkParticles();
     *out = fxParticleCheck{c.alive, c.capacity, c.nonFinite};
 }

@@ -15,7 +15,8 @@ class CHostAdapter final : public HostAdapter {
 public:
     explicit CHostAdapter(const fxHostCallbacks& c) : c_(c) {}
     void* getProcAddress(const char* name) override { return c_.getProcAddress(c_.user, name); }
-    int wheelCount() const override { return c_.wheelCount ? c_.wheelCount(c_.user) : 0; }
+    // Each callback optional on its own: both are needed for any wheel.
+    int wheelCount() const override { return c_.wheelCount && c_.wheel ? c_.wheelCount(c_.user) : 0; }
     WheelContact wheel(int index) const override;
     glm::vec3 wind() const override;
     glm::vec3 collisionPoint() const override;

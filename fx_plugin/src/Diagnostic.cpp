@@ -32,6 +32,7 @@ extern "C" const char* fxErrorCodeName(int code) {
     case ErrorCode::ResourceMissing: return "ResourceMissing";
     case ErrorCode::BadDescriptor: return "BadDescriptor";
     case ErrorCode::UnsupportedDepth: return "UnsupportedDepth";
+    case ErrorCode::InvalidHandle: return "InvalidHandle";
     }
     return "Unknown";
 }
@@ -39,4 +40,7 @@ extern "C" const char* fxErrorCodeName(int code) {
 static_assert(static_cast<int>(fx::ErrorCode::ResourceMissing) == FX_ERROR_RESOURCE_MISSING,
               "fx::ErrorCode and FX_ERROR_* must keep the same numbers");
 static_assert(static_cast<int>(fx::ErrorCode::UnsupportedDepth) == FX_ERROR_UNSUPPORTED_DEPTH,
+              "fx::ErrorCode and FX_ERROR_* must keep the same numbers");
+static_assert(static_cast<int>(fx::ErrorCode::InvalidHandle) == FX_ERROR_INVALID_HANDLE &&
+                  FX_ERROR_INVALID_HANDLE + 1 == FX_ERROR_COUNT_,
               "fx::ErrorCode and FX_ERROR_* must keep the same numbers");

@@ -90,14 +90,14 @@ int fxCHostCheck(const char* reactionFile, const char* badReactionFile, char* re
     callbacks.wheel = wheel;
     desc.host = &callbacks;
 
-    /* Bad descriptors: a named error, no plugin, logged once. */
+    /* Bad descriptors: a named error, no plugin. A descriptor whose size or version is refused
+     * is not read further, so its host is not called: the line goes to stderr. */
     desc.size = sizeof desc - 4;
     CHECK(api->create(&desc, &error) == NULL && error == FX_ERROR_BAD_DESCRIPTOR);
-    CHECK(host.errorsLogged == 1 && strstr(host.lastError, "error[BadDescriptor] fxCreatePlugin") != NULL);
     desc.size = sizeof desc;
     desc.apiVersion = FX_API_VERSION + (1u << 16);
     CHECK(api->create(&desc, &error) == NULL && error == FX_ERROR_VERSION_MISMATCH);
-    CHECK(host.errorsLogged == 2);
+    CHECK(host.errorsLogged == 0);
     desc.apiVersion = 0; /* 0 = these headers' version */
     callbacks.log = NULL;
     CHECK(api->create(&desc, &error) == NULL && error == FX_ERROR_NULL_ARGUMENT);
@@ -105,8 +105,10 @@ int fxCHostCheck(const char* reactionFile, const char* badReactionFile, char* re
     callbacks.size = 8;
     CHECK(api->create(&desc, &error) == NULL && error == FX_ERROR_BAD_DESCRIPTOR);
     callbacks.size = sizeof callbacks;
-    callbacks.wheel = NULL; /* wheelCount without wheel */
-    CHECK(api->create(&desc, &error) == NULL && error == FX_ERROR_NULL_ARGUMENT);
+    callbacks.wheel = NULL; /* wheelCount without wheel: each is optional on its own (no wheels) */
+    p = api->create(&desc, &error);
+    CHECK(p != NULL && error == FX_ERROR_NONE);
+    api->destroy(p);
     callbacks.wheel = wheel;
     CHECK(api->create(NULL, &error) == NULL && error == FX_ERROR_NULL_ARGUMENT);
 

@@ -140,6 +140,25 @@ TEST(Emission, AbsurdStepCostsBoundedWorkAndStaysFinite) {
     }
 }
 
+// A finite step whose count is past int64_t (1e30 s at 1000/s): the clock clamps before it
+// converts, so the first young particle is never read as INT64_MIN (2^63 loop turns).
+TEST(Emission, AStepPastInt64StaysBoundedInTheClockAndTheRuntime) {
+    fx::EmissionClock clock;
+    const int64_t due = clock.advance(1000.0, 1e30);
+    EXPECT_EQ(due, static_cast<int64_t>(fx::EmissionClock::kMaxDue));
+    const int64_t first = clock.firstYoungerThan(2.0);
+    EXPECT_GE(first, due - 2001);
+    EXPECT_LE(first, due);
+    EXPECT_EQ(clock.firstYoungerThan(NAN), 0);
+    fx::ReactionRuntime rt(smoke(1000.0f, 100000, 1.0f, 2.0f));
+    const fx::WheelContact w = spinningRearWheel();
+    rt.step(1e30f, &w, 1, 0.0f, glm::vec3(0.0f), glm::vec3(0.0f));
+    // As after any long hitch: the particles due in the last lifetime_max (2 s x 1000/s).
+    EXPECT_LE(rt.counters().emitted, 2001u);
+    EXPECT_GT(rt.counters().emitted, 900u);
+    for (int i = 0; i < rt.pool().alive(); ++i) ASSERT_TRUE(std::isfinite(rt.pool().posX()[i]));
+}
+
 TEST(Emission, ZeroAndInvalidStepsChangeNothing) {
     fx::ReactionRuntime rt(smoke(100.0f, 1000));
     const fx::WheelContact w = spinningRearWheel();

@@ -42,6 +42,7 @@ enum class ErrorCode {
     // API 2.0
     BadDescriptor,    ///< a C descriptor's size is one the library does not know (fx/fx.h)
     UnsupportedDepth, ///< a depth texture format or depth source the plugin cannot read
+    InvalidHandle,    ///< a plugin handle that is not live (destroyed, or never created: fx/fx.h)
 };
 
 /// "FileNotFound", ... (the same numbers as fx/fx.h's FX_ERROR_*).

@@ -17,7 +17,27 @@
  *    struct, or larger than its own) is refused with FX_ERROR_BAD_DESCRIPTOR.
  *  - A refused call changes nothing, returns a named FX_ERROR_* code and is logged through the
  *    host's log callback ("fx: error[Code] function: what was expected"), at most a few times
- *    per (function, code), then counted in fxStats.apiErrors.
+ *    per (function, code), then counted in fxStats.apiErrors. Where no host can be reached
+ *    safely (create refusing fxPluginDesc's size or version, fxHostCallbacks' size or a null log;
+ *    a null or dead handle) the same line goes to stderr instead, with the same limit.
+ *  - Every number is an input with a stated range (the comment at its field or function; the
+ *    FX_MAX_* limits below); a value outside it is refused (FX_ERROR_INVALID_VALUE, or
+ *    FX_ERROR_INVALID_VIEW for fxViewDesc) unless its comment says it is clamped.
+ *  - Handles: every function checks its fxPlugin* against the set of live plugins (those create
+ *    returned and destroy has not yet taken) before it reads through it. A destroyed handle, a
+ *    second destroy, or a pointer create never returned is refused with FX_ERROR_INVALID_HANDLE
+ *    (a null one with FX_ERROR_NULL_ARGUMENT; destroy(NULL) does nothing, like free(NULL)) and
+ *    nothing is done. Not detected: a destroyed handle whose address a later create happens to
+ *    get again (it names the new plugin), and a call racing destroy on another thread.
+ *  - (GL) calls check, after their arguments and before any other GL call, that a context is
+ *    current (glGetString answers) and that the host's getProcAddress gave every entry point the
+ *    plugin's drawing calls; else FX_ERROR_NO_GL_CONTEXT, naming the missing functions, and
+ *    nothing is marked failed: the next call with a context goes ahead. Optional features degrade with one warning line: KHR_debug groups (glPush/
+ *    PopDebugGroup) and clip control (glClipControl). The entry points are loaded once for all
+ *    live plugins; after the last one is destroyed, the next plugin loads them again.
+ *  - No call leaves a GL error pending that it caused. Checking a depthTexture name of another
+ *    target takes back the GL_INVALID_OPERATION the check raises; a context keeps only its first
+ *    error, so an error the host itself left pending before that call is the one taken.
  *  - Strings the plugin returns are copied into the caller's buffer (snprintf style: the return
  *    value is the length without the terminating 0; a buffer too small, or null with 0, gets a
  *    truncated or no copy and the caller retries with length + 1). Strings the plugin hands to
@@ -48,6 +68,11 @@ extern "C" {
 #define FX_API_VERSION_MAJOR 2
 #define FX_API_VERSION_MINOR 1
 #define FX_API_VERSION ((uint32_t)((FX_API_VERSION_MAJOR << 16) | FX_API_VERSION_MINOR))
+
+/* The ranges of numeric inputs (see each field and function). */
+#define FX_MAX_TIME_STEP 3600.0f /* continueReaction's dt: 0 .. one hour of simulated time */
+#define FX_MAX_VIEW_SIZE 16384   /* fxViewDesc width and height: 1 .. 16384 pixels */
+#define FX_MAX_WORLD_COORDINATE 1e9f /* fireReaction's point: each coordinate within +-1e9 m */
 
 /* Zero-initialises a descriptor and sets its size: `fxViewDesc v = FX_DESC_INIT(fxViewDesc);`
  * Valid in every C from C89 and every C++ from C++98, under -pedantic-errors. Every struct it is
@@ -82,6 +107,7 @@ enum {
     /* API 2.0 */
     FX_ERROR_BAD_DESCRIPTOR,     /* a struct's size is one the library does not know */
     FX_ERROR_UNSUPPORTED_DEPTH,  /* a depth texture format or source the plugin cannot read */
+    FX_ERROR_INVALID_HANDLE,     /* a plugin handle that is not live: destroyed, or never created */
     FX_ERROR_COUNT_
 };
 
@@ -102,7 +128,8 @@ enum {
     FX_DEPTH_FROM_FRAMEBUFFER = 0, /* the depth attachment of the framebuffer bound for drawing
                                       (the default framebuffer too), copied only when a pass needs it */
     FX_DEPTH_FROM_TEXTURE = 1,     /* depthTexture: GL_DEPTH_COMPONENT16/24/32F or DEPTH24_STENCIL8 */
-    FX_DEPTH_FROM_LINEAR = 2,      /* depthTexture: R32F linear view depth in metres (the 1.x form) */
+    FX_DEPTH_FROM_LINEAR = 2,      /* depthTexture: GL_R32F linear view depth in metres (the 1.x form);
+                                      another format: FX_ERROR_UNSUPPORTED_DEPTH */
     FX_DEPTH_FROM_NOTHING = 3      /* no scene depth: particles are neither z-tested nor faded */
 };
 enum { FX_KEY_NUMBER = 0, FX_KEY_INTEGER, FX_KEY_BOOL, FX_KEY_CHOICE, FX_KEY_CHOICE_LIST,
@@ -115,20 +142,21 @@ typedef struct fxPlugin fxPlugin; /* opaque */
 typedef struct fxWheelContact {
     float position[3]; /* contact patch centre, world, metres */
     float velocity[3]; /* hub velocity, world, m/s */
-    float slip;        /* 0 rolling .. 1 full lock/spin; may exceed 1 */
-    int surface;       /* FX_SURFACE_* */
+    float slip;        /* 0 rolling .. 1 full lock/spin; may exceed 1; NaN reads as 0 */
+    int surface;       /* FX_SURFACE_*; another value reads as asphalt */
     fxBool grounded;
     fxBool rear;
 } fxWheelContact;
 
-/* The host's services. Required: getProcAddress and log. Optional (null = the default given). */
+/* The host's services. Required: getProcAddress and log. Optional, each on its own (null = the
+ * default given): wheelCount without wheel, or wheel without wheelCount, means no wheels. */
 typedef struct fxHostCallbacks {
     uint32_t size;
     void* user; /* handed back to every callback */
     /* GL entry points of the host's context (null before one exists). */
     void* (*getProcAddress)(void* user, const char* name);
     void (*log)(void* user, int level, const char* message);
-    int (*wheelCount)(void* user);                                    /* null: no wheels */
+    int (*wheelCount)(void* user);   /* null: no wheels; clamped to 0 .. 16 */
     void (*wheel)(void* user, int index, fxWheelContact* out);        /* null: no wheels */
     void (*wind)(void* user, float out[3]);                           /* null: still air */
     void (*collisionPoint)(void* user, float out[3]);                 /* null: the origin */
@@ -140,7 +168,7 @@ typedef struct fxPluginDesc {
     const fxHostCallbacks* host;   /* required; copied, its user pointer must outlive the plugin */
     const char* shaderDir;         /* null/"" = embedded shaders; a folder = live shader edits */
     const char* dataDir;           /* null/"" = embedded smoke atlas */
-    uint64_t seed;                 /* 0 = the plugin's default */
+    uint64_t seed;                 /* any value; 0 = the plugin's default */
 } fxPluginDesc;
 
 /* One view. Matrices as the host draws its scene with them; `handedness` says which way its
@@ -148,33 +176,37 @@ typedef struct fxPluginDesc {
 typedef struct fxViewDesc {
     uint32_t size;
     const char* name;      /* pass names and debug groups; null = "" */
-    float view[16];
-    float proj[16];
-    float eye[3];
-    float nearPlane;       /* > 0 */
+    float view[16];        /* every element finite (else FX_ERROR_INVALID_VIEW) */
+    float proj[16];        /* every element finite */
+    float eye[3];          /* finite */
+    float nearPlane;       /* > 0, finite */
     float farPlane;        /* > nearPlane, finite: with an infinite projection matrix (which the
                               plugin linearises exactly), the distance past which depth reads as
                               "nothing drawn", e.g. the far end of the scene */
-    int width, height;     /* pixels of the colour target, > 0 */
+    int width, height;     /* pixels of the colour target, 1 .. FX_MAX_VIEW_SIZE */
     int depthOrder;        /* FX_DEPTH_STANDARD / FX_DEPTH_REVERSED_Z: how the z-buffer is ordered */
     int handedness;        /* FX_RIGHT_HANDED (0) or FX_LEFT_HANDED */
     /* fxRenderView only: */
     int depthSource;       /* FX_DEPTH_FROM_* ; 0 = the bound framebuffer's depth attachment */
-    uint32_t depthTexture; /* GL texture name for FROM_TEXTURE / FROM_LINEAR */
+    uint32_t depthTexture; /* GL_TEXTURE_2D name for FROM_TEXTURE / FROM_LINEAR, of the view's size;
+                              another name or target: FX_ERROR_UNSUPPORTED_DEPTH */
     fxBool clipDepthZeroToOne; /* the host drew with glClipControl(..., GL_ZERO_TO_ONE) */
-    float depthRangeNear, depthRangeFar; /* glDepthRange the host drew with; both 0 = [0, 1] */
+    float depthRangeNear, depthRangeFar; /* glDepthRange the host drew with, each in [0, 1], not
+                                            equal; both 0 = [0, 1] */
 } fxViewDesc;
 
 typedef struct fxRenderOptions {
     uint32_t size;
-    int techniqueOverride;  /* FX_TECHNIQUE_*, 0 = each reaction's own */
+    int techniqueOverride;  /* FX_TECHNIQUE_* (0 .. FX_TECHNIQUE_MEGA), 0 = each reaction's own */
     fxBool quarterRes;
     fxBool bilinearUpsample;
 } fxRenderOptions;
 
 typedef struct fxSceneLight {
     uint32_t size;
-    float toSun[3], sunColor[3], ambient[3];
+    float toSun[3];       /* finite, not zero (the plugin normalises it) */
+    float sunColor[3];    /* finite, each >= 0 */
+    float ambient[3];     /* finite, each >= 0 */
 } fxSceneLight;
 
 /* ---- the host's frame graph (fxApi.declarePasses; engines without one use fxRenderView) ---- */
@@ -281,19 +313,24 @@ typedef struct fxReactionKeyInfo {
 } fxReactionKeyInfo;
 
 /* The plugin's functions. Returns of type int are FX_ERROR_* unless stated; fxBool returns are
- * success. Calls on a null plugin return FX_ERROR_NULL_ARGUMENT / 0 and do nothing. */
+ * success. Calls on a null plugin return FX_ERROR_NULL_ARGUMENT / 0 / "" and do nothing; on a
+ * dead one (see "Handles" above) FX_ERROR_INVALID_HANDLE / 0 / "". Indices (reaction, file,
+ * key) are 0 .. count - 1, else FX_ERROR_INDEX_OUT_OF_RANGE (and 0 or "" where the return is a
+ * count or a string). Out-pointers of stats and queries are required: null is refused. */
 typedef struct fxApi {
     uint32_t size;
     uint32_t version;  /* the library's FX_API_VERSION */
 
     /* Creation (no GL) and destruction (GL: deletes the plugin's GL objects). On failure null,
-     * *error (may be null) set and the reason logged through desc->host when there is one. */
+     * *error (may be null) set and the reason logged through desc->host when its size, version
+     * and host table were accepted, else on stderr (a refused descriptor is not read further). */
     fxPlugin* (*create)(const fxPluginDesc* desc, int* error);
     void (*destroy)(fxPlugin* plugin);
 
     /* Reactions: a .yaml file or a folder of them. No GL. */
     fxBool (*loadReactions)(fxPlugin* p, const char* path, const fxDiagnosticSink* out);
     fxBool (*pollHotReload)(fxPlugin* p, const fxDiagnosticSink* out);
+    /* length: 0 .. 4 MiB (else FX_ERROR_FILE_TOO_LARGE, nothing read). */
     fxBool (*loadReactionsFromText)(fxPlugin* p, const char* file, const char* text, size_t length,
                                     const fxDiagnosticSink* out);
     int (*reactionCount)(const fxPlugin* p);
@@ -307,11 +344,16 @@ typedef struct fxApi {
     int (*reactionKeyCount)(const fxPlugin* p);
     int (*reactionKey)(const fxPlugin* p, int keyIndex, fxReactionKeyInfo* out);
 
-    /* Simulation. collision may be null. */
+    /* Simulation. dt: 0 .. FX_MAX_TIME_STEP seconds (NaN, infinite, negative or larger:
+     * FX_ERROR_INVALID_VALUE). collision may be null; *collision is clamped to 0 .. 1 (NaN reads as
+     * 0). fireReaction's point: finite, each coordinate within
+     * +-FX_MAX_WORLD_COORDINATE metres. */
     int (*continueReaction)(fxPlugin* p, int index, float dt, float* collision);
     int (*fireReaction)(fxPlugin* p, const char* name, const float point[3]);
 
-    /* Options. */
+    /* Options. An int outside its enum (FX_SHAPE_*, FX_EDGES_*, FX_FADE_CLASSIFICATION_*,
+     * FX_TECHNIQUE_*) is FX_ERROR_INVALID_VALUE; an fxBool is any int. Values out of an
+     * fxSceneLight's ranges are FX_ERROR_INVALID_VALUE. */
     int (*setRenderOptions)(fxPlugin* p, const fxRenderOptions* options);
     void (*getRenderOptions)(const fxPlugin* p, fxRenderOptions* out);
     int (*setParticleShape)(fxPlugin* p, int shape);
@@ -330,6 +372,7 @@ typedef struct fxApi {
     fxBool (*pollShaderReload)(fxPlugin* p, const fxDiagnosticSink* out);          /* (GL) */
     /* The frame-graph path: declares this view's passes (none when no particle is visible). */
     int (*declarePasses)(fxPlugin* p, const fxViewDesc* view, const fxFrameBuilder* frame); /* (GL) */
+    /* out is required (null: FX_ERROR_NULL_ARGUMENT). */
     int (*declareShadowPasses)(fxPlugin* p, const fxViewDesc* view, const fxFrameBuilder* frame,
                                fxSmokeShadow* out);                                 /* (GL) */
     /* The immediate path: after the opaque scene and the sky, draws the smoke into the

@@ -383,6 +383,16 @@ inline std::unique_ptr<fx::Plugin> fxCreatePlugin(const fx::PluginImports& impor
     int code = FX_ERROR_NONE;
     fxPlugin* handle = api->create(&desc, &code);
     if (error) *error = static_cast<ErrorCode>(code);
+    if (code == FX_ERROR_VERSION_MISMATCH && imports.host) {
+        // The library does not read a descriptor of a version it refused, so its line went to
+        // stderr; this layer holds the host itself and tells it too.
+        const std::string line = "fx: error[VersionMismatch] fxCreatePlugin: the host asks for API " +
+                                 std::to_string(fx::apiVersionMajor(want)) + "." +
+                                 std::to_string(fx::apiVersionMinor(want)) + "; this plugin offers " +
+                                 std::to_string(FX_API_VERSION_MAJOR) + "." + std::to_string(FX_API_VERSION_MINOR) +
+                                 " (same major, minor up to the plugin's)";
+        imports.host->log(fx::LogLevel::Error, line.c_str());
+    }
     if (!handle) return nullptr;
     return std::unique_ptr<fx::Plugin>(new fx::detail::CApiPlugin(api, handle));
 }
