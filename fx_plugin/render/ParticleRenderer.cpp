@@ -7,6 +7,7 @@
 #include "render/PrivateGl.h"
 
 #include "GlStateGuard.h"
+#include "ImmediateFrame.h"
 #include "ShaderLoader.h"
 #include "reactions/TechniqueTable.h"
 #include "base/ApiErrors.h"
@@ -185,6 +186,10 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     // for one frame only).
     SmokeShadow shadow = pendingShadow_;
     pendingShadow_ = SmokeShadow{};
+    // A map declareShadowPasses declared is a target of the host's frame graph: renderView's own
+    // frame (ImmediateFrame) cannot read it (its ids mean other targets there) and draws its own.
+    // With several views the host's last declared map is not even this view's.
+    if (dynamic_cast<ImmediateFrame*>(&frame)) shadow = SmokeShadow{};
     if (state_ == State::Failed) return 0;
     std::shared_ptr<ParticleView> record = reuseRecord(records_);
     record->view = view;
