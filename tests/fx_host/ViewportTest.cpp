@@ -187,7 +187,9 @@ TEST_F(ViewportTest, EachHalfOfASplitScreenEqualsTheViewDrawnAlone) {
                     EXPECT_LE(diff, std::max(noDepthDiff[i], i == 0 ? 0 : kTolerance))
                         << source << ", view " << i << ": reading depth in place of none must add no difference";
                 }
-                if (i == 0) EXPECT_EQ(diff, 0) << source << ": the view at (0, 0) of a larger framebuffer, bit for bit";
+                if (i == 0) {
+                    EXPECT_EQ(diff, 0) << source << ": the view at (0, 0) of a larger framebuffer, bit for bit";
+                }
                 std::printf("[ measured ] %-28s %-36s view %d at (%3d, %d): max |diff| %d/255\n", m.label, source,
                             i, origin[i][0], origin[i][1], diff);
             }
