@@ -89,6 +89,7 @@ void FullResPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleVie
                        DebugGroup group(kPass);
                        ctx.bindForDraw(color);
                        DrawInputs in;
+                       in.clip = HostClip::current();
                        const TextureRef depthRef = depth.valid() ? ctx.texture(depth, 0) : TextureRef{};
                        in.sceneDepth = depthRef.name;
                        in.depthDecode = decode.placedFor(depthRef, record->view, true);  // drawn into sceneColor

@@ -133,6 +133,12 @@ HostClip HostClip::current() {
     return c;
 }
 
+void HostClip::apply() const {
+    if (!on) return;
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(box[0], box[1], box[2], box[3]);
+}
+
 void scissorToView(const ScreenRect& rect, int border, const ViewInfo& view, const HostClip& clip) {
     if (rect.whole && !clip.on) {
         glDisable(GL_SCISSOR_TEST);

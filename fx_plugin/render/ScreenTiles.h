@@ -62,6 +62,8 @@ struct HostClip {
     bool on = false;
     int box[4] = {0, 0, 0, 0};
     static HostClip current();
+    /// Turns the scissor on at the box again when `on` (after plainDrawState turned it off).
+    void apply() const;
 };
 
 /// Scissor to `rect` (grown by `border` pixels) of the view, which lies at (view.x, view.y) of
