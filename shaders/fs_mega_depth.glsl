@@ -13,11 +13,11 @@ layout(location = 0) out vec4 oDepth;
 uniform vec2 uRatio;  // full-resolution texels per target texel, per axis (>= 1)
 
 float sceneDepth(ivec2 p) {
-    return linearSceneDepth(texelFetch(uSceneDepth, p, 0).r);  // nothing drawn: 3.0e38
+    return linearSceneDepth(texelFetch(uSceneDepth, sceneDepthTexel(p), 0).r);  // nothing drawn: 3.0e38
 }
 
 void main() {
-    ivec2 last = textureSize(uSceneDepth, 0) - 1;
+    ivec2 last = sceneDepthViewSize() - 1;  // the view's pixels, wherever it lies in the texture
     vec2 cell = floor(gl_FragCoord.xy);
     ivec2 lo = min(ivec2(floor(cell * uRatio)), last);
     ivec2 hi = clamp(ivec2(ceil((cell + 1.0) * uRatio)) - 1, lo, last);

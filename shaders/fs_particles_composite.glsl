@@ -34,7 +34,8 @@ layout(location = 0) out vec4 oColor;
 void main() {
     ivec2 base, last;
     vec2 f;
-    lowResFootprint(textureSize(uSceneDepth, 0), textureSize(uHalfColor, 0), base, f, last);
+    vec2 pixel = viewPixelOf(gl_FragCoord.xy);  // drawn into sceneColor: the view's rectangle of it
+    lowResFootprint(pixel, sceneDepthViewSize(), textureSize(uHalfColor, 0), base, f, last);
     ivec2 t0 = clamp(base, ivec2(0), last), t1 = clamp(base + ivec2(1, 0), ivec2(0), last);
     ivec2 t2 = clamp(base + ivec2(0, 1), ivec2(0), last), t3 = clamp(base + ivec2(1, 1), ivec2(0), last);
     float w0 = (1.0 - f.x) * (1.0 - f.y), w1 = f.x * (1.0 - f.y), w2 = (1.0 - f.x) * f.y, w3 = f.x * f.y;
@@ -50,15 +51,15 @@ void main() {
     oColor = bilinear;
 #elif defined(FX_COMPOSITE_MIXED)
     ivec2 taps[4] = ivec2[4](t0, t1, t2, t3);
-    float pixelDepth = particlesFullDepth(uSceneDepth, gl_FragCoord.xy);
+    float pixelDepth = particlesFullDepth(uSceneDepth, pixel);
     oColor = particlesIsEdge(uHalfDepth, taps, pixelDepth, uDepthThreshold)
-                 ? texelFetch(uEdgeColor, ivec2(gl_FragCoord.xy), 0)
+                 ? texelFetch(uEdgeColor, ivec2(pixel), 0)
                  : bilinear;
 #else
     // On an edge, keep the bilinear weights of the texels on this pixel's side of it (depth
     // within the threshold), renormalised; only when none is, the single nearest-depth texel
     // (the first of equal ones).
-    float full = linearSceneDepth(texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r);  // nothing drawn: 3.0e38
+    float full = linearSceneDepth(texelFetch(uSceneDepth, sceneDepthTexel(ivec2(pixel)), 0).r);  // nothing drawn: 3.0e38
     float limit = uDepthThreshold * full;
     vec4 diff = abs(vec4(texelFetch(uHalfDepth, t0, 0).r, texelFetch(uHalfDepth, t1, 0).r,
                          texelFetch(uHalfDepth, t2, 0).r, texelFetch(uHalfDepth, t3, 0).r) - full);

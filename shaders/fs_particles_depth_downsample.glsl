@@ -12,11 +12,11 @@ layout(location = 0) out vec4 oDepth;
 
 // Nothing drawn reads as infinitely far (3.0e38).
 float sceneDepth(ivec2 p) {
-    return linearSceneDepth(texelFetch(uSceneDepth, p, 0).r);
+    return linearSceneDepth(texelFetch(uSceneDepth, sceneDepthTexel(p), 0).r);
 }
 
 void main() {
-    ivec2 fullSize = textureSize(uSceneDepth, 0);
+    ivec2 fullSize = sceneDepthViewSize();  // the view's pixels, wherever it lies in the texture
     ivec2 last = fullSize - 1;
     // Texel i covers full-res pixels 2i and 2i + 1 (an odd last row/column is clamped).
     ivec2 p = min(ivec2(gl_FragCoord.xy) * 2, last);

@@ -17,7 +17,8 @@ uniform float uFailDepth;
 void main() {
     ivec2 taps[4];
     float weights[4];
-    particlesFootprint(gl_FragCoord.xy, textureSize(uSceneDepth, 0), textureSize(uHalfDepth, 0), taps, weights);
-    float full = particlesFullDepth(uSceneDepth, gl_FragCoord.xy);
+    vec2 pixel = viewPixelOf(gl_FragCoord.xy);  // the edge target is the view's own: uDrawOrigin 0
+    particlesFootprint(pixel, sceneDepthViewSize(), textureSize(uHalfDepth, 0), taps, weights);
+    float full = particlesFullDepth(uSceneDepth, pixel);
     gl_FragDepth = particlesIsEdge(uHalfDepth, taps, full, uDepthThreshold) ? uPassDepth : uFailDepth;
 }

@@ -13,14 +13,16 @@ uniform vec4 uCoeffs;        // A, B, C, D
 uniform float uFarWindow;    // window depth of the far plane (or of an infinite one's limit)
 uniform float uReversed;     // +1: window depth grows with distance, -1: it falls (reversed)
 uniform float uBackground;
-uniform vec2 uInvSize;       // 1 / the view's size in pixels (uDepth's size, or its copy's)
+uniform vec2 uInvSize;       // 1 / uDepth's size in pixels (the view's, or the framebuffer's)
+uniform vec2 uTexelOrigin;   // uDepth's texel of the view's pixel (0, 0): 0, or the view's origin
+                             // in a depth texture of the whole framebuffer (SceneDepthSource.h)
 
 layout(location = 0) out vec4 oDepth;
 
 void main() {
     // textureLod at the texel centre through HostDepth's nearest sampler: the texel texelFetch
     // gives, cheaper on llvmpipe, which bounds-checks every texelFetch lane (particles_common.glsl).
-    float d = textureLod(uDepth, gl_FragCoord.xy * uInvSize, 0.0).r;
+    float d = textureLod(uDepth, (gl_FragCoord.xy + uTexelOrigin) * uInvSize, 0.0).r;
     float t = (uCoeffs.x + uCoeffs.y * d) / (uCoeffs.z + uCoeffs.w * d);
     // (d - far) has the sign of "beyond the far plane" times uReversed's sign: one compare.
     bool drawn = (d - uFarWindow) * uReversed < 0.0 && t > 0.0 && t < 3.0e38;

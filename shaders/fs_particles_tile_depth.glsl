@@ -17,12 +17,18 @@ const int kSpan = 16;  // FadeClassifier::kTileSize
 #endif
 
 void main() {
+#ifdef FX_TILE_COARSE
     ivec2 last = textureSize(uSource, 0) - 1;
+    ivec2 origin = ivec2(0);
+#else
+    ivec2 last = sceneDepthViewSize() - 1;  // the view's pixels, wherever it lies in the texture
+    ivec2 origin = sceneDepthTexel(ivec2(0));
+#endif
     ivec2 first = ivec2(gl_FragCoord.xy) * kSpan;
     vec2 range = vec2(3.0e38, 0.0);
     for (int y = 0; y < kSpan; ++y) {
         for (int x = 0; x < kSpan; ++x) {
-            ivec2 p = min(first + ivec2(x, y), last);
+            ivec2 p = min(first + ivec2(x, y), last) + origin;
 #ifdef FX_TILE_COARSE
             vec2 t = texelFetch(uSource, p, 0).rg;
 #else

@@ -138,8 +138,11 @@ float nearFadeFactor(float depth) {
 // texel texelFetch gives, and cheaper on llvmpipe, which bounds-checks every texelFetch lane
 // (fxbench standard scenario, medians of three alternations: soft / hard frame 1.256 against
 // 1.278 with texelFetch).
+// `fragCoord` is gl_FragCoord of the target being drawn; the view's placement in it and in the
+// depth texture is particles_scene_depth.glsl's (both offsets 0 for a view at (0, 0) of its own).
 float sceneDepthAt(vec2 fragCoord) {
-    return linearSceneDepth(textureLod(uSceneDepth, fragCoord / vec2(textureSize(uSceneDepth, 0)), 0.0).r);
+    vec2 texel = fragCoord + vec2(uDepthWindow.xy - uDrawOrigin);
+    return linearSceneDepth(textureLod(uSceneDepth, texel / vec2(textureSize(uSceneDepth, 0)), 0.0).r);
 }
 
 // Premultiplied output. `ramp`: the ramp colour (straight alpha); `fade`: the particle's

@@ -7,10 +7,10 @@
 // through particles_scene_depth.glsl).
 #include "particles_scene_depth.glsl"
 
-// The four low-res texels of the bilinear footprint of the full-res pixel at `fragCoord`, and
+// The four low-res texels of the bilinear footprint of the view's full-res pixel `pixel`, and
 // their bilinear weights (as the composite's own upsample computes them).
-void particlesFootprint(vec2 fragCoord, ivec2 fullSize, ivec2 lowSize, out ivec2 taps[4], out float weights[4]) {
-    vec2 lowPos = fragCoord * vec2(lowSize) / vec2(fullSize) - 0.5;
+void particlesFootprint(vec2 pixel, ivec2 fullSize, ivec2 lowSize, out ivec2 taps[4], out float weights[4]) {
+    vec2 lowPos = pixel * vec2(lowSize) / vec2(fullSize) - 0.5;
     ivec2 base = ivec2(floor(lowPos));
     vec2 f = lowPos - vec2(base);
     ivec2 last = lowSize - 1;
@@ -24,10 +24,10 @@ void particlesFootprint(vec2 fragCoord, ivec2 fullSize, ivec2 lowSize, out ivec2
     weights[3] = f.x * f.y;
 }
 
-// The pixel's full-res linear depth; "nothing drawn" reads as far away (3.0e38), as in the
+// The view's pixel's full-res linear depth; "nothing drawn" reads as far away (3.0e38), as in the
 // downsample.
-float particlesFullDepth(sampler2D sceneDepth, vec2 fragCoord) {
-    return linearSceneDepth(texelFetch(sceneDepth, ivec2(fragCoord), 0).r);
+float particlesFullDepth(sampler2D sceneDepth, vec2 pixel) {
+    return linearSceneDepth(texelFetch(sceneDepth, sceneDepthTexel(ivec2(pixel)), 0).r);
 }
 
 // True when some footprint texel's depth differs from `full` by more than threshold * full.

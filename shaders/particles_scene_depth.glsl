@@ -10,6 +10,20 @@
 // clear to 0: fx/HostAdapter.h).
 uniform vec4 uDepthCoeffs;  // A, B, C, D
 uniform vec2 uDepthFar;     // window depth of the far plane; +1, or -1 when depth falls with distance
+// Where the view lies (fx_plugin/render/SceneDepthSource.h): a pass addresses the scene depth by
+// the view's own pixel p = gl_FragCoord.xy - uDrawOrigin and reads texel p + uDepthWindow.xy.
+// uDrawOrigin: the view's origin in the framebuffer being drawn (sceneColor's viewport origin, or
+// 0 in the plugin's own targets). uDepthWindow.xy: 0 for a depth texture of the view's size (the
+// plugin's copy), the view's origin for one of the whole framebuffer (the host's z-buffer).
+// uDepthWindow.zw: the view's size, which bounds the full-screen passes (not the texture's size).
+uniform ivec4 uDepthWindow;
+uniform ivec2 uDrawOrigin;
+
+// The view's pixel under a fragment of the target being drawn.
+vec2 viewPixelOf(vec2 fragCoord) { return fragCoord - vec2(uDrawOrigin); }
+// The scene depth texel of the view's pixel p.
+ivec2 sceneDepthTexel(ivec2 p) { return p + uDepthWindow.xy; }
+ivec2 sceneDepthViewSize() { return uDepthWindow.zw; }
 
 float linearSceneDepth(float d) {
     float t = (uDepthCoeffs.x + uDepthCoeffs.y * d) / (uDepthCoeffs.z + uDepthCoeffs.w * d);

@@ -176,6 +176,16 @@ void Game::updateCameras(float dt) {
     c.nearPlane = options_.nearPlane;
     c.farPlane = options_.farPlane;
 
+    // --split, player two: beside the car on its left and a little behind, looking at the rear
+    // wheels, so the same smoke is seen from the other side.
+    ViewCamera& p2 = chase2_.camera();
+    const glm::vec3 left = -glm::normalize(glm::cross(carFwd, glm::vec3(0.0f, 1.0f, 0.0f)));
+    p2.eye = pose.position - 2.5f * carFwd + 6.5f * left + glm::vec3(0.0f, 2.0f, 0.0f);
+    p2.target = pose.position - 1.3f * carFwd + glm::vec3(0.0f, 0.8f, 0.0f);
+    p2.fovY = c.fovY;
+    p2.nearPlane = c.nearPlane;
+    p2.farPlane = c.farPlane;
+
     // Rear-view mirror: from just behind the car, looking back along it.
     ViewCamera& m = mirror_.camera();
     m.eye = pose.position + glm::vec3(0.0f, 1.1f, 0.0f) - 2.5f * carFwd;

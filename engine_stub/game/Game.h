@@ -112,6 +112,7 @@ public:
     rtt::FrameGraph& graph() { return *graph_; }
     cubeView& chaseView() { return chase_; }
     cubeView& mirrorView() { return mirror_; }
+    cubeView& chase2View() { return chase2_; }
     /// Things Init read past (scene features ignored, no car node, ...), one line each, for the
     /// app to print once.
     const std::vector<std::string>& warnings() const { return warnings_; }
@@ -152,6 +153,7 @@ private:
     Render render_;
     cubeView mirror_{"mirror", 0};
     cubeView chase_{"chase", 1};
+    cubeView chase2_{"chase2", 2};  ///< --split: player two's camera, the right half
     double time_ = 0.0;
     long long frame_ = 0;
     float cameraHeading_ = 0.0f;

@@ -81,6 +81,16 @@ bool writableFolder(const std::string& flag, const std::string& folder, std::str
 }  // namespace
 
 bool checkOptions(const Options& o, std::string* error) {
+    if (o.split && o.splitAlone != 0) {
+        *error = "--split and --split-alone: the first draws both halves, the second one of them alone; give one";
+        return false;
+    }
+    if (o.split && o.prepassEqual) {
+        // The split views share one colour target, so neither can swap in its own prepass z-buffer.
+        *error = "--split and --prepass-equal: the two views draw into one framebuffer, which cannot take "
+                 "either view's prepass z-buffer; leave one out";
+        return false;
+    }
     if (o.frames == 0 && !o.window) {
         *error = "--frames 0 runs until the window closes, and without --window there is none; "
                  "give --frames N (N >= 1) or add --window";
@@ -179,6 +189,11 @@ std::string usage() {
         "                         (the track) toward +Z, any value (wraps); elevation above the\n"
         "                         horizon, 1..90 (default 131.2,58.0)\n"
         "  --no-mirror            leave out the rear-view mirror view\n"
+        "  --split                two-player split screen: two chase cameras (behind the car, and\n"
+        "                         beside it from its left) side by side in one framebuffer, each\n"
+        "                         with its own smoke; no mirror, no HUD\n"
+        "  --split-alone left|right  only that half's camera over the whole window (no mirror,\n"
+        "                         no HUD): what each half of --split must equal\n"
         "  --no-hud               leave out the HUD\n"
         "  --unlit-smoke          draw the smoke without the sun (no lighting, no smoke shadow)\n"
         "  --panel                the live tweak panel: every reaction key on a widget, render\n"
@@ -202,7 +217,8 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
         {"--prepass-equal", &Options::prepassEqual, true}, {"--quarter-res", &Options::quarterRes, true},
         {"--bilinear-upsample", &Options::bilinearUpsample, true}, {"--watch", &Options::watch, true},
         {"--no-mirror", &Options::mirror, false}, {"--no-hud", &Options::hud, false},
-        {"--unlit-smoke", &Options::litSmoke, false}, {"--panel", &Options::panel, true}};
+        {"--unlit-smoke", &Options::litSmoke, false}, {"--panel", &Options::panel, true},
+        {"--split", &Options::split, true}};
     Options o;
     auto need = [&](int& i, int count, const std::string& flag) -> bool {
         if (i + count >= argc) {
@@ -314,6 +330,10 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
                 return false;
             }
             o.mode = v;
+        } else if (a == "--split-alone") {
+            bool right = false;
+            if (!either(i, a, "right", "left", &right)) return false;
+            o.splitAlone = right ? 2 : 1;
         } else if (a == "--fx-depth") {
             if (!need(i, 1, a)) return false;
             const std::string v = argv[++i];

@@ -41,6 +41,13 @@ struct Options {
     bool bilinearUpsample = false;
     bool watch = false;
     bool mirror = true;
+    /// --split: two-player split screen, two chase cameras side by side in one framebuffer, each
+    /// with its own smoke (no mirror, no HUD)
+    bool split = false;
+    /// --split-alone left|right: only that half's camera, over the whole window (no mirror, no
+    /// HUD): the picture each half of --split must equal (tests/engine/SplitScreenTest.cpp);
+    /// 0 = off, 1 = left (player one), 2 = right (player two)
+    int splitAlone = 0;
     bool hud = true;
     bool litSmoke = true;         ///< hand the sun to the plugin (false: --unlit-smoke, the 1.1 look)
     bool panel = false;           ///< the live tweak panel (engine_stub/panel), window or headless

@@ -82,9 +82,47 @@ void Render::Dyn(Game& game) {
         settings.hudText = text;
     }
     std::vector<cubeView*> views;
-    if (game.options_.mirror) views.push_back(&game.mirror_);
-    views.push_back(&game.chase_);
-    const rtt::FrameGraphResource sceneColor = game.scene_.Render(graph, views, settings);
+    rtt::FrameGraphResource sceneColor;
+    if (game.options_.split) {
+        // Two players side by side in one framebuffer: one colour target with one z-buffer, each
+        // chase view drawing into its half (cubeView::placeIn), each with its own smoke. The
+        // target is cleared once here, before either view draws.
+        const int left = w / 2;
+        game.chase_.setSize(left, h);
+        game.chase2_.setSize(w - left, h);
+        rtt::FrameGraph::TargetDesc d;
+        d.width = w;
+        d.height = h;
+        d.color[0] = rtt::ColorFormat::RGBA8;
+        d.depth = game.scene_.renderer().reversedZ() ? rtt::DepthFormat::Depth32F : rtt::DepthFormat::Depth24;
+        const rtt::FrameGraphResource shared = graph.create("split.color", d);
+        const bool reversed = game.scene_.renderer().reversedZ();
+        graph.addPass("split.clear", 0, [&](rtt::PassBuilder& b) { b.write(shared); },
+                      [shared, reversed](rtt::PassContext& ctx) {
+                          rtt::ClearValues cv;
+                          cv.color[0] = {0.0f, 0.0f, 0.0f, 1.0f};
+                          cv.depth = reversed ? 0.0f : 1.0f;
+                          ctx.clear(shared, cv);
+                      });
+        game.chase_.placeIn(shared, 0, 0, w, h);
+        game.chase2_.placeIn(shared, left, 0, w, h);
+        settings.hud = false;  // the HUD is drawn over a whole target
+        views = {&game.chase_, &game.chase2_};
+        game.scene_.Render(graph, views, settings);
+        sceneColor = shared;
+    } else if (game.options_.splitAlone != 0) {
+        // One half of --split on its own: the same camera over a window of the half's size.
+        cubeView& v = game.options_.splitAlone == 2 ? game.chase2_ : game.chase_;
+        v.setSize(w, h);
+        settings.hud = false;
+        views = {&v};
+        sceneColor = game.scene_.Render(graph, views, settings);
+    } else {
+        game.chase_.placeIn(rtt::FrameGraphResource{}, 0, 0, 0, 0);
+        if (game.options_.mirror) views.push_back(&game.mirror_);
+        views.push_back(&game.chase_);
+        sceneColor = game.scene_.Render(graph, views, settings);
+    }
 
     const rtt::FrameGraphResource color =
         game.overlay_ ? game.overlay_->declarePasses(game, graph, sceneColor, w, h) : sceneColor;

@@ -38,6 +38,8 @@ bool PassContext::bindForDraw(FrameGraphResource target) {
     return true;
 }
 
+void PassContext::setViewport(int x, int y, int w, int h) { glViewport(x, y, w, h); }
+
 bool PassContext::bindForDraw(FrameGraphResource target, FrameGraphResource second) {
     const RenderTargetHandle h = checked(target), h2 = checked(second);
     RenderTargetPool& pool = graph_.pool_;

@@ -22,6 +22,10 @@ public:
     /// when the pass returns). Both must have the same size and `second` a colour attachment;
     /// false (and nothing bound) otherwise. Fragment output location 1 lands in `second`.
     bool bindForDraw(FrameGraphResource target, FrameGraphResource second);
+    /// After bindForDraw: draw into the rectangle (x, y, w, h) of the bound target only (a view
+    /// that is part of a larger target, e.g. one half of a split screen). Sets the viewport; the
+    /// graph restores it after the pass.
+    void setViewport(int x, int y, int w, int h);
     /// GL texture of colour attachment `attachment` (0 when absent).
     uint32_t texture(FrameGraphResource target, int attachment = 0) const;
     /// GL texture of the target's depth, shared or own (0 unless a pass declared readDepth on it

@@ -23,8 +23,16 @@ fx::TargetFormat toTargetFormat(rtt::ColorFormat f) {
 // fx::PassContext over rtt::PassContext (fx target ids are graph resource ids).
 class FxPassContext final : public fx::PassContext {
 public:
-    FxPassContext(rtt::PassContext& ctx, rtt::FrameGraphResource zOwner) : ctx_(ctx), zOwner_(zOwner) {}
-    void bindForDraw(fx::Target t) override { ctx_.bindForDraw(map(t)); }
+    /// `view`: x, y, width, height of the view in `color` when it is a part of it (width 0: all of it).
+    FxPassContext(rtt::PassContext& ctx, rtt::FrameGraphResource zOwner, rtt::FrameGraphResource color,
+                  const int (&view)[4])
+        : ctx_(ctx), zOwner_(zOwner), color_(color) {
+        for (int i = 0; i < 4; ++i) view_[i] = view[i];
+    }
+    void bindForDraw(fx::Target t) override {
+        if (!ctx_.bindForDraw(map(t))) return;
+        if (t.id == color_.id && view_[2] > 0) ctx_.setViewport(view_[0], view_[1], view_[2], view_[3]);
+    }
     fx::TextureRef texture(fx::Target t, int attachment) override {
         if (t.id == FxFrameBuilder::kZBufferId) {
             fx::TextureRef ref;
@@ -56,7 +64,8 @@ private:
         return t.id == FxFrameBuilder::kZBufferId ? zOwner_ : rtt::FrameGraphResource{t.id};
     }
     rtt::PassContext& ctx_;
-    rtt::FrameGraphResource zOwner_;
+    rtt::FrameGraphResource zOwner_, color_;
+    int view_[4] = {0, 0, 0, 0};
 };
 
 rtt::ColorFormat toColorFormat(fx::TargetFormat f) {
@@ -113,9 +122,10 @@ void FxFrameBuilder::addPass(const char* name, std::initializer_list<fx::Target>
     }
     for (fx::Target t : writes) writes_.push_back(rtt::FrameGraphResource{t.id});
     const std::string passName = prefix_ + (name ? name : "fx_pass");
-    const rtt::FrameGraphResource zOwner = zOwner_;
-    auto run = [execute = std::move(execute), zOwner](rtt::PassContext& ctx) {
-        FxPassContext fxCtx(ctx, zOwner);
+    const rtt::FrameGraphResource zOwner = zOwner_, color = color_;
+    const int view[4] = {x_, y_, placed_ ? viewWidth_ : 0, viewHeight_};
+    auto run = [execute = std::move(execute), zOwner, color, view](rtt::PassContext& ctx) {
+        FxPassContext fxCtx(ctx, zOwner, color, view);
         execute(fxCtx);
     };
     if (!readsZ) {

@@ -35,6 +35,13 @@ public:
                  std::initializer_list<fx::Target> writes,
                  std::function<void(fx::PassContext&)> execute) override;
 
+    /// The view is the rectangle at (x, y) of sceneColor, view size (split screen): the plugin's
+    /// bindForDraw(sceneColor) sets it as the viewport (fx::ViewInfo::x, y say the same).
+    void placeView(int x, int y) {
+        placed_ = true;
+        x_ = x;
+        y_ = y;
+    }
     /// True when a pass the plugin declared reads the scene depth (the prepass will then run).
     bool readsSceneDepth() const { return readsDepth_; }
     /// Offers the plugin the z-buffer `owner`'s depth attachment holds (the colour target's own,
@@ -56,6 +63,8 @@ private:
     std::string prefix_;
     int order_;
     int viewWidth_, viewHeight_;
+    bool placed_ = false;
+    int x_ = 0, y_ = 0;
     bool readsDepth_ = false;
     std::vector<std::string> names_;  // keeps createTarget names alive for the frame
     std::vector<rtt::FrameGraphResource> reads_, writes_;  // scratch for addPass

@@ -28,8 +28,10 @@ rtt::FrameGraphResource cubeScene::Render(rtt::FrameGraph& graph, std::vector<cu
             s.inset = {};
             s.cameraQuads = nullptr;
             s.sceneDepthOut = nullptr;
-        } else {
+        } else if (!views[i]->placed()) {
             s.inset = last;  // the previous view (mirror) is inset into the main view
+        } else {
+            s.inset = {};  // split screen: the previous view is the other half, not a mirror
         }
         last = views[i]->Render(*this, graph, s);
     }

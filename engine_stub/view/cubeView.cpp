@@ -25,6 +25,18 @@ glm::mat4 ViewCamera::proj(float aspect, bool reversedZ) const {
 }
 
 
+bool cubeView::bindColor(rtt::PassContext& ctx, rtt::FrameGraphResource color) const {
+    if (!ctx.bindForDraw(color)) return false;
+    if (placed()) ctx.setViewport(x_, y_, width_, height_);
+    return true;
+}
+
+bool cubeView::bindColor(rtt::PassContext& ctx, rtt::FrameGraphResource color, rtt::FrameGraphResource second) const {
+    if (!ctx.bindForDraw(color, second)) return false;
+    if (placed()) ctx.setViewport(x_, y_, width_, height_);
+    return true;
+}
+
 rtt::FrameGraphResource cubeView::Render(cubeScene& scene, rtt::FrameGraph& graph, const FrameSettings& settings) {
     Trace::call("cubeView::Render");
     // (CUBE renders shadow maps here; this stand-in has none.)
@@ -90,9 +102,11 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
 }
 
 cubeView::Targets cubeView::declareTargets(rtt::FrameGraph& graph) {
+    // A placed view's linear depth is its shared target's size (it is the opaque pass's second
+    // render target, which must match the colour); the plugin reads it at the view's origin.
     auto sized = [&](rtt::RenderTargetDesc d) {
-        d.width = width_;
-        d.height = height_;
+        d.width = placed() ? targetWidth_ : width_;
+        d.height = placed() ? targetHeight_ : height_;
         return d;
     };
     names_.clear();
@@ -104,6 +118,10 @@ cubeView::Targets cubeView::declareTargets(rtt::FrameGraph& graph) {
     depthDesc.filter = rtt::Filter::Nearest;
     Targets t;
     t.sceneDepth = graph.create(names_.back().c_str(), sized(depthDesc));
+    if (placed()) {
+        t.color = placedIn_;
+        return t;
+    }
 
     // Draws on the prepass z-buffer when a kept prepass wrote it (prepass-EQUAL), else on its own.
     names_.push_back(name_ + ".color");
@@ -180,14 +198,14 @@ void cubeView::declareOpaque(cubeScene& scene, rtt::FrameGraph& graph, const Tar
                       cv.depth = reversed ? 0.0f : 1.0f;
                       cv.clearDepth = !equal;
                       cv.clearStencil = !equal;
-                      ctx.clear(color, cv);
+                      if (!placed()) ctx.clear(color, cv);  // a shared target is cleared once, by its owner
                       if (ctx.isNeeded(depth)) {
                           rtt::ClearValues far;
                           far.color[0] = {1e30f, 0.0f, 0.0f, 0.0f};  // "infinitely far" where nothing is drawn
                           ctx.clear(depth, far);
-                          if (!ctx.bindForDraw(color, depth)) return;
+                          if (!bindColor(ctx, color, depth)) return;
                       } else {
-                          ctx.bindForDraw(color);
+                          bindColor(ctx, color);
                       }
                       r->opaque(opaque_, cam, equal, quads);
                   });
@@ -206,7 +224,7 @@ void cubeView::declareAlphaTested(cubeScene& scene, rtt::FrameGraph& graph, cons
                       b.writeIfRead(depth);  // as the opaque pass: blends onto its linear depth
                   },
                   [this, r, color, depth, cam](rtt::PassContext& ctx) {
-                      if (ctx.isNeeded(depth) ? !ctx.bindForDraw(color, depth) : !ctx.bindForDraw(color)) return;
+                      if (ctx.isNeeded(depth) ? !bindColor(ctx, color, depth) : !bindColor(ctx, color)) return;
                       r->alphaTested(alphaTested_, cam, ctx.sharesDepth(color));
                   });
 }
@@ -218,8 +236,8 @@ void cubeView::declareSky(cubeScene& scene, rtt::FrameGraph& graph, const Target
     const rtt::FrameGraphResource color = t.color;
     graph.addPass(passName(bucketInfo(Bucket::Sky).name).c_str(), order(bucketInfo(Bucket::Sky).order),
                   [&](rtt::PassBuilder& b) { b.write(color); },
-                  [r, color, cam](rtt::PassContext& ctx) {
-                      ctx.bindForDraw(color);
+                  [this, r, color, cam](rtt::PassContext& ctx) {
+                      bindColor(ctx, color);
                       r->sky(cam);
                   });
 }
@@ -238,8 +256,8 @@ void cubeView::declareLegacySprites(cubeScene& scene, rtt::FrameGraph& graph, co
     const rtt::FrameGraphResource color = t.color;
     graph.addPass((name_ + ".legacy_smoke").c_str(), order(bucketInfo(Bucket::Particles).order),
                   [&](rtt::PassBuilder& b) { b.write(color); },
-                  [sc, color, viewProj, eye, right, up](rtt::PassContext& ctx) {
-                      ctx.bindForDraw(color);
+                  [this, sc, color, viewProj, eye, right, up](rtt::PassContext& ctx) {
+                      bindColor(ctx, color);
                       static std::vector<cubeParticleSystem::SpriteVertex> quads;
                       for (const auto& ps : sc->particleSystems()) {
                           if (ps->kind() != cubeParticleSystem::Kind::Legacy) continue;
@@ -264,13 +282,15 @@ void cubeView::declarePluginPasses(rtt::FrameGraph& graph, const Targets& t, con
         depth.clipDepthZeroToOne = reversedZ_;
         graph.addPass(passName("fx_immediate").c_str(), order(bucketInfo(Bucket::Particles).order),
                       [&](rtt::PassBuilder& b) { b.write(color); },
-                      [plugin, info, depth, color](rtt::PassContext& ctx) {
-                          if (ctx.bindForDraw(color)) plugin->renderView(info, depth);
+                      [this, plugin, info, depth, color](rtt::PassContext& ctx) {
+                          // The view's rectangle as the viewport: renderView draws where it points.
+                          if (bindColor(ctx, color)) plugin->renderView(info, depth);
                       });
         return;
     }
     FxFrameBuilder fx(graph, t.color, t.sceneDepth, name_ + ".", order(bucketInfo(Bucket::Particles).order),
                       width_, height_);
+    if (placed()) fx.placeView(x_, y_);
     // The z-buffer the opaque pass drew, sampled in place by the plugin: no linear depth is then
     // written. Under prepass-EQUAL it is the prepass's (the colour target draws on it), and
     // reading it is what runs the prepass. Only the reversed-Z float z-buffer is offered: its
@@ -294,6 +314,12 @@ fx::ViewInfo cubeView::pluginView() const {
     info.depth = reversedZ_ ? fx::DepthConvention::ReversedZ : fx::DepthConvention::Standard;
     info.width = width_;
     info.height = height_;
+    if (placed()) {  // frame-graph path: where the view lies in sceneColor (renderView reads the viewport)
+        info.x = x_;
+        info.y = y_;
+        info.targetWidth = targetWidth_;
+        info.targetHeight = targetHeight_;
+    }
     return info;
 }
 

@@ -46,6 +46,19 @@ public:
     void setSize(int width, int height) { width_ = width; height_ = height; }
     int width() const { return width_; }
     int height() const { return height_; }
+    /// Draws this view into the rectangle (x, y, width(), height()) of `target` (targetWidth x
+    /// targetHeight), a colour target with a z-buffer that other views share (a split screen),
+    /// instead of a target of its own. The view then clears nothing of it (whoever created it
+    /// clears it once) and its linear scene depth, when read, is the target's size.
+    /// An invalid target: the view's own again.
+    void placeIn(rtt::FrameGraphResource target, int x, int y, int targetWidth, int targetHeight) {
+        placedIn_ = target;
+        x_ = x;
+        y_ = y;
+        targetWidth_ = targetWidth;
+        targetHeight_ = targetHeight;
+    }
+    bool placed() const { return placedIn_.valid(); }
 
     /// Declares this view's passes into `graph`; returns the view's colour target.
     rtt::FrameGraphResource Render(cubeScene& scene, rtt::FrameGraph& graph, const FrameSettings& settings);
@@ -77,11 +90,16 @@ private:
     void recordBuckets(cubeScene& scene);
     std::string passName(const char* bucket) const { return name_ + "." + bucket; }
     int order(int bucketOrder) const { return index_ * 1000 + bucketOrder; }
+    /// bindForDraw(color) and, for a placed view, its rectangle as the viewport.
+    bool bindColor(rtt::PassContext& ctx, rtt::FrameGraphResource color) const;
+    bool bindColor(rtt::PassContext& ctx, rtt::FrameGraphResource color, rtt::FrameGraphResource second) const;
 
     std::string name_;
     int index_;
     ViewCamera camera_;
     int width_ = 0, height_ = 0;
+    rtt::FrameGraphResource placedIn_;  ///< a shared colour target (placeIn), or none: the view's own
+    int x_ = 0, y_ = 0, targetWidth_ = 0, targetHeight_ = 0;
     glm::mat4 view_{1.0f}, proj_{1.0f};
     bool reversedZ_ = false;  ///< the scene renderer's depth convention, read each frame
     // Buckets, recorded by the game side; the pass callbacks only draw them.

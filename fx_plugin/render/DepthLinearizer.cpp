@@ -43,7 +43,7 @@ bool DepthLinearizer::prepare(std::string* error) {
     if (!program_) return false;
     locateUniforms(program_, {{&locDepth_, "uDepth"}, {&locCoeffs_, "uCoeffs"}, {&locFarWindow_, "uFarWindow"},
                               {&locReversed_, "uReversed"}, {&locBackground_, "uBackground"},
-                              {&locInvSize_, "uInvSize"}});
+                              {&locInvSize_, "uInvSize"}, {&locTexelOrigin_, "uTexelOrigin"}});
     glGenVertexArrays(1, &vao_);
     // A host's depth texture may carry shadow comparison or mipmapped filtering: read it through
     // a sampler that has neither.
@@ -158,7 +158,7 @@ uint32_t DepthLinearizer::copyFramebufferDepth(uint32_t framebuffer, int x, int 
 
 void DepthLinearizer::linearize(uint32_t depthTexture, const glm::mat4& proj, const DepthMapping& mapping,
                           float background, uint32_t targetFramebuffer, int width, int height,
-                          const DepthRegion& region) {
+                          const DepthRegion& region, glm::ivec2 texelOrigin, glm::ivec2 textureSize) {
     const LinearizeCoefficients k = linearizeCoefficients(proj, mapping);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetFramebuffer);
     glViewport(0, 0, width, height);
@@ -184,7 +184,9 @@ void DepthLinearizer::linearize(uint32_t depthTexture, const glm::mat4& proj, co
     glUniform1f(locFarWindow_, k.farWindow);
     glUniform1f(locReversed_, k.reversed ? -1.0f : 1.0f);
     glUniform1f(locBackground_, background);
-    glUniform2f(locInvSize_, 1.0f / float(width), 1.0f / float(height));
+    const int tw = textureSize.x > 0 ? textureSize.x : width, th = textureSize.y > 0 ? textureSize.y : height;
+    glUniform2f(locInvSize_, 1.0f / float(tw), 1.0f / float(th));
+    glUniform2f(locTexelOrigin_, float(texelOrigin.x), float(texelOrigin.y));
     glBindVertexArray(vao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     ++linearizations_;

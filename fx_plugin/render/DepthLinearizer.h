@@ -54,9 +54,12 @@ public:
     /// Draws the linear depth of `depthTexture` (window depth, read without comparison, nearest)
     /// into `targetFramebuffer` (an R32F colour attachment of width x height). `background` goes
     /// where nothing was drawn. Needs prepare(). With a `region` only its pixels are linearised;
-    /// the rest of the target is cleared to `background` (nothing drawn).
+    /// the rest of the target is cleared to `background` (nothing drawn). `depthTexture` holds the
+    /// view's pixel (0, 0) at `texelOrigin` and is `textureSize` (0 = width x height): a host
+    /// texture of the whole framebuffer holds the view at the viewport's origin.
     void linearize(uint32_t depthTexture, const glm::mat4& proj, const DepthMapping& mapping, float background,
-                   uint32_t targetFramebuffer, int width, int height, const DepthRegion& region = DepthRegion{});
+                   uint32_t targetFramebuffer, int width, int height, const DepthRegion& region = DepthRegion{},
+                   glm::ivec2 texelOrigin = glm::ivec2(0), glm::ivec2 textureSize = glm::ivec2(0));
 
     /// Depth copies made so far (a frame whose passes read no depth makes none).
     int copies() const { return copies_; }
@@ -69,6 +72,7 @@ private:
     int copyWidth_ = 0, copyHeight_ = 0;
     uint32_t copyFormat_ = 0;
     int locDepth_ = -1, locCoeffs_ = -1, locFarWindow_ = -1, locReversed_ = -1, locBackground_ = -1, locInvSize_ = -1;
+    int locTexelOrigin_ = -1;
     int copies_ = 0, linearizations_ = 0;
 };
 

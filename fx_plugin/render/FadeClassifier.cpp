@@ -56,8 +56,7 @@ void FadeClassifier::build(const ShaderReader& shaderDir, std::vector<std::strin
         if (*t.program) {
             *t.source = glGetUniformLocation(*t.program, "uSource");
             if (t.program == &tileProgram_) {
-                tileDecodeLoc_.coeffs = glGetUniformLocation(tileProgram_, "uDepthCoeffs");
-                tileDecodeLoc_.far = glGetUniformLocation(tileProgram_, "uDepthFar");
+                tileDecodeLoc_.locate(tileProgram_);
             }
         } else {
             errors->push_back(error);

@@ -76,7 +76,8 @@ void FullResPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleVie
                           if (!targetsFitView(ctx, record->view, depth, Target{}, sizeMismatch_)) return;
                           GlStateGuard guard;
                           DebugGroup group(FadeClassifier::kPass);
-                          classifier_->buildTiles(ctx, depth, decode, tiles, coarse);
+                          classifier_->buildTiles(ctx, depth, decode.placedFor(ctx.texture(depth, 0), record->view, false),
+                                                  tiles, coarse);
                       });
     }
     const bool count = tiles.valid() && record->settings.countClasses;
@@ -88,8 +89,10 @@ void FullResPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleVie
                        DebugGroup group(kPass);
                        ctx.bindForDraw(color);
                        DrawInputs in;
-                       in.sceneDepth = depth.valid() ? ctx.texture(depth, 0).name : 0;
-                       in.depthDecode = decode;
+                       in.clip = HostClip::current();
+                       const TextureRef depthRef = depth.valid() ? ctx.texture(depth, 0) : TextureRef{};
+                       in.sceneDepth = depthRef.name;
+                       in.depthDecode = decode.placedFor(depthRef, record->view, true);  // drawn into sceneColor
                        in.opacity = opacity.valid() ? ctx.texture(opacity, 0).name : 0;
                        in.tiles = tiles.valid() ? ctx.texture(tiles, 0).name : 0;
                        in.coarse = coarse.valid() ? ctx.texture(coarse, 0).name : 0;

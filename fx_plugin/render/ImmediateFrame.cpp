@@ -18,6 +18,10 @@ public:
         if (t.id == kSceneColor) {
             glBindFramebuffer(GL_FRAMEBUFFER, s.hostFramebuffer);
             glViewport(s.viewportX, s.viewportY, s.width, s.height);
+            if (s.hostScissor) {  // the host's clip holds for the plugin's draws into its framebuffer
+                glEnable(GL_SCISSOR_TEST);
+                glScissor(s.scissorBox[0], s.scissorBox[1], s.scissorBox[2], s.scissorBox[3]);
+            }
             return;
         }
         const PooledTarget* p = f_.slotOf(t.id);
@@ -30,20 +34,28 @@ public:
         const ImmediateFrameSetup& s = f_.setup_;
         if (attachment != 0 || t.id == kSceneColor) return TextureRef{};  // the host's framebuffer: no texture
         if (t.id == kSceneDepth && s.hostLinearDepth) {
-            return {s.hostLinearDepth, TargetFormat::R32F, s.width, s.height};
+            return {s.hostLinearDepth, TargetFormat::R32F, s.linearWidth ? s.linearWidth : s.width,
+                    s.linearHeight ? s.linearHeight : s.height};
         }
         if (t.id == kSceneZBuffer) {
-            return f_.zTexture_ ? TextureRef{f_.zTexture_, TargetFormat::Depth, s.width, s.height} : TextureRef{};
+            // The host's texture at its own size (the view's, or the framebuffer's with the view at
+            // the viewport's origin); the plugin's copy is the view's rectangle.
+            const bool host = s.hostZTexture != 0 && f_.zTexture_ == s.hostZTexture;
+            return f_.zTexture_ ? TextureRef{f_.zTexture_, TargetFormat::Depth, host && s.zWidth ? s.zWidth : s.width,
+                                             host && s.zHeight ? s.zHeight : s.height}
+                                : TextureRef{};
         }
         const PooledTarget* p = f_.slotOf(t.id);
         if (!p) return TextureRef{};
         return {p->texture, p->desc.format, p->width, p->height};
     }
     int width(Target t) override {
+        if (t.id == kSceneDepth || t.id == kSceneZBuffer) return texture(t, 0).valid() ? texture(t, 0).width : f_.setup_.width;
         const PooledTarget* p = t.id == kSceneColor ? nullptr : f_.slotOf(t.id);
         return p ? p->width : f_.setup_.width;
     }
     int height(Target t) override {
+        if (t.id == kSceneDepth || t.id == kSceneZBuffer) return texture(t, 0).valid() ? texture(t, 0).height : f_.setup_.height;
         const PooledTarget* p = t.id == kSceneColor ? nullptr : f_.slotOf(t.id);
         return p ? p->height : f_.setup_.height;
     }

@@ -7,7 +7,9 @@
 //     later running pass reads (walked back from sceneColor); targets are allocated only for
 //     running passes;
 //   - sceneColor is the host's framebuffer (its z-buffer attached); bindForDraw binds it with the
-//     viewport the host had at the call, at the view's size;
+//     viewport the host had at the call, at the view's size, and, when the view asks for it
+//     (clipToHostScissor), the scissor the host had enabled at the call: the plugin's draws
+//     into the host's framebuffer then stay inside it;
 //   - sceneZBuffer (when the host's depth is a z-buffer: a depth texture, or the bound
 //     framebuffer's depth) is that z-buffer as a depth texture: the host's own texture, sampled
 //     in place, or the plugin's copy of the framebuffer's depth, which the copy hook makes right
@@ -33,6 +35,9 @@ struct ImmediateFrameSetup {
     int width = 0, height = 0;           ///< the view's size (sceneColor, sceneDepth)
     uint32_t hostFramebuffer = 0;        ///< GL_DRAW_FRAMEBUFFER at the call (0 = default)
     int viewportX = 0, viewportY = 0;    ///< the host's viewport origin at the call
+    bool hostScissor = false;            ///< the host had the scissor test on at the call
+    int scissorBox[4] = {0, 0, 0, 0};    ///< its box
+    int linearWidth = 0, linearHeight = 0;  ///< hostLinearDepth's size (0 = the view's)
     uint32_t hostLinearDepth = 0;        ///< the host's R32F linear depth, or 0 = produce it
     /// Fills the linear depth into `framebuffer` (R32F colour, width x height) over `region` at
     /// least (the union of what the running passes read; outside it the value may be anything
@@ -43,6 +48,7 @@ struct ImmediateFrameSetup {
     bool zBuffer = false;
     HostDepth zMapping;
     uint32_t hostZTexture = 0;  ///< its depth texture, sampled in place; 0 = copy it (copyZBuffer)
+    int zWidth = 0, zHeight = 0;  ///< hostZTexture's size (0 = the view's: the copy is the view's rectangle)
     /// Copies the framebuffer's depth over `region` at least into a depth texture of the plugin's
     /// and returns it. Called at most once a frame, inside the frame's GL state guard.
     std::function<uint32_t(const DepthRegion& region)> copyZBuffer;

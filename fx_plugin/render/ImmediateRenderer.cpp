@@ -85,14 +85,29 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
     std::string glError = "no HostAdapter to load GL through";
     if (!privateGlLoaded() && !(host_ && loadPrivateGl(*host_, &glError))) return refuse(ErrorCode::NoGlContext, glError);
 
-    GlStateGuard guard;  // the queries below bind textures and the read framebuffer
-    GLint drawFramebuffer = 0, viewport[4] = {};
+    // The host's viewport places the view (anywhere in the framebuffer); with clipToHostScissor a
+    // scissor it enabled clips the plugin's draws into that framebuffer too (ImmediateFrame's
+    // bindForDraw); without, the host's scissor state is ignored as in 2.0.
+    GLint drawFramebuffer = 0, viewport[4] = {}, scissorBox[4] = {};
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
     glGetIntegerv(GL_VIEWPORT, viewport);
-    if (viewport[0] != 0 || viewport[1] != 0) {
-        return refuse(ErrorCode::InvalidView,
-                      "viewport: origin must be (0, 0) (the particle shaders address depth by gl_FragCoord)");
-    }
+    const bool hostScissor = glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE;
+    glGetIntegerv(GL_SCISSOR_BOX, scissorBox);
+    GlStateGuard guard;  // the queries below bind textures and the read framebuffer
+    const int vx = viewport[0], vy = viewport[1];
+    // A host depth texture holds the view alone (the view's size) or the whole framebuffer with
+    // the view at the viewport's origin (any other size, which must then cover the view).
+    int hostTexWidth = 0, hostTexHeight = 0;
+    auto placeHostTexture = [&](const char* what) -> std::string {
+        glActiveTexture(GL_TEXTURE0);
+        DepthLinearizer::textureSize(in.depthTexture, &hostTexWidth, &hostTexHeight);
+        const bool alone = hostTexWidth == in.view.width && hostTexHeight == in.view.height;
+        if (alone || (hostTexWidth >= vx + in.view.width && hostTexHeight >= vy + in.view.height)) return std::string();
+        return std::string(what) + ": " + std::to_string(hostTexWidth) + "x" + std::to_string(hostTexHeight) +
+               ", the view is " + std::to_string(in.view.width) + "x" + std::to_string(in.view.height) + " at (" +
+               std::to_string(vx) + ", " + std::to_string(vy) +
+               "); expected the view's size or a framebuffer's that holds it";
+    };
     uint32_t depthFormat = 0;
     int samples = 0;
     if (source == Source::DepthTexture || source == Source::LinearR32F) {
@@ -107,15 +122,14 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
         return refuse(ErrorCode::UnsupportedDepth, "depthTexture: FX_DEPTH_FROM_LINEAR reads a GL_R32F texture "
                                                    "(linear view depth in metres); this one has another format");
     }
+    if (source == Source::LinearR32F) {
+        const std::string bad = placeHostTexture("depthTexture");
+        if (!bad.empty()) return refuse(ErrorCode::SizeMismatch, bad);
+    }
     if (source == Source::DepthTexture) {
         depthFormat = supportedDepthFormat(in.depthFormat ? in.depthFormat : DepthLinearizer::textureFormat(in.depthTexture));
-        int tw = 0, th = 0;
-        DepthLinearizer::textureSize(in.depthTexture, &tw, &th);
-        if (depthFormat && (tw != in.view.width || th != in.view.height)) {
-            return refuse(ErrorCode::SizeMismatch, "depthTexture: " + std::to_string(tw) + "x" + std::to_string(th) +
-                                                       ", the view is " + std::to_string(in.view.width) + "x" +
-                                                       std::to_string(in.view.height));
-        }
+        const std::string bad = placeHostTexture("depthTexture");
+        if (depthFormat && !bad.empty()) return refuse(ErrorCode::SizeMismatch, bad);
     } else if (source == Source::BoundFramebuffer) {
         depthFormat = DepthLinearizer::framebufferDepthFormat(uint32_t(drawFramebuffer));
         samples = DepthLinearizer::framebufferSamples(uint32_t(drawFramebuffer));
@@ -131,21 +145,36 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
 
     ViewInfo view = in.view;
     view.depth = conventionOf(view.proj, in.mapping);
+    view.x = vx;
+    view.y = vy;
+    // sceneColor is the host's framebuffer, which ImmediateFrame reports at the view's size; a
+    // host depth texture of the framebuffer's size is the view's target's (targetsFitView).
+    const bool texAlone = hostTexWidth == view.width && hostTexHeight == view.height;
+    view.targetWidth = hostTexWidth > 0 && !texAlone ? hostTexWidth : 0;
+    view.targetHeight = hostTexHeight > 0 && !texAlone ? hostTexHeight : 0;
+    const glm::ivec2 texelOrigin = hostTexWidth > 0 && !texAlone ? glm::ivec2(vx, vy) : glm::ivec2(0);
+    const glm::ivec2 hostTexSize(hostTexWidth, hostTexHeight);
 
     ImmediateFrameSetup setup;
     setup.width = view.width;
     setup.height = view.height;
     setup.hostFramebuffer = uint32_t(drawFramebuffer);
-    setup.viewportX = viewport[0];
-    setup.viewportY = viewport[1];
-    if (source == Source::LinearR32F) setup.hostLinearDepth = in.depthTexture;
+    setup.viewportX = vx;
+    setup.viewportY = vy;
+    setup.hostScissor = hostScissor && in.view.clipToHostScissor;
+    for (int i = 0; i < 4; ++i) setup.scissorBox[i] = scissorBox[i];
+    if (source == Source::LinearR32F) {
+        setup.hostLinearDepth = in.depthTexture;
+        setup.linearWidth = hostTexWidth;
+        setup.linearHeight = hostTexHeight;
+    }
     const float background = view.farPlane;
     const glm::mat4 proj = view.proj;
     const DepthMapping mapping = in.mapping;
     const int w = view.width, h = view.height;
     const uint32_t hostTexture = in.depthTexture;
-    setup.produceDepth = [this, source, background, proj, mapping, w, h, hostTexture, depthFormat,
-                          samples, drawFramebuffer](uint32_t target, const DepthRegion& region) {
+    setup.produceDepth = [this, source, background, proj, mapping, w, h, hostTexture, depthFormat, samples,
+                          drawFramebuffer, vx, vy, texelOrigin, hostTexSize](uint32_t target, const DepthRegion& region) {
         if (!depthReady_ || source == Source::None) {
             // No depth (or no linearise program): the view's far plane everywhere, which every
             // reader takes as nothing drawn.
@@ -154,10 +183,13 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
             glClearBufferfv(GL_COLOR, 0, far);
             return;
         }
-        const uint32_t texture =
-            source == Source::DepthTexture ? hostTexture
-                                           : depth_.copyFramebufferDepth(uint32_t(drawFramebuffer), 0, 0, w, h,
-                                                                      depthFormat, samples, region);
+        // The copy is the view's rectangle; the host's texture is read where the view lies in it.
+        if (source == Source::DepthTexture) {
+            depth_.linearize(hostTexture, proj, mapping, background, target, w, h, region, texelOrigin, hostTexSize);
+            return;
+        }
+        const uint32_t texture = depth_.copyFramebufferDepth(uint32_t(drawFramebuffer), vx, vy, w, h, depthFormat,
+                                                             samples, region);
         depth_.linearize(texture, proj, mapping, background, target, w, h, region);
     };
     // The z-buffer itself where the passes can sample it (SceneDepthSource.h): a depth texture in
@@ -166,9 +198,14 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
     setup.zMapping.clipDepthZeroToOne = mapping.clipZeroToOne;
     setup.zMapping.depthRangeNear = mapping.rangeNear;
     setup.zMapping.depthRangeFar = mapping.rangeFar;
-    if (source == Source::DepthTexture) setup.hostZTexture = hostTexture;
-    setup.copyZBuffer = [this, w, h, depthFormat, samples, drawFramebuffer](const DepthRegion& region) {
-        return depth_.copyFramebufferDepth(uint32_t(drawFramebuffer), 0, 0, w, h, depthFormat, samples, region);
+    if (source == Source::DepthTexture) {
+        setup.hostZTexture = hostTexture;
+        setup.zWidth = hostTexWidth;
+        setup.zHeight = hostTexHeight;
+    }
+    // The bound framebuffer's depth over the view's rectangle only, into a view-sized texture.
+    setup.copyZBuffer = [this, w, h, depthFormat, samples, drawFramebuffer, vx, vy](const DepthRegion& region) {
+        return depth_.copyFramebufferDepth(uint32_t(drawFramebuffer), vx, vy, w, h, depthFormat, samples, region);
     };
     pool_.beginFrame();
     ImmediateFrame frame(pool_, std::move(setup));

@@ -8,7 +8,9 @@
 // The call's contract:
 //   - the host's GL context is current; GL_DRAW_FRAMEBUFFER is the framebuffer to draw into (0 =
 //     the default one), with the host's z-buffer attached for the z-tested passes; the viewport's
-//     origin is the view's lower-left corner, its size the view's (ViewInfo::width x height);
+//     origin is the view's lower-left corner, anywhere in the framebuffer, its size the view's
+//     (ViewInfo::width x height); with ViewInfo::clipToHostScissor a scissor test the host
+//     enabled clips the plugin's draws into that framebuffer too (else it is ignored, as in 2.0);
 //   - ImmediateView::mapping states the clip control and depth range the host drew its z-buffer
 //     with; the z-tested passes draw under exactly those (GlStateGuard pins them through a
 //     HostDepthMappingScope), whatever the host left current, so with the view's proj the
@@ -17,8 +19,10 @@
 //     ViewInfo::depth handed to the plugin is replaced by it;
 //   - after the call every GL state GlStateGuard captures, the bound framebuffers and the viewport
 //     included, is what it was.
-// Limitation: the particle shaders address the scene depth by gl_FragCoord, so a viewport whose
-// origin is not (0, 0) is refused (InvalidView) until they take an offset.
+//   - the scene depth is addressed by the view's own pixels (SceneDepthSource.h): the copy of a
+//     bound framebuffer's depth is the view's rectangle; a host texture of the view's size holds
+//     the view alone, one of another size the whole framebuffer with the view at the viewport's
+//     origin (it must cover the view, else SizeMismatch).
 //
 // Measured (tests/fx_host/ImmediateRendererTest.cpp, llvmpipe, 160 x 120 and 640 x 480):
 //   image: with the host's linear R32F depth, equal to the frame-graph path bit for bit (hard, soft,
@@ -76,9 +80,10 @@ public:
     /// then the running passes in order). Refused, nothing drawn: InvalidValue (a depth source
     /// outside the enum, an invalid mapping), NullArgument (no texture for LinearR32F /
     /// DepthTexture), InvalidView (as
-    /// declarePasses, or a viewport origin other than (0, 0)), UnsupportedDepth (a texture of a
-    /// format it cannot read, a bound framebuffer without a depth attachment), SizeMismatch (a DepthTexture of
-    /// another size than the view), NoGlContext. Refusals are logged like the plugin's API errors. A linearise program that
+    /// declarePasses), UnsupportedDepth (a texture of a
+    /// format it cannot read, a bound framebuffer without a depth attachment), SizeMismatch (a
+    /// host texture neither of the view's size nor covering the view at the viewport's origin),
+    /// NoGlContext. Refusals are logged like the plugin's API errors. A linearise program that
     /// does not build is logged (ShaderBuild, also in lastError()); that frame draws as with no depth.
     ErrorCode render(Plugin& plugin, const ImmediateView& view);
     /// Refusals go to `errors` under "renderView" (counted in Stats::apiErrors, repeats limited)

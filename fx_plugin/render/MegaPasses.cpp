@@ -74,9 +74,10 @@ void MegaPasses::runDepth(PassContext& ctx, const MegaCloud& r, Target sceneDept
     glClearBufferfv(GL_COLOR, 0, zero);
     scissorTo(r.rect, float(w) / float(r.view.width), blurBorder(r), w, h);
     glUseProgram(programs_->depth);
-    hostDepth_.bindTexture(kUnit0, ctx.texture(sceneDepth, 0).name);
+    const TextureRef depthRef = ctx.texture(sceneDepth, 0);
+    hostDepth_.bindTexture(kUnit0, depthRef.name);
     glUniform1i(programs_->depthScene, kUnit0);
-    setSceneDepthDecode(programs_->depthDecode, r.depthDecode);
+    setSceneDepthDecode(programs_->depthDecode, r.depthDecode.placedFor(depthRef, r.view, false));
     sceneDepthBarrier(r.depthDecode);
     glUniform2f(programs_->depthRatio, float(r.view.width) / float(std::max(w, 1)),
                 float(r.view.height) / float(std::max(h, 1)));
@@ -161,21 +162,22 @@ void MegaPasses::runComposite(PassContext& ctx, const MegaCloud& r, Target cloud
                               Target sceneDepth, Target sceneColor) {
     if (!targetsFitView(ctx, r.view, sceneColor, sceneDepth, sizeMismatch_)) return;
     ctx.bindForDraw(sceneColor);
+    const HostClip clip = HostClip::current();
     plainDrawState();
-    const int w = ctx.width(sceneColor), h = ctx.height(sceneColor);
-    const float scale = float(ctx.width(cloud)) / float(std::max(w, 1));
-    scissorTo(r.rect, 1.0f, int(std::ceil(float(blurBorder(r)) / std::max(scale, 0.25f))), w, h);
+    const float scale = float(ctx.width(cloud)) / float(std::max(r.view.width, 1));
+    scissorToView(r.rect, int(std::ceil(float(blurBorder(r)) / std::max(scale, 0.25f))), r.view, clip);
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glUseProgram(programs_->composite);
     bindTextureUnit(kUnit0, ctx.texture(cloud, 0).name);
     bindTextureUnit(kUnit1, ctx.texture(cloudDepth, 0).name);
-    hostDepth_.bindTexture(kUnit2, ctx.texture(sceneDepth, 0).name);
+    const TextureRef depthRef = ctx.texture(sceneDepth, 0);
+    hostDepth_.bindTexture(kUnit2, depthRef.name);
     glUniform1i(programs_->cCloud, kUnit0);
     glUniform1i(programs_->cCloudDepth, kUnit1);
     glUniform1i(programs_->cScene, kUnit2);
-    setSceneDepthDecode(programs_->cDecode, r.depthDecode);
+    setSceneDepthDecode(programs_->cDecode, r.depthDecode.placedFor(depthRef, r.view, true));  // into sceneColor
     sceneDepthBarrier(r.depthDecode);
     glUniform1f(programs_->cSoft, r.softScale);
     drawFullscreen();

@@ -28,6 +28,7 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
     stream_.upload(list.instances.data(), list.particleCount());
 
     plainDrawState();
+    in.clip.apply();  // a host's scissor on sceneColor keeps clipping the smoke
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     bindTextureUnit(kAtlasUnit, atlas_.texture());

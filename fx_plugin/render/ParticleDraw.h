@@ -49,6 +49,7 @@ struct DrawInputs {
     bool zTested = false;
     uint32_t opacity = 0;                  ///< the opacity map (lit smoke)
     uint32_t tiles = 0, coarse = 0;        ///< the fade classifier's tiles (0: unclassified)
+    HostClip clip;  ///< drawing into sceneColor: the scissor its bindForDraw left (HostClip::current)
 };
 
 class ParticleDraw {

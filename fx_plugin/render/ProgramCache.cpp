@@ -39,8 +39,7 @@ ParticleProgram locate(GLuint program) {
     p.atlas = glGetUniformLocation(program, "uAtlas");
     p.ramp = glGetUniformLocation(program, "uRamp");
     p.sceneDepth = glGetUniformLocation(program, "uSceneDepth");
-    p.depthDecode.coeffs = glGetUniformLocation(program, "uDepthCoeffs");
-    p.depthDecode.far = glGetUniformLocation(program, "uDepthFar");
+    p.depthDecode.locate(program);
     p.trimmed = glGetUniformLocation(program, "uTrimmed");
     p.shapeBuckets = glGetUniformLocation(program, "uShapeBuckets");
     p.lodScale = glGetUniformLocation(program, "uLodScale");

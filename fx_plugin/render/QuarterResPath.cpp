@@ -98,8 +98,9 @@ void QuarterResPath::declare(FrameBuilder& frame, const std::shared_ptr<Particle
                            DrawInputs in;
                            in.quarterRes = true;
                            in.zTested = true;
-                           in.sceneDepth = ctx.texture(depth, 0).name;
-                           in.depthDecode = decode;
+                           const TextureRef depthRef = ctx.texture(depth, 0);
+                           in.sceneDepth = depthRef.name;
+                           in.depthDecode = decode.placedFor(depthRef, record->view, false);  // the edge target
                            in.opacity = opacity.valid() ? ctx.texture(opacity, 0).name : 0;
                            draw_.draw(*record, in);
                        });
@@ -120,9 +121,10 @@ void QuarterResPath::downsampleDepth(PassContext& ctx, const ParticleView& v, Ta
     plainDrawState();
     scissorTo(v.rect, 0.5f, 2, ctx.width(halfDepth), ctx.height(halfDepth));
     glUseProgram(p.downsample);
-    p.hostDepth.bindTexture(0, ctx.texture(sceneDepth, 0).name);
+    const TextureRef depthRef = ctx.texture(sceneDepth, 0);
+    p.hostDepth.bindTexture(0, depthRef.name);
     glUniform1i(p.downsampleDepthLoc, 0);
-    setSceneDepthDecode(p.downsampleDecode, decode);
+    setSceneDepthDecode(p.downsampleDecode, decode.placedFor(depthRef, v.view, false));
     sceneDepthBarrier(decode);
     p.drawTiles(p.downsampleViewLoc, v.tiles);
 }
@@ -178,10 +180,11 @@ void QuarterResPath::beginEdges(PassContext& ctx, const ParticleView& v, Target 
     beginDepthOnly();
     glUseProgram(p.edgeMask);
     bindTextureUnit(0, ctx.texture(halfDepth, 0).name);
-    p.hostDepth.bindTexture(1, ctx.texture(sceneDepth, 0).name);
+    const TextureRef depthRef = ctx.texture(sceneDepth, 0);
+    p.hostDepth.bindTexture(1, depthRef.name);
     glUniform1i(p.maskHalfDepthLoc, 0);
     glUniform1i(p.maskSceneDepthLoc, 1);
-    setSceneDepthDecode(p.maskDecode, decode);
+    setSceneDepthDecode(p.maskDecode, decode.placedFor(depthRef, v.view, false));
     sceneDepthBarrier(decode);
     glUniform1f(p.maskThresholdLoc, kDepthThreshold);
     glUniform1f(p.maskPassLoc, reversed ? 0.0f : 1.0f);
@@ -195,8 +198,9 @@ void QuarterResPath::composite(PassContext& ctx, const ParticleView& v, Target s
                                Target edgeColor) {
     QuarterResPrograms& p = *programs_;
     ctx.bindForDraw(sceneColor);
+    const HostClip clip = HostClip::current();
     plainDrawState();
-    scissorTo(v.rect, 1.0f, 0, ctx.width(sceneColor), ctx.height(sceneColor));
+    scissorToView(v.rect, 0, v.view, clip);
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
@@ -207,12 +211,13 @@ void QuarterResPath::composite(PassContext& ctx, const ParticleView& v, Target s
     glUseProgram(c.program);
     bindTextureUnit(0, ctx.texture(halfColor, 0).name);
     bindTextureUnit(1, ctx.texture(halfDepth, 0).name);
-    p.hostDepth.bindTexture(2, ctx.texture(sceneDepth, 0).name);
+    const TextureRef depthRef = ctx.texture(sceneDepth, 0);
+    p.hostDepth.bindTexture(2, depthRef.name);
     // A location a build left out (-1) is ignored by glUniform*.
     glUniform1i(c.halfColor, 0);
     glUniform1i(c.halfDepth, 1);
     glUniform1i(c.sceneDepth, 2);
-    setSceneDepthDecode(c.decode, decode);
+    setSceneDepthDecode(c.decode, decode.placedFor(depthRef, v.view, true));  // drawn into sceneColor
     sceneDepthBarrier(decode);
     glUniform1f(c.threshold, kDepthThreshold);
     glUniform1i(c.edgeColor, 3);

@@ -38,9 +38,31 @@ void sceneDepthBarrier(const SceneDepthDecode& decode) {
     if (decode.zBuffer && glTextureBarrier) glTextureBarrier();
 }
 
+glm::ivec2 viewOriginInDepth(int w, int h, const ViewInfo& view) {
+    if (w == view.width && h == view.height) return glm::ivec2(0);
+    return glm::ivec2(view.x, view.y);
+}
+
+SceneDepthDecode SceneDepthDecode::placedFor(const TextureRef& depth, const ViewInfo& view, bool intoSceneColor) const {
+    SceneDepthDecode out = *this;
+    out.texel = viewOriginInDepth(depth.width, depth.height, view);
+    out.viewSize = glm::ivec2(view.width, view.height);
+    out.drawOrigin = intoSceneColor ? glm::ivec2(view.x, view.y) : glm::ivec2(0);
+    return out;
+}
+
+void SceneDepthUniforms::locate(uint32_t program) {
+    coeffs = glGetUniformLocation(program, "uDepthCoeffs");
+    far = glGetUniformLocation(program, "uDepthFar");
+    window = glGetUniformLocation(program, "uDepthWindow");
+    drawOrigin = glGetUniformLocation(program, "uDrawOrigin");
+}
+
 void setSceneDepthDecode(const SceneDepthUniforms& at, const SceneDepthDecode& decode) {
     glUniform4f(at.coeffs, decode.a, decode.b, decode.c, decode.d);
     glUniform2f(at.far, decode.farWindow, decode.direction);
+    glUniform4i(at.window, decode.texel.x, decode.texel.y, decode.viewSize.x, decode.viewSize.y);
+    glUniform2i(at.drawOrigin, decode.drawOrigin.x, decode.drawOrigin.y);
 }
 
 }  // namespace fx

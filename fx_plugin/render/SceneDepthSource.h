@@ -14,6 +14,14 @@
 //  - the linear R32F depth the host makes (FrameBuilder::sceneDepth, the API 2.0 contract):
 //    every host that offers no z-buffer, a z-buffer whose mapping is not one GL can have, and
 //    contexts without texture barriers. Decoded with the identity (t = d, bit for bit).
+//
+// Where the view lies in it (API 2.1, a view anywhere in the framebuffer): the passes address the
+// scene depth by the view's own pixel, p = gl_FragCoord - drawOrigin (drawOrigin: the view's
+// origin in the framebuffer being drawn, sceneColor's viewport origin or 0 for the plugin's own
+// targets), then read texel p + texel (placedFor): a depth texture of the view's size holds the
+// view alone (texel 0: the plugin's copy, a host's per-view linear depth), any other size holds
+// the whole framebuffer with the view at its viewport origin (the host's z-buffer of sceneColor).
+// With the view at (0, 0) of its own target every offset is 0 and the reads are the 2.0 ones.
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -30,8 +38,15 @@ struct SceneDepthDecode {
     float farWindow = 3.0e38f;  ///< window depth of the far plane
     float direction = 1.0f;     ///< -1 where window depth falls with distance (reversed-Z)
     bool zBuffer = false;       ///< decodes a z-buffer (the passes need a texture barrier first)
+    glm::ivec2 texel{0};        ///< the depth texel of the view's pixel (0, 0) (placedFor)
+    glm::ivec2 viewSize{0};     ///< the view's size: the full-screen passes' bounds (placedFor)
+    glm::ivec2 drawOrigin{0};   ///< the view's pixel (0, 0) in the framebuffer the pass draws into
 
     static SceneDepthDecode linear() { return SceneDepthDecode{}; }
+    /// This decode for the depth texture `depth` of `view`, read by a pass that draws into
+    /// sceneColor (`intoSceneColor`: the view's rectangle of it) or into a target of the
+    /// plugin's (its own (0, 0)). The rule in the header comment above.
+    SceneDepthDecode placedFor(const TextureRef& depth, const ViewInfo& view, bool intoSceneColor) const;
     /// A z-buffer drawn with `proj` under `mapping` (DepthMapping.h's inversion).
     static SceneDepthDecode ofZBuffer(const glm::mat4& proj, const DepthMapping& mapping);
 };
@@ -50,11 +65,16 @@ SceneDepthSource sceneDepthSource(FrameBuilder& frame, const ViewInfo& view);
 /// sampled while it is attached to the framebuffer a pass draws into.
 bool canSampleZBufferInPlace();
 
-/// Uniform locations of uDepthCoeffs and uDepthFar in one program.
+/// The view's origin in a depth texture of w x h: 0 when it is the view's size, else the origin.
+glm::ivec2 viewOriginInDepth(int w, int h, const ViewInfo& view);
+
+/// Uniform locations of uDepthCoeffs, uDepthFar, uDepthWindow and uDrawOrigin in one program.
 struct SceneDepthUniforms {
-    int coeffs = -1, far = -1;
+    int coeffs = -1, far = -1, window = -1, drawOrigin = -1;
+    /// Looks the four up in `program`.
+    void locate(uint32_t program);
 };
-/// Sets the decode on the program in use.
+/// Sets the decode (and its placement) on the program in use.
 void setSceneDepthDecode(const SceneDepthUniforms& at, const SceneDepthDecode& decode);
 /// Once per pass that samples the z-buffer, before its first draw: a texture barrier, so the
 /// host's depth writes are visible to the pass's fetches. Nothing for linear depth.

@@ -126,6 +126,41 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
     return r;
 }
 
+HostClip HostClip::current() {
+    HostClip c;
+    c.on = glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE;
+    if (c.on) glGetIntegerv(GL_SCISSOR_BOX, c.box);
+    return c;
+}
+
+void HostClip::apply() const {
+    if (!on) return;
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(box[0], box[1], box[2], box[3]);
+}
+
+void scissorToView(const ScreenRect& rect, int border, const ViewInfo& view, const HostClip& clip) {
+    if (rect.whole && !clip.on) {
+        glDisable(GL_SCISSOR_TEST);
+        return;
+    }
+    int x0 = view.x, y0 = view.y, x1 = view.x + view.width, y1 = view.y + view.height;
+    if (!rect.whole) {
+        x0 = std::max(x0, view.x + rect.x0 - border);
+        y0 = std::max(y0, view.y + rect.y0 - border);
+        x1 = std::min(x1, view.x + rect.x1 + border);
+        y1 = std::min(y1, view.y + rect.y1 + border);
+    }
+    if (clip.on) {
+        x0 = std::max(x0, clip.box[0]);
+        y0 = std::max(y0, clip.box[1]);
+        x1 = std::min(x1, clip.box[0] + clip.box[2]);
+        y1 = std::min(y1, clip.box[1] + clip.box[3]);
+    }
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0));
+}
+
 void scissorTo(const ScreenRect& rect, float scale, int border, int w, int h) {
     if (rect.whole) {
         glDisable(GL_SCISSOR_TEST);

@@ -56,4 +56,19 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
 /// resolution), grown by `border` texels; no scissor for a whole-view rect.
 void scissorTo(const ScreenRect& rect, float scale, int border, int w, int h);
 
+/// The scissor the host's PassContext::bindForDraw(sceneColor) left (renderView: the one the host
+/// had enabled at the call): read right after binding, before plainDrawState() turns it off.
+struct HostClip {
+    bool on = false;
+    int box[4] = {0, 0, 0, 0};
+    static HostClip current();
+    /// Turns the scissor on at the box again when `on` (after plainDrawState turned it off).
+    void apply() const;
+};
+
+/// Scissor to `rect` (grown by `border` pixels) of the view, which lies at (view.x, view.y) of
+/// sceneColor, inside `clip` when it is on. A whole-view rect without a host clip: no scissor,
+/// as scissorTo (the viewport bounds the draws).
+void scissorToView(const ScreenRect& rect, int border, const ViewInfo& view, const HostClip& clip);
+
 }  // namespace fx

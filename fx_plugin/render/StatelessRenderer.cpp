@@ -86,7 +86,7 @@ int StatelessRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame,
     frame.addPass(kPass, {}, {color}, [this, v, draws, color](PassContext& ctx) {
         GlStateGuard guard(v.depth);  // z-tested against the host's z-buffer
         ctx.bindForDraw(color);
-        draw(v, *draws);
+        draw(v, *draws, HostClip::current());
     });
     return slots;
 }
@@ -161,7 +161,7 @@ std::function<void()> StatelessRenderer::rebuildShaders(ShaderErrorLog* errors) 
     };
 }
 
-void StatelessRenderer::draw(const ViewInfo& view, const std::vector<Draw>& draws) {
+void StatelessRenderer::draw(const ViewInfo& view, const std::vector<Draw>& draws, const HostClip& clip) {
     if (!gpu_ || !gpu_->program) return;  // declarePasses built it (a reload may have swapped it)
     Gpu& g = *gpu_;
     ++g.frame;
@@ -169,6 +169,7 @@ void StatelessRenderer::draw(const ViewInfo& view, const std::vector<Draw>& draw
     glUniformMatrix4fv(g.u.view, 1, GL_FALSE, &view.view[0][0]);
     glUniformMatrix4fv(g.u.proj, 1, GL_FALSE, &view.proj[0][0]);
     plainDrawState();
+    clip.apply();  // a host's scissor on sceneColor keeps clipping the sparks
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);

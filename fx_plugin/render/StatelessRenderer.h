@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "ScreenTiles.h"
 #include "ShaderLoader.h"
 #include "fx/Diagnostic.h"
 #include "fx/HostAdapter.h"
@@ -53,7 +54,7 @@ public:
 private:
     struct Gpu;
     struct Draw;
-    void draw(const ViewInfo& view, const std::vector<Draw>& draws);
+    void draw(const ViewInfo& view, const std::vector<Draw>& draws, const HostClip& clip);
     bool ensureProgram();
     /// Makes `program` the one drawn with (deleting the previous one), with its uniforms.
     void adopt(uint32_t program);

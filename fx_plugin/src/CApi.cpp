@@ -18,10 +18,12 @@
 #include "InstallParticleRenderer.h"
 #include "../reactions/ReactionDesc.h"
 #include "../render/PrivateGlLoader.h"
+#include "WorldBasis.h"
 
 extern "C" uint32_t fxApiVersion(void) { return FX_API_VERSION; }
 
 struct fxPlugin {
+    fx::UpAxis up;  // the host world's up axis: turned at this boundary (WorldBasis.h)
     fx::CHostAdapter host;
     std::unique_ptr<fx::PluginImpl> impl;
     // The immediate path's frame graph, target pool and depth copy (fxApi::renderView); made on
@@ -31,7 +33,7 @@ struct fxPlugin {
     std::vector<fx::ReactionKeyInfo> schema;
     std::vector<std::vector<const char*>> schemaChoices;
 
-    explicit fxPlugin(const fxHostCallbacks& callbacks) : host(callbacks) {}
+    fxPlugin(const fxHostCallbacks& callbacks, fx::UpAxis upAxis) : up(upAxis), host(callbacks, upAxis) {}
 };
 
 namespace fx {
@@ -85,10 +87,29 @@ bool finite3(const float* v) { return std::isfinite(v[0]) && std::isfinite(v[1])
 /// The sizes a descriptor of API 2.x may have: 2.0's (the first); later minors add theirs here.
 bool knownSize(uint32_t size, size_t current) { return size == current; }
 
+// API 2.0's fxPluginDesc ended with seed and its fxViewDesc with depthRangeFar; 2.1 appended
+// upAxis and the viewport fields. A 2.0 host's descriptor is read up to its size, the rest as 0.
+constexpr size_t kPluginDescSize20 = offsetof(fxPluginDesc, upAxis);
+constexpr size_t kViewDescSize20 = offsetof(fxViewDesc, viewportX);
+bool knownSize(uint32_t size, size_t current, size_t size20) { return size == current || size == size20; }
+
 std::string sizeProblem(const char* type, uint32_t size, size_t current) {
     return std::string(type) + "::size = " + std::to_string(size) + "; expected " + std::to_string(current) +
            " (sizeof(" + type + ") of API " + std::to_string(FX_API_VERSION_MAJOR) + "." +
            std::to_string(FX_API_VERSION_MINOR) + ": FX_DESC_INIT sets it)";
+}
+std::string sizeProblem(const char* type, uint32_t size, size_t current, size_t size20) {
+    return sizeProblem(type, size, current) + " or " + std::to_string(size20) + " (API 2.0)";
+}
+
+/// A descriptor of a known size (knownSize) as this library's struct: the fields past a smaller
+/// (older) size read as 0, their stated default.
+template <class Desc>
+Desc fullDesc(const Desc& in) {
+    Desc out;
+    std::memset(&out, 0, sizeof out);
+    std::memcpy(&out, &in, in.size < sizeof out ? in.size : sizeof out);
+    return out;
 }
 
 /// Copies `s` snprintf-style; returns its length.
@@ -127,8 +148,14 @@ fxPlugin* create(const fxPluginDesc* desc, int* error) {
         return nullptr;
     };
     if (!desc) return fail(ErrorCode::NullArgument, "desc is null; expected an fxPluginDesc");
-    if (!knownSize(desc->size, sizeof(fxPluginDesc))) {
-        return fail(ErrorCode::BadDescriptor, sizeProblem("fxPluginDesc", desc->size, sizeof(fxPluginDesc)));
+    if (!knownSize(desc->size, sizeof(fxPluginDesc), kPluginDescSize20)) {
+        return fail(ErrorCode::BadDescriptor,
+                    sizeProblem("fxPluginDesc", desc->size, sizeof(fxPluginDesc), kPluginDescSize20));
+    }
+    const fxPluginDesc full = fullDesc(*desc);
+    if (full.upAxis != FX_UP_Y && full.upAxis != FX_UP_Z) {
+        return fail(ErrorCode::InvalidValue,
+                    "fxPluginDesc::upAxis = " + std::to_string(full.upAxis) + "; expected FX_UP_Y (0) or FX_UP_Z (1)");
     }
     const uint32_t want = desc->apiVersion != 0 ? desc->apiVersion : FX_API_VERSION;
     if ((want >> 16) != FX_API_VERSION_MAJOR || (want & 0xFFFFu) > FX_API_VERSION_MINOR) {
@@ -147,7 +174,7 @@ fxPlugin* create(const fxPluginDesc* desc, int* error) {
                                                  " is null; expected a function (wheelCount, wheel, wind and "
                                                  "collisionPoint may be null)");
     }
-    auto plugin = std::make_unique<fxPlugin>(h);
+    auto plugin = std::make_unique<fxPlugin>(h, full.upAxis == FX_UP_Z ? UpAxis::Z : UpAxis::Y);
     PluginImports imports;
     imports.apiVersion = kApiVersion;
     imports.host = &plugin->host;
@@ -311,7 +338,7 @@ int fireReaction(fxPlugin* p, const char* name, const float point[3]) {
         return code(refuse(p, ErrorCode::InvalidValue, "fireReaction",
                            "point outside the world; expected finite metres within +-1e9 (FX_MAX_WORLD_COORDINATE)"));
     }
-    return code(impl(p).fireReaction(name, glm::vec3(point[0], point[1], point[2])));
+    return code(impl(p).fireReaction(name, toPluginWorld(p->up, glm::vec3(point[0], point[1], point[2]))));
 }
 int setRenderOptions(fxPlugin* p, const fxRenderOptions* o) {
     if (!usable(p, "setRenderOptions")) return handleError(p);
@@ -389,7 +416,7 @@ int setSceneLight(fxPlugin* p, const fxSceneLight* l) {
         return code(refuse(p, ErrorCode::BadDescriptor, "setSceneLight", sizeProblem("fxSceneLight", l->size, sizeof *l)));
     }
     SceneLight s;
-    s.toSun = glm::vec3(l->toSun[0], l->toSun[1], l->toSun[2]);
+    s.toSun = toPluginWorld(p->up, glm::vec3(l->toSun[0], l->toSun[1], l->toSun[2]));
     s.sunColor = glm::vec3(l->sunColor[0], l->sunColor[1], l->sunColor[2]);
     s.ambient = glm::vec3(l->ambient[0], l->ambient[1], l->ambient[2]);
     return code(impl(p).setSceneLight(s));
@@ -443,11 +470,16 @@ fxBool pollShaderReload(fxPlugin* p, const fxDiagnosticSink* out) {
     return withDiagnostics(out, [&](Diagnostics* d) { return impl(p).pollShaderReload(d); });
 }
 
-/// Checks a view descriptor and turns it into the plugin's right-handed ViewInfo; None or the
-/// refusal (logged under `function`).
-ErrorCode viewFrom(const fxPlugin* p, const fxViewDesc* v, const char* function, ViewInfo* out) {
+/// Checks a view descriptor and turns it into the plugin's right-handed, Y-up ViewInfo; None or
+/// the refusal (logged under `function`). `placed`: the descriptor's viewport fields place the
+/// view (declarePasses); renderView takes the host's GL viewport instead and does not read them.
+ErrorCode viewFrom(const fxPlugin* p, const fxViewDesc* v, const char* function, ViewInfo* out, bool placed = true) {
     if (!v) return refuse(p, ErrorCode::NullArgument, function, "view is null; expected an fxViewDesc");
-    if (!knownSize(v->size, sizeof *v)) return refuse(p, ErrorCode::BadDescriptor, function, sizeProblem("fxViewDesc", v->size, sizeof *v));
+    if (!knownSize(v->size, sizeof *v, kViewDescSize20)) {
+        return refuse(p, ErrorCode::BadDescriptor, function, sizeProblem("fxViewDesc", v->size, sizeof *v, kViewDescSize20));
+    }
+    const fxViewDesc full = fullDesc(*v);
+    v = &full;
     if (v->handedness != FX_RIGHT_HANDED && v->handedness != FX_LEFT_HANDED) {
         return refuse(p, ErrorCode::InvalidView, function,
                       "handedness " + std::to_string(v->handedness) + "; expected FX_RIGHT_HANDED or FX_LEFT_HANDED");
@@ -461,6 +493,16 @@ ErrorCode viewFrom(const fxPlugin* p, const fxViewDesc* v, const char* function,
                       "size " + std::to_string(v->width) + "x" + std::to_string(v->height) + "; expected 1 .. " +
                           std::to_string(FX_MAX_VIEW_SIZE) + " (FX_MAX_VIEW_SIZE) each");
     }
+    if (placed && (v->viewportX < 0 || v->viewportY < 0 || v->targetWidth < 0 || v->targetHeight < 0 ||
+        (v->targetWidth > 0 && int64_t(v->viewportX) + v->width > v->targetWidth) ||
+        (v->targetHeight > 0 && int64_t(v->viewportY) + v->height > v->targetHeight) ||
+        ((v->viewportX > 0 || v->viewportY > 0) && (v->targetWidth == 0 || v->targetHeight == 0)))) {
+        return refuse(p, ErrorCode::InvalidView, function,
+                      "viewport (" + std::to_string(v->viewportX) + ", " + std::to_string(v->viewportY) + ", " +
+                          std::to_string(v->width) + ", " + std::to_string(v->height) + ") in a target of " +
+                          std::to_string(v->targetWidth) + "x" + std::to_string(v->targetHeight) +
+                          "; expected it inside the target (a view away from (0, 0) gives the target's size)");
+    }
     bool finite = finite3(v->eye) && std::isfinite(v->nearPlane) && std::isfinite(v->farPlane) &&
                   std::isfinite(v->depthRangeNear) && std::isfinite(v->depthRangeFar);
     for (int i = 0; i < 16; ++i) finite = finite && std::isfinite(v->view[i]) && std::isfinite(v->proj[i]);
@@ -473,7 +515,11 @@ ErrorCode viewFrom(const fxPlugin* p, const fxViewDesc* v, const char* function,
                       "near " + std::to_string(v->nearPlane) + ", far " + std::to_string(v->farPlane) +
                           "; expected 0 < near < far");
     }
-    *out = rightHandedView(*v);
+    *out = rightHandedView(*v, p->up);
+    if (!placed) {
+        out->x = out->y = 0;
+        out->targetWidth = out->targetHeight = 0;
+    }
     return ErrorCode::None;
 }
 
@@ -484,7 +530,8 @@ ErrorCode viewAndFrame(const fxPlugin* p, const fxViewDesc* v, const fxFrameBuil
     if (bad != ErrorCode::None) return bad;
     const std::string frameBad = frameBuilderProblem(f);
     if (frameBad.empty()) return ErrorCode::None;
-    return refuse(p, f && knownSize(f->size, sizeof *f) ? ErrorCode::NullArgument : ErrorCode::BadDescriptor,
+    return refuse(p, f && knownSize(f->size, sizeof *f, offsetof(fxFrameBuilder, sceneZBuffer)) ? ErrorCode::NullArgument
+                                                                                                : ErrorCode::BadDescriptor,
                   function, frameBad);
 }
 
@@ -515,8 +562,9 @@ int declareShadowPasses(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* 
     const SmokeShadow s = impl(p).declareShadowPasses(view, frame);
     if (s.valid()) {
         out->opacity = s.opacity.id;
+        const glm::mat4 hostWorldToShadow = fromHostWorld(p->up, s.worldToShadow);
         for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 4; ++r) out->worldToShadow[c * 4 + r] = s.worldToShadow[c][r];
+            for (int r = 0; r < 4; ++r) out->worldToShadow[c * 4 + r] = hostWorldToShadow[c][r];
     }
     return FX_ERROR_NONE;
 }
@@ -524,7 +572,7 @@ int declareShadowPasses(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* 
 int renderView(fxPlugin* p, const fxViewDesc* v) {
     if (!usable(p, "renderView")) return handleError(p);
     ViewInfo view;
-    const ErrorCode bad = viewFrom(p, v, "renderView", &view);
+    const ErrorCode bad = viewFrom(p, v, "renderView", &view, false);
     if (bad != ErrorCode::None) return code(bad);
     ImmediateView iv;
     iv.view = view;

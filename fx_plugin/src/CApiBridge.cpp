@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "../render/ShaderLoader.h"
+#include "WorldBasis.h"
 
 namespace fx {
 namespace {
@@ -34,8 +35,8 @@ WheelContact CHostAdapter::wheel(int index) const {
     if (!c_.wheel) return w;
     fxWheelContact c{};
     c_.wheel(c_.user, index, &c);
-    w.position = glm::vec3(c.position[0], c.position[1], c.position[2]);
-    w.velocity = glm::vec3(c.velocity[0], c.velocity[1], c.velocity[2]);
+    w.position = toPluginWorld(up_, glm::vec3(c.position[0], c.position[1], c.position[2]));
+    w.velocity = toPluginWorld(up_, glm::vec3(c.velocity[0], c.velocity[1], c.velocity[2]));
     w.slip = c.slip;
     // A surface outside the enum reads as asphalt (the emitter's default) rather than indexing
     // past the per-surface tables.
@@ -46,8 +47,8 @@ WheelContact CHostAdapter::wheel(int index) const {
     return w;
 }
 
-glm::vec3 CHostAdapter::wind() const { return vec3From(c_.wind, c_.user); }
-glm::vec3 CHostAdapter::collisionPoint() const { return vec3From(c_.collisionPoint, c_.user); }
+glm::vec3 CHostAdapter::wind() const { return toPluginWorld(up_, vec3From(c_.wind, c_.user)); }
+glm::vec3 CHostAdapter::collisionPoint() const { return toPluginWorld(up_, vec3From(c_.collisionPoint, c_.user)); }
 
 TextureRef CPassContext::texture(Target target, int attachment) {
     fxTextureRef c{};
@@ -124,7 +125,7 @@ std::string frameBuilderProblem(const fxFrameBuilder* f) {
     return std::string();
 }
 
-ViewInfo rightHandedView(const fxViewDesc& v) {
+ViewInfo rightHandedView(const fxViewDesc& v, UpAxis up) {
     ViewInfo out;
     out.name = v.name ? v.name : "";
     for (int c = 0; c < 4; ++c) {
@@ -138,13 +139,20 @@ ViewInfo rightHandedView(const fxViewDesc& v) {
         for (int c = 0; c < 4; ++c) out.view[c][2] = -out.view[c][2];
         out.proj[2] = -out.proj[2];
     }
-    out.eye = glm::vec3(v.eye[0], v.eye[1], v.eye[2]);
+    // The plugin's world is Y-up: view' = view B (after F, which acts on view space, not world).
+    out.view = viewFromPluginWorld(up, out.view);
+    out.eye = toPluginWorld(up, glm::vec3(v.eye[0], v.eye[1], v.eye[2]));
     out.nearPlane = v.nearPlane;
     out.farPlane = v.farPlane;
     out.width = v.width;
     out.height = v.height;
     out.depth = v.depthOrder == FX_DEPTH_REVERSED_Z ? DepthConvention::ReversedZ : DepthConvention::Standard;
     out.handedness = Handedness::RightHanded;
+    out.x = v.viewportX;
+    out.y = v.viewportY;
+    out.targetWidth = v.targetWidth;
+    out.targetHeight = v.targetHeight;
+    out.clipToHostScissor = v.clipToScissor != 0;
     return out;
 }
 

@@ -13,7 +13,9 @@ namespace fx {
 /// fxHostCallbacks (copied at creation) as a HostAdapter.
 class CHostAdapter final : public HostAdapter {
 public:
-    explicit CHostAdapter(const fxHostCallbacks& c) : c_(c) {}
+    /// `up`: the host world's up axis; every vector read from the callbacks is turned into the
+    /// plugin's Y-up world (WorldBasis.h).
+    explicit CHostAdapter(const fxHostCallbacks& c, UpAxis up = UpAxis::Y) : c_(c), up_(up) {}
     void* getProcAddress(const char* name) override { return c_.getProcAddress(c_.user, name); }
     // Each callback optional on its own: both are needed for any wheel.
     int wheelCount() const override { return c_.wheelCount && c_.wheel ? c_.wheelCount(c_.user) : 0; }
@@ -24,6 +26,7 @@ public:
 
 private:
     fxHostCallbacks c_;
+    UpAxis up_;
 };
 
 /// fxPassContext as a PassContext, for the duration of one pass.
@@ -63,6 +66,6 @@ std::string frameBuilderProblem(const fxFrameBuilder* f);
 
 /// The view as the plugin draws it: right-handed (a left-handed pair becomes view' = F view,
 /// proj' = proj F with F = diag(1, 1, -1, 1): the same clip coordinates, camera down -Z).
-ViewInfo rightHandedView(const fxViewDesc& v);
+ViewInfo rightHandedView(const fxViewDesc& v, UpAxis up = UpAxis::Y);
 
 }  // namespace fx

@@ -17,7 +17,8 @@ class FX_API PassContext {
 public:
     virtual ~PassContext() = default;
     /// Binds the target's framebuffer (GL_DRAW_FRAMEBUFFER) for drawing and sets the viewport to
-    /// its size. For sceneColor that framebuffer carries the scene's z-buffer as its depth
+    /// its size; for sceneColor, to the view's rectangle in it (ViewInfo::x, y, width, height;
+    /// API 2.1). For sceneColor that framebuffer carries the scene's z-buffer as its depth
     /// attachment (ViewInfo::depth says its convention).
     virtual void bindForDraw(Target target) = 0;
     /// A colour attachment of a target (attachment 0 unless stated); TextureRef::name 0 when the
@@ -33,12 +34,14 @@ public:
 class FX_API FrameBuilder {
 public:
     virtual ~FrameBuilder() = default;
-    /// The view's colour target (RGBA8 or better, ViewInfo::width x height) with the scene's
-    /// z-buffer attached. A pass that writes it draws into the frame.
+    /// The view's colour target (RGBA8 or better, ViewInfo::width x height, or targetWidth x
+    /// targetHeight with the view at (x, y) in it: API 2.1) with the scene's z-buffer attached.
+    /// A pass that writes it draws into the frame.
     virtual Target sceneColor() = 0;
     /// The scene depth. Contract:
     ///  - attachment 0: linear view-space depth, R32F, metres, positive (distance along -Z of
-    ///    the view), the same size as sceneColor (ViewInfo::width x height);
+    ///    the view), ViewInfo::width x height (the view alone), or sceneColor's size with the
+    ///    view at (ViewInfo::x, y) (API 2.1);
     ///  - where no geometry was drawn: any value >= ViewInfo::farPlane (engine_stub clears to
     ///    1e30), or 0; the plugin reads values <= 0 as "nothing drawn" too, so a host that clears
     ///    to 0 does not lose its smoke against the sky;

@@ -275,7 +275,9 @@ public:
 
     /// API 2.0: for engines without a frame graph. One call after the opaque scene and the sky
     /// draws this view's smoke into the framebuffer bound for drawing (GL_DRAW_FRAMEBUFFER, the
-    /// default framebuffer included) over view.width x view.height from its origin, with the
+    /// default framebuffer included) over view.width x view.height from the origin of the
+    /// viewport the host set (anywhere since API 2.1; with view.clipToHostScissor the host's
+    /// scissor clips it too), with the
     /// scene depth from `depth` (by default that framebuffer's own depth attachment, copied only
     /// when a pass reads depth). The plugin owns and pools its transient targets (resized with
     /// the view, freed when the plugin is destroyed; a frame without visible particles allocates
@@ -298,6 +300,9 @@ struct PluginImports {
                              ///< particle shaders from there instead (live shader edits)
     std::string dataDir;     ///< empty = the embedded smoke atlas; a folder = its smoke_atlas.png
     uint64_t seed = 0;       ///< global random seed for the reactions; 0 = the plugin's default
+    /// API 2.1: the host world's up axis (fx/fx.h, fxPluginDesc::upAxis, says what is turned and
+    /// why it is the plugin's and not a view's). Default +Y.
+    UpAxis upAxis = UpAxis::Y;
 };
 
 }  // namespace fx

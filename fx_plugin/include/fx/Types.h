@@ -35,12 +35,19 @@ enum class DepthConvention : uint8_t { Standard = 0, ReversedZ };
 /// proj' = proj F, F = diag(1, 1, -1, 1)), so the host hands in the matrices it draws with.
 enum class Handedness : uint8_t { RightHanded = 0, LeftHanded = 1 };
 
+/// Which axis of the host's world points up (PluginImports::upAxis, API 2.1). The plugin's world
+/// is Y-up; a Z-up host's vectors and views are turned into it at the boundary (fx/fx.h, upAxis).
+enum class UpAxis : uint8_t { Y = 0, Z = 1 };
+
 /// One view the host is rendering (chase camera, mirror...). Matrices as the host draws its scene
 /// (right-handed view space unless `handedness` says otherwise). `proj` is the projection the host draws its
 /// scene with, so it matches `depth`. Valid: width, height > 0; 0 < nearPlane < farPlane, all
 /// finite; finite matrices (declarePasses refuses anything else with ErrorCode::InvalidView).
+/// near/far need not equal proj's planes (the scene depth is decoded from proj alone); they bound
+/// which smoke is drawn and where the near fade starts: fx/fx.h, fxViewDesc, says what a mismatch
+/// does.
 /// Defaults: an identity camera at the origin, near 0.1 m, far 1 km, standard depth, size 0
-/// (which the host must set).
+/// (which the host must set), the view alone in its target (x = y = 0, target size = the view's).
 struct ViewInfo {
     const char* name = "";  ///< for pass names and debug groups; may be null (read as "")
     glm::mat4 view{1.0f};
@@ -52,6 +59,15 @@ struct ViewInfo {
     int height = 0;
     DepthConvention depth = DepthConvention::Standard;
     Handedness handedness = Handedness::RightHanded;  ///< API 2.0
+    /// API 2.1: the view is the rectangle (x, y, width, height) of sceneColor, which is
+    /// targetWidth x targetHeight (0 = width x height). PassContext::bindForDraw(sceneColor) sets
+    /// that rectangle as the viewport. renderView takes the origin from the viewport the host
+    /// set instead and reads neither. Scene depth textures: fx/fx.h, fxViewDesc, states the rule.
+    int x = 0, y = 0;
+    int targetWidth = 0, targetHeight = 0;
+    /// API 2.1, renderView only: the scissor test the host has enabled at the call clips the
+    /// smoke too. false: the host's scissor state is ignored (the 2.0 behaviour).
+    bool clipToHostScissor = false;
 };
 
 /// Where Plugin::renderView (the immediate path, API 2.0) finds the scene depth.

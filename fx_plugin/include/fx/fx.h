@@ -123,6 +123,8 @@ enum { FX_FORMAT_RGBA8 = 0, FX_FORMAT_RGBA16F, FX_FORMAT_R32F, FX_FORMAT_RG32F,
 /* How the host's z-buffer is ordered: standard (near = 0, LEQUAL) or reversed (near = 1, GEQUAL). */
 enum { FX_DEPTH_STANDARD = 0, FX_DEPTH_REVERSED_Z = 1 };
 enum { FX_RIGHT_HANDED = 0, FX_LEFT_HANDED = 1 };
+/* API 2.1: which world axis points up in the host's world (fxPluginDesc.upAxis). */
+enum { FX_UP_Y = 0, FX_UP_Z = 1 };
 /* Where fxRenderView finds the scene depth. */
 enum {
     FX_DEPTH_FROM_FRAMEBUFFER = 0, /* the depth attachment of the framebuffer bound for drawing
@@ -169,6 +171,16 @@ typedef struct fxPluginDesc {
     const char* shaderDir;         /* null/"" = embedded shaders; a folder = live shader edits */
     const char* dataDir;           /* null/"" = embedded smoke atlas */
     uint64_t seed;                 /* any value; 0 = the plugin's default */
+    /* API 2.1 (a 2.0 host's smaller size reads as FX_UP_Y). Which axis of the host's world points
+     * up: FX_UP_Y (0) or FX_UP_Z (a right-handed Z-up world: X east, Y north, Z up). The plugin's
+     * own world stays Y-up (reaction files, emission directions, gravity and wind fields are
+     * written Y-up); every world vector it receives is turned into it on the way in (wheel
+     * positions and velocities, wind, collision point, fireReaction's point, the sun's toSun,
+     * each view's view matrix and eye: view' = view B) and the shadow's worldToShadow is turned
+     * back on the way out, so a Z-up host gets the picture a Y-up host of the same scene gets.
+     * It is the plugin's, not a view's: the simulation (continueReaction, which has no view)
+     * runs in that basis before any view is declared, and every view sees the same particles. */
+    int upAxis;
 } fxPluginDesc;
 
 /* One view. Matrices as the host draws its scene with them; `handedness` says which way its
@@ -183,6 +195,15 @@ typedef struct fxViewDesc {
     float farPlane;        /* > nearPlane, finite: with an infinite projection matrix (which the
                               plugin linearises exactly), the distance past which depth reads as
                               "nothing drawn", e.g. the far end of the scene */
+    /* near/far and proj: the scene depth is decoded from proj (with depthOrder, clip control and
+     * depth range) alone, so near/far that differ from proj's planes never move a fade. They bound
+     * the smoke instead: particles wholly nearer than nearPlane or farther than farPlane are not
+     * drawn, render.near_fade fades from nearPlane, spherical particles are cut at it, and their
+     * depth-tested quads are held between 1.01 nearPlane and 0.99 farPlane. Planes wider than
+     * proj's cost nothing but culling (the GPU clips at proj's); a nearPlane beyond proj's near or
+     * a farPlane short of proj's far removes smoke the scene still shows. A host that computes its
+     * planes per frame (scene graphs fitting them to the scene's bounds) hands in each frame the
+     * planes that frame's proj was built with. */
     int width, height;     /* pixels of the colour target, 1 .. FX_MAX_VIEW_SIZE */
     int depthOrder;        /* FX_DEPTH_STANDARD / FX_DEPTH_REVERSED_Z: how the z-buffer is ordered */
     int handedness;        /* FX_RIGHT_HANDED (0) or FX_LEFT_HANDED */
@@ -193,6 +214,25 @@ typedef struct fxViewDesc {
     fxBool clipDepthZeroToOne; /* the host drew with glClipControl(..., GL_ZERO_TO_ONE) */
     float depthRangeNear, depthRangeFar; /* glDepthRange the host drew with, each in [0, 1], not
                                             equal; both 0 = [0, 1] */
+    /* API 2.1 (a 2.0 host's smaller size reads as 0): a view anywhere in the framebuffer
+     * (split screen, a picture in a picture).
+     * declarePasses: the view is the rectangle (viewportX, viewportY, width, height) of
+     * sceneColor, which is targetWidth x targetHeight (0 = width x height, the 2.0 contract);
+     * the host's bindForDraw(sceneColor) sets that rectangle as the viewport. sceneZBuffer is
+     * sceneColor's own depth, so it is targetWidth x targetHeight too.
+     * fxRenderView: the viewport the host set at the call places the view (its size must be
+     * width x height); viewportX/Y and targetWidth/Height are not read.
+     * Scene depth addressing (both paths): a depth texture of width x height holds the view
+     * alone, from its own (0, 0) (the plugin's copy of a bound framebuffer's depth is always
+     * that: it copies the view's rectangle); a depth texture of any other size holds the whole
+     * framebuffer, the view at the viewport's origin (the host's z-buffer of a split screen). */
+    int viewportX, viewportY;
+    int targetWidth, targetHeight;
+    /* fxRenderView only (API 2.1): 1 = the scissor test the host has enabled at the call clips
+     * the smoke too (a split screen scissored to each view, a letterbox); 0 = the plugin ignores
+     * the host's scissor state, as in 2.0 (a scissor left on by accident does not cut the smoke).
+     * On the frame-graph path a scissor the host's bindForDraw(sceneColor) sets always holds. */
+    fxBool clipToScissor;
 } fxViewDesc;
 
 typedef struct fxRenderOptions {
@@ -377,7 +417,10 @@ typedef struct fxApi {
                                fxSmokeShadow* out);                                 /* (GL) */
     /* The immediate path: after the opaque scene and the sky, draws the smoke into the
      * framebuffer bound for drawing (GL_DRAW_FRAMEBUFFER, the default one included) over
-     * view->width x view->height from its origin. Scene depth from view->depthSource. The
+     * view->width x view->height from the origin of the viewport the host set (anywhere in the
+     * framebuffer since API 2.1; with view->clipToScissor, a scissor test the host enabled
+     * clips the smoke too).
+     * Scene depth from view->depthSource. The
      * plugin owns and pools its transient targets (resized with the view, freed by destroy;
      * a frame without visible particles allocates and copies nothing). */
     int (*renderView)(fxPlugin* p, const fxViewDesc* view);                         /* (GL) */

@@ -52,6 +52,11 @@ inline fxViewDesc viewToC(const ViewInfo& v) {
     c.height = v.height;
     c.depthOrder = v.depth == DepthConvention::ReversedZ ? FX_DEPTH_REVERSED_Z : FX_DEPTH_STANDARD;
     c.handedness = v.handedness == Handedness::LeftHanded ? FX_LEFT_HANDED : FX_RIGHT_HANDED;
+    c.viewportX = v.x;
+    c.viewportY = v.y;
+    c.targetWidth = v.targetWidth;
+    c.targetHeight = v.targetHeight;
+    c.clipToScissor = v.clipToHostScissor ? 1 : 0;
     return c;
 }
 
@@ -380,6 +385,7 @@ inline std::unique_ptr<fx::Plugin> fxCreatePlugin(const fx::PluginImports& impor
     desc.shaderDir = imports.shaderDir.c_str();
     desc.dataDir = imports.dataDir.c_str();
     desc.seed = imports.seed;
+    desc.upAxis = imports.upAxis == fx::UpAxis::Z ? FX_UP_Z : FX_UP_Y;
     int code = FX_ERROR_NONE;
     fxPlugin* handle = api->create(&desc, &code);
     if (error) *error = static_cast<ErrorCode>(code);
