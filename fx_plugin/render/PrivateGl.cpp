@@ -48,7 +48,7 @@ const Needed kCore[] = {
     FX_NEEDED(glStencilFuncSeparate), FX_NEEDED(glStencilMaskSeparate), FX_NEEDED(glStencilOpSeparate),
     FX_NEEDED(glTexImage2D), FX_NEEDED(glTexParameteri), FX_NEEDED(glTexSubImage2D), FX_NEEDED(glUniform1f),
     FX_NEEDED(glUniform1fv), FX_NEEDED(glUniform1i), FX_NEEDED(glUniform2f), FX_NEEDED(glUniform2i),
-    FX_NEEDED(glUniform3f), FX_NEEDED(glUniform4f), FX_NEEDED(glUniform4fv), FX_NEEDED(glUniformMatrix4fv),
+    FX_NEEDED(glUniform3f), FX_NEEDED(glUniform4f), FX_NEEDED(glUniform4fv), FX_NEEDED(glUniform4i), FX_NEEDED(glUniformMatrix4fv),
     FX_NEEDED(glUseProgram), FX_NEEDED(glVertexAttribDivisor), FX_NEEDED(glVertexAttribPointer), FX_NEEDED(glViewport),
 };
 const Needed kCompatibility[] = {

@@ -153,10 +153,6 @@ fxPlugin* create(const fxPluginDesc* desc, int* error) {
                     sizeProblem("fxPluginDesc", desc->size, sizeof(fxPluginDesc), kPluginDescSize20));
     }
     const fxPluginDesc full = fullDesc(*desc);
-    if (full.upAxis != FX_UP_Y && full.upAxis != FX_UP_Z) {
-        return fail(ErrorCode::InvalidValue,
-                    "fxPluginDesc::upAxis = " + std::to_string(full.upAxis) + "; expected FX_UP_Y (0) or FX_UP_Z (1)");
-    }
     const uint32_t want = desc->apiVersion != 0 ? desc->apiVersion : FX_API_VERSION;
     if ((want >> 16) != FX_API_VERSION_MAJOR || (want & 0xFFFFu) > FX_API_VERSION_MINOR) {
         auto str = [](uint32_t v) { return std::to_string(v >> 16) + "." + std::to_string(v & 0xFFFFu); };
@@ -173,6 +169,11 @@ fxPlugin* create(const fxPluginDesc* desc, int* error) {
         return fail(ErrorCode::NullArgument, std::string("fxHostCallbacks::") + (h.log ? "getProcAddress" : "log") +
                                                  " is null; expected a function (wheelCount, wheel, wind and "
                                                  "collisionPoint may be null)");
+    }
+    // Checked once the host can hear it: a wrong value here is the host's to read in its log.
+    if (full.upAxis != FX_UP_Y && full.upAxis != FX_UP_Z) {
+        return fail(ErrorCode::InvalidValue,
+                    "fxPluginDesc::upAxis = " + std::to_string(full.upAxis) + "; expected FX_UP_Y (0) or FX_UP_Z (1)");
     }
     auto plugin = std::make_unique<fxPlugin>(h, full.upAxis == FX_UP_Z ? UpAxis::Z : UpAxis::Y);
     PluginImports imports;
