@@ -178,6 +178,7 @@ void MegaPasses::runComposite(PassContext& ctx, const MegaCloud& r, Target cloud
     setSceneDepthDecode(programs_->cDecode, r.depthDecode);
     sceneDepthBarrier(r.depthDecode);
     glUniform1f(programs_->cSoft, r.softScale);
+    setFogUniforms(programs_->cFog, r.view.fog);
     drawFullscreen();
 }
 

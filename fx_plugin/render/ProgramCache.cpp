@@ -41,6 +41,7 @@ ParticleProgram locate(GLuint program) {
     p.sceneDepth = glGetUniformLocation(program, "uSceneDepth");
     p.depthDecode.coeffs = glGetUniformLocation(program, "uDepthCoeffs");
     p.depthDecode.far = glGetUniformLocation(program, "uDepthFar");
+    p.fog = FogUniforms::of(program);
     p.trimmed = glGetUniformLocation(program, "uTrimmed");
     p.shapeBuckets = glGetUniformLocation(program, "uShapeBuckets");
     p.lodScale = glGetUniformLocation(program, "uLodScale");

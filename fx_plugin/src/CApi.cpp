@@ -322,7 +322,7 @@ fxBool pollShaderReload(fxPlugin* p, const fxDiagnosticSink* out) {
 /// refusal (logged under `function`).
 ErrorCode viewFrom(const fxPlugin* p, const fxViewDesc* v, const char* function, ViewInfo* out) {
     if (!v) return refuse(p, ErrorCode::NullArgument, function, "view is null; expected an fxViewDesc");
-    if (!knownSize(v->size, sizeof *v)) return refuse(p, ErrorCode::BadDescriptor, function, sizeProblem("fxViewDesc", v->size, sizeof *v));
+    if (!knownViewDescSize(v->size)) return refuse(p, ErrorCode::BadDescriptor, function, viewDescSizeProblem(v->size));
     if (v->handedness != FX_RIGHT_HANDED && v->handedness != FX_LEFT_HANDED) {
         return refuse(p, ErrorCode::InvalidView, function,
                       "handedness " + std::to_string(v->handedness) + "; expected FX_RIGHT_HANDED or FX_LEFT_HANDED");

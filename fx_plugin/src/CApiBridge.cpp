@@ -124,6 +124,19 @@ std::string frameBuilderProblem(const fxFrameBuilder* f) {
     return std::string();
 }
 
+namespace {
+// API 2.0's fxViewDesc ended with the depth range; 2.1 appended fog and the distance slice.
+constexpr size_t kViewDescSize20 = offsetof(fxViewDesc, fogMode);
+bool hasFogFields(const fxViewDesc& v) { return v.size >= offsetof(fxViewDesc, sliceMaxDistance) + sizeof(float); }
+}  // namespace
+
+bool knownViewDescSize(uint32_t size) { return size == sizeof(fxViewDesc) || size == kViewDescSize20; }
+
+std::string viewDescSizeProblem(uint32_t size) {
+    return "fxViewDesc::size = " + std::to_string(size) + "; expected " + std::to_string(sizeof(fxViewDesc)) +
+           " (API 2.1) or " + std::to_string(kViewDescSize20) + " (API 2.0)";
+}
+
 ViewInfo rightHandedView(const fxViewDesc& v) {
     ViewInfo out;
     out.name = v.name ? v.name : "";
@@ -145,6 +158,20 @@ ViewInfo rightHandedView(const fxViewDesc& v) {
     out.height = v.height;
     out.depth = v.depthOrder == FX_DEPTH_REVERSED_Z ? DepthConvention::ReversedZ : DepthConvention::Standard;
     out.handedness = Handedness::RightHanded;
+    if (hasFogFields(v)) {
+        // GL's defaults for what the mode leaves unread; a mode outside FX_FOG_* keeps its value
+        // so the view check refuses it (InvalidView).
+        out.fog.mode = v.fogMode >= 0 && v.fogMode <= 255 ? static_cast<Fog::Mode>(v.fogMode) : static_cast<Fog::Mode>(255);
+        out.fog.color = glm::vec3(v.fogColor[0], v.fogColor[1], v.fogColor[2]);
+        if (v.fogMode == FX_FOG_LINEAR) {
+            out.fog.start = v.fogStart;
+            out.fog.end = v.fogEnd;
+        } else {
+            out.fog.density = v.fogDensity;
+        }
+        out.slice.minDistance = v.sliceMinDistance;
+        out.slice.maxDistance = v.sliceMaxDistance;
+    }
     return out;
 }
 

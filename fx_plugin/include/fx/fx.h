@@ -82,6 +82,8 @@ enum { FX_FORMAT_RGBA8 = 0, FX_FORMAT_RGBA16F, FX_FORMAT_R32F, FX_FORMAT_RG32F,
 /* How the host's z-buffer is ordered: standard (near = 0, LEQUAL) or reversed (near = 1, GEQUAL). */
 enum { FX_DEPTH_STANDARD = 0, FX_DEPTH_REVERSED_Z = 1 };
 enum { FX_RIGHT_HANDED = 0, FX_LEFT_HANDED = 1 };
+/* API 2.1: fxViewDesc.fogMode, as GL_LINEAR / GL_EXP / GL_EXP2 fixed-function fog. */
+enum { FX_FOG_OFF = 0, FX_FOG_LINEAR = 1, FX_FOG_EXP = 2, FX_FOG_EXP2 = 3 };
 /* Where fxRenderView finds the scene depth. */
 enum {
     FX_DEPTH_FROM_FRAMEBUFFER = 0, /* the depth attachment of the framebuffer bound for drawing
@@ -148,6 +150,17 @@ typedef struct fxViewDesc {
     uint32_t depthTexture; /* GL texture name for FROM_TEXTURE / FROM_LINEAR */
     fxBool clipDepthZeroToOne; /* the host drew with glClipControl(..., GL_ZERO_TO_ONE) */
     float depthRangeNear, depthRangeFar; /* glDepthRange the host drew with; both 0 = [0, 1] */
+    /* API 2.1 (a 2.0 host's smaller size leaves them out: no fog, every particle).
+     * The host's fog (fx::Fog in fx/Types.h has the formulas): the smoke is fogged as GL's
+     * fixed-function fog fogs geometry at the same eye-space distance |z_eye|. */
+    int fogMode;            /* FX_FOG_*; 0 = off */
+    float fogColor[3];      /* linear RGB */
+    float fogStart, fogEnd; /* FX_FOG_LINEAR, metres; end != start */
+    float fogDensity;       /* FX_FOG_EXP / EXP2, 1/m, >= 0 */
+    /* Only particles whose view distance is in [sliceMinDistance, sliceMaxDistance) are drawn
+     * (fx::DistanceSlice): draw the smoke in slices around the host's own blended geometry.
+     * sliceMaxDistance 0 = no upper bound; both 0 = every particle. */
+    float sliceMinDistance, sliceMaxDistance;
 } fxViewDesc;
 
 typedef struct fxRenderOptions {

@@ -52,6 +52,15 @@ inline fxViewDesc viewToC(const ViewInfo& v) {
     c.height = v.height;
     c.depthOrder = v.depth == DepthConvention::ReversedZ ? FX_DEPTH_REVERSED_Z : FX_DEPTH_STANDARD;
     c.handedness = v.handedness == Handedness::LeftHanded ? FX_LEFT_HANDED : FX_RIGHT_HANDED;
+    c.fogMode = static_cast<int>(v.fog.mode);
+    c.fogColor[0] = v.fog.color.x;
+    c.fogColor[1] = v.fog.color.y;
+    c.fogColor[2] = v.fog.color.z;
+    c.fogStart = v.fog.start;
+    c.fogEnd = v.fog.end;
+    c.fogDensity = v.fog.density;
+    c.sliceMinDistance = v.slice.minDistance;
+    c.sliceMaxDistance = v.slice.maxDistance;
     return c;
 }
 
