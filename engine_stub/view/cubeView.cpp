@@ -67,6 +67,7 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
     // Camera parameters (view, fov, clip planes), then the buckets (culled, sorted).
     view_ = camera_.view();
     reversedZ_ = scene.renderer().reversedZ();
+    fog_ = scene.renderer().fog();
     proj_ = camera_.proj(height_ > 0 ? float(width_) / float(height_) : 1.0f, reversedZ_);
     recordBuckets(scene);
 
@@ -289,6 +290,12 @@ fx::ViewInfo cubeView::pluginView() const {
     info.depth = reversedZ_ ? fx::DepthConvention::ReversedZ : fx::DepthConvention::Standard;
     info.width = width_;
     info.height = height_;
+    // The fog the scene's shaders apply, so the smoke fades with the track behind it.
+    info.fog.mode = static_cast<fx::Fog::Mode>(static_cast<int>(fog_.mode));
+    info.fog.color = fog_.color;
+    info.fog.start = fog_.start;
+    info.fog.end = fog_.end;
+    info.fog.density = fog_.density;
     return info;
 }
 
