@@ -127,6 +127,8 @@ std::string frameBuilderProblem(const fxFrameBuilder* f) {
 namespace {
 // API 2.0's fxViewDesc ended with the depth range; 2.1 appended fog and the distance slice.
 constexpr size_t kViewDescSize20 = offsetof(fxViewDesc, fogMode);
+static_assert(kViewDescSize20 % alignof(fxViewDesc) == 0,
+              "a 2.0 host's sizeof(fxViewDesc) (with its tail padding) must equal the offset of fogMode");
 bool hasFogFields(const fxViewDesc& v) { return v.size >= offsetof(fxViewDesc, sliceMaxDistance) + sizeof(float); }
 }  // namespace
 
