@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include "FxTestHost.h"
@@ -90,7 +91,8 @@ std::string whiteAtlasDir() {
     const std::string dir = scratchDir() + "/white_atlas";
     static bool written = false;
     if (!written) {
-        std::system(("mkdir -p '" + dir + "'").c_str());
+        std::error_code ignored;
+        std::filesystem::create_directories(dir, ignored);
         Image img;
         img.width = img.height = 64;
         img.rgba.assign(size_t(64 * 64 * 4), 255);
