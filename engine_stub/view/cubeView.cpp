@@ -282,6 +282,12 @@ void cubeView::declarePluginPasses(rtt::FrameGraph& graph, const Targets& t, con
 fx::ViewInfo cubeView::pluginView() const {
     fx::ViewInfo info;
     info.name = name_.c_str();
+    // The fog the scene's shaders apply, so the smoke fades with the track behind it.
+    info.fog.mode = static_cast<fx::Fog::Mode>(static_cast<int>(fog_.mode));
+    info.fog.color = fog_.color;
+    info.fog.start = fog_.start;
+    info.fog.end = fog_.end;
+    info.fog.density = fog_.density;
     info.view = view_;
     info.proj = proj_;
     info.eye = camera_.eye;
@@ -290,12 +296,6 @@ fx::ViewInfo cubeView::pluginView() const {
     info.depth = reversedZ_ ? fx::DepthConvention::ReversedZ : fx::DepthConvention::Standard;
     info.width = width_;
     info.height = height_;
-    // The fog the scene's shaders apply, so the smoke fades with the track behind it.
-    info.fog.mode = static_cast<fx::Fog::Mode>(static_cast<int>(fog_.mode));
-    info.fog.color = fog_.color;
-    info.fog.start = fog_.start;
-    info.fog.end = fog_.end;
-    info.fog.density = fog_.density;
     return info;
 }
 

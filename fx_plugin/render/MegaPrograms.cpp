@@ -44,8 +44,8 @@ void MegaPrograms::build(const std::string& dir, std::vector<std::string>* error
     }
     locateUniforms(composite, {{&cCloud, "uCloud"}, {&cCloudDepth, "uCloudDepth"}, {&cScene, "uSceneDepth"},
                                {&cDecode.coeffs, "uDepthCoeffs"}, {&cDecode.far, "uDepthFar"},
-                               {&cSoft, "uSoftScale"}, {&cFog.mode, "uFogMode"}, {&cFog.color, "uFogColor"},
-                               {&cFog.params, "uFogParams"}});
+                               {&cSoft, "uSoftScale"}});
+    cFog = FogUniforms::of(composite);
 }
 
 }  // namespace fx

@@ -41,7 +41,6 @@ ParticleProgram locate(GLuint program) {
     p.sceneDepth = glGetUniformLocation(program, "uSceneDepth");
     p.depthDecode.coeffs = glGetUniformLocation(program, "uDepthCoeffs");
     p.depthDecode.far = glGetUniformLocation(program, "uDepthFar");
-    p.fog = FogUniforms::of(program);
     p.trimmed = glGetUniformLocation(program, "uTrimmed");
     p.shapeBuckets = glGetUniformLocation(program, "uShapeBuckets");
     p.lodScale = glGetUniformLocation(program, "uLodScale");
@@ -63,6 +62,7 @@ ParticleProgram locate(GLuint program) {
     p.tiles = glGetUniformLocation(program, "uTiles");
     p.tilesCoarse = glGetUniformLocation(program, "uTilesCoarse");
     p.viewSize = glGetUniformLocation(program, "uViewSize");
+    p.fog = FogUniforms::of(program);
     return p;
 }
 

@@ -94,7 +94,19 @@ namespace {
 // API 2.0's fxFrameBuilder ended with addPass; 2.1 appended the z-buffer.
 constexpr size_t kFrameBuilderSize20 = offsetof(fxFrameBuilder, sceneZBuffer);
 bool hasZBufferFields(const fxFrameBuilder& f) { return f.size >= sizeof(fxFrameBuilder); }
+// API 2.0's fxViewDesc ended with the depth range; 2.1 appended fog and the distance slice.
+constexpr size_t kViewDescSize20 = offsetof(fxViewDesc, fogMode);
+static_assert(kViewDescSize20 % alignof(fxViewDesc) == 0,
+              "a 2.0 host's sizeof(fxViewDesc) (with its tail padding) must equal the offset of fogMode");
+bool hasFogFields(const fxViewDesc& v) { return v.size >= offsetof(fxViewDesc, sliceMaxDistance) + sizeof(float); }
 }  // namespace
+
+bool knownViewDescSize(uint32_t size) { return size == sizeof(fxViewDesc) || size == kViewDescSize20; }
+
+std::string viewDescSizeProblem(uint32_t size) {
+    return "fxViewDesc::size = " + std::to_string(size) + "; expected " + std::to_string(sizeof(fxViewDesc)) +
+           " (API 2.1) or " + std::to_string(kViewDescSize20) + " (API 2.0)";
+}
 
 Target CFrameBuilder::sceneZBuffer() {
     return Target{hasZBufferFields(c_) && c_.sceneZBuffer ? c_.sceneZBuffer(c_.user) : 0u};
@@ -124,21 +136,6 @@ std::string frameBuilderProblem(const fxFrameBuilder* f) {
     return std::string();
 }
 
-namespace {
-// API 2.0's fxViewDesc ended with the depth range; 2.1 appended fog and the distance slice.
-constexpr size_t kViewDescSize20 = offsetof(fxViewDesc, fogMode);
-static_assert(kViewDescSize20 % alignof(fxViewDesc) == 0,
-              "a 2.0 host's sizeof(fxViewDesc) (with its tail padding) must equal the offset of fogMode");
-bool hasFogFields(const fxViewDesc& v) { return v.size >= offsetof(fxViewDesc, sliceMaxDistance) + sizeof(float); }
-}  // namespace
-
-bool knownViewDescSize(uint32_t size) { return size == sizeof(fxViewDesc) || size == kViewDescSize20; }
-
-std::string viewDescSizeProblem(uint32_t size) {
-    return "fxViewDesc::size = " + std::to_string(size) + "; expected " + std::to_string(sizeof(fxViewDesc)) +
-           " (API 2.1) or " + std::to_string(kViewDescSize20) + " (API 2.0)";
-}
-
 ViewInfo rightHandedView(const fxViewDesc& v) {
     ViewInfo out;
     out.name = v.name ? v.name : "";
@@ -158,8 +155,6 @@ ViewInfo rightHandedView(const fxViewDesc& v) {
     out.farPlane = v.farPlane;
     out.width = v.width;
     out.height = v.height;
-    out.depth = v.depthOrder == FX_DEPTH_REVERSED_Z ? DepthConvention::ReversedZ : DepthConvention::Standard;
-    out.handedness = Handedness::RightHanded;
     if (hasFogFields(v)) {
         // GL's defaults for what the mode leaves unread; a mode outside FX_FOG_* keeps its value
         // so the view check refuses it (InvalidView).
@@ -174,6 +169,8 @@ ViewInfo rightHandedView(const fxViewDesc& v) {
         out.slice.minDistance = v.sliceMinDistance;
         out.slice.maxDistance = v.sliceMaxDistance;
     }
+    out.depth = v.depthOrder == FX_DEPTH_REVERSED_Z ? DepthConvention::ReversedZ : DepthConvention::Standard;
+    out.handedness = Handedness::RightHanded;
     return out;
 }
 

@@ -60,11 +60,12 @@ private:
 /// "" when `f` can be used, else what is wrong with it.
 std::string frameBuilderProblem(const fxFrameBuilder* f);
 
-/// The view as the plugin draws it: right-handed (a left-handed pair becomes view' = F view,
-/// proj' = proj F with F = diag(1, 1, -1, 1): the same clip coordinates, camera down -Z).
-ViewInfo rightHandedView(const fxViewDesc& v);
 /// fxViewDesc sizes the library reads: API 2.1's and 2.0's (without fog and slice: their defaults).
 bool knownViewDescSize(uint32_t size);
 std::string viewDescSizeProblem(uint32_t size);
+
+/// The view as the plugin draws it: right-handed (a left-handed pair becomes view' = F view,
+/// proj' = proj F with F = diag(1, 1, -1, 1): the same clip coordinates, camera down -Z).
+ViewInfo rightHandedView(const fxViewDesc& v);
 
 }  // namespace fx

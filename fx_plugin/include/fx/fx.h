@@ -82,8 +82,6 @@ enum { FX_FORMAT_RGBA8 = 0, FX_FORMAT_RGBA16F, FX_FORMAT_R32F, FX_FORMAT_RG32F,
 /* How the host's z-buffer is ordered: standard (near = 0, LEQUAL) or reversed (near = 1, GEQUAL). */
 enum { FX_DEPTH_STANDARD = 0, FX_DEPTH_REVERSED_Z = 1 };
 enum { FX_RIGHT_HANDED = 0, FX_LEFT_HANDED = 1 };
-/* API 2.1: fxViewDesc.fogMode, as GL_LINEAR / GL_EXP / GL_EXP2 fixed-function fog. */
-enum { FX_FOG_OFF = 0, FX_FOG_LINEAR = 1, FX_FOG_EXP = 2, FX_FOG_EXP2 = 3 };
 /* Where fxRenderView finds the scene depth. */
 enum {
     FX_DEPTH_FROM_FRAMEBUFFER = 0, /* the depth attachment of the framebuffer bound for drawing
@@ -92,6 +90,8 @@ enum {
     FX_DEPTH_FROM_LINEAR = 2,      /* depthTexture: R32F linear view depth in metres (the 1.x form) */
     FX_DEPTH_FROM_NOTHING = 3      /* no scene depth: particles are neither z-tested nor faded */
 };
+/* API 2.1: fxViewDesc.fogMode, as GL_LINEAR / GL_EXP / GL_EXP2 fixed-function fog. */
+enum { FX_FOG_OFF = 0, FX_FOG_LINEAR = 1, FX_FOG_EXP = 2, FX_FOG_EXP2 = 3 };
 enum { FX_KEY_NUMBER = 0, FX_KEY_INTEGER, FX_KEY_BOOL, FX_KEY_CHOICE, FX_KEY_CHOICE_LIST,
        FX_KEY_NUMBER_RANGE, FX_KEY_INTEGER_PAIR, FX_KEY_COLOR_RAMP, FX_KEY_NAME };
 

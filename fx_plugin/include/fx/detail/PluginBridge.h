@@ -46,12 +46,6 @@ inline fxViewDesc viewToC(const ViewInfo& v) {
     c.eye[0] = v.eye.x;
     c.eye[1] = v.eye.y;
     c.eye[2] = v.eye.z;
-    c.nearPlane = v.nearPlane;
-    c.farPlane = v.farPlane;
-    c.width = v.width;
-    c.height = v.height;
-    c.depthOrder = v.depth == DepthConvention::ReversedZ ? FX_DEPTH_REVERSED_Z : FX_DEPTH_STANDARD;
-    c.handedness = v.handedness == Handedness::LeftHanded ? FX_LEFT_HANDED : FX_RIGHT_HANDED;
     c.fogMode = static_cast<int>(v.fog.mode);
     c.fogColor[0] = v.fog.color.x;
     c.fogColor[1] = v.fog.color.y;
@@ -61,6 +55,12 @@ inline fxViewDesc viewToC(const ViewInfo& v) {
     c.fogDensity = v.fog.density;
     c.sliceMinDistance = v.slice.minDistance;
     c.sliceMaxDistance = v.slice.maxDistance;
+    c.nearPlane = v.nearPlane;
+    c.farPlane = v.farPlane;
+    c.width = v.width;
+    c.height = v.height;
+    c.depthOrder = v.depth == DepthConvention::ReversedZ ? FX_DEPTH_REVERSED_Z : FX_DEPTH_STANDARD;
+    c.handedness = v.handedness == Handedness::LeftHanded ? FX_LEFT_HANDED : FX_RIGHT_HANDED;
     return c;
 }
 
