@@ -23,18 +23,6 @@ struct WheelContact {
 /// Severity of a message the plugin hands to the host's log.
 enum class LogLevel : uint8_t { Info, Warning, Error };
 
-/// How the host's z-buffer (the depth attachment of sceneColor / sceneDepth) maps distance.
-/// The plugin's depth-tested passes follow it: Standard tests LEQUAL (near = 0, cleared to 1),
-/// ReversedZ tests GEQUAL (near = 1, cleared to 0; glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)
-/// with a float depth buffer). The linear depth texture is the same under both.
-enum class DepthConvention : uint8_t { Standard = 0, ReversedZ };
-
-/// Which way the host's camera looks in its view space (API 2.0): right-handed, down -Z (OpenGL),
-/// or left-handed, down +Z (Direct3D-style engines such as Irrlicht). The plugin turns a
-/// left-handed pair into the right-handed one with the same clip coordinates (view' = F view,
-/// proj' = proj F, F = diag(1, 1, -1, 1)), so the host hands in the matrices it draws with.
-enum class Handedness : uint8_t { RightHanded = 0, LeftHanded = 1 };
-
 /// How the host fogs its geometry (ViewInfo::fog, API 2.1): fixed-function GL's fog, which the
 /// plugin applies to the smoke at the same distance, so smoke fades with the geometry around it.
 /// Factor f (1 = no fog), clamped to [0, 1], of the fragment's eye-space distance c = |z_eye| (the
@@ -67,6 +55,18 @@ struct DistanceSlice {
         return distance >= minDistance && (maxDistance == 0.0f || distance < maxDistance);
     }
 };
+
+/// How the host's z-buffer (the depth attachment of sceneColor / sceneDepth) maps distance.
+/// The plugin's depth-tested passes follow it: Standard tests LEQUAL (near = 0, cleared to 1),
+/// ReversedZ tests GEQUAL (near = 1, cleared to 0; glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)
+/// with a float depth buffer). The linear depth texture is the same under both.
+enum class DepthConvention : uint8_t { Standard = 0, ReversedZ };
+
+/// Which way the host's camera looks in its view space (API 2.0): right-handed, down -Z (OpenGL),
+/// or left-handed, down +Z (Direct3D-style engines such as Irrlicht). The plugin turns a
+/// left-handed pair into the right-handed one with the same clip coordinates (view' = F view,
+/// proj' = proj F, F = diag(1, 1, -1, 1)), so the host hands in the matrices it draws with.
+enum class Handedness : uint8_t { RightHanded = 0, LeftHanded = 1 };
 
 /// One view the host is rendering (chase camera, mirror...). Matrices as the host draws its scene
 /// (right-handed view space unless `handedness` says otherwise). `proj` is the projection the host draws its
