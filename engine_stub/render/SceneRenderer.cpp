@@ -160,7 +160,7 @@ void SceneRenderer::sky(const CameraMatrices& cam) const {
 
 void SceneRenderer::sprites(const std::vector<cubeParticleSystem::SpriteVertex>& vertices,
                             const glm::mat4& viewProj, const glm::vec3& tint) {
-    legacySprites_.draw(vertices, glm::value_ptr(viewProj), tint, reversedZ_);
+    legacySprites_.draw(vertices, glm::value_ptr(viewProj), tint, reversedZ_, fog_);
 }
 
 void SceneRenderer::inset(uint32_t texture, int iw, int ih, bool flipX, int w, int h) const {
