@@ -23,6 +23,6 @@ void main() {
         a *= 0.5;
     }
     vec3 c = shadeLambert(uBaseColor.rgb * (0.6 + 0.8 * v), normalize(vNormal), smokeShadow(vWorldPos));
-    oColor = vec4(c, 1.0);
+    oColor = vec4(applyFog(c, vViewPos.z), 1.0);
     oLinearDepth = -vViewPos.z;
 }

@@ -18,5 +18,5 @@ void main() {
 #ifdef FX_LIT
     texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vTurn), texel.a, vSunLight, vPhase);
 #endif
-    oColor = shadeOutput(vRamp, vFade, texel, coverage);
+    oColor = applyFog(shadeOutput(vRamp, vFade, texel, coverage), depth);
 }

@@ -13,5 +13,6 @@ void main() {
     vec3 zenith = vec3(0.26, 0.45, 0.78);
     vec3 sky = mix(kHazeColor, zenith, smoothstep(0.0, 0.55, up));
     float sun = pow(max(dot(dir, kSunDir), 0.0), 400.0);
-    oColor = vec4(sky + kSunColor * sun, 1.0);
+    // The sky lies past any fog's reach: fully fogged where fog is on (f = 0 at infinity).
+    oColor = vec4(applyFog(sky + kSunColor * sun, 1.0e30), 1.0);
 }

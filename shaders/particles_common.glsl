@@ -31,6 +31,7 @@ uniform sampler2D uRamp;       // colour by life: one row per reaction, kRampTex
 uniform sampler2D uSceneDepth; // the scene depth of the target being drawn (particles_scene_depth.glsl)
 
 #include "particles_scene_depth.glsl"
+#include "particles_fog.glsl"
 
 const float kRampTexels = 64.0;  // keep equal to ColorRampTexture::kTexels
 

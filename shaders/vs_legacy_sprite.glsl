@@ -7,9 +7,11 @@ uniform mat4 uViewProj;
 
 out vec2 vUV;
 out float vAlpha;
+out float vEyeDepth;  // -z_eye: a perspective projection's clip w
 
 void main() {
     vUV = aUV;
     vAlpha = aAlpha;
     gl_Position = uViewProj * vec4(aPosition, 1.0);
+    vEyeDepth = gl_Position.w;
 }

@@ -34,6 +34,7 @@ uniform float uSizeV[16];
 
 out vec2 vLocal;
 flat out vec4 vColor;     // straight colour, alpha including the life fade
+flat out float vDepth;    // the spark's view distance, metres (-z_view: the streak lies at that z)
 
 const float kStreakSeconds = 0.05;
 
@@ -109,5 +110,6 @@ void main() {
     float halfSize = 0.5 * size;
     vec2 offset = along * aCorner.x * (halfSize + 0.5 * speed * kStreakSeconds) + across * aCorner.y * halfSize;
     vLocal = aCorner;
+    vDepth = -c.z;
     gl_Position = uProj * vec4(c + vec3(offset, 0.0), 1.0);
 }

@@ -86,6 +86,7 @@ bool Game::InitProc(std::string* error) {
     // Options were validated (parseOptions); a harness that set them directly gets them clamped.
     sun_ = sunFromAngles(options_.sunAzimuth, options_.sunElevation);
     scene_.renderer().setSun(sun_);
+    scene_.renderer().setFog(options_.fog);  // the views hand it to the plugin (cubeView::pluginView)
     rtt::RenderTargetPoolDesc poolDesc;
     poolDesc.framesUntilFree = std::max(1, options_.poolFramesUntilFree);
     pool_ = std::make_unique<rtt::RenderTargetPool>(poolDesc);

@@ -188,6 +188,9 @@ std::string usage() {
         "  --sun AZ,EL            sun direction in degrees: azimuth in the ground plane from +X\n"
         "                         (the track) toward +Z, any value (wraps); elevation above the\n"
         "                         horizon, 1..90 (default 131.2,58.0)\n"
+        "  --fog START,END | exp,D | exp2,D  fog the track and the smoke as GL's fixed-function\n"
+        "                         fog does: linear from START to END metres, or exp / exp2 with\n"
+        "                         density D per metre, in the horizon's haze colour (default off)\n"
         "  --no-mirror            leave out the rear-view mirror view\n"
         "  --split                two-player split screen: two chase cameras (behind the car, and\n"
         "                         beside it from its left) side by side in one framebuffer, each\n"
@@ -392,6 +395,29 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
             }
             o.sunAzimuth = az;
             o.sunElevation = el;
+        } else if (a == "--fog") {
+            if (!need(i, 1, a)) return false;
+            const std::string text = argv[++i];
+            const std::vector<std::string> parts = splitCommas(text);
+            double x = 0.0, y = 0.0;
+            SceneFog fog;
+            bool ok = parts.size() == 2;
+            if (ok && (parts[0] == "exp" || parts[0] == "exp2")) {
+                fog.mode = parts[0] == "exp" ? SceneFog::Mode::Exp : SceneFog::Mode::Exp2;
+                ok = parseDouble(parts[1], 0.0, 1e3, &x);
+                fog.density = float(x);
+            } else if (ok) {
+                fog.mode = SceneFog::Mode::Linear;
+                ok = parseDouble(parts[0], 0.0, 1e7, &x) && parseDouble(parts[1], 0.0, 1e7, &y) && y > x;
+                fog.start = float(x);
+                fog.end = float(y);
+            }
+            if (!ok) {
+                *error = "--fog: expected START,END (metres, 0 <= START < END), exp,DENSITY or exp2,DENSITY "
+                         "(0..1000 per metre), got '" + text + "'";
+                return false;
+            }
+            o.fog = fog;
         } else if (a == "--stats-json") {
             if (!path(i, a, &o.statsJson)) return false;
         } else {

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "platform/Platform.h"
+#include "render/SceneFog.h"
 #include "render/SunLight.h"
 
 namespace cube {
@@ -55,6 +56,9 @@ struct Options {
     /// horizon (render/SunLight.h). Default: the race scene's sun before issue 16.
     double sunAzimuth = kDefaultSunAzimuthDeg;
     double sunElevation = kDefaultSunElevationDeg;
+    /// --fog: the track's fog, which the plugin then applies to the smoke too. Default off: the
+    /// golden frames and every benchmark scenario are drawn without it.
+    SceneFog fog;
     float nearPlane = 0.1f;
     float farPlane = 2000.0f;
     /// Reversed-Z in a 32-bit float z-buffer where the context has clip control (GL 4.5 /

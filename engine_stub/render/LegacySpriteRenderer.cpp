@@ -44,7 +44,8 @@ bool LegacySpriteRenderer::init(std::string* error) {
 }
 
 void LegacySpriteRenderer::draw(const std::vector<cubeParticleSystem::SpriteVertex>& vertices,
-                                const float* viewProj, const glm::vec3& tint, bool reversedZ) {
+                                const float* viewProj, const glm::vec3& tint, bool reversedZ,
+                                const SceneFog& fog) {
     if (vertices.empty() || !program_.valid()) return;
     using V = cubeParticleSystem::SpriteVertex;
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
@@ -58,6 +59,9 @@ void LegacySpriteRenderer::draw(const std::vector<cubeParticleSystem::SpriteVert
     glUniformMatrix4fv(program_.uniform("uViewProj"), 1, GL_FALSE, viewProj);
     glUniform3f(program_.uniform("uTint"), tint.x, tint.y, tint.z);
     glUniform1i(program_.uniform("uAtlas"), 0);
+    glUniform1i(program_.uniform("uFogMode"), static_cast<int>(fog.mode));
+    glUniform3f(program_.uniform("uFogColor"), fog.color.x, fog.color.y, fog.color.z);
+    glUniform3f(program_.uniform("uFogParams"), fog.start, fog.end, fog.density);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, atlas_);
     glEnable(GL_DEPTH_TEST);

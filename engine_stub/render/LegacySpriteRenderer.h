@@ -6,6 +6,7 @@
 
 #include "gl/Gl.h"
 #include "gl/Program.h"
+#include "render/SceneFog.h"
 #include "scene/cubeParticleSystem.h"
 
 namespace cube {
@@ -15,9 +16,10 @@ public:
     ~LegacySpriteRenderer();
     bool init(std::string* error);
     /// Draws `vertices` (triangles) with the view-projection matrix into the bound framebuffer,
-    /// depth-tested without writes (LEQUAL, or GEQUAL on a reversed-Z buffer).
+    /// depth-tested without writes (LEQUAL, or GEQUAL on a reversed-Z buffer), fogged as the
+    /// scene is (`fog`; off: the sprites as before).
     void draw(const std::vector<cubeParticleSystem::SpriteVertex>& vertices, const float* viewProj,
-              const glm::vec3& tint, bool reversedZ);
+              const glm::vec3& tint, bool reversedZ, const SceneFog& fog = SceneFog{});
 
 private:
     gl::Program program_;

@@ -25,6 +25,13 @@ void setSunUniforms(const gl::Program& p, const SunLight& sun) {
     glUniform3fv(p.uniform("uGroundAmbient"), 1, glm::value_ptr(sun.ambientGround));
 }
 
+// The fog of shaders/common.glsl (mode 0: off, the picture as without fog, bit for bit).
+void setFogUniforms(const gl::Program& p, const SceneFog& fog) {
+    glUniform1i(p.uniform("uFogMode"), static_cast<int>(fog.mode));
+    glUniform3fv(p.uniform("uFogColor"), 1, glm::value_ptr(fog.color));
+    glUniform3f(p.uniform("uFogParams"), fog.start, fog.end, fog.density);
+}
+
 // The texture unit of the smoke's opacity map in the lit scene programs.
 constexpr int kSmokeUnit = 4;
 
@@ -71,6 +78,7 @@ bool SceneRenderer::init(const SceneData& data, std::string* error, bool reverse
 void SceneRenderer::useLitProgram(const gl::Program& p, const CameraMatrices& cam) const {
     setCamera(p, cam);
     setSunUniforms(p, sun_);
+    setFogUniforms(p, fog_);
     // The smoke's shadow on texture unit kSmokeUnit (unbound again by the opaque pass).
     glActiveTexture(GL_TEXTURE0 + kSmokeUnit);
     glBindTexture(GL_TEXTURE_2D, smokeTexture_);
@@ -142,6 +150,7 @@ void SceneRenderer::sky(const CameraMatrices& cam) const {
     ScopedPassState state({true, nearerTest(reversedZ_, true), false, false});
     glUseProgram(skyProgram_.id());
     setSunUniforms(skyProgram_, sun_);
+    setFogUniforms(skyProgram_, fog_);
     const glm::mat4 inv = glm::inverse(cam.proj * glm::mat4(glm::mat3(cam.view)));
     glUniformMatrix4fv(skyProgram_.uniform("uInvViewProj"), 1, GL_FALSE, glm::value_ptr(inv));
     glUniform1f(skyProgram_.uniform("uDepth"), reversedZ_ ? 0.0f : 1.0f);  // the far plane
@@ -151,7 +160,7 @@ void SceneRenderer::sky(const CameraMatrices& cam) const {
 
 void SceneRenderer::sprites(const std::vector<cubeParticleSystem::SpriteVertex>& vertices,
                             const glm::mat4& viewProj, const glm::vec3& tint) {
-    legacySprites_.draw(vertices, glm::value_ptr(viewProj), tint, reversedZ_);
+    legacySprites_.draw(vertices, glm::value_ptr(viewProj), tint, reversedZ_, fog_);
 }
 
 void SceneRenderer::inset(uint32_t texture, int iw, int ih, bool flipX, int w, int h) const {

@@ -13,6 +13,7 @@
 #include "render/GpuScene.h"
 #include "render/Hud.h"
 #include "render/LegacySpriteRenderer.h"
+#include "render/SceneFog.h"
 #include "render/SunLight.h"
 #include "scene/SceneData.h"
 
@@ -73,6 +74,10 @@ public:
         smokeAbsorption_ = texture ? absorption : 0.0f;
     }
     const SunLight& sun() const { return sun_; }
+    /// The fog every later opaque, alpha-tested and sky pass applies (no GL until then); the
+    /// views hand the same fog to the plugin. Default: off.
+    void setFog(const SceneFog& fog) { fog_ = fog; }
+    const SceneFog& fog() const { return fog_; }
 
     /// The mesh table (records MeshDraws for the game side; no GL).
     const GpuScene& meshes() const { return gpu_; }
@@ -105,6 +110,7 @@ private:
 
     GpuScene gpu_;
     SunLight sun_;
+    SceneFog fog_;
     uint32_t smokeTexture_ = 0;
     glm::mat4 worldToSmoke_{1.0f};
     float smokeAbsorption_ = 0.0f;

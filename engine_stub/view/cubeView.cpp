@@ -79,6 +79,7 @@ rtt::FrameGraphResource cubeView::RenderObjects(cubeScene& scene, rtt::FrameGrap
     // Camera parameters (view, fov, clip planes), then the buckets (culled, sorted).
     view_ = camera_.view();
     reversedZ_ = scene.renderer().reversedZ();
+    fog_ = scene.renderer().fog();
     proj_ = camera_.proj(height_ > 0 ? float(width_) / float(height_) : 1.0f, reversedZ_);
     recordBuckets(scene);
 
@@ -306,6 +307,12 @@ void cubeView::declarePluginPasses(rtt::FrameGraph& graph, const Targets& t, con
 fx::ViewInfo cubeView::pluginView() const {
     fx::ViewInfo info;
     info.name = name_.c_str();
+    // The fog the scene's shaders apply, so the smoke fades with the track behind it.
+    info.fog.mode = static_cast<fx::Fog::Mode>(static_cast<int>(fog_.mode));
+    info.fog.color = fog_.color;
+    info.fog.start = fog_.start;
+    info.fog.end = fog_.end;
+    info.fog.density = fog_.density;
     info.view = view_;
     info.proj = proj_;
     info.eye = camera_.eye;

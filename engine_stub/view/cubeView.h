@@ -65,6 +65,9 @@ public:
 
     /// Draws recorded in the last RenderObjects, per bucket (for tests and stats).
     size_t opaqueDraws() const { return opaque_.size(); }
+    /// The view as the plugin gets it (matrices, size, depth convention and the scene's fog),
+    /// as of the last RenderObjects.
+    fx::ViewInfo pluginView() const;
 
 private:
     struct Targets {
@@ -83,7 +86,6 @@ private:
     /// The smoke's opacity map (the plugin's declareShadowPasses), in the shadow bucket before
     /// the opaque pass that darkens the ground with it.
     void declareSmokeShadow(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
-    fx::ViewInfo pluginView() const;
     void declareDepthReadback(rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
     void declareHud(cubeScene& scene, rtt::FrameGraph& graph, const Targets& t, const FrameSettings& s);
     CameraMatrices cameraMatrices() const;
@@ -102,6 +104,7 @@ private:
     int x_ = 0, y_ = 0, targetWidth_ = 0, targetHeight_ = 0;
     glm::mat4 view_{1.0f}, proj_{1.0f};
     bool reversedZ_ = false;  ///< the scene renderer's depth convention, read each frame
+    SceneFog fog_;            ///< the scene renderer's fog, read each frame (the plugin gets it too)
     // Buckets, recorded by the game side; the pass callbacks only draw them.
     std::vector<MeshDraw> all_, opaque_, alphaTested_;
     std::vector<std::string> names_;

@@ -22,6 +22,13 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
     // Camera forward in world space: minus the third row of the view rotation.
     const glm::vec3 forward(-view.view[0][2], -view.view[1][2], -view.view[2][2]);
     constexpr float kHalfDiagonal = 0.70710678f;
+    // The distance slice (ViewInfo::slice): the centre's distance along the view axis, -z_view,
+    // which orders particles as the back-to-front sort does; a particle lies wholly in one slice.
+    const bool sliced = !view.slice.everything();
+    const glm::vec4 viewZRow(view.view[0][2], view.view[1][2], view.view[2][2], view.view[3][2]);
+    auto viewDistance = [&](float px, float py, float pz) {
+        return -(viewZRow.x * px + viewZRow.y * py + viewZRow.z * pz + viewZRow.w);
+    };
 
     for (int b = 0; b < batchCount; ++b) {
         const ParticleBatch& in = batches[b];
@@ -50,6 +57,7 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
             if (!frustum.intersectsSphere(glm::vec3(x[i], y[i], z[i]), size[i] * kHalfDiagonal)) {
                 continue;
             }
+            if (sliced && !view.slice.contains(viewDistance(x[i], y[i], z[i]))) continue;
             ParticleInstance p;
             p.x = x[i];
             p.y = y[i];

@@ -4,6 +4,7 @@
 // and whether any of them needs the scene depth. DrawListBuilder fills it from the pools:
 //  - culling: each particle's bounding sphere (radius = half the quad diagonal, size / sqrt 2,
 //    which also holds the spherical technique's sphere) against the view frustum;
+//  - slice: only particles whose view distance lies in ViewInfo::slice (default: all);
 //  - order: back to front (sim/ParticleSorter) for reactions that need it
 //    (ReactionRuntime::needsSorting: sorted alpha blending), pool order otherwise (additive);
 //    reactions are drawn in reaction order (no sorting across reactions);

@@ -180,6 +180,7 @@ void MegaPasses::runComposite(PassContext& ctx, const MegaCloud& r, Target cloud
     setSceneDepthDecode(programs_->cDecode, r.depthDecode.placedFor(depthRef, r.view, true));  // into sceneColor
     sceneDepthBarrier(r.depthDecode);
     glUniform1f(programs_->cSoft, r.softScale);
+    setFogUniforms(programs_->cFog, r.view.fog);
     drawFullscreen();
 }
 

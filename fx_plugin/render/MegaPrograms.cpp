@@ -47,6 +47,7 @@ void MegaPrograms::build(const std::string& dir, std::vector<std::string>* error
                                {&cDecode.coeffs, "uDepthCoeffs"}, {&cDecode.far, "uDepthFar"},
                                {&cDecode.window, "uDepthWindow"}, {&cDecode.drawOrigin, "uDrawOrigin"},
                                {&cSoft, "uSoftScale"}});
+    cFog = FogUniforms::of(composite);
 }
 
 }  // namespace fx

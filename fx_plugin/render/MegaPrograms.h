@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "FogUniforms.h"
 #include "SceneDepthSource.h"
 
 namespace fx {
@@ -23,6 +24,7 @@ struct MegaPrograms {
     } b[2];  // [0] blur, [1] blur + shade
     int cCloud = -1, cCloudDepth = -1, cScene = -1, cSoft = -1;
     SceneDepthUniforms cDecode;
+    FogUniforms cFog;
 
     MegaPrograms() = default;
     ~MegaPrograms();

@@ -111,6 +111,7 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
         glUniform1i(p.ramp, kRampUnit);
         glUniform1i(p.sceneDepth, kSceneDepthUnit);
         setSceneDepthDecode(p.depthDecode, in.depthDecode);
+        setFogUniforms(p.fog, view.fog);
         if (p.tiles >= 0) {
             glUniform1i(p.tiles, FadeClassifier::kTileUnit);
             glUniform1i(p.tilesCoarse, FadeClassifier::kCoarseUnit);

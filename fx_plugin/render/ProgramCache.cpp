@@ -61,6 +61,7 @@ ParticleProgram locate(GLuint program) {
     p.tiles = glGetUniformLocation(program, "uTiles");
     p.tilesCoarse = glGetUniformLocation(program, "uTilesCoarse");
     p.viewSize = glGetUniformLocation(program, "uViewSize");
+    p.fog = FogUniforms::of(program);
     return p;
 }
 

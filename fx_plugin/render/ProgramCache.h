@@ -37,6 +37,7 @@
 #include "base/TextIo.h"
 #include "fx/Plugin.h"
 
+#include "FogUniforms.h"
 #include "SceneDepthSource.h"
 
 namespace fx {
@@ -48,6 +49,7 @@ struct ParticleProgram {
     int rampRow = -1, blendMode = -1, softScale = -1, contrastPower = -1, nearFade = -1;
     int atlas = -1, ramp = -1, sceneDepth = -1;
     SceneDepthUniforms depthDecode;
+    FogUniforms fog;
     int trimmed = -1, shapeBuckets = -1, lodScale = -1, shapes = -1, shapeInfo = -1, pixelSlope = -1;
     int powerWhole = -1, powerHalf = -1;
     // FX_CLASSIFY only (FadeClassifier.h).

@@ -6,6 +6,7 @@
 
 #include "render/PrivateGl.h"
 
+#include "FogUniforms.h"
 #include "GlStateGuard.h"
 #include "ShaderLoader.h"
 #include "../sim/ReactionRuntime.h"
@@ -40,7 +41,8 @@ struct StatelessRenderer::Gpu {
     int frame = 0;
     struct {
         GLint view, proj, time, terminal, gravity, drag, fadeIn, fadeOut, rampCount, rampT, rampC,
-            alphaCount, alphaT, alphaV, sizeCount, sizeT, sizeV;
+            alphaCount, alphaT, alphaV, sizeCount, sizeT, sizeV, slice;
+        FogUniforms fog;
     } u{};
 
     ~Gpu() {
@@ -119,7 +121,7 @@ void StatelessRenderer::adopt(uint32_t program) {
     g.u = {loc("uView"), loc("uProj"), loc("uTime"), loc("uTerminal"), loc("uGravity"), loc("uDrag"),
            loc("uFadeIn"), loc("uFadeOut"), loc("uRampCount"), loc("uRampT"), loc("uRampC"),
            loc("uAlphaCount"), loc("uAlphaT"), loc("uAlphaV"), loc("uSizeCount"), loc("uSizeT"),
-           loc("uSizeV")};
+           loc("uSizeV"), loc("uSlice"), FogUniforms::of(g.program)};
     if (g.corners) return;
     static const float kCorners[8] = {-1.0f, -1.0f, 1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 1.0f};
     glGenBuffers(1, &g.corners);
@@ -168,6 +170,8 @@ void StatelessRenderer::draw(const ViewInfo& view, const std::vector<Draw>& draw
     glUseProgram(g.program);
     glUniformMatrix4fv(g.u.view, 1, GL_FALSE, &view.view[0][0]);
     glUniformMatrix4fv(g.u.proj, 1, GL_FALSE, &view.proj[0][0]);
+    glUniform2f(g.u.slice, view.slice.minDistance, view.slice.maxDistance);
+    setFogUniforms(g.u.fog, view.fog);
     plainDrawState();
     clip.apply();  // a host's scissor on sceneColor keeps clipping the sparks
     glEnable(GL_BLEND);

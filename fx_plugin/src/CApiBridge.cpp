@@ -95,6 +95,12 @@ namespace {
 // API 2.0's fxFrameBuilder ended with addPass; 2.1 appended the z-buffer.
 constexpr size_t kFrameBuilderSize20 = offsetof(fxFrameBuilder, sceneZBuffer);
 bool hasZBufferFields(const fxFrameBuilder& f) { return f.size >= sizeof(fxFrameBuilder); }
+// API 2.0's fxViewDesc ended with the depth range; 2.1 appended the view's place, the host
+// scissor, fog and the distance slice.
+constexpr size_t kViewDescSize20 = offsetof(fxViewDesc, viewportX);
+static_assert(kViewDescSize20 % alignof(fxViewDesc) == 0,
+              "a 2.0 host's sizeof(fxViewDesc) (with its tail padding) must equal the offset of viewportX");
+bool hasFogFields(const fxViewDesc& v) { return v.size >= offsetof(fxViewDesc, sliceMaxDistance) + sizeof(float); }
 }  // namespace
 
 Target CFrameBuilder::sceneZBuffer() {
@@ -146,6 +152,20 @@ ViewInfo rightHandedView(const fxViewDesc& v, UpAxis up) {
     out.farPlane = v.farPlane;
     out.width = v.width;
     out.height = v.height;
+    if (hasFogFields(v)) {
+        // GL's defaults for what the mode leaves unread; a mode outside FX_FOG_* keeps its value
+        // so the view check refuses it (InvalidView).
+        out.fog.mode = v.fogMode >= 0 && v.fogMode <= 255 ? static_cast<Fog::Mode>(v.fogMode) : static_cast<Fog::Mode>(255);
+        out.fog.color = glm::vec3(v.fogColor[0], v.fogColor[1], v.fogColor[2]);
+        if (v.fogMode == FX_FOG_LINEAR) {
+            out.fog.start = v.fogStart;
+            out.fog.end = v.fogEnd;
+        } else {
+            out.fog.density = v.fogDensity;
+        }
+        out.slice.minDistance = v.sliceMinDistance;
+        out.slice.maxDistance = v.sliceMaxDistance;
+    }
     out.depth = v.depthOrder == FX_DEPTH_REVERSED_Z ? DepthConvention::ReversedZ : DepthConvention::Standard;
     out.handedness = Handedness::RightHanded;
     out.x = v.viewportX;

@@ -64,6 +64,7 @@ private:
 /// "" when `f` can be used, else what is wrong with it.
 std::string frameBuilderProblem(const fxFrameBuilder* f);
 
+
 /// The view as the plugin draws it: right-handed (a left-handed pair becomes view' = F view,
 /// proj' = proj F with F = diag(1, 1, -1, 1): the same clip coordinates, camera down -Z).
 ViewInfo rightHandedView(const fxViewDesc& v, UpAxis up = UpAxis::Y);

@@ -229,6 +229,19 @@ static std::string viewProblem(const ViewInfo& view) {
     } else if (static_cast<uint8_t>(view.depth) > static_cast<uint8_t>(DepthConvention::ReversedZ)) {
         bad = "depth convention " + std::to_string(static_cast<int>(view.depth)) +
               "; expected Standard or ReversedZ";
+    } else if (static_cast<uint8_t>(view.fog.mode) > static_cast<uint8_t>(Fog::Mode::Exp2)) {
+        bad = "fog mode " + std::to_string(static_cast<int>(view.fog.mode)) + "; expected Off, Linear, Exp or Exp2";
+    } else if (view.fog.on() &&
+               (!std::isfinite(view.fog.color.x) || !std::isfinite(view.fog.color.y) ||
+                !std::isfinite(view.fog.color.z) || !std::isfinite(view.fog.start) || !std::isfinite(view.fog.end) ||
+                !std::isfinite(view.fog.density) || !(view.fog.density >= 0.0f))) {
+        bad = "fog: non-finite value or negative density; expected finite values, density >= 0";
+    } else if (view.fog.mode == Fog::Mode::Linear && view.fog.end == view.fog.start) {
+        bad = "linear fog with start = end = " + std::to_string(view.fog.start) + "; expected end != start";
+    } else if (!std::isfinite(view.slice.minDistance) || !(view.slice.minDistance >= 0.0f) ||
+               !(view.slice.maxDistance == 0.0f || view.slice.maxDistance > view.slice.minDistance)) {
+        bad = "slice [" + std::to_string(view.slice.minDistance) + ", " + std::to_string(view.slice.maxDistance) +
+              "); expected minDistance >= 0 finite and maxDistance 0 (no bound) or > minDistance";
     }
     return bad;
 }

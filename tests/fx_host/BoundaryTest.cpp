@@ -2,6 +2,7 @@
 // layer turns the test graph into an fxFrameBuilder, the library turns it back); these check what
 // only the boundary does: a left-handed host's matrices give the right-handed picture bit for bit,
 // and a bad frame builder or view descriptor is refused before anything is declared.
+#include <cstddef>
 #include <cstring>
 
 #include "FxTestHost.h"
@@ -115,6 +116,80 @@ TEST_F(BoundaryTest, BadFrameBuildersAndViewsAreRefusedBeforeAnythingIsDeclared)
     f = rec.c();
     ASSERT_EQ(api->declarePasses(bridge->handle(), &v, &f), FX_ERROR_NONE);
     EXPECT_EQ(rec.passes, declared);
+}
+
+// API 2.1 appended fog and the distance slice to fxViewDesc: a 2.0 host's smaller descriptor is
+// still served (as no fog and every particle, whatever lies past its end), and bad fog or slice
+// values are refused as InvalidView.
+TEST_F(BoundaryTest, AnApi20ViewDescriptorIsServedAndBadFogOrSlicesAreRefused) {
+    createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
+    simulate(1.0f, 60);
+    auto* bridge = dynamic_cast<fx::detail::CApiPlugin*>(plugin.get());
+    ASSERT_NE(bridge, nullptr);
+    const fxApi* api = bridge->api();
+    RecordingFrame rec;
+    fxFrameBuilder f = rec.c();
+    fxViewDesc v = fx::detail::viewToC(view);
+    ASSERT_EQ(api->declarePasses(bridge->handle(), &v, &f), FX_ERROR_NONE);
+    const int passes = rec.passes;
+    ASSERT_GT(passes, 0);
+
+    // A 2.0 host: size = the offset of fogMode; the bytes after it (here an empty slice far away
+    // and a fog mode no host may pass) are not read.
+    fxViewDesc old = v;
+    old.size = uint32_t(offsetof(fxViewDesc, fogMode));
+    old.fogMode = 99;
+    old.sliceMinDistance = 1e6f;
+    old.sliceMaxDistance = 2e6f;
+    rec = RecordingFrame{};
+    f = rec.c();
+    EXPECT_EQ(api->declarePasses(bridge->handle(), &old, &f), FX_ERROR_NONE);
+    EXPECT_EQ(rec.passes, passes);
+
+    // The same slice from a 2.1 host: nothing in it, nothing declared.
+    fxViewDesc sliced = v;
+    sliced.sliceMinDistance = 1e6f;
+    sliced.sliceMaxDistance = 2e6f;
+    rec = RecordingFrame{};
+    f = rec.c();
+    EXPECT_EQ(api->declarePasses(bridge->handle(), &sliced, &f), FX_ERROR_NONE);
+    EXPECT_EQ(rec.passes, 0);
+
+    auto refused = [&](fxViewDesc bad) {
+        rec = RecordingFrame{};
+        f = rec.c();
+        const int r = api->declarePasses(bridge->handle(), &bad, &f);
+        return r == FX_ERROR_INVALID_VIEW && rec.passes == 0;
+    };
+    fxViewDesc bad = v;
+    bad.fogMode = 4;
+    EXPECT_TRUE(refused(bad));
+    bad = v;
+    bad.fogMode = FX_FOG_LINEAR;
+    bad.fogStart = bad.fogEnd = 5.0f;
+    EXPECT_TRUE(refused(bad));
+    bad = v;
+    bad.fogMode = FX_FOG_EXP;
+    bad.fogDensity = -0.1f;
+    EXPECT_TRUE(refused(bad));
+    bad = v;
+    bad.sliceMinDistance = 5.0f;
+    bad.sliceMaxDistance = 3.0f;
+    EXPECT_TRUE(refused(bad));
+    bad = v;
+    bad.sliceMinDistance = -1.0f;
+    EXPECT_TRUE(refused(bad));
+    EXPECT_TRUE(host.logged("error[InvalidView] declarePasses: fog mode 4"));
+    EXPECT_TRUE(host.logged("error[InvalidView] declarePasses: linear fog with start = end"));
+
+    // Valid fog passes: exp fog with a density, and linear fog.
+    fxViewDesc good = v;
+    good.fogMode = FX_FOG_EXP2;
+    good.fogDensity = 0.05f;
+    rec = RecordingFrame{};
+    f = rec.c();
+    EXPECT_EQ(api->declarePasses(bridge->handle(), &good, &f), FX_ERROR_NONE);
+    EXPECT_EQ(rec.passes, passes);
 }
 
 }  // namespace

@@ -449,6 +449,61 @@ TEST_F(ImmediateRendererTest, HostBindingsAndStateAreUnchanged) {
     }
 }
 
+// API 2.1's view fields through the public renderView (the C table): the host's fog gives the
+// frame-graph path's fogged picture, and two complementary distance slices drawn one after the
+// other give the one-call picture (the same particles, in the same back-to-front order).
+TEST_F(ImmediateRendererTest, FogAndDistanceSlicesReachRenderView) {
+    HostTarget target(kW, kH, GL_DEPTH_COMPONENT24);
+    fx::ViewInfo fogged = view;
+    fogged.fog.mode = fx::Fog::Mode::Exp2;
+    fogged.fog.density = 0.12f;
+    fogged.fog.color = glm::vec3(0.6f, 0.65f, 0.7f);
+    auto drawn = [&](const fx::ViewInfo& v) {
+        const fx::ErrorCode e = plugin->renderView(v);
+        drainGlErrors("renderView");
+        EXPECT_EQ(e, fx::ErrorCode::None);
+        return plugin->stats().particlesDrawn;
+    };
+    for (const Mode& m : {kModes[0], kModes[1], kModes[2]}) {
+        SCOPED_TRACE(m.name);
+        setMode(m);
+        const fx::ViewInfo plain = view;
+        view = fogged;
+        const Image graphFogged = render(true);
+        view = plain;
+        const Image graphPlain = render(true);
+        EXPECT_GT(maxAbsDiff(graphFogged, graphPlain), 10) << "fog changed nothing";
+
+        glBindFramebuffer(GL_FRAMEBUFFER, target.fbo);
+        scene.drawOpaque(plain);
+        drawn(fogged);
+        const Image immediateFogged = readFramebuffer(target.fbo, kW, kH);
+        EXPECT_LE(maxAbsDiff(immediateFogged, graphFogged), kDepthSourceTolerance);
+        std::printf("[ measured ] %s: exp2 fog, renderView vs frame graph max |diff| %d/255 (fog vs none %d/255)\n",
+                    m.name, maxAbsDiff(immediateFogged, graphFogged), maxAbsDiff(graphFogged, graphPlain));
+
+        glBindFramebuffer(GL_FRAMEBUFFER, target.fbo);
+        scene.drawOpaque(plain);
+        const int all = drawn(plain);
+        const Image oneCall = readFramebuffer(target.fbo, kW, kH);
+        fx::ViewInfo farSlice = plain, nearSlice = plain;
+        farSlice.slice = fx::DistanceSlice{7.5f, 0.0f};
+        nearSlice.slice = fx::DistanceSlice{0.0f, 7.5f};
+        glBindFramebuffer(GL_FRAMEBUFFER, target.fbo);
+        scene.drawOpaque(plain);
+        const int far = drawn(farSlice);
+        const int near = drawn(nearSlice);
+        const Image twoCalls = readFramebuffer(target.fbo, kW, kH);
+        std::printf("[ measured ] %s: %d particles, %d beyond 7.5 m, %d nearer; two slices vs one call max |diff| %d/255\n",
+                    m.name, all, far, near, maxAbsDiff(twoCalls, oneCall));
+        EXPECT_GT(far, 0);
+        EXPECT_GT(near, 0);
+        EXPECT_EQ(far + near, all);
+        EXPECT_LE(maxAbsDiff(twoCalls, oneCall), 1);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 TEST_F(ImmediateRendererTest, RefusesWhatItCannotDraw) {
     setMode(kModes[1]);
     glBindFramebuffer(GL_FRAMEBUFFER, graph.colorFramebuffer());

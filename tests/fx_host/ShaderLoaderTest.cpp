@@ -70,7 +70,8 @@ TEST_F(ShaderLoaderTest, ExpandsIncludesOnceAndKeepsTheFileTable) {
     ASSERT_TRUE(fx::loadShaderSource(kShaders, "fs_particles_soft.glsl", "#define FX_X 1\n", &src, &error))
         << error;
     EXPECT_EQ(src.files, (std::vector<std::string>{"fs_particles_soft.glsl", "particles_common.glsl",
-                                                   "particles_scene_depth.glsl", "particles_varyings.glsl"}));
+                                                   "particles_scene_depth.glsl", "particles_fog.glsl",
+                                                   "particles_varyings.glsl"}));
     EXPECT_EQ(src.text.rfind("#version 330 core\n#define FX_X 1\n", 0), 0u);
     EXPECT_NE(src.text.find("float contrastCurve("), std::string::npos);
     EXPECT_EQ(src.text.find("#include"), std::string::npos);

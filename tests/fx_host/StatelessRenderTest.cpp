@@ -2,6 +2,7 @@
 // the records go to the GPU and the vertex shader draws them (the sparks light up the picture
 // where the closed form puts them), the pass restores every GL state it touches, its picture does
 // not depend on host state, and no pass is declared once every record is dead.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -103,6 +104,63 @@ TEST_F(StatelessRenderTest, SparksAreDrawnFromTheirRecordsAndRestoreTheHostState
     EXPECT_GT(lit, 100) << "sparks drawn";
     EXPECT_EQ(outside, 0) << "a spark outside the reach of the closed form";
     EXPECT_TRUE(host.errors().empty()) << host.errors().front();
+}
+
+// The host's fog dims the sparks as light (f rgb, no fog colour: the white fog here would show in
+// the sum), and a distance slice keeps each spark in exactly one of two complementary slices.
+TEST_F(StatelessRenderTest, SparksAreFoggedAsLightAndEachLiesInOneSlice) {
+    ASSERT_EQ(plugin->fireReaction("sparks", glm::vec3(0.0f, 1.5f, 0.0f)), fx::ErrorCode::None);
+    step(12);
+    const fx::ViewInfo plain = view;
+    auto draw = [&](const fx::ViewInfo& v) {
+        renderFrame(graph, scene, v, [&](fx::FrameBuilder& f) { plugin->declarePasses(v, f); });
+        return graph.readColor();
+    };
+    std::string none;
+    const Image without = frame(false, false, &none);
+    const Image all = draw(plain);
+    // The burst's centre lies about 8 m along the view axis: linear fog from 0 to 16 m gives
+    // f = 0.5 there and 0.425 .. 0.575 over the sparks' reach (1.2 m).
+    fx::ViewInfo fogged = plain;
+    fogged.fog.mode = fx::Fog::Mode::Linear;
+    fogged.fog.start = 0.0f;
+    fogged.fog.end = 16.0f;
+    fogged.fog.color = glm::vec3(1.0f);
+    const Image dimmed = draw(fogged);
+    double added = 0.0, addedFogged = 0.0;
+    for (int y = 0; y < kH; ++y) {
+        for (int x = 0; x < kW; ++x) {
+            if (all.at(x, y)[0] >= 250) continue;  // clamped (sparks add up): no ratio there
+            added += all.at(x, y)[2] - without.at(x, y)[2];
+            addedFogged += dimmed.at(x, y)[2] - without.at(x, y)[2];
+        }
+    }
+    ASSERT_GT(added, 1000.0);
+    const double ratio = addedFogged / added;
+    std::printf("[ measured ] sparks under linear fog 0..16 m: %.3f of their light (expected 0.425 .. 0.575)\n", ratio);
+    EXPECT_GT(ratio, 0.40);
+    EXPECT_LT(ratio, 0.60);
+
+    fx::ViewInfo nearSlice = plain, farSlice = plain, empty = plain;
+    nearSlice.slice = fx::DistanceSlice{0.0f, 8.0f};
+    farSlice.slice = fx::DistanceSlice{8.0f, 0.0f};
+    empty.slice = fx::DistanceSlice{20.0f, 0.0f};
+    const Image nearImg = draw(nearSlice), farImg = draw(farSlice);
+    EXPECT_EQ(maxAbsDiff(draw(empty), without), 0) << "no spark 20 m away or more";
+    EXPECT_GT(maxAbsDiff(nearImg, without), 40) << "the near slice holds sparks";
+    EXPECT_GT(maxAbsDiff(farImg, without), 40) << "the far slice holds sparks";
+    // Light adds up: near + far - background = all, within rounding, where nothing clamped.
+    int worst = 0;
+    for (int y = 0; y < kH; ++y) {
+        for (int x = 0; x < kW; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                if (all.at(x, y)[c] >= 250) continue;
+                const int sum = nearImg.at(x, y)[c] + farImg.at(x, y)[c] - without.at(x, y)[c];
+                worst = std::max(worst, std::abs(sum - int(all.at(x, y)[c])));
+            }
+        }
+    }
+    EXPECT_LE(worst, 2);
 }
 
 TEST_F(StatelessRenderTest, NoPassOnceEveryRecordIsDead) {

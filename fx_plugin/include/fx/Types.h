@@ -23,6 +23,39 @@ struct WheelContact {
 /// Severity of a message the plugin hands to the host's log.
 enum class LogLevel : uint8_t { Info, Warning, Error };
 
+/// How the host fogs its geometry (ViewInfo::fog, API 2.1): fixed-function GL's fog, which the
+/// plugin applies to the smoke at the same distance, so smoke fades with the geometry around it.
+/// Factor f (1 = no fog), clamped to [0, 1], of the fragment's eye-space distance c = |z_eye| (the
+/// distance along the view axis: GL's FRAGMENT_DEPTH fog coordinate in the abs(z) form the spec
+/// allows): Linear (end - c) / (end - start), Exp exp(-density c), Exp2 exp(-(density c)^2).
+/// Premultiplied smoke becomes f rgb + (1 - f) color alpha (its own light is fogged, its coverage
+/// is not); additive smoke f rgb (it fades to nothing). Valid: finite values, density >= 0, and
+/// for Linear end != start. Defaults: off (GL's own defaults for the rest: black, 0, 1, 1).
+struct Fog {
+    enum class Mode : uint8_t { Off = 0, Linear, Exp, Exp2 };
+    Mode mode = Mode::Off;
+    glm::vec3 color{0.0f};  ///< linear RGB, as the host fogs its geometry with
+    float start = 0.0f;     ///< Linear: metres where fog begins
+    float end = 1.0f;       ///< Linear: metres where fog is complete
+    float density = 1.0f;   ///< Exp, Exp2: 1/m
+    bool on() const { return mode != Mode::Off; }
+};
+
+/// Which particles one call draws (ViewInfo::slice, API 2.1): those whose view distance (along the
+/// view axis to the particle's centre, the distance the draw list is sorted by) lies in
+/// [minDistance, maxDistance); maxDistance 0 = no upper bound. A host orders the smoke with its
+/// own blended geometry by drawing the view in slices around it: the smoke behind a glass pane at
+/// 10 m ({10, 0}), the pane, then the smoke in front ({0, 10}). Valid: finite minDistance >= 0, and
+/// maxDistance 0 or > minDistance. Defaults: {0, 0}, every particle (one call draws all).
+struct DistanceSlice {
+    float minDistance = 0.0f;
+    float maxDistance = 0.0f;
+    bool everything() const { return minDistance == 0.0f && maxDistance == 0.0f; }
+    bool contains(float distance) const {
+        return distance >= minDistance && (maxDistance == 0.0f || distance < maxDistance);
+    }
+};
+
 /// How the host's z-buffer (the depth attachment of sceneColor / sceneDepth) maps distance.
 /// The plugin's depth-tested passes follow it: Standard tests LEQUAL (near = 0, cleared to 1),
 /// ReversedZ tests GEQUAL (near = 1, cleared to 0; glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)
@@ -68,6 +101,8 @@ struct ViewInfo {
     /// API 2.1, renderView only: the scissor test the host has enabled at the call clips the
     /// smoke too. false: the host's scissor state is ignored (the 2.0 behaviour).
     bool clipToHostScissor = false;
+    Fog fog;                ///< API 2.1: the host's fog, applied to the smoke (default off)
+    DistanceSlice slice;    ///< API 2.1: the particles this call draws (default every one)
 };
 
 /// Where Plugin::renderView (the immediate path, API 2.0) finds the scene depth.

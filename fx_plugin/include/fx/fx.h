@@ -134,6 +134,8 @@ enum {
                                       another format: FX_ERROR_UNSUPPORTED_DEPTH */
     FX_DEPTH_FROM_NOTHING = 3      /* no scene depth: particles are neither z-tested nor faded */
 };
+/* API 2.1: fxViewDesc.fogMode, as GL_LINEAR / GL_EXP / GL_EXP2 fixed-function fog. */
+enum { FX_FOG_OFF = 0, FX_FOG_LINEAR = 1, FX_FOG_EXP = 2, FX_FOG_EXP2 = 3 };
 enum { FX_KEY_NUMBER = 0, FX_KEY_INTEGER, FX_KEY_BOOL, FX_KEY_CHOICE, FX_KEY_CHOICE_LIST,
        FX_KEY_NUMBER_RANGE, FX_KEY_INTEGER_PAIR, FX_KEY_COLOR_RAMP, FX_KEY_NAME };
 
@@ -233,6 +235,17 @@ typedef struct fxViewDesc {
      * the host's scissor state, as in 2.0 (a scissor left on by accident does not cut the smoke).
      * On the frame-graph path a scissor the host's bindForDraw(sceneColor) sets always holds. */
     fxBool clipToScissor;
+    /* API 2.1 (a 2.0 host's smaller size leaves them out: no fog, every particle).
+     * The host's fog (fx::Fog in fx/Types.h has the formulas): the smoke is fogged as GL's
+     * fixed-function fog fogs geometry at the same eye-space distance |z_eye|. */
+    int fogMode;            /* FX_FOG_*; 0 = off */
+    float fogColor[3];      /* linear RGB */
+    float fogStart, fogEnd; /* FX_FOG_LINEAR, metres; end != start */
+    float fogDensity;       /* FX_FOG_EXP / EXP2, 1/m, >= 0 */
+    /* Only particles whose view distance is in [sliceMinDistance, sliceMaxDistance) are drawn
+     * (fx::DistanceSlice): draw the smoke in slices around the host's own blended geometry.
+     * sliceMaxDistance 0 = no upper bound; both 0 = every particle. */
+    float sliceMinDistance, sliceMaxDistance;
 } fxViewDesc;
 
 typedef struct fxRenderOptions {

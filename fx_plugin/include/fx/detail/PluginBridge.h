@@ -46,6 +46,15 @@ inline fxViewDesc viewToC(const ViewInfo& v) {
     c.eye[0] = v.eye.x;
     c.eye[1] = v.eye.y;
     c.eye[2] = v.eye.z;
+    c.fogMode = static_cast<int>(v.fog.mode);
+    c.fogColor[0] = v.fog.color.x;
+    c.fogColor[1] = v.fog.color.y;
+    c.fogColor[2] = v.fog.color.z;
+    c.fogStart = v.fog.start;
+    c.fogEnd = v.fog.end;
+    c.fogDensity = v.fog.density;
+    c.sliceMinDistance = v.slice.minDistance;
+    c.sliceMaxDistance = v.slice.maxDistance;
     c.nearPlane = v.nearPlane;
     c.farPlane = v.farPlane;
     c.width = v.width;
