@@ -134,10 +134,10 @@ TEST_F(BoundaryTest, AnApi20ViewDescriptorIsServedAndBadFogOrSlicesAreRefused) {
     const int passes = rec.passes;
     ASSERT_GT(passes, 0);
 
-    // A 2.0 host: size = the offset of fogMode; the bytes after it (here an empty slice far away
-    // and a fog mode no host may pass) are not read.
+    // A 2.0 host: size = the offset of viewportX, the first field 2.1 appended; the bytes after
+    // it (here an empty slice far away and a fog mode no host may pass) are not read.
     fxViewDesc old = v;
-    old.size = uint32_t(offsetof(fxViewDesc, fogMode));
+    old.size = uint32_t(offsetof(fxViewDesc, viewportX));
     old.fogMode = 99;
     old.sliceMinDistance = 1e6f;
     old.sliceMaxDistance = 2e6f;
