@@ -40,19 +40,27 @@ float smokeShadow(vec3 p) {
 // The track's fog (render/SceneFog.h, SceneRenderer::setFog), fixed-function GL's: f = (end - c)
 // / (end - start), exp(-density c) or exp(-(density c)^2), clamped to [0, 1], c = |z_eye|; the
 // colour becomes f colour + (1 - f) fog colour. The plugin gets the same fog (fx::ViewInfo::fog)
-// and fogs the smoke by the same formula. Mode 0 returns the colour untouched.
-uniform int uFogMode;     // 0 off, 1 linear, 2 exp, 3 exp2
+// and fogs the smoke by the same formula. Built only into the programs of a fogged scene
+// (CUBE_FOG, SceneRenderer::init): a CPU rasteriser evaluates both sides of a branch on every
+// fragment, so a run-time "off" still paid for the exponentials. Without it the colour is
+// returned untouched.
+#ifdef CUBE_FOG
+uniform int uFogMode;     // 1 linear, 2 exp, 3 exp2
 uniform vec3 uFogColor;
 uniform vec3 uFogParams;  // start, end, density
+#endif
 
 vec3 applyFog(vec3 color, float eyeZ) {
-    if (uFogMode == 0) return color;
+#ifndef CUBE_FOG
+    return color;
+#else
     float c = abs(eyeZ);
     float dc = uFogParams.z * c;
     float f = uFogMode == 1 ? (uFogParams.y - c) / (uFogParams.y - uFogParams.x)
                             : (uFogMode == 2 ? exp(-dc) : exp(-dc * dc));
     f = clamp(f, 0.0, 1.0);
     return f * color + (1.0 - f) * uFogColor;
+#endif
 }
 
 vec3 applyHaze(vec3 color, float viewDistance) {

@@ -25,5 +25,5 @@ void main() {
 #ifdef FX_LIT
     texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vTurn), texel.a, vSunLight, vPhase);
 #endif
-    oColor = applyFog(shadeOutput(vRamp, vFade, texel, coverage), depth);
+    oColor = applyParticleFog(shadeOutput(vRamp, vFade, texel, coverage), vFog);
 }

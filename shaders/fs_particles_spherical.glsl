@@ -53,6 +53,6 @@ void main() {
     vec3 n = normalize((entry - centre) / r + uNormalStrength * 0.6 * vec3(turnBack(bumps.xy, vTurn) * r, 0.0));
     texel.rgb = texel.bbb * smokeLight(n, texel.a, vSunLight, vPhase);
 #endif
-    // Fogged at the middle of the visible chord: where the pixel's smoke is, on average.
-    oColor = applyFog(shadeOutput(vRamp, vFade, texel, coverage), 0.5 * (z0 + z1));
+    // Fogged at the sphere's centre (particleFog): the middle of the chord through it.
+    oColor = applyParticleFog(shadeOutput(vRamp, vFade, texel, coverage), vFog);
 }

@@ -5,11 +5,10 @@
 //     for every convention (GL or [0, 1] clip z, depth range, reversed-Z, infinite far,
 //     orthographic). No linearise pass and no second colour target: the fragment decodes it.
 //   - linear R32F metres (FrameBuilder::sceneDepth): A = 0, B = 1, C = 1, D = 0, so t = d exactly.
-// "Nothing drawn" reads as 3.0e38 (infinitely far): a window depth at or beyond the far plane
-// (farther in the buffer's direction), or a distance that is not positive (a linear host may
-// clear to 0: fx/HostAdapter.h).
+// A cleared z-buffer texel reads as the far plane's distance; a distance that is not positive,
+// not finite or past 3.0e38 reads as 3.0e38, "nothing drawn" (a linear host may clear to 0:
+// fx/HostAdapter.h).
 uniform vec4 uDepthCoeffs;  // A, B, C, D
-uniform vec2 uDepthFar;     // window depth of the far plane; +1, or -1 when depth falls with distance
 // Where the view lies (fx_plugin/render/SceneDepthSource.h): a pass addresses the scene depth by
 // the view's own pixel p = gl_FragCoord.xy - uDrawOrigin and reads texel p + uDepthWindow.xy.
 // uDrawOrigin: the view's origin in the framebuffer being drawn (sceneColor's viewport origin, or
@@ -27,6 +26,9 @@ ivec2 sceneDepthViewSize() { return uDepthWindow.zw; }
 
 float linearSceneDepth(float d) {
     float t = (uDepthCoeffs.x + uDepthCoeffs.y * d) / (uDepthCoeffs.z + uDepthCoeffs.w * d);
-    // (d - far) has the sign of "beyond the far plane" times uDepthFar.y's sign: one compare.
-    return (d - uDepthFar.x) * uDepthFar.y < 0.0 && t > 0.0 ? t : 3.0e38;
+    // A cleared z-buffer texel (at the far plane) decodes to the far plane's distance (or, with an
+    // infinite far plane, to a huge or infinite one), which every reader takes as far away, as
+    // the linearise pass's background was; only a distance that is not positive needs the
+    // stand-in (a linear host that clears to 0; a window depth past the far side).
+    return t > 0.0 && t < 3.0e38 ? t : 3.0e38;  // NaN and infinity too
 }

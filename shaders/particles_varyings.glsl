@@ -12,6 +12,7 @@ flat FX_VARYING float vFade;    // life fade
 flat FX_VARYING vec2 vCell;     // atlas coordinate of the frame's corner (atlasCell)
 flat FX_VARYING vec4 vSphere;   // spherical: view-space centre, radius
 flat FX_VARYING vec2 vTurn;     // (cos, sin) of the particle's angle; spherical: divided by the radius
+flat FX_VARYING vec4 vFog;      // the particle's fog (particleFog): (fog colour x (1 - f), f)
 #ifdef FX_CLASSIFY
 flat FX_VARYING float vInFront; // 1: the fade is exactly 1 over the whole particle (no depth fetch)
 #endif

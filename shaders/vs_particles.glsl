@@ -182,6 +182,11 @@ void main() {
     vLocal = local;
 #endif
     vViewPos = viewPos;
+#ifdef FX_SPHERICAL
+    vFog = particleFog(-centre.z);
+#else
+    vFog = particleFog(-viewPos.z);  // a billboard lies at one depth
+#endif
 #ifdef FX_LIT
 #ifdef FX_SPHERICAL
     vec3 lightAt = centre;   // the quad lies at the sphere's front: light the sphere as a whole

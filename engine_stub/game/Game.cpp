@@ -82,11 +82,11 @@ bool Game::InitProc(std::string* error) {
     }
     if (!vehicle_.active()) frameSceneBounds();
     barrierNode_ = sceneData_.findNode("barrier_right");
+    scene_.renderer().setFog(options_.fog);  // before Init: the programs are built with it or without
     if (!scene_.Init(sceneData_, error, carNode, options_.reversedZ)) return false;
     // Options were validated (parseOptions); a harness that set them directly gets them clamped.
     sun_ = sunFromAngles(options_.sunAzimuth, options_.sunElevation);
     scene_.renderer().setSun(sun_);
-    scene_.renderer().setFog(options_.fog);  // the views hand it to the plugin (cubeView::pluginView)
     rtt::RenderTargetPoolDesc poolDesc;
     poolDesc.framesUntilFree = std::max(1, options_.poolFramesUntilFree);
     pool_ = std::make_unique<rtt::RenderTargetPool>(poolDesc);

@@ -10,8 +10,8 @@ LegacySpriteRenderer::~LegacySpriteRenderer() {
     gl::deleteVertexArray(vao_, vbo_);
 }
 
-bool LegacySpriteRenderer::init(std::string* error) {
-    if (!gl::Program::load("vs_legacy_sprite.glsl", "fs_legacy_sprite.glsl", &program_, error)) return false;
+bool LegacySpriteRenderer::init(std::string* error, const std::string& defines) {
+    if (!gl::Program::load("vs_legacy_sprite.glsl", "fs_legacy_sprite.glsl", &program_, error, defines)) return false;
     ImageRGBA8 atlas;
     if (!readPng(paths::data() + "/smoke_atlas.png", &atlas, error)) return false;
     // stb_image reads rows top-down; GL's t = 0 is the first row uploaded, which is fine for a

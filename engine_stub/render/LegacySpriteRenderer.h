@@ -14,7 +14,8 @@ namespace cube {
 class LegacySpriteRenderer {
 public:
     ~LegacySpriteRenderer();
-    bool init(std::string* error);
+    /// `defines`: "#define CUBE_FOG 1\n" in a fogged scene (shaders/common.glsl), else "".
+    bool init(std::string* error, const std::string& defines = "");
     /// Draws `vertices` (triangles) with the view-projection matrix into the bound framebuffer,
     /// depth-tested without writes (LEQUAL, or GEQUAL on a reversed-Z buffer), fogged as the
     /// scene is (`fog`; off: the sprites as before).

@@ -48,11 +48,13 @@ bool SceneRenderer::init(const SceneData& data, std::string* error, bool reverse
     reversedZ_ = reversedZ && gl::hasClipControl() && gl::setClipDepthZeroToOne(true);
     if (!reversedZ_ && gl::hasClipControl()) gl::setClipDepthZeroToOne(false);
     gpu_.upload(data);
-    if (!gl::Program::load("vs_mesh.glsl", "fs_mesh.glsl", &meshProgram_, error)) return false;
+    // Fog is built into the programs of a fogged scene only (shaders/common.glsl, CUBE_FOG).
+    const std::string fog = fog_.mode != SceneFog::Mode::Off ? "#define CUBE_FOG 1\n" : "";
+    if (!gl::Program::load("vs_mesh.glsl", "fs_mesh.glsl", &meshProgram_, error, fog)) return false;
     if (!gl::Program::load("vs_mesh.glsl", "fs_mesh_prepass.glsl", &prepassProgram_, error)) return false;
-    if (!gl::Program::load("vs_fullscreen.glsl", "fs_sky.glsl", &skyProgram_, error)) return false;
+    if (!gl::Program::load("vs_fullscreen.glsl", "fs_sky.glsl", &skyProgram_, error, fog)) return false;
     if (!gl::Program::load("vs_fullscreen.glsl", "fs_blit.glsl", &blitProgram_, error)) return false;
-    if (!gl::Program::load("vs_mesh.glsl", "fs_mesh_costly.glsl", &costlyProgram_, error)) return false;
+    if (!gl::Program::load("vs_mesh.glsl", "fs_mesh_costly.glsl", &costlyProgram_, error, fog)) return false;
     if (!panelVao_) {
         // Two triangles, position + normal, as GpuScene lays out vertices (the camera quads).
         const float v[] = {-1, -1, 0, 0, 0, 1, 1, -1, 0, 0, 0, 1, 1, 1, 0, 0, 0, 1,
@@ -69,7 +71,7 @@ bool SceneRenderer::init(const SceneData& data, std::string* error, bool reverse
         glBindVertexArray(0);
         glBindBuffer(GL_ARRAY_BUFFER, 0);
     }
-    if (!legacySprites_.init(error)) return false;
+    if (!legacySprites_.init(error, fog)) return false;
     if (!hud_.init(error)) return false;
     if (!emptyVao_) glGenVertexArrays(1, &emptyVao_);
     return true;

@@ -74,8 +74,10 @@ public:
         smokeAbsorption_ = texture ? absorption : 0.0f;
     }
     const SunLight& sun() const { return sun_; }
-    /// The fog every later opaque, alpha-tested and sky pass applies (no GL until then); the
-    /// views hand the same fog to the plugin. Default: off.
+    /// The fog the opaque, alpha-tested, sky and legacy-sprite passes apply; the views hand the
+    /// same fog to the plugin. Default: off. Before init(): the programs are built with fog in
+    /// them only when it is on (off costs nothing); its parameters may change afterwards, not
+    /// whether it is on.
     void setFog(const SceneFog& fog) { fog_ = fog; }
     const SceneFog& fog() const { return fog_; }
 

@@ -26,7 +26,7 @@ void MegaPrograms::build(const std::string& dir, std::vector<std::string>* error
     shade = make("vs_particles_fullscreen.glsl", "fs_mega_blur.glsl", "#define FX_MEGA_SHADE 1\n");
     composite = make("vs_particles_fullscreen.glsl", "fs_mega_composite.glsl", "");
     locateUniforms(depth, {{&depthScene, "uSceneDepth"}, {&depthRatio, "uRatio"},
-                           {&depthDecode.coeffs, "uDepthCoeffs"}, {&depthDecode.far, "uDepthFar"},
+                           {&depthDecode.coeffs, "uDepthCoeffs"},
                            {&depthDecode.window, "uDepthWindow"}, {&depthDecode.drawOrigin, "uDrawOrigin"}});
     locateUniforms(spheres, {{&sView, "uView"}, {&sProj, "uProj"}, {&sNear, "uNear"}, {&sFar, "uFar"},
                              {&sSlope, "uSlopeMax"}, {&sRamp, "uRamp"}, {&sRampRow, "uRampRow"},
@@ -44,7 +44,7 @@ void MegaPrograms::build(const std::string& dir, std::vector<std::string>* error
                         {&u.absorption, "uAbsorption"}});
     }
     locateUniforms(composite, {{&cCloud, "uCloud"}, {&cCloudDepth, "uCloudDepth"}, {&cScene, "uSceneDepth"},
-                               {&cDecode.coeffs, "uDepthCoeffs"}, {&cDecode.far, "uDepthFar"},
+                               {&cDecode.coeffs, "uDepthCoeffs"},
                                {&cDecode.window, "uDepthWindow"}, {&cDecode.drawOrigin, "uDrawOrigin"},
                                {&cSoft, "uSoftScale"}});
     cFog = FogUniforms::of(composite);

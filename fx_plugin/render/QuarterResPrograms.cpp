@@ -30,7 +30,7 @@ void QuarterResPrograms::build(const std::string& shaderDir, std::vector<std::st
     };
     if (make(&downsample, "fs_particles_depth_downsample.glsl", "")) {
         locateUniforms(downsample, {{&downsampleDepthLoc, "uSceneDepth"}, {&downsampleViewLoc, "uViewSize"},
-                                    {&downsampleDecode.coeffs, "uDepthCoeffs"}, {&downsampleDecode.far, "uDepthFar"},
+                                    {&downsampleDecode.coeffs, "uDepthCoeffs"},
                                     {&downsampleDecode.window, "uDepthWindow"},
                                     {&downsampleDecode.drawOrigin, "uDrawOrigin"}});
     }
@@ -46,14 +46,14 @@ void QuarterResPrograms::build(const std::string& shaderDir, std::vector<std::st
         locateUniforms(c.program, {{&c.halfColor, "uHalfColor"}, {&c.halfDepth, "uHalfDepth"},
                                    {&c.sceneDepth, "uSceneDepth"}, {&c.threshold, "uDepthThreshold"},
                                    {&c.edgeColor, "uEdgeColor"}, {&c.viewSize, "uViewSize"},
-                                   {&c.decode.coeffs, "uDepthCoeffs"}, {&c.decode.far, "uDepthFar"},
+                                   {&c.decode.coeffs, "uDepthCoeffs"},
                                    {&c.decode.window, "uDepthWindow"}, {&c.decode.drawOrigin, "uDrawOrigin"}});
     }
     if (make(&edgeMask, "fs_particles_edge_mask.glsl", "")) {
         locateUniforms(edgeMask, {{&maskHalfDepthLoc, "uHalfDepth"}, {&maskSceneDepthLoc, "uSceneDepth"},
                                   {&maskThresholdLoc, "uDepthThreshold"}, {&maskPassLoc, "uPassDepth"},
                                   {&maskFailLoc, "uFailDepth"}, {&maskViewLoc, "uViewSize"},
-                                  {&maskDecode.coeffs, "uDepthCoeffs"}, {&maskDecode.far, "uDepthFar"},
+                                  {&maskDecode.coeffs, "uDepthCoeffs"},
                                   {&maskDecode.window, "uDepthWindow"}, {&maskDecode.drawOrigin, "uDrawOrigin"}});
     }
     if (!tileVao_) {

@@ -11,8 +11,6 @@ SceneDepthDecode SceneDepthDecode::ofZBuffer(const glm::mat4& proj, const DepthM
     out.b = k.b;
     out.c = k.c;
     out.d = k.d;
-    out.farWindow = k.farWindow;
-    out.direction = k.reversed ? -1.0f : 1.0f;
     out.zBuffer = true;
     return out;
 }
@@ -53,14 +51,12 @@ SceneDepthDecode SceneDepthDecode::placedFor(const TextureRef& depth, const View
 
 void SceneDepthUniforms::locate(uint32_t program) {
     coeffs = glGetUniformLocation(program, "uDepthCoeffs");
-    far = glGetUniformLocation(program, "uDepthFar");
     window = glGetUniformLocation(program, "uDepthWindow");
     drawOrigin = glGetUniformLocation(program, "uDrawOrigin");
 }
 
 void setSceneDepthDecode(const SceneDepthUniforms& at, const SceneDepthDecode& decode) {
     glUniform4f(at.coeffs, decode.a, decode.b, decode.c, decode.d);
-    glUniform2f(at.far, decode.farWindow, decode.direction);
     glUniform4i(at.window, decode.texel.x, decode.texel.y, decode.viewSize.x, decode.viewSize.y);
     glUniform2i(at.drawOrigin, decode.drawOrigin.x, decode.drawOrigin.y);
 }

@@ -35,8 +35,6 @@ namespace fx {
 /// for linear depth (A = 0, B = 1, C = 1, D = 0; nothing drawn only where t <= 0).
 struct SceneDepthDecode {
     float a = 0.0f, b = 1.0f, c = 1.0f, d = 0.0f;
-    float farWindow = 3.0e38f;  ///< window depth of the far plane
-    float direction = 1.0f;     ///< -1 where window depth falls with distance (reversed-Z)
     bool zBuffer = false;       ///< decodes a z-buffer (the passes need a texture barrier first)
     glm::ivec2 texel{0};        ///< the depth texel of the view's pixel (0, 0) (placedFor)
     glm::ivec2 viewSize{0};     ///< the view's size: the full-screen passes' bounds (placedFor)
@@ -68,9 +66,9 @@ bool canSampleZBufferInPlace();
 /// The view's origin in a depth texture of w x h: 0 when it is the view's size, else the origin.
 glm::ivec2 viewOriginInDepth(int w, int h, const ViewInfo& view);
 
-/// Uniform locations of uDepthCoeffs, uDepthFar, uDepthWindow and uDrawOrigin in one program.
+/// Uniform locations of uDepthCoeffs, uDepthWindow and uDrawOrigin in one program.
 struct SceneDepthUniforms {
-    int coeffs = -1, far = -1, window = -1, drawOrigin = -1;
+    int coeffs = -1, window = -1, drawOrigin = -1;
     /// Looks the four up in `program`.
     void locate(uint32_t program);
 };
