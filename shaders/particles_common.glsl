@@ -141,9 +141,11 @@ float nearFadeFactor(float depth) {
 // 1.278 with texelFetch).
 // `fragCoord` is gl_FragCoord of the target being drawn; the view's placement in it and in the
 // depth texture is particles_scene_depth.glsl's (both offsets 0 for a view at (0, 0) of its own).
+// uDepthUv: (texel of the view's pixel (0, 0) - uDrawOrigin, 1) / the texture's size, set once per
+// draw (SceneDepthSource.cpp), so a fragment pays one multiply-add for its coordinate.
+uniform vec4 uDepthUv;
 float sceneDepthAt(vec2 fragCoord) {
-    vec2 texel = fragCoord + vec2(uDepthWindow.xy - uDrawOrigin);
-    return linearSceneDepth(textureLod(uSceneDepth, texel / vec2(textureSize(uSceneDepth, 0)), 0.0).r);
+    return linearSceneDepth(textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r);
 }
 
 // Premultiplied output. `ramp`: the ramp colour (straight alpha); `fade`: the particle's

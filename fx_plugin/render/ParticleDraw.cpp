@@ -35,6 +35,15 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
     bindTextureUnit(kRampUnit, ramp_.texture());
     depthSampler_.bindTexture(kSceneDepthUnit, in.sceneDepth);  // the host's, or the half-res copy
     if (in.sceneDepth) sceneDepthBarrier(in.depthDecode);
+    // The depth texture's size for uDepthUv where the pass did not place the decode (the half-res
+    // depth of quarter res, read in its own target from its (0, 0)).
+    SceneDepthDecode depthDecode = in.depthDecode;
+    if (in.sceneDepth && depthDecode.depthSize.x == 0) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + kSceneDepthUnit));
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &depthDecode.depthSize.x);
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &depthDecode.depthSize.y);
+        glActiveTexture(GL_TEXTURE0);
+    }
     if (record.lit()) {
         bindTextureUnit(kOpacityUnit, in.opacity);
     }
@@ -110,7 +119,7 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
         glUniform1i(p.atlas, kAtlasUnit);
         glUniform1i(p.ramp, kRampUnit);
         glUniform1i(p.sceneDepth, kSceneDepthUnit);
-        setSceneDepthDecode(p.depthDecode, in.depthDecode);
+        setSceneDepthDecode(p.depthDecode, depthDecode);
         setFogUniforms(p.fog, view.fog);
         if (p.tiles >= 0) {
             glUniform1i(p.tiles, FadeClassifier::kTileUnit);

@@ -46,6 +46,7 @@ SceneDepthDecode SceneDepthDecode::placedFor(const TextureRef& depth, const View
     out.texel = viewOriginInDepth(depth.width, depth.height, view);
     out.viewSize = glm::ivec2(view.width, view.height);
     out.drawOrigin = intoSceneColor ? glm::ivec2(view.x, view.y) : glm::ivec2(0);
+    out.depthSize = glm::ivec2(depth.width, depth.height);
     return out;
 }
 
@@ -53,12 +54,20 @@ void SceneDepthUniforms::locate(uint32_t program) {
     coeffs = glGetUniformLocation(program, "uDepthCoeffs");
     window = glGetUniformLocation(program, "uDepthWindow");
     drawOrigin = glGetUniformLocation(program, "uDrawOrigin");
+    uv = glGetUniformLocation(program, "uDepthUv");
 }
 
 void setSceneDepthDecode(const SceneDepthUniforms& at, const SceneDepthDecode& decode) {
     glUniform4f(at.coeffs, decode.a, decode.b, decode.c, decode.d);
     glUniform4i(at.window, decode.texel.x, decode.texel.y, decode.viewSize.x, decode.viewSize.y);
     glUniform2i(at.drawOrigin, decode.drawOrigin.x, decode.drawOrigin.y);
+    if (at.uv >= 0 && decode.depthSize.x > 0 && decode.depthSize.y > 0) {
+        // Worked out here once, not per fragment: a CPU rasteriser does not hoist uniform-only
+        // arithmetic out of the fragment shader.
+        const glm::vec2 inv = 1.0f / glm::vec2(decode.depthSize);
+        const glm::vec2 offset = glm::vec2(decode.texel - decode.drawOrigin) * inv;
+        glUniform4f(at.uv, offset.x, offset.y, inv.x, inv.y);
+    }
 }
 
 }  // namespace fx

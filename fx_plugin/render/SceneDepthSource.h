@@ -39,6 +39,7 @@ struct SceneDepthDecode {
     glm::ivec2 texel{0};        ///< the depth texel of the view's pixel (0, 0) (placedFor)
     glm::ivec2 viewSize{0};     ///< the view's size: the full-screen passes' bounds (placedFor)
     glm::ivec2 drawOrigin{0};   ///< the view's pixel (0, 0) in the framebuffer the pass draws into
+    glm::ivec2 depthSize{0};    ///< the depth texture's size (placedFor); 0 = not known yet
 
     static SceneDepthDecode linear() { return SceneDepthDecode{}; }
     /// This decode for the depth texture `depth` of `view`, read by a pass that draws into
@@ -68,11 +69,12 @@ glm::ivec2 viewOriginInDepth(int w, int h, const ViewInfo& view);
 
 /// Uniform locations of uDepthCoeffs, uDepthWindow and uDrawOrigin in one program.
 struct SceneDepthUniforms {
-    int coeffs = -1, window = -1, drawOrigin = -1;
-    /// Looks the four up in `program`.
+    int coeffs = -1, window = -1, drawOrigin = -1, uv = -1;
+    /// Looks them up in `program` (uDepthUv: the billboard programs' sceneDepthAt only).
     void locate(uint32_t program);
 };
-/// Sets the decode (and its placement) on the program in use.
+/// Sets the decode (and its placement) on the program in use. uDepthUv, the texture coordinate
+/// of a fragment (gl_FragCoord * zw + xy), needs decode.depthSize.
 void setSceneDepthDecode(const SceneDepthUniforms& at, const SceneDepthDecode& decode);
 /// Once per pass that samples the z-buffer, before its first draw: a texture barrier, so the
 /// host's depth writes are visible to the pass's fetches. Nothing for linear depth.
