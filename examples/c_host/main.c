@@ -246,7 +246,7 @@ int main(int argc, char** argv) {
     Player players[PLAYERS] = {{"player 1", 0, {2.6f, -3.6f, 1.0f}, {0.0f, 0.5f, 0.6f}, {0}, {0}, 0},
                                {"player 2", VIEW_WIDTH, {-3.2f, -2.4f, 1.8f}, {0.0f, 0.4f, 0.8f}, {0}, {0}, 0}};
     /* The fog begins past the post, so player 1 sees the post in its own colour. */
-    const Fog fog = {{0.45f, 0.55f, 0.7f}, 4.0f, 30.0f};
+    const Fog fog = {{0.45f, 0.55f, 0.7f}, 4.0f, 15.0f};
     Car car = {{0.0f, -0.3f, 0.0f}, {0.0f, 0.4f, 0.0f}}; /* creeping north while the wheel spins */
     OSMesaContext context;
     unsigned char *before, *after;
