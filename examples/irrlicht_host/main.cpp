@@ -13,7 +13,7 @@
 // Prints the label's rectangle and the median frame time (CPU clock, beginScene to endScene).
 //
 // The lines between the fx-adapter begin/end markers are everything the host adds for the
-// plugin (count_adapter_lines.sh counts them).
+// plugin (examples/count_adapter_lines.sh counts them).
 #include <irrlicht.h>
 #include <GL/glx.h>  // glXGetProcAddress: the plugin loads GL through the host's context
 

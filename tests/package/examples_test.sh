@@ -2,8 +2,12 @@
 # The C and Irrlicht examples against the package that package_test.sh installed and moved (ctest
 # fixture "cubefx_package"; label "package"). Each builds with only CMAKE_PREFIX_PATH pointing at
 # the prefix (find_package(CubeFx CONFIG REQUIRED)) and runs:
-#   c_host         C99 through fx/fx.h on OSMesa; checks smoke pixels, the occluding post intact,
-#                  no plugin or GL error (its own exit status). Built twice, neither with glm:
+#   c_host         C99 through fx/fx.h on OSMesa: a Z-up world, linear fog, a two-player split
+#                  screen (two viewports, a scissor each, one renderView each). Its exit status
+#                  checks smoke pixels in each half, the occluding post intact, no plugin or GL
+#                  error; here each half's printed smoke count must be > 0, and its adapter lines
+#                  (examples/count_adapter_lines.sh on its main.c) 1 .. MAX_C_HOST_ADAPTER_LINES.
+#                  Built twice, neither with glm:
 #                  by CMake (find_package(CubeFx COMPONENTS C), glm made unfindable with
 #                  CMAKE_DISABLE_FIND_PACKAGE_glm) on its own smoke.yaml, and by its Makefile
 #                  through pkg-config alone, with a pkg-config path that holds no glm.pc and
@@ -26,6 +30,7 @@ prefix=$2
 work=$3
 example=$4
 MIN_SMOKE_PIXELS=1500  # of 76800; the trail covers several thousand at 320x240
+MAX_C_HOST_ADAPTER_LINES=40  # a Z-up host with fog and a split screen
 log() { echo "examples_test: $*"; }
 fail() { echo "examples_test: FAIL: $*"; exit 1; }
 [ -e "$prefix/lib/cmake/CubeFx/CubeFxConfig.cmake" ] || fail "no installed package at $prefix (package_test.sh installs it)"
@@ -49,8 +54,17 @@ c_host)
   build c_host -DCMAKE_DISABLE_FIND_PACKAGE_glm=ON
   grep -q "CubeFx example reactions: $prefix/share/cubefx/reactions" "$work/c_host-configure.log" ||
     fail "CubeFx_REACTIONS_DIR does not name the installed reactions"
-  "$work/c_host/c_host" "$work/c_host/smoke.yaml" "$work/c_host.png"
+  "$work/c_host/c_host" "$work/c_host/smoke.yaml" "$work/c_host.png" | tee "$work/c_host.out"
   [ -s "$work/c_host.png" ] || fail "c_host wrote no PNG"
+  for player in 1 2; do  # "player N: renderView None; smoke pixels P of ..."
+    px=$(sed -n "s/^player $player: .*smoke pixels \([0-9]*\) of.*/\1/p" "$work/c_host.out")
+    [ -n "$px" ] && [ "$px" -gt 0 ] || fail "no smoke in player $player's half (${px:-no count printed})"
+  done
+  bash "$src/examples/count_adapter_lines.sh" "$src/examples/c_host/main.c" | tee "$work/c_host_adapter.txt"
+  adapter=$(sed -n 's/^total //p' "$work/c_host_adapter.txt")
+  log "c_host adapter lines: $adapter (need <= $MAX_C_HOST_ADAPTER_LINES)"
+  [ "${adapter:-0}" -gt 0 ] || fail "no adapter lines counted in c_host/main.c (markers missing?)"
+  [ "$adapter" -le "$MAX_C_HOST_ADAPTER_LINES" ] || fail "c_host's adapter is $adapter lines"
 
   log "examples/c_host/Makefile: pkg-config only, no glm.pc on the pkg-config path"
   noglm=$work/pkgconfig-without-glm  # the host's other packages, and not glm
