@@ -27,6 +27,11 @@ uniform float uDepthFalloff;     // relative depth difference where the weight i
 
 layout(location = 0) out vec4 oColor;
 #ifdef FX_MEGA_SHADE
+// The host's fog, at the cloud texel's depth (its front, which the composite's softness also
+// measures from): here at the cloud's resolution, once per texel, not per tap of every
+// full-resolution pixel of the composite. The upsample is linear in the colour, so the picture is
+// the one the composite fogging each tap at its depth gave.
+#include "particles_fog.glsl"
 #include "mega_shade.glsl"
 layout(location = 1) out vec4 oDepth;  // R32F: the cloud's depth, 0 where there is none
 #else
@@ -70,6 +75,7 @@ void main() {
     vec4 density = sumDensity / sumW;
 #ifdef FX_MEGA_SHADE
     oColor = megaShade(colour, density, p, last);
+    if (oColor.a > 0.0) oColor = applyFog(oColor, colour.a);
     oDepth = vec4(oColor.a > 0.0 ? colour.a : 0.0);
 #else
     oColor = colour;

@@ -7,13 +7,13 @@
 // saturate((scene - cloud) / render.softness). Geometry nearer than the cloud gets no smoke,
 // however far the blur spread the cloud's edge over it (seed 001's caveat about fuzzy edges
 // creeping over objects in front), and geometry just behind the cloud's front fades it softly.
-// The host's fog (particles_fog.glsl) is applied per tap at that tap's cloud depth.
+// The cloud arrives fogged (fs_mega_blur.glsl, at each texel's cloud depth): the upsample only
+// weighs it.
 uniform sampler2D uCloud;       // RGBA16F premultiplied
 uniform sampler2D uCloudDepth;  // R32F metres, 0 = no cloud
 uniform sampler2D uSceneDepth;  // full resolution: the z-buffer or linear R32F
 #include "particles_scene_depth.glsl"
 uniform float uSoftScale;       // 1 / render.softness, 1/m
-#include "particles_fog.glsl"
 #include "particles_footprint.glsl"
 
 layout(location = 0) out vec4 oColor;
@@ -31,8 +31,7 @@ void main() {
         float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
         float cloud = texelFetch(uCloudDepth, tap, 0).r;
         float visible = cloud > 0.0 ? clamp((scene - cloud) * uSoftScale, 0.0, 1.0) : 0.0;
-        // Each tap fogged at its cloud's front, the depth the blur kept for it.
-        sum += (w * visible) * applyFog(texelFetch(uCloud, tap, 0), cloud);
+        sum += (w * visible) * texelFetch(uCloud, tap, 0);
     }
     oColor = sum;
 }

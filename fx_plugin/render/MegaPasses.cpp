@@ -137,6 +137,7 @@ void MegaPasses::runBlur(PassContext& ctx, const MegaCloud& r, Target inColor, T
     glUniform1f(u.sigma, std::max(sigma, 1e-3f));
     glUniform1f(u.falloff, kDepthFalloff);
     if (shade) {
+        setFogUniforms(programs_->shadeFog, r.view.fog);
         const glm::mat4 invView = glm::inverse(r.view.view);
         glUniformMatrix4fv(u.invView, 1, GL_FALSE, &invView[0][0]);
         glUniform4f(u.projTerms, r.view.proj[0][0], r.view.proj[1][1], r.view.proj[2][0], r.view.proj[2][1]);
@@ -180,7 +181,6 @@ void MegaPasses::runComposite(PassContext& ctx, const MegaCloud& r, Target cloud
     setSceneDepthDecode(programs_->cDecode, r.depthDecode.placedFor(depthRef, r.view, true));  // into sceneColor
     sceneDepthBarrier(r.depthDecode);
     glUniform1f(programs_->cSoft, r.softScale);
-    setFogUniforms(programs_->cFog, r.view.fog);
     drawFullscreen();
 }
 

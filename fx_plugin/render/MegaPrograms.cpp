@@ -47,7 +47,7 @@ void MegaPrograms::build(const std::string& dir, std::vector<std::string>* error
                                {&cDecode.coeffs, "uDepthCoeffs"},
                                {&cDecode.window, "uDepthWindow"}, {&cDecode.drawOrigin, "uDrawOrigin"},
                                {&cSoft, "uSoftScale"}});
-    cFog = FogUniforms::of(composite);
+    shadeFog = FogUniforms::of(shade);
 }
 
 }  // namespace fx

@@ -24,7 +24,7 @@ struct MegaPrograms {
     } b[2];  // [0] blur, [1] blur + shade
     int cCloud = -1, cCloudDepth = -1, cScene = -1, cSoft = -1;
     SceneDepthUniforms cDecode;
-    FogUniforms cFog;
+    FogUniforms shadeFog;  ///< the shading blur's (the cloud is fogged there, at its resolution)
 
     MegaPrograms() = default;
     ~MegaPrograms();
