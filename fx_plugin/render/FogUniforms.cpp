@@ -6,6 +6,7 @@ namespace fx {
 
 FogUniforms FogUniforms::of(uint32_t program) {
     FogUniforms u;
+    if (program == 0) return u;  // a build that failed: nothing to look up (0 is no program)
     u.mode = glGetUniformLocation(program, "uFogMode");
     u.color = glGetUniformLocation(program, "uFogColor");
     u.params = glGetUniformLocation(program, "uFogParams");

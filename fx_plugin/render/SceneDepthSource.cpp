@@ -51,6 +51,7 @@ SceneDepthDecode SceneDepthDecode::placedFor(const TextureRef& depth, const View
 }
 
 void SceneDepthUniforms::locate(uint32_t program) {
+    if (program == 0) return;  // a build that failed: nothing to look up (0 is no program)
     coeffs = glGetUniformLocation(program, "uDepthCoeffs");
     window = glGetUniformLocation(program, "uDepthWindow");
     drawOrigin = glGetUniformLocation(program, "uDrawOrigin");
