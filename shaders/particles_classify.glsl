@@ -1,4 +1,4 @@
-// Fade classification (issue 14 item 4), included after particles_common.glsl by vs_particles.glsl
+// Fade classification, included after particles_common.glsl by vs_particles.glsl
 // (FX_CLASSIFY) and vs_particles_count.glsl. From the scene depth's range per screen tile
 // (fs_particles_tile_depth.glsl: min and max linear depth per 16 px tile, and per 64 px tile) a
 // particle is put in one of three classes:

@@ -53,7 +53,7 @@ struct Options {
     bool litSmoke = true;         ///< hand the sun to the plugin (false: --unlit-smoke, the 1.1 look)
     bool panel = false;           ///< the live tweak panel (engine_stub/panel), window or headless
     /// --sun: degrees; azimuth in the ground plane from +X toward +Z, elevation above the
-    /// horizon (render/SunLight.h). Default: the race scene's sun before issue 16.
+    /// horizon (render/SunLight.h). Default: the race scene's first sun, from before the sun became an option.
     double sunAzimuth = kDefaultSunAzimuthDeg;
     double sunElevation = kDefaultSunElevationDeg;
     /// --fog: the track's fog, which the plugin then applies to the smoke too. Default off: the

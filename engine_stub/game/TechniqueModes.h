@@ -2,7 +2,7 @@
 // The engine's technique override words in one table: `--mode WORD`, the HUD line and the
 // panel's technique combo read it. They are the public fx::Technique values (the run-time
 // override), not the reaction-file words: those (stateless included) are the plugin's
-// TechniqueTable, which the engine reaches only through reactionSchema() (issue 31, item 1).
+// TechniqueTable, which the engine reaches only through reactionSchema().
 #include <cstddef>
 #include <string>
 

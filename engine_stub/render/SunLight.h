@@ -7,7 +7,7 @@
 
 namespace cube {
 
-/// Today's sun (shaders/common.glsl up to issue 16: normalize(-0.35, 0.85, 0.40)) as angles:
+/// Today's sun (shaders/common.glsl's fixed sun before it became an option: normalize(-0.35, 0.85, 0.40)) as angles:
 /// azimuth in the ground plane from +X (the track direction) toward +Z, elevation above the
 /// horizon, both in degrees.
 constexpr double kDefaultSunAzimuthDeg = 131.18592516570965;

@@ -1,5 +1,5 @@
 #pragma once
-// The host's own z-buffer as the plugin's linear scene depth (issue 30 item 2). A host that has no
+// The host's own z-buffer as the plugin's linear scene depth. A host that has no
 // linear R32F depth gives either a depth texture (GL_DEPTH_COMPONENT16/24/32F or
 // GL_DEPTH24_STENCIL8, GL_TEXTURE_2D, drawn with the view's projection) or nothing but the
 // framebuffer bound for drawing; DepthLinearizer copies the latter's depth attachment into a depth

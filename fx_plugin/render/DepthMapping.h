@@ -1,6 +1,7 @@
 #pragma once
-// How a host's z-buffer maps distance, and its inversion back to linear view depth (issue 30
-// item 2). Pure maths, no GL: DepthLinearizer's linearise pass evaluates linearDepthOf() per pixel with
+// How a host's z-buffer maps distance, and its inversion back to linear view depth. Pure maths,
+// no GL: the particle shaders (SceneDepthSource.h) and DepthLinearizer's linearise pass evaluate
+// linearDepthOf()'s coefficients per pixel, built here with
 // the coefficients built here, and the z-tested passes take their compare direction from
 // conventionOf().
 //

@@ -1,5 +1,5 @@
 #pragma once
-// Fade classification (issue 14 item 4; Plugin::setFadeClassification): before the full-res
+// Fade classification (Plugin::setFadeClassification): before the full-res
 // particle pass, one small pass reduces the scene depth to its (min, max) per 16 px tile and per
 // 64 px tile ("particles_tile_depth", targets "particles_tiles" and "particles_tiles_coarse",
 // RG32F, a 1/256 and a 1/4096 of the view's pixels). The soft and spherical programs built with

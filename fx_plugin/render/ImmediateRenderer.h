@@ -1,5 +1,5 @@
 #pragma once
-// The immediate path (issue 30 item 3): for an engine without a frame graph. One call per view
+// The immediate path: for an engine without a frame graph. One call per view
 // draws the plugin's passes into the framebuffer bound for drawing at the call; the plugin brings
 // its own frame graph (ImmediateFrame), its own render targets (ImmediateTargetPool, kept across
 // frames) and, when the host has no linear depth, its own linear depth from the host's z-buffer

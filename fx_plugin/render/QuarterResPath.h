@@ -73,7 +73,7 @@
 //   below kDepthThreshold (a wheel against the road a few per cent behind it) where the soft
 //   fade still changes within a half-res texel.
 //
-// Fixed costs (issue 14 item 5). The downsample, the half-res z-fill, the edge mask and the
+// Fixed costs. The downsample, the half-res z-fill, the edge mask and the
 // composite are drawn on ScreenTiles (16 px tiles a particle's bound touches, as runs) instead
 // of one triangle over the rect, with billboards bounded by their view-plane square rather than
 // a cube; and the composite is three builds (depth-aware, bilinear, mixed) instead of one with

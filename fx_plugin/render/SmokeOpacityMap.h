@@ -1,5 +1,5 @@
 #pragma once
-// The smoke's opacity seen from the sun (issue 16's self-shadowing; API 1.2 SmokeShadow).
+// The smoke's opacity seen from the sun (lit smoke's self-shadowing; API 1.2 SmokeShadow).
 //
 // Choice: an opacity shadow map with four slices in one RGBA16F target (Kim and Neumann's
 // opacity shadow maps, with the slices as colour channels) rather than half-angle slicing.
