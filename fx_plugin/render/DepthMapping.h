@@ -1,9 +1,8 @@
 #pragma once
 // How a host's z-buffer maps distance, and its inversion back to linear view depth. Pure maths,
 // no GL: the particle shaders (SceneDepthSource.h) and DepthLinearizer's linearise pass evaluate
-// linearDepthOf()'s coefficients per pixel, built here with
-// the coefficients built here, and the z-tested passes take their compare direction from
-// conventionOf().
+// the coefficients built here (linearDepthOf()'s inversion) per pixel, and the z-tested passes
+// take their compare direction from conventionOf().
 //
 // The inversion. A right-handed view (camera looks down -Z; the C layer converts left-handed
 // hosts with view' = F view, proj' = proj F, F = diag(1, 1, -1, 1)), any projection P (glm,
