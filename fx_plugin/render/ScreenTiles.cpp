@@ -21,6 +21,52 @@ void addRun(ScreenTiles* tiles, int x0, int y0, int x1, int y1) {
     tiles->pixels += int64_t(x1 - x0) * (y1 - y0);
 }
 
+// The projection's shape: a perspective one (glm::perspective, glm::frustum, an infinite or
+// reversed-Z far plane: clip.w = -z, x and y not mixed) lets a footprint's screen bound come from
+// its centre's two extreme depths instead of projecting eight corners. Any other projection
+// (orthographic, skewed) takes the general path.
+bool plainPerspective(const glm::mat4& p) {
+    return p[0][1] == 0.0f && p[1][0] == 0.0f && p[0][3] == 0.0f && p[1][3] == 0.0f && p[2][3] == -1.0f &&
+           p[3][3] == 0.0f && p[0][0] > 0.0f && p[1][1] > 0.0f;
+}
+
+// Marks the tiles [tx0, tx1] x [ty0, ty1] in the (tilesX + 1) x (tilesY + 1) difference grid: four
+// writes whatever the particle's size; the prefix sum in tileRuns() turns them into coverage.
+void markTiles(std::vector<int32_t>& grid, int tilesX, int tx0, int tx1, int ty0, int ty1) {
+    const int stride = tilesX + 1;
+    grid[size_t(ty0 * stride + tx0)] += 1;
+    grid[size_t(ty0 * stride + tx1 + 1)] -= 1;
+    grid[size_t((ty1 + 1) * stride + tx0)] -= 1;
+    grid[size_t((ty1 + 1) * stride + tx1 + 1)] += 1;
+}
+
+// The difference grid summed into coverage, row by row, as horizontal runs of covered tiles.
+void tileRuns(ScreenTiles* tiles, int tilesX, int tilesY, int w, int h) {
+    const int stride = tilesX + 1;
+    std::vector<int32_t>& g = tiles->grid;
+    for (int ty = 0; ty < tilesY; ++ty) {
+        int32_t* row = g.data() + ty * stride;
+        if (ty > 0) {
+            const int32_t* above = row - stride;
+            for (int tx = 0; tx < stride; ++tx) row[tx] += above[tx];  // column sums so far
+        }
+        int32_t run = 0;  // the row's running sum: the coverage of tile tx
+        for (int tx = 0; tx < tilesX;) {
+            run += row[tx];
+            if (run <= 0) {
+                ++tx;
+                continue;
+            }
+            int end = tx + 1;
+            int32_t next = run;
+            while (end < tilesX && (next += row[end]) > 0) ++end;
+            addRun(tiles, tx * kTileSize, ty * kTileSize, std::min(w, end * kTileSize), std::min(h, (ty + 1) * kTileSize));
+            run = next;  // the coverage of tile `end` (0 or less), or past the row's end
+            tx = end + 1;
+        }
+    }
+}
+
 }  // namespace
 
 ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, int count, ScreenTiles* tiles,
@@ -33,7 +79,7 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
         tiles->pixels = 0;
         tiles->viewWidth = w;
         tiles->viewHeight = h;
-        tiles->grid.assign(size_t(std::max(0, tilesX * tilesY)), 0);
+        tiles->grid.assign(size_t(std::max(0, (tilesX + 1) * (tilesY + 1))), 0);
     }
     auto wholeView = [&]() {
         if (tiles && w > 0 && h > 0) {
@@ -43,29 +89,49 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
         }
         return r;  // whole = true
     };
+    const glm::mat4& V = view.view;
+    const glm::mat4& P = view.proj;
+    const bool perspective = plainPerspective(P);
+    const bool flat = footprint == Footprint::Billboard;
     float lo[2] = {1e30f, 1e30f}, hi[2] = {-1e30f, -1e30f};
     bool any = false;
     for (int i = 0; i < count; ++i) {
         const ParticleInstance& p = instances[i];
-        const glm::vec3 c = glm::vec3(view.view * glm::vec4(p.x, p.y, p.z, 1.0f));
+        const glm::vec3 c(V[0][0] * p.x + V[1][0] * p.y + V[2][0] * p.z + V[3][0],
+                          V[0][1] * p.x + V[1][1] * p.y + V[2][1] * p.z + V[3][1],
+                          V[0][2] * p.x + V[1][2] * p.y + V[2][2] * p.z + V[3][2]);
         const float radius = 0.71f * p.size;
         // A billboard lies in the view plane through its centre: its square, no depth extent.
-        const float depthExtent = footprint == Footprint::Billboard ? 0.0f : radius;
+        const float depthExtent = flat ? 0.0f : radius;
         if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) || !std::isfinite(radius)) {
             return wholeView();  // no bound to trust
         }
         if (c.z - depthExtent >= -view.nearPlane) continue;      // wholly behind the near plane: clipped
         if (c.z + depthExtent >= -view.nearPlane) return wholeView();  // reaches the near plane
-        float plo[2] = {1e30f, 1e30f}, phi[2] = {-1e30f, -1e30f};
-        const int corners = depthExtent > 0.0f ? 8 : 4;  // a flat square has 4
-        for (int corner = 0; corner < corners; ++corner) {
-            const glm::vec3 q = c + glm::vec3(corner & 1 ? radius : -radius, corner & 2 ? radius : -radius,
-                                              corner & 4 ? depthExtent : -depthExtent);
-            const glm::vec4 clip = view.proj * glm::vec4(q, 1.0f);
+        float plo[2], phi[2];
+        if (perspective) {
+            // ndc.x = (P00 x + P30) / -z - P20, monotone in x and in 1/-z: the extremes lie at the
+            // corners (x +- r, z +- e), so two reciprocals bound all eight (y likewise).
+            const float nearInv = 1.0f / -(c.z + depthExtent), farInv = 1.0f / -(c.z - depthExtent);
             for (int a = 0; a < 2; ++a) {
-                const float ndc = clip[a] / clip.w;
-                plo[a] = std::min(plo[a], ndc);
-                phi[a] = std::max(phi[a], ndc);
+                const float lowEdge = P[a][a] * (c[a] - radius) + P[3][a];
+                const float highEdge = P[a][a] * (c[a] + radius) + P[3][a];
+                plo[a] = std::min(lowEdge * nearInv, lowEdge * farInv) - P[2][a];
+                phi[a] = std::max(highEdge * nearInv, highEdge * farInv) - P[2][a];
+            }
+        } else {
+            plo[0] = plo[1] = 1e30f;
+            phi[0] = phi[1] = -1e30f;
+            const int corners = depthExtent > 0.0f ? 8 : 4;  // a flat square has 4
+            for (int corner = 0; corner < corners; ++corner) {
+                const glm::vec3 q = c + glm::vec3(corner & 1 ? radius : -radius, corner & 2 ? radius : -radius,
+                                                  corner & 4 ? depthExtent : -depthExtent);
+                const glm::vec4 clip = P * glm::vec4(q, 1.0f);
+                for (int a = 0; a < 2; ++a) {
+                    const float ndc = clip[a] / clip.w;
+                    plo[a] = std::min(plo[a], ndc);
+                    phi[a] = std::max(phi[a], ndc);
+                }
             }
         }
         for (int a = 0; a < 2; ++a) {
@@ -83,12 +149,8 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
             const float px0 = toPixel(plo[0], w), px1 = toPixel(phi[0], w);
             const float py0 = toPixel(plo[1], h), py1 = toPixel(phi[1], h);
             if (px1 < -kTileBorder || py1 < -kTileBorder || px0 > w + kTileBorder || py0 > h + kTileBorder) continue;
-            const int tx0 = tileOf(px0, -kTileBorder, tilesX), tx1 = tileOf(px1, kTileBorder, tilesX);
-            const int ty0 = tileOf(py0, -kTileBorder, tilesY), ty1 = tileOf(py1, kTileBorder, tilesY);
-            for (int ty = ty0; ty <= ty1; ++ty) {
-                std::fill(tiles->grid.begin() + ty * tilesX + tx0, tiles->grid.begin() + ty * tilesX + tx1 + 1,
-                          uint8_t(1));
-            }
+            markTiles(tiles->grid, tilesX, tileOf(px0, -kTileBorder, tilesX), tileOf(px1, kTileBorder, tilesX),
+                      tileOf(py0, -kTileBorder, tilesY), tileOf(py1, kTileBorder, tilesY));
         }
     }
     if (!any) {
@@ -106,23 +168,7 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
         return r;  // no tiles either: every bound was off screen
     }
     r.whole = r.x0 == 0 && r.y0 == 0 && r.x1 == w && r.y1 == h;
-    if (tiles) {
-        // Horizontal runs of marked tiles, clamped to the view.
-        for (int ty = 0; ty < tilesY; ++ty) {
-            const uint8_t* row = tiles->grid.data() + ty * tilesX;
-            for (int tx = 0; tx < tilesX;) {
-                if (!row[tx]) {
-                    ++tx;
-                    continue;
-                }
-                int end = tx;
-                while (end < tilesX && row[end]) ++end;
-                addRun(tiles, tx * kTileSize, ty * kTileSize, std::min(w, end * kTileSize),
-                       std::min(h, (ty + 1) * kTileSize));
-                tx = end;
-            }
-        }
-    }
+    if (tiles) tileRuns(tiles, tilesX, tilesY, w, h);
     return r;
 }
 

@@ -30,7 +30,9 @@ struct ScreenTiles {
     static constexpr int kTileSize = 16;
     static constexpr int kTileBorder = 6;
     std::vector<float> vertices;  ///< x, y in full-resolution pixels, 6 per run (2 triangles)
-    std::vector<uint8_t> grid;    ///< scratch: tiles marked this frame (kept for its capacity)
+    /// Scratch (kept for its capacity): per particle +-1 at the corners of its tile range, summed
+    /// into coverage once per frame, so a large particle costs no more than a small one.
+    std::vector<int32_t> grid;
     int64_t pixels = 0;           ///< pixels the runs cover
     int viewWidth = 0, viewHeight = 0;
     int runs() const { return int(vertices.size() / 12); }

@@ -176,6 +176,71 @@ TEST(ScreenTiles, NearPlaneGivesTheWholeViewAndNothingInFrontGivesNoRuns) {
     }
 }
 
+// The rect against the footprint's corners projected one by one (the box: 8 corners, the
+// billboard: 4), under a symmetric perspective, an off-centre one, an infinite reversed-Z one
+// (whose bound the renderer takes from two depths instead of eight corners) and an orthographic
+// projection (which takes the corners): equal to the pixel, the rect's one pixel of slack included.
+TEST(ScreenTiles, TheRectIsTheBoundOfTheProjectedCorners) {
+    ViewInfo base = testView();
+    glm::mat4 reversedInfinite(0.0f);
+    {
+        const float f = 1.0f / std::tan(glm::radians(30.0f));
+        reversedInfinite[0][0] = f / (float(kW) / float(kH));
+        reversedInfinite[1][1] = f;
+        reversedInfinite[2][3] = -1.0f;
+        reversedInfinite[3][2] = base.nearPlane;
+    }
+    const glm::mat4 projections[4] = {
+        base.proj, glm::frustum(-0.02f, 0.1f, -0.05f, 0.04f, base.nearPlane, base.farPlane), reversedInfinite,
+        glm::ortho(-8.0f, 8.0f, -6.0f, 6.0f, base.nearPlane, base.farPlane)};
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    int compared[4] = {0, 0, 0, 0};
+    for (int pi = 0; pi < 4; ++pi) {
+        ViewInfo view = base;
+        view.proj = projections[pi];
+        for (int fp = 0; fp < 2; ++fp) {
+            const Footprint footprint = fp ? Footprint::Box : Footprint::Billboard;
+            for (int trial = 0; trial < 50; ++trial) {
+                std::vector<ParticleInstance> particles(3);
+                float lo[2] = {1e30f, 1e30f}, hi[2] = {-1e30f, -1e30f};
+                bool clipped = false;
+                for (ParticleInstance& p : particles) {
+                    p.x = 2.0f * u(rng);
+                    p.y = 1.0f + u(rng);
+                    p.z = -2.0f + 2.0f * u(rng);
+                    p.size = 0.6f + 0.5f * u(rng);
+                    const glm::vec3 c(view.view * glm::vec4(p.x, p.y, p.z, 1.0f));
+                    const float r = 0.71f * p.size, e = fp ? r : 0.0f;
+                    if (c.z + e >= -view.nearPlane) clipped = true;
+                    for (int k = 0; k < 8; ++k) {
+                        const glm::vec4 clip = view.proj * glm::vec4(c.x + (k & 1 ? r : -r), c.y + (k & 2 ? r : -r),
+                                                                     c.z + (k & 4 ? e : -e), 1.0f);
+                        for (int a = 0; a < 2; ++a) {
+                            lo[a] = std::min(lo[a], clip[a] / clip.w);
+                            hi[a] = std::max(hi[a], clip[a] / clip.w);
+                        }
+                    }
+                }
+                if (clipped) continue;  // the whole view: tested elsewhere
+                const ScreenRect rect = screenRect(view, particles.data(), 3, nullptr, footprint);
+                const int x0 = std::max(0, int(std::floor((lo[0] * 0.5f + 0.5f) * kW)) - 1);
+                const int y0 = std::max(0, int(std::floor((lo[1] * 0.5f + 0.5f) * kH)) - 1);
+                const int x1 = std::min(kW, int(std::ceil((hi[0] * 0.5f + 0.5f) * kW)) + 1);
+                const int y1 = std::min(kH, int(std::ceil((hi[1] * 0.5f + 0.5f) * kH)) + 1);
+                if (x1 <= x0 || y1 <= y0) continue;  // off screen
+                // Rounding may move an edge that lands on a pixel boundary by one pixel, never more.
+                EXPECT_NEAR(rect.x0, x0, 1) << pi << " " << fp << " " << trial;
+                EXPECT_NEAR(rect.y0, y0, 1) << pi << " " << fp << " " << trial;
+                EXPECT_NEAR(rect.x1, x1, 1) << pi << " " << fp << " " << trial;
+                EXPECT_NEAR(rect.y1, y1, 1) << pi << " " << fp << " " << trial;
+                ++compared[pi];
+            }
+        }
+        EXPECT_GT(compared[pi], 60) << "projection " << pi << ": too few bounds on screen to compare";
+    }
+}
+
 TEST(ScreenTiles, ASteadyFrameReusesTheBuffers) {
     const ViewInfo view = testView();
     std::vector<ParticleInstance> particles(20);
@@ -188,7 +253,7 @@ TEST(ScreenTiles, ASteadyFrameReusesTheBuffers) {
     ScreenTiles tiles;
     screenRect(view, particles.data(), 20, &tiles, Footprint::Billboard);
     const float* vertices = tiles.vertices.data();
-    const uint8_t* grid = tiles.grid.data();
+    const int32_t* grid = tiles.grid.data();
     const std::vector<float> first = tiles.vertices;
     screenRect(view, particles.data(), 20, &tiles, Footprint::Billboard);
     EXPECT_EQ(tiles.vertices, first);
