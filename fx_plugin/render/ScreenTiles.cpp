@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "render/PrivateGl.h"
 
@@ -87,6 +88,7 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
             tiles->pixels = 0;
             addRun(tiles, 0, 0, w, h);
         }
+        r.footprintPixels = std::numeric_limits<double>::infinity();  // unbounded: the near plane, or no bound
         return r;  // whole = true
     };
     const glm::mat4& V = view.view;
@@ -139,6 +141,11 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
             hi[a] = std::max(hi[a], phi[a]);
         }
         any = true;
+        {
+            const float cx0 = std::max(0.0f, toPixel(plo[0], w)), cx1 = std::min(float(w), toPixel(phi[0], w));
+            const float cy0 = std::max(0.0f, toPixel(plo[1], h)), cy1 = std::min(float(h), toPixel(phi[1], h));
+            if (cx1 > cx0 && cy1 > cy0) r.footprintPixels += double(cx1 - cx0) * double(cy1 - cy0);
+        }
         if (tiles && tilesX > 0 && tilesY > 0) {
             // The particle's pixels grown by the border, as a tile range clamped to the view (the
             // float clamp first: a bound far off screen must not overflow the int).
@@ -170,6 +177,11 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
     r.whole = r.x0 == 0 && r.y0 == 0 && r.x1 == w && r.y1 == h;
     if (tiles) tileRuns(tiles, tilesX, tilesY, w, h);
     return r;
+}
+
+bool quarterResPays(const ScreenRect& rect, const ScreenTiles& tiles) {
+    if (tiles.pixels <= 0) return false;  // nothing on screen: no pass either way
+    return rect.footprintPixels >= kQuarterResMinOverdraw * double(tiles.pixels);
 }
 
 HostClip HostClip::current() {

@@ -17,6 +17,9 @@ namespace fx {
 struct ScreenRect {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     bool whole = true;
+    /// The pixels of every particle's bound (each clipped to the view) added up: an upper bound
+    /// of the fragments a full-resolution draw rasterises, overdraw included.
+    double footprintPixels = 0.0;
 };
 
 /// Finer than the rect: the screen tiles (kTileSize pixels square) that some particle's bound,
@@ -53,6 +56,18 @@ enum class Footprint { Box, Billboard };
 /// steady frame allocates nothing.
 ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, int count,
                       ScreenTiles* tiles = nullptr, Footprint footprint = Footprint::Box);
+
+/// Whether drawing this view's particles at quarter resolution costs less than drawing them at
+/// full resolution. Quarter res trades the particles' fragments (three in four saved) for fixed
+/// work over the tiles (the depth downsample and the composite, each a full-screen-like pass
+/// there); it pays only where the smoke overlaps itself enough. The rule compares the particles'
+/// summed bounds with the tiles' pixels: quarter res when that overdraw estimate reaches
+/// kQuarterResMinOverdraw. The estimate counts each particle's screen box (about four times the
+/// fragments a trimmed billboard rasterises), so 16 means about four layers of smoke; the figures
+/// behind it are in docs/results.md. An unbounded footprint (a particle at the near plane) always
+/// takes quarter res.
+constexpr double kQuarterResMinOverdraw = 16.0;
+bool quarterResPays(const ScreenRect& rect, const ScreenTiles& tiles);
 
 /// Scissor to `rect` on a target of w x h whose pixels are the view's times `scale` (0.5: half
 /// resolution), grown by `border` texels; no scissor for a whole-view rect.

@@ -241,6 +241,42 @@ TEST(ScreenTiles, TheRectIsTheBoundOfTheProjectedCorners) {
     }
 }
 
+// The overdraw estimate behind the quarter-res choice: one particle adds its clipped box, a stack
+// of them on one spot adds up while the tiles stay those of one, and a particle at the near plane
+// makes the bound unbounded (quarter res pays: it may cover the view).
+TEST(ScreenTiles, FootprintPixelsAddUpAndDecideQuarterRes) {
+    const ViewInfo view = testView();
+    ParticleInstance p;
+    p.x = 0.0f;
+    p.y = 1.0f;
+    p.z = 0.0f;
+    p.size = 0.5f;
+    float x0, y0, x1, y1;
+    billboardBound(view, p, &x0, &y0, &x1, &y1);
+    const double box = double(x1 - x0) * double(y1 - y0);
+    ScreenTiles tiles;
+    const ScreenRect one = screenRect(view, &p, 1, &tiles, Footprint::Billboard);
+    EXPECT_NEAR(one.footprintPixels, box, 0.01 * box);
+    const int64_t oneTiles = tiles.pixels;
+    EXPECT_FALSE(quarterResPays(one, tiles)) << "one particle never pays for the composite";
+
+    const std::vector<ParticleInstance> stack(40, p);
+    const ScreenRect many = screenRect(view, stack.data(), 40, &tiles, Footprint::Billboard);
+    EXPECT_NEAR(many.footprintPixels, 40.0 * box, 0.4 * box);
+    EXPECT_EQ(tiles.pixels, oneTiles);
+    EXPECT_EQ(quarterResPays(many, tiles), 40.0 * box >= kQuarterResMinOverdraw * double(oneTiles));
+    const std::vector<ParticleInstance> deep(400, p);
+    EXPECT_TRUE(quarterResPays(screenRect(view, deep.data(), 400, &tiles, Footprint::Billboard), tiles));
+
+    ParticleInstance close = p;
+    close.y = view.eye.y;
+    close.z = view.eye.z - 0.3f;  // its box (0.35 m deep each way) reaches the near plane
+    const ScreenRect near = screenRect(view, &close, 1, &tiles, Footprint::Box);
+    EXPECT_TRUE(near.whole);
+    EXPECT_TRUE(std::isinf(near.footprintPixels));
+    EXPECT_TRUE(quarterResPays(near, tiles));
+}
+
 TEST(ScreenTiles, ASteadyFrameReusesTheBuffers) {
     const ViewInfo view = testView();
     std::vector<ParticleInstance> particles(20);
