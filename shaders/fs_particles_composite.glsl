@@ -10,23 +10,13 @@
 // depth is closest. Smoke computed for a near surface then never smears onto a far one and vice
 // versa, and along an edge the result stays as smooth as bilinear. FX_COMPOSITE_BILINEAR keeps
 // plain bilinear (for comparison).
-//
-// Mixed resolution (FX_COMPOSITE_MIXED, QuarterResPath.h): the edge pixels (particles_mixed_edge.glsl,
-// the same threshold test) take the full-res redraw from uEdgeColor instead of any upsample;
-// every other pixel gets plain bilinear, which is what the depth-aware branch gives it too.
-// Three builds (QuarterResPath::CompositeVariant), not uniform branches: a CPU rasteriser runs
-// both sides of a branch, so one program with all three paths paid for every path's fetches.
+// Two builds (QuarterResPrograms::CompositeVariant), not a uniform branch: a CPU rasteriser runs
+// both sides of a branch, so one program with both paths paid for both paths' fetches.
 uniform sampler2D uHalfColor;   // premultiplied RGBA16F, half x half
 uniform sampler2D uHalfDepth;   // red: min depth per 2x2 block (RG32F, green the max)
 uniform sampler2D uSceneDepth;  // full-res scene depth (particles_scene_depth.glsl)
 uniform float uDepthThreshold;  // relative: |low - full| > threshold * full is an edge
-// Before the #ifdef: an include is expanded once per stage, so a first copy inside the mixed
-// build's block would leave the other builds without it.
 #include "particles_scene_depth.glsl"
-#ifdef FX_COMPOSITE_MIXED
-uniform sampler2D uEdgeColor;   // premultiplied RGBA16F, full size, the edge pixels' redraw
-#include "particles_mixed_edge.glsl"
-#endif
 #include "particles_footprint.glsl"
 
 layout(location = 0) out vec4 oColor;
@@ -49,12 +39,6 @@ void main() {
 
 #if defined(FX_COMPOSITE_BILINEAR)
     oColor = bilinear;
-#elif defined(FX_COMPOSITE_MIXED)
-    ivec2 taps[4] = ivec2[4](t0, t1, t2, t3);
-    float pixelDepth = particlesFullDepth(uSceneDepth, pixel);
-    oColor = particlesIsEdge(uHalfDepth, taps, pixelDepth, uDepthThreshold)
-                 ? texelFetch(uEdgeColor, ivec2(pixel), 0)
-                 : bilinear;
 #else
     // On an edge, keep the bilinear weights of the texels on this pixel's side of it (depth
     // within the threshold), renormalised; only when none is, the single nearest-depth texel

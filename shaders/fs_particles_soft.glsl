@@ -13,14 +13,7 @@ layout(location = 0) out vec4 oColor;
 void main() {
     vec4 texel = texture(uAtlas, atlasUV(vLocal, vCell)) * insideFrame(vLocal);
     float depth = -vViewPos.z;
-#ifdef FX_CLASSIFY
-    // In front of the scene by more than the softness in every tile it covers: the fade is 1
-    // (particles_classify.glsl), and the scene depth is not read.
-    float fade = 1.0;
-    if (vInFront == 0.0) fade = softFade(sceneDepthAt(gl_FragCoord.xy), depth);
-#else
     float fade = softFade(sceneDepthAt(gl_FragCoord.xy), depth);
-#endif
     float coverage = texel.a * fade * nearFadeFactor(depth);
 #ifdef FX_LIT
     texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vTurn), texel.a, vSunLight, vPhase);

@@ -34,14 +34,7 @@ void main() {
     float depthPerT = -ray.z;  // > 0: the quad lies at or past the near plane
     float halfDepth = sqrt((r * r - d2) * invLen2) * depthPerT;
     float midZ = tMid * depthPerT;
-#ifdef FX_CLASSIFY
-    // Wholly in front of the scene in its tiles (particles_classify.glsl): the chord's exit is
-    // never clipped, and the scene depth is not read.
-    float sceneZ = 3.0e38;
-    if (vInFront == 0.0) sceneZ = sceneDepthAt(gl_FragCoord.xy);
-#else
     float sceneZ = sceneDepthAt(gl_FragCoord.xy);
-#endif
     float z0 = max(midZ - halfDepth, uNear);
     float z1 = min(midZ + halfDepth, sceneZ);
     float visible = clamp((z1 - z0) / (2.0 * halfDepth), 0.0, 1.0);

@@ -13,9 +13,6 @@ flat FX_VARYING vec2 vCell;     // atlas coordinate of the frame's corner (atlas
 flat FX_VARYING vec4 vSphere;   // spherical: view-space centre, radius
 flat FX_VARYING vec2 vTurn;     // (cos, sin) of the particle's angle; spherical: divided by the radius
 flat FX_VARYING vec4 vFog;      // the particle's fog (particleFog): (fog colour x (1 - f), f)
-#ifdef FX_CLASSIFY
-flat FX_VARYING float vInFront; // 1: the fade is exactly 1 over the whole particle (no depth fetch)
-#endif
 #ifdef FX_LIT
 FX_VARYING vec3 vSunLight;      // sun colour x transmittance through the smoke toward the sun
 FX_VARYING float vPhase;        // Henyey-Greenstein x 4 pi toward the eye

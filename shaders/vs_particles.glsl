@@ -26,13 +26,6 @@
 // sphere) they draw the octagon around the sphere's outline, and the box when the camera is
 // close to or inside it.
 #include "particles_common.glsl"
-#ifdef FX_CLASSIFY
-// Soft and spherical programs built with classification (particles_classify.glsl): a particle
-// hidden behind the scene in all its tiles is moved outside the clip volume (nothing is
-// rasterised); one in front of it by more than its softness tells the fragment shader to skip the
-// scene depth (vInFront 1).
-#include "particles_classify.glsl"
-#endif
 
 layout(location = 0) in vec2 aCorner;            // (+-1, +-1), triangle strip order
 layout(location = 1) in vec4 aPosSize;           // centre (world, m), size (m)
@@ -197,13 +190,4 @@ void main() {
     vPhase = phaseHG(lightAt);
 #endif
     gl_Position = uProj * vec4(viewPos, 1.0);
-#ifdef FX_CLASSIFY
-#ifdef FX_SPHERICAL
-    int fadeKind = fadeClass(centre, radius, true, uSoftScale);
-#else
-    int fadeKind = fadeClass((uView * vec4(aPosSize.xyz, 1.0)).xyz, radius, false, uSoftScale);
-#endif
-    vInFront = fadeKind == kInFront ? 1.0 : 0.0;
-    if (fadeKind == kHidden) gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // every vertex outside: clipped
-#endif
 }

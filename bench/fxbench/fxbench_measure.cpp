@@ -202,19 +202,8 @@ private:
         applyMode(game_, *m.mode);
         game_.captureNextFrame();
         game_.graph().setCountFragments(fragments);
-        fx::Plugin* plugin = game_.specialFX().plugin();
-        if (plugin) plugin->setFadeClassCounting(fragments);
         game_.RenderFrame();
         game_.graph().setCountFragments(false);
-        if (plugin) plugin->setFadeClassCounting(false);
-        if (fragments && plugin && m.mode->classify == fx::FadeClassification::On) {
-            const fx::FadeClassCounts c = plugin->fadeClassCounts();
-            if (c.counted) {
-                m.fadeNeeded.push_back(c.fadeNeeded);
-                m.inFront.push_back(c.inFront);
-                m.hidden.push_back(c.hidden);
-            }
-        }
         if (fragments) {
             long long sum = 0;
             for (const cube::rtt::PassTiming& t : game_.graph().report().timings)

@@ -41,8 +41,6 @@ struct ModeRun {
     ErrorAccum error;
     std::vector<double> fillMs, fillRatio, coveragePct;  ///< one per error frame
     std::vector<double> particleFragments;          ///< per error frame: samples the particle passes wrote
-    /// Per error frame, fade-classified modes only: particles per class (Plugin::fadeClassCounts).
-    std::vector<double> fadeNeeded, inFront, hidden;
     std::vector<double> frameParticleMs;            ///< scratch: this simulated frame's rounds
 };
 

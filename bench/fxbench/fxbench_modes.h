@@ -28,11 +28,6 @@ struct Mode {
     fx::ParticleShape shape = fx::ParticleShape::Trimmed;
     /// Lit smoke (the game's sun through Plugin::setSceneLight) or unlit (clearSceneLight).
     bool lit = false;
-    /// Quarter res only: depth-aware upsample, or the edge pixels redrawn at full res
-    /// (`soft+mixed`; Plugin::setQuarterResEdges).
-    fx::QuarterResEdges edges = fx::QuarterResEdges::DepthAware;
-    /// Fade classification (Plugin::setFadeClassification; `soft+classify`, `spherical+classify`).
-    fx::FadeClassification classify = fx::FadeClassification::Off;
     /// API 2's immediate path on the engine's own z-buffer (`soft-zbuffer`) instead of the frame
     /// graph's passes.
     bool hostZBuffer = false;
@@ -41,9 +36,9 @@ struct Mode {
     bool linearDepth = false;
 };
 
-/// Every mode, in table order: nofx, hard, soft, soft-quads, soft+classify, soft+equal, soft+quarter,
-/// soft+mixed (quarter res with the depth-edge pixels at full res), soft+equal+quarter, spherical,
-/// spherical-quads, spherical+classify, spherical+quarter, hard-lit, soft-lit, spherical-lit, mega (image error
+/// Every mode, in table order: nofx, hard, soft, soft-quads, soft+equal, soft+quarter,
+/// soft+equal+quarter, spherical, spherical-quads, spherical+quarter, hard-lit, soft-lit,
+/// spherical-lit, mega (image error
 /// against spherical: the same particles as exact spheres), mega-lit (against spherical-lit),
 /// soft-zbuffer and spherical-zbuffer (the immediate path on the engine's z-buffer, against
 /// soft and spherical), soft-linear and spherical-linear (the frame graph on a linear R32F depth
@@ -53,11 +48,12 @@ const std::vector<Mode>& allModes();
 const Mode* findMode(const std::string& name);
 /// "nofx, hard, ..." for messages.
 std::string modeNameList();
-/// Parses "a,b,c": known, distinct names. False + message listing the valid ones otherwise.
+/// Parses "a,b,c": known, distinct names. False + message listing the valid ones otherwise (for
+/// a removed mode, also why it went).
 bool parseModeList(const std::string& text, std::vector<std::string>* out, std::string* error);
 
 /// Sets the game's and the plugin's switches for `mode` (HUD text does not depend on them: the
-/// harness runs with the HUD off). A switch of technique, quarter res or fade classification is
+/// harness runs with the HUD off). A switch of technique or quarter res is
 /// followed by Plugin::prepareGl, as the engine does after a key or panel switch: the programs
 /// the mode draws with are built here, never while a frame is declared.
 void applyMode(cube::Game& game, const Mode& mode);

@@ -197,10 +197,6 @@ std::string jsonReport(const Report& r, const std::string& in) {
         o += p + "  \"outside_passes_ms\": " + num(m.outsidePassesMs) + ",\n";
         o += p + "  \"particle_fragments\": " + num(m.particleFragments) + ",\n";
         o += p + "  \"particles\": " + num(m.particles) + ",\n";
-        if (m.classified) {
-            o += p + "  \"fade_classes\": {\"fade_needed\": " + num(m.fadeNeeded) + ", \"in_front\": " +
-                 num(m.inFront) + ", \"hidden\": " + num(m.hidden) + "},\n";
-        }
         o += p + "  \"coverage_pct\": " + num(m.coveragePct) + ",\n";
         o += p + "  \"fill_limit_ms\": " + num(m.fillLimitMs) + ",\n";
         o += p + "  \"fill_limit_ratio\": " + num(m.fillLimitRatio) + ",\n";
@@ -220,7 +216,7 @@ std::string csvRows(const Report& r, const std::string& point, bool header) {
     if (header)
         o += "point,scenario,width,height,mode,fps_min,fps_avg,fps_max,p50_ms,p95_ms,p99_ms,ratio_vs_hard,"
              "ratio_vs_nofx,particle_pass_ms,particle_fragments,particles,coverage_pct,fill_limit_ms,fill_limit_ratio,reference,"
-             "rmse,psnr_db,max_abs,edge_pct,passes_ms,fade_needed,in_front,hidden,outside_passes_ms\n";
+             "rmse,psnr_db,max_abs,edge_pct,passes_ms,outside_passes_ms\n";
     for (const ModeSummary& m : r.modes) {
         std::string passes;
         for (const auto& p : m.passes) passes += (passes.empty() ? "" : ";") + p.first + "=" + num(p.second);
@@ -229,9 +225,7 @@ std::string csvRows(const Report& r, const std::string& point, bool header) {
              "," + num(m.p99) + "," + num(m.ratioVsHard) + "," + num(m.ratioVsNofx) + "," + num(m.particleMs) + "," +
              num(m.particleFragments) + "," + num(m.particles) + "," + num(m.coveragePct) + "," + num(m.fillLimitMs) + "," + num(m.fillLimitRatio) +
              "," + m.reference + "," + num(m.rmse) + "," + num(m.psnrDb) + "," + num(m.maxAbs) + "," +
-             num(m.edgePct) + ",\"" + passes + "\"," + (m.classified ? num(m.fadeNeeded) : "") + "," +
-             (m.classified ? num(m.inFront) : "") + "," + (m.classified ? num(m.hidden) : "") + "," +
-             num(m.outsidePassesMs) + "\n";
+             num(m.edgePct) + ",\"" + passes + "\"," + num(m.outsidePassesMs) + "\n";
     }
     return o;
 }

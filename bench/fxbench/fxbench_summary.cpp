@@ -48,10 +48,6 @@ ModeSummary summarise(const ModeRun& run, const ModeRun* hard, const ModeRun* no
     s.outsidePassesMs = median(run.outsidePassesMs);
     s.particleFragments = median(run.particleFragments);
     s.particles = median(run.particlesDrawn);
-    s.classified = !run.fadeNeeded.empty();
-    s.fadeNeeded = median(run.fadeNeeded);
-    s.inFront = median(run.inFront);
-    s.hidden = median(run.hidden);
     s.coveragePct = median(run.coveragePct);
     s.fillLimitMs = median(run.fillMs);
     s.fillLimitRatio = median(run.fillRatio);

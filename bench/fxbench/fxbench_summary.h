@@ -21,8 +21,6 @@ struct ModeSummary {
     double outsidePassesMs = 0;                 ///< median of frame ms - sum of pass ms (ModeRun)
     double particleFragments = 0;               ///< median over error frames of the samples the particle passes wrote
     double particles = 0;                       ///< median particles drawn (0 for nofx)
-    bool classified = false;                    ///< fade classes counted (the *+classify modes)
-    double fadeNeeded = 0, inFront = 0, hidden = 0;  ///< medians of the particles per fade class
     double coveragePct = 0;                     ///< share of pixels the particles changed
     double fillLimitMs = 0;                     ///< median fill-limit draw over that coverage
     double fillLimitRatio = 0;                  ///< median of particleMs / fillLimitMs; 0 = none

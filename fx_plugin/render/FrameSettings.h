@@ -10,13 +10,8 @@ namespace fx {
 
 struct FrameSettings {
     RenderOptions options;  ///< technique override, quarter res, bilinear upsample (setRenderOptions)
-    ParticleShape shape = ParticleShape::Trimmed;         ///< trimmed polygons or full quads
-    QuarterResEdges edges = QuarterResEdges::DepthAware;  ///< quarter res: depth-aware or mixed
-    bool classify = false;      ///< fade classification at full res (FadeClassifier.h)
-    bool countClasses = false;  ///< and its counting (a read-back: diagnostics only)
-    LightState light;           ///< the scene light (LightState::on false: unlit)
-
-    bool mixedResolution() const { return edges == QuarterResEdges::MixedResolution; }
+    ParticleShape shape = ParticleShape::Trimmed;  ///< trimmed polygons or full quads
+    LightState light;  ///< the scene light (LightState::on false: unlit)
 };
 
 }  // namespace fx

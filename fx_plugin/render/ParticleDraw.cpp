@@ -5,7 +5,6 @@
 
 #include "render/PrivateGl.h"
 
-#include "FadeClassifier.h"
 #include "GlStateGuard.h"
 #include "ViewFrustum.h"
 
@@ -47,11 +46,6 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
     if (record.lit()) {
         bindTextureUnit(kOpacityUnit, in.opacity);
     }
-    const bool classified = in.tiles != 0 && in.coarse != 0;
-    if (classified) {
-        bindTextureUnit(FadeClassifier::kTileUnit, in.tiles);
-        bindTextureUnit(FadeClassifier::kCoarseUnit, in.coarse);
-    }
 
     const glm::vec2 slopes = frustumSlopes(view.proj);
     // Trimmed billboards: the LOD estimate needs the target's height in pixels (the viewport the
@@ -72,12 +66,9 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
             ProgramCache::variantFor(batch.technique, in.quarterRes, batch.contrastPower);
         // Lit when the host set a light and the reaction takes it; unlit if the lit build failed.
         const bool lit = record.lit() && batch.lighting.lit(batch.blend) && programs.get(variant, true).program;
-        // Soft and spherical batches take the classified build when the tiles are there.
-        const bool classifiable =
-            classified && batch.technique != Technique::Hard && programs.get(variant, lit, true).program;
         // Soft batches take their contrast power's own build; nothing here compiles (the cache
         // was filled by prepare() or before the passes: ParticleRenderer::ensureDrawPrograms).
-        const ParticleProgram& p = programs.get(variant, lit, batch.contrastPower, classifiable);
+        const ParticleProgram& p = programs.get(variant, lit, batch.contrastPower);
         if (!p.program) continue;
         if (record.lit()) bindTextureUnit(kAtlasUnit, lit ? atlas_.litTexture() : atlas_.texture());
         // Full resolution tests against the host's z-buffer without writing it. Hard particles
@@ -121,11 +112,6 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
         glUniform1i(p.sceneDepth, kSceneDepthUnit);
         setSceneDepthDecode(p.depthDecode, depthDecode);
         setFogUniforms(p.fog, view.fog);
-        if (p.tiles >= 0) {
-            glUniform1i(p.tiles, FadeClassifier::kTileUnit);
-            glUniform1i(p.tilesCoarse, FadeClassifier::kCoarseUnit);
-            glUniform2f(p.viewSize, float(view.width), float(view.height));
-        }
         // Spherical particles trim to their frame's polygon clipped to the disc (the octagon
         // around the sphere where its bounds do not hold: vs_particles.glsl).
         glUniform1i(p.trimmed, trimmed ? 1 : 0);

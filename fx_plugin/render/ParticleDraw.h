@@ -1,8 +1,8 @@
 #pragma once
-// The billboard particles' draw, shared by every path that draws them (full res, the half-res
-// pass and the mixed-resolution edge pass of quarter res): one view's batches into the bound
-// target, each with its technique's program (lit or not, classified or not, its contrast
-// power's own build), blend mode, depth test and uniforms, trimmed polygons or full quads. It
+// The billboard particles' draw, shared by every path that draws them (full res and the half-res
+// pass of quarter res): one view's batches into the bound target, each with its technique's
+// program (lit or not, its contrast power's own build), blend mode, depth test and uniforms,
+// trimmed polygons or full quads. It
 // owns what those draws read: the particle programs, the atlas and its trimmed shapes, the
 // colour ramps, the instance stream and the scene depth's sampler.
 #include <memory>
@@ -23,8 +23,6 @@
 
 namespace fx {
 
-class FadeClassifier;
-
 /// One view's recorded draw, shared with the pass bodies of every path until the host has run
 /// them.
 struct ParticleView {
@@ -44,11 +42,10 @@ struct DrawInputs {
     uint32_t sceneDepth = 0;  ///< scene depth of the bound target's size (0 when no batch needs it)
     SceneDepthDecode depthDecode;  ///< how to read it (SceneDepthSource.h; default: linear)
     bool quarterRes = false;  ///< the quarter-res programs (HardLinearDepth for hard)
-    /// The bound target's own z-buffer was filled (the half-res z-test, or the mixed-res edge
-    /// mask): every batch is z-tested (GEQUAL, LEQUAL under standard depth).
+    /// The bound target's own z-buffer was filled (the half-res z-test, reversed-Z only): every
+    /// batch is z-tested (GEQUAL).
     bool zTested = false;
-    uint32_t opacity = 0;                  ///< the opacity map (lit smoke)
-    uint32_t tiles = 0, coarse = 0;        ///< the fade classifier's tiles (0: unclassified)
+    uint32_t opacity = 0;     ///< the opacity map (lit smoke)
     HostClip clip;  ///< drawing into sceneColor: the scissor its bindForDraw left (HostClip::current)
 };
 

@@ -25,7 +25,7 @@ SizeMismatchReport sizeMismatchTo(ApiErrors* errors) {
 
 ParticleRenderer::ParticleRenderer(RendererConfig config)
     : config_(std::move(config)),
-      fullRes_(draw_, config_.host, sizeMismatchTo(config_.errors)),
+      fullRes_(draw_, sizeMismatchTo(config_.errors)),
       quarter_(draw_, sizeMismatchTo(config_.errors)) {}
 
 ParticleRenderer::~ParticleRenderer() {
@@ -38,7 +38,6 @@ ParticleRenderer::~ParticleRenderer() {
     draw_.swapPrograms(nullptr);
     quarter_.swapPrograms(nullptr);
     opacity_.reset();
-    fullRes_.adoptReload(nullptr);
 }
 
 void ParticleRenderer::reportLoadErrors(const std::vector<std::string>& errors) {
@@ -66,12 +65,10 @@ bool ParticleRenderer::ensureLoaded() {
         return false;
     }
     std::vector<std::string> errors;
-    // The files of this generation of programs, kept: the classifier built later (when fade
-    // classification is turned on) and each contrast power read these, never a later edit.
-    sources_ = snapshotShaderReader(shaderReader(config_.shaderDir));
-    draw_.swapPrograms(std::make_unique<ProgramCache>(sources_));
+    // The cache keeps the files of this generation of programs: each contrast power built later
+    // reads these, never a later edit.
+    draw_.swapPrograms(std::make_unique<ProgramCache>(snapshotShaderReader(shaderReader(config_.shaderDir))));
     draw_.programs().build(ProgramCache::techniqueKeys(), &errors);
-    FadeClassifier::readSources(sources_);
     quarter_.programs().build(config_.shaderDir, &errors);
     opacity_->build(config_.shaderDir, &errors);
     if (!draw_.atlas().hasNormals() && !normalsWarned_) {
@@ -96,21 +93,15 @@ bool ParticleRenderer::reloadShaders(Diagnostics* out, const std::vector<ShaderR
     if (stamp == shaderStamp_) return false;
     shaderStamp_ = stamp;  // one attempt (and one message) per edit
     GlStateGuard guard;
-    const ShaderReader sources = snapshotShaderReader(shaderReader(config_.shaderDir));
-    auto programs = std::make_unique<ProgramCache>(sources);
+    auto programs = std::make_unique<ProgramCache>(snapshotShaderReader(shaderReader(config_.shaderDir)));
     auto quarter = std::make_unique<QuarterResPrograms>();
     auto opacity = std::make_unique<SmokeOpacityMap>();
     std::vector<std::string> errors;
     // The same variants as the running cache (every key it tried), so nothing is missing after
-    // the swap; the classified ones and the classifier's own even when classification is off, to
-    // check their files: an edit that breaks them is refused now, not when it is turned on.
-    std::vector<ProgramCache::Key> keys = draw_.programs().keys();
-    for (const ProgramCache::Key& k : ProgramCache::classifiedKeys()) keys.push_back(k);
-    programs->build(keys, &errors);
+    // the swap.
+    programs->build(draw_.programs().keys(), &errors);
     quarter->build(config_.shaderDir, &errors);
     opacity->build(config_.shaderDir, &errors);
-    auto classifier = std::make_unique<FadeClassifier>();
-    classifier->build(sources, &errors);
     ShaderErrorLog unique;
     for (const std::string& e : errors) unique.add(e);
     // The other techniques' programs (mega, stateless) in the same transaction: all go live or
@@ -131,28 +122,21 @@ bool ParticleRenderer::reloadShaders(Diagnostics* out, const std::vector<ShaderR
     draw_.swapPrograms(std::move(programs));
     quarter_.swapPrograms(std::move(quarter));
     opacity_ = std::move(opacity);
-    fullRes_.adoptReload(std::move(classifier));
-    sources_ = sources;
     for (const std::function<void()>& commit : commits) commit();
     log(LogLevel::Info, "fx: particle shaders reloaded from " + config_.shaderDir);
     return true;
 }
 
-bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps, bool classify) {
+bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps) {
     const bool ready = ensureLoaded();
     if (ready) {
         // The soft programs of the contrast powers the loaded reactions draw with, now rather
-        // than at their first visible particle (each key is tried once: reported once); with
-        // fade classification on, the classifier and the classified builds of the same.
+        // than at their first visible particle (each key is tried once: reported once).
         GlStateGuard guard;
         std::vector<ProgramCache::Key> keys;
-        for (int s : powerSteps) {
-            ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), false, false, &keys);
-            if (classify) ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), false, true, &keys);
-        }
+        for (int s : powerSteps) ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), false, &keys);
         std::vector<std::string> errors;
         draw_.programs().build(keys, &errors);
-        if (classify) fullRes_.ensureClassifier(sources_, &errors);
         // A power's build fails for the cause that failed the soft programs above: not told twice.
         reportLoadErrors(errors);
     }
@@ -160,10 +144,10 @@ bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSt
     return ready && loadDiagnostics_.empty();
 }
 
-void ParticleRenderer::ensureDrawPrograms(const ParticleView& record, bool quarterRes, bool classified) {
+void ParticleRenderer::ensureDrawPrograms(const ParticleView& record, bool quarterRes) {
     drawKeys_.clear();
     for (const DrawBatch& batch : record.list.batches) {
-        ProgramCache::addDrawKeys(batch.technique, batch.contrastPower, quarterRes, classified, &drawKeys_);
+        ProgramCache::addDrawKeys(batch.technique, batch.contrastPower, quarterRes, &drawKeys_);
     }
     bool missing = false;
     for (const ProgramCache::Key& k : drawKeys_) missing = missing || !draw_.programs().tried(k);
@@ -221,7 +205,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     }
     const int drawn = record->list.particleCount();
     if (drawn == 0) return 0;
-    ensureDrawPrograms(*record, quarterRes, settings.classify && !quarterRes && record->list.needsSceneDepth);
+    ensureDrawPrograms(*record, quarterRes);
 
     draw_.ramp().setRows(batches, batchCount);
 
@@ -233,11 +217,10 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
         record->opacity = shadow.opacity;
         record->worldToShadow = shadow.worldToShadow;
     }
-    fullRes_.forgetCountsUnless(settings);
     if (quarterRes) {
         quarter_.declare(frame, record);
     } else {
-        fullRes_.declare(frame, record, sources_);
+        fullRes_.declare(frame, record);
     }
     return drawn;
 }

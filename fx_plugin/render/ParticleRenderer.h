@@ -2,23 +2,19 @@
 // The particle renderer behind PluginImpl's render hook: per view it records what is visible
 // (DrawList: culled, sorted, packed instances) and hands the view to one rendering path, which
 // declares its passes through the host's FrameBuilder; the pass bodies upload the instances and
-// draw (ParticleDraw) when the host executes them. The paths: FullResPath, QuarterResPath (depth-
-// aware or mixed), and SmokeOpacityMap's pass for lit smoke; MegaRenderer and StatelessRenderer
-// draw their techniques beside it. How the frame is drawn (shape, quarter res and its edges,
-// fade classification, the light) comes in one FrameSettings value per declarePasses.
+// draw (ParticleDraw) when the host executes them. The paths: FullResPath, QuarterResPath, and
+// SmokeOpacityMap's pass for lit smoke; MegaRenderer and StatelessRenderer draw their techniques
+// beside it. How the frame is drawn (shape, quarter res and its upsample, the light) comes in one
+// FrameSettings value per declarePasses.
 //
 // Passes (names are data: they show in the host's pass list, debug groups and timings):
 //   nothing at all when no particle is visible in the view (the host allocates nothing);
 //   full res:    "particles"  reads sceneDepth only if a visible batch is soft or spherical,
-//                             writes sceneColor; with fade classification on (and a soft or
-//                             spherical batch visible) "particles_tile_depth" comes first, reading
-//                             sceneDepth and writing "particles_tiles" and "particles_tiles_coarse"
-//                             (RG32F, FadeClassifier.h), which "particles" reads too;
+//                             writes sceneColor;
 //   quarter res: "particles_depth_downsample", "particles_quarter", "particles_composite"
 //                with targets "particles_half_depth" (RG32F: min, max) and "particles_half_color"
 //                (RGBA16F), both half x half, created through FrameBuilder::createTarget
-//                (see QuarterResPath.h); mixed resolution adds "particles_edges" with the
-//                full-size target "particles_edge_color" (RGBA16F + its own z-buffer).
+//                (see QuarterResPath.h).
 //
 // GL: loaded by prepare() (Plugin::prepareGl), or else lazily by the first declarePasses() that
 // finds a visible particle (the host has a context current by then; a scene without smoke never
@@ -31,11 +27,17 @@
 // loading) equals the state before.
 // Destroy the renderer with its GL context current (it deletes its GL objects).
 //
-// Depth testing: hard particles at full res test the host's z-buffer (no writes; LEQUAL, or
-// GEQUAL when ViewInfo::depth is ReversedZ), the legacy look. Soft and spherical particles do
-// not: they compare linear depths in the shader, which stays exact at near 0.01 / far 100 km
-// where a 24-bit z-buffer cannot resolve 100 m at 10 km, and a spherical particle's front may be
-// visible where its quad is behind geometry.
+// Depth testing (ParticleDraw::draw), never with depth writes: at full res hard particles always
+// test the host's z-buffer (LEQUAL, or GEQUAL when ViewInfo::depth is ReversedZ), the legacy
+// look. Soft and spherical particles test it under reversed-Z (GEQUAL; the engine's convention),
+// which only drops fragments that would shade to nothing: their fade and visible chord come from
+// linear depths compared in the shader, and a spherical particle's quad lies at its sphere's
+// front, so a fragment behind the scene sees no chord. Under standard depth they are not
+// z-tested: a 24-bit z-buffer at near 0.01 / far 100 km cannot resolve 100 m at 10 km, so the
+// shader's fade alone hides them. At quarter res hard particles compare linear depths in the
+// shader instead (HardLinearDepth: the half-res target has no copy of the host's z-buffer), and
+// under reversed-Z every technique also tests a half-res z-buffer of each 2x2 block's farthest
+// depth (QuarterResPath::beginQuarter); under standard depth nothing there is z-tested.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -73,13 +75,12 @@ public:
                       int batchCount, const FrameSettings& settings);
 
     /// Loads GL resources now (Plugin::prepareGl) and builds every program the options can reach
-    /// (ProgramCache::techniqueKeys; with `classify`, the fade classifier and its classified
-    /// builds) and the soft programs of the contrast powers in `powerSteps` (2 contrast_power
-    /// each: those the loaded reactions draw with). Called again after options or reactions
-    /// change, it builds only what is missing. True when everything built; otherwise false with
+    /// (ProgramCache::techniqueKeys) and the soft programs of the contrast powers in `powerSteps`
+    /// (2 contrast_power each: those the loaded reactions draw with). Called again after options
+    /// or reactions change, it builds only what is missing. True when everything built; otherwise false with
     /// every problem appended to `out` (the technique that did build still draws). Each distinct
     /// "file:line: message" is logged once.
-    bool prepare(Diagnostics* out, const std::vector<int>& powerSteps = {}, bool classify = false);
+    bool prepare(Diagnostics* out, const std::vector<int>& powerSteps = {});
 
     /// Another renderer's part of a shader reload: builds its programs from the folder's current
     /// files, adds every failure to the log, and returns what makes them live (empty: nothing to
@@ -99,9 +100,6 @@ public:
     SmokeShadow declareShadowPasses(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
                                     int batchCount, const LightState& light);
 
-    /// The classes counted by the last full-res pass that ran with counting on.
-    FadeClassCounts fadeClassCounts() const { return fullRes_.counts(); }
-
     State state() const { return state_; }
     const std::string& shaderDir() const { return config_.shaderDir; }
     const InstanceStream& instanceStream() const { return draw_.stream(); }
@@ -114,7 +112,7 @@ private:
     void reportLoadErrors(const std::vector<std::string>& errors);
     /// Builds the programs `record`'s batches draw with that prepare() has not built (options or
     /// reactions changed since without another prepareGl): before any pass, never inside one.
-    void ensureDrawPrograms(const ParticleView& record, bool quarterRes, bool classified);
+    void ensureDrawPrograms(const ParticleView& record, bool quarterRes);
     /// Loads the renderer if needed, records the casters and declares the opacity pass.
     SmokeShadow declareOpacityPass(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
                                    int batchCount, const LightState& light);
@@ -131,7 +129,6 @@ private:
     std::vector<ProgramCache::Key> drawKeys_;  ///< ensureDrawPrograms' scratch, kept for its capacity
     Diagnostics loadDiagnostics_;  ///< what went wrong while loading (prepare() hands them out)
     ShaderErrorLog loadErrors_;    ///< the build lines already logged while loading (each once)
-    ShaderReader sources_;         ///< the running programs' files (a snapshot), for later builds
     SmokeShadow pendingShadow_;  ///< declared by declareShadowPasses, taken by the next declarePasses
                                  ///< into the host's frame graph (never by renderView's own frame)
     bool normalsWarned_ = false;

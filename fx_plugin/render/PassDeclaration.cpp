@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <utility>
 
-#include "FadeClassifier.h"
 #include "ImmediateFrame.h"
 #include "reactions/TechniqueTable.h"
 
@@ -15,8 +14,9 @@ void narrowDepthRead(FrameBuilder& frame, const ScreenRect& bound, int width, in
     DepthRegion r;  // whole
     if (!bound.whole) {
         // A pass reads the scene depth inside its particles' bound, grown by the quarter-res
-        // tiles' reach (16 px tiles, 6 px border), and the classifier reduces coarse tiles whole.
-        constexpr int kReach = ScreenTiles::kTileSize + 16, kAlign = FadeClassifier::kCoarseTileSize;
+        // tiles' reach (16 px tiles, 6 px border); whole 64 px blocks, so the region changes
+        // only when the bound crosses a block, not with every pixel the smoke moves.
+        constexpr int kReach = ScreenTiles::kTileSize + 16, kAlign = 64;
         auto down = [](int v) { return v <= 0 ? 0 : v / kAlign * kAlign; };
         auto up = [](int v, int limit) { return std::min(limit, (v + kAlign - 1) / kAlign * kAlign); };
         r.whole = false;

@@ -18,7 +18,7 @@ void addPassReading(FrameBuilder& frame, const char* name, std::initializer_list
 
 /// The immediate path (ImmediateFrame) copies and linearises the host's z-buffer only where the
 /// plugin's passes read it: tells it the region the next pass reads, `bound` grown by the
-/// quarter-res tiles' reach and aligned to the fade classifier's coarse tiles. Other frame
+/// quarter-res tiles' reach and aligned to 64 px blocks. Other frame
 /// builders read the whole depth anyway: nothing to say to them.
 void narrowDepthRead(FrameBuilder& frame, const ScreenRect& bound, int width, int height);
 

@@ -58,9 +58,6 @@ ParticleProgram locate(GLuint program) {
     p.shadowed = glGetUniformLocation(program, "uShadowed");
     p.viewToShadow = glGetUniformLocation(program, "uViewToShadow");
     p.opacity = glGetUniformLocation(program, "uOpacity");
-    p.tiles = glGetUniformLocation(program, "uTiles");
-    p.tilesCoarse = glGetUniformLocation(program, "uTilesCoarse");
-    p.viewSize = glGetUniformLocation(program, "uViewSize");
     p.fog = FogUniforms::of(program);
     return p;
 }
@@ -77,12 +74,11 @@ const ParticleProgram kNone{};
 }  // namespace
 
 uint32_t ProgramCache::Key::bits() const {
-    return uint32_t(variant) | (lit ? 1u << 3 : 0u) | (classified ? 1u << 4 : 0u) | (uint32_t(powerSteps + 1) << 5);
+    return uint32_t(variant) | (lit ? 1u << 3 : 0u) | (uint32_t(powerSteps + 1) << 4);
 }
 
 std::string ProgramCache::Key::defines() const {
-    std::string d = classified ? "#define FX_CLASSIFY 1\n" : "";
-    d += kSources[variant].defines;
+    std::string d = kSources[variant].defines;
     if (powerSteps >= 0) d += "#define FX_POWER_STEPS " + std::to_string(powerSteps) + "\n";
     if (lit) d += "#define FX_LIT 1\n";
     return d;
@@ -117,45 +113,34 @@ const ParticleProgram* ProgramCache::find(const Key& key) const {
     return it == built_.end() ? nullptr : &it->second;
 }
 
-const ParticleProgram& ProgramCache::get(Variant v, bool lit, bool classified) const {
-    const ParticleProgram* p = find(Key{v, lit, classified, -1});
+const ParticleProgram& ProgramCache::get(Variant v, bool lit) const {
+    const ParticleProgram* p = find(Key{v, lit, -1});
     return p ? *p : kNone;
 }
 
-const ParticleProgram& ProgramCache::get(Variant v, bool lit, float contrastPower, bool classified) const {
-    const ParticleProgram& general = get(v, lit, classified);
+const ParticleProgram& ProgramCache::get(Variant v, bool lit, float contrastPower) const {
+    const ParticleProgram& general = get(v, lit);
     int whole = 0, half = 0;
     if (v != Soft || !general.program || !halfWholePower(contrastPower, &whole, &half)) return general;
-    const ParticleProgram* own = find(Key{v, lit, classified, 2 * whole + half});
+    const ParticleProgram* own = find(Key{v, lit, 2 * whole + half});
     return own ? *own : general;
 }
 
 std::vector<ProgramCache::Key> ProgramCache::techniqueKeys() {
     std::vector<Key> keys;
     for (bool lit : {false, true}) {
-        for (int v = 0; v < VariantCount; ++v) keys.push_back(Key{Variant(v), lit, false, -1});
+        for (int v = 0; v < VariantCount; ++v) keys.push_back(Key{Variant(v), lit, -1});
     }
     return keys;
 }
 
-std::vector<ProgramCache::Key> ProgramCache::classifiedKeys() {
-    std::vector<Key> keys;
-    for (bool lit : {false, true}) {
-        for (Variant v : {Soft, SoftGeneralPower, Spherical}) keys.push_back(Key{v, lit, true, -1});
-    }
-    return keys;
-}
-
-void ProgramCache::addDrawKeys(Technique technique, float contrastPower, bool quarterRes, bool classified,
-                               std::vector<Key>* keys) {
+void ProgramCache::addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys) {
     const Variant v = variantFor(technique, quarterRes, contrastPower);
-    // Quarter res is never classified (FadeClassifier.h), nor is hard smoke.
-    const bool classify = classified && !quarterRes && v != HardZBuffer && v != HardLinearDepth;
     int whole = 0, half = 0;
     const int steps = v == Soft && halfWholePower(contrastPower, &whole, &half) ? 2 * whole + half : -1;
     for (bool lit : {false, true}) {
-        addOnce(Key{v, lit, classify, -1}, keys);
-        if (steps >= 0) addOnce(Key{v, lit, classify, steps}, keys);
+        addOnce(Key{v, lit, -1}, keys);
+        if (steps >= 0) addOnce(Key{v, lit, steps}, keys);
     }
 }
 

@@ -2,19 +2,17 @@
 // The billboard particle programs, one cache keyed by the variant a batch draws with:
 //   variant          the technique's shaders and target kind (vs_particles + ...):
 //     HardZBuffer      fs_particles_hard                         (full res, z-buffer test)
-//     HardLinearDepth  fs_particles_hard, FX_LINEAR_DEPTH_TEST   (quarter res, mixed-res edges)
+//     HardLinearDepth  fs_particles_hard, FX_LINEAR_DEPTH_TEST   (quarter res)
 //     Soft             fs_particles_soft  (contrast_power whole or half-whole, <= 16: multiplies
 //                                          and a sqrt)
 //     Spherical        fs_particles_spherical, FX_SPHERICAL
 //     SoftGeneralPower fs_particles_soft, FX_GENERAL_POWER (any contrast_power: pow)
 //   lit              FX_LIT: particles_common.glsl's smokeLight, for reactions under a scene light
-//   classified       FX_CLASSIFY: fade classification (FadeClassifier.h); soft and spherical only
 //   power            FX_POWER_STEPS = 2 contrast_power: Soft with the curve's multiplies folded
 //                    (power 1 draws no curve at all); -1 = no power folded
 // Key::bits() packs them; nothing else names a program. The resolution path is in the variant
-// (quarter res and mixed-res edges draw HardLinearDepth for hard; quarter res is never classified);
-// the depth convention is no variant: the programs read linear depth, and reversed-Z changes only
-// the depth function the pass sets.
+// (quarter res draws HardLinearDepth for hard); the depth convention is no variant: the programs
+// read linear depth, and reversed-Z changes only the depth function the pass sets.
 //
 // Contract:
 //  - build(keys) is the only call that compiles. It runs from prepareGl and a shader reload (and,
@@ -52,8 +50,6 @@ struct ParticleProgram {
     FogUniforms fog;
     int trimmed = -1, shapeBuckets = -1, lodScale = -1, shapes = -1, shapeInfo = -1, pixelSlope = -1;
     int powerWhole = -1, powerHalf = -1;
-    // FX_CLASSIFY only (FadeClassifier.h).
-    int tiles = -1, tilesCoarse = -1, viewSize = -1;
     // FX_LIT only.
     int sunView = -1, sunColor = -1, ambient = -1, normalStrength = -1, scattering = -1, anisotropy = -1,
         absorption = -1, shadowed = -1, viewToShadow = -1, opacity = -1;
@@ -66,9 +62,8 @@ public:
     struct Key {
         Variant variant = HardZBuffer;
         bool lit = false;
-        bool classified = false;
         int powerSteps = -1;  ///< 2 contrast_power, 0 .. kMaxPowerSteps; -1: none (Soft only)
-        /// variant in bits 0-2, lit 3, classified 4, powerSteps + 1 in 5-10.
+        /// variant in bits 0-2, lit 3, powerSteps + 1 in 4-9.
         uint32_t bits() const;
         /// The #defines that select this variant (prepended to each stage).
         std::string defines() const;
@@ -92,24 +87,21 @@ public:
     const ParticleProgram* find(const Key& key) const;
     bool tried(const Key& key) const { return tried_.count(key.bits()) != 0; }
     /// The variant's general build (program 0 when it did not build). Never builds.
-    const ParticleProgram& get(Variant v, bool lit = false, bool classified = false) const;
+    const ParticleProgram& get(Variant v, bool lit = false) const;
     /// The program that draws a batch of `v` with `contrastPower`: for Soft with a whole or
-    /// half-whole power, that power's own build where it was built, else get(v, lit, classified).
-    const ParticleProgram& get(Variant v, bool lit, float contrastPower, bool classified = false) const;
+    /// half-whole power, that power's own build where it was built, else get(v, lit).
+    const ParticleProgram& get(Variant v, bool lit, float contrastPower) const;
     /// Every key tried (built or failed), in the order tried: a reload builds the same set anew.
     const std::vector<Key>& keys() const { return order_; }
     /// techniqueBit() mask of the techniques drawable on a full-res or a quarter-res target.
     uint32_t usableTechniques(bool quarterRes) const;
 
-    /// Every variant, lit and unlit, unclassified: what prepareGl always builds (a technique
-    /// whose general program fails is not drawn; the run-time override can pick any of them).
+    /// Every variant, lit and unlit: what prepareGl always builds (a technique whose general
+    /// program fails is not drawn; the run-time override can pick any of them).
     static std::vector<Key> techniqueKeys();
-    /// The classified builds of soft and spherical, lit and unlit (fade classification on).
-    static std::vector<Key> classifiedKeys();
     /// Adds (once each) the keys a batch of `technique` with `contrastPower` draws with, lit and
-    /// unlit, on a quarter-res target or not, classified or not.
-    static void addDrawKeys(Technique technique, float contrastPower, bool quarterRes, bool classified,
-                            std::vector<Key>* keys);
+    /// unlit, on a quarter-res target or not.
+    static void addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys);
     /// `contrastPower` picks between the two soft programs (see above).
     static Variant variantFor(Technique technique, bool quarterRes, float contrastPower = 1.0f);
     /// contrast_power = whole + half / 2 with whole in [0, 16], half 0 or 1: true and the split.

@@ -45,8 +45,6 @@ TargetDesc QuarterResPath::colorTargetDesc(bool withDepth) {
     return targetDesc(0.5f, TargetFormat::RGBA16F, true, withDepth);
 }
 
-TargetDesc QuarterResPath::edgeTargetDesc() { return targetDesc(1.0f, TargetFormat::RGBA16F, false, true); }
-
 QuarterResPath::QuarterResPath(ParticleDraw& draw, SizeMismatchReport sizeMismatch)
     : draw_(draw), sizeMismatch_(std::move(sizeMismatch)) {}
 
@@ -84,33 +82,12 @@ void QuarterResPath::declare(FrameBuilder& frame, const std::shared_ptr<Particle
                        in.opacity = opacity.valid() ? ctx.texture(opacity, 0).name : 0;
                        draw_.draw(*record, in);
                    });
-    // Mixed resolution: the edge pixels redrawn at full res (the full-res programs' linear-depth
-    // test: HardLinearDepth for hard), depth-tested against the mask beginEdges wrote.
-    Target edgeColor;
-    if (record->settings.mixedResolution() && programs_->mixedOk() && !record->settings.options.bilinearUpsample) {
-        edgeColor = frame.createTarget(kEdgeTarget, edgeTargetDesc());
-        narrowDepthRead(frame, record->rect, view.width, view.height);
-        addPassReading(frame, kEdgePass, {halfDepth, depth, opacity}, edgeColor,
-                       [this, record, edgeColor, halfDepth, depth, decode, opacity](PassContext& ctx) {
-                           GlStateGuard guard(record->view.depth);
-                           DebugGroup group(kEdgePass);
-                           beginEdges(ctx, *record, edgeColor, halfDepth, depth, decode);
-                           DrawInputs in;
-                           in.quarterRes = true;
-                           in.zTested = true;
-                           const TextureRef depthRef = ctx.texture(depth, 0);
-                           in.sceneDepth = depthRef.name;
-                           in.depthDecode = decode.placedFor(depthRef, record->view, false);  // the edge target
-                           in.opacity = opacity.valid() ? ctx.texture(opacity, 0).name : 0;
-                           draw_.draw(*record, in);
-                       });
-    }
     narrowDepthRead(frame, record->rect, view.width, view.height);
-    addPassReading(frame, kCompositePass, {halfColor, halfDepth, depth, edgeColor}, color,
-                   [this, record, color, halfColor, halfDepth, depth, decode, edgeColor](PassContext& ctx) {
+    addPassReading(frame, kCompositePass, {halfColor, halfDepth, depth}, color,
+                   [this, record, color, halfColor, halfDepth, depth, decode](PassContext& ctx) {
                        GlStateGuard guard;
                        DebugGroup group(kCompositePass);
-                       composite(ctx, *record, color, halfColor, halfDepth, depth, decode, edgeColor);
+                       composite(ctx, *record, color, halfColor, halfDepth, depth, decode);
                    });
 }
 
@@ -160,42 +137,8 @@ bool QuarterResPath::beginQuarter(PassContext& ctx, const ParticleView& v, Targe
     return true;
 }
 
-void QuarterResPath::beginEdges(PassContext& ctx, const ParticleView& v, Target edgeColor, Target halfDepth,
-                                Target sceneDepth, const SceneDepthDecode& decode) {
-    QuarterResPrograms& p = *programs_;
-    ctx.bindForDraw(edgeColor);
-    plainDrawState();
-    scissorTo(v.rect, 1.0f, 0, ctx.width(edgeColor), ctx.height(edgeColor));
-    const GLfloat transparent[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    glClearBufferfv(GL_COLOR, 0, transparent);
-    // The mask as depth: a fragment at window z in [0, 1] passes LEQUAL 1 (GEQUAL 0) and fails
-    // LEQUAL 0 (GEQUAL 1) unless it lies exactly on the near plane, where the particles' near
-    // fade has taken them to nothing anyway.
-    const bool reversed = v.reversedZ;
-    // Outside the tiles no particle fragment lands, but a pooled target's z-buffer holds an old
-    // frame's mask there: fail everything first, the tiles then get this frame's mask.
-    glDepthMask(GL_TRUE);
-    const GLfloat fail = reversed ? 1.0f : 0.0f;
-    glClearBufferfv(GL_DEPTH, 0, &fail);
-    beginDepthOnly();
-    glUseProgram(p.edgeMask);
-    bindTextureUnit(0, ctx.texture(halfDepth, 0).name);
-    const TextureRef depthRef = ctx.texture(sceneDepth, 0);
-    p.hostDepth.bindTexture(1, depthRef.name);
-    glUniform1i(p.maskHalfDepthLoc, 0);
-    glUniform1i(p.maskSceneDepthLoc, 1);
-    setSceneDepthDecode(p.maskDecode, decode.placedFor(depthRef, v.view, false));
-    sceneDepthBarrier(decode);
-    glUniform1f(p.maskThresholdLoc, kDepthThreshold);
-    glUniform1f(p.maskPassLoc, reversed ? 0.0f : 1.0f);
-    glUniform1f(p.maskFailLoc, reversed ? 1.0f : 0.0f);
-    p.drawTiles(p.maskViewLoc, v.tiles);
-    endDepthOnly(reversed ? GL_GEQUAL : GL_LEQUAL);
-}
-
 void QuarterResPath::composite(PassContext& ctx, const ParticleView& v, Target sceneColor, Target halfColor,
-                               Target halfDepth, Target sceneDepth, const SceneDepthDecode& decode,
-                               Target edgeColor) {
+                               Target halfDepth, Target sceneDepth, const SceneDepthDecode& decode) {
     QuarterResPrograms& p = *programs_;
     ctx.bindForDraw(sceneColor);
     const HostClip clip = HostClip::current();
@@ -206,8 +149,7 @@ void QuarterResPath::composite(PassContext& ctx, const ParticleView& v, Target s
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     const bool bilinear = v.settings.options.bilinearUpsample;
     const QuarterResPrograms::CompositeProgram& c =
-        p.composite[edgeColor.valid() ? QuarterResPrograms::Mixed
-                                      : bilinear ? QuarterResPrograms::Bilinear : QuarterResPrograms::DepthAware];
+        p.composite[bilinear ? QuarterResPrograms::Bilinear : QuarterResPrograms::DepthAware];
     glUseProgram(c.program);
     bindTextureUnit(0, ctx.texture(halfColor, 0).name);
     bindTextureUnit(1, ctx.texture(halfDepth, 0).name);
@@ -220,10 +162,6 @@ void QuarterResPath::composite(PassContext& ctx, const ParticleView& v, Target s
     setSceneDepthDecode(c.decode, decode.placedFor(depthRef, v.view, true));  // drawn into sceneColor
     sceneDepthBarrier(decode);
     glUniform1f(c.threshold, kDepthThreshold);
-    glUniform1i(c.edgeColor, 3);
-    // Unit 3 is bound either way: a sampler uniform must never read a unit with a texture of
-    // another kind, and the guard restores units 0-3.
-    bindTextureUnit(3, edgeColor.valid() ? ctx.texture(edgeColor, 0).name : 0);
     p.drawTiles(c.viewSize, v.tiles);
 }
 

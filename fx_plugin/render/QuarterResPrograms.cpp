@@ -8,7 +8,6 @@
 namespace fx {
 
 QuarterResPrograms::~QuarterResPrograms() {
-    if (edgeMask) glDeleteProgram(edgeMask);
     if (halfZ) glDeleteProgram(halfZ);
     if (downsample) glDeleteProgram(downsample);
     for (const CompositeProgram& c : composite) {
@@ -39,22 +38,15 @@ void QuarterResPrograms::build(const std::string& shaderDir, std::vector<std::st
                                {&halfZFarLoc, "uFar"}, {&halfZViewLoc, "uViewSize"}});
     }
     static const char* const kCompositeDefines[CompositeVariantCount] = {
-        "", "#define FX_COMPOSITE_BILINEAR 1\n", "#define FX_COMPOSITE_MIXED 1\n"};
+        "", "#define FX_COMPOSITE_BILINEAR 1\n"};
     for (int v = 0; v < CompositeVariantCount; ++v) {
         CompositeProgram& c = composite[v];
         if (!make(&c.program, "fs_particles_composite.glsl", kCompositeDefines[v])) continue;
         locateUniforms(c.program, {{&c.halfColor, "uHalfColor"}, {&c.halfDepth, "uHalfDepth"},
                                    {&c.sceneDepth, "uSceneDepth"}, {&c.threshold, "uDepthThreshold"},
-                                   {&c.edgeColor, "uEdgeColor"}, {&c.viewSize, "uViewSize"},
+                                   {&c.viewSize, "uViewSize"},
                                    {&c.decode.coeffs, "uDepthCoeffs"},
                                    {&c.decode.window, "uDepthWindow"}, {&c.decode.drawOrigin, "uDrawOrigin"}});
-    }
-    if (make(&edgeMask, "fs_particles_edge_mask.glsl", "")) {
-        locateUniforms(edgeMask, {{&maskHalfDepthLoc, "uHalfDepth"}, {&maskSceneDepthLoc, "uSceneDepth"},
-                                  {&maskThresholdLoc, "uDepthThreshold"}, {&maskPassLoc, "uPassDepth"},
-                                  {&maskFailLoc, "uFailDepth"}, {&maskViewLoc, "uViewSize"},
-                                  {&maskDecode.coeffs, "uDepthCoeffs"},
-                                  {&maskDecode.window, "uDepthWindow"}, {&maskDecode.drawOrigin, "uDrawOrigin"}});
     }
     if (!tileVao_) {
         glGenVertexArrays(1, &tileVao_);

@@ -1,7 +1,7 @@
 #pragma once
 // The GL programs of the quarter-res passes (QuarterResPath.h) and their uniform locations: the
-// depth downsample, the half-res z-fill, the edge mask of mixed resolution and the composite's
-// three builds, all drawn over the screen tiles' runs (ScreenTiles.h) from one stream buffer.
+// depth downsample, the half-res z-fill and the composite's two builds, all drawn over the screen
+// tiles' runs (ScreenTiles.h) from one stream buffer.
 // A set is built whole and swapped whole by a shader reload.
 #include <cstdint>
 #include <string>
@@ -24,12 +24,10 @@ struct QuarterResPrograms {
     void build(const std::string& shaderDir, std::vector<std::string>* errors);
     /// The downsample and the composites built: quarter res can draw.
     bool ok() const {
-        return downsample && composite[0].program && composite[1].program && composite[2].program && tileVao_;
+        return downsample && composite[DepthAware].program && composite[Bilinear].program && tileVao_;
     }
     /// The half-res z-test's program built (without it the quarter pass is simply not z-tested).
     bool halfZOk() const { return halfZ != 0; }
-    /// The edge mask program built (without it mixed resolution falls back to depth-aware).
-    bool mixedOk() const { return edgeMask != 0; }
 
     /// Draws `tiles`' runs with the bound program (its uViewSize at `viewSizeLoc`), the vertices
     /// uploaded to this set's own stream buffer.
@@ -41,18 +39,14 @@ struct QuarterResPrograms {
     SceneDepthUniforms downsampleDecode;
     uint32_t halfZ = 0;
     int halfZDepthLoc = -1, halfZFromLinearLoc = -1, halfZFarLoc = -1, halfZViewLoc = -1;
-    /// The composite's builds: depth-aware, plain bilinear, mixed resolution.
-    enum CompositeVariant { DepthAware, Bilinear, Mixed, CompositeVariantCount };
+    /// The composite's builds: depth-aware, plain bilinear (RenderOptions::bilinearUpsample).
+    enum CompositeVariant { DepthAware, Bilinear, CompositeVariantCount };
     struct CompositeProgram {
         uint32_t program = 0;
-        int halfColor = -1, halfDepth = -1, sceneDepth = -1, threshold = -1, edgeColor = -1, viewSize = -1;
+        int halfColor = -1, halfDepth = -1, sceneDepth = -1, threshold = -1, viewSize = -1;
         SceneDepthUniforms decode;
     };
     CompositeProgram composite[CompositeVariantCount];
-    uint32_t edgeMask = 0;
-    int maskHalfDepthLoc = -1, maskSceneDepthLoc = -1, maskThresholdLoc = -1, maskPassLoc = -1, maskFailLoc = -1,
-        maskViewLoc = -1;
-    SceneDepthUniforms maskDecode;
 
 private:
     uint32_t tileVao_ = 0, tileVbo_ = 0;

@@ -1,7 +1,7 @@
 #pragma once
 // A program's uniform locations, looked up from one table: the programs of the render paths
-// (quarter res, mega, the opacity map, the fade classifier, the depth lineariser) each name
-// their uniforms once, beside the member that keeps the location.
+// (quarter res, mega, the opacity map, the depth lineariser) each name their uniforms once,
+// beside the member that keeps the location.
 #include <cstdint>
 #include <initializer_list>
 

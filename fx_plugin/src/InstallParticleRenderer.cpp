@@ -74,9 +74,6 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
         FrameSettings settings;
         settings.options = options;
         settings.shape = owner->particleShape();
-        settings.edges = owner->quarterResEdges();
-        settings.classify = owner->fadeClassification() == FadeClassification::On;
-        settings.countClasses = owner->fadeClassCounting();
         settings.light = owner->light();
         const int count = static_cast<int>(batches->size());
         const int drawn = renderer->declarePasses(view, frame, batches->data(), count, settings);
@@ -86,8 +83,7 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
     // Every program the loaded reactions and the options can draw with is built here (a broken
     // shader of any technique stops start-up), each technique's failures reported once.
     plugin.setPrepareHook([renderer, mega, stateless, owner](Diagnostics* out) {
-        const bool classify = owner->fadeClassification() == FadeClassification::On;
-        bool ok = renderer->prepare(out, softPowerSteps(*owner), classify);
+        bool ok = renderer->prepare(out, softPowerSteps(*owner));
         if (wantsMega(*owner)) ok = mega->prepare(out) && ok;
         if (wantsStateless(*owner)) ok = stateless->prepare(out) && ok;
         return ok;
@@ -107,7 +103,6 @@ void installParticleRenderer(PluginImpl& plugin, const std::string& dataDir) {
             out, {[mega](ShaderErrorLog* e) { return mega->rebuildShaders(e); },
                   [stateless](ShaderErrorLog* e) { return stateless->rebuildShaders(e); }});
     });
-    plugin.setFadeCountsHook([renderer] { return renderer->fadeClassCounts(); });
 }
 
 }  // namespace fx

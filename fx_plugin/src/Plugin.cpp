@@ -285,7 +285,7 @@ ErrorCode PluginImpl::declarePasses(const ViewInfo& view, FrameBuilder& frame) {
         particlesDrawn_ = 0;
         return errors_.refuse(ErrorCode::InvalidView, "declarePasses", bad);
     }
-    // >>> The particle renderer (fx_plugin/render/) plugs in here, through setRenderHook(). <<<
+    // The particle renderer (fx_plugin/render/) plugs in here, through setRenderHook().
     FrameScope declaring(FrameScope::Declare);
     if (renderHook_) renderHook_(view, frame, runtimes_, options_);
     return ErrorCode::None;

@@ -65,18 +65,16 @@ public:
     ErrorCode setSceneLight(const SceneLight& light) override;
     void clearSceneLight() override { light_ = LightState{}; }
     SmokeShadow declareShadowPasses(const ViewInfo& view, FrameBuilder& frame) override;
+    // Deprecated switches (Plugin.h): validated and kept for their getters, read by no renderer.
     ErrorCode setQuarterResEdges(QuarterResEdges mode) override;
     QuarterResEdges quarterResEdges() const override { return edges_; }
     ErrorCode setFadeClassification(FadeClassification mode) override;
     FadeClassification fadeClassification() const override { return classification_; }
     ErrorCode setFadeClassCounting(bool on) override {
-        countFadeClasses_ = on;
+        (void)on;
         return ErrorCode::None;
     }
-    bool fadeClassCounting() const { return countFadeClasses_; }
-    FadeClassCounts fadeClassCounts() const override { return countsHook_ ? countsHook_() : FadeClassCounts{}; }
-    /// The renderer's Plugin::fadeClassCounts.
-    void setFadeCountsHook(std::function<FadeClassCounts()> hook) { countsHook_ = std::move(hook); }
+    FadeClassCounts fadeClassCounts() const override { return FadeClassCounts{}; }
 
     /// The renderer's entry; pass an empty function to remove it.
     void setRenderHook(RenderHook hook) { renderHook_ = std::move(hook); }
@@ -121,8 +119,6 @@ private:
     ParticleShape shape_ = ParticleShape::Trimmed;
     QuarterResEdges edges_ = QuarterResEdges::DepthAware;
     FadeClassification classification_ = FadeClassification::Off;
-    bool countFadeClasses_ = false;
-    std::function<FadeClassCounts()> countsHook_;
     RenderHook renderHook_;
     PrepareHook prepareHook_;
     PrepareHook shaderReloadHook_;

@@ -108,7 +108,7 @@ double psnr(const Image& a, const Image& b, const std::vector<uint8_t>* mask = n
 /// Largest |a - b| over RGB channels, in 1/255 units.
 int maxAbsDiff(const Image& a, const Image& b);
 
-// ---- depth-edge error (EdgeScene.cpp): the quarter-res and mixed-res tests ---------------------
+// ---- depth-edge error (EdgeScene.cpp): the quarter-res tests -----------------------------------
 
 /// |a - b| per channel times `gain`, opaque, for looking at.
 Image amplifiedDiff(const Image& a, const Image& b, int gain);

@@ -253,7 +253,7 @@ TEST_F(ImmediateRendererTest, ReversedZHostSameImagePerDepthSource) {
 }
 
 // The host's z-buffer is copied and linearised only where the plugin's passes read it (the
-// particles' screen bound, grown to the classifier's 64 px tiles), and the picture is the one a
+// particles' screen bound, grown to whole 64 px blocks), and the picture is the one a
 // whole-view depth gives: with the smoke in one corner of the view, the region is a part of it.
 TEST_F(ImmediateRendererTest, DepthIsMadeOnlyWhereThePassesReadIt) {
     constexpr int W = 480, H = 360;  // large enough for 64 px tiles to leave some of it out

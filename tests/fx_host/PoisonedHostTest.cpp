@@ -23,7 +23,7 @@ constexpr int kW = 160, kH = 120;
 struct Mode {
     const char* label;
     fx::Technique technique;
-    bool quarter = false, mixed = false, lit = false;
+    bool quarter = false, lit = false;
 };
 
 const Mode kModes[] = {
@@ -32,10 +32,10 @@ const Mode kModes[] = {
     {"spherical", fx::Technique::Spherical},
     {"hard quarter", fx::Technique::Hard, true},
     {"soft quarter", fx::Technique::Soft, true},
-    {"spherical quarter mixed-res", fx::Technique::Spherical, true, true},
+    {"spherical quarter", fx::Technique::Spherical, true},
     {"mega", fx::Technique::Mega},
-    {"soft lit", fx::Technique::Soft, false, false, true},
-    {"spherical quarter lit", fx::Technique::Spherical, true, false, true},
+    {"soft lit", fx::Technique::Soft, false, true},
+    {"spherical quarter lit", fx::Technique::Spherical, true, true},
     {"from reactions (stateless sparks too)", fx::Technique::FromReaction},
 };
 
@@ -71,7 +71,6 @@ protected:
         o.techniqueOverride = m.technique;
         o.quarterRes = m.quarter;
         plugin->setRenderOptions(o);
-        plugin->setQuarterResEdges(m.mixed ? fx::QuarterResEdges::MixedResolution : fx::QuarterResEdges::DepthAware);
         if (m.lit) {
             ASSERT_EQ(plugin->setSceneLight(fx::SceneLight{}), fx::ErrorCode::None);
         } else {

@@ -206,9 +206,9 @@ TEST_F(ShaderLoaderTest, SoftProgramsForOnePowerAreKeysOfTheCache) {
     EXPECT_EQ(fx::programBuildCounts().built, before);                           // and get() compiled nothing
 
     std::vector<Cache::Key> keys;
-    Cache::addDrawKeys(fx::Technique::Soft, 2.0f, false, false, &keys);
-    Cache::addDrawKeys(fx::Technique::Soft, 1.5f, false, false, &keys);
-    Cache::addDrawKeys(fx::Technique::Soft, 1.5f, false, false, &keys);  // added once
+    Cache::addDrawKeys(fx::Technique::Soft, 2.0f, false, &keys);
+    Cache::addDrawKeys(fx::Technique::Soft, 1.5f, false, &keys);
+    Cache::addDrawKeys(fx::Technique::Soft, 1.5f, false, &keys);  // added once
     EXPECT_EQ(keys.size(), 6u);  // Soft and Soft at power 2, 1.5; lit and unlit
     EXPECT_EQ(programs.build(keys, &errors), 5);  // Soft lit and the four powered builds (Soft was built)
     EXPECT_EQ(fx::programBuildCounts().built, before + 5);
@@ -232,10 +232,8 @@ TEST_F(ShaderLoaderTest, SoftProgramsForOnePowerAreKeysOfTheCache) {
     std::vector<uint32_t> bits;
     for (int v = 0; v < Cache::VariantCount; ++v) {
         for (int lit = 0; lit < 2; ++lit) {
-            for (int c = 0; c < 2; ++c) {
-                for (int s = -1; s <= Cache::kMaxPowerSteps; ++s) {
-                    bits.push_back(Cache::Key{Cache::Variant(v), lit == 1, c == 1, s}.bits());
-                }
+            for (int s = -1; s <= Cache::kMaxPowerSteps; ++s) {
+                bits.push_back(Cache::Key{Cache::Variant(v), lit == 1, s}.bits());
             }
         }
     }
@@ -343,9 +341,6 @@ TEST_F(ShaderLoaderTest, TheHostsDepthSamplingStateDoesNotChangeThePicture) {
     };
     for (fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical, fx::Technique::Hard}) {  // mega: MegaTest
         for (bool quarter : {false, true}) {
-            // Soft and spherical at full res also with fade classification (its tile pass reads
-            // the scene depth).
-            direct.settings.classify = !quarter && t != fx::Technique::Hard;
             graph.setSceneDepthSampling(GL_NEAREST, GL_NEAREST, 0);
             const Image nearest = frame(t, quarter);
             graph.setSceneDepthSampling(GL_LINEAR, GL_LINEAR, 0);

@@ -2,7 +2,7 @@
 // stateless) are built by prepareGl when a loaded reaction or the options can use them, a live
 // edit of any technique's file is one transaction (a broken one keeps every last good program
 // and is reported once, never announced as reloaded), and a program built after a rejected edit
-// (a contrast power built later, the classifier switched on later) comes from the source that went live.
+// (a contrast power built later) comes from the source that went live.
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -183,48 +183,11 @@ TEST_F(ShaderTechniquesTest, APowerBuiltAfterARejectedEditComesFromTheGoodSource
     const std::string soft = dir + "/fs_particles_soft.glsl";
     cubetest::writeAhead(soft, broken(cubetest::readFile(soft), "syntax"), 10);
     allowShaderCompilerMessages();
-    programs.build({Cache::Key{Cache::Soft, false, false, 5}}, &errors);
+    programs.build({Cache::Key{Cache::Soft, false, 5}}, &errors);
     EXPECT_TRUE(errors.empty()) << errors.front();
     const fx::ParticleProgram& twoAndAHalf = programs.get(Cache::Soft, false, 2.5f);
     ASSERT_NE(twoAndAHalf.program, 0u);
     EXPECT_NE(twoAndAHalf.program, programs.get(Cache::Soft, false).program);
-    resetGlErrors();
-}
-
-// The same for the fade classifier, built when classification is first turned on: an edit that
-// breaks its files is refused at the edit (checked though classification is off), and turning
-// classification on afterwards builds it from the files that went live.
-TEST_F(ShaderTechniquesTest, TheClassifierBuiltAfterARejectedEditComesFromTheGoodSource) {
-    const std::string dir = freshCopy("classifier_snapshot");
-    fx::PluginImports imports;
-    imports.host = &host;
-    imports.shaderDir = dir;
-    auto p = fxCreatePlugin(imports);
-    ASSERT_TRUE(p && p->loadReactions(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml", nullptr));
-    fx::RenderOptions o;
-    o.techniqueOverride = fx::Technique::Soft;
-    p->setRenderOptions(o);
-    ASSERT_TRUE(p->prepareGl(nullptr));
-
-    allowShaderCompilerMessages();
-    const std::string tiles = dir + "/fs_particles_tile_depth.glsl";
-    cubetest::writeAhead(tiles, broken(cubetest::readFile(tiles), "syntax"), 10);
-    EXPECT_FALSE(p->pollShaderReload(nullptr));
-    EXPECT_EQ(countIn(host.errors(), "the last good programs are kept"), 1);
-    EXPECT_EQ(countIn(host.errors(), "fs_particles_tile_depth.glsl:"), 2);  // its two errors, once each
-
-    ASSERT_EQ(p->setFadeClassification(fx::FadeClassification::On), fx::ErrorCode::None);
-    host.setRearSlip(1.0f);
-    for (int s = 0; s < 60; ++s) {
-        for (int r = 0; r < p->reactionCount(); ++r) p->continueReaction(r, 1.0f / 60.0f, nullptr);
-    }
-    TestScene scene;
-    scene.quads = {TestScene::ground(40.0f, glm::vec3(0.2f))};
-    TestFrameGraph graph(96, 72);
-    const fx::ViewInfo view = makeView(glm::vec3(3.0f, 1.6f, 6.0f), glm::vec3(0.0f, 0.6f, 1.0f), 96, 72);
-    renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { p->declarePasses(view, f); });
-    EXPECT_FALSE(host.logged("fade classification is off")) << host.errors().back();
-    EXPECT_TRUE(graph.ran("particles_tile_depth"));
     resetGlErrors();
 }
 

@@ -22,7 +22,7 @@ constexpr int kBx = kW + 13, kBy = 7;
 constexpr int kSplitW = kBx + kW + 5, kSplitH = kBy + kH + 3;
 /// Largest |difference| (1/255 per channel) between a view drawn in its rectangle and alone.
 /// Measured (llvmpipe, 160 x 120): 0 at (0, 0); at (173, 7) 0 for quarter res and mega, 1 for
-/// hard, soft and classified soft, 2 for spherical. The same differences come with no scene depth
+/// hard and soft, 2 for spherical. The same differences come with no scene depth
 /// at all (FX_DEPTH_FROM_NOTHING): llvmpipe interpolates a varying at another window position
 /// with other float rounding, and the spherical chord amplifies it. So the test holds each depth
 /// source to what the same placement gives without depth (depth addressing adds nothing), and
@@ -33,15 +33,14 @@ constexpr int kSphericalTolerance = 2;
 struct Mode {
     const char* label;
     fx::Technique technique;
-    bool quarter = false, mixed = false, classified = false;
+    bool quarter = false;
 };
 const Mode kModes[] = {
     {"hard", fx::Technique::Hard},
     {"soft", fx::Technique::Soft},
-    {"soft classified", fx::Technique::Soft, false, false, true},
     {"spherical", fx::Technique::Spherical},
     {"soft quarter", fx::Technique::Soft, true},
-    {"spherical quarter mixed-res", fx::Technique::Spherical, true, true},
+    {"spherical quarter", fx::Technique::Spherical, true},
     {"mega", fx::Technique::Mega},
 };
 
@@ -103,12 +102,6 @@ protected:
         o.techniqueOverride = m.technique;
         o.quarterRes = m.quarter;
         ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
-        ASSERT_EQ(plugin->setQuarterResEdges(m.mixed ? fx::QuarterResEdges::MixedResolution
-                                                     : fx::QuarterResEdges::DepthAware),
-                  fx::ErrorCode::None);
-        ASSERT_EQ(plugin->setFadeClassification(m.classified ? fx::FadeClassification::On
-                                                             : fx::FadeClassification::Off),
-                  fx::ErrorCode::None);
         ASSERT_TRUE(plugin->prepareGl(nullptr));
     }
 
@@ -206,7 +199,7 @@ TEST_F(ViewportTest, AHostScissorClipsTheSmokeWhenTheViewAsksForIt) {
     Framebuffer split(kSplitW, kSplitH), scratch(kW, kH), alone(kW, kH);
     // Full res (the particles drawn straight into the host's framebuffer), quarter res and mega
     // (their composites scissor to the smoke's rect themselves).
-    for (const Mode& m : {kModes[1], kModes[3], kModes[4], kModes[6]}) {
+    for (const Mode& m : {kModes[1], kModes[2], kModes[3], kModes[5]}) {
         SCOPED_TRACE(m.label);
         setMode(m);
         const int allowed = m.technique == fx::Technique::Spherical ? kSphericalTolerance : kTolerance;

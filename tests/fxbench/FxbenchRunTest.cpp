@@ -88,7 +88,7 @@ TEST_P(FxbenchScenario, TinyRunWritesEveryKeyWithFiniteValues) {
     EXPECT_EQ(run["rounds"].as<int>(), 2);
     EXPECT_FALSE(run["renderer"].as<std::string>().empty());
     ASSERT_TRUE(run["modes"].IsSequence());
-    EXPECT_EQ(run["modes"].size(), 22u);  // every mode by default (lit, mega, soft+mixed, *+classify, *-linear included)
+    EXPECT_EQ(run["modes"].size(), 19u);  // every mode by default (lit, mega, *-zbuffer, *-linear included)
     for (const YAML::Node& m : run["modes"]) {
         const std::string name = m["name"].as<std::string>();
         SCOPED_TRACE(name);
@@ -117,25 +117,6 @@ TEST_P(FxbenchScenario, TinyRunWritesEveryKeyWithFiniteValues) {
 }
 
 INSTANTIATE_TEST_SUITE_P(All, FxbenchScenario, ::testing::Values("standard", "fill", "overdraw", "empty"));
-
-// Fade classification changes no pixel (max abs 0 against soft / spherical) and reports its
-// classes, which cover every soft or spherical particle drawn in the error frame; the modes
-// without it report none.
-TEST(Fxbench, ClassifiedModesDrawTheSameImageAndCountTheirClasses) {
-    const YAML::Node& run = tinyRun("standard");
-    for (const char* name : {"soft+classify", "spherical+classify"}) {
-        SCOPED_TRACE(name);
-        const YAML::Node m = modeNode(run, name);
-        EXPECT_EQ(m["error"]["max_abs"].as<double>(), 0.0);
-        const YAML::Node c = m["fade_classes"];
-        ASSERT_TRUE(c.IsMap()) << "no fade_classes";
-        const double sum = finite(c["fade_needed"], "fade_needed") + finite(c["in_front"], "in_front") +
-                           finite(c["hidden"], "hidden");
-        EXPECT_GT(sum, 0.0);
-        EXPECT_TRUE(m["passes_ms"]["chase.particles_tile_depth"].IsDefined()) << "no tile pass timed";
-    }
-    EXPECT_FALSE(modeNode(run, "soft")["fade_classes"].IsDefined());
-}
 
 TEST(Fxbench, TrimmedSoftShadesFewerFragmentsThanQuadsForTheSameImage) {
     const YAML::Node& run = tinyRun("standard");
@@ -291,11 +272,11 @@ TEST(Fxbench, ParticleSweepYamlSplitsLargeCountsOverReactions) {
 }
 
 // Switching modes goes through prepareGl (as the engine's key and panel switches do): no program
-// is built while a frame is declared, fade classification included (it reaches the classified
-// programs). Each mode's per-pass times list only the passes its own renders ran.
+// is built while a frame is declared. Each mode's per-pass times list only the passes its own
+// renders ran.
 TEST(Fxbench, ModeSwitchesBuildNoProgramWhileDeclaringAndPassTimesStayWithTheirMode) {
     const std::string json = tempPath("passes.json");
-    const RunOutput r = runFxbench("--modes hard,soft+quarter,soft+classify --size 48x48 --frames 2 --rounds 2 "
+    const RunOutput r = runFxbench("--modes hard,soft+quarter,soft --size 48x48 --frames 2 --rounds 2 "
                                    "--warmup 1 --error-frames 0 --json " + json);
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_EQ(r.output.find("built while declaring a frame"), std::string::npos) << r.output;
@@ -310,19 +291,27 @@ TEST(Fxbench, ModeSwitchesBuildNoProgramWhileDeclaringAndPassTimesStayWithTheirM
     auto has = [](const std::vector<std::string>& names, const std::string& pass) {
         return std::find(names.begin(), names.end(), pass) != names.end();
     };
-    const std::vector<std::string> hard = passes("hard"), quarter = passes("soft+quarter"),
-                                   classify = passes("soft+classify");
+    const std::vector<std::string> hard = passes("hard"), quarter = passes("soft+quarter"), soft = passes("soft");
     for (const char* pass : {"chase.particles_quarter", "chase.particles_composite", "chase.particles_depth_downsample"}) {
         SCOPED_TRACE(pass);
         EXPECT_TRUE(has(quarter, pass));
         EXPECT_FALSE(has(hard, pass));
-        EXPECT_FALSE(has(classify, pass));
+        EXPECT_FALSE(has(soft, pass));
     }
     EXPECT_TRUE(has(hard, "chase.particles"));
+    EXPECT_TRUE(has(soft, "chase.particles"));
     EXPECT_FALSE(has(quarter, "chase.particles"));
-    EXPECT_TRUE(has(classify, "chase.particles_tile_depth"));
-    EXPECT_FALSE(has(hard, "chase.particles_tile_depth"));
-    EXPECT_FALSE(has(quarter, "chase.particles_tile_depth"));
+}
+
+// The modes of the removed features are refused by name, with the reason, before anything runs.
+TEST(Fxbench, RemovedModesAreRefusedWithTheReason) {
+    for (const char* name : {"soft+classify", "spherical+classify", "soft+mixed"}) {
+        SCOPED_TRACE(name);
+        const RunOutput r = runFxbench(std::string("--modes soft,") + name);
+        EXPECT_EQ(r.status, 2);
+        EXPECT_NE(r.output.find(std::string("mode '") + name + "' no longer exists"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("removed in API 2.1"), std::string::npos) << r.output;
+    }
 }
 
 TEST(Fxbench, UnknownModeIsRejectedWithTheValidNames) {

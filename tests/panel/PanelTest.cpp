@@ -171,7 +171,7 @@ TEST_F(PanelTest, RenderSwitchesChangeTheRunningOptions) {
     ASSERT_EQ(plugin->fadeClassification(), fx::FadeClassification::Off);
     click(rect("classify_fades"));
     EXPECT_EQ(plugin->fadeClassification(), fx::FadeClassification::On);
-    frame();  // a classified frame with the panel over it
+    frame();  // the deprecated switch on (no effect since API 2.1), the panel over it
     click(rect("classify_fades"));
     EXPECT_EQ(plugin->fadeClassification(), fx::FadeClassification::Off);
 }

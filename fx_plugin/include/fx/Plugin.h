@@ -67,24 +67,21 @@ struct RenderOptions {
 /// Since API 1.1.
 enum class ParticleShape : uint8_t { Trimmed = 0, Quad = 1 };
 
-/// How the quarter-res path (RenderOptions::quarterRes) treats the pixels along depth edges.
-/// DepthAware: every pixel from the half-res particles, depth-aware upsampled (the 1.1 look).
-/// MixedResolution: the pixels whose half-res footprint straddles a depth discontinuity are
-/// redrawn at full resolution (GPU Gems 3 ch. 23, Cantlay), so they match full-res rendering; the
-/// rest is upsampled as before. Since API 1.2.
+/// Deprecated since API 2.1, kept so hosts written against earlier versions still compile: no
+/// value has any effect (Plugin::setQuarterResEdges). MixedResolution redrew the quarter-res
+/// pixels along depth edges at full resolution (API 1.2 to 2.0); on a GPU its edge pass cost
+/// more than quarter res saves, for an image no better, so it was removed. Quarter res always
+/// upsamples depth-aware.
 enum class QuarterResEdges : uint8_t { DepthAware = 0, MixedResolution = 1 };
 
-/// Fade classification of soft and spherical particles at full resolution (API 1.3). On: a small
-/// pass reduces the scene depth to its range per screen tile; a particle in front of all the
-/// geometry in its tiles by more than its softness skips the scene-depth fetch and the fade, one
-/// wholly behind it is not drawn. The image is the same bit for bit. It pays where the fragment
-/// shader branches per particle (GPUs); a CPU rasteriser runs both sides of the branch, so there
-/// it costs the tile pass and saves little. Off: every fragment fetches the depth (the 1.2 path).
+/// Deprecated since API 2.1, kept so hosts written against earlier versions still compile: no
+/// value has any effect (Plugin::setFadeClassification). On sorted soft and spherical particles
+/// by the scene depth's range per screen tile (API 1.3 to 2.0); on a GPU its tile pass cost more
+/// than the depth fetches it skipped, so it was removed.
 enum class FadeClassification : uint8_t { Off = 0, On = 1 };
 
-/// Particles per fade class in the last full-res particle pass (Plugin::fadeClassCounts, API
-/// 1.3). `counted` is false when nothing was counted (counting off, classification off, no
-/// soft or spherical particle drawn at full res, or the counter could not be built).
+/// Deprecated since API 2.1 with FadeClassification: Plugin::fadeClassCounts always returns it
+/// with `counted` false and every count 0.
 struct FadeClassCounts {
     int fadeNeeded = 0;  ///< drawn with the per-pixel fade (their footprint meets geometry)
     int inFront = 0;     ///< drawn without reading the scene depth (the fade is exactly 1)
@@ -240,35 +237,34 @@ public:
         return SmokeShadow{};
     }
 
-    // ---- API 1.2: mixed-resolution particles ----
+    // ---- API 1.2: mixed-resolution particles (deprecated since API 2.1) ----
 
-    /// API 1.2: how quarter res treats depth edges (QuarterResEdges), from the next declarePasses
-    /// on; without quarter res it changes nothing. Default DepthAware. Refused (InvalidValue,
-    /// nothing changes) for a value outside the enum. Not pure, so an adapter written against 1.1
-    /// still compiles.
+    /// API 1.2; deprecated since API 2.1, no effect (QuarterResEdges says why). The value is
+    /// still validated and kept: refused (InvalidValue, nothing changes) for a value outside the
+    /// enum, else quarterResEdges() returns it. Default DepthAware. Not pure, so an adapter
+    /// written against 1.1 still compiles.
     virtual ErrorCode setQuarterResEdges(QuarterResEdges mode) {
         (void)mode;
         return ErrorCode::InvalidValue;
     }
     virtual QuarterResEdges quarterResEdges() const { return QuarterResEdges::DepthAware; }
 
-    // ---- API 1.3: fade classification ----
+    // ---- API 1.3: fade classification (deprecated since API 2.1) ----
 
-    /// API 1.3: fade classification (FadeClassification), from the next declarePasses on.
-    /// Default Off. Refused (InvalidValue, nothing changes) for a value outside the enum.
+    /// API 1.3; deprecated since API 2.1, no effect (FadeClassification says why). The value is
+    /// still validated and kept: refused (InvalidValue, nothing changes) for a value outside the
+    /// enum, else fadeClassification() returns it. Default Off.
     virtual ErrorCode setFadeClassification(FadeClassification mode) {
         (void)mode;
         return ErrorCode::InvalidValue;
     }
     virtual FadeClassification fadeClassification() const { return FadeClassification::Off; }
-    /// API 1.3: with classification on, count each frame's particles per class (one point draw
-    /// per reaction and a 16-byte read-back that waits for the GPU: for diagnostics and
-    /// benchmarks, not for shipping frames). Default off.
+    /// API 1.3; deprecated since API 2.1, no effect: accepted (None) and nothing is counted.
     virtual ErrorCode setFadeClassCounting(bool on) {
         (void)on;
         return ErrorCode::InvalidValue;
     }
-    /// API 1.3: the counts of the last full-res particle pass that ran with counting on.
+    /// API 1.3; deprecated since API 2.1: always `counted` false, every count 0.
     virtual FadeClassCounts fadeClassCounts() const { return FadeClassCounts{}; }
 
     // ---- API 2.0: the immediate path ----
