@@ -30,12 +30,14 @@ void main() {
     ivec2 t2 = clamp(base + ivec2(0, 1), ivec2(0), last), t3 = clamp(base + ivec2(1, 1), ivec2(0), last);
     float w0 = (1.0 - f.x) * (1.0 - f.y), w1 = f.x * (1.0 - f.y), w2 = (1.0 - f.x) * f.y, w3 = f.x * f.y;
 
-    // (No early discard of smoke-free footprints: measured on llvmpipe it made the composite
-    // slower, a CPU rasteriser evaluating the rest anyway; the tiles the composite is drawn on
-    // are what keep smoke-free screen areas out.)
     vec4 c0 = texelFetch(uHalfColor, t0, 0), c1 = texelFetch(uHalfColor, t1, 0);
     vec4 c2 = texelFetch(uHalfColor, t2, 0), c3 = texelFetch(uHalfColor, t3, 0);
     vec4 bilinear = vec4(0.0) + w0 * c0 + w1 * c1 + w2 * c2 + w3 * c3;
+    // No smoke in the footprint (premultiplied, so additive smoke with alpha 0 still counts):
+    // blending it would leave the pixel as it is, so it is not blended at all. Inside the tiles
+    // many pixels are smoke-free; a GPU then skips the scene-depth fetch and the blend's
+    // read-modify-write there.
+    if (all(equal(c0 + c1 + c2 + c3, vec4(0.0)))) discard;
 
 #if defined(FX_COMPOSITE_BILINEAR)
     oColor = bilinear;
