@@ -45,15 +45,6 @@ void TweakPanel::buildFrameWindow(Game& game) {
             plugin_->setParticleShape(trimmed ? fx::ParticleShape::Trimmed : fx::ParticleShape::Quad);
         }
         note("trimmed_shapes");
-        ImGui::SameLine();
-        // Fade classification: the same picture; soft and spherical particles in front of (or
-        // hidden behind) all geometry in their screen tiles skip the depth fetch (or the draw).
-        bool classify = plugin_->fadeClassification() == fx::FadeClassification::On;
-        if (ImGui::Checkbox("classify fades", &classify)) {
-            plugin_->setFadeClassification(classify ? fx::FadeClassification::On : fx::FadeClassification::Off);
-            (void)plugin_->prepareGl(nullptr);  // the classifier's programs, built between frames
-        }
-        note("classify_fades");
         ImGui::TextDisabled("%s", game.scene().renderer().reversedZ() ? "reversed-Z float depth" : "standard 24-bit depth");
     }
     if (ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen)) {

@@ -168,12 +168,6 @@ TEST_F(PanelTest, RenderSwitchesChangeTheRunningOptions) {
     EXPECT_EQ(plugin->particleShape(), fx::ParticleShape::Quad);
     click(rect("trimmed_shapes"));
     EXPECT_EQ(plugin->particleShape(), fx::ParticleShape::Trimmed);
-    ASSERT_EQ(plugin->fadeClassification(), fx::FadeClassification::Off);
-    click(rect("classify_fades"));
-    EXPECT_EQ(plugin->fadeClassification(), fx::FadeClassification::On);
-    frame();  // the deprecated switch on (no effect since API 2.1), the panel over it
-    click(rect("classify_fades"));
-    EXPECT_EQ(plugin->fadeClassification(), fx::FadeClassification::Off);
 }
 
 TEST_F(PanelTest, TheSunSlidersMoveTheSunAndLitSmokeSwitchesOff) {
