@@ -238,28 +238,52 @@ int reactionParticlesAlive(const fxPlugin* p, int index) {
     }
     return impl(p).reactionParticlesAlive(index);
 }
+// The ...2 entries fill this library's sized struct and copy the host's size of it; the 2.0
+// entries copy the same values into the 2.0 layout, whole, as 2.0 did.
+fxReactionStats2 reactionStatsOf(const fxPlugin* p, int index) {
+    fxReactionStats2 c;
+    std::memset(&c, 0, sizeof c);
+    c.size = sizeof c;
+    const ReactionStats s = impl(p).reactionStats(index);
+    copyOut(s.name, c.name, sizeof c.name);
+    copyOut(s.technique, c.technique, sizeof c.technique);
+    c.alive = s.alive;
+    c.emitted = s.emitted;
+    c.dropped = s.dropped;
+    return c;
+}
 int reactionStats(const fxPlugin* p, int index, fxReactionStats* out) {
     if (!usable(p, "reactionStats")) return handleError(p);
     if (!out) return code(refuse(p, ErrorCode::NullArgument, "reactionStats", "out is null"));
+    const fxReactionStats2 c = reactionStatsOf(p, index);
     std::memset(out, 0, sizeof *out);
-    const ReactionStats s = impl(p).reactionStats(index);
-    copyOut(s.name, out->name, sizeof out->name);
-    copyOut(s.technique, out->technique, sizeof out->technique);
-    out->alive = s.alive;
-    out->emitted = s.emitted;
-    out->dropped = s.dropped;
-    return s.name.empty() ? FX_ERROR_INDEX_OUT_OF_RANGE : FX_ERROR_NONE;
+    std::memcpy(out->name, c.name, sizeof out->name);
+    std::memcpy(out->technique, c.technique, sizeof out->technique);
+    out->alive = c.alive;
+    out->emitted = c.emitted;
+    out->dropped = c.dropped;
+    return c.name[0] == '\0' ? FX_ERROR_INDEX_OUT_OF_RANGE : FX_ERROR_NONE;
 }
+int reactionStats2(const fxPlugin* p, int index, fxReactionStats2* out) {
+    if (!usable(p, "reactionStats2")) return handleError(p);
+    int error = FX_ERROR_NONE;
+    if (!outUsable(p, out, "fxReactionStats2", "reactionStats2", &error)) return error;
+    const fxReactionStats2 c = reactionStatsOf(p, index);
+    writeOut(out, c, out->size);
+    return c.name[0] == '\0' ? FX_ERROR_INDEX_OUT_OF_RANGE : FX_ERROR_NONE;
+}
+
 int reactionKeyCount(const fxPlugin* p) { return usable(p, "reactionKeyCount") ? int(p->schema.size()) : 0; }
-int reactionKey(const fxPlugin* p, int keyIndex, fxReactionKeyInfo* out) {
-    if (!usable(p, "reactionKey")) return handleError(p);
-    if (!out) return code(refuse(p, ErrorCode::NullArgument, "reactionKey", "out is null"));
+/// The key at `keyIndex` in *out; IndexOutOfRange (refused under `function`) outside the schema.
+int reactionKeyOf(const fxPlugin* p, int keyIndex, const char* function, fxReactionKeyInfo2* out) {
     if (keyIndex < 0 || size_t(keyIndex) >= p->schema.size()) {
-        return code(refuse(p, ErrorCode::IndexOutOfRange, "reactionKey",
+        return code(refuse(p, ErrorCode::IndexOutOfRange, function,
                            "key index " + std::to_string(keyIndex) + " of " + std::to_string(p->schema.size())));
     }
     const ReactionKeyInfo& k = p->schema[size_t(keyIndex)];
     const std::vector<const char*>& choices = p->schemaChoices[size_t(keyIndex)];
+    std::memset(out, 0, sizeof *out);
+    out->size = sizeof *out;
     out->key = k.key.c_str();
     out->kind = static_cast<int>(k.kind);
     out->min = k.min;
@@ -269,6 +293,24 @@ int reactionKey(const fxPlugin* p, int keyIndex, fxReactionKeyInfo* out) {
     out->unit = k.unit.c_str();
     out->help = k.help.c_str();
     return FX_ERROR_NONE;
+}
+int reactionKey(const fxPlugin* p, int keyIndex, fxReactionKeyInfo* out) {
+    if (!usable(p, "reactionKey")) return handleError(p);
+    if (!out) return code(refuse(p, ErrorCode::NullArgument, "reactionKey", "out is null"));
+    fxReactionKeyInfo2 k;
+    const int error = reactionKeyOf(p, keyIndex, "reactionKey", &k);
+    if (error != FX_ERROR_NONE) return error;
+    *out = fxReactionKeyInfo{k.key, k.kind, k.min, k.max, k.choices, k.choiceCount, k.unit, k.help};
+    return FX_ERROR_NONE;
+}
+int reactionKey2(const fxPlugin* p, int keyIndex, fxReactionKeyInfo2* out) {
+    if (!usable(p, "reactionKey2")) return handleError(p);
+    int error = FX_ERROR_NONE;
+    if (!outUsable(p, out, "fxReactionKeyInfo2", "reactionKey2", &error)) return error;
+    fxReactionKeyInfo2 k;
+    error = reactionKeyOf(p, keyIndex, "reactionKey2", &k);
+    if (error == FX_ERROR_NONE) writeOut(out, k, out->size);
+    return error;
 }
 
 // ---- simulation and options -------------------------------------------------------------------
@@ -294,14 +336,47 @@ int fireReaction(fxPlugin* p, const char* name, const float point[3]) {
     return code(impl(p).fireReaction(name, toPluginWorld(p->up, glm::vec3(point[0], point[1], point[2]))));
 }
 
+fxStats2 statsOf(const fxPlugin* p) {
+    const Stats s = impl(p).stats();
+    fxStats2 c;
+    std::memset(&c, 0, sizeof c);
+    c.size = sizeof c;
+    c.reactions = s.reactions;
+    c.particlesAlive = s.particlesAlive;
+    c.particleCapacity = s.particleCapacity;
+    c.particlesDrawn = s.particlesDrawn;
+    c.reloads = s.reloads;
+    c.reloadErrors = s.reloadErrors;
+    c.apiErrors = s.apiErrors;
+    return c;
+}
 void stats(const fxPlugin* p, fxStats* out) {
     if (!usable(p, "stats")) return;
     if (!out) {
         refuse(p, ErrorCode::NullArgument, "stats", "out is null");
         return;
     }
-    const Stats s = impl(p).stats();
-    *out = fxStats{s.reactions, s.particlesAlive, s.particleCapacity, s.particlesDrawn, s.reloads, s.reloadErrors, s.apiErrors};
+    const fxStats2 c = statsOf(p);
+    *out = fxStats{c.reactions, c.particlesAlive, c.particleCapacity, c.particlesDrawn, c.reloads, c.reloadErrors,
+                   c.apiErrors};
+}
+int stats2(const fxPlugin* p, fxStats2* out) {
+    if (!usable(p, "stats2")) return handleError(p);
+    int error = FX_ERROR_NONE;
+    if (!outUsable(p, out, "fxStats2", "stats2", &error)) return error;
+    writeOut(out, statsOf(p), out->size);
+    return FX_ERROR_NONE;
+}
+
+fxParticleCheck2 checkOf(const fxPlugin* p) {
+    const ParticleCheck k = impl(p).checkParticles();
+    fxParticleCheck2 c;
+    std::memset(&c, 0, sizeof c);
+    c.size = sizeof c;
+    c.alive = k.alive;
+    c.capacity = k.capacity;
+    c.nonFinite = k.nonFinite;
+    return c;
 }
 void checkParticles(const fxPlugin* p, fxParticleCheck* out) {
     if (!usable(p, "checkParticles")) return;
@@ -309,8 +384,15 @@ void checkParticles(const fxPlugin* p, fxParticleCheck* out) {
         refuse(p, ErrorCode::NullArgument, "checkParticles", "out is null");
         return;
     }
-    const ParticleCheck c = impl(p).checkParticles();
+    const fxParticleCheck2 c = checkOf(p);
     *out = fxParticleCheck{c.alive, c.capacity, c.nonFinite};
+}
+int checkParticles2(const fxPlugin* p, fxParticleCheck2* out) {
+    if (!usable(p, "checkParticles2")) return handleError(p);
+    int error = FX_ERROR_NONE;
+    if (!outUsable(p, out, "fxParticleCheck2", "checkParticles2", &error)) return error;
+    writeOut(out, checkOf(p), out->size);
+    return FX_ERROR_NONE;
 }
 
 const fxApi kApi = {
@@ -325,6 +407,7 @@ const fxApi kApi = {
     setSceneLight, clearSceneLight,
     prepareGl, pollShaderReload, declarePasses, declareShadowPasses, renderView,
     stats, checkParticles,
+    stats2, checkParticles2, reactionStats2, reactionKey2, declareShadowPasses2,
 };
 
 }  // namespace

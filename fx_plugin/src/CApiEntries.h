@@ -66,6 +66,33 @@ Desc fullDesc(const Desc& in) {
     return out;
 }
 
+/// The first check of an entry that writes a sized struct (fx/fx.h: the plugin writes no byte
+/// past out->size): `out` is set and its size one the library knows. Else the refusal is logged
+/// under `function`, its code left in *error, and nothing written.
+template <class Out>
+bool outUsable(const fxPlugin* p, const Out* out, const char* type, const char* function, int* error) {
+    if (!out) {
+        *error = code(refuse(p, ErrorCode::NullArgument, function,
+                             std::string("out is null; expected an ") + type + " (FX_DESC_INIT sets its size)"));
+        return false;
+    }
+    if (!knownSize(out->size, sizeof *out)) {
+        *error = code(refuse(p, ErrorCode::BadDescriptor, function, sizeProblem(type, out->size, sizeof *out)));
+        return false;
+    }
+    return true;
+}
+
+/// Writes the first `bytes` of `full` (this library's struct) into the host's `out`, its size
+/// kept: `bytes` is the host's size where the library knows it, so a host built against an older
+/// minor gets the fields it knows and nothing past its struct.
+template <class Out>
+void writeOut(Out* out, const Out& full, size_t bytes) {
+    const uint32_t size = out->size;
+    std::memcpy(out, &full, bytes < sizeof full ? bytes : sizeof full);
+    out->size = size;
+}
+
 /// Copies `s` snprintf-style; returns its length.
 size_t copyOut(const std::string& s, char* buffer, size_t capacity);
 
@@ -100,6 +127,7 @@ fxBool prepareGl(fxPlugin* p, const fxDiagnosticSink* out);
 fxBool pollShaderReload(fxPlugin* p, const fxDiagnosticSink* out);
 int declarePasses(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* f);
 int declareShadowPasses(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* f, fxSmokeShadow* out);
+int declareShadowPasses2(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* f, fxSmokeShadow2* out);
 int renderView(fxPlugin* p, const fxViewDesc* v);
 
 }  // namespace capi

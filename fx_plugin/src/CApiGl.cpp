@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <string>
 
@@ -142,17 +143,18 @@ int declarePasses(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* f) {
     return code(impl(p).declarePasses(view, frame));
 }
 
-int declareShadowPasses(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* f, fxSmokeShadow* out) {
-    if (!usable(p, "declareShadowPasses")) return handleError(p);
-    if (!out) {
-        return code(refuse(p, ErrorCode::NullArgument, "declareShadowPasses",
-                           "out is null; expected an fxSmokeShadow for the opacity map"));
-    }
+namespace {
+
+/// The shadow passes of both entries into *out (this library's struct, zeroed: no smoke), the
+/// refusals logged under `function`.
+int shadowPasses(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* f, const char* function,
+                 fxSmokeShadow2* out) {
     std::memset(out, 0, sizeof *out);
+    out->size = sizeof *out;
     ViewInfo view;
-    const ErrorCode bad = viewAndFrame(p, v, f, "declareShadowPasses", &view);
+    const ErrorCode bad = viewAndFrame(p, v, f, function, &view);
     if (bad != ErrorCode::None) return code(bad);
-    const ErrorCode noGl = glReady(p, "declareShadowPasses");
+    const ErrorCode noGl = glReady(p, function);
     if (noGl != ErrorCode::None) return code(noGl);
     CFrameBuilder frame(*f, p->impl->apiErrors());
     const SmokeShadow s = impl(p).declareShadowPasses(view, frame);
@@ -163,6 +165,32 @@ int declareShadowPasses(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* 
             for (int r = 0; r < 4; ++r) out->worldToShadow[c * 4 + r] = hostWorldToShadow[c][r];
     }
     return FX_ERROR_NONE;
+}
+
+}  // namespace
+
+int declareShadowPasses(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* f, fxSmokeShadow* out) {
+    if (!usable(p, "declareShadowPasses")) return handleError(p);
+    if (!out) {
+        return code(refuse(p, ErrorCode::NullArgument, "declareShadowPasses",
+                           "out is null; expected an fxSmokeShadow for the opacity map"));
+    }
+    // 2.0 wrote its struct whole, refused or not: no smoke unless the passes were declared.
+    fxSmokeShadow2 s;
+    const int error = shadowPasses(p, v, f, "declareShadowPasses", &s);
+    out->opacity = s.opacity;
+    std::memcpy(out->worldToShadow, s.worldToShadow, sizeof out->worldToShadow);
+    return error;
+}
+
+int declareShadowPasses2(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* f, fxSmokeShadow2* out) {
+    if (!usable(p, "declareShadowPasses2")) return handleError(p);
+    int error = FX_ERROR_NONE;
+    if (!outUsable(p, out, "fxSmokeShadow2", "declareShadowPasses2", &error)) return error;
+    fxSmokeShadow2 s;
+    error = shadowPasses(p, v, f, "declareShadowPasses2", &s);
+    if (error == FX_ERROR_NONE) writeOut(out, s, out->size);
+    return error;
 }
 
 int renderView(fxPlugin* p, const fxViewDesc* v) {

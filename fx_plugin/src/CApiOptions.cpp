@@ -1,5 +1,7 @@
 // The C boundary's options (fx/fx.h, "Options"): fxRenderOptions, the 2.0 setters kept for 2.0
 // hosts, and the scene light.
+#include <cstddef>
+#include <cstring>
 #include <string>
 
 #include "CApiEntries.h"
@@ -16,25 +18,38 @@ Enum enumFrom(int v) {
     return static_cast<Enum>(v < 0 || v > 255 ? 255 : v);
 }
 
+// API 2.0's fxRenderOptions ended with bilinearUpsample; 2.1 appended particleShape.
+constexpr size_t kRenderOptionsSize20 = offsetof(fxRenderOptions, particleShape);
+
 }  // namespace
 
 int setRenderOptions(fxPlugin* p, const fxRenderOptions* o) {
     if (!usable(p, "setRenderOptions")) return handleError(p);
     if (!o) return code(refuse(p, ErrorCode::NullArgument, "setRenderOptions", "options is null"));
-    if (!knownSize(o->size, sizeof *o)) {
+    if (!knownSize(o->size, sizeof *o, kRenderOptionsSize20)) {
         return code(refuse(p, ErrorCode::BadDescriptor, "setRenderOptions",
-                           sizeProblem("fxRenderOptions", o->size, sizeof *o)));
+                           sizeProblem("fxRenderOptions", o->size, sizeof *o, kRenderOptionsSize20)));
     }
-    if (o->techniqueOverride < 0 || o->techniqueOverride > FX_TECHNIQUE_MEGA) {
+    const fxRenderOptions full = fullDesc(*o);
+    if (full.techniqueOverride < 0 || full.techniqueOverride > FX_TECHNIQUE_MEGA) {
         return code(refuse(p, ErrorCode::InvalidValue, "setRenderOptions",
-                           "techniqueOverride = " + std::to_string(o->techniqueOverride) +
+                           "techniqueOverride = " + std::to_string(full.techniqueOverride) +
                                "; expected FromReaction, Hard, Soft, Spherical or Mega"));
     }
+    // A 2.0 host's struct has no shape: its call leaves the shape setParticleShape gave.
+    const bool setsShape = o->size > kRenderOptionsSize20;
+    if (setsShape && full.particleShape != FX_SHAPE_TRIMMED && full.particleShape != FX_SHAPE_QUAD) {
+        return code(refuse(p, ErrorCode::InvalidValue, "setRenderOptions",
+                           "particleShape = " + std::to_string(full.particleShape) +
+                               "; expected FX_SHAPE_TRIMMED (0) or FX_SHAPE_QUAD (1)"));
+    }
     RenderOptions r;
-    r.techniqueOverride = static_cast<Technique>(o->techniqueOverride);
-    r.quarterRes = o->quarterRes != 0;
-    r.bilinearUpsample = o->bilinearUpsample != 0;
-    return code(impl(p).setRenderOptions(r));
+    r.techniqueOverride = static_cast<Technique>(full.techniqueOverride);
+    r.quarterRes = full.quarterRes != 0;
+    r.bilinearUpsample = full.bilinearUpsample != 0;
+    const ErrorCode set = impl(p).setRenderOptions(r);
+    if (set != ErrorCode::None || !setsShape) return code(set);
+    return code(impl(p).setParticleShape(static_cast<ParticleShape>(full.particleShape)));
 }
 void getRenderOptions(const fxPlugin* p, fxRenderOptions* out) {
     if (!usable(p, "getRenderOptions")) return;
@@ -43,12 +58,17 @@ void getRenderOptions(const fxPlugin* p, fxRenderOptions* out) {
         return;
     }
     const RenderOptions r = impl(p).renderOptions();
-    const uint32_t size = out->size;
-    std::memset(out, 0, sizeof *out);
-    out->size = size;
-    out->techniqueOverride = static_cast<int>(r.techniqueOverride);
-    out->quarterRes = r.quarterRes ? 1 : 0;
-    out->bilinearUpsample = r.bilinearUpsample ? 1 : 0;
+    fxRenderOptions full;
+    std::memset(&full, 0, sizeof full);
+    full.size = sizeof full;
+    full.techniqueOverride = static_cast<int>(r.techniqueOverride);
+    full.quarterRes = r.quarterRes ? 1 : 0;
+    full.bilinearUpsample = r.bilinearUpsample ? 1 : 0;
+    full.particleShape = static_cast<int>(impl(p).particleShape());
+    // 2.0 filled its fields whatever the size (hosts may never have set it on a struct they only
+    // read): a size the library does not know still gets them, and only them, as every host's
+    // struct has at least those.
+    writeOut(out, full, knownSize(out->size, sizeof full, kRenderOptionsSize20) ? out->size : kRenderOptionsSize20);
 }
 
 int setParticleShape(fxPlugin* p, int s) {
