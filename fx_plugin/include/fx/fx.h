@@ -28,8 +28,8 @@
  *    against the 2.0 header runs unchanged. A new host uses the entries named ...2 above. The
  *    option setters of 2.0 stay too: setParticleShape/particleShape are
  *    fxRenderOptions.particleShape now; the quarter-res edge and fade classification entries are
- *    accepted and have no effect since 2.1. Deprecated entries are marked where the table lists
- *    them.
+ *    accepted and have no effect since 2.1. Each deprecated entry is marked where the table lists
+ *    it.
  *  - A refused call changes nothing, returns a named FX_ERROR_* code and is logged through the
  *    host's log callback ("fx: error[Code] function: what was expected"), at most a few times
  *    per (function, code), then counted in fxStats.apiErrors. Where no host can be reached
@@ -479,8 +479,7 @@ typedef struct fxApi {
     int (*setParticleShape)(fxPlugin* p, int shape);
     int (*particleShape)(const fxPlugin* p);
     /* Deprecated since API 2.1 (kept for 2.0 hosts): mixed-resolution edges and fade
-     * classification are gone from the renderer; these calls check their arguments as in 2.0 and
-     * have no effect on the picture. */
+     * classification are gone from the renderer; these calls are accepted and have no effect. */
     int (*setQuarterResEdges)(fxPlugin* p, int edges);
     int (*quarterResEdges)(const fxPlugin* p);
     int (*setFadeClassification)(fxPlugin* p, int mode);
