@@ -247,7 +247,12 @@ void Game::Update(float dt) {
 
 double Game::RenderFrame() {
     const auto start = std::chrono::steady_clock::now();
-    render_.Dyn(*this);
+    RenderFrameOutputs out;
+    out.frame = captureNext_ ? &lastFrame_ : nullptr;
+    out.sceneDepth = captureDepthNext_ ? &lastSceneDepth_ : nullptr;
+    out.passRuns = &passRuns_;
+    out.passCulls = &passCulls_;
+    if (render_.Dyn(*this, out)) captureNext_ = captureDepthNext_ = false;
     gl::finish();  // the frame's GPU work is in the measured time
     // The GPU's pass timings of this very frame (ready after the finish): a later frame, maybe
     // in another mode (fxbench interleaves them), never gets them.

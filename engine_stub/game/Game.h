@@ -127,7 +127,6 @@ public:
     const std::map<std::string, int>& passCulls() const { return passCulls_; }
 
 private:
-    friend class Render;
     bool InitProc(std::string* error);
     void updateCameras(float dt);
     void frameSceneBounds();
