@@ -269,8 +269,9 @@ int reactionStats2(const fxPlugin* p, int index, fxReactionStats2* out) {
     int error = FX_ERROR_NONE;
     if (!outUsable(p, out, "fxReactionStats2", "reactionStats2", &error)) return error;
     const fxReactionStats2 c = reactionStatsOf(p, index);
+    if (c.name[0] == '\0') return FX_ERROR_INDEX_OUT_OF_RANGE;  // refused: nothing written
     writeOut(out, c, out->size);
-    return c.name[0] == '\0' ? FX_ERROR_INDEX_OUT_OF_RANGE : FX_ERROR_NONE;
+    return FX_ERROR_NONE;
 }
 
 int reactionKeyCount(const fxPlugin* p) { return usable(p, "reactionKeyCount") ? int(p->schema.size()) : 0; }

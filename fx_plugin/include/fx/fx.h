@@ -32,7 +32,7 @@
  *    it.
  *  - A refused call changes nothing, returns a named FX_ERROR_* code and is logged through the
  *    host's log callback ("fx: error[Code] function: what was expected"), at most a few times
- *    per (function, code), then counted in fxStats.apiErrors. Where no host can be reached
+ *    per (function, code), then counted in fxStats2.apiErrors. Where no host can be reached
  *    safely (create refusing fxPluginDesc's size or version, fxHostCallbacks' size or a null log;
  *    a null or dead handle) the same line goes to stderr instead, with the same limit.
  *  - Every number is an input with a stated range (the comment at its field or function; the
@@ -263,7 +263,7 @@ typedef struct fxViewDesc {
     float sliceMinDistance, sliceMaxDistance;
 } fxViewDesc;
 
-/* Written by setRenderOptions, read back whole by getRenderOptions. Defaults (every field 0): each
+/* Written by setRenderOptions, read back by getRenderOptions. Defaults (every field 0): each
  * reaction's own technique at full resolution, trimmed particles. */
 typedef struct fxRenderOptions {
     uint32_t size;
@@ -377,7 +377,7 @@ typedef struct fxParticleCheck2 {
 
 typedef struct fxReactionStats2 {
     uint32_t size;
-    char name[72];        /* the reaction's name ("" for a bad index) */
+    char name[72];        /* the reaction's name */
     char technique[16];   /* "hard", "soft", "spherical", "mega" or "stateless" */
     int alive;            /* live particles now */
     uint64_t emitted;     /* particles that entered its pool since it was loaded */
@@ -409,7 +409,7 @@ typedef struct fxStats {
 } fxStats;
 typedef struct fxParticleCheck { int alive, capacity, nonFinite; } fxParticleCheck;
 typedef struct fxReactionStats {
-    char name[72];
+    char name[72];        /* "" for a bad index */
     char technique[16];
     int alive;
     uint64_t emitted, dropped;
@@ -517,7 +517,8 @@ typedef struct fxApi {
      * nothing into it. */
     int (*stats2)(const fxPlugin* p, fxStats2* out);
     int (*checkParticles2)(const fxPlugin* p, fxParticleCheck2* out);
-    /* A bad index: FX_ERROR_INDEX_OUT_OF_RANGE, with out's fields 0 (name ""). */
+    /* A bad index: FX_ERROR_INDEX_OUT_OF_RANGE, nothing written (reactionStats, 2.0, cleared its
+     * struct instead). */
     int (*reactionStats2)(const fxPlugin* p, int index, fxReactionStats2* out);
     int (*reactionKey2)(const fxPlugin* p, int keyIndex, fxReactionKeyInfo2* out);
     /* On FX_ERROR_NONE, out's opacity is 0 when there is no smoke this frame. */
