@@ -479,7 +479,9 @@ typedef struct fxApi {
     int (*setParticleShape)(fxPlugin* p, int shape);
     int (*particleShape)(const fxPlugin* p);
     /* Deprecated since API 2.1 (kept for 2.0 hosts): mixed-resolution edges and fade
-     * classification are gone from the renderer; these calls are accepted and have no effect. */
+     * classification are gone from the renderer. The setters check their value as in 2.0 and the
+     * getters return it, with no effect on the picture; fadeClassCounts writes counted 0 and
+     * every count 0. */
     int (*setQuarterResEdges)(fxPlugin* p, int edges);
     int (*quarterResEdges)(const fxPlugin* p);
     int (*setFadeClassification)(fxPlugin* p, int mode);
