@@ -235,10 +235,14 @@ void Game::Update(float dt) {
     if (!std::isfinite(dt) || dt < 0.0f) dt = 0.0f;
     dt = std::min(dt, 10.0f);
     if (options_.watch) specialFX_.pollHotReload(scene_);
-    // --explode-at: the explosion recipe fires once, at the car, in the step that reaches T.
-    const bool explode = options_.explodeAt >= 0.0 && time_ < options_.explodeAt && time_ + dt >= options_.explodeAt;
+    // --explode-at: the explosion recipe fires once, at the car, in the first step that reaches T
+    // (the very first one when T is the start time).
+    const bool explode = options_.explodeAt >= 0.0 && !explodeFired_ && time_ + dt >= options_.explodeAt;
     time_ += dt;
-    if (explode) fireExplosionAtCar();
+    if (explode) {
+        explodeFired_ = true;
+        fireExplosionAtCar();
+    }
     vehicle_.update(sceneData_, options_.stationaryCar ? options_.startTime : time_, options_.stationaryCar);
     animateWheels();
     updateCameras(dt);
@@ -247,7 +251,12 @@ void Game::Update(float dt) {
 
 double Game::RenderFrame() {
     const auto start = std::chrono::steady_clock::now();
-    render_.Dyn(*this);
+    RenderFrameOutputs out;
+    out.frame = captureNext_ ? &lastFrame_ : nullptr;
+    out.sceneDepth = captureDepthNext_ ? &lastSceneDepth_ : nullptr;
+    out.passRuns = &passRuns_;
+    out.passCulls = &passCulls_;
+    if (render_.Dyn(*this, out)) captureNext_ = captureDepthNext_ = false;
     gl::finish();  // the frame's GPU work is in the measured time
     // The GPU's pass timings of this very frame (ready after the finish): a later frame, maybe
     // in another mode (fxbench interleaves them), never gets them.

@@ -127,7 +127,6 @@ public:
     const std::map<std::string, int>& passCulls() const { return passCulls_; }
 
 private:
-    friend class Render;
     bool InitProc(std::string* error);
     void updateCameras(float dt);
     void frameSceneBounds();
@@ -155,6 +154,7 @@ private:
     cubeView chase_{"chase", 1};
     cubeView chase2_{"chase2", 2};  ///< --split: player two's camera, the right half
     double time_ = 0.0;
+    bool explodeFired_ = false;  ///< --explode-at has fired (once per run)
     long long frame_ = 0;
     float cameraHeading_ = 0.0f;
     glm::vec3 framedEye_{0.0f, 2.0f, 8.0f}, framedTarget_{0.0f};  ///< no car: the whole model

@@ -113,8 +113,8 @@ bool checkOptions(const Options& o, std::string* error) {
             return false;
         }
     }
-    // --explode-at T acts in the step whose start is before T and whose end reaches it: the drive
-    // starts at --start, so a T at or before it (T = 0 included) never fires; legacy smoke has no
+    // --explode-at T acts in the first step whose end reaches T; T = --start (0 by default) is the
+    // first step. The drive starts at --start, so a T before it never comes; legacy smoke has no
     // explosion. Whether an on_demand "explosion" is loaded is checked once the reactions are
     // (Game::checkExplodeAt), still before the first frame.
     if (o.explodeAt >= 0.0 && o.fx == FxPath::Legacy) {
@@ -126,9 +126,9 @@ bool checkOptions(const Options& o, std::string* error) {
         std::snprintf(text, sizeof text, "%g", s);
         return std::string(text);
     };
-    if (o.explodeAt >= 0.0 && o.explodeAt <= o.startTime) {
+    if (o.explodeAt >= 0.0 && o.explodeAt < o.startTime) {
         *error = "--explode-at " + seconds(o.explodeAt) + ": the drive starts at --start " + seconds(o.startTime) +
-                 " s, so it would never fire; expected a time after the start";
+                 " s, so it would never fire; expected a time at or after the start";
         return false;
     }
     // With a fixed step the run's last drive time is known: a T past it never comes.

@@ -38,4 +38,11 @@ inline const TechniqueMode& techniqueMode(fx::Technique t) {
     return size_t(t) < kTechniqueModeCount ? kTechniqueModes[size_t(t)] : kTechniqueModes[0];
 }
 
+/// The row after `t`'s, the first after the last: the M key's cycle, in the table's order.
+inline const TechniqueMode& nextTechniqueMode(fx::Technique t) {
+    for (size_t i = 0; i < kTechniqueModeCount; ++i)
+        if (kTechniqueModes[i].technique == t) return kTechniqueModes[(i + 1) % kTechniqueModeCount];
+    return kTechniqueModes[0];
+}
+
 }  // namespace cube

@@ -25,7 +25,7 @@ struct PlatformDesc {
 };
 
 /// Keys the game reacts to in a window (prepass-EQUAL, quarter-res, mode switches...).
-enum class Key { P, Q, M, H, S, B, E, Escape, Count };
+enum class Key { P, Q, M, H, B, E, Escape, Count };
 
 /// Keys a UI needs beyond text (which arrives as Char events). Platform-neutral numbering.
 enum class UiKey { Tab, Left, Right, Up, Down, PageUp, PageDown, Home, End, Delete, Backspace,

@@ -86,7 +86,6 @@ public:
                 case GLFW_KEY_Q: self->pressed_[size_t(Key::Q)] = true; break;
                 case GLFW_KEY_M: self->pressed_[size_t(Key::M)] = true; break;
                 case GLFW_KEY_H: self->pressed_[size_t(Key::H)] = true; break;
-                case GLFW_KEY_S: self->pressed_[size_t(Key::S)] = true; break;
                 case GLFW_KEY_B: self->pressed_[size_t(Key::B)] = true; break;
                 case GLFW_KEY_E: self->pressed_[size_t(Key::E)] = true; break;
                 case GLFW_KEY_ESCAPE: self->pressed_[size_t(Key::Escape)] = true; break;

@@ -16,6 +16,7 @@
 #include "fx/Plugin.h"
 #include "render/SceneRenderer.h"
 #include "rtt/FrameGraph.h"
+#include "view/Buckets.h"
 
 namespace cube {
 
@@ -91,7 +92,7 @@ private:
     CameraMatrices cameraMatrices() const;
     void recordBuckets(cubeScene& scene);
     std::string passName(const char* bucket) const { return name_ + "." + bucket; }
-    int order(int bucketOrder) const { return index_ * 1000 + bucketOrder; }
+    int order(int bucketOrder) const { return index_ * kViewOrderStride + bucketOrder; }
     /// bindForDraw(color) and, for a placed view, its rectangle as the viewport.
     bool bindColor(rtt::PassContext& ctx, rtt::FrameGraphResource color) const;
     bool bindColor(rtt::PassContext& ctx, rtt::FrameGraphResource color, rtt::FrameGraphResource second) const;

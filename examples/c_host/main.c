@@ -267,7 +267,7 @@ int main(int argc, char** argv) {
     }
 
     {
-        fxStats stats;
+        fxStats2 stats = FX_DESC_INIT(fxStats2);
         // fx-adapter begin: setup (the table, the callbacks, a Z-up plugin, its reactions, its GL objects)
         /* Each descriptor is FX_DESC_INIT's C99 form, {.size = sizeof(T)}, with its fields named
          * beside the size: every field not named is zero, its default. */
@@ -297,7 +297,7 @@ int main(int argc, char** argv) {
         drawFrame(fx, plugin, players, &fog);
         after = readFrame();
         while (gl.GetError() != GL_NO_ERROR && glErrors < 100) ++glErrors;
-        fx->stats(plugin, &stats);
+        fx->stats2(plugin, &stats);
 
         // fx-adapter begin: teardown (destroy with the GL context current: it deletes its GL objects)
         fx->destroy(plugin);

@@ -175,8 +175,8 @@ int main(int argc, char** argv) {
     }
 
     // fx-adapter begin: teardown (statistics, then destroy with the GL context still current)
-    fxStats stats = {};
-    if (plugin) fx->stats(plugin, &stats);
+    fxStats2 stats = FX_DESC_INIT(fxStats2);
+    if (plugin) fx->stats2(plugin, &stats);
     std::printf("particles_alive %d api_errors %d\n", stats.particlesAlive, stats.apiErrors);
     if (plugin) fx->destroy(plugin);
     // fx-adapter end

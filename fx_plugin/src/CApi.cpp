@@ -1,6 +1,7 @@
 // The library's C boundary (fx/fx.h): fxApiVersion, fxGetApi and the table behind it. Everything
-// here turns C descriptors and callbacks into the plugin's own C++ types (compiled with the
-// library's standard library, never crossing the boundary) and back.
+// behind the table turns C descriptors and callbacks into the plugin's own C++ types (compiled
+// with the library's standard library, never crossing the boundary) and back; CApiEntries.h says
+// which file holds which entries.
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -11,10 +12,7 @@
 #include <unordered_set>
 #include <vector>
 
-#include "fx/fx.h"
-#include "CApiBridge.h"
-#include "PluginImpl.h"
-#include "../render/ImmediateRenderer.h"
+#include "CApiEntries.h"
 #include "InstallParticleRenderer.h"
 #include "../reactions/ReactionDesc.h"
 #include "../render/PrivateGlLoader.h"
@@ -22,31 +20,12 @@
 
 extern "C" uint32_t fxApiVersion(void) { return FX_API_VERSION; }
 
-struct fxPlugin {
-    fx::UpAxis up;  // the host world's up axis: turned at this boundary (WorldBasis.h)
-    fx::CHostAdapter host;
-    std::unique_ptr<fx::PluginImpl> impl;
-    // The immediate path's frame graph, target pool and depth copy (fxApi::renderView); made on
-    // first use, freed (with the context current) when the plugin is destroyed.
-    std::unique_ptr<fx::ImmediateRenderer> immediate;
-    // The schema as C structs; its strings point into `schema`, both live as long as the plugin.
-    std::vector<fx::ReactionKeyInfo> schema;
-    std::vector<std::vector<const char*>> schemaChoices;
-
-    fxPlugin(const fxHostCallbacks& callbacks, fx::UpAxis upAxis) : up(upAxis), host(callbacks, upAxis) {}
-};
-
 namespace fx {
-namespace {
-
-fx::PluginImpl& impl(fxPlugin* p) { return *p->impl; }
-const fx::PluginImpl& impl(const fxPlugin* p) { return *p->impl; }
+namespace capi {
 
 ErrorCode refuse(const fxPlugin* p, ErrorCode code, const char* function, const std::string& what) {
     return p->impl->apiErrors().refuse(code, function, what);
 }
-
-int code(ErrorCode c) { return static_cast<int>(c); }
 
 // ---- live handles -------------------------------------------------------------------------------
 // Every plugin create returned and destroy has not yet freed. A call with any other pointer is
@@ -61,8 +40,6 @@ std::unordered_set<const fxPlugin*>& liveSet() {
     return *live;
 }
 
-/// Whether `p` may be used by `function`. Null, destroyed and foreign handles are refused on
-/// stderr (no host can be reached through them) and counted in refusalsWithoutHost().
 bool usable(const fxPlugin* p, const char* function) {
     if (!p) {
         refuseWithoutHost(ErrorCode::NullArgument, function, "plugin is null; expected a handle from create");
@@ -79,19 +56,7 @@ bool usable(const fxPlugin* p, const char* function) {
     return false;
 }
 
-/// What a refused handle returns from a function that returns an error code.
-int handleError(const fxPlugin* p) { return p ? FX_ERROR_INVALID_HANDLE : FX_ERROR_NULL_ARGUMENT; }
-
 bool finite3(const float* v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
-
-/// The sizes a descriptor of API 2.x may have: 2.0's (the first); later minors add theirs here.
-bool knownSize(uint32_t size, size_t current) { return size == current; }
-
-// API 2.0's fxPluginDesc ended with seed and its fxViewDesc with depthRangeFar; 2.1 appended
-// upAxis and the viewport fields. A 2.0 host's descriptor is read up to its size, the rest as 0.
-constexpr size_t kPluginDescSize20 = offsetof(fxPluginDesc, upAxis);
-constexpr size_t kViewDescSize20 = offsetof(fxViewDesc, viewportX);
-bool knownSize(uint32_t size, size_t current, size_t size20) { return size == current || size == size20; }
 
 std::string sizeProblem(const char* type, uint32_t size, size_t current) {
     return std::string(type) + "::size = " + std::to_string(size) + "; expected " + std::to_string(current) +
@@ -102,17 +67,6 @@ std::string sizeProblem(const char* type, uint32_t size, size_t current, size_t 
     return sizeProblem(type, size, current) + " or " + std::to_string(size20) + " (API 2.0)";
 }
 
-/// A descriptor of a known size (knownSize) as this library's struct: the fields past a smaller
-/// (older) size read as 0, their stated default.
-template <class Desc>
-Desc fullDesc(const Desc& in) {
-    Desc out;
-    std::memset(&out, 0, sizeof out);
-    std::memcpy(&out, &in, in.size < sizeof out ? in.size : sizeof out);
-    return out;
-}
-
-/// Copies `s` snprintf-style; returns its length.
 size_t copyOut(const std::string& s, char* buffer, size_t capacity) {
     if (buffer && capacity > 0) {
         const size_t n = s.size() < capacity - 1 ? s.size() : capacity - 1;
@@ -129,6 +83,12 @@ void report(const Diagnostics& diags, const fxDiagnosticSink* out) {
         out->report(out->user, &c);
     }
 }
+
+namespace {
+
+// API 2.0's fxPluginDesc ended with seed; 2.1 appended upAxis. A 2.0 host's descriptor is read up
+// to its size, the rest as 0.
+constexpr size_t kPluginDescSize20 = offsetof(fxPluginDesc, upAxis);
 
 // ---- creation -----------------------------------------------------------------------------------
 
@@ -214,14 +174,6 @@ void destroy(fxPlugin* p) {
 
 // ---- reactions -----------------------------------------------------------------------------------
 
-template <typename Call>
-fxBool withDiagnostics(const fxDiagnosticSink* out, Call call) {
-    Diagnostics diags;
-    const bool ok = call(out ? &diags : nullptr);
-    report(diags, out);
-    return ok ? 1 : 0;
-}
-
 fxBool loadReactions(fxPlugin* p, const char* path, const fxDiagnosticSink* out) {
     if (!usable(p, "loadReactions")) return 0;
     if (!path) {
@@ -286,28 +238,53 @@ int reactionParticlesAlive(const fxPlugin* p, int index) {
     }
     return impl(p).reactionParticlesAlive(index);
 }
+// The ...2 entries fill this library's sized struct and copy the host's size of it; the 2.0
+// entries copy the same values into the 2.0 layout, whole, as 2.0 did.
+fxReactionStats2 reactionStatsOf(const fxPlugin* p, int index) {
+    fxReactionStats2 c;
+    std::memset(&c, 0, sizeof c);
+    c.size = sizeof c;
+    const ReactionStats s = impl(p).reactionStats(index);
+    copyOut(s.name, c.name, sizeof c.name);
+    copyOut(s.technique, c.technique, sizeof c.technique);
+    c.alive = s.alive;
+    c.emitted = s.emitted;
+    c.dropped = s.dropped;
+    return c;
+}
 int reactionStats(const fxPlugin* p, int index, fxReactionStats* out) {
     if (!usable(p, "reactionStats")) return handleError(p);
     if (!out) return code(refuse(p, ErrorCode::NullArgument, "reactionStats", "out is null"));
+    const fxReactionStats2 c = reactionStatsOf(p, index);
     std::memset(out, 0, sizeof *out);
-    const ReactionStats s = impl(p).reactionStats(index);
-    copyOut(s.name, out->name, sizeof out->name);
-    copyOut(s.technique, out->technique, sizeof out->technique);
-    out->alive = s.alive;
-    out->emitted = s.emitted;
-    out->dropped = s.dropped;
-    return s.name.empty() ? FX_ERROR_INDEX_OUT_OF_RANGE : FX_ERROR_NONE;
+    std::memcpy(out->name, c.name, sizeof out->name);
+    std::memcpy(out->technique, c.technique, sizeof out->technique);
+    out->alive = c.alive;
+    out->emitted = c.emitted;
+    out->dropped = c.dropped;
+    return c.name[0] == '\0' ? FX_ERROR_INDEX_OUT_OF_RANGE : FX_ERROR_NONE;
 }
+int reactionStats2(const fxPlugin* p, int index, fxReactionStats2* out) {
+    if (!usable(p, "reactionStats2")) return handleError(p);
+    int error = FX_ERROR_NONE;
+    if (!outUsable(p, out, "fxReactionStats2", "reactionStats2", &error)) return error;
+    const fxReactionStats2 c = reactionStatsOf(p, index);
+    if (c.name[0] == '\0') return FX_ERROR_INDEX_OUT_OF_RANGE;  // refused: nothing written
+    writeOut(out, c, out->size);
+    return FX_ERROR_NONE;
+}
+
 int reactionKeyCount(const fxPlugin* p) { return usable(p, "reactionKeyCount") ? int(p->schema.size()) : 0; }
-int reactionKey(const fxPlugin* p, int keyIndex, fxReactionKeyInfo* out) {
-    if (!usable(p, "reactionKey")) return handleError(p);
-    if (!out) return code(refuse(p, ErrorCode::NullArgument, "reactionKey", "out is null"));
+/// The key at `keyIndex` in *out; IndexOutOfRange (refused under `function`) outside the schema.
+int reactionKeyOf(const fxPlugin* p, int keyIndex, const char* function, fxReactionKeyInfo2* out) {
     if (keyIndex < 0 || size_t(keyIndex) >= p->schema.size()) {
-        return code(refuse(p, ErrorCode::IndexOutOfRange, "reactionKey",
+        return code(refuse(p, ErrorCode::IndexOutOfRange, function,
                            "key index " + std::to_string(keyIndex) + " of " + std::to_string(p->schema.size())));
     }
     const ReactionKeyInfo& k = p->schema[size_t(keyIndex)];
     const std::vector<const char*>& choices = p->schemaChoices[size_t(keyIndex)];
+    std::memset(out, 0, sizeof *out);
+    out->size = sizeof *out;
     out->key = k.key.c_str();
     out->kind = static_cast<int>(k.kind);
     out->min = k.min;
@@ -317,6 +294,24 @@ int reactionKey(const fxPlugin* p, int keyIndex, fxReactionKeyInfo* out) {
     out->unit = k.unit.c_str();
     out->help = k.help.c_str();
     return FX_ERROR_NONE;
+}
+int reactionKey(const fxPlugin* p, int keyIndex, fxReactionKeyInfo* out) {
+    if (!usable(p, "reactionKey")) return handleError(p);
+    if (!out) return code(refuse(p, ErrorCode::NullArgument, "reactionKey", "out is null"));
+    fxReactionKeyInfo2 k;
+    const int error = reactionKeyOf(p, keyIndex, "reactionKey", &k);
+    if (error != FX_ERROR_NONE) return error;
+    *out = fxReactionKeyInfo{k.key, k.kind, k.min, k.max, k.choices, k.choiceCount, k.unit, k.help};
+    return FX_ERROR_NONE;
+}
+int reactionKey2(const fxPlugin* p, int keyIndex, fxReactionKeyInfo2* out) {
+    if (!usable(p, "reactionKey2")) return handleError(p);
+    int error = FX_ERROR_NONE;
+    if (!outUsable(p, out, "fxReactionKeyInfo2", "reactionKey2", &error)) return error;
+    fxReactionKeyInfo2 k;
+    error = reactionKeyOf(p, keyIndex, "reactionKey2", &k);
+    if (error == FX_ERROR_NONE) writeOut(out, k, out->size);
+    return error;
 }
 
 // ---- simulation and options -------------------------------------------------------------------
@@ -341,269 +336,48 @@ int fireReaction(fxPlugin* p, const char* name, const float point[3]) {
     }
     return code(impl(p).fireReaction(name, toPluginWorld(p->up, glm::vec3(point[0], point[1], point[2]))));
 }
-int setRenderOptions(fxPlugin* p, const fxRenderOptions* o) {
-    if (!usable(p, "setRenderOptions")) return handleError(p);
-    if (!o) return code(refuse(p, ErrorCode::NullArgument, "setRenderOptions", "options is null"));
-    if (!knownSize(o->size, sizeof *o)) {
-        return code(refuse(p, ErrorCode::BadDescriptor, "setRenderOptions",
-                           sizeProblem("fxRenderOptions", o->size, sizeof *o)));
-    }
-    if (o->techniqueOverride < 0 || o->techniqueOverride > FX_TECHNIQUE_MEGA) {
-        return code(refuse(p, ErrorCode::InvalidValue, "setRenderOptions",
-                           "techniqueOverride = " + std::to_string(o->techniqueOverride) +
-                               "; expected FromReaction, Hard, Soft, Spherical or Mega"));
-    }
-    RenderOptions r;
-    r.techniqueOverride = static_cast<Technique>(o->techniqueOverride);
-    r.quarterRes = o->quarterRes != 0;
-    r.bilinearUpsample = o->bilinearUpsample != 0;
-    return code(impl(p).setRenderOptions(r));
-}
-void getRenderOptions(const fxPlugin* p, fxRenderOptions* out) {
-    if (!usable(p, "getRenderOptions")) return;
-    if (!out) {
-        refuse(p, ErrorCode::NullArgument, "getRenderOptions", "out is null");
-        return;
-    }
-    const RenderOptions r = impl(p).renderOptions();
-    const uint32_t size = out->size;
-    std::memset(out, 0, sizeof *out);
-    out->size = size;
-    out->techniqueOverride = static_cast<int>(r.techniqueOverride);
-    out->quarterRes = r.quarterRes ? 1 : 0;
-    out->bilinearUpsample = r.bilinearUpsample ? 1 : 0;
-}
 
-// An int from the C side into one of the API's uint8_t enums: a value outside 0..255 would wrap
-// into a valid one, so it is clamped to 255, which every setter refuses.
-template <class Enum>
-Enum enumFrom(int v) {
-    return static_cast<Enum>(v < 0 || v > 255 ? 255 : v);
+fxStats2 statsOf(const fxPlugin* p) {
+    const Stats s = impl(p).stats();
+    fxStats2 c;
+    std::memset(&c, 0, sizeof c);
+    c.size = sizeof c;
+    c.reactions = s.reactions;
+    c.particlesAlive = s.particlesAlive;
+    c.particleCapacity = s.particleCapacity;
+    c.particlesDrawn = s.particlesDrawn;
+    c.reloads = s.reloads;
+    c.reloadErrors = s.reloadErrors;
+    c.apiErrors = s.apiErrors;
+    return c;
 }
-int setParticleShape(fxPlugin* p, int s) {
-    if (!usable(p, "setParticleShape")) return handleError(p);
-    return code(impl(p).setParticleShape(enumFrom<ParticleShape>(s)));
-}
-int particleShape(const fxPlugin* p) { return usable(p, "particleShape") ? int(impl(p).particleShape()) : 0; }
-int setQuarterResEdges(fxPlugin* p, int m) {
-    if (!usable(p, "setQuarterResEdges")) return handleError(p);
-    return code(impl(p).setQuarterResEdges(enumFrom<QuarterResEdges>(m)));
-}
-int quarterResEdges(const fxPlugin* p) { return usable(p, "quarterResEdges") ? int(impl(p).quarterResEdges()) : 0; }
-int setFadeClassification(fxPlugin* p, int m) {
-    if (!usable(p, "setFadeClassification")) return handleError(p);
-    return code(impl(p).setFadeClassification(enumFrom<FadeClassification>(m)));
-}
-int fadeClassification(const fxPlugin* p) {
-    return usable(p, "fadeClassification") ? int(impl(p).fadeClassification()) : 0;
-}
-int setFadeClassCounting(fxPlugin* p, fxBool on) {
-    if (!usable(p, "setFadeClassCounting")) return handleError(p);
-    return code(impl(p).setFadeClassCounting(on != 0));
-}
-void fadeClassCounts(const fxPlugin* p, fxFadeClassCounts* out) {
-    if (!usable(p, "fadeClassCounts")) return;
-    if (!out) {
-        refuse(p, ErrorCode::NullArgument, "fadeClassCounts", "out is null");
-        return;
-    }
-    const FadeClassCounts c = impl(p).fadeClassCounts();
-    *out = fxFadeClassCounts{c.fadeNeeded, c.inFront, c.hidden, c.counted ? 1 : 0};
-}
-int setSceneLight(fxPlugin* p, const fxSceneLight* l) {
-    if (!usable(p, "setSceneLight")) return handleError(p);
-    if (!l) return code(refuse(p, ErrorCode::NullArgument, "setSceneLight", "light is null"));
-    if (!knownSize(l->size, sizeof *l)) {
-        return code(refuse(p, ErrorCode::BadDescriptor, "setSceneLight", sizeProblem("fxSceneLight", l->size, sizeof *l)));
-    }
-    SceneLight s;
-    s.toSun = toPluginWorld(p->up, glm::vec3(l->toSun[0], l->toSun[1], l->toSun[2]));
-    s.sunColor = glm::vec3(l->sunColor[0], l->sunColor[1], l->sunColor[2]);
-    s.ambient = glm::vec3(l->ambient[0], l->ambient[1], l->ambient[2]);
-    return code(impl(p).setSceneLight(s));
-}
-void clearSceneLight(fxPlugin* p) {
-    if (usable(p, "clearSceneLight")) impl(p).clearSceneLight();
-}
-
-// ---- GL -------------------------------------------------------------------------------------------
-
-// The immediate path's renderer, made at its first use (prepareGl or renderView).
-ImmediateRenderer& immediate(fxPlugin* p) {
-    if (!p->immediate) {
-        p->immediate = std::make_unique<ImmediateRenderer>(&p->host, p->impl->shaderDir());
-        p->immediate->setApiErrors(&p->impl->apiErrors());
-    }
-    return *p->immediate;
-}
-
-
-/// A (GL) call's first check after its arguments: the table is loaded (through this plugin's host
-/// when it is not yet) and a context is current; else NoGlContext, refused before any GL call so
-/// nothing is marked tried or failed (a later call with a context goes ahead).
-ErrorCode glReady(fxPlugin* p, const char* function, std::string* why = nullptr) {
-    std::string error;
-    if (privateGlLoaded() || loadPrivateGl(p->host, &error)) {
-        if (privateGlContextCurrent()) return ErrorCode::None;
-        error = "no GL context is current on the calling thread (glGetString(GL_VERSION) gave null)";
-    }
-    if (why) *why = error;
-    return refuse(p, ErrorCode::NoGlContext, function, error);
-}
-
-fxBool prepareGl(fxPlugin* p, const fxDiagnosticSink* out) {
-    if (!usable(p, "prepareGl")) return 0;
-    std::string why;
-    if (glReady(p, "prepareGl", &why) != ErrorCode::None) {
-        // The sink hears it too: a host that reads only diagnostics still learns why.
-        report(Diagnostics{Diagnostic{ErrorCode::NoGlContext, "", 0, 0, "", why}}, out);
-        return 0;
-    }
-    return withDiagnostics(out, [&](Diagnostics* d) {
-        const bool ok = impl(p).prepareGl(d);
-        // The immediate path's own program too: the first renderView then compiles nothing.
-        return immediate(p).prepare(d) && ok;
-    });
-}
-fxBool pollShaderReload(fxPlugin* p, const fxDiagnosticSink* out) {
-    if (!usable(p, "pollShaderReload")) return 0;
-    if (glReady(p, "pollShaderReload") != ErrorCode::None) return 0;
-    return withDiagnostics(out, [&](Diagnostics* d) { return impl(p).pollShaderReload(d); });
-}
-
-/// Checks a view descriptor and turns it into the plugin's right-handed, Y-up ViewInfo; None or
-/// the refusal (logged under `function`). `placed`: the descriptor's viewport fields place the
-/// view (declarePasses); renderView takes the host's GL viewport instead and does not read them.
-ErrorCode viewFrom(const fxPlugin* p, const fxViewDesc* v, const char* function, ViewInfo* out, bool placed = true) {
-    if (!v) return refuse(p, ErrorCode::NullArgument, function, "view is null; expected an fxViewDesc");
-    if (!knownSize(v->size, sizeof *v, kViewDescSize20)) {
-        return refuse(p, ErrorCode::BadDescriptor, function, sizeProblem("fxViewDesc", v->size, sizeof *v, kViewDescSize20));
-    }
-    const fxViewDesc full = fullDesc(*v);
-    v = &full;
-    if (v->handedness != FX_RIGHT_HANDED && v->handedness != FX_LEFT_HANDED) {
-        return refuse(p, ErrorCode::InvalidView, function,
-                      "handedness " + std::to_string(v->handedness) + "; expected FX_RIGHT_HANDED or FX_LEFT_HANDED");
-    }
-    if (v->depthOrder != FX_DEPTH_STANDARD && v->depthOrder != FX_DEPTH_REVERSED_Z) {
-        return refuse(p, ErrorCode::InvalidView, function,
-                      "depthOrder " + std::to_string(v->depthOrder) + "; expected FX_DEPTH_STANDARD or FX_DEPTH_REVERSED_Z");
-    }
-    if (v->width <= 0 || v->height <= 0 || v->width > FX_MAX_VIEW_SIZE || v->height > FX_MAX_VIEW_SIZE) {
-        return refuse(p, ErrorCode::InvalidView, function,
-                      "size " + std::to_string(v->width) + "x" + std::to_string(v->height) + "; expected 1 .. " +
-                          std::to_string(FX_MAX_VIEW_SIZE) + " (FX_MAX_VIEW_SIZE) each");
-    }
-    if (placed && (v->viewportX < 0 || v->viewportY < 0 || v->targetWidth < 0 || v->targetHeight < 0 ||
-        (v->targetWidth > 0 && int64_t(v->viewportX) + v->width > v->targetWidth) ||
-        (v->targetHeight > 0 && int64_t(v->viewportY) + v->height > v->targetHeight) ||
-        ((v->viewportX > 0 || v->viewportY > 0) && (v->targetWidth == 0 || v->targetHeight == 0)))) {
-        return refuse(p, ErrorCode::InvalidView, function,
-                      "viewport (" + std::to_string(v->viewportX) + ", " + std::to_string(v->viewportY) + ", " +
-                          std::to_string(v->width) + ", " + std::to_string(v->height) + ") in a target of " +
-                          std::to_string(v->targetWidth) + "x" + std::to_string(v->targetHeight) +
-                          "; expected it inside the target (a view away from (0, 0) gives the target's size)");
-    }
-    bool finite = finite3(v->eye) && std::isfinite(v->nearPlane) && std::isfinite(v->farPlane) &&
-                  std::isfinite(v->depthRangeNear) && std::isfinite(v->depthRangeFar);
-    for (int i = 0; i < 16; ++i) finite = finite && std::isfinite(v->view[i]) && std::isfinite(v->proj[i]);
-    if (!finite) {
-        return refuse(p, ErrorCode::InvalidView, function,
-                      "a NaN or infinite value in view, proj, eye, the planes or the depth range; expected finite values");
-    }
-    if (!(v->nearPlane > 0.0f) || !(v->farPlane > v->nearPlane)) {
-        return refuse(p, ErrorCode::InvalidView, function,
-                      "near " + std::to_string(v->nearPlane) + ", far " + std::to_string(v->farPlane) +
-                          "; expected 0 < near < far");
-    }
-    *out = rightHandedView(*v, p->up);
-    if (!placed) {
-        out->x = out->y = 0;
-        out->targetWidth = out->targetHeight = 0;
-    }
-    return ErrorCode::None;
-}
-
-/// The view and the frame builder of a declare call, checked (the refusal logged under `function`).
-ErrorCode viewAndFrame(const fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* f, const char* function,
-                       ViewInfo* view) {
-    const ErrorCode bad = viewFrom(p, v, function, view);
-    if (bad != ErrorCode::None) return bad;
-    const std::string frameBad = frameBuilderProblem(f);
-    if (frameBad.empty()) return ErrorCode::None;
-    return refuse(p, f && knownSize(f->size, sizeof *f, offsetof(fxFrameBuilder, sceneZBuffer)) ? ErrorCode::NullArgument
-                                                                                                : ErrorCode::BadDescriptor,
-                  function, frameBad);
-}
-
-int declarePasses(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* f) {
-    if (!usable(p, "declarePasses")) return handleError(p);
-    ViewInfo view;
-    const ErrorCode bad = viewAndFrame(p, v, f, "declarePasses", &view);
-    if (bad != ErrorCode::None) return code(bad);
-    const ErrorCode noGl = glReady(p, "declarePasses");
-    if (noGl != ErrorCode::None) return code(noGl);
-    CFrameBuilder frame(*f, p->impl->apiErrors());
-    return code(impl(p).declarePasses(view, frame));
-}
-
-int declareShadowPasses(fxPlugin* p, const fxViewDesc* v, const fxFrameBuilder* f, fxSmokeShadow* out) {
-    if (!usable(p, "declareShadowPasses")) return handleError(p);
-    if (!out) {
-        return code(refuse(p, ErrorCode::NullArgument, "declareShadowPasses",
-                           "out is null; expected an fxSmokeShadow for the opacity map"));
-    }
-    std::memset(out, 0, sizeof *out);
-    ViewInfo view;
-    const ErrorCode bad = viewAndFrame(p, v, f, "declareShadowPasses", &view);
-    if (bad != ErrorCode::None) return code(bad);
-    const ErrorCode noGl = glReady(p, "declareShadowPasses");
-    if (noGl != ErrorCode::None) return code(noGl);
-    CFrameBuilder frame(*f, p->impl->apiErrors());
-    const SmokeShadow s = impl(p).declareShadowPasses(view, frame);
-    if (s.valid()) {
-        out->opacity = s.opacity.id;
-        const glm::mat4 hostWorldToShadow = fromHostWorld(p->up, s.worldToShadow);
-        for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 4; ++r) out->worldToShadow[c * 4 + r] = hostWorldToShadow[c][r];
-    }
-    return FX_ERROR_NONE;
-}
-
-int renderView(fxPlugin* p, const fxViewDesc* v) {
-    if (!usable(p, "renderView")) return handleError(p);
-    ViewInfo view;
-    const ErrorCode bad = viewFrom(p, v, "renderView", &view, false);
-    if (bad != ErrorCode::None) return code(bad);
-    ImmediateView iv;
-    iv.view = view;
-    switch (v->depthSource) {
-    case FX_DEPTH_FROM_FRAMEBUFFER: iv.depthSource = ImmediateView::DepthSource::BoundFramebuffer; break;
-    case FX_DEPTH_FROM_TEXTURE: iv.depthSource = ImmediateView::DepthSource::DepthTexture; break;
-    case FX_DEPTH_FROM_LINEAR: iv.depthSource = ImmediateView::DepthSource::LinearR32F; break;
-    case FX_DEPTH_FROM_NOTHING: iv.depthSource = ImmediateView::DepthSource::None; break;
-    default:
-        return code(refuse(p, ErrorCode::InvalidValue, "renderView",
-                           "depthSource " + std::to_string(v->depthSource) + "; expected an FX_DEPTH_FROM_* value"));
-    }
-    iv.depthTexture = v->depthTexture;
-    iv.mapping.clipZeroToOne = v->clipDepthZeroToOne != 0;
-    const bool defaultRange = v->depthRangeNear == 0.0f && v->depthRangeFar == 0.0f;
-    iv.mapping.rangeNear = defaultRange ? 0.0f : v->depthRangeNear;
-    iv.mapping.rangeFar = defaultRange ? 1.0f : v->depthRangeFar;
-    const ErrorCode noGl = glReady(p, "renderView");
-    if (noGl != ErrorCode::None) return code(noGl);
-    return code(immediate(p).render(*p->impl, iv));
-}
-
 void stats(const fxPlugin* p, fxStats* out) {
     if (!usable(p, "stats")) return;
     if (!out) {
         refuse(p, ErrorCode::NullArgument, "stats", "out is null");
         return;
     }
-    const Stats s = impl(p).stats();
-    *out = fxStats{s.reactions, s.particlesAlive, s.particleCapacity, s.particlesDrawn, s.reloads, s.reloadErrors, s.apiErrors};
+    const fxStats2 c = statsOf(p);
+    *out = fxStats{c.reactions, c.particlesAlive, c.particleCapacity, c.particlesDrawn, c.reloads, c.reloadErrors,
+                   c.apiErrors};
+}
+int stats2(const fxPlugin* p, fxStats2* out) {
+    if (!usable(p, "stats2")) return handleError(p);
+    int error = FX_ERROR_NONE;
+    if (!outUsable(p, out, "fxStats2", "stats2", &error)) return error;
+    writeOut(out, statsOf(p), out->size);
+    return FX_ERROR_NONE;
+}
+
+fxParticleCheck2 checkOf(const fxPlugin* p) {
+    const ParticleCheck k = impl(p).checkParticles();
+    fxParticleCheck2 c;
+    std::memset(&c, 0, sizeof c);
+    c.size = sizeof c;
+    c.alive = k.alive;
+    c.capacity = k.capacity;
+    c.nonFinite = k.nonFinite;
+    return c;
 }
 void checkParticles(const fxPlugin* p, fxParticleCheck* out) {
     if (!usable(p, "checkParticles")) return;
@@ -611,8 +385,15 @@ void checkParticles(const fxPlugin* p, fxParticleCheck* out) {
         refuse(p, ErrorCode::NullArgument, "checkParticles", "out is null");
         return;
     }
-    const ParticleCheck c = impl(p).checkParticles();
+    const fxParticleCheck2 c = checkOf(p);
     *out = fxParticleCheck{c.alive, c.capacity, c.nonFinite};
+}
+int checkParticles2(const fxPlugin* p, fxParticleCheck2* out) {
+    if (!usable(p, "checkParticles2")) return handleError(p);
+    int error = FX_ERROR_NONE;
+    if (!outUsable(p, out, "fxParticleCheck2", "checkParticles2", &error)) return error;
+    writeOut(out, checkOf(p), out->size);
+    return FX_ERROR_NONE;
 }
 
 const fxApi kApi = {
@@ -627,9 +408,11 @@ const fxApi kApi = {
     setSceneLight, clearSceneLight,
     prepareGl, pollShaderReload, declarePasses, declareShadowPasses, renderView,
     stats, checkParticles,
+    stats2, checkParticles2, reactionStats2, reactionKey2, declareShadowPasses2,
 };
 
 }  // namespace
+}  // namespace capi
 
 PluginImpl& implOf(Plugin& plugin) {
     if (auto* c = dynamic_cast<detail::CApiPlugin*>(&plugin)) return *c->handle()->impl;
@@ -641,5 +424,5 @@ const PluginImpl& implOf(const Plugin& plugin) { return implOf(const_cast<Plugin
 
 extern "C" const fxApi* fxGetApi(uint32_t version) {
     if ((version >> 16) != FX_API_VERSION_MAJOR || (version & 0xFFFFu) > FX_API_VERSION_MINOR) return nullptr;
-    return &fx::kApi;
+    return &fx::capi::kApi;
 }

@@ -224,4 +224,33 @@ TEST(Game, TheExplosionRecipeFiresAtTheCarOnDemand) {
     game.Update(1.0f / 60.0f);
     EXPECT_GT(explosionEmitted().second, 0u);
 }
+
+// --explode-at at the start time (0 by default) means the first frame: the recipe fires in the
+// first step, once.
+TEST(Game, ExplodeAtTheStartTimeFiresInTheFirstStep) {
+    Options o = cubetest::smallOptions(96, 80);
+    o.mirror = false;
+    o.explodeAt = o.startTime;
+    Game game;
+    std::string err;
+    ASSERT_TRUE(game.Init(o, &err)) << err;
+    ASSERT_TRUE(game.checkExplodeAt(&err)) << err;
+    fx::Plugin* plugin = game.specialFX().plugin();
+    ASSERT_NE(plugin, nullptr);
+    auto explosionEmitted = [&] {
+        uint64_t n = 0;
+        for (int i = 0; i < plugin->reactionCount(); ++i) {
+            const fx::ReactionStats s = plugin->reactionStats(i);
+            if (s.name.rfind("explosion.", 0) == 0) n += s.emitted;
+        }
+        return n;
+    };
+    EXPECT_EQ(explosionEmitted(), 0u);
+    game.Update(1.0f / 60.0f);
+    const uint64_t first = explosionEmitted();
+    EXPECT_GT(first, 0u);
+    // Once: the steps after it emit only what the first burst's layers still let out, no second burst.
+    for (int i = 0; i < 3; ++i) game.Update(1.0f / 60.0f);
+    EXPECT_LT(explosionEmitted(), 2 * first);
+}
 }  // namespace game_test

@@ -3,6 +3,8 @@
 #   - tests/era/C89Host.c as C89 (-std=c89 -pedantic-errors -Wall -Wextra -Werror, less
 #     -Wmissing-field-initializers, which FX_DESC_INIT's C89 form trips: fx/fx.h says why) with
 #     gcc and clang, linked against the libcubefx.so of this build and run (it renders smoke);
+#   - tests/era/Api20Host.c, a host of API 2.0 built against the frozen 2.0 header, as C99 with
+#     gcc and clang, run against the same library;
 #   - tests/era/CxxLayerHost.cpp, a host of the C++ layer (fx/Plugin.h, fx/detail/*.h), compiled
 #     as C++11, C++14 and C++17 with -pedantic-errors -Wall -Wextra -Werror by g++ and clang++
 #     (-fsyntax-only: the templates the host uses are still instantiated and checked).
@@ -38,6 +40,17 @@ for cc in gcc clang; do
     fi
   else
     cat "$work/c89_$cc.log"; log "FAIL: $cc -std=c89 -pedantic-errors"; failed=1
+  fi
+  # The API 2.0 host, against the frozen 2.0 header beside it (not fx_plugin/include).
+  if "$cc" -std=c99 -pedantic-errors -Wall -Wextra -Werror "$src/tests/era/Api20Host.c" -o "$work/api20_host_$cc" \
+       "$lib" 2>"$work/api20_$cc.log"; then
+    if LD_LIBRARY_PATH="$libdir${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" "$work/api20_host_$cc" "$reactions" 2>/dev/null; then
+      log "API 2.0 host, $cc: built and passed"
+    else
+      log "FAIL: API 2.0 host built by $cc failed its checks"; failed=1
+    fi
+  else
+    cat "$work/api20_$cc.log"; log "FAIL: $cc -std=c99, API 2.0 host"; failed=1
   fi
 done
 

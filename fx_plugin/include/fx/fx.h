@@ -15,9 +15,24 @@
  *    FX_DESC_INIT does this) and is read up to that size; a field the host leaves 0 takes the
  *    default its comment states. A size the library does not know (0, smaller than the 2.0
  *    struct, or larger than its own) is refused with FX_ERROR_BAD_DESCRIPTOR.
+ *  - Every struct the plugin writes for the host begins with `size` too, set by the host
+ *    (FX_DESC_INIT), and the plugin writes no byte at or past out->size: the entries that take
+ *    them (since API 2.1: stats2, checkParticles2, reactionStats2, reactionKey2,
+ *    declareShadowPasses2; getRenderOptions) fill the fields of the host's size and leave the
+ *    rest of a newer library's struct out, so a struct can grow in a MINOR release. Those entries
+ *    refuse a size they do not know, as above, and write nothing. getRenderOptions alone, a 2.0
+ *    entry, fills the 2.0 fields for any size it does not know (what 2.0 did, whatever the size).
+ *  - Deprecated: the output structs of API 2.0 (fxStats, fxParticleCheck, fxReactionStats,
+ *    fxReactionKeyInfo, fxSmokeShadow, fxFadeClassCounts) carry no size, so they never grow; the
+ *    2.0 entries that write them stay in the table and write exactly that layout, so a host built
+ *    against the 2.0 header runs unchanged. A new host uses the entries named ...2 above. The
+ *    option setters of 2.0 stay too: setParticleShape/particleShape are
+ *    fxRenderOptions.particleShape now; the quarter-res edge and fade classification entries are
+ *    accepted and have no effect since 2.1. Each deprecated entry is marked where the table lists
+ *    it.
  *  - A refused call changes nothing, returns a named FX_ERROR_* code and is logged through the
  *    host's log callback ("fx: error[Code] function: what was expected"), at most a few times
- *    per (function, code), then counted in fxStats.apiErrors. Where no host can be reached
+ *    per (function, code), then counted in fxStats2.apiErrors. Where no host can be reached
  *    safely (create refusing fxPluginDesc's size or version, fxHostCallbacks' size or a null log;
  *    a null or dead handle) the same line goes to stderr instead, with the same limit.
  *  - Every number is an input with a stated range (the comment at its field or function; the
@@ -248,11 +263,17 @@ typedef struct fxViewDesc {
     float sliceMinDistance, sliceMaxDistance;
 } fxViewDesc;
 
+/* Written by setRenderOptions, read back by getRenderOptions. Defaults (every field 0): each
+ * reaction's own technique at full resolution, trimmed particles. */
 typedef struct fxRenderOptions {
     uint32_t size;
     int techniqueOverride;  /* FX_TECHNIQUE_* (0 .. FX_TECHNIQUE_MEGA), 0 = each reaction's own */
-    fxBool quarterRes;
-    fxBool bilinearUpsample;
+    fxBool quarterRes;      /* 0 = full resolution; else particles into a half x half target */
+    fxBool bilinearUpsample; /* quarterRes's composite with plain bilinear (comparison only); 0 = depth-aware */
+    /* API 2.1 (a 2.0 host's smaller size leaves the shape as it is: setRenderOptions sets the
+     * fields above only). How hard and soft billboards are rasterised (fx::ParticleShape):
+     * FX_SHAPE_TRIMMED (0) a tight polygon per atlas frame, FX_SHAPE_QUAD the full quad. */
+    int particleShape;
 } fxRenderOptions;
 
 typedef struct fxSceneLight {
@@ -334,28 +355,38 @@ typedef struct fxDiagnosticSink {
     void (*report)(void* user, const fxDiagnostic* diagnostic);
 } fxDiagnosticSink;
 
-typedef struct fxStats {
-    int reactions, particlesAlive, particleCapacity, particlesDrawn, reloads, reloadErrors, apiErrors;
-} fxStats;
+/* The structs below are written by the plugin. Those with a `size` (API 2.1) are filled up to the
+ * size the host set (the contract above); a refused call writes nothing into them. */
 
-typedef struct fxParticleCheck { int alive, capacity, nonFinite; } fxParticleCheck;
+typedef struct fxStats2 {
+    uint32_t size;
+    int reactions;
+    int particlesAlive;
+    int particleCapacity; /* pool slots over every reaction */
+    int particlesDrawn;   /* in the last declared view, after culling */
+    int reloads;          /* successful hot reloads */
+    int reloadErrors;     /* refused hot reloads (the old set kept) */
+    int apiErrors;        /* calls refused with an FX_ERROR_* code since create */
+} fxStats2;
 
-typedef struct fxReactionStats {
-    char name[72];        /* the reaction's name ("" for a bad index) */
+typedef struct fxParticleCheck2 {
+    uint32_t size;
+    int alive, capacity;
+    int nonFinite;        /* NaN or infinite values in live particles' state; 0 when healthy */
+} fxParticleCheck2;
+
+typedef struct fxReactionStats2 {
+    uint32_t size;
+    char name[72];        /* the reaction's name */
     char technique[16];   /* "hard", "soft", "spherical", "mega" or "stateless" */
-    int alive;
-    uint64_t emitted, dropped;
-} fxReactionStats;
-
-typedef struct fxSmokeShadow {
-    uint32_t opacity;       /* frame-graph target; 0 = no smoke this frame */
-    float worldToShadow[16];
-} fxSmokeShadow;
-
-typedef struct fxFadeClassCounts { int fadeNeeded, inFront, hidden; fxBool counted; } fxFadeClassCounts;
+    int alive;            /* live particles now */
+    uint64_t emitted;     /* particles that entered its pool since it was loaded */
+    uint64_t dropped;     /* particles due while its pool was full */
+} fxReactionStats2;
 
 /* One key of the reaction schema; the strings live as long as the plugin. */
-typedef struct fxReactionKeyInfo {
+typedef struct fxReactionKeyInfo2 {
+    uint32_t size;
     const char* key;
     int kind;             /* FX_KEY_* */
     double min, max;
@@ -363,7 +394,41 @@ typedef struct fxReactionKeyInfo {
     int choiceCount;
     const char* unit;
     const char* help;
+} fxReactionKeyInfo2;
+
+typedef struct fxSmokeShadow2 {
+    uint32_t size;
+    uint32_t opacity;       /* frame-graph target; 0 = no smoke this frame */
+    float worldToShadow[16];
+} fxSmokeShadow2;
+
+/* Deprecated (API 2.0, no size, never to grow): the same fields as their ...2 structs above,
+ * written whole by the 2.0 entries. */
+typedef struct fxStats {
+    int reactions, particlesAlive, particleCapacity, particlesDrawn, reloads, reloadErrors, apiErrors;
+} fxStats;
+typedef struct fxParticleCheck { int alive, capacity, nonFinite; } fxParticleCheck;
+typedef struct fxReactionStats {
+    char name[72];        /* "" for a bad index */
+    char technique[16];
+    int alive;
+    uint64_t emitted, dropped;
+} fxReactionStats;
+typedef struct fxReactionKeyInfo {
+    const char* key;
+    int kind;
+    double min, max;
+    const char* const* choices;
+    int choiceCount;
+    const char* unit;
+    const char* help;
 } fxReactionKeyInfo;
+typedef struct fxSmokeShadow {
+    uint32_t opacity;
+    float worldToShadow[16];
+} fxSmokeShadow;
+/* Deprecated, with no successor: fade classification has no effect since API 2.1. */
+typedef struct fxFadeClassCounts { int fadeNeeded, inFront, hidden; fxBool counted; } fxFadeClassCounts;
 
 /* The plugin's functions. Returns of type int are FX_ERROR_* unless stated; fxBool returns are
  * success. Calls on a null plugin return FX_ERROR_NULL_ARGUMENT / 0 / "" and do nothing; on a
@@ -393,9 +458,9 @@ typedef struct fxApi {
     size_t (*reactionFileAt)(const fxPlugin* p, int fileIndex, char* buffer, size_t capacity);
     size_t (*reactionValue)(const fxPlugin* p, int index, const char* key, char* buffer, size_t capacity);
     int (*reactionParticlesAlive)(const fxPlugin* p, int index);
-    int (*reactionStats)(const fxPlugin* p, int index, fxReactionStats* out);
+    int (*reactionStats)(const fxPlugin* p, int index, fxReactionStats* out); /* deprecated: reactionStats2 */
     int (*reactionKeyCount)(const fxPlugin* p);
-    int (*reactionKey)(const fxPlugin* p, int keyIndex, fxReactionKeyInfo* out);
+    int (*reactionKey)(const fxPlugin* p, int keyIndex, fxReactionKeyInfo* out); /* deprecated: reactionKey2 */
 
     /* Simulation. dt: 0 .. FX_MAX_TIME_STEP seconds (NaN, infinite, negative or larger:
      * FX_ERROR_INVALID_VALUE). collision may be null; *collision is clamped to 0 .. 1 (NaN reads as
@@ -406,17 +471,24 @@ typedef struct fxApi {
 
     /* Options. An int outside its enum (FX_SHAPE_*, FX_EDGES_*, FX_FADE_CLASSIFICATION_*,
      * FX_TECHNIQUE_*) is FX_ERROR_INVALID_VALUE; an fxBool is any int. Values out of an
-     * fxSceneLight's ranges are FX_ERROR_INVALID_VALUE. */
+     * fxSceneLight's ranges are FX_ERROR_INVALID_VALUE. setRenderOptions sets every field of the
+     * host's size at once (a refused field sets none); getRenderOptions: see the contract above. */
     int (*setRenderOptions)(fxPlugin* p, const fxRenderOptions* options);
     void (*getRenderOptions)(const fxPlugin* p, fxRenderOptions* out);
+    /* Deprecated since API 2.1 (kept for 2.0 hosts): fxRenderOptions.particleShape. */
     int (*setParticleShape)(fxPlugin* p, int shape);
     int (*particleShape)(const fxPlugin* p);
+    /* Deprecated since API 2.1 (kept for 2.0 hosts): mixed-resolution edges and fade
+     * classification are gone from the renderer. The setters check their value as in 2.0 and the
+     * getters return it, with no effect on the picture; fadeClassCounts writes counted 0 and
+     * every count 0. */
     int (*setQuarterResEdges)(fxPlugin* p, int edges);
     int (*quarterResEdges)(const fxPlugin* p);
     int (*setFadeClassification)(fxPlugin* p, int mode);
     int (*fadeClassification)(const fxPlugin* p);
     int (*setFadeClassCounting)(fxPlugin* p, fxBool on);
     void (*fadeClassCounts)(const fxPlugin* p, fxFadeClassCounts* out);
+    /* Scene state, not an option: the sun and ambient light the smoke is lit by. */
     int (*setSceneLight)(fxPlugin* p, const fxSceneLight* light);
     void (*clearSceneLight)(fxPlugin* p);
 
@@ -425,7 +497,7 @@ typedef struct fxApi {
     fxBool (*pollShaderReload)(fxPlugin* p, const fxDiagnosticSink* out);          /* (GL) */
     /* The frame-graph path: declares this view's passes (none when no particle is visible). */
     int (*declarePasses)(fxPlugin* p, const fxViewDesc* view, const fxFrameBuilder* frame); /* (GL) */
-    /* out is required (null: FX_ERROR_NULL_ARGUMENT). */
+    /* Deprecated: declareShadowPasses2. */
     int (*declareShadowPasses)(fxPlugin* p, const fxViewDesc* view, const fxFrameBuilder* frame,
                                fxSmokeShadow* out);                                 /* (GL) */
     /* The immediate path: after the opaque scene and the sky, draws the smoke into the
@@ -438,9 +510,22 @@ typedef struct fxApi {
      * a frame without visible particles allocates and copies nothing). */
     int (*renderView)(fxPlugin* p, const fxViewDesc* view);                         /* (GL) */
 
-    /* Counters. */
+    /* Counters. Deprecated: stats2, checkParticles2. */
     void (*stats)(const fxPlugin* p, fxStats* out);
     void (*checkParticles)(const fxPlugin* p, fxParticleCheck* out);
+
+    /* API 2.1: the output structs with a size. out is required (null: FX_ERROR_NULL_ARGUMENT)
+     * and its size one the library knows (else FX_ERROR_BAD_DESCRIPTOR); a refused call writes
+     * nothing into it. */
+    int (*stats2)(const fxPlugin* p, fxStats2* out);
+    int (*checkParticles2)(const fxPlugin* p, fxParticleCheck2* out);
+    /* A bad index: FX_ERROR_INDEX_OUT_OF_RANGE, nothing written (reactionStats, 2.0, cleared its
+     * struct instead). */
+    int (*reactionStats2)(const fxPlugin* p, int index, fxReactionStats2* out);
+    int (*reactionKey2)(const fxPlugin* p, int keyIndex, fxReactionKeyInfo2* out);
+    /* On FX_ERROR_NONE, out's opacity is 0 when there is no smoke this frame. */
+    int (*declareShadowPasses2)(fxPlugin* p, const fxViewDesc* view, const fxFrameBuilder* frame,
+                                fxSmokeShadow2* out);                                 /* (GL) */
 } fxApi;
 
 /* The library's FX_API_VERSION. No GL, no plugin, any thread. */

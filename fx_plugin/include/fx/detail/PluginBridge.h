@@ -11,6 +11,7 @@
 //   - PassContext       -> fxPassContext for the duration of one pass
 //   - Diagnostics*      -> fxDiagnosticSink
 //   - fx::Plugin        <- CApiPlugin, forwarding every function to the table
+#include <cstddef>
 #include <cstring>
 #include <functional>
 #include <memory>
@@ -194,7 +195,8 @@ public:
     ErrorCode setRenderOptions(const RenderOptions& o) override {
         fxRenderOptions c;
         std::memset(&c, 0, sizeof c);
-        c.size = sizeof c;
+        // RenderOptions has no shape (setParticleShape sets it): the 2.0 size leaves it as it is.
+        c.size = offsetof(fxRenderOptions, particleShape);
         c.techniqueOverride = static_cast<int>(o.techniqueOverride);
         c.quarterRes = o.quarterRes ? 1 : 0;
         c.bilinearUpsample = o.bilinearUpsample ? 1 : 0;
@@ -221,8 +223,8 @@ public:
         return static_cast<ErrorCode>(api_->declarePasses(p_, &v, bridge.c()));
     }
     Stats stats() const override {
-        fxStats c{};
-        api_->stats(p_, &c);
+        fxStats2 c = fxDescInit_<fxStats2>();
+        api_->stats2(p_, &c);
         Stats s;
         s.reactions = c.reactions;
         s.particlesAlive = c.particlesAlive;
@@ -234,8 +236,8 @@ public:
         return s;
     }
     ParticleCheck checkParticles() const override {
-        fxParticleCheck c{};
-        api_->checkParticles(p_, &c);
+        fxParticleCheck2 c = fxDescInit_<fxParticleCheck2>();
+        api_->checkParticles2(p_, &c);
         ParticleCheck k;
         k.alive = c.alive;
         k.capacity = c.capacity;
@@ -251,8 +253,8 @@ public:
         const int n = api_->reactionKeyCount(p_);
         keys.reserve(size_t(n > 0 ? n : 0));
         for (int i = 0; i < n; ++i) {
-            fxReactionKeyInfo c{};
-            if (api_->reactionKey(p_, i, &c) != FX_ERROR_NONE) continue;
+            fxReactionKeyInfo2 c = fxDescInit_<fxReactionKeyInfo2>();
+            if (api_->reactionKey2(p_, i, &c) != FX_ERROR_NONE) continue;
             ReactionKeyInfo k;
             k.key = c.key ? c.key : "";
             k.kind = static_cast<ReactionKeyInfo::Kind>(c.kind);
@@ -284,13 +286,21 @@ public:
         DiagnosticSink sink(out);
         return api_->loadReactionsFromText(p_, file.c_str(), text.data(), text.size(), sink.c()) != 0;
     }
+    // The shape is a field of fxRenderOptions since API 2.1: set with the other options as they are.
     ErrorCode setParticleShape(ParticleShape shape) override {
-        return static_cast<ErrorCode>(api_->setParticleShape(p_, static_cast<int>(shape)));
+        fxRenderOptions c = fxDescInit_<fxRenderOptions>();
+        api_->getRenderOptions(p_, &c);
+        c.particleShape = static_cast<int>(shape);
+        return static_cast<ErrorCode>(api_->setRenderOptions(p_, &c));
     }
-    ParticleShape particleShape() const override { return static_cast<ParticleShape>(api_->particleShape(p_)); }
+    ParticleShape particleShape() const override {
+        fxRenderOptions c = fxDescInit_<fxRenderOptions>();
+        api_->getRenderOptions(p_, &c);
+        return static_cast<ParticleShape>(c.particleShape);
+    }
     ReactionStats reactionStats(int index) const override {
-        fxReactionStats c{};
-        api_->reactionStats(p_, index, &c);
+        fxReactionStats2 c = fxDescInit_<fxReactionStats2>();
+        api_->reactionStats2(p_, index, &c);
         ReactionStats s;
         s.name = c.name;
         s.technique = c.technique;
@@ -318,9 +328,9 @@ public:
     SmokeShadow declareShadowPasses(const ViewInfo& view, FrameBuilder& frame) override {
         const fxViewDesc v = viewToC(view);
         FrameBridge bridge(frame);
-        fxSmokeShadow c{};
+        fxSmokeShadow2 c = fxDescInit_<fxSmokeShadow2>();
         SmokeShadow s;
-        if (api_->declareShadowPasses(p_, &v, bridge.c(), &c) == FX_ERROR_NONE && c.opacity != 0) {
+        if (api_->declareShadowPasses2(p_, &v, bridge.c(), &c) == FX_ERROR_NONE && c.opacity != 0) {
             s.opacity = targetFrom(c.opacity);
             s.worldToShadow = matFrom(c.worldToShadow);
         }

@@ -1,0 +1,121 @@
+// The C boundary's options (fx/fx.h, "Options"): fxRenderOptions, the 2.0 setters kept for 2.0
+// hosts, and the scene light.
+#include <cstddef>
+#include <cstring>
+#include <string>
+
+#include "CApiEntries.h"
+#include "WorldBasis.h"
+
+namespace fx {
+namespace capi {
+namespace {
+
+// An int from the C side into one of the API's uint8_t enums: a value outside 0..255 would wrap
+// into a valid one, so it is clamped to 255, which every setter refuses.
+template <class Enum>
+Enum enumFrom(int v) {
+    return static_cast<Enum>(v < 0 || v > 255 ? 255 : v);
+}
+
+// API 2.0's fxRenderOptions ended with bilinearUpsample; 2.1 appended particleShape.
+constexpr size_t kRenderOptionsSize20 = offsetof(fxRenderOptions, particleShape);
+
+}  // namespace
+
+int setRenderOptions(fxPlugin* p, const fxRenderOptions* o) {
+    if (!usable(p, "setRenderOptions")) return handleError(p);
+    if (!o) return code(refuse(p, ErrorCode::NullArgument, "setRenderOptions", "options is null"));
+    if (!knownSize(o->size, sizeof *o, kRenderOptionsSize20)) {
+        return code(refuse(p, ErrorCode::BadDescriptor, "setRenderOptions",
+                           sizeProblem("fxRenderOptions", o->size, sizeof *o, kRenderOptionsSize20)));
+    }
+    const fxRenderOptions full = fullDesc(*o);
+    if (full.techniqueOverride < 0 || full.techniqueOverride > FX_TECHNIQUE_MEGA) {
+        return code(refuse(p, ErrorCode::InvalidValue, "setRenderOptions",
+                           "techniqueOverride = " + std::to_string(full.techniqueOverride) +
+                               "; expected FromReaction, Hard, Soft, Spherical or Mega"));
+    }
+    // A 2.0 host's struct has no shape: its call leaves the shape setParticleShape gave.
+    const bool setsShape = o->size > kRenderOptionsSize20;
+    if (setsShape && full.particleShape != FX_SHAPE_TRIMMED && full.particleShape != FX_SHAPE_QUAD) {
+        return code(refuse(p, ErrorCode::InvalidValue, "setRenderOptions",
+                           "particleShape = " + std::to_string(full.particleShape) +
+                               "; expected FX_SHAPE_TRIMMED (0) or FX_SHAPE_QUAD (1)"));
+    }
+    RenderOptions r;
+    r.techniqueOverride = static_cast<Technique>(full.techniqueOverride);
+    r.quarterRes = full.quarterRes != 0;
+    r.bilinearUpsample = full.bilinearUpsample != 0;
+    const ErrorCode set = impl(p).setRenderOptions(r);
+    if (set != ErrorCode::None || !setsShape) return code(set);
+    return code(impl(p).setParticleShape(static_cast<ParticleShape>(full.particleShape)));
+}
+void getRenderOptions(const fxPlugin* p, fxRenderOptions* out) {
+    if (!usable(p, "getRenderOptions")) return;
+    if (!out) {
+        refuse(p, ErrorCode::NullArgument, "getRenderOptions", "out is null");
+        return;
+    }
+    const RenderOptions r = impl(p).renderOptions();
+    fxRenderOptions full;
+    std::memset(&full, 0, sizeof full);
+    full.size = sizeof full;
+    full.techniqueOverride = static_cast<int>(r.techniqueOverride);
+    full.quarterRes = r.quarterRes ? 1 : 0;
+    full.bilinearUpsample = r.bilinearUpsample ? 1 : 0;
+    full.particleShape = static_cast<int>(impl(p).particleShape());
+    // 2.0 filled its fields whatever the size (hosts may never have set it on a struct they only
+    // read): a size the library does not know still gets them, and only them, as every host's
+    // struct has at least those.
+    writeOut(out, full, knownSize(out->size, sizeof full, kRenderOptionsSize20) ? out->size : kRenderOptionsSize20);
+}
+
+int setParticleShape(fxPlugin* p, int s) {
+    if (!usable(p, "setParticleShape")) return handleError(p);
+    return code(impl(p).setParticleShape(enumFrom<ParticleShape>(s)));
+}
+int particleShape(const fxPlugin* p) { return usable(p, "particleShape") ? int(impl(p).particleShape()) : 0; }
+int setQuarterResEdges(fxPlugin* p, int m) {
+    if (!usable(p, "setQuarterResEdges")) return handleError(p);
+    return code(impl(p).setQuarterResEdges(enumFrom<QuarterResEdges>(m)));
+}
+int quarterResEdges(const fxPlugin* p) { return usable(p, "quarterResEdges") ? int(impl(p).quarterResEdges()) : 0; }
+int setFadeClassification(fxPlugin* p, int m) {
+    if (!usable(p, "setFadeClassification")) return handleError(p);
+    return code(impl(p).setFadeClassification(enumFrom<FadeClassification>(m)));
+}
+int fadeClassification(const fxPlugin* p) {
+    return usable(p, "fadeClassification") ? int(impl(p).fadeClassification()) : 0;
+}
+int setFadeClassCounting(fxPlugin* p, fxBool on) {
+    if (!usable(p, "setFadeClassCounting")) return handleError(p);
+    return code(impl(p).setFadeClassCounting(on != 0));
+}
+void fadeClassCounts(const fxPlugin* p, fxFadeClassCounts* out) {
+    if (!usable(p, "fadeClassCounts")) return;
+    if (!out) {
+        refuse(p, ErrorCode::NullArgument, "fadeClassCounts", "out is null");
+        return;
+    }
+    const FadeClassCounts c = impl(p).fadeClassCounts();
+    *out = fxFadeClassCounts{c.fadeNeeded, c.inFront, c.hidden, c.counted ? 1 : 0};
+}
+int setSceneLight(fxPlugin* p, const fxSceneLight* l) {
+    if (!usable(p, "setSceneLight")) return handleError(p);
+    if (!l) return code(refuse(p, ErrorCode::NullArgument, "setSceneLight", "light is null"));
+    if (!knownSize(l->size, sizeof *l)) {
+        return code(refuse(p, ErrorCode::BadDescriptor, "setSceneLight", sizeProblem("fxSceneLight", l->size, sizeof *l)));
+    }
+    SceneLight s;
+    s.toSun = toPluginWorld(p->up, glm::vec3(l->toSun[0], l->toSun[1], l->toSun[2]));
+    s.sunColor = glm::vec3(l->sunColor[0], l->sunColor[1], l->sunColor[2]);
+    s.ambient = glm::vec3(l->ambient[0], l->ambient[1], l->ambient[2]);
+    return code(impl(p).setSceneLight(s));
+}
+void clearSceneLight(fxPlugin* p) {
+    if (usable(p, "clearSceneLight")) impl(p).clearSceneLight();
+}
+
+}  // namespace capi
+}  // namespace fx

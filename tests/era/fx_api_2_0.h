@@ -1,0 +1,379 @@
+/* FROZEN: fx/fx.h as it was at API 2.0 (commit 1f73d7c), the header a host built for 2.0 was
+ * compiled against. Never edit it: tests/era/Api20Host.c builds against it to prove that such a
+ * host runs unchanged on the current library (the same table entries, the same values, nothing
+ * written past its structs). */
+/* CubeFx API 2: the plugin's C boundary. The only symbols libcubefx.so exports are the three C
+ * functions at the end of this file; everything else is reached through the function table that
+ * fxGetApi returns, in the shape of Quake III's refexport/refimport: the host hands in a table of
+ * callbacks (fxHostCallbacks), the plugin hands back a table of functions (fxApi).
+ *
+ * Contract (every guarantee, in one place):
+ *  - C99, no C++ type crosses: opaque handles, plain structs, function pointers with a user
+ *    pointer, integers for enums and error codes. A host built with any compiler or standard
+ *    library that follows the platform's C calling convention can use it; so can a C host.
+ *  - Versions: FX_API_VERSION is MAJOR << 16 | MINOR. fxGetApi(v) returns the table for MAJOR 2
+ *    when v's MINOR is at most the library's; else null. A MINOR release appends functions to
+ *    fxApi and fields to the end of structs; it changes no existing one.
+ *  - Every struct the host fills begins with `size` (sizeof the struct as the host compiled it:
+ *    FX_DESC_INIT does this) and is read up to that size; a field the host leaves 0 takes the
+ *    default its comment states. A size the library does not know (0, smaller than the 2.0
+ *    struct, or larger than its own) is refused with FX_ERROR_BAD_DESCRIPTOR.
+ *  - A refused call changes nothing, returns a named FX_ERROR_* code and is logged through the
+ *    host's log callback ("fx: error[Code] function: what was expected"), at most a few times
+ *    per (function, code), then counted in fxStats.apiErrors. Where no host can be reached
+ *    safely (create refusing fxPluginDesc's size or version, fxHostCallbacks' size or a null log;
+ *    a null or dead handle) the same line goes to stderr instead, with the same limit.
+ *  - Every number is an input with a stated range (the comment at its field or function; the
+ *    FX_MAX_* limits below); a value outside it is refused (FX_ERROR_INVALID_VALUE, or
+ *    FX_ERROR_INVALID_VIEW for fxViewDesc) unless its comment says it is clamped.
+ *  - Handles: every function checks its fxPlugin* against the set of live plugins (those create
+ *    returned and destroy has not yet taken) before it reads through it. A destroyed handle, a
+ *    second destroy, or a pointer create never returned is refused with FX_ERROR_INVALID_HANDLE
+ *    (a null one with FX_ERROR_NULL_ARGUMENT; destroy(NULL) does nothing, like free(NULL)) and
+ *    nothing is done. Not detected: a destroyed handle whose address a later create happens to
+ *    get again (it names the new plugin), and a call racing destroy on another thread.
+ *  - (GL) calls check, after their arguments and before any other GL call, that a context is
+ *    current (glGetString answers) and that the host's getProcAddress gave every entry point the
+ *    plugin's drawing calls; else FX_ERROR_NO_GL_CONTEXT, naming the missing functions, and
+ *    nothing is marked failed: the next call with a context goes ahead. Optional features degrade with one warning line: KHR_debug groups (glPush/
+ *    PopDebugGroup) and clip control (glClipControl). The entry points are loaded once for all
+ *    live plugins; after the last one is destroyed, the next plugin loads them again.
+ *  - No call leaves a GL error pending that it caused. Checking a depthTexture name of another
+ *    target takes back the GL_INVALID_OPERATION the check raises; a context keeps only its first
+ *    error, so an error the host itself left pending before that call is the one taken.
+ *  - Strings the plugin returns are copied into the caller's buffer (snprintf style: the return
+ *    value is the length without the terminating 0; a buffer too small, or null with 0, gets a
+ *    truncated or no copy and the caller retries with length + 1). Strings the plugin hands to
+ *    callbacks are valid only during the callback.
+ *  - Threading and GL: one thread at a time; functions marked (GL) need the host's GL context
+ *    current on the calling thread. Around every (GL) call and every pass it runs, the plugin
+ *    sets every GL state its output depends on and restores every state it touched, in core and
+ *    compatibility contexts (fx_plugin/README.md lists them).
+ *  - Matrices are 16 floats, column-major (OpenGL's layout; glm::value_ptr, Irrlicht's
+ *    matrix4::pointer()).
+ */
+#ifndef FX_FX_H
+#define FX_FX_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(FX_BUILDING_PLUGIN)
+#define FX_C_API __attribute__((visibility("default")))
+#else
+#define FX_C_API
+#endif
+
+#define FX_API_VERSION_MAJOR 2
+#define FX_API_VERSION_MINOR 0
+#define FX_API_VERSION ((uint32_t)((FX_API_VERSION_MAJOR << 16) | FX_API_VERSION_MINOR))
+
+/* The ranges of numeric inputs (see each field and function). */
+#define FX_MAX_TIME_STEP 3600.0f /* continueReaction's dt: 0 .. one hour of simulated time */
+#define FX_MAX_VIEW_SIZE 16384   /* fxViewDesc width and height: 1 .. 16384 pixels */
+#define FX_MAX_WORLD_COORDINATE 1e9f /* fireReaction's point: each coordinate within +-1e9 m */
+
+/* Zero-initialises a descriptor and sets its size: `fxViewDesc v = FX_DESC_INIT(fxViewDesc);`
+ * (a designated initialiser: C99, C++20, or GCC/Clang in C++17). */
+#define FX_DESC_INIT(T) {.size = sizeof(T)}
+
+typedef int fxBool; /* 0 = false, anything else = true */
+
+/* ---- error codes (the same numbers as fx::ErrorCode; fxErrorCodeName gives the name) ------- */
+enum {
+    FX_ERROR_NONE = 0,
+    FX_ERROR_FILE_NOT_FOUND, FX_ERROR_EMPTY_FILE, FX_ERROR_SYNTAX_ERROR, FX_ERROR_TOO_DEEP,
+    FX_ERROR_WRONG_TYPE, FX_ERROR_UNKNOWN_KEY, FX_ERROR_MISSING_KEY, FX_ERROR_OUT_OF_RANGE,
+    FX_ERROR_NOT_FINITE, FX_ERROR_NEGATIVE_COUNT, FX_ERROR_INVALID_ENUM, FX_ERROR_DUPLICATE_NAME,
+    FX_ERROR_DUPLICATE_KEY, FX_ERROR_FILE_TOO_LARGE, FX_ERROR_TOO_MANY_ERRORS,
+    FX_ERROR_VERSION_MISMATCH, FX_ERROR_NULL_ARGUMENT, FX_ERROR_INDEX_OUT_OF_RANGE,
+    FX_ERROR_INVALID_VALUE, FX_ERROR_INVALID_VIEW, FX_ERROR_SIZE_MISMATCH, FX_ERROR_NO_GL_CONTEXT,
+    FX_ERROR_SHADER_BUILD, FX_ERROR_RESOURCE_MISSING,
+    /* API 2.0 */
+    FX_ERROR_BAD_DESCRIPTOR,     /* a struct's size is one the library does not know */
+    FX_ERROR_UNSUPPORTED_DEPTH,  /* a depth texture format or source the plugin cannot read */
+    FX_ERROR_INVALID_HANDLE,     /* a plugin handle that is not live: destroyed, or never created */
+    FX_ERROR_COUNT_
+};
+
+enum { FX_LOG_INFO = 0, FX_LOG_WARNING = 1, FX_LOG_ERROR = 2 };
+enum { FX_SURFACE_ASPHALT = 0, FX_SURFACE_KERB, FX_SURFACE_GRASS, FX_SURFACE_GRAVEL, FX_SURFACE_SAND };
+enum { FX_TECHNIQUE_FROM_REACTION = 0, FX_TECHNIQUE_HARD, FX_TECHNIQUE_SOFT, FX_TECHNIQUE_SPHERICAL,
+       FX_TECHNIQUE_MEGA };
+enum { FX_SHAPE_TRIMMED = 0, FX_SHAPE_QUAD = 1 };
+enum { FX_EDGES_DEPTH_AWARE = 0, FX_EDGES_MIXED_RESOLUTION = 1 };
+enum { FX_FADE_CLASSIFICATION_OFF = 0, FX_FADE_CLASSIFICATION_ON = 1 };
+enum { FX_FORMAT_RGBA8 = 0, FX_FORMAT_RGBA16F, FX_FORMAT_R32F, FX_FORMAT_RG32F };
+/* How the host's z-buffer is ordered: standard (near = 0, LEQUAL) or reversed (near = 1, GEQUAL). */
+enum { FX_DEPTH_STANDARD = 0, FX_DEPTH_REVERSED_Z = 1 };
+enum { FX_RIGHT_HANDED = 0, FX_LEFT_HANDED = 1 };
+/* Where fxRenderView finds the scene depth. */
+enum {
+    FX_DEPTH_FROM_FRAMEBUFFER = 0, /* the depth attachment of the framebuffer bound for drawing
+                                      (the default framebuffer too), copied only when a pass needs it */
+    FX_DEPTH_FROM_TEXTURE = 1,     /* depthTexture: GL_DEPTH_COMPONENT16/24/32F or DEPTH24_STENCIL8 */
+    FX_DEPTH_FROM_LINEAR = 2,      /* depthTexture: GL_R32F linear view depth in metres (the 1.x form);
+                                      another format: FX_ERROR_UNSUPPORTED_DEPTH */
+    FX_DEPTH_FROM_NOTHING = 3      /* no scene depth: particles are neither z-tested nor faded */
+};
+enum { FX_KEY_NUMBER = 0, FX_KEY_INTEGER, FX_KEY_BOOL, FX_KEY_CHOICE, FX_KEY_CHOICE_LIST,
+       FX_KEY_NUMBER_RANGE, FX_KEY_INTEGER_PAIR, FX_KEY_COLOR_RAMP, FX_KEY_NAME };
+
+typedef struct fxPlugin fxPlugin; /* opaque */
+
+/* ---- what the host gives ------------------------------------------------------------------ */
+
+typedef struct fxWheelContact {
+    float position[3]; /* contact patch centre, world, metres */
+    float velocity[3]; /* hub velocity, world, m/s */
+    float slip;        /* 0 rolling .. 1 full lock/spin; may exceed 1; NaN reads as 0 */
+    int surface;       /* FX_SURFACE_*; another value reads as asphalt */
+    fxBool grounded;
+    fxBool rear;
+} fxWheelContact;
+
+/* The host's services. Required: getProcAddress and log. Optional, each on its own (null = the
+ * default given): wheelCount without wheel, or wheel without wheelCount, means no wheels. */
+typedef struct fxHostCallbacks {
+    uint32_t size;
+    void* user; /* handed back to every callback */
+    /* GL entry points of the host's context (null before one exists). */
+    void* (*getProcAddress)(void* user, const char* name);
+    void (*log)(void* user, int level, const char* message);
+    int (*wheelCount)(void* user);   /* null: no wheels; clamped to 0 .. 16 */
+    void (*wheel)(void* user, int index, fxWheelContact* out);        /* null: no wheels */
+    void (*wind)(void* user, float out[3]);                           /* null: still air */
+    void (*collisionPoint)(void* user, float out[3]);                 /* null: the origin */
+} fxHostCallbacks;
+
+typedef struct fxPluginDesc {
+    uint32_t size;
+    uint32_t apiVersion;           /* 0 = FX_API_VERSION of these headers */
+    const fxHostCallbacks* host;   /* required; copied, its user pointer must outlive the plugin */
+    const char* shaderDir;         /* null/"" = embedded shaders; a folder = live shader edits */
+    const char* dataDir;           /* null/"" = embedded smoke atlas */
+    uint64_t seed;                 /* any value; 0 = the plugin's default */
+} fxPluginDesc;
+
+/* One view. Matrices as the host draws its scene with them; `handedness` says which way its
+ * camera looks (right-handed: down -Z, OpenGL; left-handed: down +Z, Direct3D-style engines). */
+typedef struct fxViewDesc {
+    uint32_t size;
+    const char* name;      /* pass names and debug groups; null = "" */
+    float view[16];        /* every element finite (else FX_ERROR_INVALID_VIEW) */
+    float proj[16];        /* every element finite */
+    float eye[3];          /* finite */
+    float nearPlane;       /* > 0, finite */
+    float farPlane;        /* > nearPlane, finite: with an infinite projection matrix (which the
+                              plugin linearises exactly), the distance past which depth reads as
+                              "nothing drawn", e.g. the far end of the scene */
+    int width, height;     /* pixels of the colour target, 1 .. FX_MAX_VIEW_SIZE */
+    int depthOrder;        /* FX_DEPTH_STANDARD / FX_DEPTH_REVERSED_Z: how the z-buffer is ordered */
+    int handedness;        /* FX_RIGHT_HANDED (0) or FX_LEFT_HANDED */
+    /* fxRenderView only: */
+    int depthSource;       /* FX_DEPTH_FROM_* ; 0 = the bound framebuffer's depth attachment */
+    uint32_t depthTexture; /* GL_TEXTURE_2D name for FROM_TEXTURE / FROM_LINEAR, of the view's size;
+                              another name or target: FX_ERROR_UNSUPPORTED_DEPTH */
+    fxBool clipDepthZeroToOne; /* the host drew with glClipControl(..., GL_ZERO_TO_ONE) */
+    float depthRangeNear, depthRangeFar; /* glDepthRange the host drew with, each in [0, 1], not
+                                            equal; both 0 = [0, 1] */
+} fxViewDesc;
+
+typedef struct fxRenderOptions {
+    uint32_t size;
+    int techniqueOverride;  /* FX_TECHNIQUE_* (0 .. FX_TECHNIQUE_MEGA), 0 = each reaction's own */
+    fxBool quarterRes;
+    fxBool bilinearUpsample;
+} fxRenderOptions;
+
+typedef struct fxSceneLight {
+    uint32_t size;
+    float toSun[3];       /* finite, not zero (the plugin normalises it) */
+    float sunColor[3];    /* finite, each >= 0 */
+    float ambient[3];     /* finite, each >= 0 */
+} fxSceneLight;
+
+/* ---- the host's frame graph (fxApi.declarePasses; engines without one use fxRenderView) ---- */
+
+typedef struct fxTargetDesc {
+    uint32_t size;
+    float scale;          /* relative to the view when width/height are 0; 0 = 1 */
+    int width, height;    /* absolute size; 0 = relative */
+    int format;           /* FX_FORMAT_*, 0 = RGBA8 */
+    fxBool nearestFilter; /* 0 = linear filtering */
+    fxBool depth;         /* a depth buffer of its own */
+} fxTargetDesc;
+
+typedef struct fxTextureRef {
+    uint32_t name;        /* GL_TEXTURE_2D name; 0 = none */
+    int format;           /* FX_FORMAT_* */
+    int width, height;
+} fxTextureRef;
+
+/* Valid only while a pass runs. */
+typedef struct fxPassContext {
+    uint32_t size;
+    void* user;
+    void (*bindForDraw)(void* user, uint32_t target);
+    void (*texture)(void* user, uint32_t target, int attachment, fxTextureRef* out);
+    int (*width)(void* user, uint32_t target);
+    int (*height)(void* user, uint32_t target);
+} fxPassContext;
+
+/* A pass the plugin declares. The host calls run() when the pass executes (or never, when it is
+ * culled) and release() exactly once when it drops the pass, after it ran or was culled. */
+typedef struct fxPassCallback {
+    void* user;
+    void (*run)(void* user, const fxPassContext* ctx);
+    void (*release)(void* user);
+} fxPassCallback;
+
+typedef struct fxFrameBuilder {
+    uint32_t size;
+    void* user;
+    uint32_t (*sceneColor)(void* user);
+    uint32_t (*sceneDepth)(void* user);  /* linear R32F view depth, metres (see fx/HostAdapter.h) */
+    uint32_t (*createTarget)(void* user, const char* name, const fxTargetDesc* desc);
+    void (*addPass)(void* user, const char* name, const uint32_t* reads, int readCount,
+                    const uint32_t* writes, int writeCount, fxPassCallback callback);
+} fxFrameBuilder;
+
+/* ---- what the plugin gives back ------------------------------------------------------------ */
+
+typedef struct fxDiagnostic {
+    int code;             /* FX_ERROR_* */
+    const char* file;
+    int line, column;     /* 1-based, 0 = unknown */
+    const char* key;      /* dotted path, "" when none */
+    const char* message;
+} fxDiagnostic;
+
+/* Receives each problem of a call (load, reload, prepare); may be null to ignore them. */
+typedef struct fxDiagnosticSink {
+    void* user;
+    void (*report)(void* user, const fxDiagnostic* diagnostic);
+} fxDiagnosticSink;
+
+typedef struct fxStats {
+    int reactions, particlesAlive, particleCapacity, particlesDrawn, reloads, reloadErrors, apiErrors;
+} fxStats;
+
+typedef struct fxParticleCheck { int alive, capacity, nonFinite; } fxParticleCheck;
+
+typedef struct fxReactionStats {
+    char name[72];        /* the reaction's name ("" for a bad index) */
+    char technique[16];   /* "hard", "soft", "spherical", "mega" or "stateless" */
+    int alive;
+    uint64_t emitted, dropped;
+} fxReactionStats;
+
+typedef struct fxSmokeShadow {
+    uint32_t opacity;       /* frame-graph target; 0 = no smoke this frame */
+    float worldToShadow[16];
+} fxSmokeShadow;
+
+typedef struct fxFadeClassCounts { int fadeNeeded, inFront, hidden; fxBool counted; } fxFadeClassCounts;
+
+/* One key of the reaction schema; the strings live as long as the plugin. */
+typedef struct fxReactionKeyInfo {
+    const char* key;
+    int kind;             /* FX_KEY_* */
+    double min, max;
+    const char* const* choices;
+    int choiceCount;
+    const char* unit;
+    const char* help;
+} fxReactionKeyInfo;
+
+/* The plugin's functions. Returns of type int are FX_ERROR_* unless stated; fxBool returns are
+ * success. Calls on a null plugin return FX_ERROR_NULL_ARGUMENT / 0 / "" and do nothing; on a
+ * dead one (see "Handles" above) FX_ERROR_INVALID_HANDLE / 0 / "". Indices (reaction, file,
+ * key) are 0 .. count - 1, else FX_ERROR_INDEX_OUT_OF_RANGE (and 0 or "" where the return is a
+ * count or a string). Out-pointers of stats and queries are required: null is refused. */
+typedef struct fxApi {
+    uint32_t size;
+    uint32_t version;  /* the library's FX_API_VERSION */
+
+    /* Creation (no GL) and destruction (GL: deletes the plugin's GL objects). On failure null,
+     * *error (may be null) set and the reason logged through desc->host when its size, version
+     * and host table were accepted, else on stderr (a refused descriptor is not read further). */
+    fxPlugin* (*create)(const fxPluginDesc* desc, int* error);
+    void (*destroy)(fxPlugin* plugin);
+
+    /* Reactions: a .yaml file or a folder of them. No GL. */
+    fxBool (*loadReactions)(fxPlugin* p, const char* path, const fxDiagnosticSink* out);
+    fxBool (*pollHotReload)(fxPlugin* p, const fxDiagnosticSink* out);
+    /* length: 0 .. 4 MiB (else FX_ERROR_FILE_TOO_LARGE, nothing read). */
+    fxBool (*loadReactionsFromText)(fxPlugin* p, const char* file, const char* text, size_t length,
+                                    const fxDiagnosticSink* out);
+    int (*reactionCount)(const fxPlugin* p);
+    size_t (*reactionName)(const fxPlugin* p, int index, char* buffer, size_t capacity);
+    size_t (*reactionFile)(const fxPlugin* p, int index, char* buffer, size_t capacity);
+    int (*reactionFileCount)(const fxPlugin* p);
+    size_t (*reactionFileAt)(const fxPlugin* p, int fileIndex, char* buffer, size_t capacity);
+    size_t (*reactionValue)(const fxPlugin* p, int index, const char* key, char* buffer, size_t capacity);
+    int (*reactionParticlesAlive)(const fxPlugin* p, int index);
+    int (*reactionStats)(const fxPlugin* p, int index, fxReactionStats* out);
+    int (*reactionKeyCount)(const fxPlugin* p);
+    int (*reactionKey)(const fxPlugin* p, int keyIndex, fxReactionKeyInfo* out);
+
+    /* Simulation. dt: 0 .. FX_MAX_TIME_STEP seconds (NaN, infinite, negative or larger:
+     * FX_ERROR_INVALID_VALUE). collision may be null; *collision is clamped to 0 .. 1 (NaN reads as
+     * 0). fireReaction's point: finite, each coordinate within
+     * +-FX_MAX_WORLD_COORDINATE metres. */
+    int (*continueReaction)(fxPlugin* p, int index, float dt, float* collision);
+    int (*fireReaction)(fxPlugin* p, const char* name, const float point[3]);
+
+    /* Options. An int outside its enum (FX_SHAPE_*, FX_EDGES_*, FX_FADE_CLASSIFICATION_*,
+     * FX_TECHNIQUE_*) is FX_ERROR_INVALID_VALUE; an fxBool is any int. Values out of an
+     * fxSceneLight's ranges are FX_ERROR_INVALID_VALUE. */
+    int (*setRenderOptions)(fxPlugin* p, const fxRenderOptions* options);
+    void (*getRenderOptions)(const fxPlugin* p, fxRenderOptions* out);
+    int (*setParticleShape)(fxPlugin* p, int shape);
+    int (*particleShape)(const fxPlugin* p);
+    int (*setQuarterResEdges)(fxPlugin* p, int edges);
+    int (*quarterResEdges)(const fxPlugin* p);
+    int (*setFadeClassification)(fxPlugin* p, int mode);
+    int (*fadeClassification)(const fxPlugin* p);
+    int (*setFadeClassCounting)(fxPlugin* p, fxBool on);
+    void (*fadeClassCounts)(const fxPlugin* p, fxFadeClassCounts* out);
+    int (*setSceneLight)(fxPlugin* p, const fxSceneLight* light);
+    void (*clearSceneLight)(fxPlugin* p);
+
+    /* GL. */
+    fxBool (*prepareGl)(fxPlugin* p, const fxDiagnosticSink* out);                 /* (GL) */
+    fxBool (*pollShaderReload)(fxPlugin* p, const fxDiagnosticSink* out);          /* (GL) */
+    /* The frame-graph path: declares this view's passes (none when no particle is visible). */
+    int (*declarePasses)(fxPlugin* p, const fxViewDesc* view, const fxFrameBuilder* frame); /* (GL) */
+    /* out is required (null: FX_ERROR_NULL_ARGUMENT). */
+    int (*declareShadowPasses)(fxPlugin* p, const fxViewDesc* view, const fxFrameBuilder* frame,
+                               fxSmokeShadow* out);                                 /* (GL) */
+    /* The immediate path: after the opaque scene and the sky, draws the smoke into the
+     * framebuffer bound for drawing (GL_DRAW_FRAMEBUFFER, the default one included) over
+     * view->width x view->height from its origin. Scene depth from view->depthSource. The
+     * plugin owns and pools its transient targets (resized with the view, freed by destroy;
+     * a frame without visible particles allocates and copies nothing). */
+    int (*renderView)(fxPlugin* p, const fxViewDesc* view);                         /* (GL) */
+
+    /* Counters. */
+    void (*stats)(const fxPlugin* p, fxStats* out);
+    void (*checkParticles)(const fxPlugin* p, fxParticleCheck* out);
+} fxApi;
+
+/* The library's FX_API_VERSION. No GL, no plugin, any thread. */
+FX_C_API uint32_t fxApiVersion(void);
+/* The function table for `version` (FX_API_VERSION of the host's headers), or null when the
+ * library cannot serve it (another MAJOR, or a newer MINOR than its own). */
+FX_C_API const fxApi* fxGetApi(uint32_t version);
+/* "FileNotFound", "BadDescriptor", ...; "Unknown" outside the codes. */
+FX_C_API const char* fxErrorCodeName(int code);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FX_FX_H */
