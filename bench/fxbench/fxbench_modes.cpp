@@ -10,7 +10,7 @@ namespace fxbench {
 const std::vector<Mode>& allModes() {
     using fx::Technique;
     // name, setup, effects, technique, prepassEqual, quarterRes, reference[, shape, lit, hostZBuffer,
-    // linearDepth]
+    // linearDepth, quarterResAlways]
     static const std::vector<Mode> modes = {
         {"nofx", "No particles (bare engine)", false, Technique::Hard, false, false, "nofx"},
         {"hard", "Hard particles", true, Technique::Hard, false, false, "hard"},
@@ -19,7 +19,11 @@ const std::vector<Mode>& allModes() {
          fx::ParticleShape::Quad},
         {"soft+equal", "Soft particles, utilize prepass z-buffer (EQUAL)", true, Technique::Soft, true, false,
          "soft"},
-        {"soft+quarter", "Soft particles, 1/4-size texture", true, Technique::Soft, false, true, "soft"},
+        {"soft+quarter", "Soft particles, 1/4-size texture where it pays", true, Technique::Soft, false, true,
+         "soft"},
+        // Quarter res in every view, also where full res is cheaper (the 2.0 behaviour).
+        {"soft+quarter-always", "Soft particles, 1/4-size texture in every view", true, Technique::Soft, false, true,
+         "soft", fx::ParticleShape::Trimmed, false, false, false, true},
         {"soft+equal+quarter", "Soft particles, prepass EQUAL + 1/4-size texture", true, Technique::Soft, true,
          true, "soft"},
         {"spherical", "Spherical billboards", true, Technique::Spherical, false, false, "spherical"},
@@ -115,6 +119,7 @@ void applyMode(cube::Game& game, const Mode& mode) {
     fx::RenderOptions ro = was;
     ro.techniqueOverride = mode.technique;
     ro.quarterRes = mode.quarterRes;
+    ro.quarterResAlways = mode.quarterResAlways;
     ro.bilinearUpsample = false;  // the depth-aware composite is the one under test
     plugin->setRenderOptions(ro);
     plugin->setParticleShape(mode.shape);
@@ -122,7 +127,7 @@ void applyMode(cube::Game& game, const Mode& mode) {
     // switch that may reach programs the old one did not is followed by prepareGl, between
     // frames, so no program is built while the next frame is declared (nor inside a timed render).
     if (ro.techniqueOverride != was.techniqueOverride || ro.quarterRes != was.quarterRes ||
-        ro.bilinearUpsample != was.bilinearUpsample) {
+        ro.quarterResAlways != was.quarterResAlways || ro.bilinearUpsample != was.bilinearUpsample) {
         (void)plugin->prepareGl(nullptr);  // a failure is logged once by the plugin
     }
     if (mode.lit) {

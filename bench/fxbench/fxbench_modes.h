@@ -34,6 +34,8 @@ struct Mode {
     /// The frame graph's passes on a linear R32F scene depth the opaque pass writes as a second
     /// render target (API 2.0's contract, `soft-linear`) instead of sampling the z-buffer.
     bool linearDepth = false;
+    /// Quarter res in every view (RenderOptions::quarterResAlways) instead of only where it pays.
+    bool quarterResAlways = false;
 };
 
 /// Every mode, in table order: nofx, hard, soft, soft-quads, soft+equal, soft+quarter,

@@ -176,7 +176,9 @@ std::string usage() {
         "                         passes reading a linear R32F target the opaque pass writes as a\n"
         "                         second render target (API 2.0's contract, for comparison); or the\n"
         "                         plugin's immediate path (Plugin::renderView) on the z-buffer\n"
-        "  --quarter-res          particles into a half x half target, depth-aware composite\n"
+        "  --quarter-res          particles into a half x half target, depth-aware composite, in each\n"
+        "                         view where that is cheaper than full res (enough smoke overdraw)\n"
+        "  --quarter-res-always   quarter res in every view (implies --quarter-res)\n"
         "  --bilinear-upsample    quarter-res with plain bilinear upsampling (comparison)\n"
         "  --watch                reload changed reaction files while running\n"
         "  --window               open a window (same as --backend glfw)\n"
@@ -218,6 +220,7 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
     };
     static const Switch kSwitches[] = {
         {"--prepass-equal", &Options::prepassEqual, true}, {"--quarter-res", &Options::quarterRes, true},
+        {"--quarter-res-always", &Options::quarterResAlways, true},
         {"--bilinear-upsample", &Options::bilinearUpsample, true}, {"--watch", &Options::watch, true},
         {"--no-mirror", &Options::mirror, false}, {"--no-hud", &Options::hud, false},
         {"--unlit-smoke", &Options::litSmoke, false}, {"--panel", &Options::panel, true},

@@ -39,6 +39,8 @@ struct Options {
     /// writes as a second render target (API 2.0's contract) instead of sampling the z-buffer.
     bool pluginLinearDepth = false;
     bool quarterRes = false;
+    /// --quarter-res-always: every view at quarter res, also where full res is cheaper
+    bool quarterResAlways = false;
     bool bilinearUpsample = false;
     bool watch = false;
     bool mirror = true;

@@ -72,7 +72,8 @@ bool SpecialFX::Init(const Options& options, cubeScene& scene, fx::HostAdapter* 
         fx::RenderOptions ro;
         const TechniqueMode* mode = findTechniqueMode(options.mode);  // Options checked the word
         ro.techniqueOverride = mode ? mode->technique : fx::Technique::FromReaction;
-        ro.quarterRes = options.quarterRes || options.bilinearUpsample;
+        ro.quarterRes = options.quarterRes || options.quarterResAlways || options.bilinearUpsample;
+        ro.quarterResAlways = options.quarterResAlways || options.bilinearUpsample;  // a comparison: every view
         ro.bilinearUpsample = options.bilinearUpsample;
         plugin_->setRenderOptions(ro);
         // Compile the particle programs now, so a broken shader stops start-up with file:line

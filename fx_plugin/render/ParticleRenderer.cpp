@@ -8,6 +8,8 @@
 
 #include "GlStateGuard.h"
 #include "ImmediateFrame.h"
+#include "PassDeclaration.h"
+#include "ScreenTiles.h"
 #include "ShaderLoader.h"
 #include "reactions/TechniqueTable.h"
 #include "base/ApiErrors.h"
@@ -205,6 +207,20 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     }
     const int drawn = record->list.particleCount();
     if (drawn == 0) return 0;
+    if (quarterRes) {
+        // Where the smoke can be (the quarter-res passes' fixed costs stay inside it), and whether
+        // its overdraw pays for them; if not, this view is drawn at full res.
+        record->rect = screenRect(view, record->list.instances.data(), drawn, &record->tiles, footprintOf(record->list));
+        if (!options.quarterResAlways && !quarterResPays(record->rect, record->tiles)) {
+            quarterRes = false;
+            // A technique whose quarter-res program failed was left out; at full res it draws.
+            if (draw_.programs().usableTechniques(false) != usable) {
+                usable = draw_.programs().usableTechniques(false);
+                builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list);
+                if (record->list.particleCount() == 0) return 0;
+            }
+        }
+    }
     ensureDrawPrograms(*record, quarterRes);
 
     draw_.ramp().setRows(batches, batchCount);
@@ -222,7 +238,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     } else {
         fullRes_.declare(frame, record);
     }
-    return drawn;
+    return record->list.particleCount();
 }
 
 }  // namespace fx

@@ -50,9 +50,6 @@ QuarterResPath::QuarterResPath(ParticleDraw& draw, SizeMismatchReport sizeMismat
 
 void QuarterResPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& record) {
     const ViewInfo& view = record->view;
-    // Where the smoke can be: the quarter-res passes' fixed costs stay inside it.
-    record->rect = screenRect(view, record->list.instances.data(), record->list.particleCount(), &record->tiles,
-                              footprintOf(record->list));
     const Target color = frame.sceneColor();
     const Target opacity = record->opacity;
     // The z-buffer, sampled in place, where the host offers it; else its linear depth.

@@ -72,7 +72,8 @@ public:
     /// The programs quarter res needs built (else the particles are drawn at full res).
     bool ok() const { return programs_ && programs_->ok(); }
 
-    /// Declares the view's quarter-res passes; fills the view's rect and tiles.
+    /// Declares the view's quarter-res passes inside the view's rect and tiles (ParticleView::rect,
+    /// ::tiles: the caller's screenRect).
     void declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& view);
 
 private:

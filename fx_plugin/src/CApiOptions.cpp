@@ -18,7 +18,8 @@ Enum enumFrom(int v) {
     return static_cast<Enum>(v < 0 || v > 255 ? 255 : v);
 }
 
-// API 2.0's fxRenderOptions ended with bilinearUpsample; 2.1 appended particleShape.
+// API 2.0's fxRenderOptions ended with bilinearUpsample; 2.1 appended particleShape and
+// quarterResAlways.
 constexpr size_t kRenderOptionsSize20 = offsetof(fxRenderOptions, particleShape);
 
 }  // namespace
@@ -47,6 +48,8 @@ int setRenderOptions(fxPlugin* p, const fxRenderOptions* o) {
     r.techniqueOverride = static_cast<Technique>(full.techniqueOverride);
     r.quarterRes = full.quarterRes != 0;
     r.bilinearUpsample = full.bilinearUpsample != 0;
+    // Like the shape, a 2.0 host's call leaves quarterResAlways as it was.
+    r.quarterResAlways = setsShape ? full.quarterResAlways != 0 : impl(p).renderOptions().quarterResAlways;
     const ErrorCode set = impl(p).setRenderOptions(r);
     if (set != ErrorCode::None || !setsShape) return code(set);
     return code(impl(p).setParticleShape(static_cast<ParticleShape>(full.particleShape)));
@@ -65,6 +68,7 @@ void getRenderOptions(const fxPlugin* p, fxRenderOptions* out) {
     full.quarterRes = r.quarterRes ? 1 : 0;
     full.bilinearUpsample = r.bilinearUpsample ? 1 : 0;
     full.particleShape = static_cast<int>(impl(p).particleShape());
+    full.quarterResAlways = r.quarterResAlways ? 1 : 0;
     // 2.0 filled its fields whatever the size (hosts may never have set it on a struct they only
     // read): a size the library does not know still gets them, and only them, as every host's
     // struct has at least those.

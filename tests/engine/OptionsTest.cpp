@@ -53,6 +53,7 @@ TEST(Options, EverySwitchSetsItsOptionAlone) {
         const char* flag;
         bool Options::*option;
     } switches[] = {{"--prepass-equal", &Options::prepassEqual}, {"--quarter-res", &Options::quarterRes},
+                    {"--quarter-res-always", &Options::quarterResAlways},
                     {"--bilinear-upsample", &Options::bilinearUpsample}, {"--watch", &Options::watch},
                     {"--no-mirror", &Options::mirror},          {"--no-hud", &Options::hud},
                     {"--unlit-smoke", &Options::litSmoke},       {"--panel", &Options::panel}};

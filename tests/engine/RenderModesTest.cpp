@@ -38,6 +38,7 @@ struct Frames {
         fx::RenderOptions ro = game.specialFX().plugin()->renderOptions();
         ro.techniqueOverride = t;
         ro.quarterRes = quarter;
+        ro.quarterResAlways = quarter;
         ro.bilinearUpsample = bilinear;
         game.specialFX().plugin()->setRenderOptions(ro);
         game.captureNextFrame();

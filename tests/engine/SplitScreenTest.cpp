@@ -47,6 +47,7 @@ struct Frames {
         fx::RenderOptions ro = game.specialFX().plugin()->renderOptions();
         ro.techniqueOverride = t;
         ro.quarterRes = quarter;
+        ro.quarterResAlways = quarter;
         game.specialFX().plugin()->setRenderOptions(ro);
         game.specialFX().plugin()->prepareGl(nullptr);
         game.captureNextFrame();

@@ -172,6 +172,7 @@ TEST(Extreme, ClipPlanes) {
         for (const char* mode : {"hard", "soft", "spherical"}) {
             o.mode = mode;
             o.quarterRes = std::string(mode) != "hard";
+            o.quarterResAlways = std::string(mode) != "hard";
             runAndCheck(o, 10, 1.0f / 60.0f, (std::to_string(planes.first) + "/" + std::to_string(planes.second) + " " + mode).c_str());
         }
     }
@@ -198,6 +199,7 @@ TEST(Extreme, OnePixelView) {
     Options o = base();
     o.width = o.height = 1;
     o.quarterRes = true;
+    o.quarterResAlways = true;
     runAndCheck(o, 10, 1.0f / 60.0f, "1x1 view");
 }
 

@@ -206,6 +206,7 @@ TEST_F(ContractTest, ZeroAsTheDepthBackgroundKeepsSmokeAgainstTheSky) {
         fx::RenderOptions o;
         o.techniqueOverride = fx::Technique::Soft;
         o.quarterRes = quarter;
+        o.quarterResAlways = quarter;
         plugin->setRenderOptions(o);
         scene.depthBackground = -1.0f;  // the far plane
         const Image far = render(plugin.get(), view);

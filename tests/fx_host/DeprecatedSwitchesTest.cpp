@@ -65,6 +65,7 @@ TEST_F(DeprecatedSwitchesTest, FramesWithTheSwitchesOnAreBitIdenticalToFramesWit
         fx::RenderOptions o;
         o.techniqueOverride = fx::Technique::Soft;
         o.quarterRes = quarter;
+        o.quarterResAlways = quarter;  // the quarter-res path itself, however light the smoke
         ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
 
         setDeprecated(false);

@@ -65,6 +65,7 @@ TEST_F(EndToEndTest, NoSlipDeclaresNoPassesAndTheHostSkipsItsPrepass) {
     for (bool quarter : {false, true}) {
         fx::RenderOptions options;
         options.quarterRes = quarter;
+        options.quarterResAlways = quarter;
         plugin->setRenderOptions(options);
         simulate(0.0f, 90);
         EXPECT_EQ(plugin->stats().particlesAlive, 0);
@@ -104,6 +105,7 @@ TEST_F(EndToEndTest, QuarterResDeclaresItsThreePassesAndTwoTargets) {
     simulate(1.0f, 60);
     fx::RenderOptions options;
     options.quarterRes = true;
+    options.quarterResAlways = true;
     plugin->setRenderOptions(options);
     render(true);
     EXPECT_EQ(graph.executed(),

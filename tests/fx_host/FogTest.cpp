@@ -248,6 +248,7 @@ TEST_F(FogTest, AFoggedParticleGetsTheFogFactorOfAFoggedQuadAtItsDepth) {
             for (const Way& way : kWays) {
                 direct.settings.options.techniqueOverride = way.technique;
                 direct.settings.options.quarterRes = way.quarterRes;
+                direct.settings.options.quarterResAlways = way.quarterRes;
                 const Image clear = drawParticles(view);
                 const Image fogged = drawParticles(v);
                 ASSERT_EQ(drawn, 1);
@@ -273,6 +274,7 @@ TEST_F(FogTest, FogOffIsThePictureWithoutFogBitForBit) {
     for (const Way& way : kWays) {
         direct.settings.options.techniqueOverride = way.technique;
         direct.settings.options.quarterRes = way.quarterRes;
+        direct.settings.options.quarterResAlways = way.quarterRes;
         const Image plain = drawParticles(view);
         fx::ViewInfo off = view;
         off.fog = fogOf(fx::Fog::Mode::Exp2);
@@ -387,6 +389,7 @@ TEST_F(FogTest, SlicesOrderTheSmokeWithTheHostsBlendedPane) {
     for (const Way& way : kWays) {
         direct.settings.options.techniqueOverride = way.technique;
         direct.settings.options.quarterRes = way.quarterRes;
+        direct.settings.options.quarterResAlways = way.quarterRes;
         fx::ViewInfo farSlice = view, nearSlice = view;
         farSlice.slice = fx::DistanceSlice{10.0f, 0.0f};
         nearSlice.slice = fx::DistanceSlice{0.0f, 10.0f};

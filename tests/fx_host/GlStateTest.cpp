@@ -37,6 +37,7 @@ TEST_F(GlStateTest, EveryPassRestoresTheHostState) {
         fx::RenderOptions o;
         o.techniqueOverride = m.technique;
         o.quarterRes = m.quarter;
+        o.quarterResAlways = m.quarter;
         o.bilinearUpsample = m.bilinear;
         plugin->setRenderOptions(o);
         const std::string label = std::to_string(int(m.technique)) + (m.quarter ? " quarter" : " full") +
@@ -62,6 +63,7 @@ TEST_F(GlStateTest, LitSmokeRestoresTheHostStateToo) {
             fx::RenderOptions o;
             o.techniqueOverride = t;
             o.quarterRes = quarter;
+            o.quarterResAlways = quarter;
             plugin->setRenderOptions(o);
             const std::string label = std::to_string(int(t)) + (quarter ? " quarter" : " full");
             std::string mismatches;

@@ -102,6 +102,7 @@ protected:
         fx::RenderOptions o;
         o.techniqueOverride = m.technique;
         o.quarterRes = m.quarterRes;
+        o.quarterResAlways = m.quarterRes;
         ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
         if (m.lit) {
             ASSERT_EQ(plugin->setSceneLight(fx::SceneLight{}), fx::ErrorCode::None);

@@ -70,6 +70,7 @@ protected:
         fx::RenderOptions o;
         o.techniqueOverride = m.technique;
         o.quarterRes = m.quarter;
+        o.quarterResAlways = m.quarter;
         plugin->setRenderOptions(o);
         if (m.lit) {
             ASSERT_EQ(plugin->setSceneLight(fx::SceneLight{}), fx::ErrorCode::None);

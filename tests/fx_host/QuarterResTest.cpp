@@ -34,6 +34,7 @@ TEST_F(QuarterResTest, BurnoutFrameMatchesFullResAbove35dB) {
     auto frame = [&](bool quarter, bool bilinear) {
         fx::RenderOptions o;
         o.quarterRes = quarter;
+        o.quarterResAlways = quarter;
         o.bilinearUpsample = bilinear;
         plugin->setRenderOptions(o);
         renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { plugin->declarePasses(view, f); });
@@ -64,6 +65,7 @@ TEST_F(QuarterResTest, DepthAwareUpsampleBeatsBilinearNextToDepthEdges) {
     TestFrameGraph graph(kW, kH);
     auto frame = [&](bool quarter, bool bilinear) {
         direct.settings.options.quarterRes = quarter;
+        direct.settings.options.quarterResAlways = quarter;
         direct.settings.options.bilinearUpsample = bilinear;
         renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { direct.declare(view, f); });
         return graph.readColor();

@@ -336,6 +336,7 @@ TEST_F(ShaderLoaderTest, TheHostsDepthSamplingStateDoesNotChangeThePicture) {
     auto frame = [&](fx::Technique t, bool quarter) {
         direct.settings.options.techniqueOverride = t;
         direct.settings.options.quarterRes = quarter;
+        direct.settings.options.quarterResAlways = quarter;
         renderFrame(graph, edge.scene, edge.view, [&](fx::FrameBuilder& f) { direct.declare(edge.view, f); });
         return graph.readColor();
     };

@@ -104,6 +104,7 @@ TEST_F(TechniqueTest, ParticleBehindAWallContributesNothing) {
         direct.settings.options.techniqueOverride = t;
         for (bool quarter : {false, true}) {
             direct.settings.options.quarterRes = quarter;
+            direct.settings.options.quarterResAlways = quarter;
             const Image img = draw(graph, scene, view, true);
             ASSERT_EQ(drawn, 1) << name(t) << " not even drawn: the test would prove nothing";
             EXPECT_LE(maxAbsDiff(img, reference), 1) << name(t) << (quarter ? " quarter" : "");

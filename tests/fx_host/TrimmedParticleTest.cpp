@@ -336,6 +336,7 @@ TEST_F(HardEdgedSphereTest, SphericalPolygonsDrawTheQuadsImageAcrossTheFrustum) 
     const float halfY = glm::radians(50.0f), halfX = std::atan(std::tan(halfY) * kW / kH);
     for (bool quarter : {false, true}) {
         hardEdged.settings.options.quarterRes = quarter;
+        hardEdged.settings.options.quarterResAlways = quarter;
         for (float sinA : {0.03f, 0.1f, 0.22f, 0.38f, 0.45f}) {
             const float a = std::asin(sinA), step = 2.3f * a;
             std::vector<HandParticle> ps;
@@ -485,6 +486,7 @@ TEST_F(TrimmedImageTest, HalfResZTestChangesNoPixel) {
     const fx::ViewInfo& tested = w.tested;
     const fx::ViewInfo& untested = w.untested;
     direct.settings.options.quarterRes = true;
+    direct.settings.options.quarterResAlways = true;
     for (fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical, fx::Technique::Hard}) {
         direct.settings.options.techniqueOverride = t;
         const Image a = draw(graph, scene, tested);

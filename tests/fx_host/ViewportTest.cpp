@@ -101,6 +101,7 @@ protected:
         fx::RenderOptions o;
         o.techniqueOverride = m.technique;
         o.quarterRes = m.quarter;
+        o.quarterResAlways = m.quarter;
         ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
         ASSERT_TRUE(plugin->prepareGl(nullptr));
     }

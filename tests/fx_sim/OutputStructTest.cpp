@@ -241,4 +241,33 @@ TEST_F(OutputStructTest, SetRenderOptionsSetsTheShapeOnlyFromA21SizeAndRefusesAB
         << host.errors[0];
 }
 
+// quarterResAlways (2.1) reads back as set; a 2.0 host's size leaves it as it was, like the shape.
+TEST_F(OutputStructTest, QuarterResAlwaysIsSetFromA21SizeAndKeptByA20One) {
+    fxRenderOptions back = FX_DESC_INIT(fxRenderOptions);
+    api->getRenderOptions(plugin, &back);
+    EXPECT_EQ(back.quarterResAlways, 0) << "quarter res only where it pays, by default";
+
+    fxRenderOptions set = FX_DESC_INIT(fxRenderOptions);
+    set.quarterRes = 1;
+    set.quarterResAlways = 1;
+    ASSERT_EQ(api->setRenderOptions(plugin, &set), FX_ERROR_NONE);
+    api->getRenderOptions(plugin, &back);
+    EXPECT_EQ(back.quarterResAlways, 1);
+    EXPECT_EQ(back.quarterRes, 1);
+
+    fxRenderOptions set20 = FX_DESC_INIT(fxRenderOptions);
+    set20.size = uint32_t(offsetof(fxRenderOptions, particleShape));
+    set20.quarterRes = 1;
+    set20.quarterResAlways = 0;  // past its size: not read
+    ASSERT_EQ(api->setRenderOptions(plugin, &set20), FX_ERROR_NONE);
+    api->getRenderOptions(plugin, &back);
+    EXPECT_EQ(back.quarterResAlways, 1);
+
+    set.quarterResAlways = 0;
+    ASSERT_EQ(api->setRenderOptions(plugin, &set), FX_ERROR_NONE);
+    api->getRenderOptions(plugin, &back);
+    EXPECT_EQ(back.quarterResAlways, 0);
+    EXPECT_TRUE(host.errors.empty());
+}
+
 }  // namespace

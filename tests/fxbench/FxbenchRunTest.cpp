@@ -88,7 +88,7 @@ TEST_P(FxbenchScenario, TinyRunWritesEveryKeyWithFiniteValues) {
     EXPECT_EQ(run["rounds"].as<int>(), 2);
     EXPECT_FALSE(run["renderer"].as<std::string>().empty());
     ASSERT_TRUE(run["modes"].IsSequence());
-    EXPECT_EQ(run["modes"].size(), 19u);  // every mode by default (lit, mega, *-zbuffer, *-linear included)
+    EXPECT_EQ(run["modes"].size(), 20u);  // every mode by default (lit, mega, *-zbuffer, *-linear included)
     for (const YAML::Node& m : run["modes"]) {
         const std::string name = m["name"].as<std::string>();
         SCOPED_TRACE(name);

@@ -73,6 +73,7 @@ Options optionsFor(const Config& c) {
     o.mode = c.mode;
     o.prepassEqual = c.equal;
     o.quarterRes = c.quarter;
+    o.quarterResAlways = c.quarter;  // the quarter-res path itself, however light the smoke
     o.bilinearUpsample = c.bilinear;
     o.mirror = c.mirror;
     o.hud = c.hud;

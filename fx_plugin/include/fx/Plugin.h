@@ -55,8 +55,14 @@ enum class Technique : uint8_t { FromReaction = 0, Hard, Soft, Spherical, Mega }
 /// Run-time switches. Defaults: every reaction draws its own technique at full resolution.
 struct RenderOptions {
     Technique techniqueOverride = Technique::FromReaction;
-    bool quarterRes = false;       ///< particles into a half x half target, depth-aware composite
+    /// Particles into a half x half target, depth-aware composite; per view, only where that costs
+    /// less than full res (the smoke overlaps itself enough to pay for the composite), else that
+    /// view is drawn at full res (since API 2.1; before, every view at quarter res).
+    bool quarterRes = false;
     bool bilinearUpsample = false; ///< quarter-res composite with plain bilinear (for comparison only)
+    /// With quarterRes: every view at quarter res, also where full res is cheaper (the 2.0
+    /// behaviour; for comparisons and tests). Since API 2.1.
+    bool quarterResAlways = false;
 };
 
 /// How billboard particles (hard, soft) are rasterised. Trimmed: per atlas frame a convex

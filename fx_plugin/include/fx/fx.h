@@ -268,12 +268,17 @@ typedef struct fxViewDesc {
 typedef struct fxRenderOptions {
     uint32_t size;
     int techniqueOverride;  /* FX_TECHNIQUE_* (0 .. FX_TECHNIQUE_MEGA), 0 = each reaction's own */
-    fxBool quarterRes;      /* 0 = full resolution; else particles into a half x half target */
+    fxBool quarterRes;      /* 0 = full resolution; else particles into a half x half target
+                             * where that is cheaper (quarterResAlways) */
     fxBool bilinearUpsample; /* quarterRes's composite with plain bilinear (comparison only); 0 = depth-aware */
     /* API 2.1 (a 2.0 host's smaller size leaves the shape as it is: setRenderOptions sets the
      * fields above only). How hard and soft billboards are rasterised (fx::ParticleShape):
      * FX_SHAPE_TRIMMED (0) a tight polygon per atlas frame, FX_SHAPE_QUAD the full quad. */
     int particleShape;
+    /* API 2.1: with quarterRes, 0 = per view, quarter res only where the smoke's overdraw pays for
+     * the composite (else that view at full resolution); else every view at quarter res (the 2.0
+     * behaviour, for comparisons). A 2.0 host's size leaves it as it is (0 unless set). */
+    fxBool quarterResAlways;
 } fxRenderOptions;
 
 typedef struct fxSceneLight {

@@ -193,13 +193,13 @@ public:
         return static_cast<ErrorCode>(api_->continueReaction(p_, index, dt, collision));
     }
     ErrorCode setRenderOptions(const RenderOptions& o) override {
-        fxRenderOptions c;
-        std::memset(&c, 0, sizeof c);
-        // RenderOptions has no shape (setParticleShape sets it): the 2.0 size leaves it as it is.
-        c.size = offsetof(fxRenderOptions, particleShape);
+        // RenderOptions has no shape (setParticleShape sets it): the running one is sent back.
+        fxRenderOptions c = fxDescInit_<fxRenderOptions>();
+        api_->getRenderOptions(p_, &c);
         c.techniqueOverride = static_cast<int>(o.techniqueOverride);
         c.quarterRes = o.quarterRes ? 1 : 0;
         c.bilinearUpsample = o.bilinearUpsample ? 1 : 0;
+        c.quarterResAlways = o.quarterResAlways ? 1 : 0;
         return static_cast<ErrorCode>(api_->setRenderOptions(p_, &c));
     }
     RenderOptions renderOptions() const override {
@@ -211,6 +211,7 @@ public:
         o.techniqueOverride = static_cast<Technique>(c.techniqueOverride);
         o.quarterRes = c.quarterRes != 0;
         o.bilinearUpsample = c.bilinearUpsample != 0;
+        o.quarterResAlways = c.quarterResAlways != 0;
         return o;
     }
     bool prepareGl(Diagnostics* out) override {

@@ -1,0 +1,74 @@
+// RenderOptions::quarterRes draws a view at quarter res only where that costs less than full res
+// (ScreenTiles.h's quarterResPays: the smoke's summed bounds against its tiles' pixels);
+// quarterResAlways forces it. Light smoke at quarter res is drawn exactly as full res draws it (the
+// same passes, the same bytes); heavy smoke takes the quarter-res passes.
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "FxTestHost.h"
+
+namespace fxtest {
+namespace quarter_res_choice_test {  // named: the fx_host tests build as unity batches
+
+constexpr int kW = 160, kH = 120;
+
+bool ran(const std::vector<std::string>& passes, const std::string& name) {
+    return std::find(passes.begin(), passes.end(), name) != passes.end();
+}
+
+class QuarterResChoiceTest : public PluginHostTest {
+protected:
+    QuarterResChoiceTest() : PluginHostTest(kW, kH) {}
+
+    void setOptions(bool quarter, bool always) {
+        fx::RenderOptions o;
+        o.techniqueOverride = fx::Technique::Soft;
+        o.quarterRes = quarter;
+        o.quarterResAlways = always;
+        ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
+        EXPECT_EQ(plugin->renderOptions().quarterResAlways, always) << "the option reads back";
+        ASSERT_TRUE(plugin->prepareGl(nullptr));
+    }
+};
+
+TEST_F(QuarterResChoiceTest, LightSmokeIsDrawnAtFullResUnlessForced) {
+    createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
+    simulate(1.0f, 6);  // a tenth of a second: a few puffs
+    const int puffs = plugin->stats().particlesAlive;
+    ASSERT_GT(puffs, 0);
+
+    setOptions(false, false);
+    const Image full = render();
+    ASSERT_GT(plugin->stats().particlesDrawn, 0) << "no smoke on screen: the comparison would prove nothing";
+    ASSERT_TRUE(ran(graph.executed(), "particles"));
+
+    setOptions(true, false);
+    const Image chosen = render();
+    EXPECT_TRUE(ran(graph.executed(), "particles")) << puffs << " puffs: full res is cheaper";
+    EXPECT_FALSE(ran(graph.executed(), "particles_quarter"));
+    EXPECT_EQ(chosen.rgba, full.rgba) << "drawn at full res: the full-res frame, byte for byte";
+
+    setOptions(true, true);
+    const Image forced = render();
+    EXPECT_TRUE(ran(graph.executed(), "particles_quarter"));
+    EXPECT_TRUE(ran(graph.executed(), "particles_composite"));
+    EXPECT_FALSE(ran(graph.executed(), "particles"));
+    EXPECT_GT(maxAbsDiff(forced, full), 0) << "forced: the half-res picture, not the full-res one";
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(QuarterResChoiceTest, HeavySmokeTakesQuarterRes) {
+    createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
+    simulate(1.0f, 240);  // four seconds of wheelspin: a bank of smoke, many layers deep
+    setOptions(true, false);
+    render();
+    ASSERT_GT(plugin->stats().particlesDrawn, 0);
+    EXPECT_TRUE(ran(graph.executed(), "particles_quarter")) << plugin->stats().particlesDrawn << " puffs drawn";
+    EXPECT_TRUE(ran(graph.executed(), "particles_composite"));
+    EXPECT_FALSE(ran(graph.executed(), "particles"));
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+}  // namespace quarter_res_choice_test
+}  // namespace fxtest
