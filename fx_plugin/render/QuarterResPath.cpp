@@ -42,7 +42,7 @@ TargetDesc targetDesc(float scale, TargetFormat format, bool linearFilter, bool 
 TargetDesc QuarterResPath::depthTargetDesc() { return targetDesc(0.5f, TargetFormat::RG32F, false, false); }
 
 TargetDesc QuarterResPath::colorTargetDesc(bool withDepth) {
-    return targetDesc(0.5f, TargetFormat::RGBA16F, true, withDepth);
+    return targetDesc(0.5f, TargetFormat::RGBA8, true, withDepth);
 }
 
 QuarterResPath::QuarterResPath(ParticleDraw& draw, SizeMismatchReport sizeMismatch)

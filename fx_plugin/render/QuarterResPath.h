@@ -1,6 +1,6 @@
 #pragma once
 // Quarter-resolution particles (RenderOptions::quarterRes; the thesis's fourth row of Table 1):
-// particles are drawn into a half-width x half-height RGBA16F target (premultiplied), then
+// particles are drawn into a half-width x half-height RGBA8 target (premultiplied), then
 // composited onto sceneColor. Three passes, each declared through FrameBuilder (declare()):
 //   particles_depth_downsample  reads sceneDepth                   writes particles_half_depth
 //   particles_quarter           reads particles_half_depth         writes particles_half_color
@@ -27,8 +27,10 @@
 // composite are drawn on ScreenTiles (16 px tiles a particle's bound touches, as runs) instead
 // of one triangle over the view, with billboards bounded by their view-plane square rather than
 // a cube; and the composite is two builds (depth-aware, bilinear) instead of one with a uniform
-// branch, which a CPU rasteriser runs both sides of. The half-res colour stays RGBA16F: an 8-bit
-// accumulation loses precision where many puffs overlap.
+// branch, which a CPU rasteriser runs both sides of. The half-res colour is RGBA8: blending
+// there costs a GPU about a fifth less than RGBA16F for a few tenths of a dB (figures in
+// docs/results.md); what it gives up is accumulation finer than 1/255 where many faint puffs
+// overlap, and additive smoke brighter than 1 in an HDR host's scene (clamped at quarter res).
 #include <memory>
 #include <string>
 #include <vector>
@@ -54,7 +56,7 @@ public:
 
     /// Half size, RG32F (min, max of each 2x2 block), nearest filtering.
     static TargetDesc depthTargetDesc();
-    /// Half size, RGBA16F, linear filtering; with its own z-buffer when `withDepth` (the
+    /// Half size, RGBA8, linear filtering; with its own z-buffer when `withDepth` (the
     /// half-res z-test, reversed-Z hosts only).
     static TargetDesc colorTargetDesc(bool withDepth = false);
 
