@@ -46,6 +46,16 @@ std::vector<int> rasterise(const ScreenTiles& tiles, bool* insideView) {
     return count;
 }
 
+// One particle at (0, 1, 0), in front of testView()'s camera, of edge `size`.
+ParticleInstance centredParticle(float size) {
+    ParticleInstance p;
+    p.x = 0.0f;
+    p.y = 1.0f;
+    p.z = 0.0f;
+    p.size = size;
+    return p;
+}
+
 // A billboard's pixel bound, computed independently of the renderer: its four view-plane
 // corners at 0.71 size from the centre (vs_particles.glsl: a rotated unit square's corners lie
 // within 0.5 sqrt(2) size), projected.
@@ -108,11 +118,7 @@ TEST(ScreenTiles, EveryPixelNearAParticleIsCoveredOnceAndRunsStayInsideTheView) 
 
 TEST(ScreenTiles, OneSmallParticleCoversOnlyItsOwnTiles) {
     const ViewInfo view = testView();
-    ParticleInstance p;
-    p.x = 0.0f;
-    p.y = 1.0f;
-    p.z = 0.0f;
-    p.size = 0.3f;
+    const ParticleInstance p = centredParticle(0.3f);
     ScreenTiles tiles;
     screenRect(view, &p, 1, &tiles, Footprint::Billboard);
     float x0, y0, x1, y1;
@@ -246,11 +252,7 @@ TEST(ScreenTiles, TheRectIsTheBoundOfTheProjectedCorners) {
 // makes the bound unbounded (quarter res pays: it may cover the view).
 TEST(ScreenTiles, FootprintPixelsAddUpAndDecideQuarterRes) {
     const ViewInfo view = testView();
-    ParticleInstance p;
-    p.x = 0.0f;
-    p.y = 1.0f;
-    p.z = 0.0f;
-    p.size = 0.5f;
+    const ParticleInstance p = centredParticle(0.5f);
     float x0, y0, x1, y1;
     billboardBound(view, p, &x0, &y0, &x1, &y1);
     const double box = double(x1 - x0) * double(y1 - y0);
