@@ -9,6 +9,7 @@
 #include "GlStateGuard.h"
 #include "ShaderLoader.h"
 #include "base/ApiErrors.h"
+#include "reactions/TechniqueTable.h"
 
 namespace fx {
 namespace {
@@ -83,7 +84,7 @@ int MegaRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, const
                                 int batchCount, const FrameSettings& settings) {
     if (state_ == State::Failed) return 0;
     std::shared_ptr<MegaCloud> record = reuseRecord(records_);
-    builder_.build(view, batches, batchCount, settings.options.techniqueOverride, techniqueBit(Technique::Mega),
+    builder_.build(view, batches, batchCount, settings.options.techniqueOverride, techniquesDrawnBy(DrawnBy::Mega),
                    &record->list);
     const int drawn = record->list.particleCount();
     if (drawn == 0) return 0;  // no Mega batch visible: nothing declared, nothing loaded

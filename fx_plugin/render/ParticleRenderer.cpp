@@ -185,19 +185,18 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     record->reversedZ = view.depth == DepthConvention::ReversedZ;
 
     // Until something is visible nothing is loaded: a scene without smoke never compiles a shader.
-    const uint32_t allTechniques = techniqueBit(Technique::Hard) | techniqueBit(Technique::Soft) |
-                                   techniqueBit(Technique::Spherical);
+    const uint32_t mine = techniquesDrawnBy(DrawnBy::Billboards);
     const RenderOptions& options = settings.options;
     const bool wasReady = state_ == State::Ready;
     bool quarterRes = options.quarterRes && (!wasReady || quarter_.ok());
-    uint32_t usable = wasReady ? draw_.programs().usableTechniques(quarterRes) : allTechniques;
+    uint32_t usable = wasReady ? draw_.programs().usableTechniques(quarterRes) & mine : mine;
     builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list);
     if (record->list.particleCount() == 0) return 0;
     if (!wasReady) {
         if (!ensureLoaded()) return 0;
         quarterRes = options.quarterRes && quarter_.ok();
-        if (draw_.programs().usableTechniques(quarterRes) != usable) {
-            usable = draw_.programs().usableTechniques(quarterRes);
+        if ((draw_.programs().usableTechniques(quarterRes) & mine) != usable) {
+            usable = draw_.programs().usableTechniques(quarterRes) & mine;
             builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list);
         }
     }
@@ -214,8 +213,8 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
         if (!options.quarterResAlways && !quarterResPays(record->rect, record->tiles)) {
             quarterRes = false;
             // A technique whose quarter-res program failed was left out; at full res it draws.
-            if (draw_.programs().usableTechniques(false) != usable) {
-                usable = draw_.programs().usableTechniques(false);
+            if ((draw_.programs().usableTechniques(false) & mine) != usable) {
+                usable = draw_.programs().usableTechniques(false) & mine;
                 builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list);
                 if (record->list.particleCount() == 0) return 0;
             }

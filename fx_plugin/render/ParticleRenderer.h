@@ -1,5 +1,5 @@
 #pragma once
-// The particle renderer behind PluginImpl's render hook: per view it records what is visible
+// The billboard renderer (one of Renderers.h's): per view it records what is visible
 // (DrawList: culled, sorted, packed instances) and hands the view to one rendering path, which
 // declares its passes through the host's FrameBuilder; the pass bodies upload the instances and
 // draw (ParticleDraw) when the host executes them. The paths: FullResPath, QuarterResPath, and

@@ -1,0 +1,84 @@
+#include "Renderers.h"
+
+#include <algorithm>
+
+#include "ProgramCache.h"
+#include "ShaderLoader.h"
+#include "ViewCheck.h"
+#include "base/ApiErrors.h"
+#include "reactions/TechniqueTable.h"
+#include "sim/ReactionRuntime.h"
+
+namespace fx {
+
+Renderers::Renderers(const RendererConfig& config)
+    : errors_(config.errors),
+      billboards_(config),
+      mega_(config),
+      stateless_(config.host, config.shaderDir),
+      immediate_(config.host, config.shaderDir) {
+    immediate_.setApiErrors(config.errors);
+}
+
+void Renderers::collectBatches(const std::vector<ReactionRuntime>& runtimes) {
+    batches_.clear();
+    for (const ReactionRuntime& r : runtimes) {
+        batches_.push_back(ParticleBatch{&r.pool(), &r.desc(), r.needsSorting(), float(r.time())});
+    }
+}
+
+bool Renderers::prepare(const std::vector<ReactionRuntime>& runtimes, const FrameSettings& settings,
+                        Diagnostics* out) {
+    const Technique override = settings.options.techniqueOverride;
+    // The override alone can ask for its renderer (mega with no mega reaction loaded).
+    bool mega = override != Technique::FromReaction && techniqueRow(override, false).drawnBy == DrawnBy::Mega;
+    bool stateless = false;
+    std::vector<int> powerSteps;  // 2 contrast_power of each power program the reactions draw with
+    for (const ReactionRuntime& r : runtimes) {
+        const TechniqueRow& row = drawnRow(r.desc().render.technique, r.stateless(), override);
+        mega = mega || row.drawnBy == DrawnBy::Mega;
+        stateless = stateless || row.drawnBy == DrawnBy::Stateless;
+        int whole = 0, half = 0;
+        if (!row.powerPrograms || !ProgramCache::halfWholePower(r.desc().render.contrastPower, &whole, &half)) continue;
+        const int s = 2 * whole + half;
+        if (std::find(powerSteps.begin(), powerSteps.end(), s) == powerSteps.end()) powerSteps.push_back(s);
+    }
+    bool ok = billboards_.prepare(out, powerSteps);
+    if (mega) ok = mega_.prepare(out) && ok;
+    if (stateless) ok = stateless_.prepare(out) && ok;
+    // The immediate path's own program too: the first renderView then compiles nothing.
+    return immediate_.prepare(out) && ok;
+}
+
+ErrorCode Renderers::declare(const ViewInfo& view, FrameBuilder& frame, const std::vector<ReactionRuntime>& runtimes,
+                             const FrameSettings& settings, int* drawn) {
+    const std::string bad = viewProblem(view);
+    if (!bad.empty()) {
+        *drawn = 0;
+        return errors_ ? errors_->refuse(ErrorCode::InvalidView, "declarePasses", bad) : ErrorCode::InvalidView;
+    }
+    FrameScope declaring(FrameScope::Declare);
+    collectBatches(runtimes);
+    const int count = static_cast<int>(batches_.size());
+    // Each batch is drawn by one renderer: each builds its list from the techniques it draws.
+    *drawn = billboards_.declarePasses(view, frame, batches_.data(), count, settings) +
+             mega_.declarePasses(view, frame, batches_.data(), count, settings) +
+             stateless_.declarePasses(view, frame, runtimes);
+    return ErrorCode::None;
+}
+
+SmokeShadow Renderers::declareShadow(const ViewInfo& view, FrameBuilder& frame,
+                                     const std::vector<ReactionRuntime>& runtimes, const FrameSettings& settings) {
+    if (!settings.light.on) return SmokeShadow{};
+    FrameScope declaring(FrameScope::Declare);
+    collectBatches(runtimes);
+    return billboards_.declareShadowPasses(view, frame, batches_.data(), static_cast<int>(batches_.size()),
+                                           settings.light);
+}
+
+bool Renderers::reload(Diagnostics* out) {
+    return billboards_.reloadShaders(out, {[this](ShaderErrorLog* e) { return mega_.rebuildShaders(e); },
+                                           [this](ShaderErrorLog* e) { return stateless_.rebuildShaders(e); }});
+}
+
+}  // namespace fx
