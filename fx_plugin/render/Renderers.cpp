@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "GlStateGuard.h"
 #include "ProgramCache.h"
 #include "ShaderLoader.h"
 #include "ViewCheck.h"
@@ -12,7 +13,7 @@
 namespace fx {
 
 Renderers::Renderers(const RendererConfig& config)
-    : errors_(config.errors),
+    : config_(config),
       billboards_(config),
       mega_(config),
       stateless_(config.host, config.shaderDir),
@@ -55,7 +56,7 @@ ErrorCode Renderers::declare(const ViewInfo& view, FrameBuilder& frame, const st
     const std::string bad = viewProblem(view);
     if (!bad.empty()) {
         *drawn = 0;
-        return errors_ ? errors_->refuse(ErrorCode::InvalidView, "declarePasses", bad) : ErrorCode::InvalidView;
+        return config_.errors ? config_.errors->refuse(ErrorCode::InvalidView, "declarePasses", bad) : ErrorCode::InvalidView;
     }
     FrameScope declaring(FrameScope::Declare);
     collectBatches(runtimes);
@@ -77,8 +78,31 @@ SmokeShadow Renderers::declareShadow(const ViewInfo& view, FrameBuilder& frame,
 }
 
 bool Renderers::reload(Diagnostics* out) {
-    return billboards_.reloadShaders(out, {[this](ShaderErrorLog* e) { return mega_.rebuildShaders(e); },
-                                           [this](ShaderErrorLog* e) { return stateless_.rebuildShaders(e); }});
+    if (!billboards_.shadersChanged()) return false;
+    GlStateGuard guard;
+    // Every technique's programs in one transaction: all go live or none, and one edit gives one
+    // line, whichever technique's file it broke.
+    ShaderErrorLog errors;
+    billboards_.stageShaders(&errors);
+    mega_.stageShaders(&errors);
+    stateless_.stageShaders(&errors);
+    if (!errors.empty()) {
+        // The staged programs are deleted; the running ones stay, so the smoke on screen does not
+        // change.
+        billboards_.dropShaders();
+        mega_.dropShaders();
+        stateless_.dropShaders();
+        logTo(config_, LogLevel::Error, "fx: particle shaders in " + config_.shaderDir +
+                                            " changed but do not build; the last good programs are kept:\n" +
+                                            errors.text());
+        if (out) addShaderDiagnostics(errors.text(), out);
+        return false;
+    }
+    billboards_.commitShaders();
+    mega_.commitShaders();
+    stateless_.commitShaders();
+    logTo(config_, LogLevel::Info, "fx: particle shaders reloaded from " + config_.shaderDir);
+    return true;
 }
 
 }  // namespace fx

@@ -61,7 +61,7 @@ private:
     /// The batches of `runtimes`, in `batches_` (its capacity kept across views).
     void collectBatches(const std::vector<ReactionRuntime>& runtimes);
 
-    ApiErrors* errors_;
+    RendererConfig config_;
     ParticleRenderer billboards_;
     MegaRenderer mega_;
     StatelessRenderer stateless_;
