@@ -44,7 +44,8 @@
 //
 // RenderOptions::quarterRes does not apply (mega.resolution is the technique's own). Live shader
 // edits (Plugin::pollShaderReload) rebuild the mega programs with the billboard ones, in one
-// transaction (rebuildShaders): a broken mega file keeps every last good program and is reported.
+// transaction (stageShaders, Renderers::reload): a broken mega file keeps every last good
+// program and is reported.
 //
 // The noise is animated by the first Mega batch's simulation clock (ParticleBatch::time): two
 // frames of a paused simulation from a still camera are byte-identical.

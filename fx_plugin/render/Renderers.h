@@ -50,7 +50,11 @@ public:
     SmokeShadow declareShadow(const ViewInfo& view, FrameBuilder& frame, const std::vector<ReactionRuntime>& runtimes,
                               const FrameSettings& settings);
 
-    /// Plugin::pollShaderReload: one edit, one transaction over every technique's programs.
+    /// Plugin::pollShaderReload, with Config::shaderDir set and the billboards loaded: when a
+    /// plugin shader file there changed since the running programs were built, every renderer
+    /// builds its programs anew; all build -> they all go live (true); any fails -> every running
+    /// program stays, the failure is logged once for this edit (each distinct line once) and
+    /// appended to `out`, false.
     bool reload(Diagnostics* out);
 
     /// The immediate path (Plugin::renderView): its render() declares through declare().

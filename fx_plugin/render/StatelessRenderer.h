@@ -10,7 +10,7 @@
 // call runs inside a GlStateGuard. The program is built by prepare() (Plugin::prepareGl, when a
 // stateless reaction is loaded) or at the first draw; one that fails to build is reported once
 // through the host's log and the pass draws nothing; the other techniques are unaffected. Live
-// shader edits rebuild it with the other particle programs (rebuildShaders).
+// shader edits rebuild it with the other particle programs (stageShaders, Renderers::reload).
 #include <cstdint>
 #include <memory>
 #include <string>
