@@ -31,14 +31,18 @@ void Renderers::collectBatches(const std::vector<ReactionRuntime>& runtimes) {
 bool Renderers::prepare(const std::vector<ReactionRuntime>& runtimes, const FrameSettings& settings,
                         Diagnostics* out) {
     const Technique override = settings.options.techniqueOverride;
-    // The override alone can ask for its renderer (mega with no mega reaction loaded).
-    bool mega = override != Technique::FromReaction && techniqueRow(override, false).drawnBy == DrawnBy::Mega;
-    bool stateless = false;
-    std::vector<int> powerSteps;  // 2 contrast_power of each power program the reactions draw with
-    for (const ReactionRuntime& r : runtimes) {
-        const TechniqueRow& row = drawnRow(r.desc().render.technique, r.stateless(), override);
+    bool mega = false, stateless = false;
+    auto wants = [&](const TechniqueRow& row) {
         mega = mega || row.drawnBy == DrawnBy::Mega;
         stateless = stateless || row.drawnBy == DrawnBy::Stateless;
+    };
+    // The override's renderer (mega with no mega reaction loaded), and each reaction's own even
+    // under an override, so that switching the override back draws without a build.
+    if (override != Technique::FromReaction) wants(techniqueRow(override, false));
+    std::vector<int> powerSteps;  // 2 contrast_power of each power program the reactions draw with
+    for (const ReactionRuntime& r : runtimes) {
+        wants(techniqueRow(r.desc().render.technique, r.stateless()));
+        const TechniqueRow& row = drawnRow(r.desc().render.technique, r.stateless(), override);
         int whole = 0, half = 0;
         if (!row.powerPrograms || !ProgramCache::halfWholePower(r.desc().render.contrastPower, &whole, &half)) continue;
         const int s = 2 * whole + half;
