@@ -82,12 +82,12 @@ public:
 
     /// Draws the passes `renderers` declare for `runtimes` under `settings` (Renderers::declare
     /// with this renderer's frame graph, then the running passes in order); `*drawn` (when given)
-    /// as Renderers::declare sets it, untouched when refused before declaring. Refused, nothing drawn: InvalidValue (a depth source
-    /// outside the enum, an invalid mapping), NullArgument (no texture for LinearR32F /
-    /// DepthTexture), InvalidView (as
-    /// declarePasses), UnsupportedDepth (a texture of a
-    /// format it cannot read, a bound framebuffer without a depth attachment), SizeMismatch (a
-    /// host texture neither of the view's size nor covering the view at the viewport's origin),
+    /// as Renderers::declare sets it, untouched when refused before declaring. Refused, nothing
+    /// drawn: InvalidValue (a depth source outside the enum, an invalid mapping), NullArgument
+    /// (no texture for LinearR32F / DepthTexture), InvalidView (as declarePasses),
+    /// UnsupportedDepth (a texture of a format it cannot read, a bound framebuffer without a
+    /// depth attachment), SizeMismatch (a host texture neither of the view's size nor covering
+    /// the view at the viewport's origin),
     /// NoGlContext. Refusals are logged like the plugin's API errors. A linearise program that
     /// does not build is logged (ShaderBuild, also in lastError()); that frame draws as with no depth.
     ErrorCode render(Renderers& renderers, const std::vector<ReactionRuntime>& runtimes,
