@@ -9,8 +9,9 @@
 //    (ReactionRuntime::needsSorting: sorted alpha blending), pool order otherwise (additive);
 //    reactions are drawn in reaction order (no sorting across reactions);
 //  - technique: RenderOptions::techniqueOverride, else the reaction's render.technique;
-//    batches whose technique has no working program are left out (the billboard renderer never
-//    lists Mega as usable, MegaRenderer lists only Mega: each batch is drawn by one of them).
+//    batches whose technique is not in the caller's usable mask are left out (each renderer
+//    passes the techniques the technique table gives it, TechniqueRow::drawnBy, less those
+//    without a working program: each batch is drawn by one of them).
 #include <cstdint>
 #include <vector>
 
@@ -23,7 +24,7 @@
 
 namespace fx {
 
-/// One reaction's particles as the renderer takes them (what the render hook hands over).
+/// One reaction's particles as the renderer takes them (Renderers collects one per runtime for each view).
 struct ParticleBatch {
     const ParticlePool* pool = nullptr;
     const ReactionDesc* desc = nullptr;  ///< render settings and particle.colorRamp

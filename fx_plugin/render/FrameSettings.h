@@ -1,8 +1,8 @@
 #pragma once
-// Everything the plugin's switches say about how this frame's particles are drawn, read once per
-// frame (the render hook fills it from the plugin's options) and handed to every rendering path
-// by value. No path reads a switch anywhere else, so a frame is drawn under one set of settings
-// even when a setter is called while its passes are pending.
+// Everything the plugin's switches say about how this frame's particles are drawn: PluginImpl's
+// setters write its one copy, and each drawing call hands it to every rendering path by value.
+// No path reads a switch anywhere else, so a frame is drawn under one set of settings even when
+// a setter is called while its passes are pending.
 #include "LightState.h"
 #include "fx/Plugin.h"
 

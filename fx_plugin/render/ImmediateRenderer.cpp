@@ -4,6 +4,7 @@
 #include "GlStateGuard.h"
 #include "ImmediateFrame.h"
 #include "PrivateGl.h"
+#include "Renderers.h"
 #include "ShaderLoader.h"
 
 #include <string>
@@ -66,7 +67,8 @@ ErrorCode ImmediateRenderer::refuse(ErrorCode code, const std::string& what) {
     return code;
 }
 
-ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
+ErrorCode ImmediateRenderer::render(Renderers& renderers, const std::vector<ReactionRuntime>& runtimes,
+                                    const FrameSettings& settings, const ImmediateView& in, int* drawn) {
     using Source = ImmediateView::DepthSource;
     lastPasses_.clear();
     lastError_.clear();
@@ -209,7 +211,8 @@ ErrorCode ImmediateRenderer::render(Plugin& plugin, const ImmediateView& in) {
     };
     pool_.beginFrame();
     ImmediateFrame frame(pool_, std::move(setup));
-    const ErrorCode declared = plugin.declarePasses(view, frame);
+    int declaredDrawn = 0;
+    const ErrorCode declared = renderers.declare(view, frame, runtimes, settings, drawn ? drawn : &declaredDrawn);
     if (declared == ErrorCode::None && !frame.empty()) {
         // The linearise program: built by prepare() (prepareGl); for a host that skipped it, here,
         // before any pass (a scene without smoke compiles nothing).

@@ -47,6 +47,10 @@
 
 namespace fx {
 
+class Renderers;
+class ReactionRuntime;
+struct FrameSettings;
+
 /// One view for ImmediateRenderer::render. Right-handed (the C layer converts left-handed hosts).
 /// Defaults: no depth (soft and spherical particles then fade against nothing), GL's depth mapping.
 struct ImmediateView {
@@ -76,16 +80,18 @@ public:
     ImmediateRenderer(const ImmediateRenderer&) = delete;
     ImmediateRenderer& operator=(const ImmediateRenderer&) = delete;
 
-    /// Draws `plugin`'s passes for `view` (Plugin::declarePasses with this renderer's frame graph,
-    /// then the running passes in order). Refused, nothing drawn: InvalidValue (a depth source
-    /// outside the enum, an invalid mapping), NullArgument (no texture for LinearR32F /
-    /// DepthTexture), InvalidView (as
-    /// declarePasses), UnsupportedDepth (a texture of a
-    /// format it cannot read, a bound framebuffer without a depth attachment), SizeMismatch (a
-    /// host texture neither of the view's size nor covering the view at the viewport's origin),
+    /// Draws the passes `renderers` declare for `runtimes` under `settings` (Renderers::declare
+    /// with this renderer's frame graph, then the running passes in order); `*drawn` (when given)
+    /// as Renderers::declare sets it, untouched when refused before declaring. Refused, nothing
+    /// drawn: InvalidValue (a depth source outside the enum, an invalid mapping), NullArgument
+    /// (no texture for LinearR32F / DepthTexture), InvalidView (as declarePasses),
+    /// UnsupportedDepth (a texture of a format it cannot read, a bound framebuffer without a
+    /// depth attachment), SizeMismatch (a host texture neither of the view's size nor covering
+    /// the view at the viewport's origin),
     /// NoGlContext. Refusals are logged like the plugin's API errors. A linearise program that
     /// does not build is logged (ShaderBuild, also in lastError()); that frame draws as with no depth.
-    ErrorCode render(Plugin& plugin, const ImmediateView& view);
+    ErrorCode render(Renderers& renderers, const std::vector<ReactionRuntime>& runtimes,
+                     const FrameSettings& settings, const ImmediateView& view, int* drawn = nullptr);
     /// Refusals go to `errors` under "renderView" (counted in Stats::apiErrors, repeats limited)
     /// instead of straight to the host's log. Null: the log.
     void setApiErrors(ApiErrors* errors) { errors_ = errors; }

@@ -9,6 +9,7 @@
 #include "GlStateGuard.h"
 #include "ShaderLoader.h"
 #include "base/ApiErrors.h"
+#include "reactions/TechniqueTable.h"
 
 namespace fx {
 namespace {
@@ -61,16 +62,18 @@ bool MegaRenderer::ensureLoaded() {
     return true;
 }
 
-std::function<void()> MegaRenderer::rebuildShaders(ShaderErrorLog* errors) {
+void MegaRenderer::stageShaders(ShaderErrorLog* errors) {
     // Built whether or not mega is in use, so a broken mega file is reported at the edit and not
     // later, when a reaction or the override first asks for mega; made live only when loaded.
-    auto next = std::make_shared<std::unique_ptr<MegaPrograms>>(std::make_unique<MegaPrograms>());
+    auto next = std::make_unique<MegaPrograms>();
     std::vector<std::string> failed;
-    (*next)->build(config_.shaderDir, &failed);
+    next->build(config_.shaderDir, &failed);
     for (const std::string& e : failed) errors->add(e);
-    if (!failed.empty() || state_ != State::Ready) return {};  // deleted here, with `next`
-    // After the swap `next` holds the old programs: deleted when the caller drops the function.
-    return [this, next]() { *next = passes_.swapPrograms(std::move(*next)); };
+    if (failed.empty() && state_ == State::Ready) staged_ = std::move(next);  // else deleted here
+}
+
+void MegaRenderer::commitShaders() {
+    if (staged_) passes_.swapPrograms(std::move(staged_));  // the old set, deleted here
 }
 
 bool MegaRenderer::prepare(Diagnostics* out) {
@@ -83,7 +86,7 @@ int MegaRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, const
                                 int batchCount, const FrameSettings& settings) {
     if (state_ == State::Failed) return 0;
     std::shared_ptr<MegaCloud> record = reuseRecord(records_);
-    builder_.build(view, batches, batchCount, settings.options.techniqueOverride, techniqueBit(Technique::Mega),
+    builder_.build(view, batches, batchCount, settings.options.techniqueOverride, techniquesDrawnBy(DrawnBy::Mega),
                    &record->list);
     const int drawn = record->list.particleCount();
     if (drawn == 0) return 0;  // no Mega batch visible: nothing declared, nothing loaded

@@ -44,7 +44,8 @@
 //
 // RenderOptions::quarterRes does not apply (mega.resolution is the technique's own). Live shader
 // edits (Plugin::pollShaderReload) rebuild the mega programs with the billboard ones, in one
-// transaction (rebuildShaders): a broken mega file keeps every last good program and is reported.
+// transaction (stageShaders, Renderers::reload): a broken mega file keeps every last good
+// program and is reported.
 //
 // The noise is animated by the first Mega batch's simulation clock (ParticleBatch::time): two
 // frames of a paused simulation from a still camera are byte-identical.
@@ -54,7 +55,6 @@
 // ends. A shader that fails to build is logged ("file:line: message") and Mega batches are then
 // not drawn. No z-buffer of the host is used: every depth test compares linear depths, so the
 // technique works alike under standard and reversed-Z.
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -94,11 +94,14 @@ public:
 
     /// Builds the programs now (Plugin::prepareGl); false with the problems appended to `out`.
     bool prepare(Diagnostics* out);
-    /// A shader reload's mega part (ParticleRenderer::ShaderRebuild): builds the five programs
-    /// from the folder's current files, adds failures to `errors`, and returns the swap that
-    /// makes them live (empty when any failed, or when mega is not loaded: then the build only
-    /// checked the files, so a broken mega edit is reported at once). Context current.
-    std::function<void()> rebuildShaders(ShaderErrorLog* errors);
+    /// A shader reload's mega part (Renderers::reload): builds the five programs from the
+    /// folder's current files and adds failures to `errors`; they are staged only when all built
+    /// and mega is loaded (else the build only checked the files, so a broken mega edit is
+    /// reported at once). commitShaders makes the staged set live, dropShaders deletes it.
+    /// Context current.
+    void stageShaders(ShaderErrorLog* errors);
+    void commitShaders();
+    void dropShaders() { staged_.reset(); }
     bool ready() const { return state_ == State::Ready; }
 
 private:
@@ -111,6 +114,7 @@ private:
     State state_ = State::Unloaded;
     Diagnostics loadDiagnostics_;
     MegaPasses passes_;
+    std::unique_ptr<MegaPrograms> staged_;  ///< a reload's programs until commitShaders
     DrawListBuilder builder_;
     std::vector<std::shared_ptr<MegaCloud>> records_;
 };

@@ -62,14 +62,16 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
     const float lodScale = float(atlas_.cellTexels()) * pixelSlope;
     const ProgramCache& programs = *programs_;
     for (const DrawBatch& batch : list.batches) {
-        const ProgramCache::Variant variant =
-            ProgramCache::variantFor(batch.technique, in.quarterRes, batch.contrastPower);
-        // Lit when the host set a light and the reaction takes it; unlit if the lit build failed.
-        const bool lit = record.lit() && batch.lighting.lit(batch.blend) && programs.get(variant, true).program;
-        // Soft batches take their contrast power's own build; nothing here compiles (the cache
-        // was filled by prepare() or before the passes: ParticleRenderer::ensureDrawPrograms).
-        const ParticleProgram& p = programs.get(variant, lit, batch.contrastPower);
-        if (!p.program) continue;
+        // Lit when the host set a light and the reaction takes it. The cache reduces the key to a
+        // program it built (unlit if the lit build failed, the general soft build if the power's
+        // own did); nothing here compiles (the cache was filled by prepare() or before the
+        // passes: ParticleRenderer::ensureDrawPrograms).
+        const ProgramCache::Key key = programs.filter(ProgramCache::drawKey(
+            batch.technique, in.quarterRes, batch.contrastPower, record.lit() && batch.lighting.lit(batch.blend)));
+        const ParticleProgram* found = programs.find(key);
+        if (!found) continue;
+        const ParticleProgram& p = *found;
+        const bool lit = key.lit;
         if (record.lit()) bindTextureUnit(kAtlasUnit, lit ? atlas_.litTexture() : atlas_.texture());
         // Full resolution tests against the host's z-buffer without writing it. Hard particles
         // always do (that is their look). Soft and spherical ones only skip fragments there that
@@ -116,7 +118,7 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
         // around the sphere where its bounds do not hold: vs_particles.glsl).
         glUniform1i(p.trimmed, trimmed ? 1 : 0);
         if (trimmed) {
-            const bool sphere = variant == ProgramCache::Spherical;
+            const bool sphere = key.variant == ProgramCache::Spherical;
             const std::vector<glm::vec4>& table = sphere ? discTable_ : shapeTable_;
             glUniform1i(p.shapeBuckets, atlas_.shapes().buckets());
             glUniform1f(p.lodScale, lodScale);

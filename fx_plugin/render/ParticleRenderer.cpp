@@ -89,44 +89,38 @@ bool ParticleRenderer::ensureLoaded() {
     return true;
 }
 
-bool ParticleRenderer::reloadShaders(Diagnostics* out, const std::vector<ShaderRebuild>& others) {
+bool ParticleRenderer::shadersChanged() {
     if (config_.shaderDir.empty() || state_ != State::Ready) return false;
     const uint64_t stamp = shaderStamp(config_.shaderDir);
     if (stamp == shaderStamp_) return false;
     shaderStamp_ = stamp;  // one attempt (and one message) per edit
-    GlStateGuard guard;
-    auto programs = std::make_unique<ProgramCache>(snapshotShaderReader(shaderReader(config_.shaderDir)));
-    auto quarter = std::make_unique<QuarterResPrograms>();
-    auto opacity = std::make_unique<SmokeOpacityMap>();
-    std::vector<std::string> errors;
+    return true;
+}
+
+void ParticleRenderer::stageShaders(ShaderErrorLog* errors) {
+    stagedPrograms_ = std::make_unique<ProgramCache>(snapshotShaderReader(shaderReader(config_.shaderDir)));
+    stagedQuarter_ = std::make_unique<QuarterResPrograms>();
+    stagedOpacity_ = std::make_unique<SmokeOpacityMap>();
+    std::vector<std::string> failed;
     // The same variants as the running cache (every key it tried), so nothing is missing after
     // the swap.
-    programs->build(draw_.programs().keys(), &errors);
-    quarter->build(config_.shaderDir, &errors);
-    opacity->build(config_.shaderDir, &errors);
-    ShaderErrorLog unique;
-    for (const std::string& e : errors) unique.add(e);
-    // The other techniques' programs (mega, stateless) in the same transaction: all go live or
-    // none, and one edit gives one line, whichever technique's file it broke.
-    std::vector<std::function<void()>> commits;
-    for (const ShaderRebuild& other : others) {
-        if (std::function<void()> commit = other(&unique)) commits.push_back(std::move(commit));
-    }
-    if (!unique.empty()) {
-        // The new programs are dropped (their destructors delete what did build; each other
-        // renderer dropped its own); the running ones stay, so the smoke on screen does not change.
-        log(LogLevel::Error, "fx: particle shaders in " + config_.shaderDir +
-                                 " changed but do not build; the last good programs are kept:\n" + unique.text());
-        if (out) addShaderDiagnostics(unique.text(), out);
-        return false;
-    }
-    // Each swap hands back the old set, deleted here inside the guard.
-    draw_.swapPrograms(std::move(programs));
-    quarter_.swapPrograms(std::move(quarter));
-    opacity_ = std::move(opacity);
-    for (const std::function<void()>& commit : commits) commit();
-    log(LogLevel::Info, "fx: particle shaders reloaded from " + config_.shaderDir);
-    return true;
+    stagedPrograms_->build(draw_.programs().keys(), &failed);
+    stagedQuarter_->build(config_.shaderDir, &failed);
+    stagedOpacity_->build(config_.shaderDir, &failed);
+    for (const std::string& e : failed) errors->add(e);
+}
+
+void ParticleRenderer::commitShaders() {
+    // Each swap hands back the old set, deleted here (the caller holds a GlStateGuard).
+    draw_.swapPrograms(std::move(stagedPrograms_));
+    quarter_.swapPrograms(std::move(stagedQuarter_));
+    opacity_ = std::move(stagedOpacity_);
+}
+
+void ParticleRenderer::dropShaders() {
+    stagedPrograms_.reset();
+    stagedQuarter_.reset();
+    stagedOpacity_.reset();
 }
 
 bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps) {
@@ -185,19 +179,18 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     record->reversedZ = view.depth == DepthConvention::ReversedZ;
 
     // Until something is visible nothing is loaded: a scene without smoke never compiles a shader.
-    const uint32_t allTechniques = techniqueBit(Technique::Hard) | techniqueBit(Technique::Soft) |
-                                   techniqueBit(Technique::Spherical);
+    const uint32_t mine = techniquesDrawnBy(DrawnBy::Billboards);
     const RenderOptions& options = settings.options;
     const bool wasReady = state_ == State::Ready;
     bool quarterRes = options.quarterRes && (!wasReady || quarter_.ok());
-    uint32_t usable = wasReady ? draw_.programs().usableTechniques(quarterRes) : allTechniques;
+    uint32_t usable = wasReady ? draw_.programs().usableTechniques(quarterRes) & mine : mine;
     builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list);
     if (record->list.particleCount() == 0) return 0;
     if (!wasReady) {
         if (!ensureLoaded()) return 0;
         quarterRes = options.quarterRes && quarter_.ok();
-        if (draw_.programs().usableTechniques(quarterRes) != usable) {
-            usable = draw_.programs().usableTechniques(quarterRes);
+        if ((draw_.programs().usableTechniques(quarterRes) & mine) != usable) {
+            usable = draw_.programs().usableTechniques(quarterRes) & mine;
             builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list);
         }
     }
@@ -214,8 +207,8 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
         if (!options.quarterResAlways && !quarterResPays(record->rect, record->tiles)) {
             quarterRes = false;
             // A technique whose quarter-res program failed was left out; at full res it draws.
-            if (draw_.programs().usableTechniques(false) != usable) {
-                usable = draw_.programs().usableTechniques(false);
+            if ((draw_.programs().usableTechniques(false) & mine) != usable) {
+                usable = draw_.programs().usableTechniques(false) & mine;
                 builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list);
                 if (record->list.particleCount() == 0) return 0;
             }

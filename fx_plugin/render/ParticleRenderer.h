@@ -1,5 +1,5 @@
 #pragma once
-// The particle renderer behind PluginImpl's render hook: per view it records what is visible
+// The billboard renderer (one of Renderers.h's): per view it records what is visible
 // (DrawList: culled, sorted, packed instances) and hands the view to one rendering path, which
 // declares its passes through the host's FrameBuilder; the pass bodies upload the instances and
 // draw (ParticleDraw) when the host executes them. The paths: FullResPath, QuarterResPath, and
@@ -39,7 +39,6 @@
 // under reversed-Z every technique also tests a half-res z-buffer of each 2x2 block's farthest
 // depth (QuarterResPath::beginQuarter); under standard depth nothing there is z-tested.
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -82,18 +81,16 @@ public:
     /// "file:line: message" is logged once.
     bool prepare(Diagnostics* out, const std::vector<int>& powerSteps = {});
 
-    /// Another renderer's part of a shader reload: builds its programs from the folder's current
-    /// files, adds every failure to the log, and returns what makes them live (empty: nothing to
-    /// swap). Its new programs are dropped when the returned function is dropped uncalled.
-    using ShaderRebuild = std::function<std::function<void()>(ShaderErrorLog*)>;
-
-    /// With Config::shaderDir set and the renderer loaded: when a plugin shader file there
-    /// ("particles" or "mega" in its name) changed since the running programs were built, builds
-    /// new programs, this renderer's and each of `others`'; all build -> they all go live
-    /// (true); any fails -> every running program stays, the failure is logged once for this
-    /// edit (each distinct line once) and appended to `out`, false. Needs the host's context
-    /// current.
-    bool reloadShaders(Diagnostics* out, const std::vector<ShaderRebuild>& others = {});
+    /// A shader reload (Renderers::reload, one transaction over every renderer): true, once per
+    /// edit, when Config::shaderDir is set, the renderer is loaded and a plugin shader file there
+    /// ("particles" or "mega" in its name) changed since the running programs were built.
+    bool shadersChanged();
+    /// Builds this renderer's programs from the folder's current files into a staged set (the
+    /// same variants as the running cache), failures added to `errors`. Context current.
+    void stageShaders(ShaderErrorLog* errors);
+    /// The staged set goes live (the running one is deleted), or is deleted. Context current.
+    void commitShaders();
+    void dropShaders();
 
     /// Plugin::declareShadowPasses: with `light` on and shadow casters alive, declares the
     /// opacity map's pass and returns its target; the next declarePasses reuses it.
@@ -133,6 +130,10 @@ private:
                                  ///< into the host's frame graph (never by renderView's own frame)
     bool normalsWarned_ = false;
     uint64_t shaderStamp_ = 0;  ///< shaderStamp() when the running programs were built
+    // A reload's staged programs (stageShaders), live at commitShaders.
+    std::unique_ptr<ProgramCache> stagedPrograms_;
+    std::unique_ptr<QuarterResPrograms> stagedQuarter_;
+    std::unique_ptr<SmokeOpacityMap> stagedOpacity_;
     DrawListBuilder builder_;
     std::vector<std::shared_ptr<ParticleView>> records_;
     std::vector<std::shared_ptr<SmokeOpacityMap::Casters>> opacityRecords_;  ///< one per map until its pass ran

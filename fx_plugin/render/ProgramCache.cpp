@@ -119,11 +119,25 @@ const ParticleProgram& ProgramCache::get(Variant v, bool lit) const {
 }
 
 const ParticleProgram& ProgramCache::get(Variant v, bool lit, float contrastPower) const {
-    const ParticleProgram& general = get(v, lit);
     int whole = 0, half = 0;
-    if (v != Soft || !general.program || !halfWholePower(contrastPower, &whole, &half)) return general;
-    const ParticleProgram* own = find(Key{v, lit, 2 * whole + half});
-    return own ? *own : general;
+    const int steps = v == Soft && halfWholePower(contrastPower, &whole, &half) ? 2 * whole + half : -1;
+    const ParticleProgram* p = find(filter(Key{v, lit, steps}));
+    return p ? *p : kNone;
+}
+
+ProgramCache::Key ProgramCache::drawKey(Technique technique, bool quarterRes, float contrastPower, bool lit) {
+    const Variant v = variantFor(technique, quarterRes, contrastPower);
+    int whole = 0, half = 0;
+    const int steps = v == Soft && halfWholePower(contrastPower, &whole, &half) ? 2 * whole + half : -1;
+    return Key{v, lit, steps};
+}
+
+ProgramCache::Key ProgramCache::filter(Key wanted) const {
+    if (wanted.lit && !find(Key{wanted.variant, true, -1})) wanted.lit = false;
+    const Key general{wanted.variant, wanted.lit, -1};
+    // A power's own build stands in for nothing when the variant's general one is missing.
+    if (wanted.powerSteps < 0 || !find(general) || !find(wanted)) return general;
+    return wanted;
 }
 
 std::vector<ProgramCache::Key> ProgramCache::techniqueKeys() {
@@ -135,12 +149,10 @@ std::vector<ProgramCache::Key> ProgramCache::techniqueKeys() {
 }
 
 void ProgramCache::addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys) {
-    const Variant v = variantFor(technique, quarterRes, contrastPower);
-    int whole = 0, half = 0;
-    const int steps = v == Soft && halfWholePower(contrastPower, &whole, &half) ? 2 * whole + half : -1;
     for (bool lit : {false, true}) {
-        addOnce(Key{v, lit, -1}, keys);
-        if (steps >= 0) addOnce(Key{v, lit, steps}, keys);
+        const Key key = drawKey(technique, quarterRes, contrastPower, lit);
+        addOnce(Key{key.variant, lit, -1}, keys);
+        if (key.powerSteps >= 0) addOnce(key, keys);
     }
 }
 

@@ -22,9 +22,11 @@
 //    message" lines) and the key stays unbuilt; the other keys still build.
 //  - Every build of one cache reads the one snapshot it was made with (ShaderLoader.h): a
 //    variant built later is built from the files that went live, never a later broken edit.
-//  - get(v, lit, power) falls back to the variant's general build where the power's own was not
-//    built (or failed), and returns a program 0 where the variant itself did not build: its
-//    technique is not drawn (usableTechniques), the others still are.
+//  - A draw asks for drawKey() of its batch, filtered to the programs that exist (filter(), after
+//    Filament's filterVariant): unlit where the variant's lit build is missing, the variant's
+//    general build where the power's own is missing; no key where the variant itself did not
+//    build: its technique is not drawn (usableTechniques), the others still are. The fallback
+//    lives there alone; find() of the filtered key is the program.
 //  - Changes no bound GL state (no glUseProgram); deletes every program it built.
 #include <cstdint>
 #include <string>
@@ -88,9 +90,14 @@ public:
     bool tried(const Key& key) const { return tried_.count(key.bits()) != 0; }
     /// The variant's general build (program 0 when it did not build). Never builds.
     const ParticleProgram& get(Variant v, bool lit = false) const;
-    /// The program that draws a batch of `v` with `contrastPower`: for Soft with a whole or
-    /// half-whole power, that power's own build where it was built, else get(v, lit).
+    /// find(filter(...)) of a batch of `v` with `contrastPower` (program 0 where none exists).
     const ParticleProgram& get(Variant v, bool lit, float contrastPower) const;
+    /// The key a batch of `technique` with `contrastPower` asks for: its variant, `lit`, and for
+    /// Soft with a whole or half-whole power that power's folded build. Not filtered.
+    static Key drawKey(Technique technique, bool quarterRes, float contrastPower, bool lit);
+    /// `wanted` reduced to a program that was built (see the contract above); a key find() gives
+    /// null for where the variant's general build is missing. Never builds.
+    Key filter(Key wanted) const;
     /// Every key tried (built or failed), in the order tried: a reload builds the same set anew.
     const std::vector<Key>& keys() const { return order_; }
     /// techniqueBit() mask of the techniques drawable on a full-res or a quarter-res target.

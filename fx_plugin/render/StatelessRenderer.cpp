@@ -136,31 +136,29 @@ bool StatelessRenderer::prepare(Diagnostics* out) {
     return ok;
 }
 
-std::function<void()> StatelessRenderer::rebuildShaders(ShaderErrorLog* errors) {
+void StatelessRenderer::stageShaders(ShaderErrorLog* errors) {
     std::string error;
     const GLuint program =
         buildProgram(shaderDir_, "vs_stateless_particles.glsl", "fs_stateless_particles.glsl", "", &error);
     if (!program) {
         errors->add(error);
-        return {};
+        return;
     }
     if (!gpu_) {  // not in use: the build only checked the files
         glDeleteProgram(program);
-        return {};
+        return;
     }
-    // Made live only with every other program of the edit; deleted if that never happens.
-    struct Owned {
-        GLuint program = 0;
-        ~Owned() {
-            if (program) glDeleteProgram(program);
-        }
-    };
-    auto owned = std::make_shared<Owned>();  // never copied: one owner deletes it
-    owned->program = program;
-    return [this, owned]() {
-        adopt(owned->program);
-        owned->program = 0;
-    };
+    staged_ = program;  // made live only with every other program of the edit
+}
+
+void StatelessRenderer::commitShaders() {
+    if (staged_) adopt(staged_);
+    staged_ = 0;
+}
+
+void StatelessRenderer::dropShaders() {
+    if (staged_) glDeleteProgram(staged_);
+    staged_ = 0;
 }
 
 void StatelessRenderer::draw(const ViewInfo& view, const std::vector<Draw>& draws, const HostClip& clip) {

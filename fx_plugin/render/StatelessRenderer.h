@@ -10,9 +10,8 @@
 // call runs inside a GlStateGuard. The program is built by prepare() (Plugin::prepareGl, when a
 // stateless reaction is loaded) or at the first draw; one that fails to build is reported once
 // through the host's log and the pass draws nothing; the other techniques are unaffected. Live
-// shader edits rebuild it with the other particle programs (rebuildShaders).
+// shader edits rebuild it with the other particle programs (stageShaders, Renderers::reload).
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,11 +42,13 @@ public:
     /// the build's "file:line: message" lines appended to `out` (logged once, as at a draw).
     /// Context current.
     bool prepare(Diagnostics* out);
-    /// A shader reload's stateless part (ParticleRenderer::ShaderRebuild): builds the program
-    /// from the folder's current files, adds a failure to `errors`, and returns what makes it
-    /// live (empty when it failed, or when nothing stateless was ever drawn or prepared: then
-    /// the build only checked the files). Context current.
-    std::function<void()> rebuildShaders(ShaderErrorLog* errors);
+    /// A shader reload's stateless part (Renderers::reload): builds the program from the
+    /// folder's current files and adds a failure to `errors`; it is staged only when it built and
+    /// something stateless was drawn or prepared (else the build only checked the files).
+    /// commitShaders makes it live, dropShaders deletes it. Context current.
+    void stageShaders(ShaderErrorLog* errors);
+    void commitShaders();
+    void dropShaders();
 
     static constexpr const char* kPass = "particles_stateless";
 
@@ -63,6 +64,7 @@ private:
     std::string shaderDir_;
     std::string error_;  ///< the failed build's message (prepare() hands it out)
     std::unique_ptr<Gpu> gpu_;
+    uint32_t staged_ = 0;  ///< a reload's program until commitShaders
 };
 
 }  // namespace fx

@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "CApiEntries.h"
-#include "InstallParticleRenderer.h"
 #include "../reactions/ReactionDesc.h"
 #include "../render/PrivateGlLoader.h"
 #include "WorldBasis.h"
@@ -143,7 +142,7 @@ fxPlugin* create(const fxPluginDesc* desc, int* error) {
     imports.dataDir = desc->dataDir ? desc->dataDir : "";
     imports.seed = desc->seed;
     plugin->impl = std::make_unique<PluginImpl>(imports);
-    installParticleRenderer(*plugin->impl, imports.dataDir);
+    plugin->impl->installRenderers(imports.dataDir);
     plugin->schema = plugin->impl->reactionSchema();
     for (const ReactionKeyInfo& k : plugin->schema) {
         std::vector<const char*> choices;

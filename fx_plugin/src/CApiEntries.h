@@ -13,15 +13,11 @@
 #include "fx/fx.h"
 #include "CApiBridge.h"
 #include "PluginImpl.h"
-#include "../render/ImmediateRenderer.h"
 
 struct fxPlugin {
     fx::UpAxis up;  // the host world's up axis: turned at this boundary (WorldBasis.h)
     fx::CHostAdapter host;
     std::unique_ptr<fx::PluginImpl> impl;
-    // The immediate path's frame graph, target pool and depth copy (fxApi::renderView); made on
-    // first use, freed (with the context current) when the plugin is destroyed.
-    std::unique_ptr<fx::ImmediateRenderer> immediate;
     // The schema as C structs; its strings point into `schema`, both live as long as the plugin.
     std::vector<fx::ReactionKeyInfo> schema;
     std::vector<std::vector<const char*>> schemaChoices;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "CApiEntries.h"
+#include "../render/ImmediateRenderer.h"
 #include "../render/PrivateGlLoader.h"
 #include "WorldBasis.h"
 
@@ -18,15 +19,6 @@ namespace {
 // API 2.0's fxViewDesc ended with depthRangeFar; 2.1 appended the viewport fields. A 2.0 host's
 // descriptor is read up to its size, the rest as 0.
 constexpr size_t kViewDescSize20 = offsetof(fxViewDesc, viewportX);
-
-// The immediate path's renderer, made at its first use (prepareGl or renderView).
-ImmediateRenderer& immediate(fxPlugin* p) {
-    if (!p->immediate) {
-        p->immediate = std::make_unique<ImmediateRenderer>(&p->host, p->impl->shaderDir());
-        p->immediate->setApiErrors(&p->impl->apiErrors());
-    }
-    return *p->immediate;
-}
 
 /// A (GL) call's first check after its arguments: the table is loaded (through this plugin's host
 /// when it is not yet) and a context is current; else NoGlContext, refused before any GL call so
@@ -51,11 +43,7 @@ fxBool prepareGl(fxPlugin* p, const fxDiagnosticSink* out) {
         report(Diagnostics{Diagnostic{ErrorCode::NoGlContext, "", 0, 0, "", why}}, out);
         return 0;
     }
-    return withDiagnostics(out, [&](Diagnostics* d) {
-        const bool ok = impl(p).prepareGl(d);
-        // The immediate path's own program too: the first renderView then compiles nothing.
-        return immediate(p).prepare(d) && ok;
-    });
+    return withDiagnostics(out, [&](Diagnostics* d) { return impl(p).prepareGl(d); });
 }
 fxBool pollShaderReload(fxPlugin* p, const fxDiagnosticSink* out) {
     if (!usable(p, "pollShaderReload")) return 0;
@@ -216,7 +204,7 @@ int renderView(fxPlugin* p, const fxViewDesc* v) {
     iv.mapping.rangeFar = defaultRange ? 1.0f : v->depthRangeFar;
     const ErrorCode noGl = glReady(p, "renderView");
     if (noGl != ErrorCode::None) return code(noGl);
-    return code(immediate(p).render(*p->impl, iv));
+    return code(impl(p).renderImmediate(iv));
 }
 
 }  // namespace capi

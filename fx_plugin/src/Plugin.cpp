@@ -6,8 +6,8 @@
 #include "PluginImpl.h"
 #include "../reactions/ReactionKeyTable.h"
 #include "../reactions/TechniqueTable.h"
-#include "../render/ShaderLoader.h"
-#include "InstallParticleRenderer.h"
+#include "../render/Renderers.h"
+#include "../render/ViewCheck.h"
 
 namespace fx {
 
@@ -17,6 +17,17 @@ PluginImpl::PluginImpl(const PluginImports& imports)
       seed_(imports.seed != 0 ? imports.seed : ReactionRuntime::kDefaultSeed),
       errors_(imports.host) {
     assert(host_);
+}
+
+PluginImpl::~PluginImpl() = default;
+
+void PluginImpl::installRenderers(const std::string& dataDir) {
+    RendererConfig config;
+    config.host = host_;
+    config.shaderDir = shaderDir_;
+    config.dataDir = dataDir;
+    config.errors = &errors_;
+    renderers_ = std::make_unique<Renderers>(config);
 }
 
 void PluginImpl::logDiagnostics(const Diagnostics& diags, const char* what) {
@@ -130,15 +141,6 @@ std::string indexRange(int index, int count) {
            " (" + std::to_string(count) + " reactions loaded)";
 }
 
-bool finiteMatrix(const glm::mat4& m) {
-    for (int c = 0; c < 4; ++c) {
-        for (int r = 0; r < 4; ++r) {
-            if (!std::isfinite(m[c][r])) return false;
-        }
-    }
-    return true;
-}
-
 // The API's enum switches: `value` past `last` is refused (InvalidValue, `*field` unchanged) with
 // "<what> = <n>; expected <names>", else stored.
 template <class Enum>
@@ -187,12 +189,12 @@ ErrorCode PluginImpl::setRenderOptions(const RenderOptions& options) {
                               "techniqueOverride = " + std::to_string(t) +
                                   "; expected FromReaction, Hard, Soft, Spherical or Mega");
     }
-    options_ = options;
+    settings_.options = options;
     return ErrorCode::None;
 }
 
 ErrorCode PluginImpl::setParticleShape(ParticleShape shape) {
-    return setSwitch(errors_, shape, ParticleShape::Quad, &shape_, "setParticleShape", "shape", "Trimmed or Quad");
+    return setSwitch(errors_, shape, ParticleShape::Quad, &settings_.shape, "setParticleShape", "shape", "Trimmed or Quad");
 }
 
 ErrorCode PluginImpl::setQuarterResEdges(QuarterResEdges mode) {
@@ -206,44 +208,11 @@ ErrorCode PluginImpl::setFadeClassification(FadeClassification mode) {
 }
 
 bool PluginImpl::prepareGl(Diagnostics* out) {
-    return prepareHook_ ? prepareHook_(out) : true;
+    return renderers_ ? renderers_->prepare(runtimes_, settings_, out) : true;
 }
 
 bool PluginImpl::pollShaderReload(Diagnostics* out) {
-    return shaderReloadHook_ ? shaderReloadHook_(out) : false;
-}
-
-// What is wrong with `view` ("" when it is valid; see ViewInfo).
-static std::string viewProblem(const ViewInfo& view) {
-    std::string bad;
-    if (view.width <= 0 || view.height <= 0) {
-        bad = "size " + std::to_string(view.width) + "x" + std::to_string(view.height) +
-              "; expected width and height > 0";
-    } else if (!std::isfinite(view.nearPlane) || !std::isfinite(view.farPlane) ||
-               !(view.nearPlane > 0.0f) || !(view.farPlane > view.nearPlane)) {
-        bad = "near " + std::to_string(view.nearPlane) + ", far " + std::to_string(view.farPlane) +
-              "; expected 0 < near < far, both finite";
-    } else if (!finiteMatrix(view.view) || !finiteMatrix(view.proj) || !std::isfinite(view.eye.x) ||
-               !std::isfinite(view.eye.y) || !std::isfinite(view.eye.z)) {
-        bad = "non-finite view or projection matrix or eye; expected finite values";
-    } else if (static_cast<uint8_t>(view.depth) > static_cast<uint8_t>(DepthConvention::ReversedZ)) {
-        bad = "depth convention " + std::to_string(static_cast<int>(view.depth)) +
-              "; expected Standard or ReversedZ";
-    } else if (static_cast<uint8_t>(view.fog.mode) > static_cast<uint8_t>(Fog::Mode::Exp2)) {
-        bad = "fog mode " + std::to_string(static_cast<int>(view.fog.mode)) + "; expected Off, Linear, Exp or Exp2";
-    } else if (view.fog.on() &&
-               (!std::isfinite(view.fog.color.x) || !std::isfinite(view.fog.color.y) ||
-                !std::isfinite(view.fog.color.z) || !std::isfinite(view.fog.start) || !std::isfinite(view.fog.end) ||
-                !std::isfinite(view.fog.density) || !(view.fog.density >= 0.0f))) {
-        bad = "fog: non-finite value or negative density; expected finite values, density >= 0";
-    } else if (view.fog.mode == Fog::Mode::Linear && view.fog.end == view.fog.start) {
-        bad = "linear fog with start = end = " + std::to_string(view.fog.start) + "; expected end != start";
-    } else if (!std::isfinite(view.slice.minDistance) || !(view.slice.minDistance >= 0.0f) ||
-               !(view.slice.maxDistance == 0.0f || view.slice.maxDistance > view.slice.minDistance)) {
-        bad = "slice [" + std::to_string(view.slice.minDistance) + ", " + std::to_string(view.slice.maxDistance) +
-              "); expected minDistance >= 0 finite and maxDistance 0 (no bound) or > minDistance";
-    }
-    return bad;
+    return renderers_ ? renderers_->reload(out) : false;
 }
 
 ErrorCode PluginImpl::setSceneLight(const SceneLight& light) {
@@ -261,10 +230,10 @@ ErrorCode PluginImpl::setSceneLight(const SceneLight& light) {
         return errors_.refuse(ErrorCode::InvalidValue, "setSceneLight",
                               "negative colour; expected sunColor and ambient >= 0");
     }
-    light_.on = true;
-    light_.toSun = light.toSun / len;
-    light_.sunColor = light.sunColor;
-    light_.ambient = light.ambient;
+    settings_.light.on = true;
+    settings_.light.toSun = light.toSun / len;
+    settings_.light.sunColor = light.sunColor;
+    settings_.light.ambient = light.ambient;
     return ErrorCode::None;
 }
 
@@ -274,21 +243,21 @@ SmokeShadow PluginImpl::declareShadowPasses(const ViewInfo& view, FrameBuilder& 
         errors_.refuse(ErrorCode::InvalidView, "declareShadowPasses", bad);
         return SmokeShadow{};
     }
-    if (!light_.on || !shadowHook_) return SmokeShadow{};
-    FrameScope declaring(FrameScope::Declare);
-    return shadowHook_(view, frame, runtimes_);
+    return renderers_ ? renderers_->declareShadow(view, frame, runtimes_, settings_) : SmokeShadow{};
 }
 
 ErrorCode PluginImpl::declarePasses(const ViewInfo& view, FrameBuilder& frame) {
+    if (renderers_) return renderers_->declare(view, frame, runtimes_, settings_, &particlesDrawn_);
     const std::string bad = viewProblem(view);
-    if (!bad.empty()) {
-        particlesDrawn_ = 0;
-        return errors_.refuse(ErrorCode::InvalidView, "declarePasses", bad);
-    }
-    // The particle renderer (fx_plugin/render/) plugs in here, through setRenderHook().
-    FrameScope declaring(FrameScope::Declare);
-    if (renderHook_) renderHook_(view, frame, runtimes_, options_);
-    return ErrorCode::None;
+    if (bad.empty()) return ErrorCode::None;
+    particlesDrawn_ = 0;
+    return errors_.refuse(ErrorCode::InvalidView, "declarePasses", bad);
+}
+
+ErrorCode PluginImpl::renderImmediate(const ImmediateView& view, ImmediateRenderer* through) {
+    if (!renderers_) return ErrorCode::None;
+    ImmediateRenderer& immediate = through ? *through : renderers_->immediate();
+    return immediate.render(*renderers_, runtimes_, settings_, view, &particlesDrawn_);
 }
 
 Stats PluginImpl::stats() const {

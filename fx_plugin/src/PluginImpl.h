@@ -1,20 +1,17 @@
 #pragma once
 // The plugin behind fx::Plugin: the running reactions (ReactionLibrary: load + hot reload), one
-// ReactionRuntime per reaction, render options and stats. It records; it draws nothing itself.
+// ReactionRuntime per reaction, the switches and stats. It records; it draws nothing itself.
 //
-// Drawing is delegated to a render hook that the particle renderer (fx_plugin/render/,
-// installParticleRenderer(), called by fxCreatePlugin) installs with setRenderHook().
-// declarePasses() hands it the view, the host's frame
-// builder, every runtime (read-only: pool streams, desc().render, needsSorting()) and the
-// current options; the renderer declares its passes (or none when nothing is visible) and may
-// report how many particles it drew with setParticlesDrawn(). With no hook installed,
-// declarePasses declares nothing, so the host allocates nothing for particles.
+// Drawing is the renderers' (render/Renderers.h), which the plugin owns once installRenderers()
+// made them (fxCreatePlugin does). The setters write one FrameSettings; each call that draws
+// (declarePasses, declareShadowPasses, renderView, prepareGl) hands the renderers that value and
+// the runtimes, so no renderer reads a switch back. Without renderers, declarePasses declares
+// nothing, so the host allocates nothing for particles.
 //
 // Runtimes live in a std::vector that is rebuilt when a new reaction set goes live
 // (loadReactions / pollHotReload): references and indices into it are valid until then;
 // runtimeGeneration() changes each time. A reaction whose name and capacity survive a reload
 // keeps its particles (the smoke on screen does not vanish).
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,21 +19,21 @@
 #include "fx/HostAdapter.h"
 #include "fx/Plugin.h"
 #include "../reactions/ReactionLibrary.h"
-#include "../render/LightState.h"
+#include "../render/FrameSettings.h"
 #include "../sim/ReactionRuntime.h"
 #include "../base/ApiErrors.h"
 
 namespace fx {
 
+class Renderers;
+struct ImmediateView;
+class ImmediateRenderer;
+
 class PluginImpl final : public Plugin {
 public:
-    using RenderHook = std::function<void(const ViewInfo&, FrameBuilder&,
-                                          const std::vector<ReactionRuntime>&,
-                                          const RenderOptions&)>;
-    using PrepareHook = std::function<bool(Diagnostics*)>;
-
     /// `imports.host` must be non-null (fxCreatePlugin checks it).
     explicit PluginImpl(const PluginImports& imports);
+    ~PluginImpl() override;  ///< the host's GL context current once the renderers drew
 
     // fx::Plugin
     bool loadReactions(const std::string& path, Diagnostics* out) override;
@@ -45,7 +42,7 @@ public:
     std::string reactionName(int index) const override;
     ErrorCode continueReaction(int index, float dt, float* currentVehicleCollisionAmount) override;
     ErrorCode setRenderOptions(const RenderOptions& options) override;
-    RenderOptions renderOptions() const override { return options_; }
+    RenderOptions renderOptions() const override { return settings_.options; }
     bool prepareGl(Diagnostics* out) override;
     ErrorCode declarePasses(const ViewInfo& view, FrameBuilder& frame) override;
     Stats stats() const override;
@@ -59,11 +56,11 @@ public:
     bool loadReactionsFromText(const std::string& file, const std::string& text,
                                Diagnostics* out) override;
     ErrorCode setParticleShape(ParticleShape shape) override;
-    ParticleShape particleShape() const override { return shape_; }
+    ParticleShape particleShape() const override { return settings_.shape; }
     ReactionStats reactionStats(int index) const override;
     ErrorCode fireReaction(const std::string& name, const glm::vec3& point) override;
     ErrorCode setSceneLight(const SceneLight& light) override;
-    void clearSceneLight() override { light_ = LightState{}; }
+    void clearSceneLight() override { settings_.light = LightState{}; }
     SmokeShadow declareShadowPasses(const ViewInfo& view, FrameBuilder& frame) override;
     // Deprecated switches (Plugin.h): validated and kept for their getters, read by no renderer.
     ErrorCode setQuarterResEdges(QuarterResEdges mode) override;
@@ -76,22 +73,21 @@ public:
     }
     FadeClassCounts fadeClassCounts() const override { return FadeClassCounts{}; }
 
-    /// The renderer's entry; pass an empty function to remove it.
-    void setRenderHook(RenderHook hook) { renderHook_ = std::move(hook); }
-    using ShadowHook = std::function<SmokeShadow(const ViewInfo&, FrameBuilder&,
-                                                 const std::vector<ReactionRuntime>&)>;
-    /// The renderer's Plugin::declareShadowPasses (after the view was validated).
-    void setShadowHook(ShadowHook hook) { shadowHook_ = std::move(hook); }
+    /// Makes the renderers (shaders from the plugin's shader dir, the atlas from `dataDir`;
+    /// empty = the copies embedded in the library). fxCreatePlugin calls it once; no GL yet.
+    void installRenderers(const std::string& dataDir);
+    /// The renderers, or null before installRenderers().
+    Renderers* renderers() const { return renderers_.get(); }
+    /// The immediate path (fxApi::renderView): the renderers' immediate path, or `through` (one
+    /// of the caller's own: its refusals go to the log, not to apiErrors), with this plugin's
+    /// runtimes and switches; without renderers nothing is drawn (None).
+    ErrorCode renderImmediate(const ImmediateView& view, ImmediateRenderer* through = nullptr);
+    /// What the setters wrote: every drawing call hands the renderers this value.
+    const FrameSettings& frameSettings() const { return settings_; }
     /// The scene light the renderers draw with (LightState::on false = unlit).
-    const LightState& light() const { return light_; }
-    /// The renderer's Plugin::prepareGl.
-    void setPrepareHook(PrepareHook hook) { prepareHook_ = std::move(hook); }
-    /// The renderer's Plugin::pollShaderReload.
-    void setShaderReloadHook(PrepareHook hook) { shaderReloadHook_ = std::move(hook); }
-    /// Where refused calls are reported (the renderer reports SizeMismatch here).
+    const LightState& light() const { return settings_.light; }
+    /// Where refused calls are reported (the renderers report SizeMismatch here).
     ApiErrors& apiErrors() const { return errors_; }
-    /// Called by the render hook: particles drawn in the last declared view (Stats::particlesDrawn).
-    void setParticlesDrawn(int count) { particlesDrawn_ = count; }
 
     const std::vector<ReactionRuntime>& runtimes() const { return runtimes_; }
     int runtimeGeneration() const { return runtimeGeneration_; }
@@ -115,15 +111,10 @@ private:
     ReactionLibrary library_;
     std::vector<ReactionRuntime> runtimes_;
     int runtimeGeneration_ = 0;
-    RenderOptions options_;
-    ParticleShape shape_ = ParticleShape::Trimmed;
+    FrameSettings settings_;
     QuarterResEdges edges_ = QuarterResEdges::DepthAware;
     FadeClassification classification_ = FadeClassification::Off;
-    RenderHook renderHook_;
-    PrepareHook prepareHook_;
-    PrepareHook shaderReloadHook_;
-    ShadowHook shadowHook_;
-    LightState light_;
+    std::unique_ptr<Renderers> renderers_;
     mutable ApiErrors errors_;  // mutable: a const query (reactionName) may refuse too
     int particlesDrawn_ = 0;
     int reloads_ = 0;

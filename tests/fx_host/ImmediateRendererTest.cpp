@@ -133,7 +133,7 @@ protected:
     fx::ErrorCode drawImmediate(GLuint fbo, const fx::ImmediateView& iv) {
         glBindFramebuffer(GL_FRAMEBUFFER, fbo);
         scene.drawOpaque(iv.view);
-        const fx::ErrorCode e = immediate->render(fx::implOf(*plugin), iv);
+        const fx::ErrorCode e = fx::implOf(*plugin).renderImmediate(iv, immediate.get());
         drainGlErrors("immediate render");
         return e;
     }
@@ -325,7 +325,7 @@ TEST_F(ImmediateRendererTest, HostsWithOtherDepthMappingsGetTheSamePicture) {
             scene.clipZeroToOne = false;
             clipControlZeroToOne(false);
             glDepthRange(0.0, 1.0);
-            ASSERT_EQ(immediate->render(fx::implOf(*plugin), iv), fx::ErrorCode::None);
+            ASSERT_EQ(fx::implOf(*plugin).renderImmediate(iv, immediate.get()), fx::ErrorCode::None);
             drainGlErrors("immediate render");
             const Image image = readFramebuffer(withDepthTexture.fbo, kW, kH);
             const int diff = maxAbsDiff(image, reference);
@@ -444,7 +444,7 @@ TEST_F(ImmediateRendererTest, HostBindingsAndStateAreUnchanged) {
         scene.drawOpaque(view);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, graph.depthFramebuffer());  // read != draw, as a host may
         const GlStateSnapshot before = captureGlState();
-        ASSERT_EQ(immediate->render(fx::implOf(*plugin), immediateView(s)), fx::ErrorCode::None);
+        ASSERT_EQ(fx::implOf(*plugin).renderImmediate(immediateView(s), immediate.get()), fx::ErrorCode::None);
         EXPECT_EQ(before.diff(captureGlState()), "");
         EXPECT_FALSE(immediate->lastPasses().empty());
     }
@@ -509,35 +509,35 @@ TEST_F(ImmediateRendererTest, RefusesWhatItCannotDraw) {
     setMode(kModes[1]);
     glBindFramebuffer(GL_FRAMEBUFFER, graph.colorFramebuffer());
     glViewport(0, 0, kW, kH);
-    EXPECT_EQ(immediate->render(fx::implOf(*plugin), immediateView(Source::LinearR32F, 0)), fx::ErrorCode::NullArgument);
-    EXPECT_EQ(immediate->render(fx::implOf(*plugin), immediateView(Source::DepthTexture, 0)), fx::ErrorCode::NullArgument);
+    EXPECT_EQ(fx::implOf(*plugin).renderImmediate(immediateView(Source::LinearR32F, 0), immediate.get()), fx::ErrorCode::NullArgument);
+    EXPECT_EQ(fx::implOf(*plugin).renderImmediate(immediateView(Source::DepthTexture, 0), immediate.get()), fx::ErrorCode::NullArgument);
     HostTarget colourOnly(kW, kH, 0);
-    EXPECT_EQ(immediate->render(fx::implOf(*plugin), immediateView(Source::DepthTexture, colourOnly.colour)),
+    EXPECT_EQ(fx::implOf(*plugin).renderImmediate(immediateView(Source::DepthTexture, colourOnly.colour), immediate.get()),
               fx::ErrorCode::UnsupportedDepth)
         << "an RGBA8 texture is not a depth texture";
     glBindFramebuffer(GL_FRAMEBUFFER, colourOnly.fbo);
-    EXPECT_EQ(immediate->render(fx::implOf(*plugin), immediateView(Source::BoundFramebuffer)), fx::ErrorCode::UnsupportedDepth)
+    EXPECT_EQ(fx::implOf(*plugin).renderImmediate(immediateView(Source::BoundFramebuffer), immediate.get()), fx::ErrorCode::UnsupportedDepth)
         << "no depth attachment";
     glBindFramebuffer(GL_FRAMEBUFFER, graph.colorFramebuffer());
     fx::ImmediateView bad = immediateView(Source::BoundFramebuffer);
     bad.mapping.rangeNear = bad.mapping.rangeFar = 0.5f;
-    EXPECT_EQ(immediate->render(fx::implOf(*plugin), bad), fx::ErrorCode::InvalidValue);
+    EXPECT_EQ(fx::implOf(*plugin).renderImmediate(bad, immediate.get()), fx::ErrorCode::InvalidValue);
     bad = immediateView(static_cast<Source>(7));
-    EXPECT_EQ(immediate->render(fx::implOf(*plugin), bad), fx::ErrorCode::InvalidValue);
+    EXPECT_EQ(fx::implOf(*plugin).renderImmediate(bad, immediate.get()), fx::ErrorCode::InvalidValue);
     HostTarget wrongSize(kW / 2, kH / 2, GL_DEPTH_COMPONENT24);
-    EXPECT_EQ(immediate->render(fx::implOf(*plugin), immediateView(Source::DepthTexture, wrongSize.depth)),
+    EXPECT_EQ(fx::implOf(*plugin).renderImmediate(immediateView(Source::DepthTexture, wrongSize.depth), immediate.get()),
               fx::ErrorCode::SizeMismatch);
     EXPECT_TRUE(host.logged("error[SizeMismatch] immediate render")) << "refusals are logged";
     // A view away from (0, 0) is drawn since API 2.1 (ViewportTest); a host depth texture must then
     // be the view's size or a framebuffer's that holds the view at the viewport's origin.
     HostTarget tooNarrow(kW + 4, kH, GL_DEPTH_COMPONENT24);
     glViewport(8, 0, kW, kH);
-    EXPECT_EQ(immediate->render(fx::implOf(*plugin), immediateView(Source::DepthTexture, tooNarrow.depth)),
+    EXPECT_EQ(fx::implOf(*plugin).renderImmediate(immediateView(Source::DepthTexture, tooNarrow.depth), immediate.get()),
               fx::ErrorCode::SizeMismatch);
     glViewport(0, 0, kW, kH);
     fx::ImmediateView zero = immediateView(Source::None);
     zero.view.width = 0;
-    EXPECT_EQ(immediate->render(fx::implOf(*plugin), zero), fx::ErrorCode::InvalidView);
+    EXPECT_EQ(fx::implOf(*plugin).renderImmediate(zero, immediate.get()), fx::ErrorCode::InvalidView);
     EXPECT_EQ(immediate->targetAllocations(), 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
@@ -635,7 +635,7 @@ TEST_F(FxHostTest, DISABLED_ImmediateDepthSourceTiming) {
             }
             glFinish();
             const double t1 = seconds();
-            ASSERT_EQ(immediate.render(fx::implOf(*plugin), iv), fx::ErrorCode::None);
+            ASSERT_EQ(fx::implOf(*plugin).renderImmediate(iv, &immediate), fx::ErrorCode::None);
             glFinish();
             const double t2 = seconds();
             if (round == 0) continue;  // warm-up (programs, targets)

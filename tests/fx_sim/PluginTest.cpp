@@ -1,5 +1,5 @@
 // The plugin glue (PluginImpl) driven by a fake host: entry-point version check, loading,
-// Reaction::Continue with the host's wheels and collision amount, the render hook, stats, and
+// Reaction::Continue with the host's wheels and collision amount, the frame settings, stats, and
 // hot reload that keeps the particles of reactions whose name and capacity did not change.
 #include <cmath>
 #include <filesystem>
@@ -172,41 +172,41 @@ TEST(Plugin, FireReactionSetsOffEveryLayerOfTheRecipeOnce) {
     EXPECT_EQ(plugin->stats().apiErrors, errors + 3);
 }
 
-TEST(Plugin, DeclarePassesCallsTheRenderHookWithTheRuntimes) {
-    // PluginImpl directly: fxCreatePlugin installs the GL particle renderer as the hook, and
-    // this test has no GL context (the engine-free GL host tests cover that path).
+TEST(Plugin, SettersWriteTheOneFrameSettingsTheRenderersAreHanded) {
+    // PluginImpl directly, without installRenderers (fxCreatePlugin makes the GL renderers, and
+    // this test has no GL context; the engine-free GL host tests cover that path).
     FakeHost host;
     fx::PluginImports imports;
     imports.host = &host;
     auto plugin = std::make_unique<fx::PluginImpl>(imports);
     ASSERT_TRUE(plugin->loadReactions(kReactions + "/burnout_smoke.yaml", nullptr));
-    fx::PluginImpl& impl = *plugin;
     FakeFrame frame;
     fx::ViewInfo view;
     view.width = 64;   // a valid view (the default size 0 is refused as InvalidView)
     view.height = 48;
-    plugin->declarePasses(view, frame);  // no renderer installed: nothing declared
+    EXPECT_EQ(plugin->declarePasses(view, frame), fx::ErrorCode::None);  // no renderers: nothing declared
     EXPECT_EQ(frame.passes, 0);
+    EXPECT_EQ(plugin->stats().particlesDrawn, 0);
+    EXPECT_EQ(plugin->renderers(), nullptr);
 
     fx::RenderOptions opts;
     opts.quarterRes = true;
-    plugin->setRenderOptions(opts);
-    EXPECT_TRUE(plugin->renderOptions().quarterRes);
-    int calls = 0;
-    impl.setRenderHook([&](const fx::ViewInfo&, fx::FrameBuilder& fb,
-                           const std::vector<fx::ReactionRuntime>& runtimes,
-                           const fx::RenderOptions& o) {
-        ++calls;
-        EXPECT_EQ(runtimes.size(), 1u);
-        EXPECT_EQ(runtimes[0].name(), "burnout_smoke");
-        EXPECT_TRUE(o.quarterRes);
-        fb.addPass("particles", {fb.sceneDepth()}, {fb.sceneColor()}, [](fx::PassContext&) {});
-        impl.setParticlesDrawn(12);
-    });
-    plugin->declarePasses(view, frame);
-    EXPECT_EQ(calls, 1);
-    EXPECT_EQ(frame.passes, 1);
-    EXPECT_EQ(plugin->stats().particlesDrawn, 12);
+    opts.techniqueOverride = fx::Technique::Mega;
+    ASSERT_EQ(plugin->setRenderOptions(opts), fx::ErrorCode::None);
+    ASSERT_EQ(plugin->setParticleShape(fx::ParticleShape::Quad), fx::ErrorCode::None);
+    ASSERT_EQ(plugin->setSceneLight(fx::SceneLight{}), fx::ErrorCode::None);
+    const fx::FrameSettings& s = plugin->frameSettings();
+    EXPECT_TRUE(s.options.quarterRes);
+    EXPECT_EQ(s.options.techniqueOverride, fx::Technique::Mega);
+    EXPECT_EQ(s.shape, fx::ParticleShape::Quad);
+    EXPECT_TRUE(s.light.on);
+    // A refused value leaves the settings as they were.
+    fx::RenderOptions bad = opts;
+    bad.techniqueOverride = static_cast<fx::Technique>(99);
+    EXPECT_EQ(plugin->setRenderOptions(bad), fx::ErrorCode::InvalidValue);
+    EXPECT_EQ(plugin->frameSettings().options.techniqueOverride, fx::Technique::Mega);
+    plugin->clearSceneLight();
+    EXPECT_FALSE(plugin->frameSettings().light.on);
 }
 
 TEST(Plugin, ImportedSeedPicksTheParticles) {
