@@ -12,7 +12,7 @@
 // plain bilinear (for comparison).
 // Two builds (QuarterResPrograms::CompositeVariant), not a uniform branch: a CPU rasteriser runs
 // both sides of a branch, so one program with both paths paid for both paths' fetches.
-uniform sampler2D uHalfColor;   // premultiplied RGBA8, half x half
+uniform sampler2D uHalfColor;   // premultiplied RGBA8 (RGBA16F with spheres), half x half
 uniform sampler2D uHalfDepth;   // red: min depth per 2x2 block (RG32F, green the max)
 uniform sampler2D uSceneDepth;  // full-res scene depth (particles_scene_depth.glsl)
 uniform float uDepthThreshold;  // relative: |low - full| > threshold * full is an edge

@@ -41,8 +41,8 @@ TargetDesc targetDesc(float scale, TargetFormat format, bool linearFilter, bool 
 
 TargetDesc QuarterResPath::depthTargetDesc() { return targetDesc(0.5f, TargetFormat::RG32F, false, false); }
 
-TargetDesc QuarterResPath::colorTargetDesc(bool withDepth) {
-    return targetDesc(0.5f, TargetFormat::RGBA8, true, withDepth);
+TargetDesc QuarterResPath::colorTargetDesc(bool withDepth, bool spheres) {
+    return targetDesc(0.5f, spheres ? TargetFormat::RGBA16F : TargetFormat::RGBA8, true, withDepth);
 }
 
 QuarterResPath::QuarterResPath(ParticleDraw& draw, SizeMismatchReport sizeMismatch)
@@ -59,7 +59,8 @@ void QuarterResPath::declare(FrameBuilder& frame, const std::shared_ptr<Particle
     const Target halfDepth = frame.createTarget(kDepthTarget, depthTargetDesc());
     // Under reversed-Z the half-res particles are z-tested too (beginQuarter).
     const bool halfZ = record->reversedZ && programs_->halfZOk();
-    const Target halfColor = frame.createTarget(kColorTarget, colorTargetDesc(halfZ));
+    const bool spheres = footprintOf(record->list) == Footprint::Box;  // a spherical batch is drawn
+    const Target halfColor = frame.createTarget(kColorTarget, colorTargetDesc(halfZ, spheres));
     narrowDepthRead(frame, record->rect, view.width, view.height);
     frame.addPass(kDownsamplePass, {depth}, {halfDepth}, [this, record, depth, decode, halfDepth](PassContext& ctx) {
         // Only what this pass declared may be touched: the scene depth.

@@ -27,10 +27,12 @@
 // composite are drawn on ScreenTiles (16 px tiles a particle's bound touches, as runs) instead
 // of one triangle over the view, with billboards bounded by their view-plane square rather than
 // a cube; and the composite is two builds (depth-aware, bilinear) instead of one with a uniform
-// branch, which a CPU rasteriser runs both sides of. The half-res colour is RGBA8: blending
-// there costs a GPU about a fifth less than RGBA16F for a few tenths of a dB (figures in
-// docs/results.md); what it gives up is accumulation finer than 1/255 where many faint puffs
+// branch, which a CPU rasteriser runs both sides of. The half-res colour is RGBA8 for
+// billboards: blending there costs a GPU about a fifth less than RGBA16F for a few tenths of a dB
+// (figures in docs/results.md); it gives up accumulation finer than 1/255 where many faint puffs
 // overlap, and additive smoke brighter than 1 in an HDR host's scene (clamped at quarter res).
+// A view with spherical particles keeps RGBA16F: their pass is bound by its arithmetic, not the
+// blend, so 8 bits would save nothing and cost most of a dB.
 #include <memory>
 #include <string>
 #include <vector>
@@ -56,9 +58,9 @@ public:
 
     /// Half size, RG32F (min, max of each 2x2 block), nearest filtering.
     static TargetDesc depthTargetDesc();
-    /// Half size, RGBA8, linear filtering; with its own z-buffer when `withDepth` (the
-    /// half-res z-test, reversed-Z hosts only).
-    static TargetDesc colorTargetDesc(bool withDepth = false);
+    /// Half size, linear filtering, RGBA8 (RGBA16F with `spheres`: a spherical batch in the view);
+    /// with its own z-buffer when `withDepth` (the half-res z-test, reversed-Z hosts only).
+    static TargetDesc colorTargetDesc(bool withDepth = false, bool spheres = false);
 
     QuarterResPath(ParticleDraw& draw, SizeMismatchReport sizeMismatch);
     QuarterResPath(const QuarterResPath&) = delete;
