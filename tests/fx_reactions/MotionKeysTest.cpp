@@ -163,9 +163,7 @@ TEST(LayerKeys, LayerNamesCollideWithOtherReactions) {
                        "  - {name: hit.a, type: dust}\n"
                        "  - name: hit\n"
                        "    layers: [{name: a, type: dust}]\n");
-    ASSERT_FALSE(r.ok);
-    ASSERT_EQ(r.diags.size(), 1u) << dump(r.diags);
-    EXPECT_EQ(r.diags[0].code, ErrorCode::DuplicateName);
+    reactiontest::expectDiagnostics(r, {{ErrorCode::DuplicateName}});
 }
 
 const Rejected kLayerKeys[] = {

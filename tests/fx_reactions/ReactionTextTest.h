@@ -3,6 +3,7 @@
 // named test.yaml, print what it reported, and check that it reported exactly one thing.
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -43,6 +44,34 @@ inline void expectOnly(const Loaded& r, fx::ErrorCode code, int line, int column
         EXPECT_EQ(d.column, column) << d.str();
     }
     EXPECT_EQ(d.key, key) << d.str();
+}
+
+/// One diagnostic a test expects: its code and, where given, its dotted key (nullptr: not
+/// checked; "" is checked), 1-based line and column (0: not checked).
+struct Expected {
+    fx::ErrorCode code;
+    const char* key = nullptr;
+    int line = 0;
+    int column = 0;
+};
+
+/// The load failed with exactly these diagnostics, in this order.
+inline void expectDiagnostics(const Loaded& r, const std::vector<Expected>& want) {
+    EXPECT_FALSE(r.ok);
+    ASSERT_EQ(r.diags.size(), want.size()) << dump(r.diags);
+    for (size_t i = 0; i < want.size(); ++i) {
+        const fx::Diagnostic& d = r.diags[i];
+        EXPECT_EQ(d.code, want[i].code) << d.str();
+        if (want[i].key) {
+            EXPECT_EQ(d.key, want[i].key) << d.str();
+        }
+        if (want[i].line > 0) {
+            EXPECT_EQ(d.line, want[i].line) << d.str();
+        }
+        if (want[i].column > 0) {
+            EXPECT_EQ(d.column, want[i].column) << d.str();
+        }
+    }
 }
 
 /// A text the loader refuses with exactly one diagnostic (as expectOnly checks it), whose

@@ -14,6 +14,7 @@ namespace {
 
 using fx::ErrorCode;
 using reactiontest::dump;
+using reactiontest::expectDiagnostics;
 using reactiontest::expectOnly;
 using reactiontest::Loaded;
 
@@ -114,13 +115,8 @@ TEST(Validation, NegativeBurstAndAtlasCountAreNegativeCounts) {
         "    type: collision_burst\n"
         "    emission: {burst: -1}\n"
         "    particle: {atlas: [0, -2]}\n");
-    EXPECT_FALSE(r.ok);
-    ASSERT_EQ(r.diags.size(), 2u) << dump(r.diags);
-    EXPECT_EQ(r.diags[0].code, ErrorCode::NegativeCount);
-    EXPECT_EQ(r.diags[0].key, "reactions[0].emission.burst");
-    EXPECT_EQ(r.diags[1].code, ErrorCode::NegativeCount);
-    EXPECT_EQ(r.diags[1].key, "reactions[0].particle.atlas[1]");
-    EXPECT_EQ(r.diags[1].line, 5);
+    expectDiagnostics(r, {{ErrorCode::NegativeCount, "reactions[0].emission.burst"},
+                          {ErrorCode::NegativeCount, "reactions[0].particle.atlas[1]", 5}});
 }
 
 TEST(Validation, TheLargestCapacityIsValid) {
@@ -129,12 +125,8 @@ TEST(Validation, TheLargestCapacityIsValid) {
 }
 
 TEST(Validation, MissingReactionsKey) {
-    Loaded typo = load("reaction: []\n");
-    ASSERT_EQ(typo.diags.size(), 2u) << dump(typo.diags);  // the typo, and what it hides
-    EXPECT_EQ(typo.diags[0].code, ErrorCode::UnknownKey);
-    EXPECT_EQ(typo.diags[0].key, "reaction");
-    EXPECT_EQ(typo.diags[1].code, ErrorCode::MissingKey);
-    EXPECT_EQ(typo.diags[1].key, "reactions");
+    // The typo, and what it hides.
+    expectDiagnostics(load("reaction: []\n"), {{ErrorCode::UnknownKey, "reaction"}, {ErrorCode::MissingKey, "reactions"}});
     Loaded r = load("{}\n");
     expectOnly(r, ErrorCode::MissingKey, 1, 0, "reactions");
 }
@@ -142,11 +134,7 @@ TEST(Validation, MissingReactionsKey) {
 TEST(Validation, TooDeepForTheParser) {
     // Far past yaml-cpp's own recursion guard: reported, not a stack overflow.
     std::string deep = "reactions: " + std::string(5000, '[') + std::string(5000, ']') + "\n";
-    Loaded r = load(deep);
-    EXPECT_FALSE(r.ok);
-    ASSERT_EQ(r.diags.size(), 1u) << dump(r.diags);
-    EXPECT_EQ(r.diags[0].code, ErrorCode::TooDeep);
-    EXPECT_EQ(r.diags[0].line, 1);
+    expectDiagnostics(load(deep), {{ErrorCode::TooDeep, nullptr, 1}});
 }
 
 TEST(Validation, TruncatedYaml) {
@@ -155,11 +143,7 @@ TEST(Validation, TruncatedYaml) {
         "  - name: a\n"
         "    type: dust\n"
         "    particle: {drag: 1.0, lifetime: [1, 2");
-    EXPECT_FALSE(r.ok);
-    ASSERT_EQ(r.diags.size(), 1u) << dump(r.diags);
-    EXPECT_EQ(r.diags[0].code, ErrorCode::SyntaxError);
-    EXPECT_EQ(r.diags[0].line, 4) << r.diags[0].str();
-    EXPECT_EQ(r.diags[0].key, "");
+    expectDiagnostics(r, {{ErrorCode::SyntaxError, "", 4}});
 }
 
 TEST(Validation, ValidUtf8AndAByteOrderMarkAreFine) {
@@ -169,21 +153,13 @@ TEST(Validation, ValidUtf8AndAByteOrderMarkAreFine) {
 }
 
 TEST(Validation, TwoDocumentsAreASyntaxError) {
-    Loaded r = load("reactions: []\n---\nreactions: []\n");
-    EXPECT_FALSE(r.ok);
-    ASSERT_EQ(r.diags.size(), 1u) << dump(r.diags);
-    EXPECT_EQ(r.diags[0].code, ErrorCode::SyntaxError);
-    EXPECT_EQ(r.diags[0].line, 2);  // where the second document starts
+    // Line 2: where the second document starts.
+    expectDiagnostics(load("reactions: []\n---\nreactions: []\n"), {{ErrorCode::SyntaxError, nullptr, 2}});
 }
 
 TEST(Validation, StrayCommaAtDocumentLevelIsASyntaxError) {
     // yaml-cpp 0.7 yields empty documents forever here (YAML::LoadAll would eat all memory).
-    Loaded r = load("# comment\n, defaults\nreactions: []\n");
-    EXPECT_FALSE(r.ok);
-    ASSERT_EQ(r.diags.size(), 1u) << dump(r.diags);
-    EXPECT_EQ(r.diags[0].code, ErrorCode::SyntaxError);
-    EXPECT_EQ(r.diags[0].line, 2) << r.diags[0].str();
-    EXPECT_EQ(r.diags[0].column, 1) << r.diags[0].str();
+    expectDiagnostics(load("# comment\n, defaults\nreactions: []\n"), {{ErrorCode::SyntaxError, nullptr, 2, 1}});
 }
 
 TEST(Validation, CrossFieldRules) {
@@ -200,17 +176,11 @@ TEST(Validation, CrossFieldRules) {
         "      colour_ramp:\n"
         "        - {t: 0.5, rgba: [1, 1, 1, 1]}\n"
         "        - {t: 0.2, rgba: [1, 1, 1, 1]}\n");         // t going back
-    EXPECT_FALSE(r.ok);
-    ASSERT_EQ(r.diags.size(), 5u) << dump(r.diags);
-    for (const auto& d : r.diags) EXPECT_EQ(d.code, ErrorCode::OutOfRange) << d.str();
-    EXPECT_EQ(r.diags[0].key, "reactions[0].emission.burst");
-    EXPECT_EQ(r.diags[1].key, "reactions[0].particle.lifetime");
-    EXPECT_EQ(r.diags[1].line, 6);
-    EXPECT_EQ(r.diags[2].key, "reactions[0].particle.fade_out");
-    EXPECT_EQ(r.diags[2].line, 8);
-    EXPECT_EQ(r.diags[3].key, "reactions[0].particle.atlas");
-    EXPECT_EQ(r.diags[4].key, "reactions[0].particle.colour_ramp[1].t");
-    EXPECT_EQ(r.diags[4].line, 12);
+    expectDiagnostics(r, {{ErrorCode::OutOfRange, "reactions[0].emission.burst"},
+                          {ErrorCode::OutOfRange, "reactions[0].particle.lifetime", 6},
+                          {ErrorCode::OutOfRange, "reactions[0].particle.fade_out", 8},
+                          {ErrorCode::OutOfRange, "reactions[0].particle.atlas"},
+                          {ErrorCode::OutOfRange, "reactions[0].particle.colour_ramp[1].t", 12}});
 }
 
 TEST(Validation, ColourRampShape) {
@@ -222,14 +192,9 @@ TEST(Validation, ColourRampShape) {
         "      colour_ramp:\n"
         "        - {t: 0, rgba: [1, 1, 1]}\n"
         "        - {rgba: [1, 1, 1, 2]}\n");
-    EXPECT_FALSE(r.ok);
-    ASSERT_EQ(r.diags.size(), 3u) << dump(r.diags);
-    EXPECT_EQ(r.diags[0].code, ErrorCode::OutOfRange);  // 3 channels, 4 expected
-    EXPECT_EQ(r.diags[0].key, "reactions[0].particle.colour_ramp[0].rgba");
-    EXPECT_EQ(r.diags[1].code, ErrorCode::MissingKey);
-    EXPECT_EQ(r.diags[1].key, "reactions[0].particle.colour_ramp[1].t");
-    EXPECT_EQ(r.diags[2].code, ErrorCode::OutOfRange);
-    EXPECT_EQ(r.diags[2].key, "reactions[0].particle.colour_ramp[1].rgba[3]");
+    expectDiagnostics(r, {{ErrorCode::OutOfRange, "reactions[0].particle.colour_ramp[0].rgba"},  // 3 channels, 4 expected
+                          {ErrorCode::MissingKey, "reactions[0].particle.colour_ramp[1].t"},
+                          {ErrorCode::OutOfRange, "reactions[0].particle.colour_ramp[1].rgba[3]"}});
 }
 
 TEST(Validation, ThreeErrorsReportThree) {
@@ -241,14 +206,9 @@ TEST(Validation, ThreeErrorsReportThree) {
         "      capacity: -1\n"
         "    particle:\n"
         "      drag: .inf\n");
-    EXPECT_FALSE(r.ok);
-    ASSERT_EQ(r.diags.size(), 3u) << dump(r.diags);
-    EXPECT_EQ(r.diags[0].code, ErrorCode::InvalidEnum);
-    EXPECT_EQ(r.diags[0].line, 3);
-    EXPECT_EQ(r.diags[1].code, ErrorCode::NegativeCount);
-    EXPECT_EQ(r.diags[1].line, 5);
-    EXPECT_EQ(r.diags[2].code, ErrorCode::NotFinite);
-    EXPECT_EQ(r.diags[2].line, 7);
+    expectDiagnostics(r, {{ErrorCode::InvalidEnum, nullptr, 3},
+                          {ErrorCode::NegativeCount, nullptr, 5},
+                          {ErrorCode::NotFinite, nullptr, 7}});
 }
 
 TEST(Validation, ErrorsInSeveralReactionsAreAllReported) {
@@ -260,9 +220,8 @@ TEST(Validation, ErrorsInSeveralReactionsAreAllReported) {
         "  - name: b\n"
         "    type: dust\n"
         "    render: {blend: multiply}\n");
-    ASSERT_EQ(r.diags.size(), 2u) << dump(r.diags);
-    EXPECT_EQ(r.diags[0].key, "reactions[0].emission.rate");
-    EXPECT_EQ(r.diags[1].key, "reactions[1].render.blend");
+    expectDiagnostics(r, {{ErrorCode::OutOfRange, "reactions[0].emission.rate"},
+                          {ErrorCode::InvalidEnum, "reactions[1].render.blend"}});
 }
 
 TEST(Validation, BadFileLeavesTheOutputUntouched) {
@@ -310,9 +269,7 @@ TEST(Validation, SelfReferencingAliasTerminates) {
     EXPECT_FALSE(r.ok);
     ASSERT_FALSE(r.diags.empty());
     Loaded deep = load("reactions:\n  - name: a\n    type: dust\n    particle: {drag: &d [*d]}\n");
-    EXPECT_FALSE(deep.ok);
-    ASSERT_EQ(deep.diags.size(), 1u) << dump(deep.diags);
-    EXPECT_EQ(deep.diags[0].code, ErrorCode::TooDeep);
+    expectDiagnostics(deep, {{ErrorCode::TooDeep}});
 }
 
 TEST(Validation, AliasExpansionIsNotExpanded) {
