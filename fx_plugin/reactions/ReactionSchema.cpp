@@ -64,7 +64,7 @@ void readEmission(YamlCheck& c, const Node& node, const std::string& path, Emiss
 // Returns whether every point was read cleanly.
 template <class Point, class ReadValue>
 bool readLifePoints(YamlCheck& c, const Node& node, const std::string& p, const char* valueKey,
-                    std::vector<Point>* points, std::vector<YAML::Mark>* tMarks, ReadValue readValue) {
+                    std::vector<Point>* points, std::vector<YAML::Mark>* tMarks, const ReadValue& readValue) {
     bool ok = true;
     size_t i = 0;
     for (auto it = node.begin(); it != node.end(); ++it, ++i) {
@@ -108,13 +108,22 @@ bool inLifeOrder(YamlCheck& c, const std::vector<Point>& points, const std::vect
     return ok;
 }
 
-void readColorRamp(YamlCheck& c, const Node& node, const std::string& p,
-                   std::vector<ColorStop>* out) {
-    if (!c.isList(node, p, 1, kMaxColorStops)) return;
-    std::vector<ColorStop> stops;
+// A whole over-life list of 1..maxPoints points (readLifePoints), stored in `out` only when every
+// point is right and in order (inLifeOrder): a bad list leaves the previous one.
+template <class Point, class ReadValue>
+void readLifeList(YamlCheck& c, const Node& node, const std::string& p, int maxPoints, const char* valueKey,
+                  const char* noun, bool firstOnly, std::vector<Point>* out, const ReadValue& readValue) {
+    if (!c.isList(node, p, 1, maxPoints)) return;
+    std::vector<Point> points;
     std::vector<YAML::Mark> tMarks;
-    const bool ok = readLifePoints(c, node, p, "rgba", &stops, &tMarks,
-                                   [&](const MapReader& m, const YAML::Mark& at, ColorStop* stop) {
+    const bool ok = readLifePoints(c, node, p, valueKey, &points, &tMarks, readValue);
+    if (ok && inLifeOrder(c, points, tMarks, p, noun, firstOnly)) *out = std::move(points);
+}
+
+// A colour ramp: 1-16 stops {t, rgba}; every stop out of order is reported.
+void readColorRamp(YamlCheck& c, const Node& node, const std::string& p, std::vector<ColorStop>* out) {
+    readLifeList(c, node, p, kMaxColorStops, "rgba", "stop", false, out,
+                 [&](const MapReader& m, const YAML::Mark& at, ColorStop* stop) {
         const Node* rgba = m.get("rgba");
         if (!rgba) {
             c.report(ErrorCode::MissingKey, at, m.path("rgba"),
@@ -129,18 +138,14 @@ void readColorRamp(YamlCheck& c, const Node& node, const std::string& p,
         }
         return channelsOk;
     });
-    // A ramp reports every stop out of order.
-    if (ok && inLifeOrder(c, stops, tMarks, p, "stop", false)) *out = std::move(stops);
 }
 
-// An over-life curve: 1-16 points {t, v}, t in [0, 1] non-decreasing, v in [lo, hi].
+// An over-life curve: 1-16 points {t, v}, t in [0, 1] non-decreasing, v in [lo, hi]; only the
+// first point out of order is reported.
 void readCurve(YamlCheck& c, const Node& node, const std::string& p, double lo, double hi,
                std::vector<CurvePoint>* out) {
-    if (!c.isList(node, p, 1, kMaxCurvePoints)) return;
-    std::vector<CurvePoint> points;
-    std::vector<YAML::Mark> tMarks;
-    const bool ok = readLifePoints(c, node, p, "v", &points, &tMarks,
-                                   [&](const MapReader& m, const YAML::Mark& at, CurvePoint* point) {
+    readLifeList(c, node, p, kMaxCurvePoints, "v", "point", true, out,
+                 [&](const MapReader& m, const YAML::Mark& at, CurvePoint* point) {
         const Node* v = m.get("v");
         if (!v) {
             c.report(ErrorCode::MissingKey, at, m.path("v"),
@@ -149,8 +154,6 @@ void readCurve(YamlCheck& c, const Node& node, const std::string& p, double lo, 
         }
         return c.number(*v, m.path("v"), lo, hi, &point->v);
     });
-    // A curve reports only its first point out of order.
-    if (ok && inLifeOrder(c, points, tMarks, p, "point", true)) *out = std::move(points);
 }
 
 void readParticle(YamlCheck& c, const Node& node, const std::string& path, ParticleDesc* d) {
