@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "../fx_plugin/sim/Rng.h"  // fx::lowbias32
+
 namespace {
 
 constexpr int kCell = 256;
@@ -25,13 +27,7 @@ constexpr int kSize = kCell * kCells;
 
 uint32_t hash(int32_t x, int32_t y, uint32_t seed) {
     // lowbias32 (Wellons) over a mix of the lattice point and the seed.
-    uint32_t h = seed ^ (uint32_t(x) * 0x8da6b343u) ^ (uint32_t(y) * 0xd8163841u);
-    h ^= h >> 16;
-    h *= 0x7feb352du;
-    h ^= h >> 15;
-    h *= 0x846ca68bu;
-    h ^= h >> 16;
-    return h;
+    return fx::lowbias32(seed ^ (uint32_t(x) * 0x8da6b343u) ^ (uint32_t(y) * 0xd8163841u));
 }
 
 float lattice(int32_t x, int32_t y, uint32_t seed) {

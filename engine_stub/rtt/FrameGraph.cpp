@@ -276,24 +276,16 @@ bool FrameGraph::declared(const char* name) const {
 
 // --- PassBuilder -------------------------------------------------------------------------------
 
-FrameGraphResource PassBuilder::read(FrameGraphResource target) {
-    graph_.addAccess(pass_, target, FrameGraph::kRead);
+FrameGraphResource PassBuilder::declare(FrameGraphResource target, uint8_t access) {
+    graph_.addAccess(pass_, target, access);
     return target;
 }
 
-FrameGraphResource PassBuilder::readDepth(FrameGraphResource target) {
-    graph_.addAccess(pass_, target, FrameGraph::kReadDepth);
-    return target;
-}
-
-FrameGraphResource PassBuilder::write(FrameGraphResource target) {
-    graph_.addAccess(pass_, target, FrameGraph::kWrite);
-    return target;
-}
-
+FrameGraphResource PassBuilder::read(FrameGraphResource target) { return declare(target, FrameGraph::kRead); }
+FrameGraphResource PassBuilder::readDepth(FrameGraphResource target) { return declare(target, FrameGraph::kReadDepth); }
+FrameGraphResource PassBuilder::write(FrameGraphResource target) { return declare(target, FrameGraph::kWrite); }
 FrameGraphResource PassBuilder::writeIfRead(FrameGraphResource target) {
-    graph_.addAccess(pass_, target, FrameGraph::kWriteIfRead);
-    return target;
+    return declare(target, FrameGraph::kWriteIfRead);
 }
 
 void PassBuilder::sideEffect() { graph_.passes_[pass_].sideEffect = true; }

@@ -31,6 +31,8 @@ public:
 private:
     friend class FrameGraph;
     PassBuilder(FrameGraph& graph, uint32_t pass) : graph_(graph), pass_(pass) {}
+    /// Records one access (FrameGraph::kRead, ...) of the target by this pass; returns the target.
+    FrameGraphResource declare(FrameGraphResource target, uint8_t access);
     FrameGraph& graph_;
     uint32_t pass_;
 };

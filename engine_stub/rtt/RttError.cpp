@@ -27,23 +27,32 @@ const char* rttErrorName(RttError error) {
     return "?";
 }
 
+namespace {
+
+// Each status with its own spelling, written once (a name cannot drift from its value).
+#define CUBE_FRAMEBUFFER_STATUS(status) {status, #status}
+const struct {
+    uint32_t status;
+    const char* name;
+} kFramebufferStatuses[] = {
+    CUBE_FRAMEBUFFER_STATUS(GL_FRAMEBUFFER_COMPLETE),
+    CUBE_FRAMEBUFFER_STATUS(GL_FRAMEBUFFER_UNDEFINED),
+    CUBE_FRAMEBUFFER_STATUS(GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT),
+    CUBE_FRAMEBUFFER_STATUS(GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT),
+    CUBE_FRAMEBUFFER_STATUS(GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER),
+    CUBE_FRAMEBUFFER_STATUS(GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER),
+    CUBE_FRAMEBUFFER_STATUS(GL_FRAMEBUFFER_UNSUPPORTED),
+    CUBE_FRAMEBUFFER_STATUS(GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE),
+    CUBE_FRAMEBUFFER_STATUS(GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS),
+};
+#undef CUBE_FRAMEBUFFER_STATUS
+
+}  // namespace
+
 RttError rttErrorFromFramebufferStatus(uint32_t glStatus, const char** statusName) {
     const char* name = "unknown framebuffer status";
-    switch (glStatus) {
-        case GL_FRAMEBUFFER_COMPLETE: name = "GL_FRAMEBUFFER_COMPLETE"; break;
-        case GL_FRAMEBUFFER_UNDEFINED: name = "GL_FRAMEBUFFER_UNDEFINED"; break;
-        case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: name = "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT"; break;
-        case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
-            name = "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
-            break;
-        case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER: name = "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER"; break;
-        case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER: name = "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER"; break;
-        case GL_FRAMEBUFFER_UNSUPPORTED: name = "GL_FRAMEBUFFER_UNSUPPORTED"; break;
-        case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: name = "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE"; break;
-        case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS:
-            name = "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS";
-            break;
-        default: break;
+    for (const auto& s : kFramebufferStatuses) {
+        if (s.status == glStatus) name = s.name;
     }
     if (statusName) *statusName = name;
     return glStatus == GL_FRAMEBUFFER_COMPLETE ? RttError::None : RttError::FramebufferIncomplete;

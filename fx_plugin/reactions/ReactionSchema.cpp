@@ -56,100 +56,104 @@ void readEmission(YamlCheck& c, const Node& node, const std::string& path, Emiss
     }
 }
 
-void readColorRamp(YamlCheck& c, const Node& node, const std::string& p,
-                   std::vector<ColorStop>* out) {
-    if (!c.isList(node, p, 1, kMaxColorStops)) return;
-    std::vector<ColorStop> stops;
-    std::vector<YAML::Mark> tMarks;
+// The points of an over-life list (a colour ramp's stops, a curve's points): maps of a life
+// fraction `t` in [0, 1] and one value `valueKey`, which readValue checks (reporting what is
+// missing or wrong, at the point's mark `at` where the key is missing) and stores. Every point
+// is read, and kept even where something is wrong, so that all errors are reported; `tMarks`
+// gets where each point's t stands (the point's own mark without one) for the order check.
+// Returns whether every point was read cleanly.
+template <class Point, class ReadValue>
+bool readLifePoints(YamlCheck& c, const Node& node, const std::string& p, const char* valueKey,
+                    std::vector<Point>* points, std::vector<YAML::Mark>* tMarks, const ReadValue& readValue) {
     bool ok = true;
     size_t i = 0;
     for (auto it = node.begin(); it != node.end(); ++it, ++i) {
         const std::string sp = indexed(p, i);
-        ColorStop stop;
         if (!c.isMap(*it, sp)) {
             ok = false;
             continue;
         }
-        MapReader m(c, *it, sp, {"t", "rgba"});
+        MapReader m(c, *it, sp, {"t", valueKey});
+        Point point;
         const Node* t = m.get("t");
-        const Node* rgba = m.get("rgba");
         if (!t) {
             c.report(ErrorCode::MissingKey, it->Mark(), m.path("t"),
                      "missing required key 't' (life fraction in [0, 1])");
             ok = false;
         } else {
-            ok = c.number(*t, m.path("t"), 0.0, 1.0, &stop.t) && ok;
+            ok = c.number(*t, m.path("t"), 0.0, 1.0, &point.t) && ok;
         }
-        if (!rgba) {
-            c.report(ErrorCode::MissingKey, it->Mark(), m.path("rgba"),
-                     "missing required key 'rgba' ([r, g, b, a], each in [0, 1])");
-            ok = false;
-        } else if (c.isList(*rgba, m.path("rgba"), 4, 4)) {
-            size_t j = 0;
-            for (auto ct = rgba->begin(); ct != rgba->end(); ++ct, ++j) {
-                ok = c.number(*ct, indexed(m.path("rgba"), j), 0.0, 1.0, &stop.rgba[int(j)]) && ok;
-            }
-        } else {
-            ok = false;
-        }
-        stops.push_back(stop);
-        tMarks.push_back(t ? t->Mark() : it->Mark());
+        ok = readValue(m, it->Mark(), &point) && ok;
+        points->push_back(point);
+        tMarks->push_back(t ? t->Mark() : it->Mark());
     }
-    if (!ok) return;
-    for (size_t k = 1; k < stops.size(); ++k) {
-        if (stops[k].t < stops[k - 1].t) {
-            c.report(ErrorCode::OutOfRange, tMarks[k], indexed(p, k) + ".t",
-                     "expected t >= the previous stop's " + std::to_string(stops[k - 1].t) +
-                         " (stops in order of life), got " + std::to_string(stops[k].t));
-            ok = false;
-        }
-    }
-    if (ok) *out = std::move(stops);
+    return ok;
 }
 
-// An over-life curve: 1-16 points {t, v}, t in [0, 1] non-decreasing, v in [lo, hi].
-void readCurve(YamlCheck& c, const Node& node, const std::string& p, double lo, double hi,
-               std::vector<CurvePoint>* out) {
-    if (!c.isList(node, p, 1, kMaxCurvePoints)) return;
-    std::vector<CurvePoint> points;
-    std::vector<YAML::Mark> tMarks;
+// Whether the points' t never goes back. Reports each point whose t is below the previous one's
+// (`noun` names them: "stop", "point"), or only the first such point when `firstOnly`.
+template <class Point>
+bool inLifeOrder(YamlCheck& c, const std::vector<Point>& points, const std::vector<YAML::Mark>& tMarks,
+                 const std::string& p, const std::string& noun, bool firstOnly) {
     bool ok = true;
-    size_t i = 0;
-    for (auto it = node.begin(); it != node.end(); ++it, ++i) {
-        const std::string sp = indexed(p, i);
-        if (!c.isMap(*it, sp)) {
-            ok = false;
-            continue;
-        }
-        MapReader m(c, *it, sp, {"t", "v"});
-        CurvePoint point;
-        for (const char* key : {"t", "v"}) {
-            const Node* n = m.get(key);
-            const bool isT = key[0] == 't';
-            if (!n) {
-                c.report(ErrorCode::MissingKey, it->Mark(), m.path(key),
-                         isT ? std::string("missing required key 't' (life fraction in [0, 1])")
-                             : "missing required key 'v' (a number in [" + std::to_string(lo) +
-                                   ", " + std::to_string(hi) + "])");
-                ok = false;
-            } else {
-                ok = c.number(*n, m.path(key), isT ? 0.0 : lo, isT ? 1.0 : hi,
-                              isT ? &point.t : &point.v) && ok;
-            }
-        }
-        points.push_back(point);
-        tMarks.push_back(m.get("t") ? m.get("t")->Mark() : it->Mark());
-    }
-    if (!ok) return;
     for (size_t k = 1; k < points.size(); ++k) {
         if (points[k].t < points[k - 1].t) {
             c.report(ErrorCode::OutOfRange, tMarks[k], indexed(p, k) + ".t",
-                     "expected t >= the previous point's " + std::to_string(points[k - 1].t) +
-                         " (points in order of life), got " + std::to_string(points[k].t));
-            return;
+                     "expected t >= the previous " + noun + "'s " + std::to_string(points[k - 1].t) +
+                         " (" + noun + "s in order of life), got " + std::to_string(points[k].t));
+            ok = false;
+            if (firstOnly) break;
         }
     }
-    *out = std::move(points);
+    return ok;
+}
+
+// A whole over-life list of 1..maxPoints points (readLifePoints), stored in `out` only when every
+// point is right and in order (inLifeOrder): a bad list leaves the previous one.
+template <class Point, class ReadValue>
+void readLifeList(YamlCheck& c, const Node& node, const std::string& p, int maxPoints, const char* valueKey,
+                  const char* noun, bool firstOnly, std::vector<Point>* out, const ReadValue& readValue) {
+    if (!c.isList(node, p, 1, maxPoints)) return;
+    std::vector<Point> points;
+    std::vector<YAML::Mark> tMarks;
+    const bool ok = readLifePoints(c, node, p, valueKey, &points, &tMarks, readValue);
+    if (ok && inLifeOrder(c, points, tMarks, p, noun, firstOnly)) *out = std::move(points);
+}
+
+// A colour ramp: 1-16 stops {t, rgba}; every stop out of order is reported.
+void readColorRamp(YamlCheck& c, const Node& node, const std::string& p, std::vector<ColorStop>* out) {
+    readLifeList(c, node, p, kMaxColorStops, "rgba", "stop", false, out,
+                 [&](const MapReader& m, const YAML::Mark& at, ColorStop* stop) {
+        const Node* rgba = m.get("rgba");
+        if (!rgba) {
+            c.report(ErrorCode::MissingKey, at, m.path("rgba"),
+                     "missing required key 'rgba' ([r, g, b, a], each in [0, 1])");
+            return false;
+        }
+        if (!c.isList(*rgba, m.path("rgba"), 4, 4)) return false;
+        bool channelsOk = true;
+        size_t j = 0;
+        for (auto ct = rgba->begin(); ct != rgba->end(); ++ct, ++j) {
+            channelsOk = c.number(*ct, indexed(m.path("rgba"), j), 0.0, 1.0, &stop->rgba[int(j)]) && channelsOk;
+        }
+        return channelsOk;
+    });
+}
+
+// An over-life curve: 1-16 points {t, v}, t in [0, 1] non-decreasing, v in [lo, hi]; only the
+// first point out of order is reported.
+void readCurve(YamlCheck& c, const Node& node, const std::string& p, double lo, double hi,
+               std::vector<CurvePoint>* out) {
+    readLifeList(c, node, p, kMaxCurvePoints, "v", "point", true, out,
+                 [&](const MapReader& m, const YAML::Mark& at, CurvePoint* point) {
+        const Node* v = m.get("v");
+        if (!v) {
+            c.report(ErrorCode::MissingKey, at, m.path("v"),
+                     "missing required key 'v' (a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "])");
+            return false;
+        }
+        return c.number(*v, m.path("v"), lo, hi, &point->v);
+    });
 }
 
 void readParticle(YamlCheck& c, const Node& node, const std::string& path, ParticleDesc* d) {

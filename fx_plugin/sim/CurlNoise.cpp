@@ -2,20 +2,16 @@
 
 #include <cmath>
 
+#include "Rng.h"  // lowbias32
+
 namespace fx {
 namespace {
 
 uint32_t hash3(int32_t x, int32_t y, int32_t z, uint32_t seed) {
     // A 32-bit integer mix (lowbias32-style) of the lattice point: deterministic on every
     // platform, no permutation table to keep in sync with a shader port.
-    uint32_t h = seed ^ (static_cast<uint32_t>(x) * 0x8da6b343u) ^
-                 (static_cast<uint32_t>(y) * 0xd8163841u) ^ (static_cast<uint32_t>(z) * 0xcb1ab31fu);
-    h ^= h >> 16;
-    h *= 0x7feb352du;
-    h ^= h >> 15;
-    h *= 0x846ca68bu;
-    h ^= h >> 16;
-    return h;
+    return lowbias32(seed ^ (static_cast<uint32_t>(x) * 0x8da6b343u) ^
+                     (static_cast<uint32_t>(y) * 0xd8163841u) ^ (static_cast<uint32_t>(z) * 0xcb1ab31fu));
 }
 
 // The 12 cube-edge directions of improved Perlin noise (no axis is favoured), picked by h's
@@ -30,6 +26,23 @@ glm::vec3 latticeGradient(uint32_t h) {
 float fade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); }
 float fadeDeriv(float t) { return 30.0f * t * t * (t * (t - 2.0f) + 1.0f); }
 
+// The lattice cell holding p, shared by the noise and the curl's three potentials: its lowest
+// corner, p's position in it and the quintic fade weights (and their derivatives) along each axis.
+struct LatticeCell {
+    explicit LatticeCell(glm::vec3 p) : i0(glm::floor(p)), f(p - glm::floor(p)) {
+        u = glm::vec3(fade(f.x), fade(f.y), fade(f.z));
+        du = glm::vec3(fadeDeriv(f.x), fadeDeriv(f.y), fadeDeriv(f.z));
+    }
+    /// Corner c of 8 as an offset from i0: bit 0 is x, bit 1 y, bit 2 z.
+    static glm::ivec3 corner(int c) { return glm::ivec3(c & 1, (c >> 1) & 1, (c >> 2) & 1); }
+    uint32_t cornerHash(int c, uint32_t seed) const {
+        const glm::ivec3 o = corner(c);
+        return hash3(i0.x + o.x, i0.y + o.y, i0.z + o.z, seed);
+    }
+    glm::ivec3 i0;
+    glm::vec3 f, u, du;
+};
+
 constexpr uint32_t kSeeds[1] = {0x68bc21ebu};
 // Drift directions per octave (unit, not aligned with the lattice).
 const glm::vec3 kDrift[6] = {
@@ -41,11 +54,10 @@ const glm::vec3 kDrift[6] = {
 // the fade weights and one hash per corner (three gradient picks from its bits): the curl needs
 // exactly these, at a third of the cost of three gradientNoise() calls.
 void potentialGradients(glm::vec3 p, uint32_t seed, glm::vec3 out[3]) {
-    const glm::vec3 fl = glm::floor(p);
-    const glm::ivec3 i0(fl);
-    const glm::vec3 f = p - fl;
-    const glm::vec3 u(fade(f.x), fade(f.y), fade(f.z));
-    const glm::vec3 du(fadeDeriv(f.x), fadeDeriv(f.y), fadeDeriv(f.z));
+    const LatticeCell cell(p);
+    const glm::vec3& f = cell.f;
+    const glm::vec3& u = cell.u;
+    const glm::vec3& du = cell.du;
     // Trilinear weights of the 8 corners and their derivatives along x, y, z.
     float w[8];
     glm::vec3 dw[8];
@@ -61,9 +73,8 @@ void potentialGradients(glm::vec3 p, uint32_t seed, glm::vec3 out[3]) {
     }
     out[0] = out[1] = out[2] = glm::vec3(0.0f);
     for (int c = 0; c < 8; ++c) {
-        const glm::ivec3 o(c & 1, (c >> 1) & 1, (c >> 2) & 1);
-        const uint32_t h = hash3(i0.x + o.x, i0.y + o.y, i0.z + o.z, seed);
-        const glm::vec3 r = f - glm::vec3(o);
+        const uint32_t h = cell.cornerHash(c, seed);
+        const glm::vec3 r = f - glm::vec3(LatticeCell::corner(c));
         for (int a = 0; a < 3; ++a) {
             const glm::vec3 g = latticeGradient(h >> (8 * a));
             // d/dp [w_c (g . r)] = w_c g + (g . r) dw_c
@@ -75,18 +86,15 @@ void potentialGradients(glm::vec3 p, uint32_t seed, glm::vec3 out[3]) {
 }  // namespace
 
 NoiseSample gradientNoise(glm::vec3 p, uint32_t seed) {
-    const glm::vec3 fl = glm::floor(p);
-    const glm::ivec3 i0(fl);
-    const glm::vec3 f = p - fl;
-    const glm::vec3 u(fade(f.x), fade(f.y), fade(f.z));
-    const glm::vec3 du(fadeDeriv(f.x), fadeDeriv(f.y), fadeDeriv(f.z));
+    const LatticeCell cell(p);
+    const glm::vec3& u = cell.u;
+    const glm::vec3& du = cell.du;
 
     float n[8];
     glm::vec3 g[8];
     for (int c = 0; c < 8; ++c) {
-        const glm::ivec3 o(c & 1, (c >> 1) & 1, (c >> 2) & 1);
-        g[c] = latticeGradient(hash3(i0.x + o.x, i0.y + o.y, i0.z + o.z, seed));
-        n[c] = glm::dot(g[c], f - glm::vec3(o));
+        g[c] = latticeGradient(cell.cornerHash(c, seed));
+        n[c] = glm::dot(g[c], cell.f - glm::vec3(LatticeCell::corner(c)));
     }
     // Trilinear blend with the fade weights, and its derivative (product rule).
     const float k0 = n[0];

@@ -4,34 +4,44 @@
 
 namespace fx {
 
-glm::vec4 evalColorRamp(const ColorStop* stops, int count, float t) {
-    if (count <= 0 || !stops) return glm::vec4(1.0f);
+namespace {
+
+// Where t falls among `count` >= 1 keys sorted by t: between keys[lo] and keys[hi] at weight w
+// of keys[hi]. Before the first key and past the last, lo == hi (that key's value holds); a
+// non-finite t reads as 0.
+struct Segment {
+    int lo, hi;
+    float w;
+};
+
+template <class Key>
+Segment findSegment(const Key* keys, int count, float t) {
     if (!std::isfinite(t)) t = 0.0f;
-    if (t <= stops[0].t) return stops[0].rgba;
+    if (t <= keys[0].t) return {0, 0, 0.0f};
     for (int i = 1; i < count; ++i) {
-        if (t <= stops[i].t) {
-            const float span = stops[i].t - stops[i - 1].t;
-            // span == 0 is a hard step: the later stop wins from its t on.
-            const float w = span > 0.0f ? (t - stops[i - 1].t) / span : 1.0f;
-            return glm::mix(stops[i - 1].rgba, stops[i].rgba, w);
+        if (t <= keys[i].t) {
+            const float span = keys[i].t - keys[i - 1].t;
+            // span == 0 is a hard step: the later key wins from its t on.
+            return {i - 1, i, span > 0.0f ? (t - keys[i - 1].t) / span : 1.0f};
         }
     }
-    return stops[count - 1].rgba;
+    return {count - 1, count - 1, 0.0f};
+}
+
+}  // namespace
+
+glm::vec4 evalColorRamp(const ColorStop* stops, int count, float t) {
+    if (count <= 0 || !stops) return glm::vec4(1.0f);
+    const Segment s = findSegment(stops, count, t);
+    if (s.lo == s.hi) return stops[s.lo].rgba;
+    return glm::mix(stops[s.lo].rgba, stops[s.hi].rgba, s.w);
 }
 
 float evalCurve(const std::vector<CurvePoint>& curve, float f, float fallback) {
-    const int count = static_cast<int>(curve.size());
-    if (count == 0) return fallback;
-    if (!std::isfinite(f)) f = 0.0f;
-    if (f <= curve[0].t) return curve[0].v;
-    for (int i = 1; i < count; ++i) {
-        if (f <= curve[i].t) {
-            const float span = curve[i].t - curve[i - 1].t;
-            const float w = span > 0.0f ? (f - curve[i - 1].t) / span : 1.0f;
-            return curve[i - 1].v + (curve[i].v - curve[i - 1].v) * w;
-        }
-    }
-    return curve[count - 1].v;
+    if (curve.empty()) return fallback;
+    const Segment s = findSegment(curve.data(), static_cast<int>(curve.size()), f);
+    if (s.lo == s.hi) return curve[s.lo].v;
+    return curve[s.lo].v + (curve[s.hi].v - curve[s.lo].v) * s.w;
 }
 
 void bakeColorRamp(const std::vector<ColorStop>& stops, int texels, float* rgbaOut) {

@@ -14,6 +14,18 @@ inline uint64_t splitmix64(uint64_t& state) {
     return z ^ (z >> 31);
 }
 
+/// lowbias32 (Chris Wellons' 32-bit integer finalizer): every input bit reaches every output
+/// bit. Lattice noise hashes its mixed-in coordinates with it (CurlNoise here, the smoke atlas in
+/// tools/make_assets_smoke.cpp); changing it changes the noise and the committed atlas bytes.
+inline uint32_t lowbias32(uint32_t h) {
+    h ^= h >> 16;
+    h *= 0x7feb352du;
+    h ^= h >> 15;
+    h *= 0x846ca68bu;
+    h ^= h >> 16;
+    return h;
+}
+
 /// 64-bit FNV-1a of a name (stable across runs, unlike std::hash).
 inline uint64_t nameHash(const std::string& name) {
     uint64_t h = 1469598103934665603ull;

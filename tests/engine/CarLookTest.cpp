@@ -12,12 +12,7 @@ using cubetest::project;
 
 namespace {
 
-Options carOptions() {
-    Options o = cubetest::smallOptions(320, 256);
-    o.mirror = false;
-    o.reactions = std::string(CUBE_SOURCE_DIR) + "/reactions/none.yaml";
-    return o;
-}
+Options carOptions() { return cubetest::sceneOnlyOptions(320, 256); }
 
 }  // namespace
 

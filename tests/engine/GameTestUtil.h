@@ -19,6 +19,14 @@ inline cube::Options smallOptions(int w = 320, int h = 256) {
     return o;
 }
 
+/// smallOptions for a look at the scene alone: no mirror view, no reactions (none.yaml).
+inline cube::Options sceneOnlyOptions(int w, int h) {
+    cube::Options o = smallOptions(w, h);
+    o.mirror = false;
+    o.reactions = std::string(CUBE_SOURCE_DIR) + "/reactions/none.yaml";
+    return o;
+}
+
 /// Runs `frames` frames and captures the last one.
 inline bool runFrames(cube::Game& game, int frames) {
     for (int i = 0; i < frames; ++i) {

@@ -48,9 +48,7 @@ TEST(SceneFog, TheFogOptionParsesEachModeAndRefusesBadValues) {
 // GL's linear factor at its eye-space |z|; the sky (past any fog) is the fog colour; the plugin's
 // view carries the same fog.
 TEST(SceneFog, TheTrackIsFoggedByGlsFormulaAndThePluginGetsTheSameFog) {
-    Options o = cubetest::smallOptions(160, 120);
-    o.mirror = false;
-    o.reactions = std::string(CUBE_SOURCE_DIR) + "/reactions/none.yaml";
+    Options o = cubetest::sceneOnlyOptions(160, 120);
     const glm::vec3 eye(-100.0f, 2.0f, -3.0f);
     cubetest::fixCamera(o, eye, {-90.0f, 1.0f, -3.0f});
     auto frame = [&](const Options& opts, fx::ViewInfo* info) {

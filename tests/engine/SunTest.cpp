@@ -40,9 +40,7 @@ TEST(Sun, SetSunValidatesAndKeepsTheLastGoodSun) {
 // Looking along the track at the sky: the sun disc is drawn toward the sun, and the asphalt in
 // front is lit less by a low sun than by a high one (Lambert: N.L = sin(elevation)).
 TEST(Sun, TheSkyAndTheGroundFollowTheSun) {
-    Options o = cubetest::smallOptions(160, 120);
-    o.mirror = false;
-    o.reactions = std::string(CUBE_SOURCE_DIR) + "/reactions/none.yaml";
+    Options o = cubetest::sceneOnlyOptions(160, 120);
     const glm::vec3 eye(-100.0f, 2.0f, -3.0f);
     cubetest::fixCamera(o, eye, {-90.0f, 4.0f, -3.0f});
     Game game;

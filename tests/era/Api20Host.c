@@ -15,17 +15,10 @@
 
 #include "fx_api_2_0.h" /* not fx/fx.h: this host was built before 2.1 */
 
+#include "EraHost.h" /* CHECK, g_failed, the burnout car */
+
 #define GUARD 64
 #define POISON 0xA5
-
-static int g_failed = 0;
-#define CHECK(cond)                                                                  \
-    do {                                                                             \
-        if (!(cond)) {                                                               \
-            ++g_failed;                                                              \
-            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
-        }                                                                            \
-    } while (0)
 
 /* An output struct followed by GUARD poisoned bytes, aligned for any of its fields. */
 #define GUARDED(T)                            \
@@ -57,20 +50,6 @@ static void hostLog(void* user, int level, const char* message) {
         ++g_errorsLogged;
         fprintf(stderr, "[fx error] %s\n", message);
     }
-}
-static int hostWheelCount(void* user) {
-    (void)user;
-    return 4;
-}
-/* A standing burnout: the rear wheels (2, 3) spin on asphalt. */
-static void hostWheel(void* user, int index, fxWheelContact* out) {
-    (void)user;
-    memset(out, 0, sizeof *out);
-    out->position[0] = (index & 1) ? 0.8f : -0.8f;
-    out->position[2] = (index >= 2) ? 1.3f : -1.3f;
-    out->rear = index >= 2;
-    out->slip = out->rear ? 1.0f : 0.0f;
-    out->grounded = 1;
 }
 
 int main(int argc, char** argv) {

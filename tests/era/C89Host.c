@@ -19,18 +19,11 @@
 
 #include <fx/fx.h>
 
+#include "EraHost.h" /* CHECK, g_failed, the burnout car */
+
 #define WIDTH 160
 #define HEIGHT 120
 #define MIN_SMOKE_PIXELS 500 /* of 19200; the burnout cloud covers several thousand */
-
-static int g_failed = 0;
-#define CHECK(cond)                                                            \
-    do {                                                                       \
-        if (!(cond)) {                                                         \
-            ++g_failed;                                                        \
-            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
-        }                                                                      \
-    } while (0)
 
 /* ---- GL: the three entry points the host itself calls ----------------------------------- */
 
@@ -77,23 +70,6 @@ static void hostReport(void* user, const fxDiagnostic* d) {
     if (h->diagnostics++ == 0) h->firstDiagnosticLine = d->line;
     fprintf(stderr, "%s:%d:%d: %s: %s (%s)\n", d->file, d->line, d->column, d->key, d->message,
             fxErrorCodeName(d->code));
-}
-
-static int hostWheelCount(void* user) {
-    (void)user;
-    return 4;
-}
-
-/* A car at the origin facing -Z in a standing burnout: the rear wheels (index 2, 3) spin. */
-static void hostWheel(void* user, int index, fxWheelContact* out) {
-    (void)user;
-    memset(out, 0, sizeof *out);
-    out->position[0] = (index & 1) ? 0.8f : -0.8f;
-    out->position[2] = (index >= 2) ? 1.3f : -1.3f;
-    out->rear = index >= 2;
-    out->slip = out->rear ? 1.0f : 0.0f;
-    out->grounded = 1;
-    out->surface = FX_SURFACE_ASPHALT;
 }
 
 /* ---- camera: right-handed, OpenGL's conventions, column-major ---------------------------- */

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "GlTestContext.h"
@@ -550,6 +551,28 @@ TEST_F(RttErrorTest, SharedDepthConflict) {
     RenderTargetDesc desc = fixed(8, 8, ColorFormat::RGBA8, DepthFormat::Depth32F);
     desc.sharedDepth = owner;
     expectFailure(pool, desc, RttError::SharedDepthConflict);
+}
+
+// Every status GL defines for an incomplete framebuffer is named as GL spells it; others are not.
+TEST(RttErrorNames, FramebufferStatusesAreNamedAsGlSpellsThem) {
+    const std::pair<uint32_t, const char*> named[] = {
+        {GL_FRAMEBUFFER_COMPLETE, "GL_FRAMEBUFFER_COMPLETE"},
+        {GL_FRAMEBUFFER_UNDEFINED, "GL_FRAMEBUFFER_UNDEFINED"},
+        {GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT, "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT"},
+        {GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT, "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT"},
+        {GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER, "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER"},
+        {GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER, "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER"},
+        {GL_FRAMEBUFFER_UNSUPPORTED, "GL_FRAMEBUFFER_UNSUPPORTED"},
+        {GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE, "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE"},
+        {GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS, "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS"},
+        {0x1234u, "unknown framebuffer status"},
+    };
+    for (const auto& [status, name] : named) {
+        const char* got = nullptr;
+        const RttError e = rttErrorFromFramebufferStatus(status, &got);
+        EXPECT_STREQ(got, name);
+        EXPECT_EQ(e, status == GL_FRAMEBUFFER_COMPLETE ? RttError::None : RttError::FramebufferIncomplete) << name;
+    }
 }
 
 TEST_F(RttErrorTest, FramebufferIncomplete) {
