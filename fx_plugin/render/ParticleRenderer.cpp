@@ -36,10 +36,10 @@ ParticleRenderer::~ParticleRenderer() {
     // objects after this body: deleting changes no state of the host's (none of them is bound
     // once a guard has restored the host's bindings).
     GlStateGuard guard;
-    // Each hands back what it held, deleted at the end of its statement.
+    // Hands back the cache, deleted at the end of the statement with every program: the
+    // quarter-res set and the opacity map hold names of it and are not drawn again.
     draw_.swapPrograms(nullptr);
     quarter_.swapPrograms(nullptr);
-    opacity_.reset();
 }
 
 void ParticleRenderer::reportLoadErrors(const std::vector<std::string>& errors) {
@@ -71,8 +71,8 @@ bool ParticleRenderer::ensureLoaded() {
     // reads these, never a later edit.
     draw_.swapPrograms(std::make_unique<ProgramCache>(snapshotShaderReader(shaderReader(config_.shaderDir))));
     draw_.programs().build(ProgramCache::techniqueKeys(), &errors);
-    quarter_.programs().build(config_.shaderDir, &errors);
-    opacity_->build(config_.shaderDir, &errors);
+    draw_.programs().build(ProgramCache::passKeys(), &errors);
+    bindPassPrograms();
     if (!draw_.atlas().hasNormals() && !normalsWarned_) {
         log(LogLevel::Warning, "fx: lit smoke is drawn as flat cards: " + draw_.atlas().normalsError());
         normalsWarned_ = true;
@@ -97,31 +97,28 @@ bool ParticleRenderer::shadersChanged() {
     return true;
 }
 
+void ParticleRenderer::bindPassPrograms() {
+    quarter_.programs().bind(draw_.programs());
+    opacity_.bind(draw_.programs());
+}
+
 void ParticleRenderer::stageShaders(ShaderErrorLog* errors) {
     stagedPrograms_ = std::make_unique<ProgramCache>(snapshotShaderReader(shaderReader(config_.shaderDir)));
-    stagedQuarter_ = std::make_unique<QuarterResPrograms>();
-    stagedOpacity_ = std::make_unique<SmokeOpacityMap>();
     std::vector<std::string> failed;
-    // The same variants as the running cache (every key it tried), so nothing is missing after
-    // the swap.
+    // The same keys as the running cache (every key it tried: the passes' programs too), so
+    // nothing is missing after the swap.
     stagedPrograms_->build(draw_.programs().keys(), &failed);
-    stagedQuarter_->build(config_.shaderDir, &failed);
-    stagedOpacity_->build(config_.shaderDir, &failed);
     for (const std::string& e : failed) errors->add(e);
 }
 
 void ParticleRenderer::commitShaders() {
-    // Each swap hands back the old set, deleted here (the caller holds a GlStateGuard).
+    // The swap hands back the old cache, deleted at the end of the statement (the caller holds a
+    // GlStateGuard); the passes then take the new cache's programs.
     draw_.swapPrograms(std::move(stagedPrograms_));
-    quarter_.swapPrograms(std::move(stagedQuarter_));
-    opacity_ = std::move(stagedOpacity_);
+    bindPassPrograms();
 }
 
-void ParticleRenderer::dropShaders() {
-    stagedPrograms_.reset();
-    stagedQuarter_.reset();
-    stagedOpacity_.reset();
-}
+void ParticleRenderer::dropShaders() { stagedPrograms_.reset(); }
 
 bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps) {
     const bool ready = ensureLoaded();

@@ -103,6 +103,8 @@ public:
 
 private:
     bool ensureLoaded();
+    /// The quarter-res passes and the opacity map take their programs from the running cache.
+    void bindPassPrograms();
     void log(LogLevel level, const std::string& message) const { logTo(config_, level, message); }
     /// Logs the build lines of `errors` not logged before (each once, loadErrors_) and keeps them
     /// as diagnostics for prepare().
@@ -119,8 +121,7 @@ private:
     ParticleDraw draw_;
     FullResPath fullRes_;
     QuarterResPath quarter_;
-    // Owned through a pointer so a shader reload can build a new one beside it and swap.
-    std::unique_ptr<SmokeOpacityMap> opacity_ = std::make_unique<SmokeOpacityMap>();
+    SmokeOpacityMap opacity_;
     bool quarterFallbackLogged_ = false;
     bool frameBuildLogged_ = false;            ///< ensureDrawPrograms' warning, once
     std::vector<ProgramCache::Key> drawKeys_;  ///< ensureDrawPrograms' scratch, kept for its capacity
@@ -130,10 +131,9 @@ private:
                                  ///< into the host's frame graph (never by renderView's own frame)
     bool normalsWarned_ = false;
     uint64_t shaderStamp_ = 0;  ///< shaderStamp() when the running programs were built
-    // A reload's staged programs (stageShaders), live at commitShaders.
+    // A reload's staged programs (stageShaders): every key of the running cache, live at
+    // commitShaders.
     std::unique_ptr<ProgramCache> stagedPrograms_;
-    std::unique_ptr<QuarterResPrograms> stagedQuarter_;
-    std::unique_ptr<SmokeOpacityMap> stagedOpacity_;
     DrawListBuilder builder_;
     std::vector<std::shared_ptr<ParticleView>> records_;
     std::vector<std::shared_ptr<SmokeOpacityMap::Casters>> opacityRecords_;  ///< one per map until its pass ran

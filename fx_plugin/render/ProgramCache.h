@@ -1,5 +1,9 @@
 #pragma once
-// The billboard particle programs, one cache keyed by the variant a batch draws with:
+// The particle programs, one cache keyed by what a program is built for. Key::program names the
+// shader pair: Billboard, the particle draw (below), or one of the fixed programs of the passes
+// around it (the quarter-res depth downsample, half-res z-fill and composite's two builds; the
+// opacity map's), whose files and defines are in ProgramCache.cpp beside the billboards'.
+// A billboard key is the variant a batch draws with:
 //   variant          the technique's shaders and target kind (vs_particles + ...):
 //     HardZBuffer      fs_particles_hard                         (full res, z-buffer test)
 //     HardLinearDepth  fs_particles_hard, FX_LINEAR_DEPTH_TEST   (quarter res)
@@ -10,7 +14,7 @@
 //   lit              FX_LIT: particles_common.glsl's smokeLight, for reactions under a scene light
 //   power            FX_POWER_STEPS = 2 contrast_power: Soft with the curve's multiplies folded
 //                    (power 1 draws no curve at all); -1 = no power folded
-// Key::bits() packs them; nothing else names a program. The resolution path is in the variant
+// Key::bits() packs them with the program; nothing else names a program. The resolution path is in the variant
 // (quarter res draws HardLinearDepth for hard); the depth convention is no variant: the programs
 // read linear depth, and reversed-Z changes only the depth function the pass sets.
 //
@@ -27,6 +31,8 @@
 //    general build where the power's own is missing; no key where the variant itself did not
 //    build: its technique is not drawn (usableTechniques), the others still are. The fallback
 //    lives there alone; find() of the filtered key is the program.
+//  - A pass program's uniforms are its user's (QuarterResPrograms, SmokeOpacityMap::bind), looked
+//    up on passProgram() once per cache; a billboard's are looked up here once per build.
 //  - Changes no bound GL state (no glUseProgram); deletes every program it built.
 #include <cstdint>
 #include <string>
@@ -60,12 +66,30 @@ struct ParticleProgram {
 class ProgramCache {
 public:
     enum Variant : int { HardZBuffer = 0, HardLinearDepth, Soft, Spherical, SoftGeneralPower, VariantCount };
+    /// The shader pair a key builds. Billboard: the particle draw of a variant; the others are
+    /// the passes' fixed programs (no variant, lit or power: those stay at their defaults).
+    enum Program : int {
+        Billboard = 0,
+        DepthDownsample,    ///< vs_particles_tiles + fs_particles_depth_downsample
+        HalfZ,              ///< vs_particles_tiles + fs_particles_half_z
+        Composite,          ///< vs_particles_tiles + fs_particles_composite (depth-aware)
+        CompositeBilinear,  ///< the same, FX_COMPOSITE_BILINEAR
+        OpacityMap,         ///< vs_particles + fs_particles_opacity
+        ProgramCount
+    };
 
     struct Key {
         Variant variant = HardZBuffer;
         bool lit = false;
         int powerSteps = -1;  ///< 2 contrast_power, 0 .. kMaxPowerSteps; -1: none (Soft only)
-        /// variant in bits 0-2, lit 3, powerSteps + 1 in 4-9.
+        Program program = Billboard;
+        /// The key of a pass's fixed program.
+        static Key of(Program p) {
+            Key k;
+            k.program = p;
+            return k;
+        }
+        /// variant in bits 0-2, lit 3, powerSteps + 1 in 4-9, program in 10-13.
         uint32_t bits() const;
         /// The #defines that select this variant (prepended to each stage).
         std::string defines() const;
@@ -88,6 +112,9 @@ public:
     /// The program of `key`, or null where it was never built or failed. Never builds.
     const ParticleProgram* find(const Key& key) const;
     bool tried(const Key& key) const { return tried_.count(key.bits()) != 0; }
+    /// The GL program of a pass's fixed program `p`, 0 where it was never built or failed. Never
+    /// builds.
+    uint32_t passProgram(Program p) const;
     /// The variant's general build (program 0 when it did not build). Never builds.
     const ParticleProgram& get(Variant v, bool lit = false) const;
     /// find(filter(...)) of a batch of `v` with `contrastPower` (program 0 where none exists).
@@ -106,6 +133,10 @@ public:
     /// Every variant, lit and unlit: what prepareGl always builds (a technique whose general
     /// program fails is not drawn; the run-time override can pick any of them).
     static std::vector<Key> techniqueKeys();
+    /// Every pass's fixed program (Key::of each Program but Billboard): what loading builds with
+    /// techniqueKeys (a failed one turns its pass off: quarter res draws at full res, lit smoke
+    /// goes without self-shadowing).
+    static std::vector<Key> passKeys();
     /// Adds (once each) the keys a batch of `technique` with `contrastPower` draws with, lit and
     /// unlit, on a quarter-res target or not.
     static void addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys);
