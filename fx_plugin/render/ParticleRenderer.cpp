@@ -25,20 +25,18 @@ SizeMismatchReport sizeMismatchTo(ApiErrors* errors) {
 
 }  // namespace
 
-ParticleRenderer::ParticleRenderer(RendererConfig config)
+ParticleRenderer::ParticleRenderer(RendererConfig config, ProgramCache& programs)
     : config_(std::move(config)),
+      draw_(programs),
       fullRes_(draw_, sizeMismatchTo(config_.errors)),
       quarter_(draw_, sizeMismatchTo(config_.errors)) {}
 
 ParticleRenderer::~ParticleRenderer() {
     if (state_ == State::Unloaded || !privateGlLoaded()) return;  // no GL was ever touched
-    // The programs go inside a guard; the atlas, ramp, stream and sampler members delete their
-    // objects after this body: deleting changes no state of the host's (none of them is bound
-    // once a guard has restored the host's bindings).
+    // The quarter-res set goes inside a guard; the atlas, ramp, stream and sampler members delete
+    // their objects after this body: deleting changes no state of the host's (none of them is
+    // bound once a guard has restored the host's bindings). The programs are Renderers'.
     GlStateGuard guard;
-    // Hands back the cache, deleted at the end of the statement with every program: the
-    // quarter-res set and the opacity map hold names of it and are not drawn again.
-    draw_.swapPrograms(nullptr);
     quarter_.swapPrograms(nullptr);
 }
 
@@ -67,9 +65,6 @@ bool ParticleRenderer::ensureLoaded() {
         return false;
     }
     std::vector<std::string> errors;
-    // The cache keeps the files of this generation of programs: each contrast power built later
-    // reads these, never a later edit.
-    draw_.swapPrograms(std::make_unique<ProgramCache>(snapshotShaderReader(shaderReader(config_.shaderDir))));
     draw_.programs().build(ProgramCache::techniqueKeys(), &errors);
     draw_.programs().build(ProgramCache::passKeys(), &errors);
     bindPassPrograms();
@@ -102,23 +97,6 @@ void ParticleRenderer::bindPassPrograms() {
     opacity_.bind(draw_.programs());
 }
 
-void ParticleRenderer::stageShaders(ShaderErrorLog* errors) {
-    stagedPrograms_ = std::make_unique<ProgramCache>(snapshotShaderReader(shaderReader(config_.shaderDir)));
-    std::vector<std::string> failed;
-    // The same keys as the running cache (every key it tried: the passes' programs too), so
-    // nothing is missing after the swap.
-    stagedPrograms_->build(draw_.programs().keys(), &failed);
-    for (const std::string& e : failed) errors->add(e);
-}
-
-void ParticleRenderer::commitShaders() {
-    // The swap hands back the old cache, deleted at the end of the statement (the caller holds a
-    // GlStateGuard); the passes then take the new cache's programs.
-    draw_.swapPrograms(std::move(stagedPrograms_));
-    bindPassPrograms();
-}
-
-void ParticleRenderer::dropShaders() { stagedPrograms_.reset(); }
 
 bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps) {
     const bool ready = ensureLoaded();

@@ -1,6 +1,7 @@
 #include "ProgramCache.h"
 
 #include <cmath>
+#include <utility>
 
 #include "render/PrivateGl.h"
 
@@ -33,6 +34,7 @@ constexpr Source kPassSources[ProgramCache::ProgramCount] = {
     {"vs_particles_tiles.glsl", "fs_particles_composite.glsl", ""},
     {"vs_particles_tiles.glsl", "fs_particles_composite.glsl", "#define FX_COMPOSITE_BILINEAR 1\n"},
     {"vs_particles.glsl", "fs_particles_opacity.glsl", ""},
+    {"vs_particles_fullscreen.glsl", "fs_particles_linearize_depth.glsl", ""},
 };
 
 const Source& sourceOf(const ProgramCache::Key& key) {
@@ -102,6 +104,13 @@ std::string ProgramCache::Key::defines() const {
 
 ProgramCache::~ProgramCache() {
     for (auto& entry : built_) glDeleteProgram(entry.second.program);
+}
+
+void ProgramCache::swap(ProgramCache& other) noexcept {
+    std::swap(read_, other.read_);
+    built_.swap(other.built_);
+    tried_.swap(other.tried_);
+    order_.swap(other.order_);
 }
 
 int ProgramCache::build(const std::vector<Key>& keys, std::vector<std::string>* errors) {
@@ -175,7 +184,7 @@ std::vector<ProgramCache::Key> ProgramCache::techniqueKeys() {
 
 std::vector<ProgramCache::Key> ProgramCache::passKeys() {
     std::vector<Key> keys;
-    for (int p = Billboard + 1; p < ProgramCount; ++p) keys.push_back(Key::of(Program(p)));
+    for (Program p : {DepthDownsample, HalfZ, Composite, CompositeBilinear, OpacityMap}) keys.push_back(Key::of(p));
     return keys;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
-// The particle programs, one cache keyed by what a program is built for. Key::program names the
-// shader pair: Billboard, the particle draw (below), or one of the fixed programs of the passes
-// around it (the quarter-res depth downsample, half-res z-fill and composite's two builds; the
-// opacity map's), whose files and defines are in ProgramCache.cpp beside the billboards'.
+// The plugin's programs, one cache (Renderers owns it) keyed by what a program is built for.
+// Key::program names the shader pair: Billboard, the particle draw (below), or one of the fixed
+// programs of the passes around it (the quarter-res depth downsample, half-res z-fill and
+// composite's two builds; the opacity map's; the immediate path's depth lineariser), whose files
+// and defines are in ProgramCache.cpp beside the billboards'.
 // A billboard key is the variant a batch draws with:
 //   variant          the technique's shaders and target kind (vs_particles + ...):
 //     HardZBuffer      fs_particles_hard                         (full res, z-buffer test)
@@ -31,8 +32,11 @@
 //    general build where the power's own is missing; no key where the variant itself did not
 //    build: its technique is not drawn (usableTechniques), the others still are. The fallback
 //    lives there alone; find() of the filtered key is the program.
-//  - A pass program's uniforms are its user's (QuarterResPrograms, SmokeOpacityMap::bind), looked
-//    up on passProgram() once per cache; a billboard's are looked up here once per build.
+//  - A pass program's uniforms are its user's (QuarterResPrograms, SmokeOpacityMap,
+//    DepthLinearizer: bind), looked up on passProgram() once per build; a billboard's are looked
+//    up here once per build.
+//  - A shader reload builds a new cache of keys() and swap()s it in whole: the users hold this
+//    object, whose contents change, and bind again.
 //  - Changes no bound GL state (no glUseProgram); deletes every program it built.
 #include <cstdint>
 #include <string>
@@ -75,6 +79,7 @@ public:
         Composite,          ///< vs_particles_tiles + fs_particles_composite (depth-aware)
         CompositeBilinear,  ///< the same, FX_COMPOSITE_BILINEAR
         OpacityMap,         ///< vs_particles + fs_particles_opacity
+        LinearizeDepth,     ///< vs_particles_fullscreen + fs_particles_linearize_depth
         ProgramCount
     };
 
@@ -105,6 +110,11 @@ public:
     ~ProgramCache();
     ProgramCache(const ProgramCache&) = delete;
     ProgramCache& operator=(const ProgramCache&) = delete;
+    /// Exchanges every program, key and the snapshot with `other` (a reload's new cache goes live;
+    /// the old programs are deleted with `other`). No GL.
+    void swap(ProgramCache& other) noexcept;
+    /// No program built (then destroying it makes no GL call).
+    bool empty() const { return built_.empty(); }
 
     /// Builds each key of `keys` not tried before; appends one "file:line: message" block per
     /// key that failed. Returns how many programs it compiled.
@@ -133,9 +143,10 @@ public:
     /// Every variant, lit and unlit: what prepareGl always builds (a technique whose general
     /// program fails is not drawn; the run-time override can pick any of them).
     static std::vector<Key> techniqueKeys();
-    /// Every pass's fixed program (Key::of each Program but Billboard): what loading builds with
-    /// techniqueKeys (a failed one turns its pass off: quarter res draws at full res, lit smoke
-    /// goes without self-shadowing).
+    /// The billboard renderer's fixed programs (the quarter-res passes', the opacity map's): what
+    /// its loading builds with techniqueKeys (a failed one turns its pass off: quarter res draws
+    /// at full res, lit smoke goes without self-shadowing). The lineariser's is the immediate
+    /// path's own (ImmediateRenderer::prepare).
     static std::vector<Key> passKeys();
     /// Adds (once each) the keys a batch of `technique` with `contrastPower` draws with, lit and
     /// unlit, on a quarter-res target or not.

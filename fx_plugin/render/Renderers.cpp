@@ -14,11 +14,19 @@ namespace fx {
 
 Renderers::Renderers(const RendererConfig& config)
     : config_(config),
-      billboards_(config),
+      programs_(snapshotShaderReader(shaderReader(config.shaderDir))),
+      billboards_(config, programs_),
       mega_(config),
       stateless_(config.host, config.shaderDir),
-      immediate_(config.host, config.shaderDir) {
+      immediate_(config.host, programs_) {
     immediate_.setApiErrors(config.errors);
+}
+
+Renderers::~Renderers() {
+    if (programs_.empty()) return;  // nothing built: no GL to touch
+    GlStateGuard guard;
+    ProgramCache none;
+    programs_.swap(none);  // every program deleted with `none`, inside the guard
 }
 
 void Renderers::collectBatches(const std::vector<ReactionRuntime>& runtimes) {
@@ -85,15 +93,19 @@ bool Renderers::reload(Diagnostics* out) {
     if (!billboards_.shadersChanged()) return false;
     GlStateGuard guard;
     // Every technique's programs in one transaction: all go live or none, and one edit gives one
-    // line, whichever technique's file it broke.
+    // line, whichever technique's file it broke. The cache's keys are built anew from the
+    // folder's current files (every key the running cache tried, so nothing is missing after the
+    // swap).
     ShaderErrorLog errors;
-    billboards_.stageShaders(&errors);
+    ProgramCache staged(snapshotShaderReader(shaderReader(config_.shaderDir)));
+    std::vector<std::string> failed;
+    staged.build(programs_.keys(), &failed);
+    for (const std::string& e : failed) errors.add(e);
     mega_.stageShaders(&errors);
     stateless_.stageShaders(&errors);
     if (!errors.empty()) {
-        // The staged programs are deleted; the running ones stay, so the smoke on screen does not
-        // change.
-        billboards_.dropShaders();
+        // The staged programs are deleted (`staged` at the end of this scope, inside the guard);
+        // the running ones stay, so the smoke on screen does not change.
         mega_.dropShaders();
         stateless_.dropShaders();
         logTo(config_, LogLevel::Error, "fx: particle shaders in " + config_.shaderDir +
@@ -102,7 +114,8 @@ bool Renderers::reload(Diagnostics* out) {
         if (out) addShaderDiagnostics(errors.text(), out);
         return false;
     }
-    billboards_.commitShaders();
+    programs_.swap(staged);  // the old programs are deleted with `staged`, inside the guard
+    billboards_.programsSwapped();
     mega_.commitShaders();
     stateless_.commitShaders();
     logTo(config_, LogLevel::Info, "fx: particle shaders reloaded from " + config_.shaderDir);

@@ -175,8 +175,8 @@ class HostDepthTest : public FxHostTest {
 protected:
     void SetUp() override {
         FxHostTest::SetUp();
-        std::string error;
-        ASSERT_TRUE(depth.prepare(&error)) << error;
+        buildLinearizeProgram(&programs);
+        ASSERT_TRUE(depth.bind(programs));
         glGenTextures(1, &linearTex);
         glBindTexture(GL_TEXTURE_2D, linearTex);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, kW, kH, 0, GL_RED, GL_FLOAT, nullptr);
@@ -267,6 +267,7 @@ protected:
         return m;
     }
 
+    fx::ProgramCache programs{fx::snapshotShaderReader(fx::shaderReader(""))};
     fx::DepthLinearizer depth;
     GLuint linearTex = 0, linearFbo = 0;
 };
