@@ -346,6 +346,42 @@ TEST_F(HostDepthTest, DepthTexturesOfEveryFormatLinearisePerConvention) {
     }
 }
 
+// The linearise program is the cache's: a shader reload swaps a new cache in and deletes the old
+// programs; bind() then takes the new build, and the pass draws with it (a stale name would
+// raise a GL error, which the fixture checks, and leave the target unwritten).
+TEST_F(HostDepthTest, TheLinearizerTakesTheProgramOfASwappedCache) {
+    const Convention c = conventions()[0];
+    GLuint tex = 0, colour = 0, fbo = 0;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, kW, kH, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
+    glGenTextures(1, &colour);
+    glBindTexture(GL_TEXTURE_2D, colour);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kW, kH, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, tex, 0);
+    ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+    drawScene(c);
+    {
+        fx::ProgramCache reloaded(fx::snapshotShaderReader(fx::shaderReader("")));
+        buildLinearizeProgram(&reloaded);
+        programs.swap(reloaded);
+    }  // the old programs are deleted here, as at the end of Renderers::reload
+    {
+        fx::GlStateGuard guard;
+        ASSERT_TRUE(depth.bind(programs));
+        depth.linearize(tex, c.proj, c.mapping, kFar, linearFbo, kW, kH);
+    }
+    EXPECT_GT(check(c, 24, "after a swap").checked, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteTextures(1, &tex);
+    glDeleteTextures(1, &colour);
+}
+
 TEST_F(HostDepthTest, DefaultFramebufferDepthIsCopiedAndLinearised) {
     ASSERT_TRUE(resizeDefaultFramebuffer(kW, kH));
     {
