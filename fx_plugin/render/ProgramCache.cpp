@@ -17,18 +17,14 @@ struct Source {
     const char* defines;
 };
 
-// Billboard keys: vs_particles + these.
-constexpr Source kSources[ProgramCache::VariantCount] = {
+// Every key's files and defines: the billboards' by variant, then the passes' fixed programs by
+// ProgramCache::Program (from DepthDownsample on).
+constexpr Source kSources[ProgramCache::VariantCount + ProgramCache::ProgramCount - 1] = {
     {"vs_particles.glsl", "fs_particles_hard.glsl", ""},
     {"vs_particles.glsl", "fs_particles_hard.glsl", "#define FX_LINEAR_DEPTH_TEST 1\n"},
     {"vs_particles.glsl", "fs_particles_soft.glsl", ""},
     {"vs_particles.glsl", "fs_particles_spherical.glsl", "#define FX_SPHERICAL 1\n"},
     {"vs_particles.glsl", "fs_particles_soft.glsl", "#define FX_GENERAL_POWER 1\n"},
-};
-
-// The passes' fixed programs, by ProgramCache::Program (Billboard's row unused).
-constexpr Source kPassSources[ProgramCache::ProgramCount] = {
-    {"", "", ""},
     {"vs_particles_tiles.glsl", "fs_particles_depth_downsample.glsl", ""},
     {"vs_particles_tiles.glsl", "fs_particles_half_z.glsl", ""},
     {"vs_particles_tiles.glsl", "fs_particles_composite.glsl", ""},
@@ -38,7 +34,8 @@ constexpr Source kPassSources[ProgramCache::ProgramCount] = {
 };
 
 const Source& sourceOf(const ProgramCache::Key& key) {
-    return key.program == ProgramCache::Billboard ? kSources[key.variant] : kPassSources[key.program];
+    return kSources[key.program == ProgramCache::Billboard ? int(key.variant)
+                                                           : ProgramCache::VariantCount + key.program - 1];
 }
 
 ParticleProgram locate(GLuint program) {

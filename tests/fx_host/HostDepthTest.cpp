@@ -227,6 +227,27 @@ protected:
         glDisable(GL_DEPTH_TEST);
     }
 
+    // A framebuffer of an RGBA8 colour texture and a depth texture of `f`, left bound.
+    static void makeDepthTarget(const Format& f, GLuint* tex, GLuint* colour, GLuint* fbo) {
+        glGenTextures(1, tex);
+        glBindTexture(GL_TEXTURE_2D, *tex);
+        glTexImage2D(GL_TEXTURE_2D, 0, GLint(f.internal), kW, kH, 0, f.format, f.type, nullptr);
+        glGenTextures(1, colour);
+        glBindTexture(GL_TEXTURE_2D, *colour);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kW, kH, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        glGenFramebuffers(1, fbo);
+        glBindFramebuffer(GL_FRAMEBUFFER, *fbo);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, *colour, 0);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, f.attachment, GL_TEXTURE_2D, *tex, 0);
+    }
+    static void freeDepthTarget(GLuint tex, GLuint colour, GLuint fbo) {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glDeleteFramebuffers(1, &fbo);
+        glDeleteTextures(1, &tex);
+        glDeleteTextures(1, &colour);
+    }
+
     std::vector<float> readLinear() {
         std::vector<float> out(size_t(kW) * kH);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, linearFbo);
@@ -301,19 +322,11 @@ TEST_F(HostDepthTest, MappingRoundTripsAndNamesTheConvention) {
 TEST_F(HostDepthTest, DepthTexturesOfEveryFormatLinearisePerConvention) {
     for (const Format& f : kFormats) {
         GLuint tex = 0, colour = 0, fbo = 0;
-        glGenTextures(1, &tex);
+        makeDepthTarget(f, &tex, &colour, &fbo);
         glBindTexture(GL_TEXTURE_2D, tex);
-        glTexImage2D(GL_TEXTURE_2D, 0, GLint(f.internal), kW, kH, 0, f.format, f.type, nullptr);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);  // as a host may leave it
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);  // a shadow map's
-        glGenTextures(1, &colour);
-        glBindTexture(GL_TEXTURE_2D, colour);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kW, kH, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
         glBindTexture(GL_TEXTURE_2D, 0);
-        glGenFramebuffers(1, &fbo);
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, f.attachment, GL_TEXTURE_2D, tex, 0);
         ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE)) << f.name;
         {
             fx::GlStateGuard guard;
@@ -339,10 +352,7 @@ TEST_F(HostDepthTest, DepthTexturesOfEveryFormatLinearisePerConvention) {
             check(c, f.bits, std::string(f.name) + " bound FBO copy");
             drainGlErrors(c.name);
         }
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glDeleteFramebuffers(1, &fbo);
-        glDeleteTextures(1, &tex);
-        glDeleteTextures(1, &colour);
+        freeDepthTarget(tex, colour, fbo);
     }
 }
 
@@ -351,18 +361,9 @@ TEST_F(HostDepthTest, DepthTexturesOfEveryFormatLinearisePerConvention) {
 // raise a GL error, which the fixture checks, and leave the target unwritten).
 TEST_F(HostDepthTest, TheLinearizerTakesTheProgramOfASwappedCache) {
     const Convention c = conventions()[0];
+    const Format& f = kFormats[1];  // DEPTH24
     GLuint tex = 0, colour = 0, fbo = 0;
-    glGenTextures(1, &tex);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, kW, kH, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
-    glGenTextures(1, &colour);
-    glBindTexture(GL_TEXTURE_2D, colour);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kW, kH, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, tex, 0);
+    makeDepthTarget(f, &tex, &colour, &fbo);
     ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
     drawScene(c);
     {
@@ -375,11 +376,8 @@ TEST_F(HostDepthTest, TheLinearizerTakesTheProgramOfASwappedCache) {
         ASSERT_TRUE(depth.bind(programs));
         depth.linearize(tex, c.proj, c.mapping, kFar, linearFbo, kW, kH);
     }
-    EXPECT_GT(check(c, 24, "after a swap").checked, 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteFramebuffers(1, &fbo);
-    glDeleteTextures(1, &tex);
-    glDeleteTextures(1, &colour);
+    EXPECT_GT(check(c, f.bits, "after a swap").checked, 0);
+    freeDepthTarget(tex, colour, fbo);
 }
 
 TEST_F(HostDepthTest, DefaultFramebufferDepthIsCopiedAndLinearised) {
