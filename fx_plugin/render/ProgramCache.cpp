@@ -31,6 +31,12 @@ constexpr Source kSources[ProgramCache::VariantCount + ProgramCache::ProgramCoun
     {"vs_particles_tiles.glsl", "fs_particles_composite.glsl", "#define FX_COMPOSITE_BILINEAR 1\n"},
     {"vs_particles.glsl", "fs_particles_opacity.glsl", ""},
     {"vs_particles_fullscreen.glsl", "fs_particles_linearize_depth.glsl", ""},
+    {"vs_particles_fullscreen.glsl", "fs_mega_depth.glsl", ""},
+    {"vs_mega.glsl", "fs_mega_spheres.glsl", ""},
+    {"vs_particles_fullscreen.glsl", "fs_mega_blur.glsl", ""},
+    {"vs_particles_fullscreen.glsl", "fs_mega_blur.glsl", "#define FX_MEGA_SHADE 1\n"},
+    {"vs_particles_fullscreen.glsl", "fs_mega_composite.glsl", ""},
+    {"vs_stateless_particles.glsl", "fs_stateless_particles.glsl", ""},
 };
 
 const Source& sourceOf(const ProgramCache::Key& key) {
@@ -182,6 +188,12 @@ std::vector<ProgramCache::Key> ProgramCache::techniqueKeys() {
 std::vector<ProgramCache::Key> ProgramCache::passKeys() {
     std::vector<Key> keys;
     for (Program p : {DepthDownsample, HalfZ, Composite, CompositeBilinear, OpacityMap}) keys.push_back(Key::of(p));
+    return keys;
+}
+
+std::vector<ProgramCache::Key> ProgramCache::megaKeys() {
+    std::vector<Key> keys;
+    for (Program p : {MegaDepth, MegaSpheres, MegaBlur, MegaShade, MegaComposite}) keys.push_back(Key::of(p));
     return keys;
 }
 

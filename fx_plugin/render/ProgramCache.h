@@ -1,9 +1,10 @@
 #pragma once
 // The plugin's programs, one cache (Renderers owns it) keyed by what a program is built for.
 // Key::program names the shader pair: Billboard, the particle draw (below), or one of the fixed
-// programs of the passes around it (the quarter-res depth downsample, half-res z-fill and
-// composite's two builds; the opacity map's; the immediate path's depth lineariser), whose files
-// and defines are in ProgramCache.cpp beside the billboards'.
+// programs of the other passes (the quarter-res depth downsample, half-res z-fill and
+// composite's two builds; the opacity map's; the immediate path's depth lineariser; the five
+// mega passes'; the stateless particles'), whose files and defines are in ProgramCache.cpp
+// beside the billboards'.
 // A billboard key is the variant a batch draws with:
 //   variant          the technique's shaders and target kind (vs_particles + ...):
 //     HardZBuffer      fs_particles_hard                         (full res, z-buffer test)
@@ -33,8 +34,8 @@
 //    build: its technique is not drawn (usableTechniques), the others still are. The fallback
 //    lives there alone; find() of the filtered key is the program.
 //  - A pass program's uniforms are its user's (QuarterResPrograms, SmokeOpacityMap,
-//    DepthLinearizer: bind), looked up on passProgram() once per build; a billboard's are looked
-//    up here once per build.
+//    DepthLinearizer, MegaPrograms, StatelessRenderer: bind), looked up on passProgram() once per
+//    build; a billboard's are looked up here once per build.
 //  - A shader reload builds a new cache of keys() and swap()s it in whole: the users hold this
 //    object, whose contents change, and bind again.
 //  - Changes no bound GL state (no glUseProgram); deletes every program it built.
@@ -80,6 +81,12 @@ public:
         CompositeBilinear,  ///< the same, FX_COMPOSITE_BILINEAR
         OpacityMap,         ///< vs_particles + fs_particles_opacity
         LinearizeDepth,     ///< vs_particles_fullscreen + fs_particles_linearize_depth
+        MegaDepth,          ///< vs_particles_fullscreen + fs_mega_depth
+        MegaSpheres,        ///< vs_mega + fs_mega_spheres
+        MegaBlur,           ///< vs_particles_fullscreen + fs_mega_blur
+        MegaShade,          ///< the same, FX_MEGA_SHADE
+        MegaComposite,      ///< vs_particles_fullscreen + fs_mega_composite
+        Stateless,          ///< vs_stateless_particles + fs_stateless_particles
         ProgramCount
     };
 
@@ -148,6 +155,8 @@ public:
     /// at full res, lit smoke goes without self-shadowing). The lineariser's is the immediate
     /// path's own (ImmediateRenderer::prepare).
     static std::vector<Key> passKeys();
+    /// The mega renderer's five programs (MegaRenderer: built when mega is loaded).
+    static std::vector<Key> megaKeys();
     /// Adds (once each) the keys a batch of `technique` with `contrastPower` draws with, lit and
     /// unlit, on a quarter-res target or not.
     static void addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys);

@@ -11,11 +11,10 @@
 // mega's, then "particles_stateless".
 //
 // Programs: one ProgramCache, owned here, holds the billboards', the quarter-res passes', the
-// opacity map's and the immediate path's lineariser's (ProgramCache.h: one key type, one build
-// function). Only prepare (and the lazy builds of a host that skips prepareGl, before any pass)
-// and reload compile into it; the renderers look their uniforms up on the programs it gives them.
-// MegaRenderer and StatelessRenderer still build their own (MegaPrograms, the stateless program)
-// inside the same reload transaction.
+// opacity map's, the immediate path's lineariser's (ProgramCache.h: one key type, one build
+// function), and the mega and stateless renderers'. Only prepare (and the lazy builds of a host
+// that skips prepareGl, before any pass) and reload compile into it; the renderers look their
+// uniforms up on the programs it gives them.
 //
 // GL: every call but the constructor needs the host's context current once anything was loaded;
 // destroy this with the context current (the renderers and the cache delete their GL objects).
