@@ -5,7 +5,6 @@
 #include <algorithm>
 
 #include "PrivateGl.h"
-#include "ShaderLoader.h"
 #include "Uniforms.h"
 
 namespace fx {
@@ -26,7 +25,6 @@ uint32_t supportedDepthFormat(uint32_t f) {
 DepthLinearizer::~DepthLinearizer() { releaseGl(); }
 
 void DepthLinearizer::releaseGl() {
-    if (program_) glDeleteProgram(program_);
     if (vao_) glDeleteVertexArrays(1, &vao_);
     if (sampler_) glDeleteSamplers(1, &sampler_);
     if (copy_) glDeleteTextures(1, &copy_);
@@ -36,14 +34,17 @@ void DepthLinearizer::releaseGl() {
     copyFormat_ = 0;
 }
 
-bool DepthLinearizer::prepare(std::string* error) {
-    if (program_) return true;
-    program_ = buildProgram(shaderDir_, "vs_particles_fullscreen.glsl", "fs_particles_linearize_depth.glsl", "",
-                            error);
-    if (!program_) return false;
+bool DepthLinearizer::bind(const ProgramCache& programs) {
+    const uint32_t program = programs.passProgram(ProgramCache::LinearizeDepth);
+    if (!program) return false;
+    // A reload's programs are built while the old ones live: a swapped cache never hands out the
+    // name taken before.
+    if (program == program_) return true;
+    program_ = program;
     locateUniforms(program_, {{&locDepth_, "uDepth"}, {&locCoeffs_, "uCoeffs"}, {&locFarWindow_, "uFarWindow"},
                               {&locReversed_, "uReversed"}, {&locBackground_, "uBackground"},
                               {&locInvSize_, "uInvSize"}, {&locTexelOrigin_, "uTexelOrigin"}});
+    if (vao_) return true;
     glGenVertexArrays(1, &vao_);
     // A host's depth texture may carry shadow comparison or mipmapped filtering: read it through
     // a sampler that has neither.

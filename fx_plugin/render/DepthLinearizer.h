@@ -5,18 +5,18 @@
 // framebuffer bound for drawing; DepthLinearizer copies the latter's depth attachment into a depth
 // texture of its own (glCopyTexSubImage2D from the read framebuffer: works on the default
 // framebuffer and on an FBO; a multisampled one is resolved with a depth blit), then one
-// full-screen pass (vs_particles_fullscreen + fs_particles_linearize_depth) writes the linear
+// full-screen pass (ProgramCache::LinearizeDepth, the cache's program) writes the linear
 // depth (metres, >= 0; "nothing drawn" = the view's far plane) into an R32F target the caller
 // provides. The maths and its precision: DepthMapping.h.
 //
 // GL: every call runs inside the caller's GlStateGuard (it binds textures on unit 0, a sampler,
 // the read/draw framebuffers, a program and a vertex array, and changes the viewport).
 #include <cstdint>
-#include <string>
 
 #include <glm/glm.hpp>
 
 #include "DepthMapping.h"
+#include "ProgramCache.h"
 
 namespace fx {
 
@@ -25,13 +25,16 @@ uint32_t supportedDepthFormat(uint32_t internalFormat);
 
 class DepthLinearizer {
 public:
-    explicit DepthLinearizer(std::string shaderDir = std::string()) : shaderDir_(std::move(shaderDir)) {}
+    DepthLinearizer() = default;
     ~DepthLinearizer();  ///< frees its GL objects: the context must be current if any exist
     DepthLinearizer(const DepthLinearizer&) = delete;
     DepthLinearizer& operator=(const DepthLinearizer&) = delete;
 
-    /// Builds the linearise program (once). False with "file:line: message" in *error.
-    bool prepare(std::string* error);
+    /// Takes the linearise program of `programs` and looks its uniforms up where it is not the
+    /// one taken before (a reload swapped the cache; releaseGl); creates the vertex array and the
+    /// sampler once. Compiles nothing; the program stays the cache's. False where `programs` has
+    /// none (not built, or failed).
+    bool bind(const ProgramCache& programs);
     /// The internal format of the depth attachment of `framebuffer` (0 = the default one), with
     /// its stencil where it has one: GL_DEPTH_COMPONENT16/24/32F, GL_DEPTH24_STENCIL8,
     /// GL_DEPTH32F_STENCIL8; 0 when it has no depth.
@@ -67,7 +70,6 @@ public:
     void releaseGl();
 
 private:
-    std::string shaderDir_;
     uint32_t program_ = 0, vao_ = 0, sampler_ = 0, copy_ = 0, resolveFbo_ = 0;
     int copyWidth_ = 0, copyHeight_ = 0;
     uint32_t copyFormat_ = 0;

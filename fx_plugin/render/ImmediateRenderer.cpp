@@ -29,8 +29,8 @@ bool bindAs2D(uint32_t texture) {
 
 }  // namespace
 
-ImmediateRenderer::ImmediateRenderer(HostAdapter* host, std::string shaderDir)
-    : host_(host), depth_(std::move(shaderDir)) {}
+ImmediateRenderer::ImmediateRenderer(HostAdapter* host, ProgramCache& programs)
+    : host_(host), programs_(programs) {}
 
 bool ImmediateRenderer::prepare(Diagnostics* out) {
     std::string error;
@@ -42,12 +42,17 @@ bool ImmediateRenderer::prepare(Diagnostics* out) {
 }
 
 bool ImmediateRenderer::ensureDepthProgram() {
-    if (!depthError_.empty()) return false;  // tried once: one compile, one message
-    if (depth_.prepare(&depthError_)) return true;
-    if (depthError_.empty()) depthError_ = "fs_particles_linearize_depth.glsl:0: did not build";
-    lastError_ = depthError_;
-    if (host_) host_->log(LogLevel::Error, ("fx: error[ShaderBuild] immediate render: " + depthError_).c_str());
-    return false;
+    const ProgramCache::Key key = ProgramCache::Key::of(ProgramCache::LinearizeDepth);
+    if (!programs_.tried(key)) {  // a key is tried once per cache: one compile, one message
+        std::vector<std::string> errors;
+        programs_.build({key}, &errors);
+        if (!errors.empty()) {
+            depthError_ = errors.front();
+            lastError_ = depthError_;
+            if (host_) host_->log(LogLevel::Error, ("fx: error[ShaderBuild] immediate render: " + depthError_).c_str());
+        }
+    }
+    return depth_.bind(programs_);
 }
 
 ImmediateRenderer::~ImmediateRenderer() { releaseGl(); }

@@ -69,11 +69,11 @@ struct ImmediateView {
 
 class ImmediateRenderer {
 public:
-    /// `host` loads the plugin's GL table (may be null once it is loaded); `shaderDir` as
-    /// PluginImports::shaderDir (empty = the embedded shaders).
-    explicit ImmediateRenderer(HostAdapter* host, std::string shaderDir = std::string());
+    /// `host` loads the plugin's GL table (may be null once it is loaded); the linearise program
+    /// is built into `programs` (Renderers' cache, which outlives this) and read from it.
+    ImmediateRenderer(HostAdapter* host, ProgramCache& programs);
     ~ImmediateRenderer();  ///< releaseGl(): the context must be current if anything was allocated
-    /// Builds the linearise program now (Plugin::prepareGl), so the first renderView that reads
+    /// Builds the linearise program into the cache now (Plugin::prepareGl), so the first renderView that reads
     /// the host's z-buffer compiles nothing. False, logged and in `out` ("file:line") when it does
     /// not build.
     bool prepare(Diagnostics* out);
@@ -113,12 +113,14 @@ public:
     const std::string& lastError() const { return lastError_; }
 
 private:
-    /// Builds the linearise program unless built; a failure is tried, logged and kept once.
+    /// Builds the linearise program into the cache unless its key was tried (a failure is
+    /// logged and kept once) and binds it.
     bool ensureDepthProgram();
     /// Logs "fx: error[Code] immediate render: what" and returns `code`.
     ErrorCode refuse(ErrorCode code, const std::string& what);
 
     HostAdapter* host_;
+    ProgramCache& programs_;
     ApiErrors* errors_ = nullptr;
     ImmediateTargetPool pool_;
     DepthLinearizer depth_;
@@ -126,7 +128,7 @@ private:
     DepthRegion lastRegion_;
     std::string lastError_;
     bool depthReady_ = false;  ///< this frame's linearise program is there (render sets it)
-    std::string depthError_;   ///< why the linearise program did not build ("": built or not tried)
+    std::string depthError_;   ///< why the linearise program's last build failed ("": none failed)
 };
 
 }  // namespace fx

@@ -47,15 +47,16 @@ public:
     MegaPasses(const MegaPasses&) = delete;
     MegaPasses& operator=(const MegaPasses&) = delete;
 
-    /// Takes `programs` (built, ok()) and creates the other GL objects. Inside a guard.
+    /// Takes `programs` (bound to the cache, ok()) and creates the other GL objects. Inside a guard.
     void create(std::unique_ptr<MegaPrograms> programs);
-    /// A shader reload's new programs; the old ones are returned.
+    /// A shader reload's new set (bound to the swapped cache); the old one is returned.
     std::unique_ptr<MegaPrograms> swapPrograms(std::unique_ptr<MegaPrograms> next) {
         programs_.swap(next);
         return next;
     }
-    /// Deletes the programs, the framebuffer object and the vertex array (inside a guard); the
-    /// ramp, stream and sampler delete theirs with this object.
+    /// Drops the programs (the ProgramCache's, deleted with it), deletes the framebuffer object
+    /// and the vertex array (inside a guard); the ramp, stream and sampler delete theirs with
+    /// this object.
     void releaseGl();
     ColorRampTexture& ramp() { return ramp_; }
 

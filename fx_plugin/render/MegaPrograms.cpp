@@ -2,29 +2,16 @@
 
 #include "render/PrivateGl.h"
 
-#include "ShaderLoader.h"
 #include "Uniforms.h"
 
 namespace fx {
 
-MegaPrograms::~MegaPrograms() {
-    for (GLuint p : {depth, spheres, blur, shade, composite}) {
-        if (p) glDeleteProgram(p);
-    }
-}
-
-void MegaPrograms::build(const std::string& dir, std::vector<std::string>* errors) {
-    auto make = [&](const char* vs, const char* fs, const char* defines) {
-        std::string error;
-        const GLuint p = buildProgram(dir, vs, fs, defines, &error);
-        if (!p) errors->push_back(error);
-        return p;
-    };
-    depth = make("vs_particles_fullscreen.glsl", "fs_mega_depth.glsl", "");
-    spheres = make("vs_mega.glsl", "fs_mega_spheres.glsl", "");
-    blur = make("vs_particles_fullscreen.glsl", "fs_mega_blur.glsl", "");
-    shade = make("vs_particles_fullscreen.glsl", "fs_mega_blur.glsl", "#define FX_MEGA_SHADE 1\n");
-    composite = make("vs_particles_fullscreen.glsl", "fs_mega_composite.glsl", "");
+void MegaPrograms::bind(const ProgramCache& programs) {
+    depth = programs.passProgram(ProgramCache::MegaDepth);
+    spheres = programs.passProgram(ProgramCache::MegaSpheres);
+    blur = programs.passProgram(ProgramCache::MegaBlur);
+    shade = programs.passProgram(ProgramCache::MegaShade);
+    composite = programs.passProgram(ProgramCache::MegaComposite);
     locateUniforms(depth, {{&depthScene, "uSceneDepth"}, {&depthRatio, "uRatio"},
                            {&depthDecode.coeffs, "uDepthCoeffs"},
                            {&depthDecode.window, "uDepthWindow"}, {&depthDecode.drawOrigin, "uDrawOrigin"}});

@@ -1,12 +1,14 @@
 #pragma once
 // The mega-particles' five programs (MegaRenderer.h) and their uniform locations: the depth
-// downsample, the spheres, the blur, the blur that also shades, and the composite. A set is built
-// whole and swapped whole by a shader reload.
+// downsample, the spheres, the blur, the blur that also shades, and the composite. The programs
+// are the ProgramCache's (ProgramCache::megaKeys): a set compiles and deletes none; a shader
+// reload binds a new set to the swapped cache.
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "FogUniforms.h"
+#include "ProgramCache.h"
 #include "SceneDepthSource.h"
 
 namespace fx {
@@ -27,13 +29,13 @@ struct MegaPrograms {
     FogUniforms shadeFog;  ///< the shading blur's (the cloud is fogged there, at its resolution)
 
     MegaPrograms() = default;
-    ~MegaPrograms();
     MegaPrograms(const MegaPrograms&) = delete;
     MegaPrograms& operator=(const MegaPrograms&) = delete;
 
     bool ok() const { return depth && spheres && blur && shade && composite; }
-    /// Builds all five from `dir` (empty: the embedded shaders); failures go to *errors.
-    void build(const std::string& dir, std::vector<std::string>* errors);
+    /// Takes the five programs of `programs` (0 where one is missing) and looks their uniforms
+    /// up. Compiles nothing; `programs` must outlive their use (until the next bind).
+    void bind(const ProgramCache& programs);
 };
 
 }  // namespace fx

@@ -30,8 +30,8 @@ SizeMismatchReport sizeMismatchTo(ApiErrors* errors) {
 
 }  // namespace
 
-MegaRenderer::MegaRenderer(RendererConfig config)
-    : config_(std::move(config)), passes_(sizeMismatchTo(config_.errors)) {}
+MegaRenderer::MegaRenderer(RendererConfig config, ProgramCache& programs)
+    : config_(std::move(config)), programs_(programs), passes_(sizeMismatchTo(config_.errors)) {}
 
 MegaRenderer::~MegaRenderer() {
     if (state_ == State::Unloaded || !privateGlLoaded()) return;  // no GL was ever touched
@@ -45,9 +45,10 @@ bool MegaRenderer::ensureLoaded() {
     if (!loadGlFor(config_, "mega-particles", &loadDiagnostics_)) return false;
     GlStateGuard guard;
     glActiveTexture(GL_TEXTURE0);
-    auto programs = std::make_unique<MegaPrograms>();
     std::vector<std::string> errors;
-    programs->build(config_.shaderDir, &errors);
+    programs_.build(ProgramCache::megaKeys(), &errors);
+    auto programs = std::make_unique<MegaPrograms>();
+    programs->bind(programs_);
     // The blur and shade programs share fs_mega_blur.glsl, and four programs share
     // vs_particles_fullscreen.glsl: one cause is told once.
     ShaderErrorLog unique;
@@ -62,18 +63,11 @@ bool MegaRenderer::ensureLoaded() {
     return true;
 }
 
-void MegaRenderer::stageShaders(ShaderErrorLog* errors) {
-    // Built whether or not mega is in use, so a broken mega file is reported at the edit and not
-    // later, when a reaction or the override first asks for mega; made live only when loaded.
+void MegaRenderer::programsSwapped() {
+    if (state_ != State::Ready) return;
     auto next = std::make_unique<MegaPrograms>();
-    std::vector<std::string> failed;
-    next->build(config_.shaderDir, &failed);
-    for (const std::string& e : failed) errors->add(e);
-    if (failed.empty() && state_ == State::Ready) staged_ = std::move(next);  // else deleted here
-}
-
-void MegaRenderer::commitShaders() {
-    if (staged_) passes_.swapPrograms(std::move(staged_));  // the old set, deleted here
+    next->bind(programs_);
+    passes_.swapPrograms(std::move(next));  // the old set holds names of the old cache: dropped
 }
 
 bool MegaRenderer::prepare(Diagnostics* out) {

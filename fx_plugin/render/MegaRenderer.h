@@ -43,9 +43,9 @@
 // ramp colour, unlit.
 //
 // RenderOptions::quarterRes does not apply (mega.resolution is the technique's own). Live shader
-// edits (Plugin::pollShaderReload) rebuild the mega programs with the billboard ones, in one
-// transaction (stageShaders, Renderers::reload): a broken mega file keeps every last good
-// program and is reported.
+// edits (Plugin::pollShaderReload) rebuild the mega programs with every other one, in one
+// transaction (Renderers::reload, one swap of the ProgramCache): a broken mega file keeps every
+// last good program and is reported.
 //
 // The noise is animated by the first Mega batch's simulation clock (ParticleBatch::time): two
 // frames of a paused simulation from a still camera are byte-identical.
@@ -81,7 +81,8 @@ public:
     static constexpr float kDensity = MegaPasses::kDensity;
 
     /// `config.dataDir` is not used (mega draws no atlas).
-    explicit MegaRenderer(RendererConfig config);
+    /// Builds and draws with the programs of `programs` (Renderers' cache, which outlives this).
+    MegaRenderer(RendererConfig config, ProgramCache& programs);
     ~MegaRenderer();
     MegaRenderer(const MegaRenderer&) = delete;
     MegaRenderer& operator=(const MegaRenderer&) = delete;
@@ -92,16 +93,12 @@ public:
     int declarePasses(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
                       int batchCount, const FrameSettings& settings);
 
-    /// Builds the programs now (Plugin::prepareGl); false with the problems appended to `out`.
+    /// Builds the programs into the cache now (Plugin::prepareGl); false with the problems
+    /// appended to `out`.
     bool prepare(Diagnostics* out);
-    /// A shader reload's mega part (Renderers::reload): builds the five programs from the
-    /// folder's current files and adds failures to `errors`; they are staged only when all built
-    /// and mega is loaded (else the build only checked the files, so a broken mega edit is
-    /// reported at once). commitShaders makes the staged set live, dropShaders deletes it.
-    /// Context current.
-    void stageShaders(ShaderErrorLog* errors);
-    void commitShaders();
-    void dropShaders() { staged_.reset(); }
+    /// After a reload swapped the cache's programs: a loaded renderer takes the new ones. Context
+    /// current.
+    void programsSwapped();
     bool ready() const { return state_ == State::Ready; }
 
 private:
@@ -113,8 +110,8 @@ private:
     RendererConfig config_;
     State state_ = State::Unloaded;
     Diagnostics loadDiagnostics_;
+    ProgramCache& programs_;
     MegaPasses passes_;
-    std::unique_ptr<MegaPrograms> staged_;  ///< a reload's programs until commitShaders
     DrawListBuilder builder_;
     std::vector<std::shared_ptr<MegaCloud>> records_;
 };

@@ -3,8 +3,8 @@
 // pass of quarter res): one view's batches into the bound target, each with its technique's
 // program (lit or not, its contrast power's own build), blend mode, depth test and uniforms,
 // trimmed polygons or full quads. It
-// owns what those draws read: the particle programs, the atlas and its trimmed shapes, the
-// colour ramps, the instance stream and the scene depth's sampler.
+// owns what those draws read but the programs (Renderers' ProgramCache): the atlas and its
+// trimmed shapes, the colour ramps, the instance stream and the scene depth's sampler.
 #include <memory>
 #include <string>
 #include <vector>
@@ -54,7 +54,8 @@ public:
     /// Texture units of the particle draws (all below GlStateGuard::kTextureUnits).
     static constexpr int kAtlasUnit = 0, kRampUnit = 1, kSceneDepthUnit = 2, kOpacityUnit = 3;
 
-    ParticleDraw() = default;
+    /// Draws with the programs of `programs`, which must outlive this.
+    explicit ParticleDraw(ProgramCache& programs) : programs_(&programs) {}
 
     /// Loads the atlas (inside a guard): false with "path: reason" in *error.
     bool loadAtlas(const std::string& dataDir, std::string* error) { return atlas_.load(dataDir, error); }
@@ -65,12 +66,8 @@ public:
     void draw(const ParticleView& view, const DrawInputs& in);
 
     /// The running program cache (ProgramCache.h: filled by prepare and reloads, never by a
-    /// draw); a shader reload swaps in a new one (the old one is returned).
+    /// draw; a shader reload swaps its contents).
     ProgramCache& programs() { return *programs_; }
-    std::unique_ptr<ProgramCache> swapPrograms(std::unique_ptr<ProgramCache> next) {
-        programs_.swap(next);
-        return next;
-    }
     const SmokeAtlas& atlas() const { return atlas_; }
     ColorRampTexture& ramp() { return ramp_; }
     InstanceStream& stream() { return stream_; }
@@ -81,7 +78,7 @@ private:
     void setLightUniforms(const ParticleProgram& p, const DrawBatch& batch, const ParticleView& view,
                           uint32_t opacity) const;
 
-    std::unique_ptr<ProgramCache> programs_ = std::make_unique<ProgramCache>();
+    ProgramCache* programs_;
     SmokeAtlas atlas_;
     ColorRampTexture ramp_;
     InstanceStream stream_;

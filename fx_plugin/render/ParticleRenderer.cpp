@@ -25,21 +25,19 @@ SizeMismatchReport sizeMismatchTo(ApiErrors* errors) {
 
 }  // namespace
 
-ParticleRenderer::ParticleRenderer(RendererConfig config)
+ParticleRenderer::ParticleRenderer(RendererConfig config, ProgramCache& programs)
     : config_(std::move(config)),
+      draw_(programs),
       fullRes_(draw_, sizeMismatchTo(config_.errors)),
       quarter_(draw_, sizeMismatchTo(config_.errors)) {}
 
 ParticleRenderer::~ParticleRenderer() {
     if (state_ == State::Unloaded || !privateGlLoaded()) return;  // no GL was ever touched
-    // The programs go inside a guard; the atlas, ramp, stream and sampler members delete their
-    // objects after this body: deleting changes no state of the host's (none of them is bound
-    // once a guard has restored the host's bindings).
+    // The quarter-res set goes inside a guard; the atlas, ramp, stream and sampler members delete
+    // their objects after this body: deleting changes no state of the host's (none of them is
+    // bound once a guard has restored the host's bindings). The programs are Renderers'.
     GlStateGuard guard;
-    // Each hands back what it held, deleted at the end of its statement.
-    draw_.swapPrograms(nullptr);
     quarter_.swapPrograms(nullptr);
-    opacity_.reset();
 }
 
 void ParticleRenderer::reportLoadErrors(const std::vector<std::string>& errors) {
@@ -67,12 +65,9 @@ bool ParticleRenderer::ensureLoaded() {
         return false;
     }
     std::vector<std::string> errors;
-    // The cache keeps the files of this generation of programs: each contrast power built later
-    // reads these, never a later edit.
-    draw_.swapPrograms(std::make_unique<ProgramCache>(snapshotShaderReader(shaderReader(config_.shaderDir))));
     draw_.programs().build(ProgramCache::techniqueKeys(), &errors);
-    quarter_.programs().build(config_.shaderDir, &errors);
-    opacity_->build(config_.shaderDir, &errors);
+    draw_.programs().build(ProgramCache::passKeys(), &errors);
+    bindPassPrograms();
     if (!draw_.atlas().hasNormals() && !normalsWarned_) {
         log(LogLevel::Warning, "fx: lit smoke is drawn as flat cards: " + draw_.atlas().normalsError());
         normalsWarned_ = true;
@@ -97,31 +92,11 @@ bool ParticleRenderer::shadersChanged() {
     return true;
 }
 
-void ParticleRenderer::stageShaders(ShaderErrorLog* errors) {
-    stagedPrograms_ = std::make_unique<ProgramCache>(snapshotShaderReader(shaderReader(config_.shaderDir)));
-    stagedQuarter_ = std::make_unique<QuarterResPrograms>();
-    stagedOpacity_ = std::make_unique<SmokeOpacityMap>();
-    std::vector<std::string> failed;
-    // The same variants as the running cache (every key it tried), so nothing is missing after
-    // the swap.
-    stagedPrograms_->build(draw_.programs().keys(), &failed);
-    stagedQuarter_->build(config_.shaderDir, &failed);
-    stagedOpacity_->build(config_.shaderDir, &failed);
-    for (const std::string& e : failed) errors->add(e);
+void ParticleRenderer::bindPassPrograms() {
+    quarter_.programs().bind(draw_.programs());
+    opacity_.bind(draw_.programs());
 }
 
-void ParticleRenderer::commitShaders() {
-    // Each swap hands back the old set, deleted here (the caller holds a GlStateGuard).
-    draw_.swapPrograms(std::move(stagedPrograms_));
-    quarter_.swapPrograms(std::move(stagedQuarter_));
-    opacity_ = std::move(stagedOpacity_);
-}
-
-void ParticleRenderer::dropShaders() {
-    stagedPrograms_.reset();
-    stagedQuarter_.reset();
-    stagedOpacity_.reset();
-}
 
 bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps) {
     const bool ready = ensureLoaded();

@@ -62,7 +62,8 @@ public:
     static constexpr const char* kFullResPass = FullResPath::kPass;
     enum class State { Unloaded, Ready, Failed };
 
-    explicit ParticleRenderer(RendererConfig config);
+    /// Builds and draws with the programs of `programs` (Renderers' cache, which outlives this).
+    ParticleRenderer(RendererConfig config, ProgramCache& programs);
     ~ParticleRenderer();
     ParticleRenderer(const ParticleRenderer&) = delete;
     ParticleRenderer& operator=(const ParticleRenderer&) = delete;
@@ -85,12 +86,8 @@ public:
     /// edit, when Config::shaderDir is set, the renderer is loaded and a plugin shader file there
     /// ("particles" or "mega" in its name) changed since the running programs were built.
     bool shadersChanged();
-    /// Builds this renderer's programs from the folder's current files into a staged set (the
-    /// same variants as the running cache), failures added to `errors`. Context current.
-    void stageShaders(ShaderErrorLog* errors);
-    /// The staged set goes live (the running one is deleted), or is deleted. Context current.
-    void commitShaders();
-    void dropShaders();
+    /// After a reload swapped the cache's programs: the passes take the new ones. Context current.
+    void programsSwapped() { bindPassPrograms(); }
 
     /// Plugin::declareShadowPasses: with `light` on and shadow casters alive, declares the
     /// opacity map's pass and returns its target; the next declarePasses reuses it.
@@ -103,6 +100,8 @@ public:
 
 private:
     bool ensureLoaded();
+    /// The quarter-res passes and the opacity map take their programs from the running cache.
+    void bindPassPrograms();
     void log(LogLevel level, const std::string& message) const { logTo(config_, level, message); }
     /// Logs the build lines of `errors` not logged before (each once, loadErrors_) and keeps them
     /// as diagnostics for prepare().
@@ -119,8 +118,7 @@ private:
     ParticleDraw draw_;
     FullResPath fullRes_;
     QuarterResPath quarter_;
-    // Owned through a pointer so a shader reload can build a new one beside it and swap.
-    std::unique_ptr<SmokeOpacityMap> opacity_ = std::make_unique<SmokeOpacityMap>();
+    SmokeOpacityMap opacity_;
     bool quarterFallbackLogged_ = false;
     bool frameBuildLogged_ = false;            ///< ensureDrawPrograms' warning, once
     std::vector<ProgramCache::Key> drawKeys_;  ///< ensureDrawPrograms' scratch, kept for its capacity
@@ -130,10 +128,6 @@ private:
                                  ///< into the host's frame graph (never by renderView's own frame)
     bool normalsWarned_ = false;
     uint64_t shaderStamp_ = 0;  ///< shaderStamp() when the running programs were built
-    // A reload's staged programs (stageShaders), live at commitShaders.
-    std::unique_ptr<ProgramCache> stagedPrograms_;
-    std::unique_ptr<QuarterResPrograms> stagedQuarter_;
-    std::unique_ptr<SmokeOpacityMap> stagedOpacity_;
     DrawListBuilder builder_;
     std::vector<std::shared_ptr<ParticleView>> records_;
     std::vector<std::shared_ptr<SmokeOpacityMap::Casters>> opacityRecords_;  ///< one per map until its pass ran

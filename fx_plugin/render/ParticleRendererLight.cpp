@@ -27,8 +27,8 @@ SmokeShadow ParticleRenderer::declareOpacityPass(const ViewInfo& view, FrameBuil
     const int size = SmokeOpacityMap::sizeFor(view.width, view.height);
     // Recorded for this map alone: another view's map may be declared before this one's pass runs.
     std::shared_ptr<SmokeOpacityMap::Casters> casters = reuseRecord(opacityRecords_);
-    if (!opacity_->record(light, batches, batchCount, size, casters.get())) return SmokeShadow{};
-    if (!ensureLoaded() || !opacity_->ok()) return SmokeShadow{};
+    if (!opacity_.record(light, batches, batchCount, size, casters.get())) return SmokeShadow{};
+    if (!ensureLoaded() || !opacity_.ok()) return SmokeShadow{};
     TargetDesc desc;
     desc.width = desc.height = size;
     desc.format = TargetFormat::RGBA16F;
@@ -45,7 +45,7 @@ SmokeShadow ParticleRenderer::declareOpacityPass(const ViewInfo& view, FrameBuil
         ramp.upload();
         std::vector<float> rows(size_t(ramp.rows()));
         for (size_t i = 0; i < rows.size(); ++i) rows[i] = ramp.rowV(int(i));
-        opacity_->draw(*casters, draw_.atlas().texture(), ramp.texture(), rows);
+        opacity_.draw(*casters, draw_.atlas().texture(), ramp.texture(), rows);
     });
     return shadow;
 }

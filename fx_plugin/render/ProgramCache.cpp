@@ -1,6 +1,7 @@
 #include "ProgramCache.h"
 
 #include <cmath>
+#include <utility>
 
 #include "render/PrivateGl.h"
 
@@ -10,18 +11,38 @@
 namespace fx {
 namespace {
 
-struct VariantSource {
+struct Source {
+    const char* vertex;
     const char* fragment;
     const char* defines;
 };
 
-constexpr VariantSource kSources[ProgramCache::VariantCount] = {
-    {"fs_particles_hard.glsl", ""},
-    {"fs_particles_hard.glsl", "#define FX_LINEAR_DEPTH_TEST 1\n"},
-    {"fs_particles_soft.glsl", ""},
-    {"fs_particles_spherical.glsl", "#define FX_SPHERICAL 1\n"},
-    {"fs_particles_soft.glsl", "#define FX_GENERAL_POWER 1\n"},
+// Every key's files and defines: the billboards' by variant, then the passes' fixed programs by
+// ProgramCache::Program (from DepthDownsample on).
+constexpr Source kSources[ProgramCache::VariantCount + ProgramCache::ProgramCount - 1] = {
+    {"vs_particles.glsl", "fs_particles_hard.glsl", ""},
+    {"vs_particles.glsl", "fs_particles_hard.glsl", "#define FX_LINEAR_DEPTH_TEST 1\n"},
+    {"vs_particles.glsl", "fs_particles_soft.glsl", ""},
+    {"vs_particles.glsl", "fs_particles_spherical.glsl", "#define FX_SPHERICAL 1\n"},
+    {"vs_particles.glsl", "fs_particles_soft.glsl", "#define FX_GENERAL_POWER 1\n"},
+    {"vs_particles_tiles.glsl", "fs_particles_depth_downsample.glsl", ""},
+    {"vs_particles_tiles.glsl", "fs_particles_half_z.glsl", ""},
+    {"vs_particles_tiles.glsl", "fs_particles_composite.glsl", ""},
+    {"vs_particles_tiles.glsl", "fs_particles_composite.glsl", "#define FX_COMPOSITE_BILINEAR 1\n"},
+    {"vs_particles.glsl", "fs_particles_opacity.glsl", ""},
+    {"vs_particles_fullscreen.glsl", "fs_particles_linearize_depth.glsl", ""},
+    {"vs_particles_fullscreen.glsl", "fs_mega_depth.glsl", ""},
+    {"vs_mega.glsl", "fs_mega_spheres.glsl", ""},
+    {"vs_particles_fullscreen.glsl", "fs_mega_blur.glsl", ""},
+    {"vs_particles_fullscreen.glsl", "fs_mega_blur.glsl", "#define FX_MEGA_SHADE 1\n"},
+    {"vs_particles_fullscreen.glsl", "fs_mega_composite.glsl", ""},
+    {"vs_stateless_particles.glsl", "fs_stateless_particles.glsl", ""},
 };
+
+const Source& sourceOf(const ProgramCache::Key& key) {
+    return kSources[key.program == ProgramCache::Billboard ? int(key.variant)
+                                                           : ProgramCache::VariantCount + key.program - 1];
+}
 
 ParticleProgram locate(GLuint program) {
     ParticleProgram p;
@@ -74,11 +95,11 @@ const ParticleProgram kNone{};
 }  // namespace
 
 uint32_t ProgramCache::Key::bits() const {
-    return uint32_t(variant) | (lit ? 1u << 3 : 0u) | (uint32_t(powerSteps + 1) << 4);
+    return uint32_t(variant) | (lit ? 1u << 3 : 0u) | (uint32_t(powerSteps + 1) << 4) | (uint32_t(program) << 10);
 }
 
 std::string ProgramCache::Key::defines() const {
-    std::string d = kSources[variant].defines;
+    std::string d = sourceOf(*this).defines;
     if (powerSteps >= 0) d += "#define FX_POWER_STEPS " + std::to_string(powerSteps) + "\n";
     if (lit) d += "#define FX_LIT 1\n";
     return d;
@@ -88,22 +109,33 @@ ProgramCache::~ProgramCache() {
     for (auto& entry : built_) glDeleteProgram(entry.second.program);
 }
 
+void ProgramCache::swap(ProgramCache& other) noexcept {
+    std::swap(read_, other.read_);
+    built_.swap(other.built_);
+    tried_.swap(other.tried_);
+    order_.swap(other.order_);
+}
+
 int ProgramCache::build(const std::vector<Key>& keys, std::vector<std::string>* errors) {
     int compiled = 0;
     for (const Key& key : keys) {
         if (tried(key)) continue;
         tried_.insert(key.bits());
         order_.push_back(key);
+        const Source& source = sourceOf(key);
         std::string error;
-        const GLuint program =
-            read_ ? buildProgram(read_, "vs_particles.glsl", kSources[key.variant].fragment, key.defines(), &error) : 0;
+        const GLuint program = read_ ? buildProgram(read_, source.vertex, source.fragment, key.defines(), &error) : 0;
         if (read_) ++compiled;
         if (!program) {
-            errors->push_back(read_ ? error : std::string(kSources[key.variant].fragment) +
+            errors->push_back(read_ ? error : std::string(source.fragment) +
                                                   ":0: the particle programs have no shader sources");
             continue;
         }
-        built_[key.bits()] = locate(program);
+        if (key.program == Billboard) {
+            built_[key.bits()] = locate(program);
+        } else {
+            built_[key.bits()].program = program;  // its user looks its uniforms up
+        }
     }
     return compiled;
 }
@@ -111,6 +143,11 @@ int ProgramCache::build(const std::vector<Key>& keys, std::vector<std::string>* 
 const ParticleProgram* ProgramCache::find(const Key& key) const {
     const auto it = built_.find(key.bits());
     return it == built_.end() ? nullptr : &it->second;
+}
+
+uint32_t ProgramCache::passProgram(Program p) const {
+    const ParticleProgram* built = find(Key::of(p));
+    return built ? built->program : 0;
 }
 
 const ParticleProgram& ProgramCache::get(Variant v, bool lit) const {
@@ -145,6 +182,18 @@ std::vector<ProgramCache::Key> ProgramCache::techniqueKeys() {
     for (bool lit : {false, true}) {
         for (int v = 0; v < VariantCount; ++v) keys.push_back(Key{Variant(v), lit, -1});
     }
+    return keys;
+}
+
+std::vector<ProgramCache::Key> ProgramCache::passKeys() {
+    std::vector<Key> keys;
+    for (Program p : {DepthDownsample, HalfZ, Composite, CompositeBilinear, OpacityMap}) keys.push_back(Key::of(p));
+    return keys;
+}
+
+std::vector<ProgramCache::Key> ProgramCache::megaKeys() {
+    std::vector<Key> keys;
+    for (Program p : {MegaDepth, MegaSpheres, MegaBlur, MegaShade, MegaComposite}) keys.push_back(Key::of(p));
     return keys;
 }
 

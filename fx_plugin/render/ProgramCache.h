@@ -1,5 +1,11 @@
 #pragma once
-// The billboard particle programs, one cache keyed by the variant a batch draws with:
+// The plugin's programs, one cache (Renderers owns it) keyed by what a program is built for.
+// Key::program names the shader pair: Billboard, the particle draw (below), or one of the fixed
+// programs of the other passes (the quarter-res depth downsample, half-res z-fill and
+// composite's two builds; the opacity map's; the immediate path's depth lineariser; the five
+// mega passes'; the stateless particles'), whose files and defines are in ProgramCache.cpp
+// beside the billboards'.
+// A billboard key is the variant a batch draws with:
 //   variant          the technique's shaders and target kind (vs_particles + ...):
 //     HardZBuffer      fs_particles_hard                         (full res, z-buffer test)
 //     HardLinearDepth  fs_particles_hard, FX_LINEAR_DEPTH_TEST   (quarter res)
@@ -10,7 +16,7 @@
 //   lit              FX_LIT: particles_common.glsl's smokeLight, for reactions under a scene light
 //   power            FX_POWER_STEPS = 2 contrast_power: Soft with the curve's multiplies folded
 //                    (power 1 draws no curve at all); -1 = no power folded
-// Key::bits() packs them; nothing else names a program. The resolution path is in the variant
+// Key::bits() packs them with the program; nothing else names a program. The resolution path is in the variant
 // (quarter res draws HardLinearDepth for hard); the depth convention is no variant: the programs
 // read linear depth, and reversed-Z changes only the depth function the pass sets.
 //
@@ -27,6 +33,11 @@
 //    general build where the power's own is missing; no key where the variant itself did not
 //    build: its technique is not drawn (usableTechniques), the others still are. The fallback
 //    lives there alone; find() of the filtered key is the program.
+//  - A pass program's uniforms are its user's (QuarterResPrograms, SmokeOpacityMap,
+//    DepthLinearizer, MegaPrograms, StatelessRenderer: bind), looked up on passProgram() once per
+//    build; a billboard's are looked up here once per build.
+//  - A shader reload builds a new cache of keys() and swap()s it in whole: the users hold this
+//    object, whose contents change, and bind again.
 //  - Changes no bound GL state (no glUseProgram); deletes every program it built.
 #include <cstdint>
 #include <string>
@@ -60,12 +71,37 @@ struct ParticleProgram {
 class ProgramCache {
 public:
     enum Variant : int { HardZBuffer = 0, HardLinearDepth, Soft, Spherical, SoftGeneralPower, VariantCount };
+    /// The shader pair a key builds. Billboard: the particle draw of a variant; the others are
+    /// the passes' fixed programs (no variant, lit or power: those stay at their defaults).
+    enum Program : int {
+        Billboard = 0,
+        DepthDownsample,    ///< vs_particles_tiles + fs_particles_depth_downsample
+        HalfZ,              ///< vs_particles_tiles + fs_particles_half_z
+        Composite,          ///< vs_particles_tiles + fs_particles_composite (depth-aware)
+        CompositeBilinear,  ///< the same, FX_COMPOSITE_BILINEAR
+        OpacityMap,         ///< vs_particles + fs_particles_opacity
+        LinearizeDepth,     ///< vs_particles_fullscreen + fs_particles_linearize_depth
+        MegaDepth,          ///< vs_particles_fullscreen + fs_mega_depth
+        MegaSpheres,        ///< vs_mega + fs_mega_spheres
+        MegaBlur,           ///< vs_particles_fullscreen + fs_mega_blur
+        MegaShade,          ///< the same, FX_MEGA_SHADE
+        MegaComposite,      ///< vs_particles_fullscreen + fs_mega_composite
+        Stateless,          ///< vs_stateless_particles + fs_stateless_particles
+        ProgramCount
+    };
 
     struct Key {
         Variant variant = HardZBuffer;
         bool lit = false;
         int powerSteps = -1;  ///< 2 contrast_power, 0 .. kMaxPowerSteps; -1: none (Soft only)
-        /// variant in bits 0-2, lit 3, powerSteps + 1 in 4-9.
+        Program program = Billboard;
+        /// The key of a pass's fixed program.
+        static Key of(Program p) {
+            Key k;
+            k.program = p;
+            return k;
+        }
+        /// variant in bits 0-2, lit 3, powerSteps + 1 in 4-9, program in 10-13.
         uint32_t bits() const;
         /// The #defines that select this variant (prepended to each stage).
         std::string defines() const;
@@ -81,6 +117,11 @@ public:
     ~ProgramCache();
     ProgramCache(const ProgramCache&) = delete;
     ProgramCache& operator=(const ProgramCache&) = delete;
+    /// Exchanges every program, key and the snapshot with `other` (a reload's new cache goes live;
+    /// the old programs are deleted with `other`). No GL.
+    void swap(ProgramCache& other) noexcept;
+    /// No program built (then destroying it makes no GL call).
+    bool empty() const { return built_.empty(); }
 
     /// Builds each key of `keys` not tried before; appends one "file:line: message" block per
     /// key that failed. Returns how many programs it compiled.
@@ -88,6 +129,9 @@ public:
     /// The program of `key`, or null where it was never built or failed. Never builds.
     const ParticleProgram* find(const Key& key) const;
     bool tried(const Key& key) const { return tried_.count(key.bits()) != 0; }
+    /// The GL program of a pass's fixed program `p`, 0 where it was never built or failed. Never
+    /// builds.
+    uint32_t passProgram(Program p) const;
     /// The variant's general build (program 0 when it did not build). Never builds.
     const ParticleProgram& get(Variant v, bool lit = false) const;
     /// find(filter(...)) of a batch of `v` with `contrastPower` (program 0 where none exists).
@@ -106,6 +150,13 @@ public:
     /// Every variant, lit and unlit: what prepareGl always builds (a technique whose general
     /// program fails is not drawn; the run-time override can pick any of them).
     static std::vector<Key> techniqueKeys();
+    /// The billboard renderer's fixed programs (the quarter-res passes', the opacity map's): what
+    /// its loading builds with techniqueKeys (a failed one turns its pass off: quarter res draws
+    /// at full res, lit smoke goes without self-shadowing). The lineariser's is the immediate
+    /// path's own (ImmediateRenderer::prepare).
+    static std::vector<Key> passKeys();
+    /// The mega renderer's five programs (MegaRenderer: built when mega is loaded).
+    static std::vector<Key> megaKeys();
     /// Adds (once each) the keys a batch of `technique` with `contrastPower` draws with, lit and
     /// unlit, on a quarter-res target or not.
     static void addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys);

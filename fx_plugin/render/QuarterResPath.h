@@ -66,8 +66,9 @@ public:
     QuarterResPath(const QuarterResPath&) = delete;
     QuarterResPath& operator=(const QuarterResPath&) = delete;
 
-    /// The running programs (QuarterResPrograms::build); a shader reload swaps in a new set and
-    /// gets the old one back.
+    /// The passes' programs, taken from the running ProgramCache (QuarterResPrograms::bind, again
+    /// after each shader reload); swapPrograms hands the set back (its stream buffer is deleted
+    /// with it).
     QuarterResPrograms& programs() { return *programs_; }
     std::unique_ptr<QuarterResPrograms> swapPrograms(std::unique_ptr<QuarterResPrograms> next) {
         programs_.swap(next);

@@ -2,46 +2,30 @@
 
 #include "render/PrivateGl.h"
 
-#include "ShaderLoader.h"
 #include "Uniforms.h"
 
 namespace fx {
 
 QuarterResPrograms::~QuarterResPrograms() {
-    if (halfZ) glDeleteProgram(halfZ);
-    if (downsample) glDeleteProgram(downsample);
-    for (const CompositeProgram& c : composite) {
-        if (c.program) glDeleteProgram(c.program);
-    }
     if (tileVao_) glDeleteVertexArrays(1, &tileVao_);
     if (tileVbo_) glDeleteBuffers(1, &tileVbo_);
 }
 
-void QuarterResPrograms::build(const std::string& shaderDir, std::vector<std::string>* errors) {
+void QuarterResPrograms::bind(const ProgramCache& programs) {
     hostDepth.create();
-    // vs_particles_tiles + `fs` (0 with the failure in *errors), left as it is when built before.
-    auto make = [&](uint32_t* program, const char* fs, const char* defines) {
-        if (*program) return false;
-        std::string error;
-        *program = buildProgram(shaderDir, "vs_particles_tiles.glsl", fs, defines, &error);
-        if (!*program) errors->push_back(error);
-        return *program != 0;
-    };
-    if (make(&downsample, "fs_particles_depth_downsample.glsl", "")) {
-        locateUniforms(downsample, {{&downsampleDepthLoc, "uSceneDepth"}, {&downsampleViewLoc, "uViewSize"},
-                                    {&downsampleDecode.coeffs, "uDepthCoeffs"},
-                                    {&downsampleDecode.window, "uDepthWindow"},
-                                    {&downsampleDecode.drawOrigin, "uDrawOrigin"}});
-    }
-    if (make(&halfZ, "fs_particles_half_z.glsl", "")) {
-        locateUniforms(halfZ, {{&halfZDepthLoc, "uHalfDepth"}, {&halfZFromLinearLoc, "uDepthFromLinear"},
-                               {&halfZFarLoc, "uFar"}, {&halfZViewLoc, "uViewSize"}});
-    }
-    static const char* const kCompositeDefines[CompositeVariantCount] = {
-        "", "#define FX_COMPOSITE_BILINEAR 1\n"};
+    downsample = programs.passProgram(ProgramCache::DepthDownsample);
+    locateUniforms(downsample, {{&downsampleDepthLoc, "uSceneDepth"}, {&downsampleViewLoc, "uViewSize"},
+                                {&downsampleDecode.coeffs, "uDepthCoeffs"},
+                                {&downsampleDecode.window, "uDepthWindow"},
+                                {&downsampleDecode.drawOrigin, "uDrawOrigin"}});
+    halfZ = programs.passProgram(ProgramCache::HalfZ);
+    locateUniforms(halfZ, {{&halfZDepthLoc, "uHalfDepth"}, {&halfZFromLinearLoc, "uDepthFromLinear"},
+                           {&halfZFarLoc, "uFar"}, {&halfZViewLoc, "uViewSize"}});
+    static const ProgramCache::Program kComposite[CompositeVariantCount] = {ProgramCache::Composite,
+                                                                            ProgramCache::CompositeBilinear};
     for (int v = 0; v < CompositeVariantCount; ++v) {
         CompositeProgram& c = composite[v];
-        if (!make(&c.program, "fs_particles_composite.glsl", kCompositeDefines[v])) continue;
+        c.program = programs.passProgram(kComposite[v]);
         locateUniforms(c.program, {{&c.halfColor, "uHalfColor"}, {&c.halfDepth, "uHalfDepth"},
                                    {&c.sceneDepth, "uSceneDepth"}, {&c.threshold, "uDepthThreshold"},
                                    {&c.viewSize, "uViewSize"},

@@ -2,12 +2,14 @@
 // The GL programs of the quarter-res passes (QuarterResPath.h) and their uniform locations: the
 // depth downsample, the half-res z-fill and the composite's two builds, all drawn over the screen
 // tiles' runs (ScreenTiles.h) from one stream buffer.
-// A set is built whole and swapped whole by a shader reload.
+// The programs are the ProgramCache's (its pass keys): this set compiles nothing and deletes no
+// program; bind() takes them from the running cache, again after a shader reload swapped it.
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "GlStateGuard.h"
+#include "ProgramCache.h"
 #include "ScreenTiles.h"
 
 #include "SceneDepthSource.h"
@@ -20,8 +22,10 @@ struct QuarterResPrograms {
     QuarterResPrograms(const QuarterResPrograms&) = delete;
     QuarterResPrograms& operator=(const QuarterResPrograms&) = delete;
 
-    /// Builds every program (vs_particles_tiles + its fragment shader); failures go to *errors.
-    void build(const std::string& shaderDir, std::vector<std::string>* errors);
+    /// Takes the quarter-res programs of `programs` (0 where one failed) and looks their uniforms
+    /// up; creates the stream buffer and the sampler once. `programs` must outlive their use
+    /// (until the next bind). Context current.
+    void bind(const ProgramCache& programs);
     /// The downsample and the composites built: quarter res can draw.
     bool ok() const {
         return downsample && composite[DepthAware].program && composite[Bilinear].program && tileVao_;

@@ -14,11 +14,19 @@ namespace fx {
 
 Renderers::Renderers(const RendererConfig& config)
     : config_(config),
-      billboards_(config),
-      mega_(config),
-      stateless_(config.host, config.shaderDir),
-      immediate_(config.host, config.shaderDir) {
+      programs_(snapshotShaderReader(shaderReader(config.shaderDir))),
+      billboards_(config, programs_),
+      mega_(config, programs_),
+      stateless_(config.host, programs_),
+      immediate_(config.host, programs_) {
     immediate_.setApiErrors(config.errors);
+}
+
+Renderers::~Renderers() {
+    if (programs_.empty()) return;  // nothing built: no GL to touch
+    GlStateGuard guard;
+    ProgramCache none;
+    programs_.swap(none);  // every program deleted with `none`, inside the guard
 }
 
 void Renderers::collectBatches(const std::vector<ReactionRuntime>& runtimes) {
@@ -85,26 +93,31 @@ bool Renderers::reload(Diagnostics* out) {
     if (!billboards_.shadersChanged()) return false;
     GlStateGuard guard;
     // Every technique's programs in one transaction: all go live or none, and one edit gives one
-    // line, whichever technique's file it broke.
+    // line, whichever technique's file it broke. A new cache is built from the folder's current
+    // files: every key the running cache tried (nothing is missing after the swap), and the mega
+    // and stateless programs even when not in use, so a broken file of theirs is reported at the
+    // edit rather than when a reaction first asks for them.
     ShaderErrorLog errors;
-    billboards_.stageShaders(&errors);
-    mega_.stageShaders(&errors);
-    stateless_.stageShaders(&errors);
+    ProgramCache staged(snapshotShaderReader(shaderReader(config_.shaderDir)));
+    std::vector<ProgramCache::Key> keys = programs_.keys();
+    for (const ProgramCache::Key& k : ProgramCache::megaKeys()) keys.push_back(k);
+    keys.push_back(ProgramCache::Key::of(ProgramCache::Stateless));
+    std::vector<std::string> failed;
+    staged.build(keys, &failed);  // a key listed twice is built once
+    for (const std::string& e : failed) errors.add(e);
     if (!errors.empty()) {
-        // The staged programs are deleted; the running ones stay, so the smoke on screen does not
-        // change.
-        billboards_.dropShaders();
-        mega_.dropShaders();
-        stateless_.dropShaders();
+        // The staged programs are deleted (`staged` at the end of this scope, inside the guard);
+        // the running ones stay, so the smoke on screen does not change.
         logTo(config_, LogLevel::Error, "fx: particle shaders in " + config_.shaderDir +
                                             " changed but do not build; the last good programs are kept:\n" +
                                             errors.text());
         if (out) addShaderDiagnostics(errors.text(), out);
         return false;
     }
-    billboards_.commitShaders();
-    mega_.commitShaders();
-    stateless_.commitShaders();
+    programs_.swap(staged);  // the old programs are deleted with `staged`, inside the guard
+    billboards_.programsSwapped();
+    mega_.programsSwapped();
+    stateless_.programsSwapped();
     logTo(config_, LogLevel::Info, "fx: particle shaders reloaded from " + config_.shaderDir);
     return true;
 }

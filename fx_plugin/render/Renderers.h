@@ -10,8 +10,14 @@
 // Order of one view's passes (names are data, see each renderer): the billboards' passes, then
 // mega's, then "particles_stateless".
 //
+// Programs: one ProgramCache, owned here, holds the billboards', the quarter-res passes', the
+// opacity map's, the immediate path's lineariser's (ProgramCache.h: one key type, one build
+// function), and the mega and stateless renderers'. Only prepare (and the lazy builds of a host
+// that skips prepareGl, before any pass) and reload compile into it; the renderers look their
+// uniforms up on the programs it gives them.
+//
 // GL: every call but the constructor needs the host's context current once anything was loaded;
-// destroy this with the context current (the renderers delete their GL objects).
+// destroy this with the context current (the renderers and the cache delete their GL objects).
 #include <vector>
 
 #include "DrawList.h"
@@ -19,6 +25,7 @@
 #include "ImmediateRenderer.h"
 #include "MegaRenderer.h"
 #include "ParticleRenderer.h"
+#include "ProgramCache.h"
 #include "RendererConfig.h"
 #include "StatelessRenderer.h"
 #include "fx/Diagnostic.h"
@@ -32,6 +39,7 @@ class Renderers {
 public:
     /// `config.errors` counts the refusals (InvalidView, SizeMismatch, the immediate path's).
     explicit Renderers(const RendererConfig& config);
+    ~Renderers();
     Renderers(const Renderers&) = delete;
     Renderers& operator=(const Renderers&) = delete;
 
@@ -66,6 +74,9 @@ private:
     void collectBatches(const std::vector<ReactionRuntime>& runtimes);
 
     RendererConfig config_;
+    // Built from one snapshot of the shader files (a reload swaps in a cache of a new one); the
+    // renderers below hold it, so it is declared first.
+    ProgramCache programs_;
     ParticleRenderer billboards_;
     MegaRenderer mega_;
     StatelessRenderer stateless_;

@@ -5,7 +5,6 @@
 
 #include "render/PrivateGl.h"
 
-#include "ShaderLoader.h"
 #include "Uniforms.h"
 
 namespace fx {
@@ -19,18 +18,8 @@ float quantizeUp(float v) { return std::exp2(std::ceil(std::log2(std::max(v, 1e-
 
 }  // namespace
 
-SmokeOpacityMap::~SmokeOpacityMap() {
-    if (program_) glDeleteProgram(program_);
-}
-
-void SmokeOpacityMap::build(const std::string& shaderDir, std::vector<std::string>* errors) {
-    if (program_) return;
-    std::string error;
-    program_ = buildProgram(shaderDir, "vs_particles.glsl", "fs_particles_opacity.glsl", "", &error);
-    if (!program_) {
-        errors->push_back(error);
-        return;
-    }
+void SmokeOpacityMap::bind(const ProgramCache& programs) {
+    program_ = programs.passProgram(ProgramCache::OpacityMap);
     locateUniforms(program_, {{&locView_, "uView"}, {&locProj_, "uProj"}, {&locRampRow_, "uRampRow"},
                               {&locAtlas_, "uAtlas"}, {&locRamp_, "uRamp"}, {&locDepthRange_, "uDepthRange"},
                               {&locTrimmed_, "uTrimmed"}, {&locNear_, "uNear"}});

@@ -26,6 +26,7 @@
 #include "DrawList.h"
 #include "InstanceStream.h"
 #include "LightState.h"
+#include "ProgramCache.h"
 
 namespace fx {
 
@@ -43,13 +44,13 @@ public:
     static int sizeFor(int viewWidth, int viewHeight);
 
     SmokeOpacityMap() = default;
-    ~SmokeOpacityMap();
     SmokeOpacityMap(const SmokeOpacityMap&) = delete;
     SmokeOpacityMap& operator=(const SmokeOpacityMap&) = delete;
 
-    /// vs_particles + fs_particles_opacity; on failure appends "file:line: message" to *errors
-    /// (lit smoke then goes without self-shadowing).
-    void build(const std::string& shaderDir, std::vector<std::string>* errors);
+    /// Takes the opacity program of `programs` (ProgramCache::OpacityMap; 0 where it failed: lit
+    /// smoke then goes without self-shadowing) and looks its uniforms up. Compiles nothing; the
+    /// program stays the cache's, which must outlive its use (until the next bind).
+    void bind(const ProgramCache& programs);
     bool ok() const { return program_ != 0; }
 
     struct Range {

@@ -34,7 +34,7 @@ struct StatelessRenderer::Gpu {
         int capacity = 0;
         int lastFrameSeen = 0;
     };
-    GLuint program = 0;
+    GLuint program = 0;  ///< the cache's
     bool failed = false;
     GLuint corners = 0;
     std::unordered_map<const StatelessRing*, RingBuffer> rings;
@@ -51,12 +51,11 @@ struct StatelessRenderer::Gpu {
             glDeleteVertexArrays(1, &kv.second.vao);
         }
         if (corners) glDeleteBuffers(1, &corners);
-        if (program) glDeleteProgram(program);
     }
 };
 
-StatelessRenderer::StatelessRenderer(HostAdapter* host, std::string shaderDir)
-    : host_(host), shaderDir_(std::move(shaderDir)) {}
+StatelessRenderer::StatelessRenderer(HostAdapter* host, ProgramCache& programs)
+    : host_(host), programs_(programs) {}
 
 StatelessRenderer::~StatelessRenderer() {
     if (!gpu_) return;
@@ -98,13 +97,14 @@ bool StatelessRenderer::ensureProgram() {
     Gpu& g = *gpu_;
     if (g.program) return true;
     if (g.failed) return false;
-    std::string error;
-    const GLuint program =
-        buildProgram(shaderDir_, "vs_stateless_particles.glsl", "fs_stateless_particles.glsl", "", &error);
+    const ProgramCache::Key key = ProgramCache::Key::of(ProgramCache::Stateless);
+    std::vector<std::string> errors;
+    if (!programs_.tried(key)) programs_.build({key}, &errors);
+    const uint32_t program = programs_.passProgram(ProgramCache::Stateless);
     if (!program) {
         g.failed = true;  // reported once; the other techniques keep drawing
-        error_ = error;
-        host_->log(LogLevel::Error, ("fx: error[ShaderBuild] stateless particles:\n" + error).c_str());
+        error_ = errors.empty() ? "fs_stateless_particles.glsl:0: did not build" : errors.front();
+        host_->log(LogLevel::Error, ("fx: error[ShaderBuild] stateless particles:\n" + error_).c_str());
         return false;
     }
     adopt(program);
@@ -113,7 +113,6 @@ bool StatelessRenderer::ensureProgram() {
 
 void StatelessRenderer::adopt(uint32_t program) {
     Gpu& g = *gpu_;
-    if (g.program) glDeleteProgram(g.program);
     g.program = program;
     g.failed = false;
     error_.clear();
@@ -136,29 +135,10 @@ bool StatelessRenderer::prepare(Diagnostics* out) {
     return ok;
 }
 
-void StatelessRenderer::stageShaders(ShaderErrorLog* errors) {
-    std::string error;
-    const GLuint program =
-        buildProgram(shaderDir_, "vs_stateless_particles.glsl", "fs_stateless_particles.glsl", "", &error);
-    if (!program) {
-        errors->add(error);
-        return;
-    }
-    if (!gpu_) {  // not in use: the build only checked the files
-        glDeleteProgram(program);
-        return;
-    }
-    staged_ = program;  // made live only with every other program of the edit
-}
-
-void StatelessRenderer::commitShaders() {
-    if (staged_) adopt(staged_);
-    staged_ = 0;
-}
-
-void StatelessRenderer::dropShaders() {
-    if (staged_) glDeleteProgram(staged_);
-    staged_ = 0;
+void StatelessRenderer::programsSwapped() {
+    // Not in use: the reload only checked the files. In use: every key the cache tried was
+    // built, so the stateless program is there.
+    if (gpu_ && programs_.passProgram(ProgramCache::Stateless)) adopt(programs_.passProgram(ProgramCache::Stateless));
 }
 
 void StatelessRenderer::draw(const ViewInfo& view, const std::vector<Draw>& draws, const HostClip& clip) {

@@ -7,15 +7,17 @@
 // stateless reaction may have a live particle (ring liveUntil() > clock: O(1) per reaction); it
 // writes the view's colour with the hard technique's depth test (Standard: LEQUAL, ReversedZ:
 // GEQUAL, no depth writes) and additive blending (order-independent: never sorted). Every GL
-// call runs inside a GlStateGuard. The program is built by prepare() (Plugin::prepareGl, when a
-// stateless reaction is loaded) or at the first draw; one that fails to build is reported once
-// through the host's log and the pass draws nothing; the other techniques are unaffected. Live
-// shader edits rebuild it with the other particle programs (stageShaders, Renderers::reload).
+// call runs inside a GlStateGuard. The program (ProgramCache::Stateless, in Renderers' cache) is
+// built by prepare() (Plugin::prepareGl, when a stateless reaction is loaded) or at the first
+// draw; one that fails to build is reported once through the host's log and the pass draws
+// nothing; the other techniques are unaffected. Live shader edits rebuild it with the other
+// particle programs (Renderers::reload, one swap of the cache).
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "ProgramCache.h"
 #include "ScreenTiles.h"
 #include "ShaderLoader.h"
 #include "fx/Diagnostic.h"
@@ -28,7 +30,8 @@ class ReactionRuntime;
 
 class StatelessRenderer {
 public:
-    StatelessRenderer(HostAdapter* host, std::string shaderDir);
+    /// Builds and draws with the program of `programs` (Renderers' cache, which outlives this).
+    StatelessRenderer(HostAdapter* host, ProgramCache& programs);
     ~StatelessRenderer();
     StatelessRenderer(const StatelessRenderer&) = delete;
     StatelessRenderer& operator=(const StatelessRenderer&) = delete;
@@ -42,13 +45,9 @@ public:
     /// the build's "file:line: message" lines appended to `out` (logged once, as at a draw).
     /// Context current.
     bool prepare(Diagnostics* out);
-    /// A shader reload's stateless part (Renderers::reload): builds the program from the
-    /// folder's current files and adds a failure to `errors`; it is staged only when it built and
-    /// something stateless was drawn or prepared (else the build only checked the files).
-    /// commitShaders makes it live, dropShaders deletes it. Context current.
-    void stageShaders(ShaderErrorLog* errors);
-    void commitShaders();
-    void dropShaders();
+    /// After a reload swapped the cache's programs: where something stateless was drawn or
+    /// prepared, the pass takes the new build. Context current.
+    void programsSwapped();
 
     static constexpr const char* kPass = "particles_stateless";
 
@@ -57,14 +56,13 @@ private:
     struct Draw;
     void draw(const ViewInfo& view, const std::vector<Draw>& draws, const HostClip& clip);
     bool ensureProgram();
-    /// Makes `program` the one drawn with (deleting the previous one), with its uniforms.
+    /// Makes the cache's program the one drawn with, with its uniforms.
     void adopt(uint32_t program);
 
     HostAdapter* host_;
-    std::string shaderDir_;
+    ProgramCache& programs_;
     std::string error_;  ///< the failed build's message (prepare() hands it out)
     std::unique_ptr<Gpu> gpu_;
-    uint32_t staged_ = 0;  ///< a reload's program until commitShaders
 };
 
 }  // namespace fx

@@ -316,9 +316,14 @@ public:
 
     fx::ReactionDesc desc;
     fx::FrameSettings settings;  ///< what the plugin's hook reads from its switches once a frame
+    fx::ProgramCache programs;   ///< the renderer's programs (Renderers' cache in the plugin)
     fx::ParticleRenderer renderer;
     fx::ParticlePool pool;
 };
+
+/// A cache of the embedded shaders with the depth lineariser's program built (the program the
+/// plugin's DepthLinearizer takes from Renderers' cache); the test fails where it does not build.
+void buildLinearizeProgram(fx::ProgramCache* programs);
 
 /// The depth-edge scene (EdgeScene.cpp) of the quarter-res tests: bright soft puffs (softness 0.3 m) behind a wall
 /// whose top edge crosses them and a 6 cm pole in front, on a dark ground, seen from 8 m.

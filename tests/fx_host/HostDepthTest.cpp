@@ -175,8 +175,8 @@ class HostDepthTest : public FxHostTest {
 protected:
     void SetUp() override {
         FxHostTest::SetUp();
-        std::string error;
-        ASSERT_TRUE(depth.prepare(&error)) << error;
+        buildLinearizeProgram(&programs);
+        ASSERT_TRUE(depth.bind(programs));
         glGenTextures(1, &linearTex);
         glBindTexture(GL_TEXTURE_2D, linearTex);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, kW, kH, 0, GL_RED, GL_FLOAT, nullptr);
@@ -227,6 +227,27 @@ protected:
         glDisable(GL_DEPTH_TEST);
     }
 
+    // A framebuffer of an RGBA8 colour texture and a depth texture of `f`, left bound.
+    static void makeDepthTarget(const Format& f, GLuint* tex, GLuint* colour, GLuint* fbo) {
+        glGenTextures(1, tex);
+        glBindTexture(GL_TEXTURE_2D, *tex);
+        glTexImage2D(GL_TEXTURE_2D, 0, GLint(f.internal), kW, kH, 0, f.format, f.type, nullptr);
+        glGenTextures(1, colour);
+        glBindTexture(GL_TEXTURE_2D, *colour);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kW, kH, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        glGenFramebuffers(1, fbo);
+        glBindFramebuffer(GL_FRAMEBUFFER, *fbo);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, *colour, 0);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, f.attachment, GL_TEXTURE_2D, *tex, 0);
+    }
+    static void freeDepthTarget(GLuint tex, GLuint colour, GLuint fbo) {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glDeleteFramebuffers(1, &fbo);
+        glDeleteTextures(1, &tex);
+        glDeleteTextures(1, &colour);
+    }
+
     std::vector<float> readLinear() {
         std::vector<float> out(size_t(kW) * kH);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, linearFbo);
@@ -267,6 +288,7 @@ protected:
         return m;
     }
 
+    fx::ProgramCache programs{fx::snapshotShaderReader(fx::shaderReader(""))};
     fx::DepthLinearizer depth;
     GLuint linearTex = 0, linearFbo = 0;
 };
@@ -300,19 +322,11 @@ TEST_F(HostDepthTest, MappingRoundTripsAndNamesTheConvention) {
 TEST_F(HostDepthTest, DepthTexturesOfEveryFormatLinearisePerConvention) {
     for (const Format& f : kFormats) {
         GLuint tex = 0, colour = 0, fbo = 0;
-        glGenTextures(1, &tex);
+        makeDepthTarget(f, &tex, &colour, &fbo);
         glBindTexture(GL_TEXTURE_2D, tex);
-        glTexImage2D(GL_TEXTURE_2D, 0, GLint(f.internal), kW, kH, 0, f.format, f.type, nullptr);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);  // as a host may leave it
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);  // a shadow map's
-        glGenTextures(1, &colour);
-        glBindTexture(GL_TEXTURE_2D, colour);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kW, kH, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
         glBindTexture(GL_TEXTURE_2D, 0);
-        glGenFramebuffers(1, &fbo);
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, f.attachment, GL_TEXTURE_2D, tex, 0);
         ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE)) << f.name;
         {
             fx::GlStateGuard guard;
@@ -338,11 +352,32 @@ TEST_F(HostDepthTest, DepthTexturesOfEveryFormatLinearisePerConvention) {
             check(c, f.bits, std::string(f.name) + " bound FBO copy");
             drainGlErrors(c.name);
         }
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glDeleteFramebuffers(1, &fbo);
-        glDeleteTextures(1, &tex);
-        glDeleteTextures(1, &colour);
+        freeDepthTarget(tex, colour, fbo);
     }
+}
+
+// The linearise program is the cache's: a shader reload swaps a new cache in and deletes the old
+// programs; bind() then takes the new build, and the pass draws with it (a stale name would
+// raise a GL error, which the fixture checks, and leave the target unwritten).
+TEST_F(HostDepthTest, TheLinearizerTakesTheProgramOfASwappedCache) {
+    const Convention c = conventions()[0];
+    const Format& f = kFormats[1];  // DEPTH24
+    GLuint tex = 0, colour = 0, fbo = 0;
+    makeDepthTarget(f, &tex, &colour, &fbo);
+    ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+    drawScene(c);
+    {
+        fx::ProgramCache reloaded(fx::snapshotShaderReader(fx::shaderReader("")));
+        buildLinearizeProgram(&reloaded);
+        programs.swap(reloaded);
+    }  // the old programs are deleted here, as at the end of Renderers::reload
+    {
+        fx::GlStateGuard guard;
+        ASSERT_TRUE(depth.bind(programs));
+        depth.linearize(tex, c.proj, c.mapping, kFar, linearFbo, kW, kH);
+    }
+    EXPECT_GT(check(c, f.bits, "after a swap").checked, 0);
+    freeDepthTarget(tex, colour, fbo);
 }
 
 TEST_F(HostDepthTest, DefaultFramebufferDepthIsCopiedAndLinearised) {

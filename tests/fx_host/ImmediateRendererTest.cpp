@@ -91,7 +91,7 @@ protected:
         createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
         simulate(1.0f, 60);
         useWallScene();
-        immediate = std::make_unique<fx::ImmediateRenderer>(&host);
+        immediate = std::make_unique<fx::ImmediateRenderer>(&host, programs);
     }
     void TearDown() override {
         immediate.reset();
@@ -138,6 +138,7 @@ protected:
         return e;
     }
 
+    fx::ProgramCache programs{fx::snapshotShaderReader(fx::shaderReader(""))};  ///< the immediate path's
     std::unique_ptr<fx::ImmediateRenderer> immediate;
 };
 
@@ -600,7 +601,8 @@ TEST_F(FxHostTest, DISABLED_ImmediateDepthSourceTiming) {
                    TestScene::wallZ(-5.0f, -20.0f, 20.0f, 0.0f, 3.0f, glm::vec3(0.4f, 0.3f, 0.3f))};
     const fx::ViewInfo view = makeView(glm::vec3(4.0f, 2.0f, 7.0f), glm::vec3(0.0f, 0.8f, 1.0f), W, H);
     TestFrameGraph graph(W, H);  // its prepass makes the host's linear depth for the R32F case
-    fx::ImmediateRenderer immediate(&host);
+    fx::ProgramCache programs(fx::snapshotShaderReader(fx::shaderReader("")));
+    fx::ImmediateRenderer immediate(&host, programs);
     HostTarget hostFb(W, H, GL_DEPTH_COMPONENT24);
     auto seconds = [] { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); };
     auto median = [](std::vector<double> v) {
@@ -653,9 +655,10 @@ TEST_F(FxHostTest, DISABLED_ImmediateDepthSourceTiming) {
         glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, W, H, 0, GL_RED, GL_FLOAT, nullptr);
         glBindFramebuffer(GL_FRAMEBUFFER, linear.fbo);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, r32f, 0);
+        fx::ProgramCache programs(fx::snapshotShaderReader(fx::shaderReader("")));
+        buildLinearizeProgram(&programs);
         fx::DepthLinearizer depth;
-        std::string error;
-        ASSERT_TRUE(depth.prepare(&error)) << error;
+        ASSERT_TRUE(depth.bind(programs));
         for (int round = 0; round < kRounds; ++round) {
             glFinish();
             const double t0 = seconds();

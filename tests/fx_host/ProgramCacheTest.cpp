@@ -164,6 +164,28 @@ TEST_F(ProgramCacheTest, NoFrameCompilesAcrossHotReloads) {
     EXPECT_TRUE(host.errors().empty()) << host.errors().front();
 }
 
+// The mega and stateless programs are keys of the same cache: an edit to a mega file rebuilds
+// them with every other key in one swap, the renderers take the new builds (a stale program would
+// raise a GL error, which the fixture checks), and no frame compiles.
+TEST_F(ProgramCacheTest, AShaderReloadSwapsTheMegaProgramsWithTheRestAndNoFrameCompiles) {
+    const uint64_t passBuildsBefore = fx::programBuildCounts().inPass;
+    fx::RenderOptions o;
+    o.techniqueOverride = fx::Technique::Mega;
+    plugin->setRenderOptions(o);
+    EXPECT_GT(prepareThenDraw("mega"), 0u);
+    const std::string blur = shaders + "/fs_mega_blur.glsl";
+    cubetest::writeAhead(blur, cubetest::readFile(blur) + "\n// an edit that changes nothing\n", 20);
+    const uint64_t before = fx::programBuildCounts().built;
+    ASSERT_TRUE(plugin->pollShaderReload(nullptr));
+    EXPECT_GT(fx::programBuildCounts().built, before);
+    const int drawnBefore = drawn;
+    EXPECT_EQ(frames(), 0u) << "after the shader reload";
+    EXPECT_GT(drawn, drawnBefore) << "nothing drawn after the reload";
+    EXPECT_EQ(prepareThenDraw("after the shader reload"), 0u) << "the reload built every key the old cache had";
+    EXPECT_EQ(fx::programBuildCounts().inPass, passBuildsBefore);
+    EXPECT_TRUE(host.errors().empty()) << host.errors().front();
+}
+
 // A host that changes reactions without calling prepareGl again: the programs the change reaches
 // (a new contrast power's soft program) are built while the next frame is declared (told once, as
 // a warning), never inside a pass.

@@ -5,10 +5,17 @@ namespace fxtest {
 DirectParticles::DirectParticles(fx::HostAdapter* host, std::string shaderDir, std::string dataDir,
                                  int capacity)
     : desc(fx::defaultReaction(fx::ReactionType::WheelSmoke)),
-      renderer(fx::RendererConfig{host, std::move(shaderDir), std::move(dataDir)}),
+      programs(fx::snapshotShaderReader(fx::shaderReader(shaderDir))),
+      renderer(fx::RendererConfig{host, std::move(shaderDir), std::move(dataDir)}, programs),
       pool(capacity) {
     desc.name = "hand_placed";
     desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(1.0f)}};
+}
+
+void buildLinearizeProgram(fx::ProgramCache* programs) {
+    std::vector<std::string> errors;
+    programs->build({fx::ProgramCache::Key::of(fx::ProgramCache::LinearizeDepth)}, &errors);
+    EXPECT_TRUE(errors.empty()) << errors.front();
 }
 
 void DirectParticles::set(const std::vector<HandParticle>& particles) {
