@@ -4,13 +4,13 @@
 //   BM_LegacyAliasBomb/L    data/legacy_smoke.yaml's loader (cube::loadLegacySmokeText) on an
 //                           alias bomb of L levels, ten aliases wide (10^L paths in ~60 L bytes)
 //                           in the `reactions:` list: L = 9 nests 10 levels, past the 8-level
-//                           limit (error[TooDeep], issue 32's bomb); L = 7 nests 8, within it, so
+//                           limit (error[TooDeep], the alias bomb); L = 7 nests 8, within it, so
 //                           only the 20,000-visit budget of the nesting check bounds the walk
 //                           (then WrongType: lists where reaction maps belong)
 //   BM_ReactionAliasBomb/L  the same text as a reaction file (fx::loadReactionText), whose
 //                           YamlCheck::subtreeDepth has the same budget: the reference
 //
-// Before the budget (issue 32) the legacy loader took 9.5 s of CPU on L = 9. Run:
+// Before the budget the legacy loader took 9.5 s of CPU on L = 9. Run:
 //   bench_loaders --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 #include <string>
 #include <vector>

@@ -18,7 +18,7 @@ mkdir -p "$work/corpus_reactions" "$work/corpus_scene" "$work/corpus_legacy" "$w
 cp reactions/*.yaml data/legacy_smoke.yaml "$work/corpus_reactions/"
 cp data/legacy_smoke.yaml "$work/corpus_legacy/"
 cp data/race.gltf data/race.glb "$work/corpus_scene/"
-# Hand-made seeds for the classes of bad input each loader must refuse (issue 32: alias bombs,
+# Hand-made seeds for the classes of bad input each loader must refuse (alias bombs,
 # recipes with a bad layer): fuzz/seeds/<target>/.
 for target in reactions legacy; do
   [ -d "fuzz/seeds/$target" ] && cp fuzz/seeds/$target/* "$work/corpus_$target/"

@@ -31,7 +31,7 @@ const std::vector<Mode>& allModes() {
          false, "spherical", fx::ParticleShape::Quad},
         {"spherical+quarter", "Spherical billboards, 1/4-size texture", true, Technique::Spherical, false, true,
          "spherical"},
-        // Lit smoke (issue 16): normals, sun, scattering and the opacity map; each its own
+        // Lit smoke: normals, sun, scattering and the opacity map; each its own
         // reference (the cost of light is read against the unlit row above it).
         {"hard-lit", "Hard particles, lit and self-shadowed", true, Technique::Hard, false, false, "hard-lit",
          fx::ParticleShape::Trimmed, true},

@@ -23,9 +23,8 @@
 //    without one (loading, passes that draw no z-tested geometry) uses Standard;
 //  - cost: on entry every row is read (about 150 glGet calls for the rows below) and the rows
 //    the host left off their pinned value are set; on exit every row is written back (no
-//    allocation: the saved values live in the guard): 3.4 us per guard from a clean host, 5.0 us
-//    from a fully poisoned one (6.6 us in a compatibility context), llvmpipe, a few guards a
-//    frame.
+//    allocation: the saved values live in the guard); a few guards a frame (their measured cost
+//    is in docs/results.md, session 12).
 //
 // Pinned (set on entry, restored on exit):
 //   texture units 0..kTextureUnits-1: GL_TEXTURE_2D binding 0, sampler object 0,

@@ -24,17 +24,9 @@
 //     the view alone, one of another size the whole framebuffer with the view at the viewport's
 //     origin (it must cover the view, else SizeMismatch).
 //
-// Measured (tests/fx_host/ImmediateRendererTest.cpp, llvmpipe, 160 x 120 and 640 x 480):
-//   image: with the host's linear R32F depth, equal to the frame-graph path bit for bit (hard, soft,
-//   spherical, quarter res, mega, lit; standard and reversed-Z); from the host's z-buffer (24-bit
-//   texture, bound FBO, default framebuffer) within 1/255 (2/255 once, spherical, default
-//   framebuffer), PSNR 76-96 dB; from a reversed-Z host's 32F z-buffer bit for bit.
-//   time (DISABLED_ImmediateDepthSourceTiming: soft smoke on the wall scene, 640 x 480, 61
-//   interleaved rounds, CPU clock around glFinish, quiet machine, three runs): host frame + plugin
-//   with a depth texture / with linear R32F (the host's own prepass included) 1.05-1.06x (22.1 ->
-//   23.5 ms); the plugin's passes alone 1.12x (+2.35 ms), of which the linearise pass is 1.4-1.7 ms
-//   (~5 ns a pixel on llvmpipe; on a GPU a full-screen 4-byte read + write, microseconds). Not
-//   under the 1.03x target here: the pass covers the whole view while the smoke covers a part.
+// How close its images come to the frame-graph path's, and what the depth source costs, is
+// measured in tests/fx_host/ImmediateRendererTest.cpp; the figures are in docs/results.md
+// (session 12).
 #include <cstdint>
 #include <string>
 #include <vector>

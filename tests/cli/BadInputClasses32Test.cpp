@@ -1,4 +1,4 @@
-// Issue 32: every bad input of the features added after issue 15 (mega and stateless shaders,
+// Every bad input of the features added after BadInputClassesTest's classes (mega and stateless shaders,
 // layered recipes, --explode-at, the platform library overrides, legacy aliases) is a clear
 // error, printed once, before the first frame. One test per class, each hostile input made here;
 // the plugin-level halves (live shader edits of every technique) are in
@@ -110,7 +110,7 @@ TEST(BadInputClasses32, ShadersOfEveryTechniqueFailStartUpOnce) {
         {"fs_particles_hard.glsl", "include", "--mode hard", "fs_particles_hard.glsl"},
         {"fs_particles_spherical.glsl", "syntax", "--mode spherical", "fs_particles_spherical.glsl"},
         {"particles_common.glsl", "syntax", "", "particles_common.glsl"},
-        // Issue 31: an error that only one variant's #if branch holds (the reactions' contrast
+        // An error that only one variant's #if branch holds (the reactions' contrast
         // powers, ProgramCache::Key::powerSteps) stops start-up too, not the first frame with smoke.
         {"particles_common.glsl", "power-branch", "", "particles_common.glsl"},
     };

@@ -1,4 +1,4 @@
-// Issue 15: every bad input a clear error. One test per class (legacy data, glTF, reaction
+// Every bad input a clear error. One test per class (legacy data, glTF, reaction
 // folders, shaders, CLI and signals). Each hostile input is generated here at run time; each
 // case must end within kBoundSeconds (a generous bound for 2 slow cores and ASan) with a non-zero
 // exit and a message naming the file or flag and the rule broken, or with the last good state.

@@ -1,4 +1,4 @@
-// --stats-json's reaction_stats (issue 17): one entry per running reaction with its name,
+// --stats-json's reaction_stats: one entry per running reaction with its name,
 // technique, particles alive at exit and emitted in total, as the plugin counts them.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Issue 16: a car that reads as a car. Its wheels are seen whole: from the side the rim (bright,
+// A car that reads as a car. Its wheels are seen whole: from the side the rim (bright,
 // metallic grey) shows at the hub, and from the chase camera the rear tyres show beside the
 // tail instead of being hidden inside the body.
 #include <gtest/gtest.h>

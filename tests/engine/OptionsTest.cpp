@@ -129,7 +129,7 @@ TEST(Options, BadValuesAreRejectedNamingTheFlag) {
     }
 }
 
-// Issue 15: values that parse but cannot make a sensible run are refused before it starts.
+// Values that parse but cannot make a sensible run are refused before it starts.
 TEST(Options, RunsThatCannotWorkAreRefusedBeforeTheyStart) {
     const std::vector<std::pair<std::vector<const char*>, std::string>> bad = {
         {{"--frames", "0"}, "--window"},
@@ -159,7 +159,7 @@ TEST(Options, RunsThatCannotWorkAreRefusedBeforeTheyStart) {
     EXPECT_EQ(o.carNode, "truck");
 }
 
-// Issue 16: --sun AZIMUTH,ELEVATION in degrees. The default is the sun the race scene had as a
+// --sun AZIMUTH,ELEVATION in degrees. The default is the sun the race scene had as a
 // shader constant, normalize(-0.35, 0.85, 0.40), within 1e-3 per component.
 TEST(Options, SunDefaultsToTheFormerConstantSun) {
     Options o;

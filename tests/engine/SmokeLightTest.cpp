@@ -1,4 +1,4 @@
-// Issue 16: the game lights the plugin's smoke with its sun, and the smoke shadows the ground.
+// The game lights the plugin's smoke with its sun, and the smoke shadows the ground.
 //   - on the burnout, pixels the smoke does not cover get darker with lit smoke (its shadow on
 //     the track) and never brighter; --unlit-smoke leaves every uncovered pixel as the bare frame;
 //   - the lit smoke's shading follows --sun (a different sun, a different cloud);

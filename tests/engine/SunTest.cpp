@@ -1,4 +1,4 @@
-// Issue 16: the sun is a parameter. Game::setSun relights the scene from the next frame: the
+// The sun is a parameter. Game::setSun relights the scene from the next frame: the
 // ground follows the sun's height and the sky's sun disc sits where the sun is.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Issue 16: the wheels turn with the drive. After the car has rolled N metres a wheel node has
+// The wheels turn with the drive. After the car has rolled N metres a wheel node has
 // turned N / r radians about its axle (the car's side axis, +Z), and nothing else about it moved.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Issue 30 item 2: the host's own z-buffer as the plugin's linear depth (fx_plugin/render/DepthLinearizer.h,
+// The host's own z-buffer as the plugin's linear depth (fx_plugin/render/DepthLinearizer.h,
 // DepthMapping.h). Per convention (GL and D3D-style projections, ZERO_TO_ONE, reversed-Z, infinite
 // far plane, orthographic, non-default depth ranges) planes at known distances are drawn into a
 // depth texture of each format (16, 24, 32F, 24_8) and into the default framebuffer; the

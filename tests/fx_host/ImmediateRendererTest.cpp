@@ -1,4 +1,4 @@
-// Issue 30 item 3: the immediate path (fx_plugin/render/ImmediateRenderer.h) for engines without a
+// The immediate path (fx_plugin/render/ImmediateRenderer.h) for engines without a
 // frame graph. Its image equals the frame-graph path's (TestFrameGraph) bit for bit when it gets the
 // same linear depth; with the host's z-buffer (a depth texture, the bound FBO's depth, the default
 // framebuffer's depth) it equals it within kDepthSourceTolerance; it allocates nothing in a frame

@@ -1,4 +1,4 @@
-// Lit smoke is stable (issue 16; seed 000 section 3.3.8 reports its lit smoke flickering and
+// Lit smoke is stable (seed 000 section 3.3.8 reports its lit smoke flickering and
 // popping): the shipped reactions through the plugin's entry point, lit by a scene light.
 //   - still camera, paused simulation: two frames are byte-identical;
 //   - simulation running at 60 Hz: the frame-to-frame change of smoke pixels with light is at

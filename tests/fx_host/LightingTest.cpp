@@ -1,4 +1,4 @@
-// Lit smoke (issue 16, API 1.2 setSceneLight): the normal atlas, the sun's side of a particle,
+// Lit smoke (API 1.2 setSceneLight): the normal atlas, the sun's side of a particle,
 // self-shadowing through the opacity map, and stability.
 //   - the normal atlas agrees with the alpha atlas (zero normal where alpha is 0, unit elsewhere);
 //   - one particle lit from the left is brighter on its left half than unlit, and the other way

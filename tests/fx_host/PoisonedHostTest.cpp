@@ -1,4 +1,4 @@
-// No host state reaches the plugin's image (issue 30, item 4). Before every plugin call (the
+// No host state reaches the plugin's image. Before every plugin call (the
 // plugin's prepareGl, declarePasses and each pass it declared) the host is put into GL's default
 // state and then poisoned with one state of PoisonedHostState.h (or all of them at once); after
 // the call every poisoned and listed state must read back the host's poisoned value, with no GL

@@ -1,4 +1,4 @@
-// Issue 31 item 2: one program cache (fx_plugin/render/ProgramCache.h) filled by prepareGl and
+// One program cache (fx_plugin/render/ProgramCache.h) filled by prepareGl and
 // by shader reloads; no program is compiled inside a pass, and none while a frame is declared
 // when the host calls prepareGl again after changing options or reactions (as engine_stub does).
 // The counts are the library's own (ShaderLoader.h: programBuildCounts), taken around every

@@ -1,4 +1,4 @@
-// Issue 32, items 1-3 at the plugin's API: the programs of every technique (billboards, mega,
+// At the plugin's API: the programs of every technique (billboards, mega,
 // stateless) are built by prepareGl when a loaded reaction or the options can use them, a live
 // edit of any technique's file is one transaction (a broken one keeps every last good program
 // and is reported once, never announced as reloaded), and a program built after a rejected edit

@@ -1,4 +1,4 @@
-// The keys of issue 17: alpha_over_life / size_over_life curves, turbulence and vortex. One test
+// The motion keys: alpha_over_life / size_over_life curves, turbulence and vortex. One test
 // per rule, asserting the code, the line and the key (not the wording).
 #include <string>
 

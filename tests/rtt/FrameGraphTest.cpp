@@ -349,7 +349,7 @@ TEST_F(FrameGraphTest, SharedDepthCanBeDecidedAfterThePassesAreDeclared) {
     }
 }
 
-// The frame in pipeline order (issue 31): passes declared top to bottom, and compile() picks
+// The frame in pipeline order: passes declared top to bottom, and compile() picks
 // who writes the linear scene depth. The prepass only offers it (writeIfRead), the opaque and
 // alpha-tested passes offer it as a second render target, the colour target takes the
 // prepass's z-buffer only if the prepass runs (sharedDepthIfWritten). Nobody reading it: no

@@ -1,4 +1,4 @@
-// Issue 15, glTF at the loader level: limits checked before parsing (JSON nesting, hierarchy
+// glTF at the loader level: limits checked before parsing (JSON nesting, hierarchy
 // depth), the validation rules tinygltf accepts silently (each with its code and the Khronos
 // validator's rule name), required extensions named, uris confined to the model's folder,
 // ignored features listed once, and a node tree of any shape assembled in linear time.
