@@ -17,7 +17,6 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
                             DrawList* out) {
     out->clear();
     if (batchCount <= 0) return;
-    if (sorters_.size() < size_t(batchCount)) sorters_.resize(size_t(batchCount));
     const ViewFrustum frustum(view.view, view.proj, view.nearPlane, view.farPlane);
     // Camera forward in world space: minus the third row of the view rotation.
     const glm::vec3 forward(-view.view[0][2], -view.view[1][2], -view.view[2][2]);
@@ -38,8 +37,6 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
         if (!(usableTechniques & techniqueBit(technique))) continue;
 
         const ParticlePool& pool = *in.pool;
-        const ParticleSorter::Order order =
-            sorters_[size_t(b)].update(pool, view.eye, forward, in.sortBackToFront);
         const float* x = pool.posX();
         const float* y = pool.posY();
         const float* z = pool.posZ();
@@ -49,10 +46,19 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
         const float* fade = pool.fade();
         const uint8_t* frame = pool.frame();
 
+        // Cull first, in pool order (each stream read front to back), then sort what is drawn:
+        // sorting the whole pool and gathering through its order read every stream at random.
+        // The radix sort is stable, so the order is the one sorting the pool would give.
         DrawBatch batch;
         batch.first = static_cast<int>(out->instances.size());
-        for (int k = 0; k < order.count; ++k) {
-            const uint32_t i = order.indices[k];
+        const bool sort = in.sortBackToFront;
+        std::vector<ParticleInstance>& drawn = sort ? culled_ : out->instances;
+        if (sort) {
+            culled_.clear();
+            depth_.clear();
+        }
+        const int alive = pool.alive();
+        for (int i = 0; i < alive; ++i) {
             if (!(size[i] > 0.0f) || !(fade[i] > 0.0f)) continue;  // also drops NaN
             if (!frustum.intersectsSphere(glm::vec3(x[i], y[i], z[i]), size[i] * kHalfDiagonal)) {
                 continue;
@@ -67,7 +73,16 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
             p.rotation = rotation[i];
             p.fade = fade[i] < 1.0f ? fade[i] : 1.0f;
             p.frame = float(frame[i] & 3u);
-            out->instances.push_back(p);
+            drawn.push_back(p);
+            if (sort) {
+                depth_.push_back((x[i] - view.eye.x) * forward.x + (y[i] - view.eye.y) * forward.y +
+                                 (z[i] - view.eye.z) * forward.z);
+            }
+        }
+        if (sort) {
+            const ParticleSorter::Order order = sorter_.sortDescending(depth_.data(), int(depth_.size()));
+            out->instances.reserve(out->instances.size() + size_t(order.count));
+            for (int k = 0; k < order.count; ++k) out->instances.push_back(culled_[order.indices[k]]);
         }
         batch.count = static_cast<int>(out->instances.size()) - batch.first;
         if (batch.count == 0) continue;

@@ -65,12 +65,14 @@ inline uint32_t techniqueBit(Technique t) { return 1u << static_cast<uint32_t>(t
 class DrawListBuilder {
 public:
     /// Fills `out` for one view. `usableTechniques`: techniqueBit() mask of techniques whose
-    /// programs built. Keeps one sorter per batch index; after warm-up it allocates nothing.
+    /// programs built. Keeps its scratch between calls; after warm-up it allocates nothing.
     void build(const ViewInfo& view, const ParticleBatch* batches, int batchCount,
                Technique techniqueOverride, uint32_t usableTechniques, DrawList* out);
 
 private:
-    std::vector<ParticleSorter> sorters_;
+    ParticleSorter sorter_;                  // the batch being built's order
+    std::vector<ParticleInstance> culled_;   // its visible particles in pool order
+    std::vector<float> depth_;               // their depths along the view axis
 };
 
 }  // namespace fx

@@ -45,15 +45,33 @@ ParticleSorter::Order ParticleSorter::update(const ParticlePool& pool, glm::vec3
     const float* x = pool.posX();
     const float* y = pool.posY();
     const float* z = pool.posZ();
-    uint32_t* hist = histogram_.data();
     std::fill(histogram_.begin(), histogram_.end(), 0u);
     for (int i = 0; i < n; ++i) {
         const float depth =
             (x[i] - eye.x) * viewDir.x + (y[i] - eye.y) * viewDir.y + (z[i] - eye.z) * viewDir.z;
-        const uint32_t k = descendingKey(depth);
-        keys_[i] = k;
-        for (int p = 0; p < kPasses; ++p) ++hist[p * kBuckets + ((k >> (p * kDigitBits)) & kDigitMask)];
+        addKey(i, descendingKey(depth));
     }
+    return radixSort(n);
+}
+
+ParticleSorter::Order ParticleSorter::sortDescending(const float* depth, int n) {
+    reserve(n);
+    for (int i = 0; i < n; ++i) indices_[i] = static_cast<uint32_t>(i);
+    order_ = Order{indices_.data(), n};
+    if (n < 2) return order_;
+    std::fill(histogram_.begin(), histogram_.end(), 0u);
+    for (int i = 0; i < n; ++i) addKey(i, descendingKey(depth[i]));
+    return radixSort(n);
+}
+
+void ParticleSorter::addKey(int i, uint32_t k) {
+    keys_[size_t(i)] = k;
+    uint32_t* hist = histogram_.data();
+    for (int p = 0; p < kPasses; ++p) ++hist[p * kBuckets + ((k >> (p * kDigitBits)) & kDigitMask)];
+}
+
+ParticleSorter::Order ParticleSorter::radixSort(int n) {
+    uint32_t* hist = histogram_.data();
     uint32_t* srcKeys = keys_.data();
     uint32_t* srcIdx = indices_.data();
     uint32_t* dstKeys = keysTmp_.data();

@@ -29,9 +29,16 @@ public:
     /// without computing depths.
     Order update(const ParticlePool& pool, glm::vec3 eye, glm::vec3 viewDir, bool sort);
 
+    /// Indices 0..n-1 ordered by decreasing depth[i], equal depths in index order: the order
+    /// update() gives for particles whose depths these are, for a caller that has culled the
+    /// pool first and sorts only what it draws.
+    Order sortDescending(const float* depth, int n);
+
     Order order() const { return order_; }
 
 private:
+    void addKey(int i, uint32_t key);  // keys_[i] and the histograms of its digits
+    Order radixSort(int n);            // keys_/indices_ [0, n) with histograms counted
     std::vector<uint32_t> keys_, keysTmp_, indices_, indicesTmp_, histogram_;
     Order order_;
 };
