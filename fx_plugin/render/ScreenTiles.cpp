@@ -96,6 +96,7 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
     const bool perspective = plainPerspective(P);
     const bool flat = footprint == Footprint::Billboard;
     float lo[2] = {1e30f, 1e30f}, hi[2] = {-1e30f, -1e30f};
+    double boxPixels = 0.0;  // r.footprintPixels, summed in a register
     bool any = false;
     for (int i = 0; i < count; ++i) {
         const ParticleInstance& p = instances[i];
@@ -114,12 +115,18 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
         if (perspective) {
             // ndc.x = (P00 x + P30) / -z - P20, monotone in x and in 1/-z: the extremes lie at the
             // corners (x +- r, z +- e), so two reciprocals bound all eight (y likewise).
-            const float nearInv = 1.0f / -(c.z + depthExtent), farInv = 1.0f / -(c.z - depthExtent);
+            // A billboard has one depth: one reciprocal, and the edges keep their order.
+            const float nearInv = 1.0f / -(c.z + depthExtent), farInv = flat ? nearInv : 1.0f / -(c.z - depthExtent);
             for (int a = 0; a < 2; ++a) {
                 const float lowEdge = P[a][a] * (c[a] - radius) + P[3][a];
                 const float highEdge = P[a][a] * (c[a] + radius) + P[3][a];
-                plo[a] = std::min(lowEdge * nearInv, lowEdge * farInv) - P[2][a];
-                phi[a] = std::max(highEdge * nearInv, highEdge * farInv) - P[2][a];
+                if (flat) {
+                    plo[a] = lowEdge * nearInv - P[2][a];
+                    phi[a] = highEdge * nearInv - P[2][a];
+                } else {
+                    plo[a] = std::min(lowEdge * nearInv, lowEdge * farInv) - P[2][a];
+                    phi[a] = std::max(highEdge * nearInv, highEdge * farInv) - P[2][a];
+                }
             }
         } else {
             plo[0] = plo[1] = 1e30f;
@@ -141,25 +148,27 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
             hi[a] = std::max(hi[a], phi[a]);
         }
         any = true;
+        const float px0 = toPixel(plo[0], w), px1 = toPixel(phi[0], w);
+        const float py0 = toPixel(plo[1], h), py1 = toPixel(phi[1], h);
         {
-            const float cx0 = std::max(0.0f, toPixel(plo[0], w)), cx1 = std::min(float(w), toPixel(phi[0], w));
-            const float cy0 = std::max(0.0f, toPixel(plo[1], h)), cy1 = std::min(float(h), toPixel(phi[1], h));
-            if (cx1 > cx0 && cy1 > cy0) r.footprintPixels += double(cx1 - cx0) * double(cy1 - cy0);
+            const float cx0 = std::max(0.0f, px0), cx1 = std::min(float(w), px1);
+            const float cy0 = std::max(0.0f, py0), cy1 = std::min(float(h), py1);
+            if (cx1 > cx0 && cy1 > cy0) boxPixels += double(cx1 - cx0) * double(cy1 - cy0);
         }
         if (tiles && tilesX > 0 && tilesY > 0) {
             // The particle's pixels grown by the border, as a tile range clamped to the view (the
-            // float clamp first: a bound far off screen must not overflow the int).
+            // float clamp first: a bound far off screen must not overflow the int; clamped to 0
+            // and up, truncation is the floor).
             auto tileOf = [](float pixel, int border, int tileCount) {
-                const float t = std::floor((pixel + float(border)) / float(kTileSize));
+                const float t = (pixel + float(border)) * (1.0f / float(kTileSize));  // exact: a power of two
                 return int(std::min(std::max(t, 0.0f), float(tileCount - 1)));
             };
-            const float px0 = toPixel(plo[0], w), px1 = toPixel(phi[0], w);
-            const float py0 = toPixel(plo[1], h), py1 = toPixel(phi[1], h);
             if (px1 < -kTileBorder || py1 < -kTileBorder || px0 > w + kTileBorder || py0 > h + kTileBorder) continue;
             markTiles(tiles->grid, tilesX, tileOf(px0, -kTileBorder, tilesX), tileOf(px1, kTileBorder, tilesX),
                       tileOf(py0, -kTileBorder, tilesY), tileOf(py1, kTileBorder, tilesY));
         }
     }
+    r.footprintPixels = boxPixels;
     if (!any) {
         r.whole = false;  // nothing in front of the camera: an empty rect, no tiles
         return r;
