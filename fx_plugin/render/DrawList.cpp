@@ -54,8 +54,13 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
         const bool sort = in.sortBackToFront;
         std::vector<ParticleInstance>& drawn = sort ? culled_ : out->instances;
         if (sort) {
+            // Sized for the whole pool once, as the sorter is: a frame that sees more of it than
+            // any before does not allocate.
             culled_.clear();
             depth_.clear();
+            culled_.reserve(size_t(pool.capacity()));
+            depth_.reserve(size_t(pool.capacity()));
+            sorter_.reserve(pool.capacity());
         }
         const int alive = pool.alive();
         for (int i = 0; i < alive; ++i) {
@@ -81,7 +86,6 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
         }
         if (sort) {
             const ParticleSorter::Order order = sorter_.sortDescending(depth_.data(), int(depth_.size()));
-            out->instances.reserve(out->instances.size() + size_t(order.count));
             for (int k = 0; k < order.count; ++k) out->instances.push_back(culled_[order.indices[k]]);
         }
         batch.count = static_cast<int>(out->instances.size()) - batch.first;

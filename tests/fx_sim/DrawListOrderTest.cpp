@@ -3,6 +3,9 @@
 // cannot change it), with ties, culled particles, zero sizes and faded-out ones in the pool.
 #include <random>
 #include <vector>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -111,6 +114,30 @@ TEST(DrawListOrder, UnsortedBatchesKeepPoolOrderAndBatchesFollowEachOther) {
         ASSERT_EQ(list.batches.size(), 2u);
         EXPECT_EQ(list.batches[1].first, list.batches[0].count);
     }
+}
+
+TEST(DrawListOrder, SeeingMoreOfThePoolThanBeforeAllocatesNothing) {
+#if !defined(__GLIBC__)
+    GTEST_SKIP() << "counts the heap with glibc's mallinfo2";
+#else
+    Scene s;
+    const fx::ParticleBatch batch = s.batch(true);
+    fx::DrawList list;
+    {
+        fx::DrawListBuilder warm;  // the list's own capacity, for the whole view
+        warm.build(s.view, &batch, 1, fx::Technique::FromReaction, ~0u, &list);
+    }
+    fx::ViewInfo narrow = s.view;
+    narrow.proj = glm::perspective(glm::radians(5.0f), 16.0f / 9.0f, 0.1f, 500.0f);
+    fx::DrawListBuilder builder;
+    builder.build(narrow, &batch, 1, fx::Technique::FromReaction, ~0u, &list);
+    const int few = list.particleCount();
+    const size_t before = mallinfo2().uordblks;
+    builder.build(s.view, &batch, 1, fx::Technique::FromReaction, ~0u, &list);
+    const size_t after = mallinfo2().uordblks;
+    ASSERT_LT(few * 4, list.particleCount());  // the second view saw far more of the pool
+    EXPECT_EQ(before, after);
+#endif
 }
 
 }  // namespace
