@@ -5,8 +5,9 @@
 //  - culling: each particle's bounding sphere (radius = half the quad diagonal, size / sqrt 2,
 //    which also holds the spherical technique's sphere) against the view frustum;
 //  - slice: only particles whose view distance lies in ViewInfo::slice (default: all);
-//  - order: back to front (sim/ParticleSorter) for reactions that need it
-//    (ReactionRuntime::needsSorting: sorted alpha blending), pool order otherwise (additive);
+//  - order: back to front (sim/ParticleSorter, over the particles left after culling) for
+//    reactions that need it (ReactionRuntime::needsSorting: sorted alpha blending), pool order
+//    otherwise (additive);
 //    reactions are drawn in reaction order (no sorting across reactions);
 //  - technique: RenderOptions::techniqueOverride, else the reaction's render.technique;
 //    batches whose technique is not in the caller's usable mask are left out (each renderer
