@@ -11,15 +11,10 @@ namespace deprecated_switches_test {  // named: the fx_host tests build as unity
 
 constexpr int kW = 160, kH = 120;
 
-class DeprecatedSwitchesTest : public PluginHostTest {
+// The smoke across the wall's top edge: depth edges in the quarter-res footprints.
+class DeprecatedSwitchesTest : public LoadedPluginTest {
 protected:
-    DeprecatedSwitchesTest() : PluginHostTest(kW, kH) {}
-    void SetUp() override {
-        PluginHostTest::SetUp();
-        createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
-        simulate(1.0f, 60);
-        useWallScene();  // smoke across the wall's top edge: depth edges in the quarter-res footprints
-    }
+    DeprecatedSwitchesTest() : LoadedPluginTest(kW, kH, kSmokeOnWall) {}
 
     // All three switches on (`on`) or at their defaults.
     void setDeprecated(bool on) {

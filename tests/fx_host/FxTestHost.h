@@ -101,6 +101,16 @@ struct Image {
 /// The RGBA8 pixels of `framebuffer`'s colour attachment 0 (0 = the default one), width x height
 /// from the origin; leaves the read framebuffer at 0.
 Image readFramebuffer(uint32_t framebuffer, int width, int height);
+/// A host framebuffer of its own (GlTestSupport.cpp): an RGBA8 colour texture + a depth texture of
+/// `depthFormat` (0 = none), deleted with it.
+struct HostTarget {
+    uint32_t colour = 0, depth = 0, fbo = 0;
+    int width = 0, height = 0;
+    HostTarget(int w, int h, uint32_t depthFormat);
+    ~HostTarget();
+    HostTarget(const HostTarget&) = delete;
+    HostTarget& operator=(const HostTarget&) = delete;
+};
 /// Writes a PNG (top row first) for looking at; returns false when it cannot.
 bool writePng(const std::string& path, const Image& image);
 /// PSNR over RGB, in dB (infinity when equal); `mask` (optional, width*height) selects pixels.
@@ -355,6 +365,14 @@ private:
     std::string glError_;
 };
 
+/// One way of drawing that a test goes through in turn: a technique, quarter res (always) or full,
+/// lit by the default scene light or unlit.
+struct RenderMode {
+    const char* label;
+    fx::Technique technique;
+    bool quarter = false, lit = false;
+};
+
 /// Base fixture for tests that drive the plugin through its public entry point (PluginHostTest.cpp):
 /// SetUp creates `plugin` on `host`; createPlugin... loads the reactions; the end-to-end view
 /// (from (5, 2.2, 7.5) toward the rear wheels) over a ground-only `scene`.
@@ -370,6 +388,8 @@ protected:
     Image render(bool withPlugin = true);
     /// The GL-state tests' setting: the ground, a wall behind the smoke, the view from (4, 2, 7).
     void useWallScene();
+    /// Sets the render options and the scene light of `m`; asserts that the plugin takes them.
+    void setMode(const RenderMode& m);
     /// One frame from `v`; with `dirty` the host state is scrambled before declarePasses and
     /// before every plugin pass, and each state the plugin left changed is appended to *mismatches.
     Image renderChecked(const fx::ViewInfo& v, bool dirty, std::string* mismatches);
@@ -382,6 +402,32 @@ protected:
 
 private:
     int width_, height_;
+};
+
+/// What a LoadedPluginTest's SetUp does after PluginHostTest's: createPlugin(reactions), then
+/// `slippingSteps` steps with the rear wheels fully slipping, then useWallScene() with `wallScene`.
+struct PluginSetUp {
+    const char* reactions;
+    int slippingSteps = 0;
+    bool wallScene = false;
+};
+
+/// The burnout smoke after one second of wheelspin, in front of the wall.
+inline constexpr PluginSetUp kSmokeOnWall{CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml", 60, true};
+
+/// Base fixture for the tests whose plugin is loaded and warmed up the same way before each test.
+class LoadedPluginTest : public PluginHostTest {
+protected:
+    LoadedPluginTest(int width, int height, PluginSetUp setUp) : PluginHostTest(width, height), setUp_(setUp) {}
+    void SetUp() override {
+        PluginHostTest::SetUp();
+        createPlugin(setUp_.reactions);
+        if (setUp_.slippingSteps > 0) simulate(1.0f, setUp_.slippingSteps);
+        if (setUp_.wallScene) useWallScene();
+    }
+
+private:
+    PluginSetUp setUp_;
 };
 
 }  // namespace fxtest

@@ -309,6 +309,30 @@ void applyDefaultHostState() {
 
 // ---- images -----------------------------------------------------------------------------------
 
+HostTarget::HostTarget(int w, int h, uint32_t depthFormat) : width(w), height(h) {
+    glGenTextures(1, &colour);
+    glBindTexture(GL_TEXTURE_2D, colour);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    if (depthFormat) {
+        glGenTextures(1, &depth);
+        glBindTexture(GL_TEXTURE_2D, depth);
+        glTexImage2D(GL_TEXTURE_2D, 0, GLint(depthFormat), w, h, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
+    if (depth) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+HostTarget::~HostTarget() {
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteTextures(1, &colour);
+    if (depth) glDeleteTextures(1, &depth);
+}
+
 Image readFramebuffer(uint32_t framebuffer, int width, int height) {
     Image img;
     img.width = width;

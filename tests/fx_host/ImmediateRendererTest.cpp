@@ -38,14 +38,7 @@ constexpr int kColourBufferTolerance = 1;
 
 using Source = fx::ImmediateView::DepthSource;
 
-struct Mode {
-    const char* name;
-    fx::Technique technique;
-    bool quarterRes = false;
-    bool lit = false;
-};
-
-const Mode kModes[] = {
+const RenderMode kModes[] = {
     {"hard", fx::Technique::Hard},
     {"soft", fx::Technique::Soft},
     {"spherical", fx::Technique::Spherical},
@@ -54,61 +47,17 @@ const Mode kModes[] = {
     {"lit", fx::Technique::Soft, false, true},
 };
 
-// A host framebuffer of its own: RGBA8 colour + a depth texture of `depthFormat` (0 = none).
-struct HostTarget {
-    GLuint colour = 0, depth = 0, fbo = 0;
-    int width = 0, height = 0;
-    HostTarget(int w, int h, GLenum depthFormat) : width(w), height(h) {
-        glGenTextures(1, &colour);
-        glBindTexture(GL_TEXTURE_2D, colour);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-        if (depthFormat) {
-            glGenTextures(1, &depth);
-            glBindTexture(GL_TEXTURE_2D, depth);
-            glTexImage2D(GL_TEXTURE_2D, 0, GLint(depthFormat), w, h, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        }
-        glBindTexture(GL_TEXTURE_2D, 0);
-        glGenFramebuffers(1, &fbo);
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
-        if (depth) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    }
-    ~HostTarget() {
-        glDeleteFramebuffers(1, &fbo);
-        glDeleteTextures(1, &colour);
-        if (depth) glDeleteTextures(1, &depth);
-    }
-};
 
-
-class ImmediateRendererTest : public PluginHostTest {
+class ImmediateRendererTest : public LoadedPluginTest {
 protected:
-    ImmediateRendererTest() : PluginHostTest(kW, kH) {}
+    ImmediateRendererTest() : LoadedPluginTest(kW, kH, kSmokeOnWall) {}
     void SetUp() override {
-        PluginHostTest::SetUp();
-        createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
-        simulate(1.0f, 60);
-        useWallScene();
+        LoadedPluginTest::SetUp();
         immediate = std::make_unique<fx::ImmediateRenderer>(&host, programs);
     }
     void TearDown() override {
         immediate.reset();
         PluginHostTest::TearDown();
-    }
-
-    void setMode(const Mode& m) {
-        fx::RenderOptions o;
-        o.techniqueOverride = m.technique;
-        o.quarterRes = m.quarterRes;
-        o.quarterResAlways = m.quarterRes;
-        ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
-        if (m.lit) {
-            ASSERT_EQ(plugin->setSceneLight(fx::SceneLight{}), fx::ErrorCode::None);
-        } else {
-            plugin->clearSceneLight();
-        }
     }
 
     // The frame graph's linear depth texture (what its prepass wrote last).
@@ -164,8 +113,8 @@ void expectSameImagePerSource(const std::string& label, std::initializer_list<So
 TEST_F(ImmediateRendererTest, SameImageAsTheFrameGraphPerTechniqueAndDepthSource) {
     ASSERT_TRUE(resizeDefaultFramebuffer(kW, kH));
     HostTarget withDepthTexture(kW, kH, GL_DEPTH_COMPONENT24);
-    for (const Mode& m : kModes) {
-        SCOPED_TRACE(m.name);
+    for (const RenderMode& m : kModes) {
+        SCOPED_TRACE(m.label);
         setMode(m);
         const Image reference = render(true);
         ASSERT_GT(plugin->stats().particlesDrawn, 0);
@@ -194,7 +143,7 @@ TEST_F(ImmediateRendererTest, SameImageAsTheFrameGraphPerTechniqueAndDepthSource
         EXPECT_LE(maxAbsDiff(defaultReference, reference), kColourBufferTolerance);
         ASSERT_EQ(drawImmediate(0, immediateView(Source::BoundFramebuffer)), fx::ErrorCode::None);
         const Image fromDefault = readFramebuffer(0, kW, kH);
-        expectSameImagePerSource(m.name, {{"bound FBO", &fromFbo, &reference},
+        expectSameImagePerSource(m.label, {{"bound FBO", &fromFbo, &reference},
                                           {"depth texture", &fromTexture, &reference},
                                           {"default framebuffer", &fromDefault, &defaultReference}});
     }
@@ -217,8 +166,8 @@ TEST_F(ImmediateRendererTest, ReversedZHostSameImagePerDepthSource) {
     fx::ViewInfo rv = view;
     useReversedZ(&rv);
     HostTarget withDepthTexture(kW, kH, GL_DEPTH_COMPONENT32F);
-    for (const Mode& m : {kModes[1], kModes[2], kModes[3], kModes[4]}) {
-        SCOPED_TRACE(m.name);
+    for (const RenderMode& m : {kModes[1], kModes[2], kModes[3], kModes[4]}) {
+        SCOPED_TRACE(m.label);
         setMode(m);
         renderFrame(reversedGraph, scene, rv, [&](fx::FrameBuilder& f) { plugin->declarePasses(rv, f); });
         const Image reference = reversedGraph.readColor();
@@ -246,7 +195,7 @@ TEST_F(ImmediateRendererTest, ReversedZHostSameImagePerDepthSource) {
         const Image defaultReference = readFramebuffer(0, kW, kH);
         ASSERT_EQ(run(0, Source::BoundFramebuffer, 0), fx::ErrorCode::None);
         const Image fromDefault = readFramebuffer(0, kW, kH);
-        expectSameImagePerSource(std::string("reversed ") + m.name,
+        expectSameImagePerSource(std::string("reversed ") + m.label,
                                  {{"bound FBO (32F)", &fromFbo, &reference},
                                   {"depth texture (32F)", &fromTexture, &reference},
                                   {"default framebuffer (24)", &fromDefault, &defaultReference}});
@@ -262,8 +211,8 @@ TEST_F(ImmediateRendererTest, DepthIsMadeOnlyWhereThePassesReadIt) {
     TestFrameGraph bigGraph(W, H);
     HostTarget host24(W, H, GL_DEPTH_COMPONENT24);
     const fx::ViewInfo v = makeView(glm::vec3(-7.0f, 2.5f, 8.0f), glm::vec3(-3.0f, 0.8f, -1.0f), W, H);
-    for (const Mode& m : {kModes[1], kModes[2], kModes[3]}) {
-        SCOPED_TRACE(m.name);
+    for (const RenderMode& m : {kModes[1], kModes[2], kModes[3]}) {
+        SCOPED_TRACE(m.label);
         setMode(m);
         renderFrame(bigGraph, scene, v, [&](fx::FrameBuilder& f) { plugin->declarePasses(v, f); });
         const Image reference = bigGraph.readColor();
@@ -281,7 +230,7 @@ TEST_F(ImmediateRendererTest, DepthIsMadeOnlyWhereThePassesReadIt) {
         const Image image = readFramebuffer(host24.fbo, W, H);
         EXPECT_LE(maxAbsDiff(image, reference), kDepthSourceTolerance);
         EXPECT_GE(psnr(image, reference), kDepthSourceMinPsnr);
-        std::printf("  %-10s region [%d, %d) x [%d, %d) of %dx%d (%.0f %%), max |diff| %d/255\n", m.name, r.x0, r.x1,
+        std::printf("  %-10s region [%d, %d) x [%d, %d) of %dx%d (%.0f %%), max |diff| %d/255\n", m.label, r.x0, r.x1,
                     r.y0, r.y1, W, H, 100.0 * area / (W * H), maxAbsDiff(image, reference));
     }
 }
@@ -305,12 +254,12 @@ TEST_F(ImmediateRendererTest, HostsWithOtherDepthMappingsGetTheSamePicture) {
                           {"[0,1] matrix, ZERO_TO_ONE, not reversed", Matrix::ZeroToOne, true, 0.0f, 1.0f},
                           {"GL matrix, depth range [0.2, 0.9]", Matrix::Gl, false, 0.2f, 0.9f},
                           {"infinite far plane (GL)", Matrix::InfiniteGl, false, 0.0f, 1.0f}};
-    for (const Mode& m : {kModes[0], kModes[1], kModes[2], kModes[3]}) {
+    for (const RenderMode& m : {kModes[0], kModes[1], kModes[2], kModes[3]}) {
         setMode(m);
         const Image reference = render(true);
         ASSERT_GT(plugin->stats().particlesDrawn, 0);
         for (const Case& c : cases) {
-            SCOPED_TRACE(std::string(m.name) + ", " + c.name);
+            SCOPED_TRACE(std::string(m.label) + ", " + c.name);
             fx::ImmediateView iv = immediateView(Source::BoundFramebuffer);
             const float aspect = float(kW) / float(kH), fov = glm::radians(60.0f);
             iv.view.proj = c.matrix == Matrix::ZeroToOne    ? glm::perspectiveRH_ZO(fov, aspect, view.nearPlane, view.farPlane)
@@ -332,7 +281,7 @@ TEST_F(ImmediateRendererTest, HostsWithOtherDepthMappingsGetTheSamePicture) {
             const int diff = maxAbsDiff(image, reference);
             EXPECT_LE(diff, kDepthSourceTolerance);
             EXPECT_GE(psnr(image, reference), kDepthSourceMinPsnr);
-            std::printf("  %-10s %-42s max |diff| %d/255, PSNR %.1f dB\n", m.name, c.name, diff, psnr(image, reference));
+            std::printf("  %-10s %-42s max |diff| %d/255, PSNR %.1f dB\n", m.label, c.name, diff, psnr(image, reference));
         }
     }
 }
@@ -466,8 +415,8 @@ TEST_F(ImmediateRendererTest, FogAndDistanceSlicesReachRenderView) {
         EXPECT_EQ(e, fx::ErrorCode::None);
         return plugin->stats().particlesDrawn;
     };
-    for (const Mode& m : {kModes[0], kModes[1], kModes[2]}) {
-        SCOPED_TRACE(m.name);
+    for (const RenderMode& m : {kModes[0], kModes[1], kModes[2]}) {
+        SCOPED_TRACE(m.label);
         setMode(m);
         const fx::ViewInfo plain = view;
         view = fogged;
@@ -482,7 +431,7 @@ TEST_F(ImmediateRendererTest, FogAndDistanceSlicesReachRenderView) {
         const Image immediateFogged = readFramebuffer(target.fbo, kW, kH);
         EXPECT_LE(maxAbsDiff(immediateFogged, graphFogged), kDepthSourceTolerance);
         std::printf("[ measured ] %s: exp2 fog, renderView vs frame graph max |diff| %d/255 (fog vs none %d/255)\n",
-                    m.name, maxAbsDiff(immediateFogged, graphFogged), maxAbsDiff(graphFogged, graphPlain));
+                    m.label, maxAbsDiff(immediateFogged, graphFogged), maxAbsDiff(graphFogged, graphPlain));
 
         glBindFramebuffer(GL_FRAMEBUFFER, target.fbo);
         scene.drawOpaque(plain);
@@ -497,7 +446,7 @@ TEST_F(ImmediateRendererTest, FogAndDistanceSlicesReachRenderView) {
         const int near = drawn(nearSlice);
         const Image twoCalls = readFramebuffer(target.fbo, kW, kH);
         std::printf("[ measured ] %s: %d particles, %d beyond 7.5 m, %d nearer; two slices vs one call max |diff| %d/255\n",
-                    m.name, all, far, near, maxAbsDiff(twoCalls, oneCall));
+                    m.label, all, far, near, maxAbsDiff(twoCalls, oneCall));
         EXPECT_GT(far, 0);
         EXPECT_GT(near, 0);
         EXPECT_EQ(far + near, all);

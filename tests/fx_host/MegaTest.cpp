@@ -249,16 +249,10 @@ TEST_F(MegaTest, TheHalfTowardTheSunIsBrighter) {
 
 // ---- the whole plugin ----------------------------------------------------------------------
 
-class MegaPluginTest : public PluginHostTest {
+class MegaPluginTest : public LoadedPluginTest {
 protected:
     static constexpr int kW = 320, kH = 240;
-    MegaPluginTest() : PluginHostTest(kW, kH) {}
-    void SetUp() override {
-        PluginHostTest::SetUp();
-        createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
-        simulate(1.0f, 60);
-        useWallScene();
-    }
+    MegaPluginTest() : LoadedPluginTest(kW, kH, kSmokeOnWall) {}
     void frame(const fx::ViewInfo& v, bool dirty, std::string* mismatches) { renderChecked(v, dirty, mismatches); }
 };
 
