@@ -16,48 +16,17 @@
 #include <string>
 
 #include "FxTestHost.h"
+#include "PoisonedHostGl.h"
 #include "../../fx_plugin/render/MegaRenderer.h"
 
 namespace fxtest {
 namespace fog {  // named: the fx_host tests build as unity batches
 
 constexpr int kW = 96, kH = 96;
-// Compatibility-profile enums and entry points (the tests' glad is 3.3 core).
+// Compatibility-profile enums (the tests' glad is 3.3 core; the entry points: PoisonedHostGl.h).
 constexpr GLenum kFog = 0x0B60, kFogDensity = 0x0B62, kFogStart = 0x0B63, kFogEnd = 0x0B64,
                  kFogMode = 0x0B65, kFogColor = 0x0B66, kExp = 0x0800, kExp2 = 0x0801, kLinear = 0x2601,
                  kProjection = 0x1701, kModelView = 0x1700, kQuads = 0x0007;
-
-struct FixedFunction {
-    void (*fogi)(GLenum, GLint) = nullptr;
-    void (*fogf)(GLenum, GLfloat) = nullptr;
-    void (*fogfv)(GLenum, const GLfloat*) = nullptr;
-    void (*matrixMode)(GLenum) = nullptr;
-    void (*loadMatrixf)(const GLfloat*) = nullptr;
-    void (*begin)(GLenum) = nullptr;
-    void (*end)() = nullptr;
-    void (*vertex3f)(GLfloat, GLfloat, GLfloat) = nullptr;
-    void (*color4f)(GLfloat, GLfloat, GLfloat, GLfloat) = nullptr;
-    template <typename F>
-    static void load(F* fn, const char* name) {
-        *fn = reinterpret_cast<F>(osMesaProcAddress()(name));
-    }
-    static const FixedFunction& get() {
-        static const FixedFunction f = [] {
-            FixedFunction k;
-            load(&k.fogi, "glFogi");
-            load(&k.fogf, "glFogf");
-            load(&k.fogfv, "glFogfv");
-            load(&k.matrixMode, "glMatrixMode");
-            load(&k.loadMatrixf, "glLoadMatrixf");
-            load(&k.begin, "glBegin");
-            load(&k.end, "glEnd");
-            load(&k.vertex3f, "glVertex3f");
-            load(&k.color4f, "glColor4f");
-            return k;
-        }();
-        return f;
-    }
-};
 
 // GL's fog, written out from the specification (not the plugin's shader): c = |z_eye|.
 const char* kQuadVs = R"(#version 330 core
@@ -132,7 +101,7 @@ protected:
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDisable(GL_DEPTH_TEST);
         if (fixedFunction) {
-            const FixedFunction& ff = FixedFunction::get();
+            const poisoned_host_gl::Compat& ff = poisoned_host_gl::compat();
             glUseProgram(0);
             ff.matrixMode(kProjection);
             ff.loadMatrixf(&v.proj[0][0]);

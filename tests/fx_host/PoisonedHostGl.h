@@ -1,6 +1,6 @@
 #pragma once
-// Shared by PoisonedHostState.cpp and HostStateReadback.cpp: the tests' glad is 3.3 core, so the
-// compatibility-profile enums are defined and its entry points fetched here by hand.
+// Shared by PoisonedHostState.cpp, HostStateReadback.cpp and FogTest.cpp: the tests' glad is 3.3
+// core, so the compatibility-profile enums are defined and its entry points fetched here by hand.
 #include <glad/gl.h>
 
 namespace fxtest {
@@ -25,6 +25,16 @@ struct Compat {
     void (*clipPlane)(GLenum, const GLdouble*) = nullptr;
     void (*polygonStipple)(const GLubyte*) = nullptr;
     void (*clipControl)(GLenum, GLenum) = nullptr;
+    // The fixed-function fog and immediate-mode drawing of FogTest.cpp.
+    void (*fogi)(GLenum, GLint) = nullptr;
+    void (*fogf)(GLenum, GLfloat) = nullptr;
+    void (*fogfv)(GLenum, const GLfloat*) = nullptr;
+    void (*matrixMode)(GLenum) = nullptr;
+    void (*loadMatrixf)(const GLfloat*) = nullptr;
+    void (*begin)(GLenum) = nullptr;
+    void (*end)() = nullptr;
+    void (*vertex3f)(GLfloat, GLfloat, GLfloat) = nullptr;
+    void (*color4f)(GLfloat, GLfloat, GLfloat, GLfloat) = nullptr;
 };
 
 template <typename F>
@@ -42,6 +52,15 @@ inline const Compat& compat() {
         load(&k.clipPlane, "glClipPlane");
         load(&k.polygonStipple, "glPolygonStipple");
         load(&k.clipControl, "glClipControl");
+        load(&k.fogi, "glFogi");
+        load(&k.fogf, "glFogf");
+        load(&k.fogfv, "glFogfv");
+        load(&k.matrixMode, "glMatrixMode");
+        load(&k.loadMatrixf, "glLoadMatrixf");
+        load(&k.begin, "glBegin");
+        load(&k.end, "glEnd");
+        load(&k.vertex3f, "glVertex3f");
+        load(&k.color4f, "glColor4f");
         return k;
     }();
     return c;
