@@ -3,6 +3,8 @@
 // core, so the compatibility-profile enums are defined and its entry points fetched here by hand.
 #include <glad/gl.h>
 
+#include <utility>
+
 namespace fxtest {
 namespace poisoned_host_gl {
 
@@ -16,6 +18,17 @@ constexpr GLenum kDepthScale = 0x0D1E, kDepthBias = 0x0D1F;
 constexpr GLenum kTextureFilterControl = 0x8500, kTextureLodBias = 0x8501;
 constexpr GLenum kPrimitiveRestartFixedIndex = 0x8D69;
 constexpr int kUnits = 6;  // GlStateGuard::kTextureUnits
+
+// The pixel-store parameters, by the names the poisons and the readback give them.
+inline const std::pair<const char*, GLenum> kPixelStores[] = {
+    {"unpack swap bytes", GL_UNPACK_SWAP_BYTES}, {"unpack lsb first", GL_UNPACK_LSB_FIRST},
+    {"unpack alignment", GL_UNPACK_ALIGNMENT},   {"unpack row length", GL_UNPACK_ROW_LENGTH},
+    {"unpack skip rows", GL_UNPACK_SKIP_ROWS},   {"unpack skip pixels", GL_UNPACK_SKIP_PIXELS},
+    {"unpack image height", GL_UNPACK_IMAGE_HEIGHT}, {"unpack skip images", GL_UNPACK_SKIP_IMAGES},
+    {"pack swap bytes", GL_PACK_SWAP_BYTES},     {"pack lsb first", GL_PACK_LSB_FIRST},
+    {"pack alignment", GL_PACK_ALIGNMENT},       {"pack row length", GL_PACK_ROW_LENGTH},
+    {"pack skip rows", GL_PACK_SKIP_ROWS},       {"pack skip pixels", GL_PACK_SKIP_PIXELS},
+    {"pack image height", GL_PACK_IMAGE_HEIGHT}, {"pack skip images", GL_PACK_SKIP_IMAGES}};
 
 struct Compat {
     void (*alphaFunc)(GLenum, GLfloat) = nullptr;
