@@ -302,6 +302,24 @@ void renderFrame(TestFrameGraph& graph, TestScene& scene, const fx::ViewInfo& vi
 /// A writable directory under /tmp for this test run (created on first use).
 std::string scratchDir();
 
+/// One way of drawing that a test goes through in turn: a technique, quarter res (always) or full,
+/// lit by the default scene light or unlit.
+struct RenderMode {
+    const char* label;
+    fx::Technique technique;
+    bool quarter = false, lit = false;
+};
+/// The modes that more than one test file goes through.
+namespace modes {
+inline constexpr RenderMode kHard{"hard", fx::Technique::Hard};
+inline constexpr RenderMode kSoft{"soft", fx::Technique::Soft};
+inline constexpr RenderMode kSpherical{"spherical", fx::Technique::Spherical};
+inline constexpr RenderMode kSoftQuarter{"soft quarter", fx::Technique::Soft, true};
+inline constexpr RenderMode kSphericalQuarter{"spherical quarter", fx::Technique::Spherical, true};
+inline constexpr RenderMode kMega{"mega", fx::Technique::Mega};
+inline constexpr RenderMode kSoftLit{"soft lit", fx::Technique::Soft, false, true};
+}  // namespace modes
+
 // ---- hand-placed particles (TestParticles.cpp) ------------------------------------------------
 
 /// One particle put straight into a pool (no simulation).
@@ -323,6 +341,8 @@ public:
     void set(const std::vector<HandParticle>& particles);
     /// The plugin's hook body for one view: declares the renderer's passes into `frame`.
     int declare(const fx::ViewInfo& view, fx::FrameBuilder& frame);
+    /// The technique of `m` and its quarter res (always, when on) in `settings`; the light stays.
+    void setMode(const RenderMode& m);
 
     fx::ReactionDesc desc;
     fx::FrameSettings settings;  ///< what the plugin's hook reads from its switches once a frame
@@ -365,13 +385,6 @@ private:
     std::string glError_;
 };
 
-/// One way of drawing that a test goes through in turn: a technique, quarter res (always) or full,
-/// lit by the default scene light or unlit.
-struct RenderMode {
-    const char* label;
-    fx::Technique technique;
-    bool quarter = false, lit = false;
-};
 
 /// Base fixture for tests that drive the plugin through its public entry point (PluginHostTest.cpp):
 /// SetUp creates `plugin` on `host`; createPlugin... loads the reactions; the end-to-end view

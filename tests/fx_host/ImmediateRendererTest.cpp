@@ -38,14 +38,8 @@ constexpr int kColourBufferTolerance = 1;
 
 using Source = fx::ImmediateView::DepthSource;
 
-const RenderMode kModes[] = {
-    {"hard", fx::Technique::Hard},
-    {"soft", fx::Technique::Soft},
-    {"spherical", fx::Technique::Spherical},
-    {"quarter", fx::Technique::Soft, true},
-    {"mega", fx::Technique::Mega},
-    {"lit", fx::Technique::Soft, false, true},
-};
+const RenderMode kModes[] = {modes::kHard,        modes::kSoft, modes::kSpherical,
+                             modes::kSoftQuarter, modes::kMega, modes::kSoftLit};
 
 
 class ImmediateRendererTest : public LoadedPluginTest {

@@ -21,14 +21,14 @@ namespace poisoned_host_test {
 constexpr int kW = 160, kH = 120;
 
 const RenderMode kModes[] = {
-    {"hard", fx::Technique::Hard},
-    {"soft", fx::Technique::Soft},
-    {"spherical", fx::Technique::Spherical},
+    modes::kHard,
+    modes::kSoft,
+    modes::kSpherical,
     {"hard quarter", fx::Technique::Hard, true},
-    {"soft quarter", fx::Technique::Soft, true},
-    {"spherical quarter", fx::Technique::Spherical, true},
-    {"mega", fx::Technique::Mega},
-    {"soft lit", fx::Technique::Soft, false, true},
+    modes::kSoftQuarter,
+    modes::kSphericalQuarter,
+    modes::kMega,
+    modes::kSoftLit,
     {"spherical quarter lit", fx::Technique::Spherical, true, true},
     {"from reactions (stateless sparks too)", fx::Technique::FromReaction},
 };

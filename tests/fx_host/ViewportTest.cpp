@@ -30,14 +30,8 @@ constexpr int kSplitW = kBx + kW + 5, kSplitH = kBy + kH + 3;
 constexpr int kTolerance = 1;
 constexpr int kSphericalTolerance = 2;
 
-const RenderMode kModes[] = {
-    {"hard", fx::Technique::Hard},
-    {"soft", fx::Technique::Soft},
-    {"spherical", fx::Technique::Spherical},
-    {"soft quarter", fx::Technique::Soft, true},
-    {"spherical quarter", fx::Technique::Spherical, true},
-    {"mega", fx::Technique::Mega},
-};
+const RenderMode kModes[] = {modes::kHard,        modes::kSoft,             modes::kSpherical,
+                             modes::kSoftQuarter, modes::kSphericalQuarter, modes::kMega};
 
 // An RGBA8 colour texture + a GL_DEPTH_COMPONENT24 depth texture in one framebuffer.
 struct Framebuffer : HostTarget {
