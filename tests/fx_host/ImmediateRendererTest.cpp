@@ -51,7 +51,7 @@ protected:
     }
     void TearDown() override {
         immediate.reset();
-        PluginHostTest::TearDown();
+        LoadedPluginTest::TearDown();
     }
 
     // The frame graph's linear depth texture (what its prepass wrote last).
