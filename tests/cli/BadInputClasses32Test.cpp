@@ -182,10 +182,7 @@ TEST(BadInputClasses32, ExplodeAtThatCanNeverActIsRefused) {
     const std::string calm = s.write("calm_recipe.yaml",
                                      "reactions:\n  - name: explosion\n    layers:\n"
                                      "      - {name: smoke, type: wheel_smoke}\n");
-    const struct {
-        std::string args;
-        std::string mention;
-    } cases[] = {
+    const clitest::RefusedArgs cases[] = {
         {"--start 1 --explode-at 0.5", "--start 1"},
         {"--explode-at 100", "the run ends at drive time 0.032"},
         {"--fx legacy --explode-at 0.02", "--fx legacy"},

@@ -226,10 +226,7 @@ TEST(BadInputClasses, EngineShaders) {
 // Class 5: every CLI value is checked before the run; signals end it with its results.
 TEST(BadInputClasses, CommandLine) {
     Scratch s;
-    const struct {
-        std::string args;
-        std::string mention;
-    } cases[] = {
+    const clitest::RefusedArgs cases[] = {
         {"--frames 0", "--window"},
         {"--scene ''", "--scene: expected a path"},
         {"--reactions ''", "--reactions: expected a path"},

@@ -26,6 +26,12 @@ inline Outcome runCubeGame(const std::string& args, const std::string& env, int 
                                 200);
 }
 
+/// A command line that must be refused, and what the refusal must mention.
+struct RefusedArgs {
+    std::string args;
+    std::string mention;
+};
+
 /// A folder under the temp directory named after the running test (and `prefix`), empty at the
 /// start, removed at the end.
 class ScratchDir {

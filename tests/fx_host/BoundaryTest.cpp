@@ -13,6 +13,19 @@ namespace {
 class BoundaryTest : public PluginHostTest {
 protected:
     BoundaryTest() : PluginHostTest(160, 120) {}
+
+    // The burnout smoke after one second of wheelspin, reached through the C table (`api` on
+    // `bridge`'s handle) as a C host reaches it.
+    void createBehindTheCTable() {
+        createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
+        simulate(1.0f, 60);
+        bridge = dynamic_cast<fx::detail::CApiPlugin*>(plugin.get());
+        ASSERT_NE(bridge, nullptr);
+        api = bridge->api();
+    }
+
+    fx::detail::CApiPlugin* bridge = nullptr;
+    const fxApi* api = nullptr;
 };
 
 // The left-handed pair that draws the same clip coordinates: view_lh = F view, proj_lh = proj F.
@@ -77,11 +90,7 @@ struct RecordingFrame {
 };
 
 TEST_F(BoundaryTest, BadFrameBuildersAndViewsAreRefusedBeforeAnythingIsDeclared) {
-    createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
-    simulate(1.0f, 60);
-    auto* bridge = dynamic_cast<fx::detail::CApiPlugin*>(plugin.get());
-    ASSERT_NE(bridge, nullptr);
-    const fxApi* api = bridge->api();
+    ASSERT_NO_FATAL_FAILURE(createBehindTheCTable());
     fxViewDesc v = fx::detail::viewToC(view);
     RecordingFrame rec;
     fxFrameBuilder f = rec.c();
@@ -122,11 +131,7 @@ TEST_F(BoundaryTest, BadFrameBuildersAndViewsAreRefusedBeforeAnythingIsDeclared)
 // still served (as no fog and every particle, whatever lies past its end), and bad fog or slice
 // values are refused as InvalidView.
 TEST_F(BoundaryTest, AnApi20ViewDescriptorIsServedAndBadFogOrSlicesAreRefused) {
-    createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
-    simulate(1.0f, 60);
-    auto* bridge = dynamic_cast<fx::detail::CApiPlugin*>(plugin.get());
-    ASSERT_NE(bridge, nullptr);
-    const fxApi* api = bridge->api();
+    ASSERT_NO_FATAL_FAILURE(createBehindTheCTable());
     RecordingFrame rec;
     fxFrameBuilder f = rec.c();
     fxViewDesc v = fx::detail::viewToC(view);

@@ -11,15 +11,10 @@ namespace deprecated_switches_test {  // named: the fx_host tests build as unity
 
 constexpr int kW = 160, kH = 120;
 
-class DeprecatedSwitchesTest : public PluginHostTest {
+// The smoke across the wall's top edge: depth edges in the quarter-res footprints.
+class DeprecatedSwitchesTest : public LoadedPluginTest {
 protected:
-    DeprecatedSwitchesTest() : PluginHostTest(kW, kH) {}
-    void SetUp() override {
-        PluginHostTest::SetUp();
-        createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
-        simulate(1.0f, 60);
-        useWallScene();  // smoke across the wall's top edge: depth edges in the quarter-res footprints
-    }
+    DeprecatedSwitchesTest() : LoadedPluginTest(kW, kH, kSmokeOnWall) {}
 
     // All three switches on (`on`) or at their defaults.
     void setDeprecated(bool on) {
@@ -31,25 +26,32 @@ protected:
         ASSERT_EQ(plugin->setFadeClassCounting(on), fx::ErrorCode::None);
         ASSERT_TRUE(plugin->prepareGl(nullptr));  // as a 2.0 host does after switching
     }
+
+    // `set` takes `on` (`get` reads it back), refuses `invalid` as InvalidValue and keeps `on`,
+    // then takes `off`.
+    template <typename T>
+    void expectSetterValidates(fx::ErrorCode (fx::Plugin::*set)(T), T (fx::Plugin::*get)() const, T on, T invalid,
+                               T off) {
+        fx::Plugin& p = *plugin;
+        EXPECT_EQ((p.*set)(on), fx::ErrorCode::None);
+        EXPECT_EQ((p.*get)(), on);
+        EXPECT_EQ((p.*set)(invalid), fx::ErrorCode::InvalidValue);
+        EXPECT_EQ((p.*get)(), on) << "a refused value changes nothing";
+        EXPECT_EQ((p.*set)(off), fx::ErrorCode::None);
+        EXPECT_EQ((p.*get)(), off);
+    }
 };
 
 TEST_F(DeprecatedSwitchesTest, SettersValidateAndKeepTheirValue) {
     EXPECT_EQ(plugin->quarterResEdges(), fx::QuarterResEdges::DepthAware);
     EXPECT_EQ(plugin->fadeClassification(), fx::FadeClassification::Off);
 
-    EXPECT_EQ(plugin->setQuarterResEdges(fx::QuarterResEdges::MixedResolution), fx::ErrorCode::None);
-    EXPECT_EQ(plugin->quarterResEdges(), fx::QuarterResEdges::MixedResolution);
-    EXPECT_EQ(plugin->setQuarterResEdges(static_cast<fx::QuarterResEdges>(2)), fx::ErrorCode::InvalidValue);
-    EXPECT_EQ(plugin->quarterResEdges(), fx::QuarterResEdges::MixedResolution) << "a refused value changes nothing";
-    EXPECT_EQ(plugin->setQuarterResEdges(fx::QuarterResEdges::DepthAware), fx::ErrorCode::None);
-    EXPECT_EQ(plugin->quarterResEdges(), fx::QuarterResEdges::DepthAware);
-
-    EXPECT_EQ(plugin->setFadeClassification(fx::FadeClassification::On), fx::ErrorCode::None);
-    EXPECT_EQ(plugin->fadeClassification(), fx::FadeClassification::On);
-    EXPECT_EQ(plugin->setFadeClassification(static_cast<fx::FadeClassification>(255)), fx::ErrorCode::InvalidValue);
-    EXPECT_EQ(plugin->fadeClassification(), fx::FadeClassification::On) << "a refused value changes nothing";
-    EXPECT_EQ(plugin->setFadeClassification(fx::FadeClassification::Off), fx::ErrorCode::None);
-    EXPECT_EQ(plugin->fadeClassification(), fx::FadeClassification::Off);
+    expectSetterValidates(&fx::Plugin::setQuarterResEdges, &fx::Plugin::quarterResEdges,
+                          fx::QuarterResEdges::MixedResolution, static_cast<fx::QuarterResEdges>(2),
+                          fx::QuarterResEdges::DepthAware);
+    expectSetterValidates(&fx::Plugin::setFadeClassification, &fx::Plugin::fadeClassification,
+                          fx::FadeClassification::On, static_cast<fx::FadeClassification>(255),
+                          fx::FadeClassification::Off);
 
     EXPECT_EQ(plugin->setFadeClassCounting(true), fx::ErrorCode::None);
     EXPECT_EQ(plugin->setFadeClassCounting(false), fx::ErrorCode::None);

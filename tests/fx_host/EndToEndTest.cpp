@@ -9,12 +9,11 @@ namespace fxtest {
 namespace {
 
 constexpr int kWidth = 256, kHeight = 192;
-class EndToEndTest : public PluginHostTest {
+class EndToEndTest : public LoadedPluginTest {
 protected:
-    EndToEndTest() : PluginHostTest(kWidth, kHeight) {}
+    EndToEndTest() : LoadedPluginTest(kWidth, kHeight, {CUBE_SOURCE_DIR "/reactions"}) {}
     void SetUp() override {
-        PluginHostTest::SetUp();
-        createPlugin(CUBE_SOURCE_DIR "/reactions");
+        LoadedPluginTest::SetUp();
         scene.quads.push_back(
             TestScene::wallZ(-8.0f, -30.0f, 30.0f, 0.0f, 4.0f, glm::vec3(0.45f, 0.3f, 0.25f)));
     }

@@ -16,48 +16,17 @@
 #include <string>
 
 #include "FxTestHost.h"
+#include "PoisonedHostGl.h"
 #include "../../fx_plugin/render/MegaRenderer.h"
 
 namespace fxtest {
 namespace fog {  // named: the fx_host tests build as unity batches
 
 constexpr int kW = 96, kH = 96;
-// Compatibility-profile enums and entry points (the tests' glad is 3.3 core).
+// Compatibility-profile enums (the tests' glad is 3.3 core; the entry points: PoisonedHostGl.h).
 constexpr GLenum kFog = 0x0B60, kFogDensity = 0x0B62, kFogStart = 0x0B63, kFogEnd = 0x0B64,
                  kFogMode = 0x0B65, kFogColor = 0x0B66, kExp = 0x0800, kExp2 = 0x0801, kLinear = 0x2601,
                  kProjection = 0x1701, kModelView = 0x1700, kQuads = 0x0007;
-
-struct FixedFunction {
-    void (*fogi)(GLenum, GLint) = nullptr;
-    void (*fogf)(GLenum, GLfloat) = nullptr;
-    void (*fogfv)(GLenum, const GLfloat*) = nullptr;
-    void (*matrixMode)(GLenum) = nullptr;
-    void (*loadMatrixf)(const GLfloat*) = nullptr;
-    void (*begin)(GLenum) = nullptr;
-    void (*end)() = nullptr;
-    void (*vertex3f)(GLfloat, GLfloat, GLfloat) = nullptr;
-    void (*color4f)(GLfloat, GLfloat, GLfloat, GLfloat) = nullptr;
-    template <typename F>
-    static void load(F* fn, const char* name) {
-        *fn = reinterpret_cast<F>(osMesaProcAddress()(name));
-    }
-    static const FixedFunction& get() {
-        static const FixedFunction f = [] {
-            FixedFunction k;
-            load(&k.fogi, "glFogi");
-            load(&k.fogf, "glFogf");
-            load(&k.fogfv, "glFogfv");
-            load(&k.matrixMode, "glMatrixMode");
-            load(&k.loadMatrixf, "glLoadMatrixf");
-            load(&k.begin, "glBegin");
-            load(&k.end, "glEnd");
-            load(&k.vertex3f, "glVertex3f");
-            load(&k.color4f, "glColor4f");
-            return k;
-        }();
-        return f;
-    }
-};
 
 // GL's fog, written out from the specification (not the plugin's shader): c = |z_eye|.
 const char* kQuadVs = R"(#version 330 core
@@ -132,7 +101,7 @@ protected:
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDisable(GL_DEPTH_TEST);
         if (fixedFunction) {
-            const FixedFunction& ff = FixedFunction::get();
+            const poisoned_host_gl::Compat& ff = poisoned_host_gl::compat();
             glUseProgram(0);
             ff.matrixMode(kProjection);
             ff.loadMatrixf(&v.proj[0][0]);
@@ -217,15 +186,7 @@ private:
     GLuint quadProgram_ = 0, vao_ = 0, vbo_ = 0;
 };
 
-struct Way {
-    const char* name;
-    fx::Technique technique;
-    bool quarterRes;
-};
-const Way kWays[] = {{"hard", fx::Technique::Hard, false},
-                     {"soft", fx::Technique::Soft, false},
-                     {"spherical", fx::Technique::Spherical, false},
-                     {"quarter", fx::Technique::Soft, true}};
+const RenderMode kWays[] = {modes::kHard, modes::kSoft, modes::kSpherical, modes::kSoftQuarter};
 
 int centreDiff(const Image& a, const Image& b) {
     int worst = 0;
@@ -245,20 +206,18 @@ TEST_F(FogTest, AFoggedParticleGetsTheFogFactorOfAFoggedQuadAtItsDepth) {
             p.position = glm::vec3(0.0f, 0.0f, -d);
             p.size = 2.0f;
             direct.set({p});
-            for (const Way& way : kWays) {
-                direct.settings.options.techniqueOverride = way.technique;
-                direct.settings.options.quarterRes = way.quarterRes;
-                direct.settings.options.quarterResAlways = way.quarterRes;
+            for (const RenderMode& way : kWays) {
+                direct.setMode(way);
                 const Image clear = drawParticles(view);
                 const Image fogged = drawParticles(v);
                 ASSERT_EQ(drawn, 1);
                 const uint8_t* q = quad.at(kW / 2, kH / 2);
                 const uint8_t* s = fogged.at(kW / 2, kH / 2);
                 // Without fog the particle is white: the comparison is about the fog alone.
-                EXPECT_EQ(clear.at(kW / 2, kH / 2)[0], 255) << way.name;
+                EXPECT_EQ(clear.at(kW / 2, kH / 2)[0], 255) << way.label;
                 std::printf("[ measured ] fog %d at %4.1f m, %-9s quad (%3d %3d %3d) particle (%3d %3d %3d)\n",
-                            int(mode), double(d), way.name, q[0], q[1], q[2], s[0], s[1], s[2]);
-                EXPECT_LE(centreDiff(fogged, quad), 1) << "fog " << int(mode) << " at " << d << " m, " << way.name;
+                            int(mode), double(d), way.label, q[0], q[1], q[2], s[0], s[1], s[2]);
+                EXPECT_LE(centreDiff(fogged, quad), 1) << "fog " << int(mode) << " at " << d << " m, " << way.label;
             }
         }
     }
@@ -271,18 +230,16 @@ TEST_F(FogTest, FogOffIsThePictureWithoutFogBitForBit) {
     p.size = 3.0f;
     direct.set({p});
     direct.desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(0.7f, 0.6f, 0.5f, 0.6f)}};
-    for (const Way& way : kWays) {
-        direct.settings.options.techniqueOverride = way.technique;
-        direct.settings.options.quarterRes = way.quarterRes;
-        direct.settings.options.quarterResAlways = way.quarterRes;
+    for (const RenderMode& way : kWays) {
+        direct.setMode(way);
         const Image plain = drawParticles(view);
         fx::ViewInfo off = view;
         off.fog = fogOf(fx::Fog::Mode::Exp2);
         off.fog.mode = fx::Fog::Mode::Off;  // every other field set: the mode alone decides
-        EXPECT_EQ(maxAbsDiff(drawParticles(off), plain), 0) << way.name;
+        EXPECT_EQ(maxAbsDiff(drawParticles(off), plain), 0) << way.label;
         fx::ViewInfo on = view;
         on.fog = fogOf(fx::Fog::Mode::Exp2);
-        EXPECT_GT(maxAbsDiff(drawParticles(on), plain), 20) << way.name << ": fog changed nothing";
+        EXPECT_GT(maxAbsDiff(drawParticles(on), plain), 20) << way.label << ": fog changed nothing";
     }
 }
 
@@ -386,10 +343,8 @@ TEST_F(FogTest, SlicesOrderTheSmokeWithTheHostsBlendedPane) {
         return ::testing::AssertionResult(worst <= 2) << way << ": " << what << " off by " << worst << "/255 (" << int(img.at(x, y)[0])
                                                       << " " << int(img.at(x, y)[1]) << " " << int(img.at(x, y)[2]) << ")";
     };
-    for (const Way& way : kWays) {
-        direct.settings.options.techniqueOverride = way.technique;
-        direct.settings.options.quarterRes = way.quarterRes;
-        direct.settings.options.quarterResAlways = way.quarterRes;
+    for (const RenderMode& way : kWays) {
+        direct.setMode(way);
         fx::ViewInfo farSlice = view, nearSlice = view;
         farSlice.slice = fx::DistanceSlice{10.0f, 0.0f};
         nearSlice.slice = fx::DistanceSlice{0.0f, 10.0f};
@@ -400,11 +355,11 @@ TEST_F(FogTest, SlicesOrderTheSmokeWithTheHostsBlendedPane) {
             drawnNear = direct.declare(nearSlice, f);
         });
         const Image sliced = graph.readColor();
-        writePng("/tmp/fx_host_slices_" + std::string(way.name) + ".png", sliced);
-        EXPECT_EQ(drawnFar, 1) << way.name;
-        EXPECT_EQ(drawnNear, 1) << way.name;
-        EXPECT_TRUE(check(sliced, nearX, nearExpected, "near smoke over the pane", way.name));
-        EXPECT_TRUE(check(sliced, farX, farExpected, "far smoke under the pane", way.name));
+        writePng("/tmp/fx_host_slices_" + std::string(way.label) + ".png", sliced);
+        EXPECT_EQ(drawnFar, 1) << way.label;
+        EXPECT_EQ(drawnNear, 1) << way.label;
+        EXPECT_TRUE(check(sliced, nearX, nearExpected, "near smoke over the pane", way.label));
+        EXPECT_TRUE(check(sliced, farX, farExpected, "far smoke under the pane", way.label));
 
         // One call for all the smoke, then the pane: the near smoke ends up under it.
         renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) {
@@ -412,12 +367,12 @@ TEST_F(FogTest, SlicesOrderTheSmokeWithTheHostsBlendedPane) {
             paneStep(f);
         });
         const Image oneCall = graph.readColor();
-        writePng("/tmp/fx_host_slices_one_call_" + std::string(way.name) + ".png", oneCall);
+        writePng("/tmp/fx_host_slices_one_call_" + std::string(way.label) + ".png", oneCall);
         std::printf("[ measured ] %-9s slices: near smoke off by %d/255, far by %d/255; one call: near off by %d/255\n",
-                    way.name, worstAt(sliced, nearX, nearExpected), worstAt(sliced, farX, farExpected),
+                    way.label, worstAt(sliced, nearX, nearExpected), worstAt(sliced, farX, farExpected),
                     worstAt(oneCall, nearX, nearExpected));
-        EXPECT_FALSE(check(oneCall, nearX, nearExpected, "one call", way.name)) << way.name << ": the test cannot tell";
-        EXPECT_TRUE(check(oneCall, farX, farExpected, "one call, far smoke", way.name));
+        EXPECT_FALSE(check(oneCall, nearX, nearExpected, "one call", way.label)) << way.label << ": the test cannot tell";
+        EXPECT_TRUE(check(oneCall, farX, farExpected, "one call, far smoke", way.label));
     }
     direct.settings.options = fx::RenderOptions{};
 }

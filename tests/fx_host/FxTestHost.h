@@ -101,6 +101,16 @@ struct Image {
 /// The RGBA8 pixels of `framebuffer`'s colour attachment 0 (0 = the default one), width x height
 /// from the origin; leaves the read framebuffer at 0.
 Image readFramebuffer(uint32_t framebuffer, int width, int height);
+/// A host framebuffer of its own (GlTestSupport.cpp): an RGBA8 colour texture + a depth texture of
+/// `depthFormat` (0 = none), deleted with it.
+struct HostTarget {
+    uint32_t colour = 0, depth = 0, fbo = 0;
+    int width = 0, height = 0;
+    HostTarget(int w, int h, uint32_t depthFormat);
+    ~HostTarget();
+    HostTarget(const HostTarget&) = delete;
+    HostTarget& operator=(const HostTarget&) = delete;
+};
 /// Writes a PNG (top row first) for looking at; returns false when it cannot.
 bool writePng(const std::string& path, const Image& image);
 /// PSNR over RGB, in dB (infinity when equal); `mask` (optional, width*height) selects pixels.
@@ -292,6 +302,24 @@ void renderFrame(TestFrameGraph& graph, TestScene& scene, const fx::ViewInfo& vi
 /// A writable directory under /tmp for this test run (created on first use).
 std::string scratchDir();
 
+/// One way of drawing that a test goes through in turn: a technique, quarter res (always) or full,
+/// lit by the default scene light or unlit.
+struct RenderMode {
+    const char* label;
+    fx::Technique technique;
+    bool quarter = false, lit = false;
+};
+/// The modes that more than one test file goes through.
+namespace modes {
+inline constexpr RenderMode kHard{"hard", fx::Technique::Hard};
+inline constexpr RenderMode kSoft{"soft", fx::Technique::Soft};
+inline constexpr RenderMode kSpherical{"spherical", fx::Technique::Spherical};
+inline constexpr RenderMode kSoftQuarter{"soft quarter", fx::Technique::Soft, true};
+inline constexpr RenderMode kSphericalQuarter{"spherical quarter", fx::Technique::Spherical, true};
+inline constexpr RenderMode kMega{"mega", fx::Technique::Mega};
+inline constexpr RenderMode kSoftLit{"soft lit", fx::Technique::Soft, false, true};
+}  // namespace modes
+
 // ---- hand-placed particles (TestParticles.cpp) ------------------------------------------------
 
 /// One particle put straight into a pool (no simulation).
@@ -313,6 +341,8 @@ public:
     void set(const std::vector<HandParticle>& particles);
     /// The plugin's hook body for one view: declares the renderer's passes into `frame`.
     int declare(const fx::ViewInfo& view, fx::FrameBuilder& frame);
+    /// The technique of `m` and its quarter res (always, when on) in `settings`; the light stays.
+    void setMode(const RenderMode& m);
 
     fx::ReactionDesc desc;
     fx::FrameSettings settings;  ///< what the plugin's hook reads from its switches once a frame
@@ -355,6 +385,7 @@ private:
     std::string glError_;
 };
 
+
 /// Base fixture for tests that drive the plugin through its public entry point (PluginHostTest.cpp):
 /// SetUp creates `plugin` on `host`; createPlugin... loads the reactions; the end-to-end view
 /// (from (5, 2.2, 7.5) toward the rear wheels) over a ground-only `scene`.
@@ -370,6 +401,8 @@ protected:
     Image render(bool withPlugin = true);
     /// The GL-state tests' setting: the ground, a wall behind the smoke, the view from (4, 2, 7).
     void useWallScene();
+    /// Sets the render options and the scene light of `m`; asserts that the plugin takes them.
+    void setMode(const RenderMode& m);
     /// One frame from `v`; with `dirty` the host state is scrambled before declarePasses and
     /// before every plugin pass, and each state the plugin left changed is appended to *mismatches.
     Image renderChecked(const fx::ViewInfo& v, bool dirty, std::string* mismatches);
@@ -382,6 +415,32 @@ protected:
 
 private:
     int width_, height_;
+};
+
+/// What a LoadedPluginTest's SetUp does after PluginHostTest's: createPlugin(reactions), then
+/// `slippingSteps` steps with the rear wheels fully slipping, then useWallScene() with `wallScene`.
+struct PluginSetUp {
+    const char* reactions;
+    int slippingSteps = 0;
+    bool wallScene = false;
+};
+
+/// The burnout smoke after one second of wheelspin, in front of the wall.
+inline constexpr PluginSetUp kSmokeOnWall{CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml", 60, true};
+
+/// Base fixture for the tests whose plugin is loaded and warmed up the same way before each test.
+class LoadedPluginTest : public PluginHostTest {
+protected:
+    LoadedPluginTest(int width, int height, PluginSetUp setUp) : PluginHostTest(width, height), setUp_(setUp) {}
+    void SetUp() override {
+        PluginHostTest::SetUp();
+        createPlugin(setUp_.reactions);
+        if (setUp_.slippingSteps > 0) simulate(1.0f, setUp_.slippingSteps);
+        if (setUp_.wallScene) useWallScene();
+    }
+
+private:
+    PluginSetUp setUp_;
 };
 
 }  // namespace fxtest

@@ -12,15 +12,9 @@ namespace gl_state_test {
 
 constexpr int kW = 160, kH = 120;
 
-class GlStateTest : public PluginHostTest {
+class GlStateTest : public LoadedPluginTest {
 protected:
-    GlStateTest() : PluginHostTest(kW, kH) {}
-    void SetUp() override {
-        PluginHostTest::SetUp();
-        createPlugin(CUBE_SOURCE_DIR "/reactions");
-        simulate(1.0f, 60);
-        useWallScene();
-    }
+    GlStateTest() : LoadedPluginTest(kW, kH, {CUBE_SOURCE_DIR "/reactions", 60, true}) {}
     Image frame(bool dirty, std::string* mismatches) { return renderChecked(view, dirty, mismatches); }
 };
 

@@ -109,44 +109,56 @@ int getInt(GLenum name) {
     return v;
 }
 
+// The snapshot's single values: the name diff() gives, the field, the GL enum and whether GL
+// reports it through glIsEnabled (else glGetIntegerv). captureGlState and diff both go through it.
+struct ScalarState {
+    const char* name;
+    int GlStateSnapshot::*field;
+    GLenum pname;
+    bool isEnabled;
+};
+const ScalarState kScalars[] = {
+    {"program", &GlStateSnapshot::program, GL_CURRENT_PROGRAM, false},
+    {"vertexArray", &GlStateSnapshot::vertexArray, GL_VERTEX_ARRAY_BINDING, false},
+    {"arrayBuffer", &GlStateSnapshot::arrayBuffer, GL_ARRAY_BUFFER_BINDING, false},
+    {"elementBuffer", &GlStateSnapshot::elementBuffer, GL_ELEMENT_ARRAY_BUFFER_BINDING, false},
+    {"activeTexture", &GlStateSnapshot::activeTexture, GL_ACTIVE_TEXTURE, false},
+    {"blend", &GlStateSnapshot::blend, GL_BLEND, true},
+    {"blendSrcRgb", &GlStateSnapshot::blendSrcRgb, GL_BLEND_SRC_RGB, false},
+    {"blendDstRgb", &GlStateSnapshot::blendDstRgb, GL_BLEND_DST_RGB, false},
+    {"blendSrcAlpha", &GlStateSnapshot::blendSrcAlpha, GL_BLEND_SRC_ALPHA, false},
+    {"blendDstAlpha", &GlStateSnapshot::blendDstAlpha, GL_BLEND_DST_ALPHA, false},
+    {"blendEqRgb", &GlStateSnapshot::blendEqRgb, GL_BLEND_EQUATION_RGB, false},
+    {"blendEqAlpha", &GlStateSnapshot::blendEqAlpha, GL_BLEND_EQUATION_ALPHA, false},
+    {"depthTest", &GlStateSnapshot::depthTest, GL_DEPTH_TEST, true},
+    {"depthFunc", &GlStateSnapshot::depthFunc, GL_DEPTH_FUNC, false},
+    {"depthMask", &GlStateSnapshot::depthMask, GL_DEPTH_WRITEMASK, false},
+    {"cullFace", &GlStateSnapshot::cullFace, GL_CULL_FACE, true},
+    {"scissorTest", &GlStateSnapshot::scissorTest, GL_SCISSOR_TEST, true},
+    {"stencilTest", &GlStateSnapshot::stencilTest, GL_STENCIL_TEST, true},
+    {"drawFramebuffer", &GlStateSnapshot::drawFramebuffer, GL_DRAW_FRAMEBUFFER_BINDING, false},
+    {"readFramebuffer", &GlStateSnapshot::readFramebuffer, GL_READ_FRAMEBUFFER_BINDING, false},
+    {"unpackBuffer", &GlStateSnapshot::unpackBuffer, GL_PIXEL_UNPACK_BUFFER_BINDING, false},
+    {"unpackAlignment", &GlStateSnapshot::unpackAlignment, GL_UNPACK_ALIGNMENT, false},
+};
+
 }  // namespace
 
 GlStateSnapshot captureGlState() {
     GlStateSnapshot s;
-    s.program = getInt(GL_CURRENT_PROGRAM);
-    s.vertexArray = getInt(GL_VERTEX_ARRAY_BINDING);
-    s.arrayBuffer = getInt(GL_ARRAY_BUFFER_BINDING);
-    s.elementBuffer = getInt(GL_ELEMENT_ARRAY_BUFFER_BINDING);
-    s.activeTexture = getInt(GL_ACTIVE_TEXTURE);
+    for (const ScalarState& k : kScalars) s.*k.field = k.isEnabled ? int(glIsEnabled(k.pname)) : getInt(k.pname);
     for (int i = 0; i < 8; ++i) {
         glActiveTexture(GLenum(GL_TEXTURE0 + i));
         s.texture2D[i] = getInt(GL_TEXTURE_BINDING_2D);
         s.sampler[i] = getInt(GL_SAMPLER_BINDING);
     }
     glActiveTexture(GLenum(s.activeTexture));
-    s.blend = glIsEnabled(GL_BLEND);
-    s.blendSrcRgb = getInt(GL_BLEND_SRC_RGB);
-    s.blendDstRgb = getInt(GL_BLEND_DST_RGB);
-    s.blendSrcAlpha = getInt(GL_BLEND_SRC_ALPHA);
-    s.blendDstAlpha = getInt(GL_BLEND_DST_ALPHA);
-    s.blendEqRgb = getInt(GL_BLEND_EQUATION_RGB);
-    s.blendEqAlpha = getInt(GL_BLEND_EQUATION_ALPHA);
-    s.depthTest = glIsEnabled(GL_DEPTH_TEST);
-    s.depthFunc = getInt(GL_DEPTH_FUNC);
-    s.depthMask = getInt(GL_DEPTH_WRITEMASK);
-    s.cullFace = glIsEnabled(GL_CULL_FACE);
-    s.scissorTest = glIsEnabled(GL_SCISSOR_TEST);
-    s.stencilTest = glIsEnabled(GL_STENCIL_TEST);
     GLboolean mask[4] = {};
     glGetBooleanv(GL_COLOR_WRITEMASK, mask);
     for (int i = 0; i < 4; ++i) s.colorMask[i] = mask[i];
     glGetIntegerv(GL_VIEWPORT, s.viewport);
     glGetIntegerv(GL_SCISSOR_BOX, s.scissorBox);
-    s.drawFramebuffer = getInt(GL_DRAW_FRAMEBUFFER_BINDING);
-    s.readFramebuffer = getInt(GL_READ_FRAMEBUFFER_BINDING);
     glGetFloatv(GL_COLOR_CLEAR_VALUE, s.clearColor);
-    s.unpackBuffer = getInt(GL_PIXEL_UNPACK_BUFFER_BINDING);
-    s.unpackAlignment = getInt(GL_UNPACK_ALIGNMENT);
     return s;
 }
 
@@ -159,38 +171,17 @@ std::string GlStateSnapshot::diff(const GlStateSnapshot& after) const {
             out += buf;
         }
     };
-    cmp("program", program, after.program);
-    cmp("vertexArray", vertexArray, after.vertexArray);
-    cmp("arrayBuffer", arrayBuffer, after.arrayBuffer);
-    cmp("elementBuffer", elementBuffer, after.elementBuffer);
-    cmp("activeTexture", activeTexture, after.activeTexture);
+    for (const ScalarState& k : kScalars) cmp(k.name, this->*k.field, after.*k.field);
     for (int i = 0; i < 8; ++i) {
         const std::string t = "texture2D[" + std::to_string(i) + "]";
         const std::string s = "sampler[" + std::to_string(i) + "]";
         cmp(t.c_str(), texture2D[i], after.texture2D[i]);
         cmp(s.c_str(), sampler[i], after.sampler[i]);
     }
-    cmp("blend", blend, after.blend);
-    cmp("blendSrcRgb", blendSrcRgb, after.blendSrcRgb);
-    cmp("blendDstRgb", blendDstRgb, after.blendDstRgb);
-    cmp("blendSrcAlpha", blendSrcAlpha, after.blendSrcAlpha);
-    cmp("blendDstAlpha", blendDstAlpha, after.blendDstAlpha);
-    cmp("blendEqRgb", blendEqRgb, after.blendEqRgb);
-    cmp("blendEqAlpha", blendEqAlpha, after.blendEqAlpha);
-    cmp("depthTest", depthTest, after.depthTest);
-    cmp("depthFunc", depthFunc, after.depthFunc);
-    cmp("depthMask", depthMask, after.depthMask);
-    cmp("cullFace", cullFace, after.cullFace);
-    cmp("scissorTest", scissorTest, after.scissorTest);
-    cmp("stencilTest", stencilTest, after.stencilTest);
     for (int i = 0; i < 4; ++i) cmp("colorMask", colorMask[i], after.colorMask[i]);
     for (int i = 0; i < 4; ++i) cmp("viewport", viewport[i], after.viewport[i]);
     for (int i = 0; i < 4; ++i) cmp("scissorBox", scissorBox[i], after.scissorBox[i]);
-    cmp("drawFramebuffer", drawFramebuffer, after.drawFramebuffer);
-    cmp("readFramebuffer", readFramebuffer, after.readFramebuffer);
     for (int i = 0; i < 4; ++i) cmp("clearColor", clearColor[i], after.clearColor[i]);
-    cmp("unpackBuffer", unpackBuffer, after.unpackBuffer);
-    cmp("unpackAlignment", unpackAlignment, after.unpackAlignment);
     return out;
 }
 
@@ -308,6 +299,30 @@ void applyDefaultHostState() {
 }
 
 // ---- images -----------------------------------------------------------------------------------
+
+HostTarget::HostTarget(int w, int h, uint32_t depthFormat) : width(w), height(h) {
+    glGenTextures(1, &colour);
+    glBindTexture(GL_TEXTURE_2D, colour);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    if (depthFormat) {
+        glGenTextures(1, &depth);
+        glBindTexture(GL_TEXTURE_2D, depth);
+        glTexImage2D(GL_TEXTURE_2D, 0, GLint(depthFormat), w, h, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
+    if (depth) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+HostTarget::~HostTarget() {
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteTextures(1, &colour);
+    if (depth) glDeleteTextures(1, &depth);
+}
 
 Image readFramebuffer(uint32_t framebuffer, int width, int height) {
     Image img;

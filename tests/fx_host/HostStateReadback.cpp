@@ -45,15 +45,7 @@ HostStateReadback readHostState() {
         {"active texture", GL_ACTIVE_TEXTURE}, {"program", GL_CURRENT_PROGRAM}, {"vertex array", GL_VERTEX_ARRAY_BINDING},
         {"array buffer", GL_ARRAY_BUFFER_BINDING}, {"draw framebuffer", GL_DRAW_FRAMEBUFFER_BINDING},
         {"read framebuffer", GL_READ_FRAMEBUFFER_BINDING}, {"pack buffer", GL_PIXEL_PACK_BUFFER_BINDING},
-        {"unpack buffer", GL_PIXEL_UNPACK_BUFFER_BINDING}, {"unpack swap bytes", GL_UNPACK_SWAP_BYTES},
-        {"unpack lsb first", GL_UNPACK_LSB_FIRST}, {"unpack alignment", GL_UNPACK_ALIGNMENT},
-        {"unpack row length", GL_UNPACK_ROW_LENGTH}, {"unpack skip rows", GL_UNPACK_SKIP_ROWS},
-        {"unpack skip pixels", GL_UNPACK_SKIP_PIXELS}, {"unpack image height", GL_UNPACK_IMAGE_HEIGHT},
-        {"unpack skip images", GL_UNPACK_SKIP_IMAGES}, {"pack swap bytes", GL_PACK_SWAP_BYTES},
-        {"pack lsb first", GL_PACK_LSB_FIRST}, {"pack alignment", GL_PACK_ALIGNMENT},
-        {"pack row length", GL_PACK_ROW_LENGTH}, {"pack skip rows", GL_PACK_SKIP_ROWS},
-        {"pack skip pixels", GL_PACK_SKIP_PIXELS}, {"pack image height", GL_PACK_IMAGE_HEIGHT},
-        {"pack skip images", GL_PACK_SKIP_IMAGES}, {"clamp read colour", GL_CLAMP_READ_COLOR},
+        {"unpack buffer", GL_PIXEL_UNPACK_BUFFER_BINDING}, {"clamp read colour", GL_CLAMP_READ_COLOR},
         {"primitive restart index", GL_PRIMITIVE_RESTART_INDEX}, {"provoking vertex", GL_PROVOKING_VERTEX},
         {"cull face mode", GL_CULL_FACE_MODE}, {"front face", GL_FRONT_FACE},
         {"derivative hint", GL_FRAGMENT_SHADER_DERIVATIVE_HINT}, {"stencil func", GL_STENCIL_FUNC},
@@ -69,6 +61,7 @@ HostStateReadback readHostState() {
         {"blend src alpha", GL_BLEND_SRC_ALPHA}, {"blend dst alpha", GL_BLEND_DST_ALPHA},
         {"blend eq rgb", GL_BLEND_EQUATION_RGB}, {"blend eq alpha", GL_BLEND_EQUATION_ALPHA}};
     for (const auto& s : singles) ints(s.first, s.second, 1);
+    for (const auto& s : phg::kPixelStores) ints(s.first, s.second, 1);
     ints("polygon mode", GL_POLYGON_MODE, 2);
     ints("viewport", GL_VIEWPORT, 4);
     ints("scissor box", GL_SCISSOR_BOX, 4);

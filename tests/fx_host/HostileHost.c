@@ -148,6 +148,18 @@ static void fgAdd(void* u, const char* name, const uint32_t* r, int rc, const ui
     (void)wc;
     if (cb.release) cb.release(cb.user);  /* culled: never run */
 }
+/* The recording frame builder; the targets it creates are counted in *targets. */
+static fxFrameBuilder recordingFrame(int* targets) {
+    fxFrameBuilder frame;
+    memset(&frame, 0, sizeof frame);
+    frame.size = sizeof frame;
+    frame.user = targets;
+    frame.sceneColor = fgColor;
+    frame.sceneDepth = fgDepth;
+    frame.createTarget = fgCreate;
+    frame.addPass = fgAdd;
+    return frame;
+}
 
 /* ---- camera --------------------------------------------------------------------------------- */
 
@@ -417,14 +429,7 @@ static void sweepLightAndFire(Run* run, const fxApi* api, fxPlugin* p, fxPlugin*
  * an accepted view draws nothing and costs little. */
 static void sweepViews(Run* run, const fxApi* api, fxPlugin* q) {
     int i, field, code, targets = 0;
-    fxFrameBuilder frame;
-    memset(&frame, 0, sizeof frame);
-    frame.size = sizeof frame;
-    frame.user = &targets;
-    frame.sceneColor = fgColor;
-    frame.sceneDepth = fgDepth;
-    frame.createTarget = fgCreate;
-    frame.addPass = fgAdd;
+    fxFrameBuilder frame = recordingFrame(&targets);
     for (i = 0; i < SPECIAL_FLOATS; ++i) {
         const float f = specialFloat(i);
         const int finite = isfinite(f);
@@ -581,14 +586,7 @@ static void depthSources(Run* run, const fxApi* api, fxPlugin* p) {
     /* declareShadowPasses with no out-pointer: refused, not OK. */
     {
         int targets = 0;
-        fxFrameBuilder frame;
-        memset(&frame, 0, sizeof frame);
-        frame.size = sizeof frame;
-        frame.user = &targets;
-        frame.sceneColor = fgColor;
-        frame.sceneDepth = fgDepth;
-        frame.createTarget = fgCreate;
-        frame.addPass = fgAdd;
+        fxFrameBuilder frame = recordingFrame(&targets);
         v = goodView();
         CHECK(api->declareShadowPasses(p, &v, &frame, NULL) == FX_ERROR_NULL_ARGUMENT);
         CHECK_GL(0);

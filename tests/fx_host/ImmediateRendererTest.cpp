@@ -6,7 +6,6 @@
 #include <glad/gl.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <initializer_list>
 #include <string>
@@ -38,77 +37,20 @@ constexpr int kColourBufferTolerance = 1;
 
 using Source = fx::ImmediateView::DepthSource;
 
-struct Mode {
-    const char* name;
-    fx::Technique technique;
-    bool quarterRes = false;
-    bool lit = false;
-};
-
-const Mode kModes[] = {
-    {"hard", fx::Technique::Hard},
-    {"soft", fx::Technique::Soft},
-    {"spherical", fx::Technique::Spherical},
-    {"quarter", fx::Technique::Soft, true},
-    {"mega", fx::Technique::Mega},
-    {"lit", fx::Technique::Soft, false, true},
-};
-
-// A host framebuffer of its own: RGBA8 colour + a depth texture of `depthFormat` (0 = none).
-struct HostTarget {
-    GLuint colour = 0, depth = 0, fbo = 0;
-    int width = 0, height = 0;
-    HostTarget(int w, int h, GLenum depthFormat) : width(w), height(h) {
-        glGenTextures(1, &colour);
-        glBindTexture(GL_TEXTURE_2D, colour);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-        if (depthFormat) {
-            glGenTextures(1, &depth);
-            glBindTexture(GL_TEXTURE_2D, depth);
-            glTexImage2D(GL_TEXTURE_2D, 0, GLint(depthFormat), w, h, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        }
-        glBindTexture(GL_TEXTURE_2D, 0);
-        glGenFramebuffers(1, &fbo);
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
-        if (depth) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    }
-    ~HostTarget() {
-        glDeleteFramebuffers(1, &fbo);
-        glDeleteTextures(1, &colour);
-        if (depth) glDeleteTextures(1, &depth);
-    }
-};
+const RenderMode kModes[] = {modes::kHard,        modes::kSoft, modes::kSpherical,
+                             modes::kSoftQuarter, modes::kMega, modes::kSoftLit};
 
 
-class ImmediateRendererTest : public PluginHostTest {
+class ImmediateRendererTest : public LoadedPluginTest {
 protected:
-    ImmediateRendererTest() : PluginHostTest(kW, kH) {}
+    ImmediateRendererTest() : LoadedPluginTest(kW, kH, kSmokeOnWall) {}
     void SetUp() override {
-        PluginHostTest::SetUp();
-        createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
-        simulate(1.0f, 60);
-        useWallScene();
+        LoadedPluginTest::SetUp();
         immediate = std::make_unique<fx::ImmediateRenderer>(&host, programs);
     }
     void TearDown() override {
         immediate.reset();
-        PluginHostTest::TearDown();
-    }
-
-    void setMode(const Mode& m) {
-        fx::RenderOptions o;
-        o.techniqueOverride = m.technique;
-        o.quarterRes = m.quarterRes;
-        o.quarterResAlways = m.quarterRes;
-        ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
-        if (m.lit) {
-            ASSERT_EQ(plugin->setSceneLight(fx::SceneLight{}), fx::ErrorCode::None);
-        } else {
-            plugin->clearSceneLight();
-        }
+        LoadedPluginTest::TearDown();
     }
 
     // The frame graph's linear depth texture (what its prepass wrote last).
@@ -164,8 +106,8 @@ void expectSameImagePerSource(const std::string& label, std::initializer_list<So
 TEST_F(ImmediateRendererTest, SameImageAsTheFrameGraphPerTechniqueAndDepthSource) {
     ASSERT_TRUE(resizeDefaultFramebuffer(kW, kH));
     HostTarget withDepthTexture(kW, kH, GL_DEPTH_COMPONENT24);
-    for (const Mode& m : kModes) {
-        SCOPED_TRACE(m.name);
+    for (const RenderMode& m : kModes) {
+        SCOPED_TRACE(m.label);
         setMode(m);
         const Image reference = render(true);
         ASSERT_GT(plugin->stats().particlesDrawn, 0);
@@ -194,7 +136,7 @@ TEST_F(ImmediateRendererTest, SameImageAsTheFrameGraphPerTechniqueAndDepthSource
         EXPECT_LE(maxAbsDiff(defaultReference, reference), kColourBufferTolerance);
         ASSERT_EQ(drawImmediate(0, immediateView(Source::BoundFramebuffer)), fx::ErrorCode::None);
         const Image fromDefault = readFramebuffer(0, kW, kH);
-        expectSameImagePerSource(m.name, {{"bound FBO", &fromFbo, &reference},
+        expectSameImagePerSource(m.label, {{"bound FBO", &fromFbo, &reference},
                                           {"depth texture", &fromTexture, &reference},
                                           {"default framebuffer", &fromDefault, &defaultReference}});
     }
@@ -217,8 +159,8 @@ TEST_F(ImmediateRendererTest, ReversedZHostSameImagePerDepthSource) {
     fx::ViewInfo rv = view;
     useReversedZ(&rv);
     HostTarget withDepthTexture(kW, kH, GL_DEPTH_COMPONENT32F);
-    for (const Mode& m : {kModes[1], kModes[2], kModes[3], kModes[4]}) {
-        SCOPED_TRACE(m.name);
+    for (const RenderMode& m : {kModes[1], kModes[2], kModes[3], kModes[4]}) {
+        SCOPED_TRACE(m.label);
         setMode(m);
         renderFrame(reversedGraph, scene, rv, [&](fx::FrameBuilder& f) { plugin->declarePasses(rv, f); });
         const Image reference = reversedGraph.readColor();
@@ -246,7 +188,7 @@ TEST_F(ImmediateRendererTest, ReversedZHostSameImagePerDepthSource) {
         const Image defaultReference = readFramebuffer(0, kW, kH);
         ASSERT_EQ(run(0, Source::BoundFramebuffer, 0), fx::ErrorCode::None);
         const Image fromDefault = readFramebuffer(0, kW, kH);
-        expectSameImagePerSource(std::string("reversed ") + m.name,
+        expectSameImagePerSource(std::string("reversed ") + m.label,
                                  {{"bound FBO (32F)", &fromFbo, &reference},
                                   {"depth texture (32F)", &fromTexture, &reference},
                                   {"default framebuffer (24)", &fromDefault, &defaultReference}});
@@ -262,8 +204,8 @@ TEST_F(ImmediateRendererTest, DepthIsMadeOnlyWhereThePassesReadIt) {
     TestFrameGraph bigGraph(W, H);
     HostTarget host24(W, H, GL_DEPTH_COMPONENT24);
     const fx::ViewInfo v = makeView(glm::vec3(-7.0f, 2.5f, 8.0f), glm::vec3(-3.0f, 0.8f, -1.0f), W, H);
-    for (const Mode& m : {kModes[1], kModes[2], kModes[3]}) {
-        SCOPED_TRACE(m.name);
+    for (const RenderMode& m : {kModes[1], kModes[2], kModes[3]}) {
+        SCOPED_TRACE(m.label);
         setMode(m);
         renderFrame(bigGraph, scene, v, [&](fx::FrameBuilder& f) { plugin->declarePasses(v, f); });
         const Image reference = bigGraph.readColor();
@@ -281,7 +223,7 @@ TEST_F(ImmediateRendererTest, DepthIsMadeOnlyWhereThePassesReadIt) {
         const Image image = readFramebuffer(host24.fbo, W, H);
         EXPECT_LE(maxAbsDiff(image, reference), kDepthSourceTolerance);
         EXPECT_GE(psnr(image, reference), kDepthSourceMinPsnr);
-        std::printf("  %-10s region [%d, %d) x [%d, %d) of %dx%d (%.0f %%), max |diff| %d/255\n", m.name, r.x0, r.x1,
+        std::printf("  %-10s region [%d, %d) x [%d, %d) of %dx%d (%.0f %%), max |diff| %d/255\n", m.label, r.x0, r.x1,
                     r.y0, r.y1, W, H, 100.0 * area / (W * H), maxAbsDiff(image, reference));
     }
 }
@@ -305,12 +247,12 @@ TEST_F(ImmediateRendererTest, HostsWithOtherDepthMappingsGetTheSamePicture) {
                           {"[0,1] matrix, ZERO_TO_ONE, not reversed", Matrix::ZeroToOne, true, 0.0f, 1.0f},
                           {"GL matrix, depth range [0.2, 0.9]", Matrix::Gl, false, 0.2f, 0.9f},
                           {"infinite far plane (GL)", Matrix::InfiniteGl, false, 0.0f, 1.0f}};
-    for (const Mode& m : {kModes[0], kModes[1], kModes[2], kModes[3]}) {
+    for (const RenderMode& m : {kModes[0], kModes[1], kModes[2], kModes[3]}) {
         setMode(m);
         const Image reference = render(true);
         ASSERT_GT(plugin->stats().particlesDrawn, 0);
         for (const Case& c : cases) {
-            SCOPED_TRACE(std::string(m.name) + ", " + c.name);
+            SCOPED_TRACE(std::string(m.label) + ", " + c.name);
             fx::ImmediateView iv = immediateView(Source::BoundFramebuffer);
             const float aspect = float(kW) / float(kH), fov = glm::radians(60.0f);
             iv.view.proj = c.matrix == Matrix::ZeroToOne    ? glm::perspectiveRH_ZO(fov, aspect, view.nearPlane, view.farPlane)
@@ -332,7 +274,7 @@ TEST_F(ImmediateRendererTest, HostsWithOtherDepthMappingsGetTheSamePicture) {
             const int diff = maxAbsDiff(image, reference);
             EXPECT_LE(diff, kDepthSourceTolerance);
             EXPECT_GE(psnr(image, reference), kDepthSourceMinPsnr);
-            std::printf("  %-10s %-42s max |diff| %d/255, PSNR %.1f dB\n", m.name, c.name, diff, psnr(image, reference));
+            std::printf("  %-10s %-42s max |diff| %d/255, PSNR %.1f dB\n", m.label, c.name, diff, psnr(image, reference));
         }
     }
 }
@@ -466,8 +408,8 @@ TEST_F(ImmediateRendererTest, FogAndDistanceSlicesReachRenderView) {
         EXPECT_EQ(e, fx::ErrorCode::None);
         return plugin->stats().particlesDrawn;
     };
-    for (const Mode& m : {kModes[0], kModes[1], kModes[2]}) {
-        SCOPED_TRACE(m.name);
+    for (const RenderMode& m : {kModes[0], kModes[1], kModes[2]}) {
+        SCOPED_TRACE(m.label);
         setMode(m);
         const fx::ViewInfo plain = view;
         view = fogged;
@@ -482,7 +424,7 @@ TEST_F(ImmediateRendererTest, FogAndDistanceSlicesReachRenderView) {
         const Image immediateFogged = readFramebuffer(target.fbo, kW, kH);
         EXPECT_LE(maxAbsDiff(immediateFogged, graphFogged), kDepthSourceTolerance);
         std::printf("[ measured ] %s: exp2 fog, renderView vs frame graph max |diff| %d/255 (fog vs none %d/255)\n",
-                    m.name, maxAbsDiff(immediateFogged, graphFogged), maxAbsDiff(graphFogged, graphPlain));
+                    m.label, maxAbsDiff(immediateFogged, graphFogged), maxAbsDiff(graphFogged, graphPlain));
 
         glBindFramebuffer(GL_FRAMEBUFFER, target.fbo);
         scene.drawOpaque(plain);
@@ -497,7 +439,7 @@ TEST_F(ImmediateRendererTest, FogAndDistanceSlicesReachRenderView) {
         const int near = drawn(nearSlice);
         const Image twoCalls = readFramebuffer(target.fbo, kW, kH);
         std::printf("[ measured ] %s: %d particles, %d beyond 7.5 m, %d nearer; two slices vs one call max |diff| %d/255\n",
-                    m.name, all, far, near, maxAbsDiff(twoCalls, oneCall));
+                    m.label, all, far, near, maxAbsDiff(twoCalls, oneCall));
         EXPECT_GT(far, 0);
         EXPECT_GT(near, 0);
         EXPECT_EQ(far + near, all);
@@ -541,148 +483,6 @@ TEST_F(ImmediateRendererTest, RefusesWhatItCannotDraw) {
     EXPECT_EQ(fx::implOf(*plugin).renderImmediate(zero, immediate.get()), fx::ErrorCode::InvalidView);
     EXPECT_EQ(immediate->targetAllocations(), 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-}
-
-// The frame graph's rules on their own: culling, allocation only for running passes, the depth
-// hook before the first reader only.
-TEST_F(FxHostTest, ImmediateFrameCullsUnreadPassesAndProducesDepthBeforeItsFirstReader) {
-    fx::ImmediateTargetPool pool;
-    pool.beginFrame();
-    int produced = 0;
-    std::vector<std::string> order;
-    fx::ImmediateFrameSetup setup;
-    setup.width = 64;
-    setup.height = 32;
-    setup.produceDepth = [&](uint32_t, const fx::DepthRegion&) {
-        ++produced;
-        order.push_back("depth");
-    };
-    fx::ImmediateFrame frame(pool, setup);
-    fx::TargetDesc half;
-    half.scale = 0.5f;
-    const fx::Target unread = frame.createTarget("unread", half);
-    const fx::Target used = frame.createTarget("used", half);
-    auto record = [&](const char* n) { return [&order, n](fx::PassContext&) { order.push_back(n); }; };
-    frame.addPass("culled", {frame.sceneDepth()}, {unread}, record("culled"));
-    frame.addPass("first", {}, {used}, record("first"));
-    frame.addPass("reader", {frame.sceneDepth(), used}, {frame.sceneColor()}, record("reader"));
-    frame.addPass("second_reader", {frame.sceneDepth()}, {frame.sceneColor()}, record("second_reader"));
-    frame.execute();
-    EXPECT_EQ(order, (std::vector<std::string>{"first", "depth", "reader", "second_reader"}));
-    EXPECT_EQ(produced, 1);
-    EXPECT_EQ(pool.allocatedNow(), 2) << "the linear depth and `used` (32 x 16); `unread` never";
-    const fx::PooledTarget& usedSlot = pool.at(pool.at(0).desc.format == fx::TargetFormat::R32F ? 1 : 0);
-    EXPECT_EQ(usedSlot.width, 32);
-    EXPECT_EQ(usedSlot.height, 16);
-    EXPECT_EQ(usedSlot.desc.format, fx::TargetFormat::RGBA8);
-    pool.endFrame();
-    pool.release();
-}
-
-// Timing (not a test: run with --gtest_also_run_disabled_tests). One interleaved run on the fx_host
-// wall scene at 640 x 480: the host's frame (its opaque pass; with LinearR32F also its linear-depth
-// prepass, as fx_host's graph draws it) plus the plugin's passes, CPU clock around glFinish.
-TEST_F(FxHostTest, DISABLED_ImmediateDepthSourceTiming) {
-    constexpr int W = 640, H = 480, kRounds = 61;
-    TestHostAdapter host;
-    fx::PluginImports imports;
-    imports.host = &host;
-    auto plugin = fxCreatePlugin(imports);
-    ASSERT_TRUE(plugin && plugin->loadReactions(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml", nullptr));
-    host.setRearSlip(1.0f);
-    for (int s = 0; s < 60; ++s) {
-        for (int r = 0; r < plugin->reactionCount(); ++r) plugin->continueReaction(r, 1.0f / 60.0f, nullptr);
-    }
-    fx::RenderOptions o;
-    o.techniqueOverride = fx::Technique::Soft;
-    plugin->setRenderOptions(o);
-    TestScene scene;
-    scene.quads = {TestScene::ground(40.0f, glm::vec3(0.2f)),
-                   TestScene::wallZ(-5.0f, -20.0f, 20.0f, 0.0f, 3.0f, glm::vec3(0.4f, 0.3f, 0.3f))};
-    const fx::ViewInfo view = makeView(glm::vec3(4.0f, 2.0f, 7.0f), glm::vec3(0.0f, 0.8f, 1.0f), W, H);
-    TestFrameGraph graph(W, H);  // its prepass makes the host's linear depth for the R32F case
-    fx::ProgramCache programs(fx::snapshotShaderReader(fx::shaderReader("")));
-    fx::ImmediateRenderer immediate(&host, programs);
-    HostTarget hostFb(W, H, GL_DEPTH_COMPONENT24);
-    auto seconds = [] { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); };
-    auto median = [](std::vector<double> v) {
-        std::sort(v.begin(), v.end());
-        return v[v.size() / 2];
-    };
-    std::vector<double> frameLinear, frameTexture, pluginLinear, pluginTexture;
-    for (int round = 0; round < kRounds + 1; ++round) {
-        for (int variant = 0; variant < 2; ++variant) {
-            glFinish();
-            const double t0 = seconds();
-            fx::ImmediateView iv;
-            iv.view = view;
-            if (variant == 0) {
-                // The host's linear depth: fx_host's prepass (linear depth + z), then its opaque pass.
-                renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) {
-                    f.addPass("reads_depth", {f.sceneDepth()}, {f.sceneColor()}, [](fx::PassContext&) {});
-                });
-                GLint name = 0;
-                glBindFramebuffer(GL_READ_FRAMEBUFFER, graph.depthFramebuffer());
-                glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
-                                                      GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
-                iv.depthSource = Source::LinearR32F;
-                iv.depthTexture = GLuint(name);
-                glBindFramebuffer(GL_FRAMEBUFFER, graph.colorFramebuffer());
-                glViewport(0, 0, W, H);
-            } else {
-                glBindFramebuffer(GL_FRAMEBUFFER, hostFb.fbo);
-                scene.drawOpaque(view);
-                iv.depthSource = Source::DepthTexture;
-                iv.depthTexture = hostFb.depth;
-            }
-            glFinish();
-            const double t1 = seconds();
-            ASSERT_EQ(fx::implOf(*plugin).renderImmediate(iv, &immediate), fx::ErrorCode::None);
-            glFinish();
-            const double t2 = seconds();
-            if (round == 0) continue;  // warm-up (programs, targets)
-            (variant == 0 ? frameLinear : frameTexture).push_back(t2 - t0);
-            (variant == 0 ? pluginLinear : pluginTexture).push_back(t2 - t1);
-        }
-    }
-    // The linearise pass alone (DepthLinearizer, full view, into an R32F target), for the breakdown.
-    std::vector<double> passAlone;
-    {
-        HostTarget linear(W, H, 0);
-        GLuint r32f = 0;
-        glGenTextures(1, &r32f);
-        glBindTexture(GL_TEXTURE_2D, r32f);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, W, H, 0, GL_RED, GL_FLOAT, nullptr);
-        glBindFramebuffer(GL_FRAMEBUFFER, linear.fbo);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, r32f, 0);
-        fx::ProgramCache programs(fx::snapshotShaderReader(fx::shaderReader("")));
-        buildLinearizeProgram(&programs);
-        fx::DepthLinearizer depth;
-        ASSERT_TRUE(depth.bind(programs));
-        for (int round = 0; round < kRounds; ++round) {
-            glFinish();
-            const double t0 = seconds();
-            depth.linearize(hostFb.depth, view.proj, fx::DepthMapping{}, view.farPlane, linear.fbo, W, H);
-            glFinish();
-            passAlone.push_back(seconds() - t0);
-        }
-        depth.releaseGl();
-        glDeleteTextures(1, &r32f);
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    std::printf("  linearise pass alone %.2f ms\n", 1e3 * median(passAlone));
-    // The median of each round's ratio too: the two variants of a round ran back to back, so a
-    // load change on the shared machine between rounds cancels out of it.
-    std::vector<double> frameRatio, pluginRatio;
-    for (size_t i = 0; i < frameLinear.size(); ++i) {
-        frameRatio.push_back(frameTexture[i] / frameLinear[i]);
-        pluginRatio.push_back(pluginTexture[i] / pluginLinear[i]);
-    }
-    std::printf("  %d x %d, %d rounds, medians: frame linear R32F %.2f ms, depth texture %.2f ms (%.3fx, per-round "
-                "ratio %.3fx); plugin alone %.2f ms vs %.2f ms (%.3fx, per-round %.3fx)\n",
-                W, H, kRounds, 1e3 * median(frameLinear), 1e3 * median(frameTexture),
-                median(frameTexture) / median(frameLinear), median(frameRatio), 1e3 * median(pluginLinear),
-                1e3 * median(pluginTexture), median(pluginTexture) / median(pluginLinear), median(pluginRatio));
 }
 
 }  // namespace immediate

@@ -18,12 +18,9 @@ namespace light_stability_test {
 
 constexpr int kWidth = 200, kHeight = 150;
 
-class LightStabilityTest : public PluginHostTest {
+class LightStabilityTest : public LoadedPluginTest {
 protected:
-    LightStabilityTest() : PluginHostTest(kWidth, kHeight) {}
-    void SetUp() override {
-        PluginHostTest::SetUp();
-        createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
+    LightStabilityTest() : LoadedPluginTest(kWidth, kHeight, {CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml"}) {
         light.toSun = glm::vec3(-0.6f, 0.5f, -0.6f);  // low, behind and left of the smoke
     }
     void step(int steps) { simulate(1.0f, steps); }

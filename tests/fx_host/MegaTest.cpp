@@ -168,31 +168,36 @@ LineProfile profile(const Image& img, const fx::ViewInfo& view, glm::vec3 from, 
     return out;
 }
 
+// A black sky seen from 8 m down the z axis, looking at the origin (192 x 144).
+struct BlackSkyShot {
+    static constexpr int kW = 192, kH = 144;
+    BlackSkyShot() { scene.sky = glm::vec3(0.0f); }
+    TestFrameGraph graph{kW, kH};
+    TestScene scene;
+    const fx::ViewInfo view = makeView(glm::vec3(0.0f, 0.0f, 8.0f), glm::vec3(0.0f), kW, kH);
+};
+
 // Unlit white spheres on a black sky, 8 m away. Two overlapping spheres of different depths (the
 // front one's outline crosses the back one): along the line joining their centres the opacity
 // stays within 15 % of the centres' (no gap) and changes by at most 0.05 between neighbouring
 // pixels (no outline). Two spheres 10 cm apart (about 1.5 pixels here): the blur closes the gap
 // to at least half the centres' opacity, where the exact spheres leave nothing.
 TEST_F(MegaTest, SpheresMeltIntoOneContinuousVolume) {
-    constexpr int kW = 192, kH = 144;
-    TestFrameGraph graph(kW, kH);
-    TestScene scene;
-    scene.sky = glm::vec3(0.0f);
-    const fx::ViewInfo view = makeView(glm::vec3(0.0f, 0.0f, 8.0f), glm::vec3(0.0f), kW, kH);
+    BlackSkyShot shot;
     direct.desc.mega.noiseStrength = 0.0f;  // the geometry's continuity alone
 
     const glm::vec3 left(-1.0f, 0.0f, -0.8f), right(1.0f, 0.2f, 0.4f);
     direct.set({HandParticle{left, 3.0f}, HandParticle{right, 3.0f}});
-    const Image overlapping = draw(graph, scene, view, true);
+    const Image overlapping = draw(shot.graph, shot.scene, shot.view, true);
     ASSERT_EQ(drawn, 2);
     writePng("/tmp/fx_host_mega_two_spheres.png", overlapping);
-    const LineProfile o = profile(overlapping, view, left, right);
+    const LineProfile o = profile(overlapping, shot.view, left, right);
 
     const glm::vec3 a(-1.05f, 0.0f, 0.0f), b(1.05f, 0.0f, 0.0f);  // radius 1: a 10 cm gap
     direct.set({HandParticle{a, 2.0f}, HandParticle{b, 2.0f}});
-    const Image apart = draw(graph, scene, view, true);
+    const Image apart = draw(shot.graph, shot.scene, shot.view, true);
     writePng("/tmp/fx_host_mega_gap.png", apart);
-    const LineProfile g = profile(apart, view, a, b);
+    const LineProfile g = profile(apart, shot.view, a, b);
     std::printf("[ measured ] mega overlapping spheres: centres %.3f, lowest between %.3f, steepest step %.3f; "
                 "10 cm apart: centres %.3f, lowest between %.3f\n",
                 o.atCentres, o.lowest, o.steepest, g.atCentres, g.lowest);
@@ -206,11 +211,7 @@ TEST_F(MegaTest, SpheresMeltIntoOneContinuousVolume) {
 // Lit by a sun from the right, the right half of a round cloud is brighter than the left half by
 // at least 25 % (mean green over cloud pixels); with the sun moved to the left it is the other way.
 TEST_F(MegaTest, TheHalfTowardTheSunIsBrighter) {
-    constexpr int kW = 192, kH = 144;
-    TestFrameGraph graph(kW, kH);
-    TestScene scene;
-    scene.sky = glm::vec3(0.0f);
-    const fx::ViewInfo view = makeView(glm::vec3(0.0f, 0.0f, 8.0f), glm::vec3(0.0f), kW, kH);
+    BlackSkyShot shot;
     direct.set({HandParticle{glm::vec3(-0.4f, 0.0f, 0.0f), 2.6f}, HandParticle{glm::vec3(0.4f, 0.1f, 0.1f), 2.6f},
                 HandParticle{glm::vec3(0.0f, -0.3f, -0.2f), 2.6f}});
     direct.desc.mega.noiseStrength = 0.0f;  // the halves' difference is the light's alone
@@ -219,13 +220,13 @@ TEST_F(MegaTest, TheHalfTowardTheSunIsBrighter) {
     light.ambient = glm::vec3(0.25f);
     auto halves = [&](glm::vec3 toSun, float* leftMean, float* rightMean) {
         light.toSun = glm::normalize(toSun);
-        const Image img = draw(graph, scene, view, true);
+        const Image img = draw(shot.graph, shot.scene, shot.view, true);
         writePng(std::string("/tmp/fx_host_mega_lit_") + (toSun.x > 0.0f ? "right" : "left") + ".png", img);
         double sum[2] = {0.0, 0.0};
         int count[2] = {0, 0};
-        const int centre = int(projectToPixel(view, glm::vec3(0.0f)).x);
-        for (int y = 0; y < kH; ++y) {
-            for (int x = 0; x < kW; ++x) {
+        const int centre = int(projectToPixel(shot.view, glm::vec3(0.0f)).x);
+        for (int y = 0; y < BlackSkyShot::kH; ++y) {
+            for (int x = 0; x < BlackSkyShot::kW; ++x) {
                 if (x == centre || img.value(x, y, 1) < 0.02f) continue;  // the cloud only
                 sum[x > centre] += img.value(x, y, 1);
                 ++count[x > centre];
@@ -249,16 +250,10 @@ TEST_F(MegaTest, TheHalfTowardTheSunIsBrighter) {
 
 // ---- the whole plugin ----------------------------------------------------------------------
 
-class MegaPluginTest : public PluginHostTest {
+class MegaPluginTest : public LoadedPluginTest {
 protected:
     static constexpr int kW = 320, kH = 240;
-    MegaPluginTest() : PluginHostTest(kW, kH) {}
-    void SetUp() override {
-        PluginHostTest::SetUp();
-        createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
-        simulate(1.0f, 60);
-        useWallScene();
-    }
+    MegaPluginTest() : LoadedPluginTest(kW, kH, kSmokeOnWall) {}
     void frame(const fx::ViewInfo& v, bool dirty, std::string* mismatches) { renderChecked(v, dirty, mismatches); }
 };
 

@@ -33,6 +33,19 @@ Image PluginHostTest::render(bool withPlugin) {
     return graph.readColor();
 }
 
+void PluginHostTest::setMode(const RenderMode& m) {
+    fx::RenderOptions o;
+    o.techniqueOverride = m.technique;
+    o.quarterRes = m.quarter;
+    o.quarterResAlways = m.quarter;
+    ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
+    if (m.lit) {
+        ASSERT_EQ(plugin->setSceneLight(fx::SceneLight{}), fx::ErrorCode::None);
+    } else {
+        plugin->clearSceneLight();
+    }
+}
+
 void PluginHostTest::useWallScene() {
     scene.quads = {TestScene::ground(40.0f, glm::vec3(0.2f)),
                    TestScene::wallZ(-5.0f, -20.0f, 20.0f, 0.0f, 3.0f, glm::vec3(0.4f, 0.3f, 0.3f))};

@@ -1,7 +1,9 @@
 #pragma once
-// Shared by PoisonedHostState.cpp and HostStateReadback.cpp: the tests' glad is 3.3 core, so the
-// compatibility-profile enums are defined and its entry points fetched here by hand.
+// Shared by PoisonedHostState.cpp, HostStateReadback.cpp and FogTest.cpp: the tests' glad is 3.3
+// core, so the compatibility-profile enums are defined and its entry points fetched here by hand.
 #include <glad/gl.h>
+
+#include <utility>
 
 namespace fxtest {
 namespace poisoned_host_gl {
@@ -17,6 +19,17 @@ constexpr GLenum kTextureFilterControl = 0x8500, kTextureLodBias = 0x8501;
 constexpr GLenum kPrimitiveRestartFixedIndex = 0x8D69;
 constexpr int kUnits = 6;  // GlStateGuard::kTextureUnits
 
+// The pixel-store parameters, by the names the poisons and the readback give them.
+inline const std::pair<const char*, GLenum> kPixelStores[] = {
+    {"unpack swap bytes", GL_UNPACK_SWAP_BYTES}, {"unpack lsb first", GL_UNPACK_LSB_FIRST},
+    {"unpack alignment", GL_UNPACK_ALIGNMENT},   {"unpack row length", GL_UNPACK_ROW_LENGTH},
+    {"unpack skip rows", GL_UNPACK_SKIP_ROWS},   {"unpack skip pixels", GL_UNPACK_SKIP_PIXELS},
+    {"unpack image height", GL_UNPACK_IMAGE_HEIGHT}, {"unpack skip images", GL_UNPACK_SKIP_IMAGES},
+    {"pack swap bytes", GL_PACK_SWAP_BYTES},     {"pack lsb first", GL_PACK_LSB_FIRST},
+    {"pack alignment", GL_PACK_ALIGNMENT},       {"pack row length", GL_PACK_ROW_LENGTH},
+    {"pack skip rows", GL_PACK_SKIP_ROWS},       {"pack skip pixels", GL_PACK_SKIP_PIXELS},
+    {"pack image height", GL_PACK_IMAGE_HEIGHT}, {"pack skip images", GL_PACK_SKIP_IMAGES}};
+
 struct Compat {
     void (*alphaFunc)(GLenum, GLfloat) = nullptr;
     void (*pixelTransferf)(GLenum, GLfloat) = nullptr;
@@ -25,6 +38,16 @@ struct Compat {
     void (*clipPlane)(GLenum, const GLdouble*) = nullptr;
     void (*polygonStipple)(const GLubyte*) = nullptr;
     void (*clipControl)(GLenum, GLenum) = nullptr;
+    // The fixed-function fog and immediate-mode drawing of FogTest.cpp.
+    void (*fogi)(GLenum, GLint) = nullptr;
+    void (*fogf)(GLenum, GLfloat) = nullptr;
+    void (*fogfv)(GLenum, const GLfloat*) = nullptr;
+    void (*matrixMode)(GLenum) = nullptr;
+    void (*loadMatrixf)(const GLfloat*) = nullptr;
+    void (*begin)(GLenum) = nullptr;
+    void (*end)() = nullptr;
+    void (*vertex3f)(GLfloat, GLfloat, GLfloat) = nullptr;
+    void (*color4f)(GLfloat, GLfloat, GLfloat, GLfloat) = nullptr;
 };
 
 template <typename F>
@@ -42,6 +65,15 @@ inline const Compat& compat() {
         load(&k.clipPlane, "glClipPlane");
         load(&k.polygonStipple, "glPolygonStipple");
         load(&k.clipControl, "glClipControl");
+        load(&k.fogi, "glFogi");
+        load(&k.fogf, "glFogf");
+        load(&k.fogfv, "glFogfv");
+        load(&k.matrixMode, "glMatrixMode");
+        load(&k.loadMatrixf, "glLoadMatrixf");
+        load(&k.begin, "glBegin");
+        load(&k.end, "glEnd");
+        load(&k.vertex3f, "glVertex3f");
+        load(&k.color4f, "glColor4f");
         return k;
     }();
     return c;

@@ -36,16 +36,7 @@ std::vector<HostPoison> buildPoisons() {
     add("dirty bindings (applyDirtyHostState)", applyDirtyHostState);
     add("active texture", [] { glActiveTexture(GL_TEXTURE4); });
     add("pixel pack buffer", [] { glBindBuffer(GL_PIXEL_PACK_BUFFER, ownBuffer()); });
-    const std::pair<const char*, GLenum> stores[] = {
-        {"unpack swap bytes", GL_UNPACK_SWAP_BYTES}, {"unpack lsb first", GL_UNPACK_LSB_FIRST},
-        {"unpack alignment", GL_UNPACK_ALIGNMENT},   {"unpack row length", GL_UNPACK_ROW_LENGTH},
-        {"unpack skip rows", GL_UNPACK_SKIP_ROWS},   {"unpack skip pixels", GL_UNPACK_SKIP_PIXELS},
-        {"unpack image height", GL_UNPACK_IMAGE_HEIGHT}, {"unpack skip images", GL_UNPACK_SKIP_IMAGES},
-        {"pack swap bytes", GL_PACK_SWAP_BYTES},     {"pack lsb first", GL_PACK_LSB_FIRST},
-        {"pack alignment", GL_PACK_ALIGNMENT},       {"pack row length", GL_PACK_ROW_LENGTH},
-        {"pack skip rows", GL_PACK_SKIP_ROWS},       {"pack skip pixels", GL_PACK_SKIP_PIXELS},
-        {"pack image height", GL_PACK_IMAGE_HEIGHT}, {"pack skip images", GL_PACK_SKIP_IMAGES}};
-    for (const auto& s : stores) {
+    for (const auto& s : phg::kPixelStores) {
         const GLenum e = s.second;
         const bool isAlignment = e == GL_UNPACK_ALIGNMENT || e == GL_PACK_ALIGNMENT;
         const bool isFlag = e == GL_UNPACK_SWAP_BYTES || e == GL_UNPACK_LSB_FIRST || e == GL_PACK_SWAP_BYTES ||

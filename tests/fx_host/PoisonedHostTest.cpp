@@ -20,21 +20,15 @@ namespace poisoned_host_test {
 
 constexpr int kW = 160, kH = 120;
 
-struct Mode {
-    const char* label;
-    fx::Technique technique;
-    bool quarter = false, lit = false;
-};
-
-const Mode kModes[] = {
-    {"hard", fx::Technique::Hard},
-    {"soft", fx::Technique::Soft},
-    {"spherical", fx::Technique::Spherical},
+const RenderMode kModes[] = {
+    modes::kHard,
+    modes::kSoft,
+    modes::kSpherical,
     {"hard quarter", fx::Technique::Hard, true},
-    {"soft quarter", fx::Technique::Soft, true},
-    {"spherical quarter", fx::Technique::Spherical, true},
-    {"mega", fx::Technique::Mega},
-    {"soft lit", fx::Technique::Soft, false, true},
+    modes::kSoftQuarter,
+    modes::kSphericalQuarter,
+    modes::kMega,
+    modes::kSoftLit,
     {"spherical quarter lit", fx::Technique::Spherical, true, true},
     {"from reactions (stateless sparks too)", fx::Technique::FromReaction},
 };
@@ -64,19 +58,6 @@ protected:
         fx::Diagnostics diags;
         EXPECT_TRUE(plugin->prepareGl(&diags)) << (diags.empty() ? "" : diags.front().str());
         end("prepareGl");
-    }
-
-    void setMode(const Mode& m) {
-        fx::RenderOptions o;
-        o.techniqueOverride = m.technique;
-        o.quarterRes = m.quarter;
-        o.quarterResAlways = m.quarter;
-        plugin->setRenderOptions(o);
-        if (m.lit) {
-            ASSERT_EQ(plugin->setSceneLight(fx::SceneLight{}), fx::ErrorCode::None);
-        } else {
-            plugin->clearSceneLight();
-        }
     }
 
     // Around every plugin call: clean + poison, then check + clean.
@@ -134,7 +115,7 @@ TEST_F(PoisonedHostTest, EveryTechniqueIgnoresEachPoisonedState) {
     EXPECT_GE(rows.core + rows.compatibility, osMesaCompatibilityProfile() ? 80 : 60);
     EXPECT_EQ(rows.compatibility > 0, osMesaCompatibilityProfile());
     std::set<std::string> changedImage;
-    for (const Mode& m : kModes) {
+    for (const RenderMode& m : kModes) {
         setMode(m);
         const Image bare = render(false);
         const Image clean = frame(nullptr);
@@ -192,7 +173,7 @@ TEST_F(PoisonedHostTest, TheImmediatePathIgnoresEachPoisonedState) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         return readFramebuffer(fbo, kW, kH);
     };
-    for (const Mode& m : {kModes[0], kModes[1], kModes[2], kModes[4], kModes[6], kModes[7]}) {
+    for (const RenderMode& m : {kModes[0], kModes[1], kModes[2], kModes[4], kModes[6], kModes[7]}) {
         setMode(m);
         const Image clean = immediateFrame(nullptr);
         ASSERT_TRUE(problems_.empty()) << m.label << " (clean host):\n" << problems_;
@@ -216,7 +197,7 @@ TEST_F(PoisonedHostTest, TheImmediatePathIgnoresEachPoisonedState) {
 // prepareGl (the atlas, ramp and normal uploads, every program) under each poison: a fresh
 // plugin per poison, its first frame compared with a plugin prepared by a clean host.
 TEST_F(PoisonedHostTest, PrepareGlUnderEachPoisonUploadsTheSameData) {
-    const Mode& soft = kModes[7];  // lit soft: atlas, normals, ramp and the opacity map all show
+    const RenderMode& soft = kModes[7];  // lit soft: atlas, normals, ramp and the opacity map all show
     setMode(soft);
     const Image clean = frame(nullptr);
     ASSERT_TRUE(problems_.empty()) << problems_;

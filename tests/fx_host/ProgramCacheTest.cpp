@@ -73,6 +73,32 @@ protected:
         return prepared;
     }
 
+    // Edits burnout_smoke.yaml to a contrast power no reaction drew with (2.0 -> 3.5) and waits
+    // until the plugin's hot reload has taken it.
+    void reloadWithContrastPower35() {
+        const std::string burnout = reactions + "/burnout_smoke.yaml";
+        std::string yaml = cubetest::readFile(burnout);
+        const size_t at = yaml.find("contrast_power: 2.0");
+        ASSERT_NE(at, std::string::npos);
+        yaml.replace(at, 19, "contrast_power: 3.5");
+        cubetest::writeAhead(burnout, yaml, 10);
+        bool reloaded = false;  // the library looks at the disk at most every 0.1 s
+        for (int i = 0; i < 100 && !reloaded; ++i) {
+            reloaded = plugin->pollHotReload(nullptr);
+            if (!reloaded) std::this_thread::sleep_for(std::chrono::milliseconds(15));
+        }
+        ASSERT_TRUE(reloaded);
+    }
+
+    // Appends a comment to the copy's shader `file` and reloads the shaders: programs are built.
+    void editAndReloadShader(const std::string& file) {
+        const std::string path = shaders + "/" + file;
+        cubetest::writeAhead(path, cubetest::readFile(path) + "\n// an edit that changes nothing\n", 20);
+        const uint64_t before = fx::programBuildCounts().built;
+        ASSERT_TRUE(plugin->pollShaderReload(nullptr));
+        EXPECT_GT(fx::programBuildCounts().built, before);
+    }
+
     TestHostAdapter host;
     std::string shaders, reactions;
     std::unique_ptr<fx::Plugin> plugin;
@@ -139,25 +165,10 @@ TEST_F(ProgramCacheTest, NoFrameCompilesAcrossOptionSwitchesWhenTheHostPreparesA
 TEST_F(ProgramCacheTest, NoFrameCompilesAcrossHotReloads) {
     const uint64_t passBuildsBefore = fx::programBuildCounts().inPass;
     prepareThenDraw("start");
-    const std::string burnout = reactions + "/burnout_smoke.yaml";
-    std::string yaml = cubetest::readFile(burnout);
-    const size_t at = yaml.find("contrast_power: 2.0");
-    ASSERT_NE(at, std::string::npos);
-    yaml.replace(at, 19, "contrast_power: 3.5");
-    cubetest::writeAhead(burnout, yaml, 10);
-    bool reloaded = false;  // the library looks at the disk at most every 0.1 s
-    for (int i = 0; i < 100 && !reloaded; ++i) {
-        reloaded = plugin->pollHotReload(nullptr);
-        if (!reloaded) std::this_thread::sleep_for(std::chrono::milliseconds(15));
-    }
-    ASSERT_TRUE(reloaded);
+    ASSERT_NO_FATAL_FAILURE(reloadWithContrastPower35());
     EXPECT_EQ(prepareThenDraw("reaction reload"), 2u) << "contrast_power 3.5: its soft program, lit and unlit";
 
-    const std::string soft = shaders + "/fs_particles_soft.glsl";
-    cubetest::writeAhead(soft, cubetest::readFile(soft) + "\n// an edit that changes nothing\n", 20);
-    const uint64_t before = fx::programBuildCounts().built;
-    ASSERT_TRUE(plugin->pollShaderReload(nullptr));
-    EXPECT_GT(fx::programBuildCounts().built, before);
+    ASSERT_NO_FATAL_FAILURE(editAndReloadShader("fs_particles_soft.glsl"));
     EXPECT_EQ(frames(), 0u) << "after the shader reload";
     EXPECT_EQ(prepareThenDraw("after the shader reload"), 0u) << "the reload built every key the old cache had";
     EXPECT_EQ(fx::programBuildCounts().inPass, passBuildsBefore);
@@ -173,11 +184,7 @@ TEST_F(ProgramCacheTest, AShaderReloadSwapsTheMegaProgramsWithTheRestAndNoFrameC
     o.techniqueOverride = fx::Technique::Mega;
     plugin->setRenderOptions(o);
     EXPECT_GT(prepareThenDraw("mega"), 0u);
-    const std::string blur = shaders + "/fs_mega_blur.glsl";
-    cubetest::writeAhead(blur, cubetest::readFile(blur) + "\n// an edit that changes nothing\n", 20);
-    const uint64_t before = fx::programBuildCounts().built;
-    ASSERT_TRUE(plugin->pollShaderReload(nullptr));
-    EXPECT_GT(fx::programBuildCounts().built, before);
+    ASSERT_NO_FATAL_FAILURE(editAndReloadShader("fs_mega_blur.glsl"));
     const int drawnBefore = drawn;
     EXPECT_EQ(frames(), 0u) << "after the shader reload";
     EXPECT_GT(drawn, drawnBefore) << "nothing drawn after the reload";
@@ -191,18 +198,7 @@ TEST_F(ProgramCacheTest, AShaderReloadSwapsTheMegaProgramsWithTheRestAndNoFrameC
 // a warning), never inside a pass.
 TEST_F(ProgramCacheTest, AHostThatDoesNotPrepareAgainCompilesBeforeThePassesNeverInside) {
     prepareThenDraw("start");
-    const std::string burnout = reactions + "/burnout_smoke.yaml";
-    std::string yaml = cubetest::readFile(burnout);
-    const size_t at = yaml.find("contrast_power: 2.0");
-    ASSERT_NE(at, std::string::npos);
-    yaml.replace(at, 19, "contrast_power: 3.5");
-    cubetest::writeAhead(burnout, yaml, 10);
-    bool reloaded = false;  // the library looks at the disk at most every 0.1 s
-    for (int i = 0; i < 100 && !reloaded; ++i) {
-        reloaded = plugin->pollHotReload(nullptr);
-        if (!reloaded) std::this_thread::sleep_for(std::chrono::milliseconds(15));
-    }
-    ASSERT_TRUE(reloaded);
+    ASSERT_NO_FATAL_FAILURE(reloadWithContrastPower35());
     const fx::ProgramBuildCounts before = fx::programBuildCounts();
     EXPECT_EQ(frames(), 2u) << "contrast_power 3.5: its soft program, lit and unlit";
     EXPECT_EQ(fx::programBuildCounts().inPass, before.inPass);

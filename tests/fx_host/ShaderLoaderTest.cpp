@@ -56,6 +56,23 @@ int lineOf(const std::string& path, const std::string& needle) {
 }
 
 class ShaderLoaderTest : public FxHostTest {};
+
+// One 2 m puff 1 m up, set into `particles`, seen from (0, 2, 6) in a w x h graph.
+struct OnePuff {
+    OnePuff(DirectParticles& p, int w, int h)
+        : particles(p), view(makeView(glm::vec3(0, 2, 6), glm::vec3(0, 1, 0), w, h)), graph(w, h) {
+        p.set({HandParticle{glm::vec3(0.0f, 1.0f, 0.0f), 2.0f}});
+    }
+    // One frame of `scene` with the puff; returns how many particles were drawn.
+    int draw(TestScene& scene) {
+        int drawn = -1;
+        renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = particles.declare(view, f); });
+        return drawn;
+    }
+    DirectParticles& particles;
+    const fx::ViewInfo view;
+    TestFrameGraph graph;
+};
 class BrokenShaderTest : public FxHostTest {
 protected:
     void SetUp() override {
@@ -169,24 +186,19 @@ TEST_F(BrokenShaderTest, RendererReportsABrokenShaderAndDrawsNothingWithIt) {
     replaceLine(dir + "/fs_particles_soft.glsl", line, "    float depth = vViewPos;");
     TestHostAdapter host;
     DirectParticles particles(&host, dir);
-    particles.set({HandParticle{glm::vec3(0.0f, 1.0f, 0.0f), 2.0f}});
     TestScene scene;
     scene.quads = {TestScene::ground(20.0f, glm::vec3(0.2f))};
-    const fx::ViewInfo view = makeView(glm::vec3(0, 2, 6), glm::vec3(0, 1, 0), 128, 96);
-    TestFrameGraph graph(128, 96);
+    OnePuff puff(particles, 128, 96);
 
-    int drawn = -1;
-    renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = particles.declare(view, f); });
-    EXPECT_EQ(drawn, 0);
-    EXPECT_EQ(graph.executed(), std::vector<std::string>{"opaque"});
+    EXPECT_EQ(puff.draw(scene), 0);
+    EXPECT_EQ(puff.graph.executed(), std::vector<std::string>{"opaque"});
     EXPECT_TRUE(host.logged("fs_particles_soft.glsl:" + std::to_string(line) + ":"))
         << (host.errors().empty() ? std::string("no error logged") : host.errors().front());
     EXPECT_EQ(particles.renderer.state(), fx::ParticleRenderer::State::Ready);
 
     particles.settings.options.techniqueOverride = fx::Technique::Hard;
-    renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = particles.declare(view, f); });
-    EXPECT_EQ(drawn, 1);
-    EXPECT_TRUE(graph.ran("particles"));
+    EXPECT_EQ(puff.draw(scene), 1);
+    EXPECT_TRUE(puff.graph.ran("particles"));
 }
 
 // Soft programs per contrast power: a cache key of their own (ProgramCache::Key::powerSteps),
@@ -358,14 +370,10 @@ TEST_F(ShaderLoaderTest, TheHostsDepthSamplingStateDoesNotChangeThePicture) {
 TEST_F(ShaderLoaderTest, MissingAtlasDisablesTheRendererWithAMessage) {
     TestHostAdapter host;
     DirectParticles particles(&host, std::string(), scratchDir() + "/no_data_here");
-    particles.set({HandParticle{glm::vec3(0.0f, 1.0f, 0.0f), 2.0f}});
     TestScene scene;
-    const fx::ViewInfo view = makeView(glm::vec3(0, 2, 6), glm::vec3(0, 1, 0), 64, 48);
-    TestFrameGraph graph(64, 48);
-    int drawn = -1;
-    renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = particles.declare(view, f); });
-    EXPECT_EQ(drawn, 0);
-    EXPECT_EQ(graph.executed(), std::vector<std::string>{"opaque"});
+    OnePuff puff(particles, 64, 48);
+    EXPECT_EQ(puff.draw(scene), 0);
+    EXPECT_EQ(puff.graph.executed(), std::vector<std::string>{"opaque"});
     EXPECT_EQ(particles.renderer.state(), fx::ParticleRenderer::State::Failed);
     EXPECT_TRUE(host.logged("smoke_atlas.png"));
 }

@@ -21,17 +21,23 @@ GLenum internalFormat(fx::TargetFormat f) {
     return GL_RGBA8;
 }
 
-GLuint makeTexture(GLenum format, int w, int h, bool linear) {
+// A new 2D texture filtered with `filter` both ways, left bound for the caller to allocate.
+GLuint boundTexture(GLint filter) {
     GLuint t = 0;
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);  // a null upload must not read from a host PBO
     glGenTextures(1, &t);
     glBindTexture(GL_TEXTURE_2D, t);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    return t;
+}
+
+GLuint makeTexture(GLenum format, int w, int h, bool linear) {
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);  // a null upload must not read from a host PBO
+    const GLuint t = boundTexture(linear ? GL_LINEAR : GL_NEAREST);
     const bool isFloat = format == GL_R32F || format == GL_RG32F || format == GL_RGBA16F;
     const GLenum layout = format == GL_R32F ? GL_RED : format == GL_RG32F ? GL_RG : GL_RGBA;
     glTexImage2D(GL_TEXTURE_2D, 0, GLint(format), w, h, 0, layout, isFloat ? GL_FLOAT : GL_UNSIGNED_BYTE,
                  nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, linear ? GL_LINEAR : GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, linear ? GL_LINEAR : GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glBindTexture(GL_TEXTURE_2D, 0);
@@ -48,13 +54,9 @@ GLuint makeDepthBuffer(int w, int h, bool floatDepth) {
 }
 
 GLuint makeDepthTexture(int w, int h, bool floatDepth) {
-    GLuint t = 0;
-    glGenTextures(1, &t);
-    glBindTexture(GL_TEXTURE_2D, t);
+    const GLuint t = boundTexture(GL_NEAREST);
     glTexImage2D(GL_TEXTURE_2D, 0, floatDepth ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24, w, h, 0,
                  GL_DEPTH_COMPONENT, floatDepth ? GL_FLOAT : GL_UNSIGNED_INT, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     glBindTexture(GL_TEXTURE_2D, 0);
     return t;

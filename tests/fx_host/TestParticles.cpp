@@ -18,6 +18,12 @@ void buildLinearizeProgram(fx::ProgramCache* programs) {
     EXPECT_TRUE(errors.empty()) << errors.front();
 }
 
+void DirectParticles::setMode(const RenderMode& m) {
+    settings.options.techniqueOverride = m.technique;
+    settings.options.quarterRes = m.quarter;
+    settings.options.quarterResAlways = m.quarter;
+}
+
 void DirectParticles::set(const std::vector<HandParticle>& particles) {
     pool.clear();
     for (const HandParticle& p : particles) {

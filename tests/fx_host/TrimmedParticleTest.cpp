@@ -229,6 +229,18 @@ protected:
         direct.desc.render.softness = 0.5f;
         return ws;
     }
+    // `w` with technique `t` drawn as `tested` (the 9 particles drawn) and then as `untested`.
+    struct WallPictures {
+        Image tested, untested;
+        bool testedRanQuarter = false;  ///< the tested frame ran the quarter-res particle pass
+    };
+    void drawTestedAndUntested(TestFrameGraph& graph, WallScene& w, fx::Technique t, WallPictures* out) {
+        direct.settings.options.techniqueOverride = t;
+        out->tested = draw(graph, w.scene, w.tested);
+        ASSERT_EQ(drawn, 9);
+        out->testedRanQuarter = graph.ran("particles_quarter");
+        out->untested = draw(graph, w.scene, w.untested);
+    }
 
     TestHostAdapter host;
     DirectParticles direct{&host};
@@ -430,24 +442,13 @@ TEST_F(TrimmedImageTest, DepthTestedSoftAndSphericalEqualUntested) {
     constexpr int kW = 200, kH = 150;
     TestFrameGraph graph(kW, kH, true);
     WallScene w = wallScene(kW, kH);
-    TestScene& scene = w.scene;
-    const fx::ViewInfo& tested = w.tested;
-    const fx::ViewInfo& untested = w.untested;
     for (fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical}) {
-        direct.settings.options.techniqueOverride = t;
-        const Image a = draw(graph, scene, tested);
-        ASSERT_EQ(drawn, 9);
-        const Image b = draw(graph, scene, untested);
-        writePng(scratchDir() + "/depth_tested_" + std::to_string(int(t)) + ".png", a);
-        EXPECT_LE(maxAbsDiff(a, b), 1) << "technique " << int(t);
+        WallPictures p;
+        ASSERT_NO_FATAL_FAILURE(drawTestedAndUntested(graph, w, t, &p));
+        writePng(scratchDir() + "/depth_tested_" + std::to_string(int(t)) + ".png", p.tested);
+        EXPECT_LE(maxAbsDiff(p.tested, p.untested), 1) << "technique " << int(t);
     }
 }
-
-}  // namespace
-}  // namespace fxtest
-
-namespace fxtest {
-namespace {
 
 // The soft program without pow() takes contrast powers that are whole or half-whole numbers up
 // to 16 (the schema allows 0.1 .. 16); anything else goes to the pow() program.
@@ -468,12 +469,6 @@ TEST(SoftContrastProgram, HalfWholePowersAreSplitAndOthersUsePow) {
     EXPECT_EQ(fx::ProgramCache::variantFor(fx::Technique::Hard, false, 1.3f), fx::ProgramCache::HardZBuffer);
 }
 
-}  // namespace
-}  // namespace fxtest
-
-namespace fxtest {
-namespace {
-
 // Quarter res on a reversed-Z host: the half-res particles are z-tested against the farthest
 // scene depth of each 2x2 block. Against a standard host (no half-res z-test), with the same
 // buffers and projection, the picture must be the same: the test only drops fragments that
@@ -482,21 +477,16 @@ TEST_F(TrimmedImageTest, HalfResZTestChangesNoPixel) {
     constexpr int kW = 200, kH = 150;
     TestFrameGraph graph(kW, kH, true);
     WallScene w = wallScene(kW, kH);
-    TestScene& scene = w.scene;
-    const fx::ViewInfo& tested = w.tested;
-    const fx::ViewInfo& untested = w.untested;
     direct.settings.options.quarterRes = true;
     direct.settings.options.quarterResAlways = true;
     for (fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical, fx::Technique::Hard}) {
-        direct.settings.options.techniqueOverride = t;
-        const Image a = draw(graph, scene, tested);
-        ASSERT_EQ(drawn, 9);
-        ASSERT_TRUE(graph.ran("particles_quarter"));
-        const Image b = draw(graph, scene, untested);
-        EXPECT_LE(maxAbsDiff(a, b), 1) << "technique " << int(t);
-        TestScene bare = scene;
-        renderFrame(graph, bare, tested, [](fx::FrameBuilder&) {});
-        EXPECT_GT(maxAbsDiff(graph.readColor(), a), 40) << "the smoke is in the picture";
+        WallPictures p;
+        ASSERT_NO_FATAL_FAILURE(drawTestedAndUntested(graph, w, t, &p));
+        ASSERT_TRUE(p.testedRanQuarter);
+        EXPECT_LE(maxAbsDiff(p.tested, p.untested), 1) << "technique " << int(t);
+        TestScene bare = w.scene;
+        renderFrame(graph, bare, w.tested, [](fx::FrameBuilder&) {});
+        EXPECT_GT(maxAbsDiff(graph.readColor(), p.tested), 40) << "the smoke is in the picture";
     }
 }
 

@@ -30,44 +30,12 @@ constexpr int kSplitW = kBx + kW + 5, kSplitH = kBy + kH + 3;
 constexpr int kTolerance = 1;
 constexpr int kSphericalTolerance = 2;
 
-struct Mode {
-    const char* label;
-    fx::Technique technique;
-    bool quarter = false;
-};
-const Mode kModes[] = {
-    {"hard", fx::Technique::Hard},
-    {"soft", fx::Technique::Soft},
-    {"spherical", fx::Technique::Spherical},
-    {"soft quarter", fx::Technique::Soft, true},
-    {"spherical quarter", fx::Technique::Spherical, true},
-    {"mega", fx::Technique::Mega},
-};
+const RenderMode kModes[] = {modes::kHard,        modes::kSoft,             modes::kSpherical,
+                             modes::kSoftQuarter, modes::kSphericalQuarter, modes::kMega};
 
 // An RGBA8 colour texture + a GL_DEPTH_COMPONENT24 depth texture in one framebuffer.
-struct Framebuffer {
-    GLuint colour = 0, depth = 0, fbo = 0;
-    int width = 0, height = 0;
-    Framebuffer(int w, int h) : width(w), height(h) {
-        glGenTextures(1, &colour);
-        glBindTexture(GL_TEXTURE_2D, colour);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-        glGenTextures(1, &depth);
-        glBindTexture(GL_TEXTURE_2D, depth);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, w, h, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glBindTexture(GL_TEXTURE_2D, 0);
-        glGenFramebuffers(1, &fbo);
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    }
-    ~Framebuffer() {
-        glDeleteFramebuffers(1, &fbo);
-        glDeleteTextures(1, &colour);
-        glDeleteTextures(1, &depth);
-    }
+struct Framebuffer : HostTarget {
+    Framebuffer(int w, int h) : HostTarget(w, h, GL_DEPTH_COMPONENT24) {}
 };
 
 // The w x h rectangle of `img` at (x, y).
@@ -84,25 +52,18 @@ Image crop(const Image& img, int x, int y, int w, int h) {
     return out;
 }
 
-class ViewportTest : public PluginHostTest {
+class ViewportTest : public LoadedPluginTest {
 protected:
-    ViewportTest() : PluginHostTest(kW, kH) {}
+    ViewportTest() : LoadedPluginTest(kW, kH, kSmokeOnWall) {}
     void SetUp() override {
-        PluginHostTest::SetUp();
-        createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
-        simulate(1.0f, 60);
-        useWallScene();
+        LoadedPluginTest::SetUp();
         views[0] = view;
         // Player two: the same smoke from the other side of the car, lower and nearer.
         views[1] = makeView(glm::vec3(-4.5f, 1.4f, 5.0f), glm::vec3(0.3f, 0.7f, 0.5f), kW, kH);
     }
 
-    void setMode(const Mode& m) {
-        fx::RenderOptions o;
-        o.techniqueOverride = m.technique;
-        o.quarterRes = m.quarter;
-        o.quarterResAlways = m.quarter;
-        ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
+    void setModeAndPrepare(const RenderMode& m) {
+        ASSERT_NO_FATAL_FAILURE(setMode(m));
         ASSERT_TRUE(plugin->prepareGl(nullptr));
     }
 
@@ -145,9 +106,9 @@ protected:
 TEST_F(ViewportTest, EachHalfOfASplitScreenEqualsTheViewDrawnAlone) {
     Framebuffer alone(kW, kH), split(kSplitW, kSplitH), scratch(kW, kH);
     const int origin[2][2] = {{0, 0}, {kBx, kBy}};
-    for (const Mode& m : kModes) {
+    for (const RenderMode& m : kModes) {
         SCOPED_TRACE(m.label);
-        setMode(m);
+        setModeAndPrepare(m);
         int noDepthDiff[2] = {0, 0};
         for (int pass = 0; pass < 3; ++pass) {
             const bool texture = pass == 2, none = pass == 0;
@@ -200,9 +161,9 @@ TEST_F(ViewportTest, AHostScissorClipsTheSmokeWhenTheViewAsksForIt) {
     Framebuffer split(kSplitW, kSplitH), scratch(kW, kH), alone(kW, kH);
     // Full res (the particles drawn straight into the host's framebuffer), quarter res and mega
     // (their composites scissor to the smoke's rect themselves).
-    for (const Mode& m : {kModes[1], kModes[2], kModes[3], kModes[5]}) {
+    for (const RenderMode& m : {kModes[1], kModes[2], kModes[3], kModes[5]}) {
         SCOPED_TRACE(m.label);
-        setMode(m);
+        setModeAndPrepare(m);
         const int allowed = m.technique == fx::Technique::Spherical ? kSphericalTolerance : kTolerance;
         fx::ViewInfo v = views[1];
         drawScene(alone, v);

@@ -33,33 +33,31 @@ protected:
     }
     void TearDown() override { game.setOverlay(nullptr); }
     void frame() { game.Dyn(1.0f / 60.0f); }
-    void move(float x, float y) {
+    // One event of `type` to the panel, with the fields that `fill` sets.
+    template <typename Fill>
+    void send(InputEvent::Type type, Fill fill) {
         InputEvent e;
-        e.type = InputEvent::Type::MouseMove;
-        e.x = x;
-        e.y = y;
+        e.type = type;
+        fill(e);
         panel.inject(e);
+    }
+    void move(float x, float y) {
+        send(InputEvent::Type::MouseMove, [&](InputEvent& e) {
+            e.x = x;
+            e.y = y;
+        });
     }
     void button(bool down) {
-        InputEvent e;
-        e.type = InputEvent::Type::MouseButton;
-        e.down = down;
-        panel.inject(e);
+        send(InputEvent::Type::MouseButton, [&](InputEvent& e) { e.down = down; });
     }
     void key(UiKey k, bool down) {
-        InputEvent e;
-        e.type = InputEvent::Type::Key;
-        e.key = k;
-        e.down = down;
-        panel.inject(e);
+        send(InputEvent::Type::Key, [&](InputEvent& e) {
+            e.key = k;
+            e.down = down;
+        });
     }
     void type(const std::string& text) {
-        for (char c : text) {
-            InputEvent e;
-            e.type = InputEvent::Type::Char;
-            e.codepoint = unsigned(c);
-            panel.inject(e);
-        }
+        for (char c : text) send(InputEvent::Type::Char, [&](InputEvent& e) { e.codepoint = unsigned(c); });
     }
     struct Rect {
         float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
