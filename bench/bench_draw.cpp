@@ -10,7 +10,7 @@
 //   BM_InstanceCopy/N     reference: memcpy of the N instances (32 N bytes read and written)
 //
 // The particles: N in a 60 m wide slab 5 to 80 m in front of a 1920x1080 camera (about one in
-// five outside the frustum), sizes 0.3 to 3 m, in pool order unrelated to depth.
+// eight outside the frustum), sizes 0.3 to 3 m, in pool order unrelated to depth.
 // Run interleaved for ratios on a noisy machine:
 //   bench_draw --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true
 //              --benchmark_report_aggregates_only=true --benchmark_min_time=0.05
