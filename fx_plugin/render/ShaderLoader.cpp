@@ -27,6 +27,24 @@ ShaderReader shaderReader(const std::string& dir) {
 
 namespace {
 
+// A shader's (or, with `program`, a program's) info log, up to its first terminating zero.
+std::string infoLog(GLuint object, bool program) {
+    GLint length = 0;
+    if (program) {
+        glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+    } else {
+        glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    }
+    std::string log(static_cast<size_t>(length > 1 ? length : 1), '\0');
+    if (program) {
+        glGetProgramInfoLog(object, length, nullptr, &log[0]);
+    } else {
+        glGetShaderInfoLog(object, length, nullptr, &log[0]);
+    }
+    log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
+    return log;
+}
+
 GLuint compileStage(GLenum stage, const ShaderReader& read, const std::string& file,
                     const std::string& defines, std::string* error) {
     ShaderSource src;
@@ -38,12 +56,7 @@ GLuint compileStage(GLenum stage, const ShaderReader& read, const std::string& f
     GLint ok = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
     if (ok != GL_TRUE) {
-        GLint length = 0;
-        glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-        std::string log(static_cast<size_t>(length > 1 ? length : 1), '\0');
-        glGetShaderInfoLog(shader, length, nullptr, &log[0]);
-        log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
-        *error = translateInfoLog(log, src.files, file);
+        *error = translateInfoLog(infoLog(shader, false), src.files, file);
         if (error->empty()) *error = file + ":0: compile failed (the driver gave no log)";
         glDeleteShader(shader);
         return 0;
@@ -162,12 +175,7 @@ uint32_t buildProgram(const ShaderReader& read, const std::string& vertexFile,
     GLint ok = GL_FALSE;
     glGetProgramiv(program, GL_LINK_STATUS, &ok);
     if (ok != GL_TRUE) {
-        GLint length = 0;
-        glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-        std::string log(static_cast<size_t>(length > 1 ? length : 1), '\0');
-        glGetProgramInfoLog(program, length, nullptr, &log[0]);
-        log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
-        *error = vertexFile + "+" + fragmentFile + ":0: link failed: " + log;
+        *error = vertexFile + "+" + fragmentFile + ":0: link failed: " + infoLog(program, true);
         glDeleteProgram(program);
         return 0;
     }
