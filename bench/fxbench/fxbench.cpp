@@ -14,6 +14,8 @@
 #include "fxbench_summary.h"
 #include "fxbench_sweep.h"
 
+#include "apps/CommandLine.h"
+
 namespace {
 
 int runSingle(const fxbench::BenchOptions& o) {
@@ -63,15 +65,9 @@ int runSingle(const fxbench::BenchOptions& o) {
 
 int main(int argc, char** argv) {
     fxbench::BenchOptions options;
-    std::string error;
-    if (!fxbench::parseBenchOptions(argc, argv, &options, &error)) {
-        std::fprintf(stderr, "fxbench: %s\n%s", error.c_str(), fxbench::benchUsage().c_str());
-        return 2;
-    }
-    if (options.help) {
-        std::printf("%s", fxbench::benchUsage().c_str());
-        return 0;
-    }
+    const int exitNow = cube::parseCommandLine("fxbench", argc, argv, &fxbench::parseBenchOptions,
+                                               &fxbench::benchUsage, &options);
+    if (exitNow >= 0) return exitNow;
     if (options.integrators) {
         std::printf("%s", fxbench::integratorReport().c_str());
         return 0;
