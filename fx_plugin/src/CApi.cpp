@@ -241,15 +241,10 @@ int reactionParticlesAlive(const fxPlugin* p, int index) {
 // The ...2 entries fill this library's sized struct and copy the host's size of it; the 2.0
 // entries copy the same values into the 2.0 layout, whole, as 2.0 did.
 fxReactionStats2 reactionStatsOf(const fxPlugin* p, int index) {
-    fxReactionStats2 c;
-    std::memset(&c, 0, sizeof c);
-    c.size = sizeof c;
     const ReactionStats s = impl(p).reactionStats(index);
+    fxReactionStats2 c = detail::withReactionCounts(s, fxDescInit_<fxReactionStats2>());
     copyOut(s.name, c.name, sizeof c.name);
     copyOut(s.technique, c.technique, sizeof c.technique);
-    c.alive = s.alive;
-    c.emitted = s.emitted;
-    c.dropped = s.dropped;
     return c;
 }
 int reactionStats(const fxPlugin* p, int index, fxReactionStats* out) {

@@ -279,12 +279,9 @@ public:
     ReactionStats reactionStats(int index) const override {
         fxReactionStats2 c = fxDescInit_<fxReactionStats2>();
         api_->reactionStats2(p_, index, &c);
-        ReactionStats s;
+        ReactionStats s = withReactionCounts(c, ReactionStats());
         s.name = c.name;
         s.technique = c.technique;
-        s.alive = c.alive;
-        s.emitted = c.emitted;
-        s.dropped = c.dropped;
         return s;
     }
     ErrorCode fireReaction(const std::string& name, const glm::vec3& point) override {
