@@ -20,15 +20,7 @@ namespace {
 
 int runSingle(const fxbench::BenchOptions& o) {
     const fxbench::Scenario* sc = fxbench::findScenario(o.scenario);
-    fxbench::RunConfig cfg;
-    cfg.scenario = sc;
-    cfg.game = fxbench::gameOptions(*sc, o);
-    cfg.cameraQuads = fxbench::cameraQuads(*sc);
-    cfg.frames = o.frames;
-    cfg.rounds = o.rounds;
-    cfg.warmup = o.warmup;
-    cfg.errorFrames = o.errorFrames;
-    cfg.selected = o.modes;
+    fxbench::RunConfig cfg = fxbench::runConfig(*sc, o);
     cfg.imagesDir = o.imagesDir;
     cfg.progressLabel = o.scenario;
     std::string err;
