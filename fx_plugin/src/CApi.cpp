@@ -339,10 +339,17 @@ void stats(const fxPlugin* p, fxStats* out) {
 int stats2(const fxPlugin* p, fxStats2* out) { return writeOf(p, out, "fxStats2", "stats2", statsOf); }
 
 fxParticleCheck2 checkOf(const fxPlugin* p) {
-    return detail::withParticleCheck(impl(p).checkParticles(), fxDescInit_<fxParticleCheck2>());
+    const ParticleCheck k = impl(p).checkParticles();
+    fxParticleCheck2 c = fxDescInit_<fxParticleCheck2>();
+    c.alive = k.alive;
+    c.capacity = k.capacity;
+    c.nonFinite = k.nonFinite;
+    return c;
 }
 void checkParticles(const fxPlugin* p, fxParticleCheck* out) {
-    if (outSet(p, out, "checkParticles")) *out = detail::withParticleCheck(impl(p).checkParticles(), fxParticleCheck());
+    if (!outSet(p, out, "checkParticles")) return;
+    const fxParticleCheck2 c = checkOf(p);
+    *out = fxParticleCheck{c.alive, c.capacity, c.nonFinite};
 }
 int checkParticles2(const fxPlugin* p, fxParticleCheck2* out) {
     return writeOf(p, out, "fxParticleCheck2", "checkParticles2", checkOf);

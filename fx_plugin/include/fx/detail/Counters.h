@@ -1,7 +1,6 @@
 #pragma once
 // The counters that cross the C boundary in more than one layout: fx::Stats, fxStats2 and
-// fxStats; fx::ParticleCheck, fxParticleCheck2 and fxParticleCheck; the counts of
-// fx::ReactionStats and fxReactionStats2. The fields share their names, so one copy serves each
+// fxStats; the counts of fx::ReactionStats and fxReactionStats2. The fields share their names, so one copy serves each
 // pair: the library's C entries (fx_plugin/src/CApi.cpp) fill the C structs from the plugin's,
 // the C++ layer (PluginBridge.h) reads them back. Header-only, as the rest of fx/detail.
 
@@ -18,15 +17,6 @@ To withStats(const From& from, To to) {
     to.reloads = from.reloads;
     to.reloadErrors = from.reloadErrors;
     to.apiErrors = from.apiErrors;
-    return to;
-}
-
-/// `to` with every field of ParticleCheck (fx/Types.h) taken from `from`.
-template <class From, class To>
-To withParticleCheck(const From& from, To to) {
-    to.alive = from.alive;
-    to.capacity = from.capacity;
-    to.nonFinite = from.nonFinite;
     return to;
 }
 

@@ -220,7 +220,12 @@ public:
     }
     Stats stats() const override { return withStats(fetch(api_->stats2), Stats()); }
     ParticleCheck checkParticles() const override {
-        return withParticleCheck(fetch(api_->checkParticles2), ParticleCheck());
+        const fxParticleCheck2 c = fetch(api_->checkParticles2);
+        ParticleCheck k;
+        k.alive = c.alive;
+        k.capacity = c.capacity;
+        k.nonFinite = c.nonFinite;
+        return k;
     }
     bool pollShaderReload(Diagnostics* out) override {
         DiagnosticSink sink(out);
