@@ -79,7 +79,7 @@ bool outUsable(const fxPlugin* p, const Out* out, const char* type, const char* 
     return true;
 }
 
-/// The first check of a 2.0 entry that returns nothing and writes a struct without a size:
+/// The first check of an entry that returns nothing and writes *out (the getters of 2.0):
 /// `p` usable and `out` set. Else the refusal is logged under `function` and nothing written.
 inline bool outSet(const fxPlugin* p, const void* out, const char* function) {
     if (!usable(p, function)) return false;

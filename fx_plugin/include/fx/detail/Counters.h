@@ -1,8 +1,9 @@
 #pragma once
 // The counters that cross the C boundary in more than one layout: fx::Stats, fxStats2 and
-// fxStats; the counts of fx::ReactionStats and fxReactionStats2. The fields share their names, so one copy serves each
-// pair: the library's C entries (fx_plugin/src/CApi.cpp) fill the C structs from the plugin's,
-// the C++ layer (PluginBridge.h) reads them back. Header-only, as the rest of fx/detail.
+// fxStats; the counts of fx::ReactionStats and fxReactionStats2. The fields share their names,
+// so one copy serves each pair: the library's C entries (fx_plugin/src/CApi.cpp) fill the C
+// structs from the plugin's, the C++ layer (PluginBridge.h) reads them back. Header-only, as the
+// rest of fx/detail.
 
 namespace fx {
 namespace detail {
