@@ -21,8 +21,7 @@ layout(location = 0) out vec4 oColor;
 void main() {
     ivec2 base, last;
     vec2 f;
-    vec2 pixel = viewPixelOf(gl_FragCoord.xy);  // drawn into sceneColor: the view's rectangle of it
-    lowResFootprint(pixel, sceneDepthViewSize(), textureSize(uCloud, 0), base, f, last);
+    vec2 pixel = fragmentFootprint(textureSize(uCloud, 0), base, f, last);
     float scene = linearSceneDepth(texelFetch(uSceneDepth, sceneDepthTexel(ivec2(pixel)), 0).r);  // nothing drawn: 3.0e38
     vec4 sum = vec4(0.0);
     for (int i = 0; i < 4; ++i) {

@@ -24,8 +24,7 @@ layout(location = 0) out vec4 oColor;
 void main() {
     ivec2 base, last;
     vec2 f;
-    vec2 pixel = viewPixelOf(gl_FragCoord.xy);  // drawn into sceneColor: the view's rectangle of it
-    lowResFootprint(pixel, sceneDepthViewSize(), textureSize(uHalfColor, 0), base, f, last);
+    vec2 pixel = fragmentFootprint(textureSize(uHalfColor, 0), base, f, last);
     ivec2 t0 = clamp(base, ivec2(0), last), t1 = clamp(base + ivec2(1, 0), ivec2(0), last);
     ivec2 t2 = clamp(base + ivec2(0, 1), ivec2(0), last), t3 = clamp(base + ivec2(1, 1), ivec2(0), last);
     float w0 = (1.0 - f.x) * (1.0 - f.y), w1 = f.x * (1.0 - f.y), w2 = (1.0 - f.x) * f.y, w3 = f.x * f.y;

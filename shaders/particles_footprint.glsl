@@ -9,3 +9,11 @@ void lowResFootprint(vec2 pixel, ivec2 fullSize, ivec2 lowSize, out ivec2 base, 
     f = lowPos - vec2(base);
     last = lowSize - 1;
 }
+
+// The footprint of this fragment's view pixel (returned; drawn into sceneColor, the fragment
+// lies in the view's rectangle of it) in a lower-resolution image of `lowSize` texels.
+vec2 fragmentFootprint(ivec2 lowSize, out ivec2 base, out vec2 f, out ivec2 last) {
+    vec2 pixel = viewPixelOf(gl_FragCoord.xy);
+    lowResFootprint(pixel, sceneDepthViewSize(), lowSize, base, f, last);
+    return pixel;
+}

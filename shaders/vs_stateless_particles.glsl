@@ -56,28 +56,39 @@ vec2 reachLift(float k, float t) {
     return vec2(reach, (t - reach) / k);
 }
 
-float curveAt(float f, int count, float ts[16], float vs[16]) {
-    if (f <= ts[0]) return vs[0];
+// Where f lies on a piecewise-linear curve's knots ts[0..count): between knots lo and hi = lo + 1,
+// w of the way from ts[lo] to ts[hi] (1 where they coincide); lo = hi at or before the first knot
+// (0) and past the last (count - 1), where the curve holds its end value.
+void curveSegment(float f, int count, float ts[16], out int lo, out int hi, out float w) {
+    lo = hi = count - 1;
+    w = 0.0;
+    if (f <= ts[0]) {
+        lo = hi = 0;
+        return;
+    }
     for (int i = 1; i < count; ++i) {
         if (f <= ts[i]) {
             float span = ts[i] - ts[i - 1];
-            float w = span > 0.0 ? (f - ts[i - 1]) / span : 1.0;
-            return mix(vs[i - 1], vs[i], w);
+            lo = i - 1;
+            hi = i;
+            w = span > 0.0 ? (f - ts[i - 1]) / span : 1.0;
+            return;
         }
     }
-    return vs[count - 1];
+}
+
+float curveAt(float f, int count, float ts[16], float vs[16]) {
+    int lo, hi;
+    float w;
+    curveSegment(f, count, ts, lo, hi, w);
+    return lo == hi ? vs[lo] : mix(vs[lo], vs[hi], w);
 }
 
 vec4 rampAt(float f) {
-    if (f <= uRampT[0]) return uRampC[0];
-    for (int i = 1; i < uRampCount; ++i) {
-        if (f <= uRampT[i]) {
-            float span = uRampT[i] - uRampT[i - 1];
-            float w = span > 0.0 ? (f - uRampT[i - 1]) / span : 1.0;
-            return mix(uRampC[i - 1], uRampC[i], w);
-        }
-    }
-    return uRampC[uRampCount - 1];
+    int lo, hi;
+    float w;
+    curveSegment(f, uRampCount, uRampT, lo, hi, w);
+    return lo == hi ? uRampC[lo] : mix(uRampC[lo], uRampC[hi], w);
 }
 
 void main() {

@@ -22,17 +22,43 @@ namespace {
 
 using namespace assets;
 
+// The scene's materials, in Material order: name, base colour, roughness, metallic.
+struct MaterialSpec {
+    const char* name;
+    vec4 rgba;
+    float roughness;
+    float metallic;
+};
+const MaterialSpec kMaterials[kMaterialCount] = {
+    {"grass", {0.22f, 0.42f, 0.16f, 1.0f}, 1.0f, 0.0f},  // kGrass
+    {"asphalt", {0.17f, 0.17f, 0.19f, 1.0f}, 0.9f, 0.0f},  // kAsphalt
+    {"gravel", {0.60f, 0.54f, 0.43f, 1.0f}, 1.0f, 0.0f},  // kGravel
+    {"kerb_red", {0.75f, 0.08f, 0.06f, 1.0f}, 0.7f, 0.0f},  // kKerbRed
+    {"kerb_white", {0.90f, 0.90f, 0.88f, 1.0f}, 0.7f, 0.0f},  // kKerbWhite
+    {"concrete", {0.58f, 0.58f, 0.56f, 1.0f}, 0.9f, 0.0f},  // kConcrete
+    {"tyre", {0.12f, 0.12f, 0.13f, 1.0f}, 0.9f, 0.0f},  // kTyre
+    {"tyre_white", {0.85f, 0.85f, 0.83f, 1.0f}, 0.9f, 0.0f},  // kTyreWhite
+    {"steel", {0.55f, 0.57f, 0.60f, 1.0f}, 0.5f, 1.0f},  // kSteel
+    {"paint_white", {0.88f, 0.88f, 0.86f, 1.0f}, 0.8f, 0.0f},  // kPaintWhite
+    {"paint_orange", {0.95f, 0.42f, 0.05f, 1.0f}, 0.7f, 0.0f},  // kPaintOrange
+    {"paint_yellow", {0.95f, 0.80f, 0.10f, 1.0f}, 0.7f, 0.0f},  // kPaintYellow
+    {"paint_red", {0.72f, 0.08f, 0.07f, 1.0f}, 0.7f, 0.0f},  // kPaintRed
+    {"panel_dark", {0.08f, 0.08f, 0.10f, 1.0f}, 0.6f, 0.0f},  // kPanelDark
+    {"stand_concrete", {0.62f, 0.61f, 0.58f, 1.0f}, 0.9f, 0.0f},  // kStandConcrete
+    {"stand_seats", {0.10f, 0.30f, 0.70f, 1.0f}, 0.7f, 0.0f},  // kStandSeats
+    {"car_paint", {0.04f, 0.12f, 0.50f, 1.0f}, 0.35f, 0.0f},  // kCarPaint
+    {"car_trim", {0.06f, 0.06f, 0.07f, 1.0f}, 0.6f, 0.0f},  // kCarTrim
+    {"car_headlight", {0.95f, 0.93f, 0.80f, 1.0f}, 0.2f, 0.0f},  // kCarHeadlight
+    {"car_taillight", {0.70f, 0.03f, 0.03f, 1.0f}, 0.3f, 0.0f},  // kCarTaillight
+    {"car_glass", {0.10f, 0.14f, 0.19f, 1.0f}, 0.05f, 0.0f},  // kCarGlass
+    {"wheel_rubber", {0.03f, 0.03f, 0.03f, 1.0f}, 0.9f, 0.0f},  // kWheelRubber
+    {"wheel_rim", {0.78f, 0.79f, 0.82f, 1.0f}, 0.3f, 1.0f},  // kWheelRim
+};
+
 // The race scene of data/README.md: metres, +Y up, the track along +X.
 tinygltf::Model raceScene() {
     GltfBuilder b;
-    const int grassMat = b.material("grass", {0.22f, 0.42f, 0.16f, 1.0f}, 1.0f);
-    const int asphaltMat = b.material("asphalt", {0.17f, 0.17f, 0.19f, 1.0f}, 0.9f);
-    const int gravelMat = b.material("gravel", {0.60f, 0.54f, 0.43f, 1.0f}, 1.0f);
-    const int kerbRedMat = b.material("kerb_red", {0.75f, 0.08f, 0.06f, 1.0f}, 0.7f);
-    const int kerbWhiteMat = b.material("kerb_white", {0.90f, 0.90f, 0.88f, 1.0f}, 0.7f);
-    const int concreteMat = b.material("concrete", {0.58f, 0.58f, 0.56f, 1.0f}, 0.9f);
-    const int tyreMat = b.material("tyre", {0.12f, 0.12f, 0.13f, 1.0f}, 0.9f);
-    const int tyreWhiteMat = b.material("tyre_white", {0.85f, 0.85f, 0.83f, 1.0f}, 0.9f);
+    for (const MaterialSpec& m : kMaterials) b.material(m.name, m.rgba, m.roughness, m.metallic);
 
     std::vector<int> roots;
 
@@ -40,9 +66,9 @@ tinygltf::Model raceScene() {
     MeshData grass;
     grass.quad({-200, 0, -100}, {200, 0, -100}, {200, 0, 100}, {-200, 0, 100}, {0, 1, 0});
     roots.push_back(
-        b.node("grass", b.mesh("grass", {{grass, grassMat}}), vec3(0), surfaceTag("grass")));
+        b.node("grass", b.mesh("grass", {{grass, kGrass}}), vec3(0), surfaceTag("grass")));
     roots.push_back(b.node("track",
-                           b.mesh("track", {{boxMesh({-150, 0, -6}, {150, 0.02f, 6}), asphaltMat}}),
+                           b.mesh("track", {{boxMesh({-150, 0, -6}, {150, 0.02f, 6}), kAsphalt}}),
                            vec3(0), surfaceTag("asphalt")));
 
     // Kerbs: one mesh (red blocks, white blocks as two primitives) centred on z = 0, instanced
@@ -52,26 +78,26 @@ tinygltf::Model raceScene() {
         const float x0 = -150.0f + 2.0f * float(k);
         (k % 2 == 0 ? red : white).box({x0, 0, -0.5f}, {x0 + 2.0f, 0.04f, 0.5f}, false);
     }
-    const int kerb = b.mesh("kerb", {{red, kerbRedMat}, {white, kerbWhiteMat}});
+    const int kerb = b.mesh("kerb", {{red, kKerbRed}, {white, kKerbWhite}});
     roots.push_back(b.node("kerb_right", kerb, {0, 0, 6.5f}, surfaceTag("kerb")));
     roots.push_back(b.node("kerb_left", kerb, {0, 0, -6.5f}, surfaceTag("kerb")));
 
     roots.push_back(b.node(
-        "runoff_pad", b.mesh("runoff_pad", {{boxMesh({-20, 0, -26}, {20, 0.02f, -7}), asphaltMat}}),
+        "runoff_pad", b.mesh("runoff_pad", {{boxMesh({-20, 0, -26}, {20, 0.02f, -7}), kAsphalt}}),
         vec3(0), surfaceTag("asphalt")));
     roots.push_back(
         b.node("gravel_trap",
-               b.mesh("gravel_trap", {{boxMesh({60, 0, -20}, {120, 0.02f, -7}), gravelMat}}),
+               b.mesh("gravel_trap", {{boxMesh({60, 0, -20}, {120, 0.02f, -7}), kGravel}}),
                vec3(0), surfaceTag("gravel")));
 
     // Barriers: 1 m tall, 0.5 m thick concrete walls.
     roots.push_back(
         b.node("barrier_right",
-               b.mesh("barrier_right", {{boxMesh({-150, 0, 8.5f}, {150, 1, 9}), concreteMat}}),
+               b.mesh("barrier_right", {{boxMesh({-150, 0, 8.5f}, {150, 1, 9}), kConcrete}}),
                vec3(0), solidTag()));
     roots.push_back(
         b.node("barrier_runoff",
-               b.mesh("barrier_runoff", {{boxMesh({-25, 0, -27}, {25, 1, -26.5f}), concreteMat}}),
+               b.mesh("barrier_runoff", {{boxMesh({-25, 0, -27}, {25, 1, -26.5f}), kConcrete}}),
                vec3(0), solidTag()));
 
     // Tyre stacks: one mesh of four r = 0.35, 0.25 m tall tyres, black and painted white in
@@ -79,7 +105,7 @@ tinygltf::Model raceScene() {
     MeshData stack[2];
     for (int t = 0; t < 4; ++t)
         stack[t % 2].cylinder({0, 0.125f + 0.25f * float(t), 0}, {0, 1, 0}, 0.35f, 0.25f, 20);
-    const int tyreStack = b.mesh("tyre_stack", {{stack[0], tyreMat}, {stack[1], tyreWhiteMat}});
+    const int tyreStack = b.mesh("tyre_stack", {{stack[0], kTyre}, {stack[1], kTyreWhite}});
     const vec3 stacks[] = {{-22, 0, -8}, {-22, 0, -25}, {22, 0, -8}, {22, 0, -25}, {58, 0, -8}};
     for (size_t i = 0; i < std::size(stacks); ++i) {
         roots.push_back(b.node("tyres_" + std::to_string(i), tyreStack, stacks[i], solidTag()));

@@ -79,6 +79,16 @@ private:
     std::vector<unsigned char> bin_;
 };
 
+// Every material of the scene, one index each: the glTF material index is the enumerator
+// (kMaterials in make_assets.cpp writes them in this order). The track's, the trackside
+// furniture's, the car's.
+enum Material : int {
+    kGrass, kAsphalt, kGravel, kKerbRed, kKerbWhite, kConcrete, kTyre, kTyreWhite,
+    kSteel, kPaintWhite, kPaintOrange, kPaintYellow, kPaintRed, kPanelDark, kStandConcrete, kStandSeats,
+    kCarPaint, kCarTrim, kCarHeadlight, kCarTaillight, kCarGlass, kWheelRubber, kWheelRim,
+    kMaterialCount
+};
+
 // The race car (make_assets_car.cpp): the "car" node with car_body, car_cabin and wheel_FL,
 // wheel_FR, wheel_RL, wheel_RR (data/README.md). Returns the car node.
 int buildCar(GltfBuilder& b);

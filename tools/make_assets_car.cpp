@@ -74,13 +74,6 @@ std::pair<MeshData, MeshData> wheelGeometry() {
 }  // namespace
 
 int buildCar(GltfBuilder& b) {
-    const int paintMat = b.material("car_paint", {0.04f, 0.12f, 0.50f, 1.0f}, 0.35f);
-    const int trimMat = b.material("car_trim", {0.06f, 0.06f, 0.07f, 1.0f}, 0.6f);
-    const int headlightMat = b.material("car_headlight", {0.95f, 0.93f, 0.80f, 1.0f}, 0.2f);
-    const int taillightMat = b.material("car_taillight", {0.70f, 0.03f, 0.03f, 1.0f}, 0.3f);
-    const int glassMat = b.material("car_glass", {0.10f, 0.14f, 0.19f, 1.0f}, 0.05f);
-    const int rubberMat = b.material("wheel_rubber", {0.03f, 0.03f, 0.03f, 1.0f}, 0.9f);
-    const int rimMat = b.material("wheel_rim", {0.78f, 0.79f, 0.82f, 1.0f}, 0.3f, 1.0f);
 
     // ---- body: hull, nose, tail, sills, arches (paint); splitter, diffuser, wing (trim) ----
     MeshData paint, trim, head, tail;
@@ -112,8 +105,8 @@ int buildCar(GltfBuilder& b) {
     trim.hexa(wing);
     const int car = b.node("car", -1, vec3(0));
     b.child(car, b.node("car_body",
-                        b.mesh("car_body", {{paint, paintMat}, {trim, trimMat}, {head, headlightMat},
-                                            {tail, taillightMat}}),
+                        b.mesh("car_body", {{paint, kCarPaint}, {trim, kCarTrim}, {head, kCarHeadlight},
+                                            {tail, kCarTaillight}}),
                         vec3(0)));
 
     // ---- cabin: a shell with a raked screen and tumblehome (paint), glass panels on it ----
@@ -134,11 +127,11 @@ int buildCar(GltfBuilder& b) {
         window(&glass, side, mirrored ? 0.14f : 0.50f, mirrored ? 0.50f : 0.86f, 0.14f, 0.86f);
         window(&glass, side, mirrored ? 0.54f : 0.14f, mirrored ? 0.86f : 0.46f, 0.14f, 0.86f);
     }
-    b.child(car, b.node("car_cabin", b.mesh("car_cabin", {{shell, paintMat}, {glass, glassMat}}), vec3(0)));
+    b.child(car, b.node("car_cabin", b.mesh("car_cabin", {{shell, kCarPaint}, {glass, kCarGlass}}), vec3(0)));
 
     // ---- wheels: one mesh, a node per corner with its hub at the node's origin ----
     const auto [tyre, rim] = wheelGeometry();
-    const int wheel = b.mesh("wheel", {{tyre, rubberMat}, {rim, rimMat}});
+    const int wheel = b.mesh("wheel", {{tyre, kWheelRubber}, {rim, kWheelRim}});
     const std::pair<const char*, vec3> wheels[] = {{"wheel_FL", {kAxleX, kWheelR, -kTrackZ}},
                                                    {"wheel_FR", {kAxleX, kWheelR, kTrackZ}},
                                                    {"wheel_RL", {-kAxleX, kWheelR, -kTrackZ}},

@@ -35,28 +35,20 @@ void board(MeshData* panel, MeshData* legs, vec3 at, float w, float h, float lif
 }  // namespace
 
 void buildTrackside(GltfBuilder& b, std::vector<int>* roots) {
-    const int steelMat = b.material("steel", {0.55f, 0.57f, 0.60f, 1.0f}, 0.5f, 1.0f);
-    const int whiteMat = b.material("paint_white", {0.88f, 0.88f, 0.86f, 1.0f}, 0.8f);
-    const int orangeMat = b.material("paint_orange", {0.95f, 0.42f, 0.05f, 1.0f}, 0.7f);
-    const int yellowMat = b.material("paint_yellow", {0.95f, 0.80f, 0.10f, 1.0f}, 0.7f);
-    const int redMat = b.material("paint_red", {0.72f, 0.08f, 0.07f, 1.0f}, 0.7f);
-    const int darkMat = b.material("panel_dark", {0.08f, 0.08f, 0.10f, 1.0f}, 0.6f);
-    const int concreteMat = b.material("stand_concrete", {0.62f, 0.61f, 0.58f, 1.0f}, 0.9f);
-    const int seatMat = b.material("stand_seats", {0.10f, 0.30f, 0.70f, 1.0f}, 0.7f);
 
     // Debris fence on the right wall (barrier_right, x in [-150,150], z in [8.5,9], 1 m tall):
     // posts every 5 m and two rails, up to 2.3 m. Not solid: the wall below is.
     MeshData fence;
     for (float x = -150.0f; x <= 150.0f; x += 5.0f) fence.box({x - 0.04f, 1.0f, 8.71f}, {x + 0.04f, 2.3f, 8.79f});
     for (float y : {1.6f, 2.25f}) fence.box({-150.0f, y, 8.72f}, {150.0f, y + 0.05f, 8.78f}, true);
-    roots->push_back(b.node("fence_right", b.mesh("fence_right", {{fence, steelMat}}), vec3(0)));
+    roots->push_back(b.node("fence_right", b.mesh("fence_right", {{fence, kSteel}}), vec3(0)));
 
     // Guard rails on the left, behind the tyre walls, leaving the run-off and the gravel trap.
     const float rails[][2] = {{-150.0f, -26.0f}, {26.0f, 56.0f}, {122.0f, 150.0f}};
     for (size_t i = 0; i < std::size(rails); ++i) {
         roots->push_back(b.node("barrier_left_" + std::to_string(i),
                                 b.mesh("barrier_left_" + std::to_string(i),
-                                       {{guardRail(rails[i][0], rails[i][1], -9.5f), steelMat}}),
+                                       {{guardRail(rails[i][0], rails[i][1], -9.5f), kSteel}}),
                                 vec3(0), solidTag()));
     }
 
@@ -67,7 +59,7 @@ void buildTrackside(GltfBuilder& b, std::vector<int>* roots) {
     pole.box({0.6f, 2.45f, -0.5f}, {0.66f, 4.0f, -0.44f});
     MeshData flag;
     flag.box({0.66f, 3.4f, -0.49f}, {1.3f, 3.95f, -0.45f}, true);
-    const int post = b.mesh("marshal_post", {{hut, whiteMat}, {band, orangeMat}, {pole, steelMat}, {flag, yellowMat}});
+    const int post = b.mesh("marshal_post", {{hut, kPaintWhite}, {band, kPaintOrange}, {pole, kSteel}, {flag, kPaintYellow}});
     const float postsX[] = {-80.0f, -35.0f, 55.0f, 100.0f};
     for (size_t i = 0; i < std::size(postsX); ++i)
         roots->push_back(b.node("marshal_post_" + std::to_string(i), post, {postsX[i], 0.0f, 11.5f}));
@@ -77,8 +69,8 @@ void buildTrackside(GltfBuilder& b, std::vector<int>* roots) {
     const float boardsX[] = {-130.0f, -110.0f, -90.0f, -70.0f, 34.0f, 130.0f};
     for (size_t i = 0; i < std::size(boardsX); ++i)
         board(&boardPanels[i % 3], &boardLegs, {boardsX[i], 0.0f, -11.0f}, 6.0f, 1.3f, 0.5f, false);
-    roots->push_back(b.node("boards", b.mesh("boards", {{boardPanels[0], yellowMat}, {boardPanels[1], redMat},
-                                                        {boardPanels[2], whiteMat}, {boardLegs, steelMat}}),
+    roots->push_back(b.node("boards", b.mesh("boards", {{boardPanels[0], kPaintYellow}, {boardPanels[1], kPaintRed},
+                                                        {boardPanels[2], kPaintWhite}, {boardLegs, kSteel}}),
                             vec3(0)));
 
     // Braking boards before the burnout zone: 3, 2, 1 dark bars on white, facing the cars (-X).
@@ -92,7 +84,7 @@ void buildTrackside(GltfBuilder& b, std::vector<int>* roots) {
         }
     }
     roots->push_back(b.node("braking_boards",
-                            b.mesh("braking_boards", {{markers, whiteMat}, {bars, darkMat}, {markerLegs, steelMat}}),
+                            b.mesh("braking_boards", {{markers, kPaintWhite}, {bars, kPanelDark}, {markerLegs, kSteel}}),
                             vec3(0)));
 
     // A small grandstand behind the right wall: five tiers, rows of seats, a roof on six posts.
@@ -111,7 +103,7 @@ void buildTrackside(GltfBuilder& b, std::vector<int>* roots) {
                           {-12.5f, 6.0f, 21.8f}, {28.5f, 6.0f, 21.8f}, {28.5f, 6.2f, 21.8f}, {-12.5f, 6.2f, 21.8f}};
     roof.hexa(slab);
     roots->push_back(b.node(
-        "grandstand", b.mesh("grandstand", {{tiers, concreteMat}, {seats, seatMat}, {roof, whiteMat}}), vec3(0)));
+        "grandstand", b.mesh("grandstand", {{tiers, kStandConcrete}, {seats, kStandSeats}, {roof, kPaintWhite}}), vec3(0)));
 
     // A start gantry across the track at x = 45: two posts, a beam, a dark panel with red lights.
     MeshData frame, panel, lights;
@@ -123,14 +115,14 @@ void buildTrackside(GltfBuilder& b, std::vector<int>* roots) {
         lights.box({44.55f, 4.6f, z - 0.2f}, {44.6f, 5.0f, z + 0.2f}, true);
     }
     roots->push_back(
-        b.node("gantry", b.mesh("gantry", {{frame, steelMat}, {panel, darkMat}, {lights, redMat}}), vec3(0)));
+        b.node("gantry", b.mesh("gantry", {{frame, kSteel}, {panel, kPanelDark}, {lights, kPaintRed}}), vec3(0)));
 
     // Cones along the left kerb at the exit of the run-off: orange with a white band.
     MeshData cone, coneBand;
     cone.frustum({0, 0, 0}, 0.16f, 0.09f, 0.30f, 12);
     coneBand.frustum({0, 0.30f, 0}, 0.09f, 0.075f, 0.08f, 12);
     cone.frustum({0, 0.38f, 0}, 0.075f, 0.0f, 0.14f, 12);
-    const int coneMesh = b.mesh("cone", {{cone, orangeMat}, {coneBand, whiteMat}});
+    const int coneMesh = b.mesh("cone", {{cone, kPaintOrange}, {coneBand, kPaintWhite}});
     for (int k = 0; k < 6; ++k)
         roots->push_back(b.node("cone_" + std::to_string(k), coneMesh, {24.0f + 2.5f * float(k), 0.0f, -7.5f}));
 }

@@ -14,19 +14,13 @@
 #include "fxbench_summary.h"
 #include "fxbench_sweep.h"
 
+#include "apps/CommandLine.h"
+
 namespace {
 
 int runSingle(const fxbench::BenchOptions& o) {
     const fxbench::Scenario* sc = fxbench::findScenario(o.scenario);
-    fxbench::RunConfig cfg;
-    cfg.scenario = sc;
-    cfg.game = fxbench::gameOptions(*sc, o);
-    cfg.cameraQuads = fxbench::cameraQuads(*sc);
-    cfg.frames = o.frames;
-    cfg.rounds = o.rounds;
-    cfg.warmup = o.warmup;
-    cfg.errorFrames = o.errorFrames;
-    cfg.selected = o.modes;
+    fxbench::RunConfig cfg = fxbench::runConfig(*sc, o);
     cfg.imagesDir = o.imagesDir;
     cfg.progressLabel = o.scenario;
     std::string err;
@@ -63,15 +57,9 @@ int runSingle(const fxbench::BenchOptions& o) {
 
 int main(int argc, char** argv) {
     fxbench::BenchOptions options;
-    std::string error;
-    if (!fxbench::parseBenchOptions(argc, argv, &options, &error)) {
-        std::fprintf(stderr, "fxbench: %s\n%s", error.c_str(), fxbench::benchUsage().c_str());
-        return 2;
-    }
-    if (options.help) {
-        std::printf("%s", fxbench::benchUsage().c_str());
-        return 0;
-    }
+    const int exitNow = cube::parseCommandLine("fxbench", argc, argv, &fxbench::parseBenchOptions,
+                                               &fxbench::benchUsage, &options);
+    if (exitNow >= 0) return exitNow;
     if (options.integrators) {
         std::printf("%s", fxbench::integratorReport().c_str());
         return 0;

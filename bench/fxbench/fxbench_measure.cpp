@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "fxbench_depth.h"
+#include "fxbench_options.h"
 #include "render/FillRateProbe.h"
 #include "fxbench_stats.h"
 #include "game/Game.h"
@@ -302,6 +303,19 @@ private:
 };
 
 }  // namespace
+
+RunConfig runConfig(const Scenario& scenario, const BenchOptions& bench) {
+    RunConfig cfg;
+    cfg.scenario = &scenario;
+    cfg.game = gameOptions(scenario, bench);
+    cfg.cameraQuads = cameraQuads(scenario);
+    cfg.frames = bench.frames;
+    cfg.rounds = bench.rounds;
+    cfg.warmup = bench.warmup;
+    cfg.errorFrames = bench.errorFrames;
+    cfg.selected = bench.modes;
+    return cfg;
+}
 
 std::vector<const Mode*> measuredModes(const std::vector<std::string>& selected) {
     std::vector<const Mode*> out;

@@ -56,6 +56,10 @@ struct RunResult {
     int glErrors = 0;
 };
 
+/// The run of `scenario` that `bench` asks for: its game options, overdraw panels, frame counts
+/// and modes; no images, no progress label.
+RunConfig runConfig(const Scenario& scenario, const BenchOptions& bench);
+
 /// The modes a run measures for `selected`: those plus nofx (coverage), hard (ratio base) and
 /// each selected mode's reference, in table order.
 std::vector<const Mode*> measuredModes(const std::vector<std::string>& selected);

@@ -161,15 +161,7 @@ int runSweep(const BenchOptions& options) {
             p.label = std::to_string(bo.width) + "x" + std::to_string(bo.height);
             p.work = double(bo.width) * double(bo.height) / 1e6;
         }
-        RunConfig cfg;
-        cfg.scenario = &sc;
-        cfg.game = gameOptions(sc, bo);
-        cfg.cameraQuads = cameraQuads(sc);
-        cfg.frames = bo.frames;
-        cfg.rounds = bo.rounds;
-        cfg.warmup = bo.warmup;
-        cfg.errorFrames = bo.errorFrames;
-        cfg.selected = bo.modes;
+        RunConfig cfg = runConfig(sc, bo);
         cfg.progressLabel = std::string(sc.name) + " sweep " + p.label;
         RunResult result;
         std::string err;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "apps/CommandLine.h"
 #include "game/Game.h"
 #include "gl/Gl.h"
 #include "gl/Image.h"
@@ -32,15 +33,9 @@ void installStopHandlers() {
 
 int main(int argc, char** argv) {
     cube::Options options;
+    const int exitNow = cube::parseCommandLine("cube_game", argc, argv, &cube::parseOptions, &cube::usage, &options);
+    if (exitNow >= 0) return exitNow;
     std::string error;
-    if (!cube::parseOptions(argc, argv, &options, &error)) {
-        std::fprintf(stderr, "cube_game: %s\n%s", error.c_str(), cube::usage().c_str());
-        return 2;
-    }
-    if (options.help) {
-        std::printf("%s", cube::usage().c_str());
-        return 0;
-    }
     installStopHandlers();
     cube::Game game;
     if (!game.Init(options, &error)) {

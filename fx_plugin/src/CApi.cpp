@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "CApiEntries.h"
+#include "fx/detail/Counters.h"
 #include "../reactions/ReactionDesc.h"
 #include "../render/PrivateGlLoader.h"
 #include "WorldBasis.h"
@@ -240,15 +241,10 @@ int reactionParticlesAlive(const fxPlugin* p, int index) {
 // The ...2 entries fill this library's sized struct and copy the host's size of it; the 2.0
 // entries copy the same values into the 2.0 layout, whole, as 2.0 did.
 fxReactionStats2 reactionStatsOf(const fxPlugin* p, int index) {
-    fxReactionStats2 c;
-    std::memset(&c, 0, sizeof c);
-    c.size = sizeof c;
     const ReactionStats s = impl(p).reactionStats(index);
+    fxReactionStats2 c = detail::withReactionCounts(s, fxDescInit_<fxReactionStats2>());
     copyOut(s.name, c.name, sizeof c.name);
     copyOut(s.technique, c.technique, sizeof c.technique);
-    c.alive = s.alive;
-    c.emitted = s.emitted;
-    c.dropped = s.dropped;
     return c;
 }
 int reactionStats(const fxPlugin* p, int index, fxReactionStats* out) {
@@ -336,63 +332,27 @@ int fireReaction(fxPlugin* p, const char* name, const float point[3]) {
     return code(impl(p).fireReaction(name, toPluginWorld(p->up, glm::vec3(point[0], point[1], point[2]))));
 }
 
-fxStats2 statsOf(const fxPlugin* p) {
-    const Stats s = impl(p).stats();
-    fxStats2 c;
-    std::memset(&c, 0, sizeof c);
-    c.size = sizeof c;
-    c.reactions = s.reactions;
-    c.particlesAlive = s.particlesAlive;
-    c.particleCapacity = s.particleCapacity;
-    c.particlesDrawn = s.particlesDrawn;
-    c.reloads = s.reloads;
-    c.reloadErrors = s.reloadErrors;
-    c.apiErrors = s.apiErrors;
-    return c;
-}
+fxStats2 statsOf(const fxPlugin* p) { return detail::withStats(impl(p).stats(), fxDescInit_<fxStats2>()); }
 void stats(const fxPlugin* p, fxStats* out) {
-    if (!usable(p, "stats")) return;
-    if (!out) {
-        refuse(p, ErrorCode::NullArgument, "stats", "out is null");
-        return;
-    }
-    const fxStats2 c = statsOf(p);
-    *out = fxStats{c.reactions, c.particlesAlive, c.particleCapacity, c.particlesDrawn, c.reloads, c.reloadErrors,
-                   c.apiErrors};
+    if (outSet(p, out, "stats")) *out = detail::withStats(impl(p).stats(), fxStats());
 }
-int stats2(const fxPlugin* p, fxStats2* out) {
-    if (!usable(p, "stats2")) return handleError(p);
-    int error = FX_ERROR_NONE;
-    if (!outUsable(p, out, "fxStats2", "stats2", &error)) return error;
-    writeOut(out, statsOf(p), out->size);
-    return FX_ERROR_NONE;
-}
+int stats2(const fxPlugin* p, fxStats2* out) { return writeOf(p, out, "fxStats2", "stats2", statsOf); }
 
 fxParticleCheck2 checkOf(const fxPlugin* p) {
     const ParticleCheck k = impl(p).checkParticles();
-    fxParticleCheck2 c;
-    std::memset(&c, 0, sizeof c);
-    c.size = sizeof c;
+    fxParticleCheck2 c = fxDescInit_<fxParticleCheck2>();
     c.alive = k.alive;
     c.capacity = k.capacity;
     c.nonFinite = k.nonFinite;
     return c;
 }
 void checkParticles(const fxPlugin* p, fxParticleCheck* out) {
-    if (!usable(p, "checkParticles")) return;
-    if (!out) {
-        refuse(p, ErrorCode::NullArgument, "checkParticles", "out is null");
-        return;
-    }
+    if (!outSet(p, out, "checkParticles")) return;
     const fxParticleCheck2 c = checkOf(p);
     *out = fxParticleCheck{c.alive, c.capacity, c.nonFinite};
 }
 int checkParticles2(const fxPlugin* p, fxParticleCheck2* out) {
-    if (!usable(p, "checkParticles2")) return handleError(p);
-    int error = FX_ERROR_NONE;
-    if (!outUsable(p, out, "fxParticleCheck2", "checkParticles2", &error)) return error;
-    writeOut(out, checkOf(p), out->size);
-    return FX_ERROR_NONE;
+    return writeOf(p, out, "fxParticleCheck2", "checkParticles2", checkOf);
 }
 
 const fxApi kApi = {

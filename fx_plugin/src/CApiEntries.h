@@ -79,6 +79,17 @@ bool outUsable(const fxPlugin* p, const Out* out, const char* type, const char* 
     return true;
 }
 
+/// The first check of an entry that returns nothing and writes *out (the getters of 2.0):
+/// `p` usable and `out` set. Else the refusal is logged under `function` and nothing written.
+inline bool outSet(const fxPlugin* p, const void* out, const char* function) {
+    if (!usable(p, function)) return false;
+    if (!out) {
+        refuse(p, ErrorCode::NullArgument, function, "out is null");
+        return false;
+    }
+    return true;
+}
+
 /// Writes the first `bytes` of `full` (this library's struct) into the host's `out`, its size
 /// kept: `bytes` is the host's size where the library knows it, so a host built against an older
 /// minor gets the fields it knows and nothing past its struct.
@@ -87,6 +98,17 @@ void writeOut(Out* out, const Out& full, size_t bytes) {
     const uint32_t size = out->size;
     std::memcpy(out, &full, bytes < sizeof full ? bytes : sizeof full);
     out->size = size;
+}
+
+/// A ...2 entry that cannot fail once `p` and `out` pass their checks: writes `of(p)` into
+/// *out (writeOut), or returns the refusal's code.
+template <class Out>
+int writeOf(const fxPlugin* p, Out* out, const char* type, const char* function, Out (*of)(const fxPlugin*)) {
+    if (!usable(p, function)) return handleError(p);
+    int error = FX_ERROR_NONE;
+    if (!outUsable(p, out, type, function, &error)) return error;
+    writeOut(out, of(p), out->size);
+    return FX_ERROR_NONE;
 }
 
 /// Copies `s` snprintf-style; returns its length.

@@ -1,7 +1,6 @@
 // The C boundary's options (fx/fx.h, "Options"): fxRenderOptions, the 2.0 setters kept for 2.0
 // hosts, and the scene light.
 #include <cstddef>
-#include <cstring>
 #include <string>
 
 #include "CApiEntries.h"
@@ -55,15 +54,9 @@ int setRenderOptions(fxPlugin* p, const fxRenderOptions* o) {
     return code(impl(p).setParticleShape(static_cast<ParticleShape>(full.particleShape)));
 }
 void getRenderOptions(const fxPlugin* p, fxRenderOptions* out) {
-    if (!usable(p, "getRenderOptions")) return;
-    if (!out) {
-        refuse(p, ErrorCode::NullArgument, "getRenderOptions", "out is null");
-        return;
-    }
+    if (!outSet(p, out, "getRenderOptions")) return;
     const RenderOptions r = impl(p).renderOptions();
-    fxRenderOptions full;
-    std::memset(&full, 0, sizeof full);
-    full.size = sizeof full;
+    fxRenderOptions full = fxDescInit_<fxRenderOptions>();
     full.techniqueOverride = static_cast<int>(r.techniqueOverride);
     full.quarterRes = r.quarterRes ? 1 : 0;
     full.bilinearUpsample = r.bilinearUpsample ? 1 : 0;
@@ -97,11 +90,7 @@ int setFadeClassCounting(fxPlugin* p, fxBool on) {
     return code(impl(p).setFadeClassCounting(on != 0));
 }
 void fadeClassCounts(const fxPlugin* p, fxFadeClassCounts* out) {
-    if (!usable(p, "fadeClassCounts")) return;
-    if (!out) {
-        refuse(p, ErrorCode::NullArgument, "fadeClassCounts", "out is null");
-        return;
-    }
+    if (!outSet(p, out, "fadeClassCounts")) return;
     const FadeClassCounts c = impl(p).fadeClassCounts();
     *out = fxFadeClassCounts{c.fadeNeeded, c.inFront, c.hidden, c.counted ? 1 : 0};
 }

@@ -37,9 +37,7 @@ struct MakeIndexSequence<0, I...> {
 
 class PassContextBridge {
 public:
-    explicit PassContextBridge(PassContext& ctx) : ctx_(ctx) {
-        std::memset(&c_, 0, sizeof c_);
-        c_.size = sizeof c_;
+    explicit PassContextBridge(PassContext& ctx) : ctx_(ctx), c_(fxDescInit_<fxPassContext>()) {
         c_.user = this;
         c_.bindForDraw = [](void* u, uint32_t t) { self(u).bindForDraw(targetFrom(t)); };
         c_.texture = [](void* u, uint32_t t, int attachment, fxTextureRef* out) {
@@ -100,9 +98,7 @@ void addPassReads(FrameBuilder& f, const char* name, const uint32_t* reads, cons
 
 class FrameBridge {
 public:
-    explicit FrameBridge(FrameBuilder& frame) : frame_(frame) {
-        std::memset(&c_, 0, sizeof c_);
-        c_.size = sizeof c_;
+    explicit FrameBridge(FrameBuilder& frame) : frame_(frame), c_(fxDescInit_<fxFrameBuilder>()) {
         c_.user = this;
         c_.sceneColor = [](void* u) { return self(u).sceneColor().id; };
         c_.sceneDepth = [](void* u) { return self(u).sceneDepth().id; };

@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "fx/detail/Counters.h"
 #include "fx/detail/FrameBridge.h"
 
 namespace fx {
@@ -38,9 +39,7 @@ inline glm::mat4 matFrom(const float in[16]) {
 }
 
 inline fxViewDesc viewToC(const ViewInfo& v) {
-    fxViewDesc c;
-    std::memset(&c, 0, sizeof c);
-    c.size = sizeof c;
+    fxViewDesc c = fxDescInit_<fxViewDesc>();
     c.name = v.name;
     copyMat(c.view, v.view);
     copyMat(c.proj, v.proj);
@@ -150,9 +149,7 @@ struct HostTrampolines {
         out[0] = v.x, out[1] = v.y, out[2] = v.z;
     }
     static fxHostCallbacks make(HostAdapter* host) {
-        fxHostCallbacks c;
-        std::memset(&c, 0, sizeof c);
-        c.size = sizeof c;
+        fxHostCallbacks c = fxDescInit_<fxHostCallbacks>();
         c.user = host;
         c.getProcAddress = &getProcAddress;
         c.log = &log;
@@ -203,9 +200,7 @@ public:
         return static_cast<ErrorCode>(api_->setRenderOptions(p_, &c));
     }
     RenderOptions renderOptions() const override {
-        fxRenderOptions c;
-        std::memset(&c, 0, sizeof c);
-        c.size = sizeof c;
+        fxRenderOptions c = fxDescInit_<fxRenderOptions>();
         api_->getRenderOptions(p_, &c);
         RenderOptions o;
         o.techniqueOverride = static_cast<Technique>(c.techniqueOverride);
@@ -223,22 +218,9 @@ public:
         FrameBridge bridge(frame);
         return static_cast<ErrorCode>(api_->declarePasses(p_, &v, bridge.c()));
     }
-    Stats stats() const override {
-        fxStats2 c = fxDescInit_<fxStats2>();
-        api_->stats2(p_, &c);
-        Stats s;
-        s.reactions = c.reactions;
-        s.particlesAlive = c.particlesAlive;
-        s.particleCapacity = c.particleCapacity;
-        s.particlesDrawn = c.particlesDrawn;
-        s.reloads = c.reloads;
-        s.reloadErrors = c.reloadErrors;
-        s.apiErrors = c.apiErrors;
-        return s;
-    }
+    Stats stats() const override { return withStats(fetch(api_->stats2), Stats()); }
     ParticleCheck checkParticles() const override {
-        fxParticleCheck2 c = fxDescInit_<fxParticleCheck2>();
-        api_->checkParticles2(p_, &c);
+        const fxParticleCheck2 c = fetch(api_->checkParticles2);
         ParticleCheck k;
         k.alive = c.alive;
         k.capacity = c.capacity;
@@ -302,12 +284,9 @@ public:
     ReactionStats reactionStats(int index) const override {
         fxReactionStats2 c = fxDescInit_<fxReactionStats2>();
         api_->reactionStats2(p_, index, &c);
-        ReactionStats s;
+        ReactionStats s = withReactionCounts(c, ReactionStats());
         s.name = c.name;
         s.technique = c.technique;
-        s.alive = c.alive;
-        s.emitted = c.emitted;
-        s.dropped = c.dropped;
         return s;
     }
     ErrorCode fireReaction(const std::string& name, const glm::vec3& point) override {
@@ -315,9 +294,7 @@ public:
         return static_cast<ErrorCode>(api_->fireReaction(p_, name.c_str(), p));
     }
     ErrorCode setSceneLight(const SceneLight& light) override {
-        fxSceneLight c;
-        std::memset(&c, 0, sizeof c);
-        c.size = sizeof c;
+        fxSceneLight c = fxDescInit_<fxSceneLight>();
         for (int k = 0; k < 3; ++k) {
             c.toSun[k] = light.toSun[k];
             c.sunColor[k] = light.sunColor[k];
@@ -369,6 +346,14 @@ public:
     }
 
 private:
+    /// The sized struct one of the table's ...2 getters writes.
+    template <class Out>
+    Out fetch(int (*get)(const fxPlugin*, Out*)) const {
+        Out c = fxDescInit_<Out>();
+        get(p_, &c);
+        return c;
+    }
+
     const fxApi* api_;
     fxPlugin* p_;
 };
@@ -397,9 +382,7 @@ inline std::unique_ptr<fx::Plugin> fxCreatePlugin(const fx::PluginImports& impor
     uint32_t want = imports.apiVersion;
     if (fx::apiVersionMajor(want) == 1 && want <= fx::kLastApiVersion1) want = fx::kApiVersion;
     fxHostCallbacks callbacks = fx::detail::HostTrampolines::make(imports.host);
-    fxPluginDesc desc;
-    std::memset(&desc, 0, sizeof desc);
-    desc.size = sizeof desc;
+    fxPluginDesc desc = fxDescInit_<fxPluginDesc>();
     desc.apiVersion = want;
     desc.host = imports.host ? &callbacks : nullptr;
     desc.shaderDir = imports.shaderDir.c_str();
