@@ -24,9 +24,9 @@
 //     the view alone, one of another size the whole framebuffer with the view at the viewport's
 //     origin (it must cover the view, else SizeMismatch).
 //
-// How close its images come to the frame-graph path's, and what the depth source costs, is
-// measured in tests/fx_host/ImmediateRendererTest.cpp; the figures are in docs/results.md
-// (session 12).
+// How close its images come to the frame-graph path's is measured in
+// tests/fx_host/ImmediateRendererTest.cpp, what the depth source costs in ImmediateFrameTest.cpp;
+// the figures are in docs/results.md (session 12).
 #include <cstdint>
 #include <string>
 #include <vector>
