@@ -68,6 +68,89 @@ void tileRuns(ScreenTiles* tiles, int tilesX, int tilesY, int w, int h) {
     }
 }
 
+// One particle's footprint on screen, in pixels ([x0, x1] x [y0, y1], unclipped), or why there
+// is none.
+struct Bounds {
+    enum State : int { Bounded, Behind, Unbounded };
+    float x0, x1, y0, y1;
+    int state;
+};
+constexpr int kChunk = 256;
+
+// The per-particle arithmetic of screenRect, for one view and footprint kind.
+struct FootprintMath {
+    glm::mat4 V, P;
+    float nearPlane;
+    int w, h;
+    bool flat;
+    FootprintMath(const ViewInfo& view, bool flatFootprint)
+        : V(view.view), P(view.proj), nearPlane(view.nearPlane), w(view.width), h(view.height), flat(flatFootprint) {}
+
+    glm::vec3 centre(const ParticleInstance& p) const {
+        return glm::vec3(V[0][0] * p.x + V[1][0] * p.y + V[2][0] * p.z + V[3][0],
+                         V[0][1] * p.x + V[1][1] * p.y + V[2][1] * p.z + V[3][1],
+                         V[0][2] * p.x + V[1][2] * p.y + V[2][2] * p.z + V[3][2]);
+    }
+    // Non-finite (no bound to trust) or reaching the near plane: Unbounded; wholly behind it:
+    // Behind. A billboard lies in the view plane through its centre: no depth extent.
+    int state(const glm::vec3& c, float radius, float depthExtent) const {
+        const bool finite = std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(radius);
+        if (!finite) return Bounds::Unbounded;
+        if (c.z - depthExtent >= -nearPlane) return Bounds::Behind;
+        return c.z + depthExtent >= -nearPlane ? Bounds::Unbounded : Bounds::Bounded;
+    }
+    Bounds pixels(const float plo[2], const float phi[2], int state) const {
+        return Bounds{toPixel(plo[0], w), toPixel(phi[0], w), toPixel(plo[1], h), toPixel(phi[1], h), state};
+    }
+
+    // Under a perspective projection (plainPerspective): ndc.x = (P00 x + P30) / -z - P20, monotone
+    // in x and in 1/-z, so the extremes lie at the corners (x +- r, z +- e) and two reciprocals
+    // bound all eight (y likewise); a billboard has one depth, one reciprocal.
+    template <bool Flat>
+    Bounds perspective(const ParticleInstance& p) const {
+        const glm::vec3 c = centre(p);
+        const float radius = 0.71f * p.size;
+        const float depthExtent = Flat ? 0.0f : radius;
+        const float nearInv = 1.0f / -(c.z + depthExtent), farInv = Flat ? nearInv : 1.0f / -(c.z - depthExtent);
+        float plo[2], phi[2];
+        for (int a = 0; a < 2; ++a) {
+            const float lowEdge = P[a][a] * (c[a] - radius) + P[3][a];
+            const float highEdge = P[a][a] * (c[a] + radius) + P[3][a];
+            if (Flat) {
+                plo[a] = lowEdge * nearInv - P[2][a];
+                phi[a] = highEdge * nearInv - P[2][a];
+            } else {
+                plo[a] = std::min(lowEdge * nearInv, lowEdge * farInv) - P[2][a];
+                phi[a] = std::max(highEdge * nearInv, highEdge * farInv) - P[2][a];
+            }
+        }
+        return pixels(plo, phi, state(c, radius, depthExtent));
+    }
+
+    // Any other projection: the footprint's corners (8, or 4 for a flat square) projected.
+    Bounds general(const ParticleInstance& p) const {
+        const glm::vec3 c = centre(p);
+        const float radius = 0.71f * p.size;
+        const float depthExtent = flat ? 0.0f : radius;
+        const int st = state(c, radius, depthExtent);
+        float plo[2] = {1e30f, 1e30f}, phi[2] = {-1e30f, -1e30f};
+        if (st == Bounds::Bounded) {
+            const int corners = depthExtent > 0.0f ? 8 : 4;
+            for (int corner = 0; corner < corners; ++corner) {
+                const glm::vec3 q = c + glm::vec3(corner & 1 ? radius : -radius, corner & 2 ? radius : -radius,
+                                                  corner & 4 ? depthExtent : -depthExtent);
+                const glm::vec4 clip = P * glm::vec4(q, 1.0f);
+                for (int a = 0; a < 2; ++a) {
+                    const float ndc = clip[a] / clip.w;
+                    plo[a] = std::min(plo[a], ndc);
+                    phi[a] = std::max(phi[a], ndc);
+                }
+            }
+        }
+        return pixels(plo, phi, st);
+    }
+};
+
 }  // namespace
 
 ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, int count, ScreenTiles* tiles,
@@ -91,71 +174,37 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
         r.footprintPixels = std::numeric_limits<double>::infinity();  // unbounded: the near plane, or no bound
         return r;  // whole = true
     };
-    const glm::mat4& V = view.view;
     const glm::mat4& P = view.proj;
-    const bool perspective = plainPerspective(P);
     const bool flat = footprint == Footprint::Billboard;
-    float lo[2] = {1e30f, 1e30f}, hi[2] = {-1e30f, -1e30f};
+    const FootprintMath math(view, flat);
+    float lo[2] = {1e30f, 1e30f}, hi[2] = {-1e30f, -1e30f};  // in pixels (toPixel is monotone)
     double boxPixels = 0.0;  // r.footprintPixels, summed in a register
     bool any = false;
-    for (int i = 0; i < count; ++i) {
-        const ParticleInstance& p = instances[i];
-        const glm::vec3 c(V[0][0] * p.x + V[1][0] * p.y + V[2][0] * p.z + V[3][0],
-                          V[0][1] * p.x + V[1][1] * p.y + V[2][1] * p.z + V[3][1],
-                          V[0][2] * p.x + V[1][2] * p.y + V[2][2] * p.z + V[3][2]);
-        const float radius = 0.71f * p.size;
-        // A billboard lies in the view plane through its centre: its square, no depth extent.
-        const float depthExtent = flat ? 0.0f : radius;
-        if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) || !std::isfinite(radius)) {
-            return wholeView();  // no bound to trust
-        }
-        if (c.z - depthExtent >= -view.nearPlane) continue;      // wholly behind the near plane: clipped
-        if (c.z + depthExtent >= -view.nearPlane) return wholeView();  // reaches the near plane
-        float plo[2], phi[2];
-        if (perspective) {
-            // ndc.x = (P00 x + P30) / -z - P20, monotone in x and in 1/-z: the extremes lie at the
-            // corners (x +- r, z +- e), so two reciprocals bound all eight (y likewise).
-            // A billboard has one depth: one reciprocal, and the edges keep their order.
-            const float nearInv = 1.0f / -(c.z + depthExtent), farInv = flat ? nearInv : 1.0f / -(c.z - depthExtent);
-            for (int a = 0; a < 2; ++a) {
-                const float lowEdge = P[a][a] * (c[a] - radius) + P[3][a];
-                const float highEdge = P[a][a] * (c[a] + radius) + P[3][a];
-                if (flat) {
-                    plo[a] = lowEdge * nearInv - P[2][a];
-                    phi[a] = highEdge * nearInv - P[2][a];
-                } else {
-                    plo[a] = std::min(lowEdge * nearInv, lowEdge * farInv) - P[2][a];
-                    phi[a] = std::max(highEdge * nearInv, highEdge * farInv) - P[2][a];
-                }
-            }
+    Bounds b[kChunk];
+    for (int first = 0; first < count; first += kChunk) {
+        const int n = std::min(kChunk, count - first);
+        // The arithmetic first, for a chunk at a time, with no branch on the particle; then what
+        // each bound means, in order.
+        if (!plainPerspective(P)) {
+            for (int j = 0; j < n; ++j) b[j] = math.general(instances[first + j]);
+        } else if (flat) {
+            for (int j = 0; j < n; ++j) b[j] = math.perspective<true>(instances[first + j]);
         } else {
-            plo[0] = plo[1] = 1e30f;
-            phi[0] = phi[1] = -1e30f;
-            const int corners = depthExtent > 0.0f ? 8 : 4;  // a flat square has 4
-            for (int corner = 0; corner < corners; ++corner) {
-                const glm::vec3 q = c + glm::vec3(corner & 1 ? radius : -radius, corner & 2 ? radius : -radius,
-                                                  corner & 4 ? depthExtent : -depthExtent);
-                const glm::vec4 clip = P * glm::vec4(q, 1.0f);
-                for (int a = 0; a < 2; ++a) {
-                    const float ndc = clip[a] / clip.w;
-                    plo[a] = std::min(plo[a], ndc);
-                    phi[a] = std::max(phi[a], ndc);
-                }
-            }
+            for (int j = 0; j < n; ++j) b[j] = math.perspective<false>(instances[first + j]);
         }
-        for (int a = 0; a < 2; ++a) {
-            lo[a] = std::min(lo[a], plo[a]);
-            hi[a] = std::max(hi[a], phi[a]);
-        }
-        any = true;
-        const float px0 = toPixel(plo[0], w), px1 = toPixel(phi[0], w);
-        const float py0 = toPixel(plo[1], h), py1 = toPixel(phi[1], h);
-        {
-            const float cx0 = std::max(0.0f, px0), cx1 = std::min(float(w), px1);
-            const float cy0 = std::max(0.0f, py0), cy1 = std::min(float(h), py1);
+        for (int j = 0; j < n; ++j) {
+            const Bounds& q = b[j];
+            if (q.state == Bounds::Unbounded) return wholeView();  // no bound to trust, or at the near plane
+            if (q.state == Bounds::Behind) continue;                // wholly behind the near plane: clipped
+            lo[0] = std::min(lo[0], q.x0);
+            lo[1] = std::min(lo[1], q.y0);
+            hi[0] = std::max(hi[0], q.x1);
+            hi[1] = std::max(hi[1], q.y1);
+            any = true;
+            const float cx0 = std::max(0.0f, q.x0), cx1 = std::min(float(w), q.x1);
+            const float cy0 = std::max(0.0f, q.y0), cy1 = std::min(float(h), q.y1);
             if (cx1 > cx0 && cy1 > cy0) boxPixels += double(cx1 - cx0) * double(cy1 - cy0);
-        }
-        if (tiles && tilesX > 0 && tilesY > 0) {
+            if (!tiles || tilesX <= 0 || tilesY <= 0) continue;
             // The particle's pixels grown by the border, as a tile range clamped to the view (the
             // float clamp first: a bound far off screen must not overflow the int; clamped to 0
             // and up, truncation is the floor).
@@ -163,9 +212,9 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
                 const float t = (pixel + float(border)) * (1.0f / float(kTileSize));  // exact: a power of two
                 return int(std::min(std::max(t, 0.0f), float(tileCount - 1)));
             };
-            if (px1 < -kTileBorder || py1 < -kTileBorder || px0 > w + kTileBorder || py0 > h + kTileBorder) continue;
-            markTiles(tiles->grid, tilesX, tileOf(px0, -kTileBorder, tilesX), tileOf(px1, kTileBorder, tilesX),
-                      tileOf(py0, -kTileBorder, tilesY), tileOf(py1, kTileBorder, tilesY));
+            if (q.x1 < -kTileBorder || q.y1 < -kTileBorder || q.x0 > w + kTileBorder || q.y0 > h + kTileBorder) continue;
+            markTiles(tiles->grid, tilesX, tileOf(q.x0, -kTileBorder, tilesX), tileOf(q.x1, kTileBorder, tilesX),
+                      tileOf(q.y0, -kTileBorder, tilesY), tileOf(q.y1, kTileBorder, tilesY));
         }
     }
     r.footprintPixels = boxPixels;
@@ -173,11 +222,11 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
         r.whole = false;  // nothing in front of the camera: an empty rect, no tiles
         return r;
     }
-    // NDC to pixels, one pixel of slack for rasterisation rules, clamped to the view.
-    r.x0 = std::max(0, int(std::floor(toPixel(lo[0], w))) - 1);
-    r.y0 = std::max(0, int(std::floor(toPixel(lo[1], h))) - 1);
-    r.x1 = std::min(w, int(std::ceil(toPixel(hi[0], w))) + 1);
-    r.y1 = std::min(h, int(std::ceil(toPixel(hi[1], h))) + 1);
+    // One pixel of slack for rasterisation rules, clamped to the view.
+    r.x0 = std::max(0, int(std::floor(lo[0])) - 1);
+    r.y0 = std::max(0, int(std::floor(lo[1])) - 1);
+    r.x1 = std::min(w, int(std::ceil(hi[0])) + 1);
+    r.y1 = std::min(h, int(std::ceil(hi[1])) + 1);
     if (r.x1 <= r.x0 || r.y1 <= r.y0) {
         r.x0 = r.x1 = r.y0 = r.y1 = 0;
         r.whole = false;
