@@ -89,6 +89,7 @@ namespace {
 // API 2.0's fxPluginDesc ended with seed; 2.1 appended upAxis. A 2.0 host's descriptor is read up
 // to its size, the rest as 0.
 constexpr size_t kPluginDescSize20 = offsetof(fxPluginDesc, upAxis);
+constexpr size_t kHostCallbacksSize21 = offsetof(fxHostCallbacks, parallelFor);  // 2.0 and 2.1
 
 // ---- creation -----------------------------------------------------------------------------------
 
@@ -121,8 +122,9 @@ fxPlugin* create(const fxPluginDesc* desc, int* error) {
     }
     if (!desc->host) return fail(ErrorCode::NullArgument, "PluginImports::host is null; expected the host's HostAdapter");
     const fxHostCallbacks& h = *desc->host;
-    if (!knownSize(h.size, sizeof(fxHostCallbacks))) {
-        return fail(ErrorCode::BadDescriptor, sizeProblem("fxHostCallbacks", h.size, sizeof(fxHostCallbacks)));
+    if (!knownSize(h.size, sizeof(fxHostCallbacks), kHostCallbacksSize21)) {
+        return fail(ErrorCode::BadDescriptor,
+                    sizeProblem("fxHostCallbacks", h.size, sizeof(fxHostCallbacks), kHostCallbacksSize21));
     }
     if (h.log) logHost = &h;
     if (!h.getProcAddress || !h.log) {
@@ -135,7 +137,7 @@ fxPlugin* create(const fxPluginDesc* desc, int* error) {
         return fail(ErrorCode::InvalidValue,
                     "fxPluginDesc::upAxis = " + std::to_string(full.upAxis) + "; expected FX_UP_Y (0) or FX_UP_Z (1)");
     }
-    auto plugin = std::make_unique<fxPlugin>(h, full.upAxis == FX_UP_Z ? UpAxis::Z : UpAxis::Y);
+    auto plugin = std::make_unique<fxPlugin>(fullDesc(h), full.upAxis == FX_UP_Z ? UpAxis::Z : UpAxis::Y);
     PluginImports imports;
     imports.apiVersion = kApiVersion;
     imports.host = &plugin->host;

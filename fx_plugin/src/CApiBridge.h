@@ -13,6 +13,7 @@ namespace fx {
 /// fxHostCallbacks (copied at creation) as a HostAdapter.
 class CHostAdapter final : public HostAdapter {
 public:
+    /// `c`: read up to its size (a 2.0/2.1 host's ends before parallelFor, which stays null).
     /// `up`: the host world's up axis; every vector read from the callbacks is turned into the
     /// plugin's Y-up world (WorldBasis.h).
     explicit CHostAdapter(const fxHostCallbacks& c, UpAxis up = UpAxis::Y) : c_(c), up_(up) {}
@@ -23,6 +24,13 @@ public:
     glm::vec3 wind() const override;
     glm::vec3 collisionPoint() const override;
     void log(LogLevel level, const char* message) override { c_.log(c_.user, static_cast<int>(level), message); }
+    void parallelFor(uint32_t count, Task task, void* data) override {
+        if (c_.parallelFor) {
+            c_.parallelFor(c_.user, count, task, data);
+        } else {
+            HostAdapter::parallelFor(count, task, data);
+        }
+    }
 
 private:
     fxHostCallbacks c_;

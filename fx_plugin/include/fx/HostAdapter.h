@@ -3,6 +3,7 @@
 // implements HostAdapter for the simulation side and FrameBuilder/PassContext for its
 // render-to-texture layer, then drives the plugin through fx/Plugin.h (which states the order of
 // calls, the GL context rules and the GL state the plugin touches).
+#include <cstdint>
 #include <functional>
 #include <initializer_list>
 
@@ -88,6 +89,20 @@ public:
     /// Messages from the plugin: load results, data errors ("file:line:col: error[Code] ..."),
     /// refused calls ("fx: error[Code] function: ...").
     virtual void log(LogLevel level, const char* message) = 0;
+    /// API 2.2. One piece of the plugin's work, handed to parallelFor.
+    using Task = void (*)(void* data, uint32_t index);
+    /// API 2.2. The host's job system: calls task(data, i) once for every i in [0, count), on
+    /// any of its threads, any number at once, and returns when every call has returned. A task
+    /// touches no GL and calls nothing of the host's or the plugin's; it only reads and writes
+    /// the plugin's own memory, in slices that do not overlap. The plugin asks for it while
+    /// declaring a view's passes (culling, sorting and bounding the particles), only for work of
+    /// thousands of particles and more, in at most kMaxTasks pieces; its results are the same
+    /// bit for bit however the host runs them. The default runs them in order on the calling
+    /// thread.
+    static constexpr uint32_t kMaxTasks = 64;
+    virtual void parallelFor(uint32_t count, Task task, void* data) {
+        for (uint32_t i = 0; i < count; ++i) task(data, i);
+    }
 };
 
 }  // namespace fx

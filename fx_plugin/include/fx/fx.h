@@ -81,7 +81,7 @@ extern "C" {
 #endif
 
 #define FX_API_VERSION_MAJOR 2
-#define FX_API_VERSION_MINOR 1
+#define FX_API_VERSION_MINOR 2
 #define FX_API_VERSION ((uint32_t)((FX_API_VERSION_MAJOR << 16) | FX_API_VERSION_MINOR))
 
 /* The ranges of numeric inputs (see each field and function). */
@@ -134,6 +134,13 @@ typedef struct fxHostCallbacks {
     void (*wheel)(void* user, int index, fxWheelContact* out);        /* null: no wheels */
     void (*wind)(void* user, float out[3]);                           /* null: still air */
     void (*collisionPoint)(void* user, float out[3]);                 /* null: the origin */
+    /* API 2.2 (a 2.0/2.1 size leaves it null). The host's job system: call task(data, i) once
+     * for every i in [0, count), on any threads, any number at once, and return when every call
+     * has returned. A task touches no GL and calls nothing of the host's or the plugin's; the
+     * plugin asks while declaring a view's passes, for work of thousands of particles, in at most
+     * 64 pieces, and its results do not depend on how they are run. null: in order on the
+     * calling thread. */
+    void (*parallelFor)(void* user, uint32_t count, void (*task)(void* data, uint32_t index), void* data);
 } fxHostCallbacks;
 
 typedef struct fxPluginDesc {

@@ -148,6 +148,9 @@ struct HostTrampolines {
         const glm::vec3 v = host(user).collisionPoint();
         out[0] = v.x, out[1] = v.y, out[2] = v.z;
     }
+    static void parallelFor(void* user, uint32_t count, void (*task)(void* data, uint32_t index), void* data) {
+        host(user).parallelFor(count, task, data);
+    }
     static fxHostCallbacks make(HostAdapter* host) {
         fxHostCallbacks c = fxDescInit_<fxHostCallbacks>();
         c.user = host;
@@ -157,6 +160,7 @@ struct HostTrampolines {
         c.wheel = &wheel;
         c.wind = &wind;
         c.collisionPoint = &collisionPoint;
+        c.parallelFor = &parallelFor;
         return c;
     }
 };
