@@ -1,11 +1,20 @@
 #include "DrawList.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "ViewFrustum.h"
 #include "reactions/TechniqueTable.h"
 
 namespace fx {
+namespace {
+
+// Particles per piece of the cull and the gather: enough that handing a piece to another thread
+// costs far less than the piece (about 20 ns a particle).
+constexpr size_t kCullGrain = 8192;
+
+}  // namespace
 
 Technique resolveTechnique(Technique override, Technique fromReaction) {
     const Technique t = override != Technique::FromReaction ? override : fromReaction;
@@ -14,7 +23,7 @@ Technique resolveTechnique(Technique override, Technique fromReaction) {
 
 void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, int batchCount,
                             Technique techniqueOverride, uint32_t usableTechniques,
-                            DrawList* out) {
+                            DrawList* out, const Jobs& jobs) {
     out->clear();
     if (batchCount <= 0) return;
     const ViewFrustum frustum(view.view, view.proj, view.nearPlane, view.farPlane);
@@ -48,45 +57,81 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
 
         // Cull first, in pool order (each stream read front to back), then sort what is drawn:
         // sorting the whole pool and gathering through its order read every stream at random.
-        // The radix sort is stable, so the order is the one sorting the pool would give.
+        // The radix sort is stable, so the order is the one sorting the pool would give. Each
+        // piece of the pool writes its visible particles at its own offset in culled_ (no piece
+        // waits for another); the pieces' counts then place them in the list, in pool order.
         DrawBatch batch;
         batch.first = static_cast<int>(out->instances.size());
         const bool sort = in.sortBackToFront;
-        std::vector<ParticleInstance>& drawn = sort ? culled_ : out->instances;
-        if (sort) {
-            // Sized for the whole pool once, as the sorter is: a frame that sees more of it than
-            // any before does not allocate.
-            culled_.clear();
-            depth_.clear();
-            culled_.reserve(size_t(pool.capacity()));
-            depth_.reserve(size_t(pool.capacity()));
-            sorter_.reserve(pool.capacity());
-        }
         const int alive = pool.alive();
-        for (int i = 0; i < alive; ++i) {
-            if (!(size[i] > 0.0f) || !(fade[i] > 0.0f)) continue;  // also drops NaN
-            if (!frustum.intersectsSphere(glm::vec3(x[i], y[i], z[i]), size[i] * kHalfDiagonal)) {
-                continue;
-            }
-            if (sliced && !view.slice.contains(viewDistance(x[i], y[i], z[i]))) continue;
-            ParticleInstance p;
-            p.x = x[i];
-            p.y = y[i];
-            p.z = z[i];
-            p.size = size[i];
-            p.life = life[i];
-            p.rotation = rotation[i];
-            p.fade = fade[i] < 1.0f ? fade[i] : 1.0f;
-            p.frame = float(frame[i] & 3u);
-            drawn.push_back(p);
-            if (sort) {
-                depth_.push_back((x[i] - view.eye.x) * forward.x + (y[i] - view.eye.y) * forward.y +
-                                 (z[i] - view.eye.z) * forward.z);
-            }
+        // Sized for the whole pool once: a frame that sees more of it than any before does not
+        // allocate.
+        const size_t capacity = size_t(std::max(pool.capacity(), alive));
+        if (culled_.size() < capacity) {
+            culled_.resize(capacity);
+            depth_.resize(capacity);
+            packedDepth_.resize(capacity);
+            packedAt_.resize(capacity);
+            sorter_.reserve(int(capacity));
         }
+        const Pieces pieces = splitWork(size_t(alive), kCullGrain, HostAdapter::kMaxTasks);
+        pieceDrawn_.assign(pieces.count, 0u);
+        pieceFirst_.assign(pieces.count, 0u);
+        jobs.run(pieces, [&](uint32_t piece) {
+            ParticleInstance* drawn = culled_.data();
+            float* depth = depth_.data();
+            size_t k = pieces.begin(piece);
+            for (size_t i = k, e = pieces.end(piece); i < e; ++i) {
+                if (!(size[i] > 0.0f) || !(fade[i] > 0.0f)) continue;  // also drops NaN
+                if (!frustum.intersectsSphere(glm::vec3(x[i], y[i], z[i]), size[i] * kHalfDiagonal)) {
+                    continue;
+                }
+                if (sliced && !view.slice.contains(viewDistance(x[i], y[i], z[i]))) continue;
+                ParticleInstance& p = drawn[k];
+                p.x = x[i];
+                p.y = y[i];
+                p.z = z[i];
+                p.size = size[i];
+                p.life = life[i];
+                p.rotation = rotation[i];
+                p.fade = fade[i] < 1.0f ? fade[i] : 1.0f;
+                p.frame = float(frame[i] & 3u);
+                if (sort) {
+                    depth[k] = (x[i] - view.eye.x) * forward.x + (y[i] - view.eye.y) * forward.y +
+                               (z[i] - view.eye.z) * forward.z;
+                }
+                ++k;
+            }
+            pieceDrawn_[piece] = uint32_t(k - pieces.begin(piece));
+        });
+        uint32_t drawnCount = 0;
+        for (uint32_t s = 0; s < pieces.count; ++s) {
+            pieceFirst_[s] = drawnCount;
+            drawnCount += pieceDrawn_[s];
+        }
+        const size_t first = out->instances.size();
+        out->instances.resize(first + drawnCount);
+        ParticleInstance* const listed = out->instances.data() + first;
         if (sort) {
-            const ParticleSorter::Order order = sorter_.sortDescending(depth_.data(), int(depth_.size()));
-            for (int k = 0; k < order.count; ++k) out->instances.push_back(culled_[order.indices[k]]);
+            // The depths without the gaps (and where each came from), sorted; then gathered.
+            jobs.run(pieces, [&](uint32_t piece) {
+                const size_t from = pieces.begin(piece), n = pieceDrawn_[piece], to = pieceFirst_[piece];
+                std::memcpy(packedDepth_.data() + to, depth_.data() + from, n * sizeof(float));
+                for (size_t j = 0; j < n; ++j) packedAt_[to + j] = uint32_t(from + j);
+            });
+            const ParticleSorter::Order order =
+                sorter_.sortDescending(packedDepth_.data(), packedAt_.data(), int(drawnCount), jobs);
+            const Pieces gather = splitWork(drawnCount, kCullGrain, HostAdapter::kMaxTasks);
+            jobs.run(gather, [&](uint32_t piece) {
+                for (size_t k = gather.begin(piece), e = gather.end(piece); k < e; ++k) {
+                    listed[k] = culled_[order.indices[k]];
+                }
+            });
+        } else {
+            jobs.run(pieces, [&](uint32_t piece) {
+                std::memcpy(listed + pieceFirst_[piece], culled_.data() + pieces.begin(piece),
+                            pieceDrawn_[piece] * sizeof(ParticleInstance));
+            });
         }
         batch.count = static_cast<int>(out->instances.size()) - batch.first;
         if (batch.count == 0) continue;

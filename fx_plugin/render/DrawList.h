@@ -17,6 +17,8 @@
 #include <vector>
 
 #include "InstanceStream.h"
+#include "base/NoInitVector.h"
+#include "base/ParallelFor.h"
 #include "fx/Plugin.h"
 #include "reactions/ReactionDesc.h"
 #include "fx/Types.h"
@@ -47,7 +49,7 @@ struct DrawBatch {
 };
 
 struct DrawList {
-    std::vector<ParticleInstance> instances;
+    NoInitVector<ParticleInstance> instances;
     std::vector<DrawBatch> batches;
     bool needsSceneDepth = false;  ///< a soft or spherical batch is visible
 
@@ -67,13 +69,19 @@ class DrawListBuilder {
 public:
     /// Fills `out` for one view. `usableTechniques`: techniqueBit() mask of techniques whose
     /// programs built. Keeps its scratch between calls; after warm-up it allocates nothing.
+    /// `jobs`: the host's job system for pools of tens of thousands of particles (culled, sorted
+    /// and gathered in pieces); the list is the same bit for bit with or without it.
     void build(const ViewInfo& view, const ParticleBatch* batches, int batchCount,
-               Technique techniqueOverride, uint32_t usableTechniques, DrawList* out);
+               Technique techniqueOverride, uint32_t usableTechniques, DrawList* out,
+               const Jobs& jobs = Jobs());
 
 private:
-    ParticleSorter sorter_;                  // the batch being built's order
-    std::vector<ParticleInstance> culled_;   // its visible particles in pool order
-    std::vector<float> depth_;               // their depths along the view axis
+    ParticleSorter sorter_;                   // the batch being built's order
+    NoInitVector<ParticleInstance> culled_;   // its visible particles, each piece's at its pool offset
+    NoInitVector<float> depth_;               // their depths along the view axis, likewise
+    NoInitVector<float> packedDepth_;         // the depths without the gaps between pieces
+    NoInitVector<uint32_t> packedAt_;         // where each of those lies in culled_
+    std::vector<uint32_t> pieceDrawn_, pieceFirst_;  // per piece: visible particles, first packed slot
 };
 
 }  // namespace fx

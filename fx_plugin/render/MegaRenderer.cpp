@@ -81,7 +81,7 @@ int MegaRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, const
     if (state_ == State::Failed) return 0;
     std::shared_ptr<MegaCloud> record = reuseRecord(records_);
     builder_.build(view, batches, batchCount, settings.options.techniqueOverride, techniquesDrawnBy(DrawnBy::Mega),
-                   &record->list);
+                   &record->list, config_.jobs);
     const int drawn = record->list.particleCount();
     if (drawn == 0) return 0;  // no Mega batch visible: nothing declared, nothing loaded
     if (!ensureLoaded()) return 0;

@@ -159,14 +159,14 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     const bool wasReady = state_ == State::Ready;
     bool quarterRes = options.quarterRes && (!wasReady || quarter_.ok());
     uint32_t usable = wasReady ? draw_.programs().usableTechniques(quarterRes) & mine : mine;
-    builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list);
+    builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list, config_.jobs);
     if (record->list.particleCount() == 0) return 0;
     if (!wasReady) {
         if (!ensureLoaded()) return 0;
         quarterRes = options.quarterRes && quarter_.ok();
         if ((draw_.programs().usableTechniques(quarterRes) & mine) != usable) {
             usable = draw_.programs().usableTechniques(quarterRes) & mine;
-            builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list);
+            builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list, config_.jobs);
         }
     }
     if (options.quarterRes && !quarterRes && !quarterFallbackLogged_) {
@@ -178,13 +178,14 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     if (quarterRes) {
         // Where the smoke can be (the quarter-res passes' fixed costs stay inside it), and whether
         // its overdraw pays for them; if not, this view is drawn at full res.
-        record->rect = screenRect(view, record->list.instances.data(), drawn, &record->tiles, footprintOf(record->list));
+        record->rect = screenRect(view, record->list.instances.data(), drawn, &record->tiles, footprintOf(record->list),
+                                   config_.jobs);
         if (!options.quarterResAlways && !quarterResPays(record->rect, record->tiles)) {
             quarterRes = false;
             // A technique whose quarter-res program failed was left out; at full res it draws.
             if ((draw_.programs().usableTechniques(false) & mine) != usable) {
                 usable = draw_.programs().usableTechniques(false) & mine;
-                builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list);
+                builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list, config_.jobs);
                 if (record->list.particleCount() == 0) return 0;
             }
         }

@@ -10,6 +10,7 @@
 #include "fx/Diagnostic.h"
 #include "fx/HostAdapter.h"
 #include "fx/Types.h"
+#include "base/ParallelFor.h"
 
 namespace fx {
 
@@ -22,6 +23,7 @@ struct RendererConfig {
     std::string shaderDir;        ///< empty = the shaders embedded in the library
     std::string dataDir;          ///< empty = the atlas embedded in the library
     ApiErrors* errors = nullptr;  ///< where SizeMismatch is reported (may be null)
+    Jobs jobs;                    ///< the host's job system (none: the work stays on the calling thread)
 };
 
 /// `message` through the config's host; nothing without one.

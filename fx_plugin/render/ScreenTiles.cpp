@@ -33,7 +33,7 @@ bool plainPerspective(const glm::mat4& p) {
 
 // Marks the tiles [tx0, tx1] x [ty0, ty1] in the (tilesX + 1) x (tilesY + 1) difference grid: four
 // writes whatever the particle's size; the prefix sum in tileRuns() turns them into coverage.
-void markTiles(std::vector<int32_t>& grid, int tilesX, int tx0, int tx1, int ty0, int ty1) {
+void markTiles(int32_t* grid, int tilesX, int tx0, int tx1, int ty0, int ty1) {
     const int stride = tilesX + 1;
     grid[size_t(ty0 * stride + tx0)] += 1;
     grid[size_t(ty0 * stride + tx1 + 1)] -= 1;
@@ -151,38 +151,23 @@ struct FootprintMath {
     }
 };
 
-}  // namespace
-
-ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, int count, ScreenTiles* tiles,
-                      Footprint footprint) {
-    ScreenRect r;
-    const int w = view.width, h = view.height;
-    const int tilesX = (w + kTileSize - 1) / kTileSize, tilesY = (h + kTileSize - 1) / kTileSize;
-    if (tiles) {
-        tiles->vertices.clear();
-        tiles->pixels = 0;
-        tiles->viewWidth = w;
-        tiles->viewHeight = h;
-        tiles->grid.assign(size_t(std::max(0, (tilesX + 1) * (tilesY + 1))), 0);
-    }
-    auto wholeView = [&]() {
-        if (tiles && w > 0 && h > 0) {
-            tiles->vertices.clear();
-            tiles->pixels = 0;
-            addRun(tiles, 0, 0, w, h);
-        }
-        r.footprintPixels = std::numeric_limits<double>::infinity();  // unbounded: the near plane, or no bound
-        return r;  // whole = true
-    };
-    const glm::mat4& P = view.proj;
-    const bool flat = footprint == Footprint::Billboard;
-    const FootprintMath math(view, flat);
+// What one piece of the particles adds to the bound: its rect, its boxes' pixels, its tiles
+// (marked in `grid`), or that it has no bound at all.
+struct PieceBound {
     float lo[2] = {1e30f, 1e30f}, hi[2] = {-1e30f, -1e30f};  // in pixels (toPixel is monotone)
-    double boxPixels = 0.0;  // r.footprintPixels, summed in a register
-    bool any = false;
+    double boxPixels = 0.0;
+    bool any = false, unbounded = false;
+};
+
+PieceBound boundPiece(const FootprintMath& math, const ViewInfo& view, bool flat, const ParticleInstance* instances,
+                      size_t begin, size_t end, int32_t* grid, int tilesX, int tilesY) {
+    PieceBound r;
+    const int w = view.width, h = view.height;
+    const glm::mat4& P = view.proj;
+    double boxPixels = 0.0;  // summed in a register
     Bounds b[kChunk];
-    for (int first = 0; first < count; first += kChunk) {
-        const int n = std::min(kChunk, count - first);
+    for (size_t first = begin; first < end; first += kChunk) {
+        const int n = int(std::min<size_t>(kChunk, end - first));
         // The arithmetic first, for a chunk at a time, with no branch on the particle; then what
         // each bound means, in order.
         if (!plainPerspective(P)) {
@@ -194,17 +179,20 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
         }
         for (int j = 0; j < n; ++j) {
             const Bounds& q = b[j];
-            if (q.state == Bounds::Unbounded) return wholeView();  // no bound to trust, or at the near plane
-            if (q.state == Bounds::Behind) continue;                // wholly behind the near plane: clipped
-            lo[0] = std::min(lo[0], q.x0);
-            lo[1] = std::min(lo[1], q.y0);
-            hi[0] = std::max(hi[0], q.x1);
-            hi[1] = std::max(hi[1], q.y1);
-            any = true;
+            if (q.state == Bounds::Unbounded) {  // no bound to trust, or at the near plane
+                r.unbounded = true;
+                return r;
+            }
+            if (q.state == Bounds::Behind) continue;  // wholly behind the near plane: clipped
+            r.lo[0] = std::min(r.lo[0], q.x0);
+            r.lo[1] = std::min(r.lo[1], q.y0);
+            r.hi[0] = std::max(r.hi[0], q.x1);
+            r.hi[1] = std::max(r.hi[1], q.y1);
+            r.any = true;
             const float cx0 = std::max(0.0f, q.x0), cx1 = std::min(float(w), q.x1);
             const float cy0 = std::max(0.0f, q.y0), cy1 = std::min(float(h), q.y1);
             if (cx1 > cx0 && cy1 > cy0) boxPixels += double(cx1 - cx0) * double(cy1 - cy0);
-            if (!tiles || tilesX <= 0 || tilesY <= 0) continue;
+            if (!grid || tilesX <= 0 || tilesY <= 0) continue;
             // The particle's pixels grown by the border, as a tile range clamped to the view (the
             // float clamp first: a bound far off screen must not overflow the int; clamped to 0
             // and up, truncation is the floor).
@@ -213,8 +201,70 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
                 return int(std::min(std::max(t, 0.0f), float(tileCount - 1)));
             };
             if (q.x1 < -kTileBorder || q.y1 < -kTileBorder || q.x0 > w + kTileBorder || q.y0 > h + kTileBorder) continue;
-            markTiles(tiles->grid, tilesX, tileOf(q.x0, -kTileBorder, tilesX), tileOf(q.x1, kTileBorder, tilesX),
+            markTiles(grid, tilesX, tileOf(q.x0, -kTileBorder, tilesX), tileOf(q.x1, kTileBorder, tilesX),
                       tileOf(q.y0, -kTileBorder, tilesY), tileOf(q.y1, kTileBorder, tilesY));
+        }
+    }
+    r.boxPixels = boxPixels;
+    return r;
+}
+
+}  // namespace
+
+ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, int count, ScreenTiles* tiles,
+                      Footprint footprint, const Jobs& jobs) {
+    ScreenRect r;
+    const int w = view.width, h = view.height;
+    const int tilesX = (w + kTileSize - 1) / kTileSize, tilesY = (h + kTileSize - 1) / kTileSize;
+    // Pieces of at least 16k particles (about 0.2 ms each), each with its own difference grid
+    // (the first piece's is tiles->grid): at most 16, so the grids stay small beside the work.
+    const Pieces pieces = splitWork(size_t(std::max(count, 0)), 16384, 16);
+    const size_t gridCells = size_t(std::max(0, (tilesX + 1) * (tilesY + 1)));
+    if (tiles) {
+        tiles->vertices.clear();
+        tiles->pixels = 0;
+        tiles->viewWidth = w;
+        tiles->viewHeight = h;
+        tiles->grid.assign(gridCells, 0);
+        if (pieces.count > 1) tiles->pieceGrids.resize(gridCells * (pieces.count - 1));
+    }
+    auto wholeView = [&]() {
+        if (tiles && w > 0 && h > 0) {
+            tiles->vertices.clear();
+            tiles->pixels = 0;
+            addRun(tiles, 0, 0, w, h);
+        }
+        r.footprintPixels = std::numeric_limits<double>::infinity();  // unbounded: the near plane, or no bound
+        return r;  // whole = true
+    };
+    const FootprintMath math(view, footprint == Footprint::Billboard);
+    PieceBound parts[HostAdapter::kMaxTasks];
+    jobs.run(pieces, [&](uint32_t piece) {
+        int32_t* grid = nullptr;
+        if (tiles) {
+            grid = piece == 0 ? tiles->grid.data() : tiles->pieceGrids.data() + gridCells * (piece - 1);
+            std::fill(grid, grid + gridCells, 0);
+        }
+        parts[piece] = boundPiece(math, view, footprint == Footprint::Billboard, instances, pieces.begin(piece),
+                                  pieces.end(piece), grid, tilesX, tilesY);
+    });
+    float lo[2] = {1e30f, 1e30f}, hi[2] = {-1e30f, -1e30f};
+    double boxPixels = 0.0;
+    bool any = false;
+    for (uint32_t s = 0; s < pieces.count; ++s) {  // in order: the sum does not depend on the threads
+        const PieceBound& q = parts[s];
+        if (q.unbounded) return wholeView();
+        lo[0] = std::min(lo[0], q.lo[0]);
+        lo[1] = std::min(lo[1], q.lo[1]);
+        hi[0] = std::max(hi[0], q.hi[0]);
+        hi[1] = std::max(hi[1], q.hi[1]);
+        boxPixels += q.boxPixels;
+        any = any || q.any;
+    }
+    if (tiles) {
+        for (uint32_t s = 1; s < pieces.count; ++s) {
+            const int32_t* add = tiles->pieceGrids.data() + gridCells * (s - 1);
+            for (size_t c = 0; c < gridCells; ++c) tiles->grid[c] += add[c];
         }
     }
     r.footprintPixels = boxPixels;

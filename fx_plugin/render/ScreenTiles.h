@@ -8,6 +8,7 @@
 
 #include "InstanceStream.h"
 #include "fx/Types.h"
+#include "base/ParallelFor.h"
 
 namespace fx {
 
@@ -36,6 +37,7 @@ struct ScreenTiles {
     /// Scratch (kept for its capacity): per particle +-1 at the corners of its tile range, summed
     /// into coverage once per frame, so a large particle costs no more than a small one.
     std::vector<int32_t> grid;
+    std::vector<int32_t> pieceGrids;  ///< scratch: the grids of the second and later pieces (ParallelFor.h)
     int64_t pixels = 0;           ///< pixels the runs cover
     int viewWidth = 0, viewHeight = 0;
     int runs() const { return int(vertices.size() / 12); }
@@ -54,8 +56,11 @@ enum class Footprint { Box, Billboard };
 /// has a non-finite position or size. With `tiles`, also their tile runs (one run over the whole
 /// view for a whole-view rect, none for an empty one); the vectors keep their capacity, so a
 /// steady frame allocates nothing.
+/// `jobs`: the host's job system; the particles are bounded in pieces fixed by `count`, and the
+/// result is the same bit for bit however they run.
 ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, int count,
-                      ScreenTiles* tiles = nullptr, Footprint footprint = Footprint::Box);
+                      ScreenTiles* tiles = nullptr, Footprint footprint = Footprint::Box,
+                      const Jobs& jobs = Jobs());
 
 /// Whether drawing this view's particles at quarter resolution costs less than drawing them at
 /// full resolution. Quarter res trades the particles' fragments (three in four saved) for fixed

@@ -55,13 +55,82 @@ ParticleSorter::Order ParticleSorter::update(const ParticlePool& pool, glm::vec3
 }
 
 ParticleSorter::Order ParticleSorter::sortDescending(const float* depth, int n) {
+    return sortDescending(depth, nullptr, n, Jobs());
+}
+
+ParticleSorter::Order ParticleSorter::sortDescending(const float* depth, const uint32_t* payload, int n,
+                                                     const Jobs& jobs) {
+    // Below 2 x 16k keys, or without a job system, the single-pass histogram of radixSort() is
+    // the cheaper sort (pieces count each pass's digits anew).
+    constexpr size_t kGrain = 16384;
+    constexpr uint32_t kMaxPieces = 16;
+    const Pieces pieces = splitWork(size_t(std::max(n, 0)), kGrain, jobs.parallel() ? kMaxPieces : 1u);
+    if (pieces.count <= 1) {
+        reserve(n);
+        for (int i = 0; i < n; ++i) indices_[size_t(i)] = payload ? payload[i] : uint32_t(i);
+        order_ = Order{indices_.data(), std::max(n, 0)};
+        if (n < 2) return order_;
+        std::fill(histogram_.begin(), histogram_.end(), 0u);
+        for (int i = 0; i < n; ++i) addKey(i, descendingKey(depth[i]));
+        return radixSort(n);
+    }
     reserve(n);
-    for (int i = 0; i < n; ++i) indices_[i] = static_cast<uint32_t>(i);
-    order_ = Order{indices_.data(), n};
-    if (n < 2) return order_;
-    std::fill(histogram_.begin(), histogram_.end(), 0u);
-    for (int i = 0; i < n; ++i) addKey(i, descendingKey(depth[i]));
-    return radixSort(n);
+    pieceCounts_.resize(size_t(pieces.count) * kBuckets);
+    pieceSlots_.resize(size_t(pieces.count) * kBuckets);
+    uint32_t* srcKeys = keys_.data();
+    uint32_t* srcIdx = indices_.data();
+    uint32_t* dstKeys = keysTmp_.data();
+    uint32_t* dstIdx = indicesTmp_.data();
+    // Each piece's keys and its counts of the first digit.
+    jobs.run(pieces, [&](uint32_t piece) {
+        uint32_t* counts = &pieceCounts_[size_t(piece) * kBuckets];
+        std::fill(counts, counts + kBuckets, 0u);
+        for (size_t i = pieces.begin(piece), e = pieces.end(piece); i < e; ++i) {
+            const uint32_t k = descendingKey(depth[i]);
+            srcKeys[i] = k;
+            srcIdx[i] = payload ? payload[i] : uint32_t(i);
+            ++counts[k & kDigitMask];
+        }
+    });
+    for (int p = 0; p < kPasses; ++p) {
+        const int shift = p * kDigitBits;
+        if (p > 0) {
+            jobs.run(pieces, [&](uint32_t piece) {
+                uint32_t* counts = &pieceCounts_[size_t(piece) * kBuckets];
+                std::fill(counts, counts + kBuckets, 0u);
+                for (size_t i = pieces.begin(piece), e = pieces.end(piece); i < e; ++i) {
+                    ++counts[(srcKeys[i] >> shift) & kDigitMask];
+                }
+            });
+        }
+        // Digit-major, piece-minor slots: a digit's keys keep piece order, and in a piece their
+        // own order, which is what makes each pass (and the sort) stable.
+        const uint32_t first = (srcKeys[0] >> shift) & kDigitMask;
+        uint32_t sameDigit = 0;
+        for (uint32_t s = 0; s < pieces.count; ++s) sameDigit += pieceCounts_[s * kBuckets + first];
+        if (sameDigit == uint32_t(n)) continue;  // every key has the same digit: the identity
+        uint32_t sum = 0;
+        for (uint32_t b = 0; b < kBuckets; ++b) {
+            for (uint32_t s = 0; s < pieces.count; ++s) {
+                pieceSlots_[s * kBuckets + b] = sum;
+                sum += pieceCounts_[s * kBuckets + b];
+            }
+        }
+        jobs.run(pieces, [&](uint32_t piece) {
+            uint32_t slot[kBuckets];  // a copy: a piece run twice writes the same slots again
+            std::memcpy(slot, &pieceSlots_[size_t(piece) * kBuckets], sizeof slot);
+            for (size_t i = pieces.begin(piece), e = pieces.end(piece); i < e; ++i) {
+                const uint32_t k = srcKeys[i];
+                const uint32_t at = slot[(k >> shift) & kDigitMask]++;
+                dstKeys[at] = k;
+                dstIdx[at] = srcIdx[i];
+            }
+        });
+        std::swap(srcKeys, dstKeys);
+        std::swap(srcIdx, dstIdx);
+    }
+    order_ = Order{srcIdx, n};
+    return order_;
 }
 
 void ParticleSorter::addKey(int i, uint32_t k) {

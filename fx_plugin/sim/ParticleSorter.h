@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "ParticlePool.h"
+#include "base/ParallelFor.h"
 
 namespace fx {
 
@@ -34,12 +35,19 @@ public:
     /// pool first and sorts only what it draws.
     Order sortDescending(const float* depth, int n);
 
+    /// The same order of depth[0 .. n), each entry given as payload[i] (null: i), sorted in
+    /// pieces through `jobs` (base/ParallelFor.h) where n is large enough: each pass counts its
+    /// digits piece by piece and scatters the pieces in order, so the order does not depend on
+    /// how (or on how many threads) the pieces run.
+    Order sortDescending(const float* depth, const uint32_t* payload, int n, const Jobs& jobs);
+
     Order order() const { return order_; }
 
 private:
     void addKey(int i, uint32_t key);  // keys_[i] and the histograms of its digits
     Order radixSort(int n);            // keys_/indices_ [0, n) with histograms counted
     std::vector<uint32_t> keys_, keysTmp_, indices_, indicesTmp_, histogram_;
+    std::vector<uint32_t> pieceCounts_, pieceSlots_;  // [piece][digit] of the pass in hand
     Order order_;
 };
 

@@ -27,6 +27,7 @@ void PluginImpl::installRenderers(const std::string& dataDir) {
     config.shaderDir = shaderDir_;
     config.dataDir = dataDir;
     config.errors = &errors_;
+    config.jobs = Jobs(host_);
     renderers_ = std::make_unique<Renderers>(config);
 }
 

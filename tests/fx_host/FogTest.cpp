@@ -276,7 +276,7 @@ TEST_F(FogTest, MegaCloudsAreFoggedAtTheirFront) {
     direct.settings.options.techniqueOverride = fx::Technique::Mega;
     direct.desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(1.0f, 1.0f, 1.0f, 0.8f)}};
     direct.desc.render.technique = fx::Technique::Mega;
-    fx::MegaRenderer mega(fx::RendererConfig{&host, "", "", nullptr}, direct.programs);
+    fx::MegaRenderer mega(fx::RendererConfig{&host, "", "", nullptr, fx::Jobs()}, direct.programs);
     auto draw = [&](const fx::ViewInfo& v) {
         fx::ParticleBatch batch;
         batch.pool = &direct.pool;

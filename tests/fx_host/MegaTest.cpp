@@ -68,7 +68,7 @@ protected:
 
     TestHostAdapter host;
     DirectParticles direct{&host};
-    fx::MegaRenderer mega{fx::RendererConfig{&host, "", "", nullptr}, direct.programs};  // one cache, as the plugin
+    fx::MegaRenderer mega{fx::RendererConfig{&host, "", "", nullptr, fx::Jobs()}, direct.programs};  // one cache, as the plugin
     fx::LightState light;
     float time = 1.25f;
     int drawn = 0;

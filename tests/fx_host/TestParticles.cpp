@@ -6,7 +6,7 @@ DirectParticles::DirectParticles(fx::HostAdapter* host, std::string shaderDir, s
                                  int capacity)
     : desc(fx::defaultReaction(fx::ReactionType::WheelSmoke)),
       programs(fx::snapshotShaderReader(fx::shaderReader(shaderDir))),
-      renderer(fx::RendererConfig{host, std::move(shaderDir), std::move(dataDir)}, programs),
+      renderer(fx::RendererConfig{host, std::move(shaderDir), std::move(dataDir), nullptr, fx::Jobs(host)}, programs),
       pool(capacity) {
     desc.name = "hand_placed";
     desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(1.0f)}};

@@ -270,4 +270,42 @@ TEST_F(OutputStructTest, QuarterResAlwaysIsSetFromA21SizeAndKeptByA20One) {
     EXPECT_TRUE(host.errors.empty());
 }
 
+// fxHostCallbacks grew in 2.2 (parallelFor): a 2.0/2.1 host's size is taken, parallelFor past it
+// is not read (a poisoned pointer there would crash the first large view); a size between the two
+// is refused with the sizes it could have been.
+TEST(HostCallbacksSize, A21SizeIsTakenWithoutItsTailAndAnUnknownOneRefused) {
+    const fxApi* api = fxGetApi(FX_API_VERSION);
+    ASSERT_NE(api, nullptr);
+    Host host;
+    fxHostCallbacks callbacks;
+    std::memset(&callbacks, kPoison, sizeof callbacks);  // parallelFor: not a function
+    callbacks.size = uint32_t(offsetof(fxHostCallbacks, parallelFor));
+    callbacks.user = &host;
+    callbacks.getProcAddress = noGl;
+    callbacks.log = hostLog;
+    callbacks.wheelCount = nullptr;
+    callbacks.wheel = nullptr;
+    callbacks.wind = nullptr;
+    callbacks.collisionPoint = nullptr;
+    fxPluginDesc desc = FX_DESC_INIT(fxPluginDesc);
+    desc.host = &callbacks;
+    fxPlugin* plugin = api->create(&desc, nullptr);
+    ASSERT_NE(plugin, nullptr);
+    api->destroy(plugin);
+    EXPECT_TRUE(host.errors.empty());
+
+    // A table of unknown size cannot be trusted to hold its log: the line goes to stderr.
+    callbacks.size = uint32_t(offsetof(fxHostCallbacks, parallelFor) + 4);
+    int error = FX_ERROR_NONE;
+    testing::internal::CaptureStderr();
+    EXPECT_EQ(api->create(&desc, &error), nullptr);
+    const std::string said = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(error, FX_ERROR_BAD_DESCRIPTOR);
+    EXPECT_TRUE(host.errors.empty());
+    EXPECT_NE(said.find("fxHostCallbacks::size = " + std::to_string(callbacks.size) + "; expected " +
+                        std::to_string(sizeof(fxHostCallbacks))),
+              std::string::npos)
+        << said;
+}
+
 }  // namespace

@@ -1,0 +1,214 @@
+// The view's CPU work through the host's job system (HostAdapter::parallelFor): the draw list, the
+// sort and the screen bound come out the same bit for bit whether the pieces run on one thread,
+// on several at once, in reverse, twice, or not at all (a host that drops tasks).
+#include <algorithm>
+#include <atomic>
+#include <random>
+#include <thread>
+#include <vector>
+
+#include "DrawListScene.h"
+#include "../../fx_plugin/render/ScreenTiles.h"
+
+namespace {
+
+using drawlist_test::Scene;
+using drawlist_test::expectDrawn;
+
+enum class HowRun { Threads, Reversed, Twice, DropOdd };
+
+// A host whose job system runs the pieces as `how` says, and counts what it was asked.
+class JobHost final : public fx::HostAdapter {
+public:
+    explicit JobHost(HowRun how) : how_(how) {}
+    void* getProcAddress(const char*) override { return nullptr; }
+    int wheelCount() const override { return 0; }
+    fx::WheelContact wheel(int) const override { return fx::WheelContact{}; }
+    void log(fx::LogLevel, const char*) override {}
+    void parallelFor(uint32_t count, Task task, void* data) override {
+        ++calls;
+        largest = std::max(largest, count);
+        switch (how_) {
+            case HowRun::Threads: {
+                std::atomic<uint32_t> next{0};
+                std::vector<std::thread> threads;
+                for (int t = 0; t < 4; ++t) {
+                    threads.emplace_back([&]() {
+                        for (uint32_t i; (i = next.fetch_add(1)) < count;) task(data, i);
+                    });
+                }
+                for (std::thread& t : threads) t.join();
+                break;
+            }
+            case HowRun::Reversed:
+                for (uint32_t i = count; i-- > 0;) task(data, i);
+                break;
+            case HowRun::Twice:
+                for (uint32_t i = 0; i < count; ++i) task(data, i);
+                for (uint32_t i = 0; i < count; ++i) task(data, i);
+                break;
+            case HowRun::DropOdd:
+                for (uint32_t i = 0; i < count; i += 2) task(data, i);
+                break;
+        }
+    }
+    int calls = 0;
+    uint32_t largest = 0;
+
+private:
+    HowRun how_;
+};
+
+const HowRun kRuns[] = {HowRun::Threads, HowRun::Reversed, HowRun::Twice, HowRun::DropOdd};
+
+TEST(ParallelBuild, DrawListIsTheSerialOneHoweverThePiecesRun) {
+    const Scene s(120000);
+    const fx::ParticleBatch batches[2] = {s.batch(false), s.batch(true)};
+    std::vector<uint32_t> expected = s.reference(false);
+    const std::vector<uint32_t> sorted = s.reference(true);
+    expected.insert(expected.end(), sorted.begin(), sorted.end());
+    ASSERT_GT(sorted.size(), 40000u);  // enough for the sort's pieces too
+    for (HowRun how : kRuns) {
+        JobHost host(how);
+        fx::DrawListBuilder builder;
+        fx::DrawList list;
+        for (int round = 0; round < 2; ++round) {  // the scratch of the first build is reused
+            builder.build(s.view, batches, 2, fx::Technique::FromReaction, ~0u, &list, fx::Jobs(&host));
+            expectDrawn(s, list, expected);
+            ASSERT_EQ(list.batches.size(), 2u);
+            EXPECT_EQ(list.batches[1].first, list.batches[0].count);
+        }
+        EXPECT_GT(host.calls, 0) << int(how);
+        EXPECT_GE(host.largest, 8u) << "120000 particles in pieces of 8192";
+    }
+}
+
+TEST(ParallelBuild, SmallPoolsNeverReachTheHost) {
+    const Scene s(3000);
+    const fx::ParticleBatch batch = s.batch(true);
+    JobHost host(HowRun::Threads);
+    fx::DrawListBuilder builder;
+    fx::DrawList list;
+    builder.build(s.view, &batch, 1, fx::Technique::FromReaction, ~0u, &list, fx::Jobs(&host));
+    expectDrawn(s, list, s.reference(true));
+    EXPECT_EQ(host.calls, 0);
+}
+
+TEST(ParallelBuild, SortInPiecesIsTheSerialSortWithItsPayload) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> depth(-50.0f, 400.0f);
+    for (int n : {40000, 100000}) {
+        std::vector<float> d(static_cast<size_t>(n));
+        std::vector<uint32_t> payload(static_cast<size_t>(n));
+        for (int i = 0; i < n; ++i) {
+            d[size_t(i)] = (i % 5 == 2) ? d[size_t(i - 1)] : depth(rng);  // ties keep their order
+            if (i % 97 == 0) d[size_t(i)] = -0.0f;
+            if (i % 89 == 0) d[size_t(i)] = 0.0f;
+            payload[size_t(i)] = uint32_t(3 * i + 7);
+        }
+        fx::ParticleSorter serial;
+        const fx::ParticleSorter::Order want = serial.sortDescending(d.data(), n);
+        for (HowRun how : kRuns) {
+            JobHost host(how);
+            fx::ParticleSorter pieces;
+            const fx::ParticleSorter::Order got = pieces.sortDescending(d.data(), payload.data(), n, fx::Jobs(&host));
+            ASSERT_EQ(got.count, n);
+            for (int k = 0; k < n; ++k) ASSERT_EQ(got.indices[k], payload[want.indices[k]]) << "n " << n << " at " << k;
+            EXPECT_GT(host.calls, 0);
+        }
+        fx::ParticleSorter noHost;  // the same entry without a job system, and without a payload
+        const fx::ParticleSorter::Order plain = noHost.sortDescending(d.data(), nullptr, n, fx::Jobs());
+        for (int k = 0; k < n; ++k) ASSERT_EQ(plain.indices[k], want.indices[k]);
+    }
+}
+
+// The tiles a bound's runs cover, as a set of tile indices.
+std::vector<int> coveredTiles(const fx::ScreenTiles& t) {
+    const int k = fx::ScreenTiles::kTileSize, tilesX = (t.viewWidth + k - 1) / k;
+    std::vector<int> out;
+    for (size_t v = 0; v + 12 <= t.vertices.size(); v += 12) {
+        const int x0 = int(t.vertices[v]) / k, x1 = (int(t.vertices[v + 2]) + k - 1) / k;
+        const int y0 = int(t.vertices[v + 1]) / k, y1 = (int(t.vertices[v + 5]) + k - 1) / k;
+        for (int y = y0; y < y1; ++y) {
+            for (int x = x0; x < x1; ++x) out.push_back(y * tilesX + x);
+        }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+TEST(ParallelBuild, ScreenBoundInPiecesIsTheUnionOfEveryParticlesBound) {
+    const Scene s(150000);
+    const fx::ParticleBatch batch = s.batch(true);
+    fx::DrawListBuilder builder;
+    fx::DrawList list;
+    builder.build(s.view, &batch, 1, fx::Technique::FromReaction, ~0u, &list);
+    // Those at least 3 m ahead (none reaches the near plane) and right of the camera: the bound
+    // is not the whole view.
+    std::vector<fx::ParticleInstance> ahead;
+    for (const fx::ParticleInstance& p : list.instances) {
+        if (p.z < s.view.eye.z - 3.0f && p.x > 4.0f) ahead.push_back(p);
+    }
+    const int n = int(ahead.size());
+    ASSERT_GT(n, 32768);  // at least two pieces
+    for (fx::Footprint footprint : {fx::Footprint::Box, fx::Footprint::Billboard}) {
+        fx::ScreenTiles serialTiles;
+        const fx::ScreenRect serial = fx::screenRect(s.view, ahead.data(), n, &serialTiles, footprint);
+        ASSERT_FALSE(serial.whole);
+        // Particle by particle: the rect is the union of their rects, the tiles the union of
+        // their tiles, the pixels their sum (summed in another order: to 1e-12).
+        fx::ScreenRect each;
+        int x0 = s.view.width, y0 = s.view.height, x1 = 0, y1 = 0;
+        double pixels = 0.0;
+        std::vector<int> tiles;
+        fx::ScreenTiles one;
+        for (int i = 0; i < n; ++i) {
+            each = fx::screenRect(s.view, &ahead[size_t(i)], 1, &one, footprint);
+            pixels += each.footprintPixels;
+            if (each.x1 <= each.x0) continue;
+            x0 = std::min(x0, each.x0), y0 = std::min(y0, each.y0), x1 = std::max(x1, each.x1), y1 = std::max(y1, each.y1);
+            const std::vector<int> mine = coveredTiles(one);
+            tiles.insert(tiles.end(), mine.begin(), mine.end());
+        }
+        std::sort(tiles.begin(), tiles.end());
+        tiles.erase(std::unique(tiles.begin(), tiles.end()), tiles.end());
+        EXPECT_EQ(serial.x0, x0);
+        EXPECT_EQ(serial.y0, y0);
+        EXPECT_EQ(serial.x1, x1);
+        EXPECT_EQ(serial.y1, y1);
+        EXPECT_NEAR(serial.footprintPixels, pixels, 1e-12 * pixels);
+        EXPECT_EQ(coveredTiles(serialTiles), tiles);
+        for (HowRun how : kRuns) {
+            JobHost host(how);
+            fx::ScreenTiles tilesRun;
+            const fx::ScreenRect r = fx::screenRect(s.view, ahead.data(), n, &tilesRun, footprint, fx::Jobs(&host));
+            EXPECT_GT(host.calls, 0);
+            EXPECT_EQ(r.x0, serial.x0);
+            EXPECT_EQ(r.y0, serial.y0);
+            EXPECT_EQ(r.x1, serial.x1);
+            EXPECT_EQ(r.y1, serial.y1);
+            EXPECT_EQ(r.whole, serial.whole);
+            EXPECT_EQ(r.footprintPixels, serial.footprintPixels) << "bit for bit: summed piece by piece, in order";
+            EXPECT_EQ(tilesRun.vertices, serialTiles.vertices);
+            EXPECT_EQ(tilesRun.pixels, serialTiles.pixels);
+        }
+    }
+}
+
+TEST(ParallelBuild, OneParticleAtTheNearPlaneInAnyPieceMakesTheWholeView) {
+    const Scene s(60000);
+    const fx::ParticleBatch batch = s.batch(true);
+    fx::DrawListBuilder builder;
+    fx::DrawList list;
+    builder.build(s.view, &batch, 1, fx::Technique::FromReaction, ~0u, &list);
+    const int n = list.particleCount();
+    fx::ParticleInstance& last = list.instances[size_t(n - 1)];  // in the last piece
+    last.x = s.view.eye.x, last.y = s.view.eye.y, last.z = s.view.eye.z - 0.05f;
+    JobHost host(HowRun::Threads);
+    fx::ScreenTiles tiles;
+    const fx::ScreenRect r = fx::screenRect(s.view, list.instances.data(), n, &tiles, fx::Footprint::Box, fx::Jobs(&host));
+    EXPECT_TRUE(r.whole);
+    EXPECT_EQ(tiles.pixels, int64_t(s.view.width) * s.view.height);
+}
+
+}  // namespace
