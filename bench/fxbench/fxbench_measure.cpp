@@ -90,6 +90,7 @@ public:
         out_->backend = std::string(cube::backendName(game_.platform().backend())) +
                         (game_.scene().renderer().reversedZ() ? ", reversed-Z float depth" : ", standard 24-bit depth");
         out_->timingMethod = game_.graph().timingMethod();
+        out_->threads = game_.jobs()->threads();
         for (const Mode* m : measuredModes(config_.selected)) {
             ModeRun r;
             r.mode = m;
