@@ -13,6 +13,7 @@
 #include "render/FillRateProbe.h"
 #include "fxbench_stats.h"
 #include "game/Game.h"
+#include "game/JobSystem.h"
 #include "gl/Gl.h"
 
 namespace fxbench {

@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include "game/JobSystem.h"
 #include "gl/Gl.h"
 #include "gl/Paths.h"
 #include "platform/Trace.h"

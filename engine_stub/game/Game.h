@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "game/EngineFxHost.h"
-#include "game/JobSystem.h"
 #include "game/Options.h"
 #include "game/Render.h"
 #include "game/SpecialFX.h"
@@ -24,6 +23,7 @@
 namespace cube {
 
 class Game;
+class JobSystem;
 
 /// An application layer over the game (the tweak panel). beginFrame runs at the start of each
 /// Dyn, before the update: it may change options, the time scale and the reactions.
