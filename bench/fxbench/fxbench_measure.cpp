@@ -13,6 +13,7 @@
 #include "render/FillRateProbe.h"
 #include "fxbench_stats.h"
 #include "game/Game.h"
+#include "game/JobSystem.h"
 #include "gl/Gl.h"
 
 namespace fxbench {
@@ -90,6 +91,7 @@ public:
         out_->backend = std::string(cube::backendName(game_.platform().backend())) +
                         (game_.scene().renderer().reversedZ() ? ", reversed-Z float depth" : ", standard 24-bit depth");
         out_->timingMethod = game_.graph().timingMethod();
+        out_->threads = game_.jobs()->threads();
         for (const Mode* m : measuredModes(config_.selected)) {
             ModeRun r;
             r.mode = m;

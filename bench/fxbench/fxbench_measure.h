@@ -46,6 +46,7 @@ struct ModeRun {
 
 struct RunResult {
     std::string renderer, backend, timingMethod;
+    int threads = 0;                   ///< the game's job-system threads, the frame thread included
     std::vector<ModeRun> modes;        ///< measured modes in table order (selected + references)
     double particlesAlive = 0.0;       ///< median over timed frames
     double edgePixelPct = 0.0;         ///< share of pixels next to depth edges (error frames)

@@ -75,6 +75,8 @@ std::string benchUsage() {
            "  --depth reversed|standard  engine z-buffer: reversed-Z float (default; soft and spherical\n"
            "                         particles are z-tested) or standard 24-bit (they are not)\n"
            "  --mirror               draw the rear-view mirror (default off)\n"
+           "  --threads N            job-system threads for the plugin's culling, sorting and bounding,\n"
+           "                         the frame thread included, 0..64 (default 0: one per hardware thread)\n"
            "  --json PATH            results as JSON\n"
            "  --csv PATH             results as CSV (one row per mode)\n"
            "  --chart PATH           SVG: frame time per mode and error vs time (sweeps: cost curves)\n"
@@ -107,7 +109,8 @@ bool parseBenchOptions(int argc, const char* const* argv, BenchOptions* out, std
     static const IntFlag kIntFlags[] = {{"--frames", 1, 100000, &BenchOptions::frames},
                                         {"--rounds", 1, 1000, &BenchOptions::rounds},
                                         {"--warmup", 0, 10000, &BenchOptions::warmup},
-                                        {"--error-frames", 0, 1000, &BenchOptions::errorFrames}};
+                                        {"--error-frames", 0, 1000, &BenchOptions::errorFrames},
+                                        {"--threads", 0, 64, &BenchOptions::threads}};
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&](std::string* v) {

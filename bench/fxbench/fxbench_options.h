@@ -18,8 +18,8 @@ struct Sweep {
 };
 
 /// Defaults: the standard scenario at 1280x1024 on OSMesa, every mode, 30 timed frames with
-/// 2 rounds each after 5 warm-up frames, seed 1, 3 error frames, mirror off, HUD off (about
-/// 3 minutes for standard on 2 llvmpipe cores).
+/// 2 rounds each after 5 warm-up frames, seed 1, 3 error frames, mirror off, HUD off, one
+/// job-system thread per hardware thread (about 3 minutes for standard on 2 llvmpipe cores).
 /// `--quick` (applied before the other flags, which still override it): 320x256, 8 frames,
 /// 2 rounds, 2 warm-up frames, 2 error frames.
 struct BenchOptions {
@@ -34,6 +34,7 @@ struct BenchOptions {
     unsigned seed = 1;
     cube::Backend backend = cube::Backend::OSMesa;
     bool reversedZ = true;  ///< --depth: the engine's reversed-Z float depth where available
+    int threads = 0;       ///< --threads: cube::Options::threads (0 = one per hardware thread)
     bool mirror = false;   ///< the rear-view mirror view and its inset
     bool quick = false;
     bool integrators = false;

@@ -51,7 +51,8 @@ std::string markdownReport(const Report& r) {
     std::snprintf(line, sizeof line, "## fxbench: %s, %dx%d\n\n", r.scenario.c_str(), r.width, r.height);
     o += line;
     o += "- scenario: " + r.description + "\n";
-    o += "- renderer: " + r.renderer + " (" + r.backend + "); timing: " + r.timingMethod +
+    o += "- renderer: " + r.renderer + " (" + r.backend + "); job threads: " + std::to_string(r.threads) +
+         "; timing: " + r.timingMethod +
          " (frame = Game::RenderFrame wall ms, CPU clock around glFinish)\n";
     o += r.timingMethod == std::string("cpu-glfinish")
              ? "- pass times: CPU clock between glFinish calls around each pass\n"
@@ -152,6 +153,7 @@ std::string jsonReport(const Report& r, const std::string& in) {
     o += in + "  \"seed\": " + std::to_string(r.seed) + ",\n";
     o += in + "  \"renderer\": " + jsonQuote(r.renderer) + ",\n";
     o += in + "  \"backend\": " + jsonQuote(r.backend) + ",\n";
+    o += in + "  \"threads\": " + std::to_string(r.threads) + ",\n";
     o += in + "  \"timing_method\": " + jsonQuote(r.timingMethod) + ",\n";
     o += in + "  \"mirror\": " + std::string(r.mirror ? "true" : "false") + ",\n";
     o += in + "  \"hud\": false,\n";

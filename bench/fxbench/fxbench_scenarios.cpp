@@ -91,6 +91,7 @@ cube::Options gameOptions(const Scenario& scenario, const BenchOptions& bench) {
     o.seed = bench.seed;
     o.backend = bench.backend;
     o.reversedZ = bench.reversedZ;
+    o.threads = bench.threads;
     o.reactions = scenario.reactions;
     o.hud = false;  // its text names the mode: it would differ between modes
     // Modes are interleaved frame by frame: keep every mode's targets alive across a whole round

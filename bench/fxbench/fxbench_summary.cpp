@@ -75,6 +75,7 @@ Report makeReport(const RunConfig& config, const RunResult& result, unsigned see
     r.renderer = result.renderer;
     r.backend = result.backend;
     r.timingMethod = result.timingMethod;
+    r.threads = result.threads;
     r.particlesAlive = result.particlesAlive;
     r.edgePixelPct = result.edgePixelPct;
     r.simMsPerFrame = result.simMsPerFrame;

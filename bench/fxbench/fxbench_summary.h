@@ -36,6 +36,7 @@ struct Report {
     unsigned seed = 0;
     bool mirror = false;
     std::string renderer, backend, timingMethod;
+    int threads = 0;  ///< job-system threads the plugin's parallel work ran on
     double particlesAlive = 0, edgePixelPct = 0, simMsPerFrame = 0;
     /// The live particles a particle sweep point asked for (0: not a sweep point) and the run's
     /// pool slots, emitted and dropped particles (RunResult).

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "game/JobSystem.h"
 #include "game/Vehicle.h"
 #include "platform/Platform.h"
 
@@ -39,6 +40,14 @@ glm::vec3 EngineFxHost::collisionPoint() const {
 void EngineFxHost::log(fx::LogLevel level, const char* message) {
     const char* tag = level == fx::LogLevel::Error ? "error" : level == fx::LogLevel::Warning ? "warning" : "info";
     std::fprintf(stderr, "fx %s: %s\n", tag, message);
+}
+
+void EngineFxHost::parallelFor(uint32_t count, Task task, void* data) {
+    if (jobs_) {
+        jobs_->parallelFor(count, task, data);
+    } else {
+        fx::HostAdapter::parallelFor(count, task, data);
+    }
 }
 
 }  // namespace cube

@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include "game/JobSystem.h"
 #include "gl/Gl.h"
 #include "gl/Paths.h"
 #include "platform/Trace.h"
@@ -96,7 +97,8 @@ bool Game::InitProc(std::string* error) {
     animateWheels();
     cameraHeading_ = vehicle_.pose().heading;
     updateCameras(0.0f);
-    fxHost_ = std::make_unique<EngineFxHost>(&vehicle_, platform_.get());
+    jobs_ = std::make_unique<JobSystem>(JobSystem::resolveThreads(options_.threads));
+    fxHost_ = std::make_unique<EngineFxHost>(&vehicle_, platform_.get(), jobs_.get());
     if (!specialFX_.Init(options_, scene_, fxHost_.get(), error)) return false;
     specialFX_.setSceneLight(sun_);
     return true;

@@ -23,6 +23,7 @@
 namespace cube {
 
 class Game;
+class JobSystem;
 
 /// An application layer over the game (the tweak panel). beginFrame runs at the start of each
 /// Dyn, before the update: it may change options, the time scale and the reactions.
@@ -105,6 +106,8 @@ public:
     bool hasBarrier() const { return barrierNode_ >= 0; }
     const CameraQuads& cameraQuads() const { return cameraQuads_; }
     Platform& platform() { return *platform_; }
+    /// The job system the plugin's parallel work runs on (Options::threads); null before Init.
+    const JobSystem* jobs() const { return jobs_.get(); }
     SpecialFX& specialFX() { return specialFX_; }
     cubeScene& scene() { return scene_; }
     Vehicle& vehicle() { return vehicle_; }
@@ -145,6 +148,8 @@ private:
     SceneData sceneData_;
     cubeScene scene_;
     Vehicle vehicle_;
+    // Before fxHost_ and specialFX_: the plugin may use it until it is destroyed.
+    std::unique_ptr<JobSystem> jobs_;
     std::unique_ptr<EngineFxHost> fxHost_;
     SpecialFX specialFX_;
     std::unique_ptr<rtt::RenderTargetPool> pool_;

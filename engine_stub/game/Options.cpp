@@ -203,6 +203,9 @@ std::string usage() {
         "  --unlit-smoke          draw the smoke without the sun (no lighting, no smoke shadow)\n"
         "  --panel                the live tweak panel: every reaction key on a widget, render\n"
         "                         switches, pass timings; Save writes the file back (also headless)\n"
+        "  --threads N            threads for the plugin's culling, sorting and bounding, the frame\n"
+        "                         thread included, 0..64 (default 0: one per hardware thread; 1 = all\n"
+        "                         on the frame thread)\n"
         "  --stats-json PATH      write frame statistics at exit\n"
         "SIGINT/SIGTERM finish the current frame, write --screenshot and --stats-json, exit 130/143.\n"
         "Environment: CUBE_OSMESA_LIBRARY, CUBE_EGL_LIBRARY, CUBE_GLFW_LIBRARY load a back end from\n"
@@ -421,6 +424,9 @@ bool parseOptions(int argc, const char* const* argv, Options* out, std::string* 
                 return false;
             }
             o.fog = fog;
+        } else if (a == "--threads") {
+            if (!whole(i, a, 0, 64, "a whole number 0..64 (0 = one per hardware thread)", &n)) return false;
+            o.threads = int(n);
         } else if (a == "--stats-json") {
             if (!path(i, a, &o.statsJson)) return false;
         } else {

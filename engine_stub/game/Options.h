@@ -11,7 +11,8 @@ namespace cube {
 enum class FxPath { Plugin, Legacy };
 
 /// Defaults: 300 frames at 1280x1024 on OSMesa, real-time dt, seed 1, the plugin with the
-/// reactions in reactions/, each reaction's own technique, prepass-EQUAL and quarter-res off.
+/// reactions in reactions/, each reaction's own technique, prepass-EQUAL and quarter-res off,
+/// one job-system thread per hardware thread.
 struct Options {
     int frames = 300;
     int width = 1280;
@@ -66,6 +67,9 @@ struct Options {
     /// Reversed-Z in a 32-bit float z-buffer where the context has clip control (GL 4.5 /
     /// ARB_clip_control); false, or a context without it: GL's default [-1, 1] with 24 bits.
     bool reversedZ = true;
+    /// --threads N: threads for the plugin's parallel work (the job system), the frame thread
+    /// included; 0 = one per hardware thread, 1 = it all stays on the frame thread. 0..64.
+    int threads = 0;
     bool help = false;
     // Harness switches (fxbench; no command-line flag in cube_game).
     bool effects = true;          ///< false: the bare engine, no particle passes at all

@@ -245,3 +245,30 @@ TEST(Options, FxDepthPicksOneOfThreeScenePaths) {
     EXPECT_FALSE(parse({"--fx-depth", "zbufer"}, &bad, &err));
     EXPECT_EQ(err, "--fx-depth: expected graph, linear or zbuffer, got 'zbufer'");
 }
+
+TEST(Options, ThreadsTakesZeroTo64AndDefaultsToOnePerHardwareThread) {
+    Options o;
+    std::string err;
+    ASSERT_TRUE(parse({}, &o, &err)) << err;
+    EXPECT_EQ(o.threads, 0);
+    for (const char* n : {"0", "1", "2", "8", "64"}) {
+        ASSERT_TRUE(parse({"--threads", n}, &o, &err)) << n << ": " << err;
+        EXPECT_EQ(o.threads, std::stoi(n));
+    }
+    EXPECT_NE(cube::usage().find("--threads N"), std::string::npos);
+}
+
+TEST(Options, BadThreadCountsAreRejectedNamingTheFlagAndTheRange) {
+    for (const char* bad : {"65", "-1", "junk", "", "2.5", "8x", "99999999999999999999"}) {
+        SCOPED_TRACE(bad);
+        Options o;
+        std::string err;
+        EXPECT_FALSE(parse({"--threads", bad}, &o, &err));
+        EXPECT_NE(err.find("--threads: expected a whole number 0..64"), std::string::npos) << err;
+        EXPECT_NE(err.find(std::string("got '") + bad + "'"), std::string::npos) << err;
+    }
+    Options o;
+    std::string err;
+    EXPECT_FALSE(parse({"--threads"}, &o, &err));
+    EXPECT_EQ(err, "--threads: missing value");
+}

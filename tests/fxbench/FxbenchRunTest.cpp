@@ -87,6 +87,7 @@ TEST_P(FxbenchScenario, TinyRunWritesEveryKeyWithFiniteValues) {
     EXPECT_EQ(run["frames"].as<int>(), 3);
     EXPECT_EQ(run["rounds"].as<int>(), 2);
     EXPECT_FALSE(run["renderer"].as<std::string>().empty());
+    EXPECT_GE(run["threads"].as<int>(), 1);  // --threads 0: one per hardware thread
     ASSERT_TRUE(run["modes"].IsSequence());
     EXPECT_EQ(run["modes"].size(), 20u);  // every mode by default (lit, mega, *-zbuffer, *-linear included)
     for (const YAML::Node& m : run["modes"]) {
@@ -301,6 +302,18 @@ TEST(Fxbench, ModeSwitchesBuildNoProgramWhileDeclaringAndPassTimesStayWithTheirM
     EXPECT_TRUE(has(hard, "chase.particles"));
     EXPECT_TRUE(has(soft, "chase.particles"));
     EXPECT_FALSE(has(quarter, "chase.particles"));
+}
+
+// --threads N reaches the game: the report header and the JSON give the job system's real count.
+TEST(Fxbench, ThreadsFlagSizesTheJobSystemAndTheReportSaysSo) {
+    const std::string json = tempPath("threads.json");
+    const RunOutput r = runFxbench("--scenario empty --modes hard --size 64x64 --frames 1 --rounds 1 --warmup 0 "
+                                   "--error-frames 0 --threads 3 --json " + json);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("job threads: 3;"), std::string::npos) << r.output;
+    const YAML::Node run = YAML::Load(readFile(json));
+    std::filesystem::remove(json);
+    EXPECT_EQ(run["threads"].as<int>(), 3);
 }
 
 // The modes of the removed features are refused by name, with the reason, before anything runs.
