@@ -58,7 +58,9 @@
  *    truncated or no copy and the caller retries with length + 1). Strings the plugin hands to
  *    callbacks are valid only during the callback.
  *  - Threading and GL: one thread at a time; functions marked (GL) need the host's GL context
- *    current on the calling thread. Around every (GL) call and every pass it runs, the plugin
+ *    current on the calling thread. The plugin starts no threads; it may hand pieces of a view's
+ *    CPU work to the host's job system (fxHostCallbacks.parallelFor, API 2.2) while it prepares
+ *    the view, and every piece has returned before the call does. Around every (GL) call and every pass it runs, the plugin
  *    sets every GL state its output depends on and restores every state it touched, in core and
  *    compatibility contexts (fx_plugin/README.md lists them).
  *  - Matrices are 16 floats, column-major (OpenGL's layout; glm::value_ptr, Irrlicht's
