@@ -46,7 +46,7 @@ public:
     /// that drops tasks costs time, not results.
     template <class F>
     void run(const Pieces& pieces, F&& f) const {
-        if (!host_ || pieces.count <= 1) {
+        if (!host_ || pieces.count <= 1 || pieces.count > HostAdapter::kMaxTasks) {
             for (uint32_t i = 0; i < pieces.count; ++i) f(i);
             return;
         }
@@ -55,7 +55,7 @@ public:
             Fn* fn;
             std::array<std::atomic<uint8_t>, HostAdapter::kMaxTasks> done;
         } call{&f, {}};
-        const uint32_t count = std::min<uint32_t>(pieces.count, HostAdapter::kMaxTasks);
+        const uint32_t count = pieces.count;
         for (uint32_t i = 0; i < count; ++i) call.done[i].store(0, std::memory_order_relaxed);
         host_->parallelFor(
             count,
