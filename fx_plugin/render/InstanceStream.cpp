@@ -1,5 +1,7 @@
 #include "InstanceStream.h"
 
+#include <cstring>
+
 #include "render/PrivateGl.h"
 
 namespace fx {
@@ -40,8 +42,9 @@ void InstanceStream::create() {
     bindRange(0);
 }
 
-void InstanceStream::upload(const ParticleInstance* data, int count) {
-    const size_t bytes = size_t(count > 0 ? count : 0) * sizeof(ParticleInstance);
+void InstanceStream::upload(const ParticleInstance* data, int count, const Jobs& jobs) {
+    const size_t n = size_t(count > 0 ? count : 0);
+    const size_t bytes = n * sizeof(ParticleInstance);
     glBindBuffer(GL_ARRAY_BUFFER, instanceBuffer_);
     if (bytes > capacityBytes_) {
         while (capacityBytes_ < bytes) capacityBytes_ *= 2;
@@ -49,7 +52,29 @@ void InstanceStream::upload(const ParticleInstance* data, int count) {
     }
     // Orphan: a fresh store of the same size; draws still queued keep reading the old one.
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(capacityBytes_), nullptr, GL_STREAM_DRAW);
-    if (bytes) glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(bytes), data);
+    if (!bytes) return;
+    // Pieces of 16k instances (512 KB): the copy is the driver's one serial step otherwise.
+    const Pieces pieces = splitWork(n, 16384, 16);
+    if (jobs.parallel() && pieces.count > 1) {
+        void* mapped = glMapBufferRange(GL_ARRAY_BUFFER, 0, GLsizeiptr(bytes),
+                                        GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
+        if (mapped) {
+            auto* to = static_cast<ParticleInstance*>(mapped);
+            jobs.run(pieces, [&](uint32_t piece) {
+                const size_t first = pieces.begin(piece);
+                std::memcpy(to + first, data + first, (pieces.end(piece) - first) * sizeof(ParticleInstance));
+            });
+            // False: the store was lost while mapped (GL says it may be, on a display change);
+            // it is filled again below.
+            if (glUnmapBuffer(GL_ARRAY_BUFFER) == GL_TRUE) {
+                ++mappedUploads_;
+                return;
+            }
+        } else {
+            glGetError();  // the refusal this call raised (out of memory): taken back, as documented
+        }
+    }
+    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(bytes), data);
 }
 
 void InstanceStream::bindRange(int first) {

@@ -11,6 +11,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "base/ParallelFor.h"
+
 namespace fx {
 
 /// One particle as the vertex shader reads it. 32 bytes.
@@ -35,8 +37,12 @@ public:
     void create();
     bool created() const { return vao_ != 0; }
     /// Orphans and refills the instance buffer; grows it when `count` does not fit.
-    /// Leaves GL_ARRAY_BUFFER bound to it.
-    void upload(const ParticleInstance* data, int count);
+    /// Leaves GL_ARRAY_BUFFER bound to it. With a job system and tens of thousands of instances
+    /// the buffer is mapped and the copy split into pieces on the host's threads (one 32-byte
+    /// instance a particle: 8 MB at 256k); otherwise, or where mapping fails, glBufferSubData.
+    void upload(const ParticleInstance* data, int count, const Jobs& jobs = Jobs());
+    /// Uploads that went through a mapped buffer (the copy in pieces).
+    int mappedUploads() const { return mappedUploads_; }
     /// Binds the vertex array with the instance attributes starting at instance `first`.
     void bindRange(int first);
     size_t capacityBytes() const { return capacityBytes_; }
@@ -49,6 +55,7 @@ private:
     uint32_t instanceBuffer_ = 0;
     size_t capacityBytes_ = 0;
     int growCount_ = 0;
+    int mappedUploads_ = 0;
 };
 
 }  // namespace fx

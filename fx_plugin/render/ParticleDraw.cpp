@@ -24,7 +24,7 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
     const ViewInfo& view = record.view;
     glActiveTexture(GL_TEXTURE0);
     ramp_.upload();
-    stream_.upload(list.instances.data(), list.particleCount());
+    stream_.upload(list.instances.data(), list.particleCount(), jobs_);
 
     plainDrawState();
     in.clip.apply();  // a host's scissor on sceneColor keeps clipping the smoke

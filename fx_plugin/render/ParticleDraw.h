@@ -56,6 +56,8 @@ public:
 
     /// Draws with the programs of `programs`, which must outlive this.
     explicit ParticleDraw(ProgramCache& programs) : programs_(&programs) {}
+    /// The host's job system for the instance upload's copy (none: one thread).
+    void setJobs(const Jobs& jobs) { jobs_ = jobs; }
 
     /// Loads the atlas (inside a guard): false with "path: reason" in *error.
     bool loadAtlas(const std::string& dataDir, std::string* error) { return atlas_.load(dataDir, error); }
@@ -79,6 +81,7 @@ private:
                           uint32_t opacity) const;
 
     ProgramCache* programs_;
+    Jobs jobs_;
     SmokeAtlas atlas_;
     ColorRampTexture ramp_;
     InstanceStream stream_;

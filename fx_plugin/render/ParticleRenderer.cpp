@@ -29,7 +29,9 @@ ParticleRenderer::ParticleRenderer(RendererConfig config, ProgramCache& programs
     : config_(std::move(config)),
       draw_(programs),
       fullRes_(draw_, sizeMismatchTo(config_.errors)),
-      quarter_(draw_, sizeMismatchTo(config_.errors)) {}
+      quarter_(draw_, sizeMismatchTo(config_.errors)) {
+    draw_.setJobs(config_.jobs);
+}
 
 ParticleRenderer::~ParticleRenderer() {
     if (state_ == State::Unloaded || !privateGlLoaded()) return;  // no GL was ever touched
