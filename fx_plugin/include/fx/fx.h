@@ -60,7 +60,7 @@
  *  - Threading and GL: one thread at a time; functions marked (GL) need the host's GL context
  *    current on the calling thread. The plugin starts no threads; it may hand pieces of a view's
  *    CPU work to the host's job system (fxHostCallbacks.parallelFor, API 2.2) while it prepares
- *    the view, and every piece has returned before the call does. Around every (GL) call and every pass it runs, the plugin
+ *    or draws the view, and every piece has returned before the call or pass does. Around every (GL) call and every pass it runs, the plugin
  *    sets every GL state its output depends on and restores every state it touched, in core and
  *    compatibility contexts (fx_plugin/README.md lists them).
  *  - Matrices are 16 floats, column-major (OpenGL's layout; glm::value_ptr, Irrlicht's
@@ -139,9 +139,9 @@ typedef struct fxHostCallbacks {
     /* API 2.2 (a 2.0/2.1 size leaves it null). The host's job system: call task(data, i) once
      * for every i in [0, count), on any threads, any number at once, and return when every call
      * has returned. A task touches no GL and calls nothing of the host's or the plugin's; the
-     * plugin asks while declaring a view's passes, for work of thousands of particles, in at most
-     * 64 pieces, and its results do not depend on how they are run. null: in order on the
-     * calling thread. */
+     * plugin asks while preparing a view (declarePasses, renderView) and while its particle pass
+     * runs (the instance copy), for work of thousands of particles, in at most 64 pieces, and its
+     * results do not depend on how they are run. null: in order on the calling thread. */
     void (*parallelFor)(void* user, uint32_t count, void (*task)(void* data, uint32_t index), void* data);
 } fxHostCallbacks;
 
