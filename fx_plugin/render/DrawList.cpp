@@ -112,10 +112,13 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
         const size_t first = out->instances.size();
         out->instances.resize(first + drawnCount);
         ParticleInstance* const listed = out->instances.data() + first;
-        if (sort) {
+        if (drawnCount == 0) {
+            // Nothing visible: no batch (and no copy from or into an empty array).
+        } else if (sort) {
             // The depths without the gaps (and where each came from), sorted; then gathered.
             jobs.run(pieces, [&](uint32_t piece) {
                 const size_t from = pieces.begin(piece), n = pieceDrawn_[piece], to = pieceFirst_[piece];
+                if (n == 0) return;
                 std::memcpy(packedDepth_.data() + to, depth_.data() + from, n * sizeof(float));
                 for (size_t j = 0; j < n; ++j) packedAt_[to + j] = uint32_t(from + j);
             });
@@ -129,6 +132,7 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
             });
         } else {
             jobs.run(pieces, [&](uint32_t piece) {
+                if (pieceDrawn_[piece] == 0) return;
                 std::memcpy(listed + pieceFirst_[piece], culled_.data() + pieces.begin(piece),
                             pieceDrawn_[piece] * sizeof(ParticleInstance));
             });

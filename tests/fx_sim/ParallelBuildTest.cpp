@@ -211,4 +211,20 @@ TEST(ParallelBuild, OneParticleAtTheNearPlaneInAnyPieceMakesTheWholeView) {
     EXPECT_EQ(tiles.pixels, int64_t(s.view.width) * s.view.height);
 }
 
+TEST(ParallelBuild, AViewThatSeesNothingGivesAnEmptyList) {
+    const Scene s(40000);
+    fx::ViewInfo away = s.view;  // looking straight up, past every particle (they are below 6 m)
+    away.view = glm::lookAt(glm::vec3(0.0f, 50.0f, 0.0f), glm::vec3(0.0f, 100.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f));
+    away.eye = glm::vec3(0.0f, 50.0f, 0.0f);
+    const fx::ParticleBatch batches[2] = {s.batch(false), s.batch(true)};
+    for (HowRun how : kRuns) {
+        JobHost host(how);
+        fx::DrawListBuilder builder;
+        fx::DrawList list;
+        builder.build(away, batches, 2, fx::Technique::FromReaction, ~0u, &list, fx::Jobs(&host));
+        EXPECT_EQ(list.particleCount(), 0);
+        EXPECT_TRUE(list.batches.empty());
+    }
+}
+
 }  // namespace
