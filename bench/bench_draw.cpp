@@ -29,7 +29,7 @@
 #include "render/DrawList.h"
 #include "render/ScreenTiles.h"
 #include "sim/ParticlePool.h"
-#include "game/JobSystem.h"
+#include "BenchJobsHost.h"
 
 namespace {
 
@@ -112,23 +112,9 @@ void BM_InstanceCopy(benchmark::State& state) {
     state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(n));
 }
 
-// A host whose job system is the engine's.
-class JobsHost final : public fx::HostAdapter {
-public:
-    explicit JobsHost(int threads) : jobs_(threads) {}
-    void* getProcAddress(const char*) override { return nullptr; }
-    int wheelCount() const override { return 0; }
-    fx::WheelContact wheel(int) const override { return fx::WheelContact{}; }
-    void log(fx::LogLevel, const char*) override {}
-    void parallelFor(uint32_t count, Task task, void* data) override { jobs_.parallelFor(count, task, data); }
-
-private:
-    cube::JobSystem jobs_;
-};
-
 void BM_DrawListBuildJobs(benchmark::State& state) {
     Scene s(int(state.range(0)));
-    JobsHost host(int(state.range(1)));
+    bench::JobsHost host(int(state.range(1)));
     const fx::ParticleBatch batch = s.batch();
     fx::DrawListBuilder builder;
     fx::DrawList list;
@@ -141,7 +127,7 @@ void BM_DrawListBuildJobs(benchmark::State& state) {
 
 void BM_ScreenRectJobs(benchmark::State& state) {
     Scene s(int(state.range(0)));
-    JobsHost host(int(state.range(1)));
+    bench::JobsHost host(int(state.range(1)));
     const fx::ParticleBatch batch = s.batch();
     fx::DrawListBuilder builder;
     fx::DrawList list;

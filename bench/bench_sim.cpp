@@ -1,6 +1,7 @@
 // bench_sim: how close the particle update is to the memory bandwidth of this machine.
 //
 //   BM_ReactionRuntimeStep/N  a full pool of N particles stepped by fx::ReactionRuntime::step
+//   BM_ReactionRuntimeStepJobs/N/T  the same step in pieces on the engine's job system of T threads
 //                             (exact drag, age/kill test, rotation, size, life, fade); bytes =
 //                             the 15 float streams of the pool, N * 60 B per step
 //   BM_StreamRmw/15/N         reference: read-modify-write sweep over 15 float arrays of N
@@ -40,6 +41,7 @@
 #include "sim/Lifecycle.h"
 #include "sim/ReactionRuntime.h"
 #include "sim/StatelessParticle.h"
+#include "BenchJobsHost.h"
 
 namespace {
 
@@ -66,8 +68,12 @@ std::unique_ptr<fx::ReactionRuntime> filledRuntime(int n) {
     return r;
 }
 
-void BM_ReactionRuntimeStep(benchmark::State& state) {
+// BM_ReactionRuntimeStep, or with `threads` > 0 the step in pieces on the engine's job system of
+// that many threads (BM_ReactionRuntimeStepJobs/N/T).
+void runtimeStep(benchmark::State& state, int threads) {
     const int n = int(state.range(0));
+    std::unique_ptr<bench::JobsHost> host = threads > 0 ? std::make_unique<bench::JobsHost>(threads) : nullptr;
+    const fx::Jobs jobs(host.get());
     auto runtime = filledRuntime(n);
     int steps = 0;
     int64_t updates = 0;
@@ -79,13 +85,16 @@ void BM_ReactionRuntimeStep(benchmark::State& state) {
             state.ResumeTiming();
         }
         updates += runtime->pool().alive();
-        runtime->step(kDt, nullptr, 0, 0.0f, glm::vec3(0.0f), glm::vec3(0.5f, 0.0f, 0.0f));
+        runtime->step(kDt, nullptr, 0, 0.0f, glm::vec3(0.0f), glm::vec3(0.5f, 0.0f, 0.0f), jobs);
         benchmark::ClobberMemory();
     }
     state.SetItemsProcessed(updates);
     state.SetBytesProcessed(updates * kPoolStreams * int64_t(sizeof(float)));
     state.counters["alive"] = double(runtime->pool().alive());
 }
+
+void BM_ReactionRuntimeStep(benchmark::State& state) { runtimeStep(state, 0); }
+void BM_ReactionRuntimeStepJobs(benchmark::State& state) { runtimeStep(state, int(state.range(1))); }
 
 void BM_ApplyDragStep(benchmark::State& state) {
     const size_t n = size_t(state.range(0));
@@ -191,6 +200,7 @@ void BM_StatelessVertexWork(benchmark::State& state) {
 
 // 1k (L1/L2), 10k, 100k (L2/L3), 1M particles (DRAM: 60 MB of pool).
 BENCHMARK(BM_ReactionRuntimeStep)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000);
+BENCHMARK(BM_ReactionRuntimeStepJobs)->ArgsProduct({{100000, 1000000}, {1, 2}})->UseRealTime();
 BENCHMARK(BM_StreamRmw)->Args({15, 1000})->Args({15, 10000})->Args({15, 100000})->Args({15, 1000000});
 BENCHMARK(BM_ApplyDragStep)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000);
 BENCHMARK(BM_StreamRmw)->Args({6, 1000})->Args({6, 10000})->Args({6, 100000})->Args({6, 1000000});

@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <thread>
 #include <type_traits>
 
 #include "fx/HostAdapter.h"
@@ -40,10 +41,10 @@ public:
     /// Whether there is a host to hand pieces to (else run() is a plain loop).
     bool parallel() const { return host_ != nullptr; }
 
-    /// f(i) for every piece i of `pieces`; returns when all have returned. f must not depend on
-    /// the order the pieces run in, and running a piece twice must give what running it once
-    /// does. A piece the host's job system did not run is run here after it returns, so a host
-    /// that drops tasks costs time, not results.
+    /// f(i) for every piece i of `pieces`, each exactly once; returns when all have returned. f
+    /// must not depend on the order the pieces run in. Each piece runs once whatever the host
+    /// does: a second call for a piece returns at once, and a piece the host's job system did not
+    /// run is run here after it returns, so a careless host costs time, not results.
     template <class F>
     void run(const Pieces& pieces, F&& f) const {
         if (!host_ || pieces.count <= 1 || pieces.count > HostAdapter::kMaxTasks) {
@@ -53,21 +54,29 @@ public:
         using Fn = std::remove_reference_t<F>;
         struct Call {
             Fn* fn;
-            std::array<std::atomic<uint8_t>, HostAdapter::kMaxTasks> done;
-        } call{&f, {}};
-        const uint32_t count = pieces.count;
-        for (uint32_t i = 0; i < count; ++i) call.done[i].store(0, std::memory_order_relaxed);
+            uint32_t count;
+            std::array<std::atomic<uint8_t>, HostAdapter::kMaxTasks> started, done;
+        } call{&f, pieces.count, {}, {}};
+        for (uint32_t i = 0; i < call.count; ++i) {
+            call.started[i].store(0, std::memory_order_relaxed);
+            call.done[i].store(0, std::memory_order_relaxed);
+        }
         host_->parallelFor(
-            count,
+            call.count,
             [](void* data, uint32_t i) {
                 Call& c = *static_cast<Call*>(data);
-                if (i >= HostAdapter::kMaxTasks) return;
+                if (i >= c.count || c.started[i].exchange(1, std::memory_order_acq_rel)) return;
                 (*c.fn)(i);
                 c.done[i].store(1, std::memory_order_release);
             },
             &call);
-        for (uint32_t i = 0; i < count; ++i) {
-            if (!call.done[i].load(std::memory_order_acquire)) f(i);
+        for (uint32_t i = 0; i < call.count; ++i) {
+            if (!call.started[i].exchange(1, std::memory_order_acq_rel)) {
+                f(i);  // dropped by the host
+            } else {
+                // Started by the host: finished, unless its job system returned early.
+                while (!call.done[i].load(std::memory_order_acquire)) std::this_thread::yield();
+            }
         }
     }
 

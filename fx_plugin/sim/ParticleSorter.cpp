@@ -123,7 +123,7 @@ ParticleSorter::Order ParticleSorter::sortDescending(const float* depth, const u
             }
         }
         jobs.run(pieces, [&](uint32_t piece) {
-            uint32_t slot[kDigits];  // a copy: a piece run twice writes the same slots again
+            uint32_t slot[kDigits];  // this piece's next slot per digit
             std::memcpy(slot, &pieceSlots_[size_t(piece) * kDigits], sizeof slot);
             for (size_t i = pieces.begin(piece), e = pieces.end(piece); i < e; ++i) {
                 const uint32_t k = srcKeys[i];

@@ -68,7 +68,7 @@ float ReactionRuntime::wheelStrength(const ReactionDesc& desc, const WheelContac
 }
 
 void ReactionRuntime::step(float dt, const WheelContact* wheels, int wheelCount,
-                           float collisionAmount, glm::vec3 collisionPoint, glm::vec3 wind) {
+                           float collisionAmount, glm::vec3 collisionPoint, glm::vec3 wind, const Jobs& jobs) {
     dt = sanitizeDt(dt);
     if (dt == 0.0f) return;
     if (!finite3(wind)) wind = glm::vec3(0.0f);
@@ -76,7 +76,7 @@ void ReactionRuntime::step(float dt, const WheelContact* wheels, int wheelCount,
     const glm::vec3 terminal = terminalVelocity(wind, p.windFactor, p.riseSpeed);
     terminal_ = terminal;
 
-    if (!stateless()) advanceParticles(dt, terminal);  // stateless: nothing to update
+    if (!stateless()) advanceParticles(dt, terminal, jobs);  // stateless: nothing to update
     time_ += dt;
 
     if (desc_.type == ReactionType::OnDemand) {
@@ -129,7 +129,7 @@ void ReactionRuntime::stepThroughField(glm::vec3& x, glm::vec3& v, glm::vec3 ori
     applyDragStep(full, um, g, x, v);
 }
 
-void ReactionRuntime::advanceParticles(float dt, glm::vec3 u) {
+void ReactionRuntime::advanceParticles(float dt, glm::vec3 u, const Jobs& jobs) {
     const ParticleDesc& p = desc_.particle;
     const DragStep s = makeDragStep(p.drag, dt);
     float* px = pool_.stream(ParticlePool::PosX);
@@ -153,12 +153,15 @@ void ReactionRuntime::advanceParticles(float dt, glm::vec3 u) {
     const float gy = -p.gravity;
     const DragStep half = field ? makeDragStep(p.drag, 0.5f * dt) : DragStep{};
 
-    for (int i = 0; i < pool_.alive();) {
+    // One particle's step; false when it has reached its lifetime (and is left as it is). It
+    // reads and writes slot i alone, so where in the pool (or on which thread) it runs changes
+    // nothing. Captured by value, and copied into the pieces' task: the loop below keeps the
+    // stream pointers in registers across the pool's kill().
+    const ParticleDesc* desc = &p;  // captured as a pointer: [=] would copy the desc (its curves)
+    const auto advance = [this, desc, dt, u, s, half, field, gy, px, py, pz, vx, vy, vz, age, lifetime, start, end, rot,
+                          spin, size, life, fade, ox, oz](int i) {
         age[i] += dt;
-        if (age[i] >= lifetime[i]) {
-            pool_.kill(i);  // slot i now holds the last particle, not yet advanced: revisit i
-            continue;
-        }
+        if (age[i] >= lifetime[i]) return false;
         if (field) {
             glm::vec3 x(px[i], py[i], pz[i]), v(vx[i], vy[i], vz[i]);
             stepThroughField(x, v, glm::vec3(ox[i], 0.0f, oz[i]), u, time_, half, s);
@@ -176,9 +179,48 @@ void ReactionRuntime::advanceParticles(float dt, glm::vec3 u) {
         rot[i] = wrapAngle(rot[i] + spin[i] * dt);
         const float f = age[i] / lifetime[i];
         life[i] = f;
-        size[i] = sizeAt(p, start[i], end[i], f);
-        fade[i] = fadeAt(p, f);
-        ++i;
+        size[i] = sizeAt(*desc, start[i], end[i], f);
+        fade[i] = fadeAt(*desc, f);
+        return true;
+    };
+
+    const int n = pool_.alive();
+    const Pieces pieces = splitWork(size_t(n), 8192, HostAdapter::kMaxTasks);
+    if (!jobs.parallel() || pieces.count <= 1) {
+        for (int i = 0; i < pool_.alive();) {
+            if (advance(i)) {
+                ++i;
+            } else {
+                pool_.kill(i);  // slot i now holds the last particle, not yet advanced: revisit i
+            }
+        }
+        return;
+    }
+    // In pieces: every particle advanced where it lies, the dead marked; then the dead leave as
+    // the loop above lets them (the last particle takes a dead one's slot, and is looked at
+    // there again), so the pool ends the same, slot for slot. The one moved was advanced in its
+    // old slot, which gives what advancing it in the new one gives.
+    if (dead_.size() < size_t(n)) dead_.resize(size_t(pool_.capacity()));
+    std::array<uint32_t, HostAdapter::kMaxTasks> deaths{};
+    jobs.run(pieces, [&, advance](uint32_t piece) {
+        uint32_t died = 0;
+        for (size_t i = pieces.begin(piece), e = pieces.end(piece); i < e; ++i) {
+            const bool lives = advance(int(i));
+            dead_[i] = lives ? 0 : 1;
+            died += lives ? 0u : 1u;
+        }
+        deaths[piece] = died;
+    });
+    uint32_t died = 0;
+    for (uint32_t piece = 0; piece < pieces.count; ++piece) died += deaths[piece];
+    for (int i = 0; died > 0 && i < pool_.alive();) {
+        if (!dead_[size_t(i)]) {
+            ++i;
+            continue;
+        }
+        dead_[size_t(i)] = dead_[size_t(pool_.alive() - 1)];
+        pool_.kill(i);
+        --died;  // each kill takes one dead particle out: none left, nothing more to look at
     }
 }
 

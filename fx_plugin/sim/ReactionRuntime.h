@@ -46,12 +46,14 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
 #include "EmissionClock.h"
 #include "Integrator.h"
 #include "ParticlePool.h"
+#include "base/ParallelFor.h"
 #include "Rng.h"
 #include "StatelessRing.h"
 #include "reactions/ReactionDesc.h"
@@ -77,8 +79,10 @@ public:
 
     /// Advances every particle by dt and emits for this step. dt <= 0, NaN or Inf: no-op.
     /// `wheels` may be null when wheelCount is 0. Non-finite inputs are ignored, not propagated.
+    /// `jobs`: the host's job system; a pool of tens of thousands is advanced in pieces on it,
+    /// to the same state bit for bit (the same particles in the same slots).
     void step(float dt, const WheelContact* wheels, int wheelCount, float collisionAmount,
-              glm::vec3 collisionPoint, glm::vec3 wind);
+              glm::vec3 collisionPoint, glm::vec3 wind, const Jobs& jobs = Jobs());
 
     /// Hot reload of a reaction whose name and capacity did not change: new parameters, same
     /// particles, carries and generator (the smoke on screen stays).
@@ -123,7 +127,7 @@ public:
     static float wheelStrength(const ReactionDesc& desc, const WheelContact& wheel);
 
 private:
-    void advanceParticles(float dt, glm::vec3 terminal);
+    void advanceParticles(float dt, glm::vec3 terminal, const Jobs& jobs);
     void emitFromWheel(int index, const WheelContact& wheel, float dt, glm::vec3 terminal);
     void emitBurst(float amount, glm::vec3 point, glm::vec3 terminal);
     void emitScrape(float dt, float amount, glm::vec3 point, glm::vec3 terminal);
@@ -133,6 +137,7 @@ private:
 
     ReactionDesc desc_;
     ParticlePool pool_;
+    std::vector<uint8_t> dead_;  // scratch of a step in pieces: slot i's particle reached its lifetime
     StatelessRing ring_;
     Pcg32 rng_;
     std::array<EmissionClock, kMaxWheels> clocks_{};

@@ -179,7 +179,7 @@ ErrorCode PluginImpl::continueReaction(int index, float dt, float* currentVehicl
     for (int i = 0; i < count; ++i) wheels[static_cast<size_t>(i)] = host_->wheel(i);
     const float amount = currentVehicleCollisionAmount ? *currentVehicleCollisionAmount : 0.0f;
     runtimes_[static_cast<size_t>(index)].step(dt, wheels.data(), count, amount,
-                                               host_->collisionPoint(), host_->wind());
+                                               host_->collisionPoint(), host_->wind(), Jobs(host_));
     return ErrorCode::None;
 }
 

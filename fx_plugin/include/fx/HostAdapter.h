@@ -95,8 +95,9 @@ public:
     /// any of its threads, any number at once, and returns when every call has returned. A task
     /// touches no GL and calls nothing of the host's or the plugin's; it only reads and writes
     /// the plugin's own memory, in slices that do not overlap. The plugin asks for it while
-    /// preparing a view (culling, sorting and bounding the particles) and while its particle pass
-    /// runs (copying the instances into the mapped vertex buffer), only for work of
+    /// preparing a view (culling, sorting and bounding the particles), while its particle pass
+    /// runs (copying the instances into the mapped vertex buffer) and in continueReaction
+    /// (advancing the particles), only for work of
     /// thousands of particles and more, in at most kMaxTasks pieces; its results are the same
     /// bit for bit however the host runs them. The default runs them in order on the calling
     /// thread.

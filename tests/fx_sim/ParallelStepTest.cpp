@@ -1,0 +1,84 @@
+// ReactionRuntime::step with the host's job system: a pool of tens of thousands is advanced in
+// pieces and its dead retired afterwards, and the pool ends the same bit for bit, slot for slot, as
+// the one-thread step leaves it, through deaths, the turbulent midpoint step and any way the host
+// runs the pieces (JobHosts.h).
+#include <cstring>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "JobHosts.h"
+#include "../../fx_plugin/sim/ReactionRuntime.h"
+
+namespace {
+
+using jobhost_test::HowRun;
+using jobhost_test::JobHost;
+using jobhost_test::kRuns;
+
+constexpr float kDt = 1.0f / 60.0f;
+
+// A burst of 40,000 on the first step, lifetimes 0.05 to 0.3 s: a few thousand die each step.
+fx::ReactionDesc burstDesc(bool turbulent) {
+    fx::ReactionDesc d = fx::defaultReaction(fx::ReactionType::CollisionBurst);
+    d.name = turbulent ? "parallel_step_turbulent" : "parallel_step";
+    d.emission.capacity = 40000;
+    d.emission.burst = 40000;
+    d.particle.lifetimeMin = 0.05f;
+    d.particle.lifetimeMax = 0.3f;
+    d.particle.spreadSpeed = 3.0f;
+    if (turbulent) {
+        d.turbulence.strength = 2.0f;
+        d.vortex.strength = 1.5f;
+    }
+    return d;
+}
+
+void stepBoth(fx::ReactionRuntime& serial, fx::ReactionRuntime& pieces, const fx::Jobs& jobs, float amount) {
+    const glm::vec3 point(0.0f, 0.5f, 0.0f), wind(0.5f, 0.0f, 0.2f);
+    serial.step(kDt, nullptr, 0, amount, point, wind);
+    pieces.step(kDt, nullptr, 0, amount, point, wind, jobs);
+}
+
+// Every stream of every live slot, and the frames, compared byte for byte.
+void expectSamePool(const fx::ParticlePool& a, const fx::ParticlePool& b, int step) {
+    ASSERT_EQ(a.alive(), b.alive()) << "step " << step;
+    const size_t n = size_t(a.alive());
+    for (int s = 0; s < fx::ParticlePool::StreamCount; ++s) {
+        const auto stream = static_cast<fx::ParticlePool::Stream>(s);
+        ASSERT_EQ(std::memcmp(a.stream(stream), b.stream(stream), n * sizeof(float)), 0) << "stream " << s << ", step " << step;
+    }
+    ASSERT_EQ(std::memcmp(a.frame(), b.frame(), n), 0) << "step " << step;
+}
+
+TEST(ParallelStep, PiecesLeaveThePoolAsOneThreadDoesThroughDeaths) {
+    for (bool turbulent : {false, true}) {
+        for (HowRun how : kRuns) {
+            JobHost host(how);
+            fx::ReactionRuntime serial(burstDesc(turbulent)), pieces(burstDesc(turbulent));
+            stepBoth(serial, pieces, fx::Jobs(&host), 1.0f);  // the burst
+            ASSERT_GT(serial.pool().alive(), 32768);  // at least two pieces
+            const int callsAfterBurst = host.calls;
+            int minAlive = serial.pool().alive();
+            for (int step = 1; step < 20; ++step) {
+                stepBoth(serial, pieces, fx::Jobs(&host), 0.0f);
+                expectSamePool(serial.pool(), pieces.pool(), step);
+                minAlive = std::min(minAlive, serial.pool().alive());
+            }
+            EXPECT_GT(host.calls, callsAfterBurst) << "the steps went through the host's job system";
+            EXPECT_LT(minAlive, 10000) << "most of the burst died on the way: the retiring was exercised";
+        }
+    }
+}
+
+TEST(ParallelStep, SmallPoolsAndNoJobSystemStayOnTheCallingThread) {
+    fx::ReactionDesc d = burstDesc(false);
+    d.emission.capacity = d.emission.burst = 10000;  // one piece
+    JobHost host(HowRun::Threads);
+    fx::ReactionRuntime small(d);
+    for (int step = 0; step < 5; ++step) small.step(kDt, nullptr, 0, step == 0 ? 1.0f : 0.0f, glm::vec3(0.0f), glm::vec3(0.0f), fx::Jobs(&host));
+    EXPECT_GT(small.pool().alive(), 0);
+    EXPECT_EQ(host.calls, 0);
+}
+
+}  // namespace
