@@ -97,10 +97,9 @@ public:
     /// the plugin's own memory, in slices that do not overlap. The plugin asks for it while
     /// preparing a view (culling, sorting and bounding the particles), while its particle pass
     /// runs (copying the instances into the mapped vertex buffer) and in continueReaction
-    /// (advancing the particles), only for work of
-    /// thousands of particles and more, in at most kMaxTasks pieces; its results are the same
-    /// bit for bit however the host runs them. The default runs them in order on the calling
-    /// thread.
+    /// (advancing the particles), only for work of thousands of particles and more, in at most
+    /// kMaxTasks pieces; its results are the same bit for bit however the host runs them. The
+    /// default runs them in order on the calling thread.
     static constexpr uint32_t kMaxTasks = 64;
     virtual void parallelFor(uint32_t count, Task task, void* data) {
         for (uint32_t i = 0; i < count; ++i) task(data, i);

@@ -140,8 +140,9 @@ typedef struct fxHostCallbacks {
      * for every i in [0, count), on any threads, any number at once, and return when every call
      * has returned. A task touches no GL and calls nothing of the host's or the plugin's; the
      * plugin asks while preparing a view (declarePasses, renderView), while its particle pass
-     * runs (the instance copy) and in continueReaction (the particles' step), for work of thousands of particles, in at most 64 pieces, and its
-     * results do not depend on how they are run. null: in order on the calling thread. */
+     * runs (the instance copy) and in continueReaction (the particles' step), for work of
+     * thousands of particles, in at most 64 pieces, and its results do not depend on how they
+     * are run. null: in order on the calling thread. */
     void (*parallelFor)(void* user, uint32_t count, void (*task)(void* data, uint32_t index), void* data);
 } fxHostCallbacks;
 
