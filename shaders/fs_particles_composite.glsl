@@ -10,8 +10,18 @@
 // depth is closest. Smoke computed for a near surface then never smears onto a far one and vice
 // versa, and along an edge the result stays as smooth as bilinear. FX_COMPOSITE_BILINEAR keeps
 // plain bilinear (for comparison).
-// Two builds (QuarterResPrograms::CompositeVariant), not a uniform branch: a CPU rasteriser runs
-// both sides of a branch, so one program with both paths paid for both paths' fetches.
+//
+// Fetches per pixel, the sampler's bilinear filter doing the weighting (uHalfColor is sampled
+// LINEAR, clamped to its edge, which is what clamping the taps to the last texel did):
+//   - no smoke in the footprint: 1, the bilinear colour; the pixel is discarded.
+//   - smoke, no depth edge: 3, the bilinear colour, the pixel's depth, the four low-res depths in
+//     one textureGather (four texelFetch where the context has no ARB_texture_gather).
+//   - a depth edge: 5. The kept texels' weights are split by row: a row's kept texels are none,
+//     one or both, and one bilinear fetch at that row's centre line, its x moved to the kept
+//     texels' weighted centre, returns exactly their renormalised blend.
+// (The rows are fetched only on an edge; a CPU rasteriser runs both sides of a branch, so it pays
+// 5 everywhere there is smoke, still fewer than the 9 texelFetch this took before.)
+#extension GL_ARB_texture_gather : enable
 uniform sampler2D uHalfColor;   // premultiplied RGBA8 (RGBA16F with spheres), half x half
 uniform sampler2D uHalfDepth;   // red: min depth per 2x2 block (RG32F, green the max)
 uniform sampler2D uSceneDepth;  // full-res scene depth (particles_scene_depth.glsl)
@@ -22,41 +32,59 @@ uniform float uDepthThreshold;  // relative: |low - full| > threshold * full is 
 layout(location = 0) out vec4 oColor;
 
 void main() {
+    ivec2 lowSize = textureSize(uHalfColor, 0);
+    vec2 invLow = 1.0 / vec2(lowSize);
     ivec2 base, last;
     vec2 f;
-    vec2 pixel = fragmentFootprint(textureSize(uHalfColor, 0), base, f, last);
-    ivec2 t0 = clamp(base, ivec2(0), last), t1 = clamp(base + ivec2(1, 0), ivec2(0), last);
-    ivec2 t2 = clamp(base + ivec2(0, 1), ivec2(0), last), t3 = clamp(base + ivec2(1, 1), ivec2(0), last);
-    float w0 = (1.0 - f.x) * (1.0 - f.y), w1 = f.x * (1.0 - f.y), w2 = (1.0 - f.x) * f.y, w3 = f.x * f.y;
-
-    vec4 c0 = texelFetch(uHalfColor, t0, 0), c1 = texelFetch(uHalfColor, t1, 0);
-    vec4 c2 = texelFetch(uHalfColor, t2, 0), c3 = texelFetch(uHalfColor, t3, 0);
-    vec4 bilinear = vec4(0.0) + w0 * c0 + w1 * c1 + w2 * c2 + w3 * c3;
-    // No smoke in the footprint (premultiplied, so additive smoke with alpha 0 still counts):
+    vec2 pixel = fragmentFootprint(lowSize, base, f, last);
+    // The bilinear colour of the footprint: (base + f + 0.5) / lowSize.
+    vec4 bilinear = textureLod(uHalfColor, (vec2(base) + f + 0.5) * invLow, 0.0);
+    // No smoke in the footprint (premultiplied, so additive smoke with alpha 0 still counts; every
+    // channel is >= 0 and every weight > 0, so the blend is 0 exactly when all four texels are):
     // blending it would leave the pixel as it is, so it is not blended at all. Inside the tiles
-    // many pixels are smoke-free; a GPU then skips the scene-depth fetch and the blend's
+    // many pixels are smoke-free; a GPU then skips the other fetches and the blend's
     // read-modify-write there.
-    if (all(equal(c0 + c1 + c2 + c3, vec4(0.0)))) discard;
+    if (all(equal(bilinear, vec4(0.0)))) discard;
 
 #if defined(FX_COMPOSITE_BILINEAR)
     oColor = bilinear;
 #else
-    // On an edge, keep the bilinear weights of the texels on this pixel's side of it (depth
-    // within the threshold), renormalised; only when none is, the single nearest-depth texel
-    // (the first of equal ones).
-    float full = linearSceneDepth(texelFetch(uSceneDepth, sceneDepthTexel(ivec2(pixel)), 0).r);  // nothing drawn: 3.0e38
+    // This pixel's depth texel, read at its centre through the nearest sampler (the texel
+    // texelFetch reads, which a CPU rasteriser bounds-checks lane by lane); nothing drawn: 3.0e38.
+    vec2 depthUv = (vec2(sceneDepthTexel(ivec2(pixel))) + 0.5) / vec2(textureSize(uSceneDepth, 0));
+    float full = linearSceneDepth(textureLod(uSceneDepth, depthUv, 0.0).r);
     float limit = uDepthThreshold * full;
-    vec4 diff = abs(vec4(texelFetch(uHalfDepth, t0, 0).r, texelFetch(uHalfDepth, t1, 0).r,
-                         texelFetch(uHalfDepth, t2, 0).r, texelFetch(uHalfDepth, t3, 0).r) - full);
+    // Depths of the taps t0 = base, t1 = base + (1, 0), t2 = base + (0, 1), t3 = base + (1, 1),
+    // each clamped into the image. Gathered at the corner the four share: the footprint cannot
+    // round to a neighbouring one there, and clamping to the edge clamps the taps.
+#ifdef GL_ARB_texture_gather
+    vec4 low = textureGather(uHalfDepth, (vec2(base) + 1.0) * invLow).wzxy;
+#else
+    ivec2 t0 = clamp(base, ivec2(0), last), t3 = clamp(base + ivec2(1), ivec2(0), last);
+    vec4 low = vec4(texelFetch(uHalfDepth, t0, 0).r, texelFetch(uHalfDepth, ivec2(t3.x, t0.y), 0).r,
+                    texelFetch(uHalfDepth, ivec2(t0.x, t3.y), 0).r, texelFetch(uHalfDepth, t3, 0).r);
+#endif
+    vec4 diff = abs(low - full);
     bvec4 inside = lessThanEqual(diff, vec4(limit));
-    vec4 wIn = vec4(inside.x ? w0 : 0.0, inside.y ? w1 : 0.0, inside.z ? w2 : 0.0, inside.w ? w3 : 0.0);
-    vec4 matched = vec4(0.0) + wIn.x * c0 + wIn.y * c1 + wIn.z * c2 + wIn.w * c3;
-    float matchedWeight = 0.0 + wIn.x + wIn.y + wIn.z + wIn.w;
-    vec4 nearest = c0;
-    float best = diff.x;
-    if (diff.y < best) { best = diff.y; nearest = c1; }
-    if (diff.z < best) { best = diff.z; nearest = c2; }
-    if (diff.w < best) { best = diff.w; nearest = c3; }
-    oColor = all(inside) ? bilinear : (matchedWeight > 1e-3 ? matched / matchedWeight : nearest);
+    if (all(inside)) {
+        oColor = bilinear;
+        return;
+    }
+    // On an edge, keep the bilinear weights of the texels on this pixel's side of it,
+    // renormalised; only when none is, the single nearest-depth texel (the first of equal ones).
+    vec4 w = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+    vec4 kept = mix(vec4(0.0), w, inside);
+    if (kept.x + kept.y + kept.z + kept.w <= 1e-3) {
+        float best = min(min(diff.x, diff.y), min(diff.z, diff.w));
+        int first = diff.x == best ? 0 : (diff.y == best ? 1 : (diff.z == best ? 2 : 3));
+        kept = vec4(equal(ivec4(0, 1, 2, 3), ivec4(first)));
+    }
+    // Per row, its kept weight and the x (in texels past the first tap's centre) of its kept
+    // texels' weighted centre; a row that keeps none is fetched anyway, at weight 0.
+    vec2 rowWeight = vec2(kept.x + kept.y, kept.z + kept.w);
+    vec2 rowX = vec2(rowWeight.x > 0.0 ? kept.y / rowWeight.x : 0.0, rowWeight.y > 0.0 ? kept.w / rowWeight.y : 0.0);
+    vec4 row0 = textureLod(uHalfColor, (vec2(base) + vec2(0.5 + rowX.x, 0.5)) * invLow, 0.0);
+    vec4 row1 = textureLod(uHalfColor, (vec2(base) + vec2(0.5 + rowX.y, 1.5)) * invLow, 0.0);
+    oColor = (rowWeight.x * row0 + rowWeight.y * row1) / (rowWeight.x + rowWeight.y);
 #endif
 }

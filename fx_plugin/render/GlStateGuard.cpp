@@ -13,20 +13,21 @@ void bindTextureUnit(int unit, uint32_t texture, uint32_t sampler) {
     glBindSampler(GLuint(unit), GLuint(sampler));
 }
 
-NearestSampler::~NearestSampler() {
+ClampSampler::~ClampSampler() {
     if (sampler_) glDeleteSamplers(1, &sampler_);
 }
 
-void NearestSampler::create() {
+void ClampSampler::create() {
     if (sampler_) return;
+    const GLint filter = filter_ == Filter::Linear ? GL_LINEAR : GL_NEAREST;
     glGenSamplers(1, &sampler_);
-    glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glSamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, filter);
+    glSamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, filter);
     glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-void NearestSampler::bindTexture(int unit, uint32_t texture) const { bindTextureUnit(unit, texture, sampler_); }
+void ClampSampler::bindTexture(int unit, uint32_t texture) const { bindTextureUnit(unit, texture, sampler_); }
 
 void plainDrawState() {
     glDisable(GL_DEPTH_TEST);

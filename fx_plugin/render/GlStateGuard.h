@@ -80,26 +80,32 @@ namespace fx {
 /// sampler bound there would override the texture's own filtering. Leaves `unit` active.
 void bindTextureUnit(int unit, uint32_t texture, uint32_t sampler = 0);
 
-/// A sampler object that reads a texture with GL_NEAREST and GL_CLAMP_TO_EDGE, one level, whatever
-/// the texture's own parameters. The host's scene depth is read through it: a host may leave
-/// linear filtering on it (the particle shaders read it with textureLod at texel centres, exact
-/// only unfiltered), or GL's default mipmapped minification filter on a texture with one level,
-/// which leaves the texture incomplete (texelFetch and texture both read 0 there) unless a
-/// sampler with a plain filter is bound.
-class NearestSampler {
+/// A sampler object that reads level 0 of a texture clamped to its edge, nearest or linear,
+/// whatever the texture's own parameters.
+/// - Nearest: the host's scene depth is read through it. A host may leave linear filtering on it
+///   (the particle shaders read it with textureLod at texel centres, exact only unfiltered), or
+///   GL's default mipmapped minification filter on a texture with one level, which leaves the
+///   texture incomplete (texelFetch and texture both read 0 there) unless a sampler with a plain
+///   filter is bound.
+/// - Linear: the quarter-res composite's half-res colour, whose bilinear weights the filter
+///   computes (a host's frame graph may not honour TargetDesc::linearFilter).
+class ClampSampler {
 public:
-    NearestSampler() = default;
-    ~NearestSampler();
-    NearestSampler(const NearestSampler&) = delete;
-    NearestSampler& operator=(const NearestSampler&) = delete;
+    enum class Filter { Nearest, Linear };
+    explicit ClampSampler(Filter filter = Filter::Nearest) : filter_(filter) {}
+    ~ClampSampler();
+    ClampSampler(const ClampSampler&) = delete;
+    ClampSampler& operator=(const ClampSampler&) = delete;
     void create();
     /// bindTextureUnit with this sampler on `unit` (below GlStateGuard::kTextureUnits, so a guard
     /// restores the host's).
     void bindTexture(int unit, uint32_t texture) const;
 
 private:
+    Filter filter_;
     uint32_t sampler_ = 0;
 };
+using NearestSampler = ClampSampler;  ///< default-constructed: Filter::Nearest
 
 /// The state every pass of the plugin starts its draws from (inside a guard): no depth test and
 /// no depth writes, no culling, stencil, scissor or blending, every colour channel written.

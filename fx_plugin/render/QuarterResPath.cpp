@@ -149,8 +149,10 @@ void QuarterResPath::composite(PassContext& ctx, const ParticleView& v, Target s
     const QuarterResPrograms::CompositeProgram& c =
         p.composite[bilinear ? QuarterResPrograms::Bilinear : QuarterResPrograms::DepthAware];
     glUseProgram(c.program);
-    bindTextureUnit(0, ctx.texture(halfColor, 0).name);
-    bindTextureUnit(1, ctx.texture(halfDepth, 0).name);
+    // Through the plugin's own samplers: the composite's weights come from the colour's bilinear
+    // filter, and its taps are clamped by clamping to the edge, whatever the target's parameters.
+    p.halfColorSampler.bindTexture(0, ctx.texture(halfColor, 0).name);
+    p.hostDepth.bindTexture(1, ctx.texture(halfDepth, 0).name);
     const TextureRef depthRef = ctx.texture(sceneDepth, 0);
     p.hostDepth.bindTexture(2, depthRef.name);
     // A location a build left out (-1) is ignored by glUniform*.

@@ -13,6 +13,7 @@ QuarterResPrograms::~QuarterResPrograms() {
 
 void QuarterResPrograms::bind(const ProgramCache& programs) {
     hostDepth.create();
+    halfColorSampler.create();
     downsample = programs.passProgram(ProgramCache::DepthDownsample);
     locateUniforms(downsample, {{&downsampleDepthLoc, "uSceneDepth"}, {&downsampleViewLoc, "uViewSize"},
                                 {&downsampleDecode.coeffs, "uDepthCoeffs"},

@@ -37,7 +37,8 @@ struct QuarterResPrograms {
     /// uploaded to this set's own stream buffer.
     void drawTiles(int viewSizeLoc, const ScreenTiles& tiles);
 
-    NearestSampler hostDepth;  ///< the host's scene depth, read whatever sampling it set
+    NearestSampler hostDepth;  ///< the host's scene depth and the half-res depth, read whatever sampling was set
+    ClampSampler halfColorSampler{ClampSampler::Filter::Linear};  ///< the composite's half-res colour, filtered
     uint32_t downsample = 0;
     int downsampleDepthLoc = -1, downsampleViewLoc = -1;
     SceneDepthUniforms downsampleDecode;

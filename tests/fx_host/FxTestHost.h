@@ -180,12 +180,18 @@ public:
     /// When set, runs right after every plugin pass (before the GL error drain), with its name.
     std::function<void(const std::string&)> afterPluginPass;
     bool checkPluginState = false;
+    /// Relative sizes round up (the engine's RenderTargetPool) instead of down: a half-size
+    /// target of an odd view then has a last column and row of one pixel's block.
+    bool roundSizesUp = false;
     const std::vector<std::string>& stateMismatches() const { return stateMismatches_; }
 
     int width() const { return width_; }
     int height() const { return height_; }
     Image readColor() const;
     std::vector<float> readLinearDepth() const;
+    /// RGBA as floats (bottom row first) of the target named `name` that this frame allocated;
+    /// empty when there is none. Its size in *width, *height.
+    std::vector<float> readTarget(const std::string& name, int* width, int* height) const;
     /// GL objects for the host's own passes.
     unsigned colorFramebuffer() const { return colorFbo_; }
     unsigned depthFramebuffer() const { return depthFbo_; }

@@ -1,9 +1,12 @@
 // Quarter-res particles against the full-res frame: image error of the whole frame, and of the
 // pixels next to depth edges for the depth-aware and the plain bilinear upsample.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
 #include "FxTestHost.h"
+#include "render/QuarterResPath.h"
 
 namespace fxtest {
 // Named so that the test files of one unity translation unit keep their helpers apart.
@@ -98,6 +101,198 @@ TEST_F(QuarterResTest, DepthAwareUpsampleBeatsBilinearNextToDepthEdges) {
     ASSERT_GT(eAware.pixels, 500) << "the scene should have long depth edges";
     EXPECT_LT(eAware.mean, 0.6 * eBilinear.mean);
     EXPECT_LT(eAware.max, eBilinear.max);
+}
+
+// The composite against the rule it implements, worked out here from what it read: the half-res
+// colour and depth as the quarter pass left them, the scene before it and the full-res depth.
+// Per pixel: no smoke in the bilinear footprint leaves it as it was; all four taps within the
+// threshold blend bilinearly; on an edge only the taps within it, renormalised, or else the
+// nearest-depth one. The shader gets its weights from the sampler's bilinear filter (llvmpipe
+// filters 8-bit texels in 8-bit steps), so a channel may differ by 2/255; the rule's branches
+// (edge, nearest, no smoke) must each be met by this frame.
+TEST_F(QuarterResTest, CompositeFollowsTheDepthAwareRulePixelByPixel) {
+    TestHostAdapter host;
+    DirectParticles direct(&host);
+    EdgeScene edge = wallAndPoleScene(kW, kH, false);
+    // A fence of thin bars behind the smoke, against the sky: in the gaps between bars about two
+    // pixels apart every tap of a footprint holds a bar's depth (the half-res depth keeps the
+    // nearest), none the sky's, the nearest-depth case.
+    for (int i = 0; i < 16; ++i) {
+        const float x = -3.0f + 0.12f * float(i) + 0.003f * float(i % 5);
+        edge.scene.quads.push_back(TestScene::wallZ(-1.5f, x, x + 0.05f, 0.0f, 3.0f, glm::vec3(0.2f, 0.2f, 0.3f)));
+    }
+    direct.desc.render.softness = edge.softness;
+    direct.set(edge.puffs);
+    TestFrameGraph graph(kW, kH);
+    direct.settings.options.quarterRes = true;
+    direct.settings.options.quarterResAlways = true;
+    Image before;
+    std::vector<float> halfColor, halfDepth;
+    int hw = 0, hh = 0, dw = 0, dh = 0;
+    graph.afterPluginPass = [&](const std::string& pass) {
+        if (pass != "particles_quarter") return;
+        before = graph.readColor();
+        halfColor = graph.readTarget(fx::QuarterResPath::kColorTarget, &hw, &hh);
+        halfDepth = graph.readTarget(fx::QuarterResPath::kDepthTarget, &dw, &dh);
+    };
+    renderFrame(graph, edge.scene, edge.view, [&](fx::FrameBuilder& f) { direct.declare(edge.view, f); });
+    graph.afterPluginPass = nullptr;
+    ASSERT_TRUE(graph.ran("particles_composite"));
+    ASSERT_FALSE(halfColor.empty());
+    ASSERT_FALSE(halfDepth.empty());
+    ASSERT_EQ(hw, dw);
+    ASSERT_EQ(hh, dh);
+    const Image after = graph.readColor();
+    const std::vector<float> depth = graph.readLinearDepth();
+
+    auto clampi = [](int v, int hi) { return std::min(std::max(v, 0), hi); };
+    int worst = 0, edgePixels = 0, nearestPixels = 0, smokeFree = 0, smoky = 0;
+    for (int y = 0; y < kH; ++y) {
+        for (int x = 0; x < kW; ++x) {
+            const float lx = (float(x) + 0.5f) * float(hw) / float(kW) - 0.5f;
+            const float ly = (float(y) + 0.5f) * float(hh) / float(kH) - 0.5f;
+            const int bx = int(std::floor(lx)), by = int(std::floor(ly));
+            const float fx = lx - float(bx), fy = ly - float(by);
+            const std::array<int, 4> tx = {clampi(bx, hw - 1), clampi(bx + 1, hw - 1), clampi(bx, hw - 1),
+                                           clampi(bx + 1, hw - 1)};
+            const std::array<int, 4> ty = {clampi(by, hh - 1), clampi(by, hh - 1), clampi(by + 1, hh - 1),
+                                           clampi(by + 1, hh - 1)};
+            const std::array<float, 4> w = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+            std::array<std::array<float, 4>, 4> c{};
+            std::array<float, 4> diff{};
+            float sum = 0.0f;
+            float full = depth[size_t(y) * kW + size_t(x)];
+            if (!(full > 0.0f && full < 3.0e38f)) full = 3.0e38f;
+            for (int i = 0; i < 4; ++i) {
+                const size_t t = size_t(ty[size_t(i)]) * size_t(hw) + size_t(tx[size_t(i)]);
+                for (int k = 0; k < 4; ++k) {
+                    c[size_t(i)][size_t(k)] = halfColor[t * 4 + size_t(k)];
+                    sum += c[size_t(i)][size_t(k)];
+                }
+                diff[size_t(i)] = std::fabs(halfDepth[t * 4] - full);
+            }
+            std::array<float, 4> out{};
+            bool blended = sum > 0.0f;
+            if (blended) {
+                ++smoky;
+                std::array<float, 4> kept{};
+                float keptSum = 0.0f;
+                for (int i = 0; i < 4; ++i) {
+                    const bool inside = diff[size_t(i)] <= fx::QuarterResPath::kDepthThreshold * full;
+                    kept[size_t(i)] = inside ? w[size_t(i)] : 0.0f;
+                    keptSum += kept[size_t(i)];
+                }
+                if (keptSum < 0.999f) ++edgePixels;
+                if (keptSum <= 1e-3f) {
+                    ++nearestPixels;
+                    const size_t first = size_t(std::min_element(diff.begin(), diff.end()) - diff.begin());
+                    kept = {0.0f, 0.0f, 0.0f, 0.0f};
+                    kept[first] = 1.0f;
+                    keptSum = 1.0f;
+                }
+                for (int i = 0; i < 4; ++i) {
+                    for (int k = 0; k < 4; ++k) out[size_t(k)] += kept[size_t(i)] * c[size_t(i)][size_t(k)] / keptSum;
+                }
+            } else {
+                ++smokeFree;
+            }
+            for (int k = 0; k < 4; ++k) {
+                const float dst = before.value(x, y, k);
+                const float expected = blended ? out[size_t(k)] + dst * (1.0f - out[3]) : dst;
+                const int e = int(std::lround(std::min(std::max(expected, 0.0f), 1.0f) * 255.0f));
+                worst = std::max(worst, std::abs(e - int(after.at(x, y)[k])));
+            }
+        }
+    }
+    std::printf("[ measured ] composite vs its rule: %d smoky px (%d on an edge, %d nearest), %d smoke-free; "
+                "worst channel %d/255\n",
+                smoky, edgePixels, nearestPixels, smokeFree, worst);
+    EXPECT_GT(edgePixels, 200);
+    EXPECT_GT(nearestPixels, 0);
+    EXPECT_GT(smokeFree, 1000);
+    EXPECT_LE(worst, 2);
+}
+
+// The downsample keeps each 2x2 block's nearest (red) and farthest (green) depth, the block of an
+// odd view's last row and column clamped to it: equal to the host's linear depth read back, for
+// its linear R32F depth (t = d exactly), and within 1e-5 of it for its reversed-Z float z-buffer
+// sampled in place (decoded in the shader).
+TEST_F(QuarterResTest, DownsampleKeepsEachBlocksNearestAndFarthestDepth) {
+    constexpr int kOddW = 255, kOddH = 191;
+    for (const bool roundUp : {false, true}) {
+    std::vector<float> linearHalf;  // the linear host's downsample, what the z-buffer's is held to
+    for (const bool zBuffer : {false, true}) {
+        TestHostAdapter host;
+        DirectParticles direct(&host);
+        EdgeScene edge = wallAndPoleScene(kOddW, kOddH, zBuffer);
+        // A puff through the near plane: the tiles are the whole view, every block is written.
+        edge.puffs.push_back(HandParticle{glm::vec3(0.0f, 1.4f, 7.7f), 1.0f, 0.5f, 0.0f, 0.05f, 0});
+        direct.desc.render.softness = edge.softness;
+        direct.set(edge.puffs);
+        direct.settings.options.quarterRes = true;
+        direct.settings.options.quarterResAlways = true;
+        TestFrameGraph graph(kOddW, kOddH, zBuffer, zBuffer);
+        graph.roundSizesUp = roundUp;
+        std::vector<float> half;
+        int hw = 0, hh = 0;
+        graph.afterPluginPass = [&](const std::string& pass) {
+            if (pass == "particles_depth_downsample") half = graph.readTarget(fx::QuarterResPath::kDepthTarget, &hw, &hh);
+        };
+        renderFrame(graph, edge.scene, edge.view, [&](fx::FrameBuilder& f) { direct.declare(edge.view, f); });
+        graph.afterPluginPass = nullptr;
+        ASSERT_FALSE(half.empty());
+        EXPECT_EQ(graph.zBufferUsed(), zBuffer);
+        // Rounded down, the last column and row are left to the composite's clamped footprint;
+        // rounded up, their blocks are one pixel wide.
+        ASSERT_EQ(hw, roundUp ? kOddW / 2 + 1 : kOddW / 2);
+        ASSERT_EQ(hh, roundUp ? kOddH / 2 + 1 : kOddH / 2);
+        // The host's own linear depth of the same scene (its prepass, run by hand when the
+        // plugin read the z-buffer instead).
+        const std::vector<float> depth = zBuffer ? std::vector<float>() : graph.readLinearDepth();
+        if (!zBuffer) linearHalf = half;
+        double worst = 0.0;
+        int blocks = 0, mixed = 0;
+        for (int y = 0; y < hh; ++y) {
+            for (int x = 0; x < hw; ++x) {
+                const size_t t = (size_t(y) * size_t(hw) + size_t(x)) * 4;
+                if (zBuffer) {
+                    for (int k = 0; k < 2; ++k) {
+                        const float a = half[t + size_t(k)], b = linearHalf[t + size_t(k)];
+                        if (b >= 3.0e38f) {
+                            EXPECT_GE(a, 3.0e38f) << x << "," << y;
+                            continue;
+                        }
+                        worst = std::max(worst, std::fabs(double(a) - double(b)) / double(b));
+                    }
+                    ++blocks;
+                    continue;
+                }
+                float lo = 3.0e38f, hi = 0.0f;
+                for (int dy = 0; dy < 2; ++dy) {
+                    for (int dx = 0; dx < 2; ++dx) {
+                        const int px = std::min(2 * x + dx, kOddW - 1), py = std::min(2 * y + dy, kOddH - 1);
+                        float d = depth[size_t(py) * kOddW + size_t(px)];
+                        if (!(d > 0.0f && d < 3.0e38f)) d = 3.0e38f;
+                        lo = std::min(lo, d);
+                        hi = std::max(hi, d);
+                    }
+                }
+                ++blocks;
+                if (hi > lo * 1.1f) ++mixed;
+                ASSERT_EQ(half[t], lo) << "block " << x << "," << y;
+                ASSERT_EQ(half[t + 1], hi) << "block " << x << "," << y;
+            }
+        }
+        std::printf("[ measured ] downsample %s, half size rounded %s: %d blocks, %d across a depth edge, "
+                    "worst relative error %.2e\n",
+                    zBuffer ? "reversed-Z z-buffer vs linear" : "linear R32F", roundUp ? "up" : "down", blocks,
+                    mixed, worst);
+        if (!zBuffer) {
+            EXPECT_GT(mixed, 100);
+        }
+        EXPECT_LT(worst, 1e-5);
+    }
+    }
 }
 
 }  // namespace quarter_res_test

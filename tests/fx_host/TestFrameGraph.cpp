@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 
 #include "FxTestHost.h"
 
@@ -198,8 +199,12 @@ void TestFrameGraph::allocate(uint32_t id) {
     if (id == kSceneZBuffer) return;
     if (id <= kSceneDepth || frameTargets_.count(id)) return;
     const auto& [name, desc] = created_[id - kSceneDepth - 1];
-    const int w = desc.width > 0 ? desc.width : std::max(1, int(float(width_) * desc.scale));
-    const int h = desc.height > 0 ? desc.height : std::max(1, int(float(height_) * desc.scale));
+    const auto relative = [&](int size) {
+        const float exact = float(size) * desc.scale;
+        return std::max(1, int(roundSizesUp ? std::ceil(exact) : exact));
+    };
+    const int w = desc.width > 0 ? desc.width : relative(width_);
+    const int h = desc.height > 0 ? desc.height : relative(height_);
     size_t slot = pool_.size();
     for (size_t i = 0; i < pool_.size(); ++i) {
         const TargetSlot& s = pool_[i];
@@ -280,6 +285,22 @@ std::vector<float> TestFrameGraph::readLinearDepth() const {
     glReadPixels(0, 0, width_, height_, GL_RED, GL_FLOAT, depth.data());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     return depth;
+}
+
+std::vector<float> TestFrameGraph::readTarget(const std::string& name, int* width, int* height) const {
+    for (const auto& [id, index] : frameTargets_) {
+        const TargetSlot& slot = pool_[index];
+        if (slot.name != name) continue;
+        std::vector<float> rgba(size_t(slot.width) * size_t(slot.height) * 4);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, slot.framebuffer);
+        glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        glReadPixels(0, 0, slot.width, slot.height, GL_RGBA, GL_FLOAT, rgba.data());
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+        *width = slot.width;
+        *height = slot.height;
+        return rgba;
+    }
+    return {};
 }
 
 }  // namespace fxtest
