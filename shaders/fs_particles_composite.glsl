@@ -15,13 +15,13 @@
 // LINEAR, clamped to its edge, which is what clamping the taps to the last texel did):
 //   - no smoke in the footprint: 1, the bilinear colour; the pixel is discarded.
 //   - smoke, no depth edge: 3, the bilinear colour, the pixel's depth, the four low-res depths in
-//     one textureGather (four texelFetch where the context has no ARB_texture_gather).
+//     one textureGather (FX_GATHER: ProgramCache defines it where the context has
+//     ARB_texture_gather; else four texelFetch).
 //   - a depth edge: 5. The kept texels' weights are split by row: a row's kept texels are none,
 //     one or both, and one bilinear fetch at that row's centre line, its x moved to the kept
 //     texels' weighted centre, returns exactly their renormalised blend.
 // (The rows are fetched only on an edge; a CPU rasteriser runs both sides of a branch, so it pays
 // 5 everywhere there is smoke, still fewer than the 9 texelFetch this took before.)
-#extension GL_ARB_texture_gather : enable
 uniform sampler2D uHalfColor;   // premultiplied RGBA8 (RGBA16F with spheres), half x half
 uniform sampler2D uHalfDepth;   // red: min depth per 2x2 block (RG32F, green the max)
 uniform sampler2D uSceneDepth;  // full-res scene depth (particles_scene_depth.glsl)
@@ -57,7 +57,7 @@ void main() {
     // Depths of the taps t0 = base, t1 = base + (1, 0), t2 = base + (0, 1), t3 = base + (1, 1),
     // each clamped into the image. Gathered at the corner the four share: the footprint cannot
     // round to a neighbouring one there, and clamping to the edge clamps the taps.
-#ifdef GL_ARB_texture_gather
+#ifdef FX_GATHER
     vec4 low = textureGather(uHalfDepth, (vec2(base) + 1.0) * invLow).wzxy;
 #else
     ivec2 t0 = clamp(base, ivec2(0), last), t3 = clamp(base + ivec2(1), ivec2(0), last);

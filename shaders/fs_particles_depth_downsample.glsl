@@ -5,9 +5,9 @@
 // barrier tops, a car's roof line) in the low-res depth, so particles behind it are hidden in
 // the half-res pass too; the composite then lets background pixels next to it
 // borrow a neighbouring low-res texel (see QuarterResPath.h for the choice and its measured effect).
-// The block is one textureGather (four texelFetch without ARB_texture_gather), taken at the
-// corner its four texels share, through the renderer's nearest, edge-clamped sampler.
-#extension GL_ARB_texture_gather : enable
+// The block is one textureGather (FX_GATHER, where the context has ARB_texture_gather; else four
+// texelFetch), taken at the corner its four texels share, through the renderer's nearest,
+// edge-clamped sampler.
 #include "particles_scene_depth.glsl"
 uniform sampler2D uSceneDepth;  // full resolution: the z-buffer or linear R32F (particles_scene_depth.glsl)
 
@@ -24,7 +24,7 @@ void main() {
     // Texel i covers full-res pixels 2i and 2i + 1 (an odd last row/column is clamped).
     ivec2 p = min(ivec2(gl_FragCoord.xy) * 2, last);
     ivec2 q = min(p + 1, last);
-#ifdef GL_ARB_texture_gather
+#ifdef FX_GATHER
     // (p, p + x, p + y, p + x + y). Past the view's last row or column (an odd size) the gather
     // reads the texel beyond it, which may be another view's: the clamped texel is p's own.
     vec2 corner = vec2(sceneDepthTexel(p)) + 1.0;

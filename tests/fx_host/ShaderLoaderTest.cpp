@@ -113,6 +113,34 @@ TEST_F(ShaderLoaderTest, EveryParticleProgramBuilds) {
     }
 }
 
+// The quarter-res downsample and composite gather their four depths where the context has
+// ARB_texture_gather, and only they declare it (an #extension the driver does not know is a
+// warning on the host's debug output). Every context the suite runs them in has it, but for the
+// run that hides it (QuarterResTest.WithoutTextureGather, tests/CMakeLists.txt).
+TEST_F(ShaderLoaderTest, TheQuarterResProgramsGatherWhereTheContextCan) {
+    TestHostAdapter host;
+    DirectParticles direct(&host);  // loads the plugin's GL entry points and extension flags
+    bool listed = false;
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i) {
+        const char* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i)));
+        listed = listed || (name && std::string(name) == "GL_ARB_texture_gather");
+    }
+    if (!std::getenv("MESA_EXTENSION_OVERRIDE")) {
+        EXPECT_TRUE(listed);
+    }
+    using PC = fx::ProgramCache;
+    for (PC::Program program : {PC::DepthDownsample, PC::Composite, PC::CompositeBilinear}) {
+        const std::string defines = PC::Key::of(program).defines();
+        EXPECT_EQ(defines.find("#define FX_GATHER 1") != std::string::npos, listed) << defines;
+        EXPECT_EQ(defines.find("#extension GL_ARB_texture_gather : require") != std::string::npos, listed);
+    }
+    for (PC::Program program : {PC::HalfZ, PC::LinearizeDepth, PC::MegaComposite}) {
+        EXPECT_EQ(PC::Key::of(program).defines().find("texture_gather"), std::string::npos);
+    }
+}
+
 TEST_F(BrokenShaderTest, CompileErrorNamesTheFileAndLine) {
     const std::string dir = copyShaders("error_in_main");
     const int line = lineOf(dir + "/fs_particles_soft.glsl", "float depth = -vViewPos.z;");
