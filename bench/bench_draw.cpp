@@ -7,6 +7,8 @@
 //   BM_ScreenRect/N       fx::screenRect over those instances with ScreenTiles (the quarter-res
 //                         path's bound, tiles and overdraw estimate; billboard footprints)
 //   BM_ScreenRectBox/N    the same with box footprints (a view with spherical particles)
+//   BM_ScreenRectTrimmed/N  billboards bounded by their trimmed polygons' reach (BillboardReach):
+//                         the quarter-res path's bound for trimmed billboards
 //   BM_InstanceCopy/N     reference: memcpy of the N instances (32 N bytes read and written)
 //   BM_DrawListBuildJobs/N/T, BM_ScreenRectJobs/N/T
 //                         the build and the bound through the host's job system
@@ -81,7 +83,17 @@ void BM_DrawListBuild(benchmark::State& state) {
     state.counters["drawn"] = double(list.particleCount());
 }
 
-void screenRectBench(benchmark::State& state, fx::Footprint footprint) {
+// A reach table of the size the plugin's has (its values change no work: one lookup a
+// particle), at the LOD scale of a 1080p view's half-size target and a 256-texel atlas cell.
+fx::BillboardReach benchReach(const fx::ViewInfo& view) {
+    fx::BillboardReach r;
+    r.buckets = 6;
+    r.table.fill(0.6f);
+    r.lodScale = 256.0f * 2.0f / (view.proj[1][1] * 0.5f * float(view.height));
+    return r;
+}
+
+void screenRectBench(benchmark::State& state, fx::Footprint footprint, bool trimmed = false) {
     Scene s(int(state.range(0)));
     const fx::ParticleBatch batch = s.batch();
     fx::DrawListBuilder builder;
@@ -89,8 +101,10 @@ void screenRectBench(benchmark::State& state, fx::Footprint footprint) {
     builder.build(s.view, &batch, 1, fx::Technique::FromReaction, kAll, &list);
     fx::ScreenTiles tiles;
     fx::ScreenRect rect;
+    const fx::BillboardReach reach = benchReach(s.view);
     for (auto _ : state) {
-        rect = fx::screenRect(s.view, list.instances.data(), list.particleCount(), &tiles, footprint);
+        rect = fx::screenRect(s.view, list.instances.data(), list.particleCount(), &tiles, footprint, fx::Jobs(),
+                              trimmed ? &reach : nullptr);
         benchmark::DoNotOptimize(tiles.vertices.data());
     }
     state.SetItemsProcessed(int64_t(state.iterations()) * list.particleCount());
@@ -100,6 +114,7 @@ void screenRectBench(benchmark::State& state, fx::Footprint footprint) {
 
 void BM_ScreenRect(benchmark::State& state) { screenRectBench(state, fx::Footprint::Billboard); }
 void BM_ScreenRectBox(benchmark::State& state) { screenRectBench(state, fx::Footprint::Box); }
+void BM_ScreenRectTrimmed(benchmark::State& state) { screenRectBench(state, fx::Footprint::Billboard, true); }
 
 void BM_InstanceCopy(benchmark::State& state) {
     const size_t n = size_t(state.range(0));
@@ -148,6 +163,7 @@ BENCHMARK(BM_ScreenRectJobs)->ArgsProduct({{16000, 256000, 1000000}, {1, 2}})->U
 BENCHMARK(BM_DrawListBuild)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 BENCHMARK(BM_ScreenRect)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 BENCHMARK(BM_ScreenRectBox)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
+BENCHMARK(BM_ScreenRectTrimmed)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 BENCHMARK(BM_InstanceCopy)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 
 BENCHMARK_MAIN();

@@ -22,8 +22,9 @@ void FullResPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleVie
     const SceneDepthDecode decode = source.decode;
     ScreenRect bound;  // whole
     if (depth.valid() && dynamic_cast<ImmediateFrame*>(&frame)) {
+        const BillboardReach reach = draw_.billboardReach(*record, false);
         bound = screenRect(view, record->list.instances.data(), record->list.particleCount(), nullptr,
-                           footprintOf(record->list));
+                           footprintOf(record->list), Jobs(), &reach);
     }
     narrowDepthRead(frame, bound, view.width, view.height);
     addPassReading(frame, kPass, {depth, opacity}, color,

@@ -17,6 +17,21 @@ void ParticleDraw::create() {
     shapeTable_ = atlas_.shapes().packed();
     discTable_ = atlas_.shapes().packed(TrimmedShapes::Clip::Disc);
     discInfo_ = atlas_.shapes().packedInfo(TrimmedShapes::Clip::Disc);
+    reach_ = BillboardReach::of(atlas_.shapes(), 1.0f);
+}
+
+BillboardReach ParticleDraw::billboardReach(const ParticleView& record, bool halfRes) const {
+    if (record.settings.shape != ParticleShape::Trimmed || shapeTable_.empty() || reach_.lodScale <= 0.0f) {
+        return BillboardReach{};
+    }
+    // draw()'s LOD scale for a target of the view's height, or half of it (the half-size target
+    // may be a row taller or shorter: the reach table's neighbouring buckets cover that).
+    const ViewInfo& view = record.view;
+    const float height = float(std::max(view.height, 1)) * (halfRes ? 0.5f : 1.0f);
+    const float pixelSlope = 2.0f / std::fmax(std::fabs(view.proj[1][1]) * height, 1e-6f);
+    BillboardReach r = reach_;
+    r.lodScale = float(atlas_.cellTexels()) * pixelSlope;
+    return r;
 }
 
 void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {

@@ -66,6 +66,10 @@ public:
 
     /// Draws every batch of `view` into the bound target (inside the pass's GlStateGuard).
     void draw(const ParticleView& view, const DrawInputs& in);
+    /// How far `view`'s billboards reach when drawn on its full-resolution target, or with
+    /// `halfRes` on the quarter-res path's half-size one (screenRect's `reach`): their trimmed
+    /// polygons' reach when they are drawn trimmed, else none (lodScale 0).
+    BillboardReach billboardReach(const ParticleView& view, bool halfRes) const;
 
     /// The running program cache (ProgramCache.h: filled by prepare and reloads, never by a
     /// draw; a shader reload swaps its contents).
@@ -89,6 +93,7 @@ private:
     std::vector<glm::vec4> shapeTable_;  ///< atlas_.shapes().packed(), uploaded per draw
     std::vector<glm::vec4> discTable_;   ///< the same for spheres (TrimmedShapes::Clip::Disc)
     std::vector<glm::vec4> discInfo_;    ///< and their (inradius, area share)
+    BillboardReach reach_;               ///< the billboards' reach table (its lodScale is the view's)
 };
 
 }  // namespace fx

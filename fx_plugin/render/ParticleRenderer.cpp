@@ -180,8 +180,9 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     if (quarterRes) {
         // Where the smoke can be (the quarter-res passes' fixed costs stay inside it), and whether
         // its overdraw pays for them; if not, this view is drawn at full res.
+        const BillboardReach reach = draw_.billboardReach(*record, true);
         record->rect = screenRect(view, record->list.instances.data(), drawn, &record->tiles, footprintOf(record->list),
-                                   config_.jobs);
+                                   config_.jobs, &reach);
         if (!options.quarterResAlways && !quarterResPays(record->rect, record->tiles)) {
             quarterRes = false;
             // A technique whose quarter-res program failed was left out; at full res it draws.

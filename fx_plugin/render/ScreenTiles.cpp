@@ -69,12 +69,16 @@ void tileRuns(ScreenTiles* tiles, int tilesX, int tilesY, int w, int h) {
 }
 
 // One particle's footprint on screen, in pixels ([x0, x1] x [y0, y1], unclipped), or why there
-// is none.
+// is none; box: its quad's (what footprintPixels counts), the same unless a billboard's reach
+// bounds it tighter.
 struct Bounds {
     enum State : int { Bounded, Behind, Unbounded };
     float x0, x1, y0, y1;
     int state;
+    float box[4];  // x0, x1, y0, y1
 };
+
+constexpr float kQuadReach = 0.71f;  // a quad's corners from its centre, in sizes (sqrt(2) / 2, up)
 constexpr int kChunk = 256;
 
 // The per-particle arithmetic of screenRect, for one view and footprint kind.
@@ -83,8 +87,10 @@ struct FootprintMath {
     float nearPlane;
     int w, h;
     bool flat;
-    FootprintMath(const ViewInfo& view, bool flatFootprint)
-        : V(view.view), P(view.proj), nearPlane(view.nearPlane), w(view.width), h(view.height), flat(flatFootprint) {}
+    const BillboardReach* reach;  // flat footprints under a perspective projection; null: quads
+    FootprintMath(const ViewInfo& view, bool flatFootprint, const BillboardReach* billboardReach)
+        : V(view.view), P(view.proj), nearPlane(view.nearPlane), w(view.width), h(view.height), flat(flatFootprint),
+          reach(flatFootprint && billboardReach && billboardReach->lodScale > 0.0f ? billboardReach : nullptr) {}
 
     glm::vec3 centre(const ParticleInstance& p) const {
         return glm::vec3(V[0][0] * p.x + V[1][0] * p.y + V[2][0] * p.z + V[3][0],
@@ -100,7 +106,8 @@ struct FootprintMath {
         return c.z + depthExtent >= -nearPlane ? Bounds::Unbounded : Bounds::Bounded;
     }
     Bounds pixels(const float plo[2], const float phi[2], int state) const {
-        return Bounds{toPixel(plo[0], w), toPixel(phi[0], w), toPixel(plo[1], h), toPixel(phi[1], h), state};
+        const float x0 = toPixel(plo[0], w), x1 = toPixel(phi[0], w), y0 = toPixel(plo[1], h), y1 = toPixel(phi[1], h);
+        return Bounds{x0, x1, y0, y1, state, {x0, x1, y0, y1}};
     }
 
     // Under a perspective projection (plainPerspective): ndc.x = (P00 x + P30) / -z - P20, monotone
@@ -109,7 +116,7 @@ struct FootprintMath {
     template <bool Flat>
     Bounds perspective(const ParticleInstance& p) const {
         const glm::vec3 c = centre(p);
-        const float radius = 0.71f * p.size;
+        const float radius = kQuadReach * p.size;
         const float depthExtent = Flat ? 0.0f : radius;
         const float nearInv = 1.0f / -(c.z + depthExtent), farInv = Flat ? nearInv : 1.0f / -(c.z - depthExtent);
         float plo[2], phi[2];
@@ -124,13 +131,28 @@ struct FootprintMath {
                 phi[a] = std::max(highEdge * nearInv, highEdge * farInv) - P[2][a];
             }
         }
-        return pixels(plo, phi, state(c, radius, depthExtent));
+        Bounds b = pixels(plo, phi, state(c, radius, depthExtent));
+        if (Flat && reach) {
+            // The trimmed polygon of the LOD bucket the vertex shader picks (BillboardReach), of
+            // radius `tight`: the same projection, about the same centre.
+            const float depth = std::max(-c.z, nearPlane);
+            const float tight = reach->at(p.frame, reach->lodScale * depth / std::max(p.size, 1e-6f)) * p.size;
+            for (int a = 0; a < 2; ++a) {
+                plo[a] = (P[a][a] * (c[a] - tight) + P[3][a]) * nearInv - P[2][a];
+                phi[a] = (P[a][a] * (c[a] + tight) + P[3][a]) * nearInv - P[2][a];
+            }
+            b.x0 = toPixel(plo[0], w);
+            b.x1 = toPixel(phi[0], w);
+            b.y0 = toPixel(plo[1], h);
+            b.y1 = toPixel(phi[1], h);
+        }
+        return b;
     }
 
     // Any other projection: the footprint's corners (8, or 4 for a flat square) projected.
     Bounds general(const ParticleInstance& p) const {
         const glm::vec3 c = centre(p);
-        const float radius = 0.71f * p.size;
+        const float radius = kQuadReach * p.size;
         const float depthExtent = flat ? 0.0f : radius;
         const int st = state(c, radius, depthExtent);
         float plo[2] = {1e30f, 1e30f}, phi[2] = {-1e30f, -1e30f};
@@ -189,8 +211,8 @@ PieceBound boundPiece(const FootprintMath& math, const ViewInfo& view, bool flat
             r.hi[0] = std::max(r.hi[0], q.x1);
             r.hi[1] = std::max(r.hi[1], q.y1);
             r.any = true;
-            const float cx0 = std::max(0.0f, q.x0), cx1 = std::min(float(w), q.x1);
-            const float cy0 = std::max(0.0f, q.y0), cy1 = std::min(float(h), q.y1);
+            const float cx0 = std::max(0.0f, q.box[0]), cx1 = std::min(float(w), q.box[1]);
+            const float cy0 = std::max(0.0f, q.box[2]), cy1 = std::min(float(h), q.box[3]);
             if (cx1 > cx0 && cy1 > cy0) boxPixels += double(cx1 - cx0) * double(cy1 - cy0);
             if (!grid || tilesX <= 0 || tilesY <= 0) continue;
             // The particle's pixels grown by the border, as a tile range clamped to the view (the
@@ -211,8 +233,28 @@ PieceBound boundPiece(const FootprintMath& math, const ViewInfo& view, bool flat
 
 }  // namespace
 
+BillboardReach BillboardReach::of(const TrimmedShapes& shapes, float lodScale) {
+    BillboardReach r;
+    if (shapes.empty()) return r;
+    r.lodScale = lodScale;
+    r.buckets = shapes.buckets();
+    const int last = r.buckets - 1;
+    for (int b = 0; b < kEntries; ++b) {
+        float any = 0.0f;
+        for (int f = 0; f < TrimmedShapes::kFrames; ++f) {
+            float most = 0.0f;
+            for (int k = std::max(b - 1, 0); k <= std::min(b + 1, last); ++k) most = std::max(most, 0.5f * shapes.reach(f, k));
+            most = std::min(most, kQuadReach);  // a polygon lies inside its quad
+            r.table[size_t(f * kEntries + b)] = most;
+            any = std::max(any, most);
+        }
+        r.table[size_t(TrimmedShapes::kFrames * kEntries + b)] = any;
+    }
+    return r;
+}
+
 ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, int count, ScreenTiles* tiles,
-                      Footprint footprint, const Jobs& jobs) {
+                      Footprint footprint, const Jobs& jobs, const BillboardReach* reach) {
     ScreenRect r;
     const int w = view.width, h = view.height;
     const int tilesX = (w + kTileSize - 1) / kTileSize, tilesY = (h + kTileSize - 1) / kTileSize;
@@ -237,7 +279,7 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
         r.footprintPixels = std::numeric_limits<double>::infinity();  // unbounded: the near plane, or no bound
         return r;  // whole = true
     };
-    const FootprintMath math(view, footprint == Footprint::Billboard);
+    const FootprintMath math(view, footprint == Footprint::Billboard, reach);
     PieceBound parts[HostAdapter::kMaxTasks];
     jobs.run(pieces, [&](uint32_t piece) {
         int32_t* grid = nullptr;

@@ -3,10 +3,13 @@
 // their projected footprints touch. The quarter-res passes (QuarterResPath.h) and the
 // mega-particles (MegaRenderer.h) keep their fixed full-screen costs inside them, and the
 // immediate path reads the scene depth only there.
+#include <array>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "InstanceStream.h"
+#include "TrimmedShapes.h"
 #include "fx/Types.h"
 #include "base/ParallelFor.h"
 
@@ -50,6 +53,41 @@ struct ScreenTiles {
 /// puts a billboard's corners; much tighter for large particles near the camera.
 enum class Footprint { Box, Billboard };
 
+/// How far a trimmed billboard reaches from its centre, in units of its size, by atlas frame and
+/// LOD bucket (TrimmedShapes::reach / 2): a Footprint::Billboard bound from it is the polygon the
+/// vertex shader draws (0.50-0.67 of the size with the repo's atlas) instead of the quad's corners
+/// (0.71). The shader (vs_particles.glsl: shapeVertex) takes bucket ceil(log2(t) + 0.5), t the
+/// texels per pixel of the target it draws into, lodScale * depth / size (the centre's depth, at
+/// least the near plane). Each entry holds the largest reach of that bucket and its two
+/// neighbours: where t lies on a bucket's edge, the GPU's rounding of it may pick either side.
+struct BillboardReach {
+    static constexpr int kEntries = TrimmedShapes::kMaxBuckets;  ///< per row
+    static constexpr int kRows = TrimmedShapes::kFrames + 1;    ///< the frames', then any frame's
+    /// Texels per pixel = lodScale * depth / size on the target the bound is for (ParticleDraw's
+    /// uLodScale: full or half resolution); 0: no table, every billboard reaches 0.71 of its size.
+    float lodScale = 0.0f;
+    int buckets = 0;
+    std::array<float, kRows * kEntries> table{};
+
+    /// The table of `shapes` (empty shapes: lodScale stays 0).
+    static BillboardReach of(const TrimmedShapes& shapes, float lodScale);
+    /// The reach of a particle of atlas frame `frame` (the shader's clamp(int(frame + 0.5), 0, 3);
+    /// out of range or not a number: the largest of any frame) at `texelsPerPixel`.
+    float at(float frame, float texelsPerPixel) const;
+};
+
+inline float BillboardReach::at(float frame, float texelsPerPixel) const {
+    const float f = frame + 0.5f;
+    const int row = f >= 0.0f && f < float(TrimmedShapes::kFrames) ? int(f) : TrimmedShapes::kFrames;
+    // ceil(log2 t + 0.5): t = m 2^e with m in [1, 2) gives e + 1, or e + 2 where m > sqrt(2)
+    // (0x3504F3 is the mantissa of sqrt(2), rounded down). Not a number or infinite: the last.
+    uint32_t bits;
+    std::memcpy(&bits, &texelsPerPixel, sizeof bits);
+    const int e = int((bits >> 23) & 0xFFu) - 127;
+    const int bucket = e + 1 + ((bits & 0x7FFFFFu) > 0x3504F3u ? 1 : 0);
+    return table[size_t(row * kEntries + std::min(std::max(bucket, 0), buckets - 1))];
+}
+
 /// Conservative bound of `instances` on screen, each particle's footprint projected. Empty
 /// rect (x0 == x1) when none is in front of the camera (one wholly behind the near plane is
 /// clipped away and counts for nothing); the whole view when one straddles the near plane or
@@ -58,9 +96,12 @@ enum class Footprint { Box, Billboard };
 /// steady frame allocates nothing.
 /// `jobs`: the host's job system; the particles are bounded in pieces fixed by `count`, and the
 /// result is the same bit for bit however they run.
+/// `reach`: for Footprint::Billboard under a perspective projection, the rect and the tiles bound
+/// each particle's trimmed polygon instead of its quad (BillboardReach); footprintPixels still
+/// counts the quads' boxes (the overdraw estimate quarterResPays was set for).
 ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, int count,
                       ScreenTiles* tiles = nullptr, Footprint footprint = Footprint::Box,
-                      const Jobs& jobs = Jobs());
+                      const Jobs& jobs = Jobs(), const BillboardReach* reach = nullptr);
 
 /// Whether drawing this view's particles at quarter resolution costs less than drawing them at
 /// full resolution. Quarter res trades the particles' fragments (three in four saved) for fixed

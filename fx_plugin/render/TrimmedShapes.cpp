@@ -224,6 +224,17 @@ int TrimmedShapes::vertexCount(int frame, int bucket, Clip clip) const {
     return table(clip).counts[size_t(glm::clamp(frame, 0, kFrames - 1))][size_t(glm::clamp(bucket, 0, std::max(0, buckets_ - 1)))];
 }
 
+float TrimmedShapes::reach(int frame, int bucket, Clip clip) const {
+    const auto& p = polygon(frame, bucket, clip);
+    const int n = vertexCount(frame, bucket, clip);
+    if (n < 3) return std::sqrt(2.0f);
+    double farthest = 0.0;
+    for (int i = 0; i < n; ++i) farthest = std::max(farthest, glm::length(glm::dvec2(p[size_t(i)])));
+    // Rounded up to float, so a bound made from it never falls short.
+    const float r = float(farthest);
+    return double(r) < farthest ? std::nextafter(r, 2.0f) : r;
+}
+
 float TrimmedShapes::inradius(int frame, int bucket, Clip clip) const {
     const auto& p = polygon(frame, bucket, clip);
     const int n = vertexCount(frame, bucket, clip);

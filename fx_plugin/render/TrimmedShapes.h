@@ -58,6 +58,10 @@ public:
     /// Distance from the particle's centre (0, 0) to the nearest edge of the polygon; 0 when
     /// the centre is not strictly inside it (no polygon, or a puff drawn off centre).
     float inradius(int frame, int bucket, Clip clip = Clip::Square) const;
+    /// Distance from the particle's centre (0, 0) to the polygon's farthest vertex (texture
+    /// units: 1 is half the quad's edge), whatever the angle the polygon is turned by; sqrt(2)
+    /// when there is no polygon.
+    float reach(int frame, int bucket, Clip clip = Clip::Square) const;
     /// Packed for the vertex shader: [frame][bucket][vertex] as (x, y) pairs, two per vec4.
     std::vector<glm::vec4> packed(Clip clip = Clip::Square) const;
     /// (inradius(), areaShare()) of every [frame][bucket], two pairs per vec4

@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include <filesystem>
+#include <fstream>
 
 #include <glad/gl.h>
 #include <stb/stb_image.h>
@@ -20,6 +21,7 @@
 #include "FxTestHost.h"
 #include "../../fx_plugin/render/EmbeddedResources.h"
 #include "../../fx_plugin/render/ProgramCache.h"
+#include "../../fx_plugin/render/ScreenTiles.h"
 #include "../../fx_plugin/render/SmokeAtlas.h"
 #include "../../fx_plugin/render/TrimmedShapes.h"
 
@@ -191,6 +193,49 @@ TEST(TrimmedShapes, RejectsAtlasSizesItCannotSplit) {
     // An atlas with nothing in a frame gives that frame no fragments at all.
     EXPECT_TRUE(shapes.compute(px, 2, 2, 0));
     EXPECT_EQ(shapes.vertexCount(0, 0), 0);
+}
+
+// The billboards' reach table (ScreenTiles.h: BillboardReach) against the vertex shader's bucket
+// rule, bucket = clamp(ceil(log2(t) + 0.5), 0, buckets - 1) for texels per pixel t, with t off
+// by a relative 1e-6 either way (the GPU's rounding): the entry is never below half the farthest
+// vertex of the polygon the shader picks, never above the quad's 0.71, and out-of-range frames
+// take the largest of any frame.
+TEST(TrimmedShapes, TheReachTableHoldsThePolygonTheShaderPicks) {
+    const AtlasPixels atlas = embeddedAtlas();
+    ASSERT_GT(atlas.w, 0);
+    fx::TrimmedShapes shapes;
+    ASSERT_TRUE(shapes.compute(atlas.rgba.data(), atlas.w, atlas.h, atlas.maxLevel));
+    const fx::BillboardReach reach = fx::BillboardReach::of(shapes, 1.0f);
+    ASSERT_EQ(reach.buckets, shapes.buckets());
+    auto shaderBucket = [&](double t) {
+        const double lod = std::log2(std::max(t, 1e-6));
+        return std::min(std::max(int(std::ceil(lod + 0.5)), 0), shapes.buckets() - 1);
+    };
+    int checked = 0, exact = 0;
+    float tightest = 1.0f, loosest = 0.0f;
+    for (int f = 0; f < fx::TrimmedShapes::kFrames; ++f) {
+        for (double t = 1e-4; t < 1e4; t *= 1.013) {
+            const float entry = reach.at(float(f), float(t));
+            for (double wobble : {1.0 - 1e-6, 1.0, 1.0 + 1e-6}) {
+                const int b = shaderBucket(t * wobble);
+                ASSERT_GE(entry, 0.5f * shapes.reach(f, b)) << "frame " << f << " t " << t;
+                ++checked;
+            }
+            if (entry == 0.5f * shapes.reach(f, shaderBucket(t))) ++exact;
+            EXPECT_LE(entry, 0.71f);
+            EXPECT_GE(reach.at(-3.0f, float(t)), entry);
+            EXPECT_GE(reach.at(std::nanf(""), float(t)), entry);
+            EXPECT_GE(reach.at(9.0f, float(t)), entry);
+            tightest = std::min(tightest, entry);
+            loosest = std::max(loosest, entry);
+        }
+    }
+    std::printf("[ measured ] billboard reach: %.3f to %.3f of the size (the quad's corners: 0.707), %d checks, "
+                "%d of them the picked polygon's own reach\n",
+                double(tightest), double(loosest), checked, exact);
+    EXPECT_LT(tightest, 0.6f);
+    // No polygons: no table.
+    EXPECT_EQ(fx::BillboardReach::of(fx::TrimmedShapes(), 1.0f).lodScale, 0.0f);
 }
 
 // --- images -----------------------------------------------------------------------------------
@@ -438,6 +483,97 @@ TEST_F(HardEdgedSphereTest, SphericalPolygonLeavesOutTheOutlineAroundASmallPuff)
 // there. Telling the plugin "standard" for the same buffers turns their test off (the projection
 // is the host's either way), so the two pictures must agree: the test only drops fragments that
 // shade to nothing.
+// Each trimmed billboard drawn alone at full res over a black scene, with a hard fragment shader
+// that writes white wherever it runs: every fragment the polygon rasterises lies inside the rect
+// screenRect gives it from its reach (BillboardReach, at the renderer's LOD scale for the view),
+// for particles of every frame and angle from 0.4 m to 300 m away, from a few pixels to more than
+// the view across; the rect is smaller than the quad's box for most, the overdraw estimate
+// (footprintPixels, the quads' boxes) the same bit for bit.
+class TrimmedBoundTest : public FxHostTest {};
+
+TEST_F(TrimmedBoundTest, NoFragmentOfATrimmedBillboardLiesOutsideItsReachBound) {
+    const std::string shaders = scratchDir() + "/every_fragment_white";
+    std::error_code ec;
+    std::filesystem::remove_all(shaders, ec);
+    std::filesystem::copy(CUBE_SOURCE_DIR "/shaders", shaders, ec);
+    ASSERT_FALSE(ec) << ec.message();
+    {
+        std::ofstream fs(shaders + "/fs_particles_hard.glsl");
+        fs << "#version 330 core\nlayout(location = 0) out vec4 oColor;\nvoid main() { oColor = vec4(1.0); }\n";
+    }
+    TestHostAdapter host;
+    DirectParticles direct(&host, shaders);
+    direct.settings.options.techniqueOverride = fx::Technique::Hard;
+    constexpr int kW = 192, kH = 144;
+    TestFrameGraph graph(kW, kH);
+    TestScene scene;
+    scene.sky = glm::vec3(0.0f);
+    const fx::ViewInfo view = makeView(glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, -1.0f), kW, kH, 0.1f, 1000.0f);
+    const AtlasPixels atlas = embeddedAtlas();
+    ASSERT_GT(atlas.w, 0);
+    fx::TrimmedShapes shapes;
+    ASSERT_TRUE(shapes.compute(atlas.rgba.data(), atlas.w, atlas.h, atlas.maxLevel));
+    fx::BillboardReach reach = fx::BillboardReach::of(shapes, 1.0f);
+    reach.lodScale = float(atlas.w / 2) * 2.0f / (std::fabs(view.proj[1][1]) * float(kH));  // ParticleDraw's
+    int particles = 0, tighter = 0, fragments = 0, worstSlack = 1 << 20;
+    double reachArea = 0.0, boxArea = 0.0;
+    for (int i = 0; i < 96; ++i) {
+        const float distance = 0.4f * std::pow(750.0f, float(i % 24) / 23.0f);
+        const float size = distance * (0.02f + 0.9f * float((i * 7) % 11) / 10.0f) * (i % 5 == 0 ? 0.15f : 1.0f);
+        HandParticle p;
+        p.position = glm::vec3(0.3f * distance * std::sin(float(i)), 0.2f * distance * std::cos(1.3f * float(i)), -distance);
+        p.size = size;
+        p.rotation = 0.37f * float(i);
+        p.frame = i % 4;
+        direct.set({p});
+        int drawn = 0;
+        renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = direct.declare(view, f); });
+        ASSERT_EQ(drawn, 1);
+        const Image image = graph.readColor();
+        const fx::ParticleInstance instance{p.position.x, p.position.y, p.position.z, p.size, p.life, p.rotation,
+                                            p.fade, float(p.frame)};
+        const fx::ScreenRect rect = fx::screenRect(view, &instance, 1, nullptr, fx::Footprint::Billboard, fx::Jobs(), &reach);
+        const fx::ScreenRect box = fx::screenRect(view, &instance, 1, nullptr, fx::Footprint::Billboard);
+        ASSERT_EQ(rect.whole && !rect.x0 && !rect.y0 && rect.x1 == kW && rect.y1 == kH, box.whole || rect.whole)
+            << "particle " << i;
+        EXPECT_EQ(rect.footprintPixels, box.footprintPixels) << "particle " << i;
+        int outside = 0, drawnPixels = 0;
+        int fx0 = kW, fx1 = 0, fy0 = kH, fy1 = 0;
+        for (int y = 0; y < kH; ++y) {
+            for (int x = 0; x < kW; ++x) {
+                if (image.at(x, y)[0] == 0) continue;
+                ++drawnPixels;
+                fx0 = std::min(fx0, x);
+                fx1 = std::max(fx1, x + 1);
+                fy0 = std::min(fy0, y);
+                fy1 = std::max(fy1, y + 1);
+                if (x < rect.x0 || x >= rect.x1 || y < rect.y0 || y >= rect.y1) ++outside;
+            }
+        }
+        EXPECT_EQ(outside, 0) << "particle " << i << " at " << distance << " m, size " << size << " m, frame "
+                              << p.frame << ": " << outside << " of " << drawnPixels << " fragments outside";
+        if (drawnPixels == 0) continue;
+        ++particles;
+        fragments += drawnPixels;
+        // How close the bound comes to the fragments on its nearest side, where the view does
+        // not clip it (the rect's one pixel of slack included).
+        if (rect.x0 > 0) worstSlack = std::min(worstSlack, fx0 - rect.x0);
+        if (rect.x1 < kW) worstSlack = std::min(worstSlack, rect.x1 - fx1);
+        if (rect.y0 > 0) worstSlack = std::min(worstSlack, fy0 - rect.y0);
+        if (rect.y1 < kH) worstSlack = std::min(worstSlack, rect.y1 - fy1);
+        const double a = double(rect.x1 - rect.x0) * double(rect.y1 - rect.y0);
+        const double b = double(box.x1 - box.x0) * double(box.y1 - box.y0);
+        reachArea += a;
+        boxArea += b;
+        if (a < b) ++tighter;
+    }
+    std::printf("[ measured ] %d trimmed billboards, %d fragments: reach rects %.0f px against the quads' boxes "
+                "%.0f px (%.2f), smaller for %d; closest bound to a fragment %d px\n",
+                particles, fragments, reachArea, boxArea, reachArea / std::max(boxArea, 1.0), tighter, worstSlack);
+    EXPECT_GT(particles, 80);
+    EXPECT_GT(tighter, particles / 2);
+}
+
 TEST_F(TrimmedImageTest, DepthTestedSoftAndSphericalEqualUntested) {
     constexpr int kW = 200, kH = 150;
     TestFrameGraph graph(kW, kH, true);
