@@ -25,9 +25,14 @@
 //
 // Fixed costs follow the smoke's footprint: the downsample, the half-res z-fill and the
 // composite are drawn on ScreenTiles (16 px tiles a particle's bound touches, as runs) instead
-// of one triangle over the view, with billboards bounded by their view-plane square rather than
-// a cube; and the composite is two builds (depth-aware, bilinear) instead of one with a uniform
-// branch, which a CPU rasteriser runs both sides of. The half-res colour is RGBA8 for
+// of one triangle over the view, with billboards bounded by their trimmed polygon's reach
+// (BillboardReach) rather than a cube; and the composite is two builds (depth-aware, bilinear)
+// instead of one with a uniform branch, which a CPU rasteriser runs both sides of. Its fetches:
+// the bilinear colour through the half-res colour's linear sampler (one fetch, after which a
+// pixel without smoke is discarded), the pixel's depth and the four low-res depths in one
+// textureGather; on a depth edge the kept texels' blend in two more filtered fetches, one per
+// row. The downsample gathers its block too (four texelFetch each where the context has no
+// ARB_texture_gather). The half-res colour is RGBA8 for
 // billboards: blending there costs a GPU about a fifth less than RGBA16F for a few tenths of a dB
 // (figures in docs/results.md); it gives up accumulation finer than 1/255 where many faint puffs
 // overlap, and additive smoke brighter than 1 in an HDR host's scene (clamped at quarter res).
