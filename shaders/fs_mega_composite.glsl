@@ -19,17 +19,28 @@ uniform float uSoftScale;       // 1 / render.softness, 1/m
 layout(location = 0) out vec4 oColor;
 
 void main() {
+    ivec2 lowSize = textureSize(uCloud, 0);
     ivec2 base, last;
     vec2 f;
-    vec2 pixel = fragmentFootprint(textureSize(uCloud, 0), base, f, last);
+    vec2 pixel = fragmentFootprint(lowSize, base, f, last);
+    // The four taps' cloud depths (t0 = base, t1 = +x, t2 = +y, t3 = +x+y, each clamped into the
+    // image): one textureGather at the corner they share, through an edge-clamped sampler
+    // (FX_GATHER: the context has ARB_texture_gather), else four texelFetch. A footprint without
+    // cloud adds nothing: the pixel is discarded before its colour and scene-depth fetches.
+#ifdef FX_GATHER
+    vec4 cloud = textureGather(uCloudDepth, (vec2(base) + 1.0) / vec2(lowSize)).wzxy;
+#else
+    vec4 cloud;
+    for (int i = 0; i < 4; ++i) cloud[i] = texelFetch(uCloudDepth, clamp(base + ivec2(i & 1, i >> 1), ivec2(0), last), 0).r;
+#endif
+    if (all(lessThanEqual(cloud, vec4(0.0)))) discard;
     float scene = linearSceneDepth(texelFetch(uSceneDepth, sceneDepthTexel(ivec2(pixel)), 0).r);  // nothing drawn: 3.0e38
     vec4 sum = vec4(0.0);
     for (int i = 0; i < 4; ++i) {
         ivec2 o = ivec2(i & 1, i >> 1);
         ivec2 tap = clamp(base + o, ivec2(0), last);
         float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
-        float cloud = texelFetch(uCloudDepth, tap, 0).r;
-        float visible = cloud > 0.0 ? clamp((scene - cloud) * uSoftScale, 0.0, 1.0) : 0.0;
+        float visible = cloud[i] > 0.0 ? clamp((scene - cloud[i]) * uSoftScale, 0.0, 1.0) : 0.0;
         sum += (w * visible) * texelFetch(uCloud, tap, 0);
     }
     oColor = sum;

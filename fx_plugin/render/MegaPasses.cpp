@@ -172,7 +172,7 @@ void MegaPasses::runComposite(PassContext& ctx, const MegaCloud& r, Target cloud
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glUseProgram(programs_->composite);
     bindTextureUnit(kUnit0, ctx.texture(cloud, 0).name);
-    bindTextureUnit(kUnit1, ctx.texture(cloudDepth, 0).name);
+    hostDepth_.bindTexture(kUnit1, ctx.texture(cloudDepth, 0).name);  // gathered: clamped to its edge
     const TextureRef depthRef = ctx.texture(sceneDepth, 0);
     hostDepth_.bindTexture(kUnit2, depthRef.name);
     glUniform1i(programs_->cCloud, kUnit0);

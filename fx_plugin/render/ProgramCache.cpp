@@ -100,10 +100,11 @@ uint32_t ProgramCache::Key::bits() const {
 
 std::string ProgramCache::Key::defines() const {
     std::string d;
-    // The quarter-res downsample and composite gather four depths in one fetch where the context
+    // The quarter-res downsample and composites gather four depths in one fetch where the context
     // has ARB_texture_gather (GL 4.0 hardware); declared only then, since a declaration the
     // compiler does not know is a warning on the host's debug output.
-    const bool gathers = program == DepthDownsample || program == Composite || program == CompositeBilinear;
+    const bool gathers = program == DepthDownsample || program == Composite || program == CompositeBilinear ||
+                         program == MegaComposite;
     if (gathers && FXGLAD_GL_ARB_texture_gather) d += "#extension GL_ARB_texture_gather : require\n#define FX_GATHER 1\n";
     d += sourceOf(*this).defines;
     if (powerSteps >= 0) d += "#define FX_POWER_STEPS " + std::to_string(powerSteps) + "\n";

@@ -113,7 +113,7 @@ TEST_F(ShaderLoaderTest, EveryParticleProgramBuilds) {
     }
 }
 
-// The quarter-res downsample and composite gather their four depths where the context has
+// The quarter-res downsample and the composites gather their four depths where the context has
 // ARB_texture_gather, and only they declare it (an #extension the driver does not know is a
 // warning on the host's debug output). Every context the suite runs them in has it, but for the
 // run that hides it (QuarterResTest.WithoutTextureGather, tests/CMakeLists.txt).
@@ -131,12 +131,12 @@ TEST_F(ShaderLoaderTest, TheQuarterResProgramsGatherWhereTheContextCan) {
         EXPECT_TRUE(listed);
     }
     using PC = fx::ProgramCache;
-    for (PC::Program program : {PC::DepthDownsample, PC::Composite, PC::CompositeBilinear}) {
+    for (PC::Program program : {PC::DepthDownsample, PC::Composite, PC::CompositeBilinear, PC::MegaComposite}) {
         const std::string defines = PC::Key::of(program).defines();
         EXPECT_EQ(defines.find("#define FX_GATHER 1") != std::string::npos, listed) << defines;
         EXPECT_EQ(defines.find("#extension GL_ARB_texture_gather : require") != std::string::npos, listed);
     }
-    for (PC::Program program : {PC::HalfZ, PC::LinearizeDepth, PC::MegaComposite}) {
+    for (PC::Program program : {PC::HalfZ, PC::LinearizeDepth, PC::MegaSpheres}) {
         EXPECT_EQ(PC::Key::of(program).defines().find("texture_gather"), std::string::npos);
     }
 }
