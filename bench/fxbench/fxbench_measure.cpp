@@ -209,8 +209,11 @@ private:
         game_.graph().setCountFragments(false);
         if (fragments) {
             long long sum = 0;
-            for (const cube::rtt::PassTiming& t : game_.graph().report().timings)
-                if (isParticlePass(t.name) && t.fragments > 0) sum += t.fragments;
+            for (const cube::rtt::PassTiming& t : game_.graph().report().timings) {
+                if (!isParticlePass(t.name) || t.fragments < 0) continue;
+                sum += t.fragments;
+                m.passFragments[t.name].push_back(double(t.fragments));
+            }
             m.particleFragments.push_back(double(sum));
         }
         return game_.lastFrame();

@@ -41,6 +41,9 @@ struct ModeRun {
     ErrorAccum error;
     std::vector<double> fillMs, fillRatio, coveragePct;  ///< one per error frame
     std::vector<double> particleFragments;          ///< per error frame: samples the particle passes wrote
+    /// Per particle pass, per error frame: the samples it wrote (GL_SAMPLES_PASSED: fragments
+    /// neither discarded nor depth-rejected), e.g. the pixels a composite blended.
+    std::map<std::string, std::vector<double>> passFragments;
     std::vector<double> frameParticleMs;            ///< scratch: this simulated frame's rounds
 };
 

@@ -120,6 +120,31 @@ std::string markdownReport(const Report& r) {
         }
     }
 
+    // Per particle pass, the samples it wrote: what a pass's time is paid for (a composite's
+    // blended pixels, a downsample's half-res texels).
+    std::vector<std::string> fragmentPasses;
+    for (const ModeSummary& m : r.modes)
+        for (const auto& p : m.passFragments)
+            if (std::find(fragmentPasses.begin(), fragmentPasses.end(), p.first) == fragmentPasses.end())
+                fragmentPasses.push_back(p.first);
+    if (!fragmentPasses.empty()) {
+        o += "\nPer particle pass, samples written (GL_SAMPLES_PASSED, median over error frames); '-' = not run\n\n| pass |";
+        for (const ModeSummary& m : r.modes) o += " " + m.name + " |";
+        o += "\n|---|";
+        for (size_t i = 0; i < r.modes.size(); ++i) o += "---:|";
+        o += "\n";
+        for (const std::string& p : fragmentPasses) {
+            o += "| " + p + " |";
+            for (const ModeSummary& m : r.modes) {
+                std::string cell = " - |";
+                for (const auto& q : m.passFragments)
+                    if (q.first == p) cell = " " + fmt("%.0f", q.second) + " |";
+                o += cell;
+            }
+            o += "\n";
+        }
+    }
+
     o += "\nParticle work vs the fill limit (trivial textured quad blended once over the covered pixels)\n\n"
          "| mode | particles drawn | coverage % | particle ms | particle fragments | fill-limit ms | ratio | vs nofx | "
          "allocating renders |\n"
@@ -198,6 +223,10 @@ std::string jsonReport(const Report& r, const std::string& in) {
         o += p + "  \"particle_pass_ms\": " + num(m.particleMs) + ",\n";
         o += p + "  \"outside_passes_ms\": " + num(m.outsidePassesMs) + ",\n";
         o += p + "  \"particle_fragments\": " + num(m.particleFragments) + ",\n";
+        o += p + "  \"passes_fragments\": {";
+        for (size_t k = 0; k < m.passFragments.size(); ++k)
+            o += (k ? ", " : "") + jsonQuote(m.passFragments[k].first) + ": " + num(m.passFragments[k].second);
+        o += "},\n";
         o += p + "  \"particles\": " + num(m.particles) + ",\n";
         o += p + "  \"coverage_pct\": " + num(m.coveragePct) + ",\n";
         o += p + "  \"fill_limit_ms\": " + num(m.fillLimitMs) + ",\n";

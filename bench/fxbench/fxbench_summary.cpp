@@ -47,6 +47,10 @@ ModeSummary summarise(const ModeRun& run, const ModeRun* hard, const ModeRun* no
     s.particleMs = median(run.particleMs);
     s.outsidePassesMs = median(run.outsidePassesMs);
     s.particleFragments = median(run.particleFragments);
+    for (const std::string& name : run.passOrder) {
+        const auto it = run.passFragments.find(name);
+        if (it != run.passFragments.end()) s.passFragments.emplace_back(name, median(it->second));
+    }
     s.particles = median(run.particlesDrawn);
     s.coveragePct = median(run.coveragePct);
     s.fillLimitMs = median(run.fillMs);

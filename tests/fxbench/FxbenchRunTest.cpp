@@ -130,6 +130,32 @@ TEST(Fxbench, TrimmedSoftShadesFewerFragmentsThanQuadsForTheSameImage) {
     EXPECT_LE(quads["error"]["max_abs"].as<double>(), 1.0);  // 8-bit levels
 }
 
+// Per particle pass, the samples it wrote: their sum is particle_fragments; quarter res's
+// downsample writes its half-res texels and its composite blends fewer pixels than the
+// downsample's tiles hold at full res (a pixel without smoke is discarded).
+TEST(Fxbench, PerPassFragmentsAddUpAndShowTheCompositesDiscards) {
+    const YAML::Node& run = tinyRun("standard");
+    for (const char* name : {"soft", "soft+quarter-always", "spherical+quarter"}) {
+        SCOPED_TRACE(name);
+        const YAML::Node m = modeNode(run, name);
+        ASSERT_TRUE(m["passes_fragments"].IsMap());
+        double sum = 0.0;
+        for (const auto& kv : m["passes_fragments"]) {
+            EXPECT_NE(kv.first.as<std::string>().find("particles"), std::string::npos);
+            sum += finite(kv.second, "passes_fragments." + kv.first.as<std::string>());
+        }
+        // Medians of each pass against the median of their sums: equal with one error frame.
+        EXPECT_DOUBLE_EQ(sum, m["particle_fragments"].as<double>());
+    }
+    const YAML::Node q = modeNode(run, "soft+quarter-always")["passes_fragments"];
+    const double downsample = q["chase.particles_depth_downsample"].as<double>();
+    const double composite = q["chase.particles_composite"].as<double>();
+    ASSERT_GT(downsample, 0.0);
+    EXPECT_GT(composite, 0.0);
+    EXPECT_LT(composite, 4.0 * downsample);
+    EXPECT_EQ(modeNode(run, "soft")["passes_fragments"].size(), 1u);  // chase.particles alone
+}
+
 TEST(Fxbench, ParticleModesDrawParticlesInTheStandardScenario) {
     // The positive control for the "no particle pass" checks.
     const YAML::Node& run = tinyRun("standard");
