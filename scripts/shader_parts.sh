@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# What each part of the particle shaders costs: fxbench over the same frames with the shaders as
+# they are, then with copies that each leave one part out (read through CUBE_SHADER_DIR), and the
+# per-pass times side by side. The pictures of the copies are wrong on purpose; only their times
+# mean something. A measurement aid, made for a GPU session's few minutes: one command answers
+# where soft's and spherical's extra time per fragment and the composite's time go.
+#   scripts/shader_parts.sh [fxbench options...]            (here: llvmpipe through OSMesa)
+#   FXBENCH="bash .gpu/run-egl.sh fxbench" scripts/shader_parts.sh --backend egl --size 1920x1080
+# Default options: the standard scene, 8 frames, 2 rounds, no error frames. Runs alternate
+# variant by variant, twice; the table gives each pass's two medians.
+#   scripts/shader_parts.sh --check    only checks that every part is still where it is looked for
+set -euo pipefail
+cd "$(dirname "$0")/.."
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# Each variant: (file, text that must be there exactly once, replacement).
+python3 - "$work" <<'EOF'
+import pathlib, shutil, sys
+work = pathlib.Path(sys.argv[1])
+variants = {
+    # Soft without its fade: the scene-depth fetch, its decode and the contrast curve gone.
+    "soft-no-fade": [("fs_particles_soft.glsl", "float fade = softFade(sceneDepthAt(gl_FragCoord.xy), depth);",
+                      "float fade = 1.0;")],
+    # Every particle shader's scene depth read without its decode (the division).
+    "no-depth-decode": [("particles_common.glsl",
+                         "return linearSceneDepth(textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r);",
+                         "return textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r * 1000.0;")],
+    # Spherical without the scene depth: the chord clipped by the near plane only.
+    "sphere-no-depth": [("fs_particles_spherical.glsl", "float sceneZ = sceneDepthAt(gl_FragCoord.xy);",
+                         "float sceneZ = 3.0e38;")],
+    # Spherical without the chord: the atlas alpha at the closest approach alone.
+    "sphere-no-chord": [("fs_particles_spherical.glsl",
+                         "float coverage = texel.a * visible * nearFadeFactor(max(0.5 * (z0 + z1), uNear));",
+                         "float coverage = texel.a;")],
+    # The composite without its edge test: plain bilinear (one fetch a pixel).
+    "composite-no-edges": [("fs_particles_composite.glsl", "#if defined(FX_COMPOSITE_BILINEAR)", "#if 1")],
+}
+for name, changes in variants.items():
+    folder = work / name
+    shutil.copytree("shaders", folder)
+    for file, old, new in changes:
+        path = folder / file
+        text = path.read_text()
+        if text.count(old) != 1:
+            sys.exit(f"shader_parts.sh: {file}: expected exactly one '{old}'")
+        path.write_text(text.replace(old, new))
+(work / "variants").write_text("\n".join(variants) + "\n")
+EOF
+if [ "${1:-}" = "--check" ]; then
+    echo "shader_parts.sh: every part found ($(tr '\n' ' ' < "$work/variants"))"
+    exit 0
+fi
+
+read -r -a fxbench <<< "${FXBENCH:-./build/bin/fxbench}"
+[ "${fxbench[0]}" != ./build/bin/fxbench ] || [ -x ./build/bin/fxbench ] ||
+    { echo "shader_parts.sh: build first (./run.sh or cmake --build build)" >&2; exit 1; }
+args=("$@")
+[ ${#args[@]} -gt 0 ] || args=(--frames 8 --rounds 2)
+mapfile -t variants < "$work/variants"
+for round in 1 2; do
+    for variant in now "${variants[@]}"; do
+        # An empty CUBE_SHADER_DIR means the shaders built into fxbench (engine_stub/gl/Paths.cpp).
+        shaderDir=""
+        [ "$variant" = now ] || shaderDir="$work/$variant"
+        CUBE_SHADER_DIR="$shaderDir" "${fxbench[@]}" --modes hard,soft,spherical,soft+quarter-always \
+            --error-frames 0 "${args[@]}" --json "$work/$variant.$round.json" >/dev/null
+    done
+done
+
+python3 - "$work" now "${variants[@]}" <<'EOF'
+import json, sys
+work, variants = sys.argv[1], sys.argv[2:]
+def passes(variant, round):
+    run = json.load(open(f"{work}/{variant}.{round}.json"))
+    return {(m["name"], p): ms for m in run["modes"] for p, ms in m["passes_ms"].items() if "particles" in p}
+runs = {v: [passes(v, 1), passes(v, 2)] for v in variants}
+rows = list(runs["now"][0])
+print("Per-pass median ms, two runs each (" + json.load(open(f"{work}/now.1.json"))["timing_method"] + ")\n")
+print("| mode | pass | " + " | ".join(variants) + " |")
+print("|---|---|" + "---:|" * len(variants))
+for mode, p in rows:
+    cells = []
+    for v in variants:
+        a, b = (r.get((mode, p)) for r in runs[v])
+        cells.append("-" if a is None or b is None else f"{a:.3f}, {b:.3f}")
+    print(f"| {mode} | {p} | " + " | ".join(cells) + " |")
+EOF
