@@ -3,7 +3,7 @@ set(GLAD_OUT ${CMAKE_BINARY_DIR}/glad)
 add_custom_command(
   OUTPUT ${GLAD_OUT}/src/gl.c ${GLAD_OUT}/include/glad/gl.h ${GLAD_OUT}/include/KHR/khrplatform.h
   COMMAND ${GLAD_EXECUTABLE} --quiet --reproducible --api gl:core=3.3
-          --extensions GL_KHR_debug,GL_ARB_timer_query,GL_ARB_clip_control --out-path ${GLAD_OUT} c
+          --extensions GL_KHR_debug,GL_ARB_timer_query,GL_ARB_clip_control,GL_ARB_pipeline_statistics_query --out-path ${GLAD_OUT} c
   COMMENT "Generating the GL 3.3 core loader with glad"
   VERBATIM)
 add_library(glad STATIC ${GLAD_OUT}/src/gl.c)

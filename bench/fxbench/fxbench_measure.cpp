@@ -200,7 +200,8 @@ private:
 
     // Untimed: one render of the current simulated frame in mode `m`. With `fragments`, each pass
     // also counts the samples it writes (GL_SAMPLES_PASSED; the read-back waits, so never in a
-    // timed render) and the particle passes' sum goes to m.particleFragments.
+    // timed render) and, where the context can, its fragment shader invocations; the particle
+    // passes' sum of samples goes to m.particleFragments.
     cube::ImageRGBA8 capture(ModeRun& m, bool fragments = false) {
         applyMode(game_, *m.mode);
         game_.captureNextFrame();
@@ -213,6 +214,7 @@ private:
                 if (!isParticlePass(t.name) || t.fragments < 0) continue;
                 sum += t.fragments;
                 m.passFragments[t.name].push_back(double(t.fragments));
+                if (t.shaded >= 0) m.passShaded[t.name].push_back(double(t.shaded));
             }
             m.particleFragments.push_back(double(sum));
         }

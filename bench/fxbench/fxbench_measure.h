@@ -44,6 +44,9 @@ struct ModeRun {
     /// Per particle pass, per error frame: the samples it wrote (GL_SAMPLES_PASSED: fragments
     /// neither discarded nor depth-rejected), e.g. the pixels a composite blended.
     std::map<std::string, std::vector<double>> passFragments;
+    /// The same, fragment shader invocations (GL_FRAGMENT_SHADER_INVOCATIONS_ARB: what the pass
+    /// shaded, discarded fragments included); empty without ARB_pipeline_statistics_query.
+    std::map<std::string, std::vector<double>> passShaded;
     std::vector<double> frameParticleMs;            ///< scratch: this simulated frame's rounds
 };
 

@@ -43,6 +43,32 @@ std::string fmt(const char* f, double v) {
 
 std::string psnrText(double db) { return db >= kPsnrCapDb ? "cap (identical)" : fmt("%.1f", db); }
 
+// A table of one count per particle pass (rows) and mode (columns), when any mode has one.
+using PassCounts = std::vector<std::pair<std::string, double>>;
+void perPassCounts(const Report& r, PassCounts ModeSummary::*counts, const char* title, std::string* out) {
+    std::vector<std::string> passes;
+    for (const ModeSummary& m : r.modes)
+        for (const auto& p : m.*counts)
+            if (std::find(passes.begin(), passes.end(), p.first) == passes.end()) passes.push_back(p.first);
+    if (passes.empty()) return;
+    std::string& o = *out;
+    o += std::string("\n") + title + "\n\n| pass |";
+    for (const ModeSummary& m : r.modes) o += " " + m.name + " |";
+    o += "\n|---|";
+    for (size_t i = 0; i < r.modes.size(); ++i) o += "---:|";
+    o += "\n";
+    for (const std::string& p : passes) {
+        o += "| " + p + " |";
+        for (const ModeSummary& m : r.modes) {
+            std::string cell = " - |";
+            for (const auto& q : m.*counts)
+                if (q.first == p) cell = " " + fmt("%.0f", q.second) + " |";
+            o += cell;
+        }
+        o += "\n";
+    }
+}
+
 }  // namespace
 
 std::string markdownReport(const Report& r) {
@@ -121,29 +147,13 @@ std::string markdownReport(const Report& r) {
     }
 
     // Per particle pass, the samples it wrote: what a pass's time is paid for (a composite's
-    // blended pixels, a downsample's half-res texels).
-    std::vector<std::string> fragmentPasses;
-    for (const ModeSummary& m : r.modes)
-        for (const auto& p : m.passFragments)
-            if (std::find(fragmentPasses.begin(), fragmentPasses.end(), p.first) == fragmentPasses.end())
-                fragmentPasses.push_back(p.first);
-    if (!fragmentPasses.empty()) {
-        o += "\nPer particle pass, samples written (GL_SAMPLES_PASSED, median over error frames); '-' = not run\n\n| pass |";
-        for (const ModeSummary& m : r.modes) o += " " + m.name + " |";
-        o += "\n|---|";
-        for (size_t i = 0; i < r.modes.size(); ++i) o += "---:|";
-        o += "\n";
-        for (const std::string& p : fragmentPasses) {
-            o += "| " + p + " |";
-            for (const ModeSummary& m : r.modes) {
-                std::string cell = " - |";
-                for (const auto& q : m.passFragments)
-                    if (q.first == p) cell = " " + fmt("%.0f", q.second) + " |";
-                o += cell;
-            }
-            o += "\n";
-        }
-    }
+    // blended pixels, a downsample's half-res texels); then, where the context counts them, the
+    // fragments it shaded (discarded ones included: a bound's waste, a composite's early outs).
+    perPassCounts(r, &ModeSummary::passFragments,
+                  "Per particle pass, samples written (GL_SAMPLES_PASSED, median over error frames); '-' = not run", &o);
+    perPassCounts(r, &ModeSummary::passShaded,
+                  "Per particle pass, fragments shaded (GL_FRAGMENT_SHADER_INVOCATIONS_ARB: discarded ones too; "
+                  "median over error frames); '-' = not run", &o);
 
     o += "\nParticle work vs the fill limit (trivial textured quad blended once over the covered pixels)\n\n"
          "| mode | particles drawn | coverage % | particle ms | particle fragments | fill-limit ms | ratio | vs nofx | "
@@ -226,6 +236,10 @@ std::string jsonReport(const Report& r, const std::string& in) {
         o += p + "  \"passes_fragments\": {";
         for (size_t k = 0; k < m.passFragments.size(); ++k)
             o += (k ? ", " : "") + jsonQuote(m.passFragments[k].first) + ": " + num(m.passFragments[k].second);
+        o += "},\n";
+        o += p + "  \"passes_shaded\": {";
+        for (size_t k = 0; k < m.passShaded.size(); ++k)
+            o += (k ? ", " : "") + jsonQuote(m.passShaded[k].first) + ": " + num(m.passShaded[k].second);
         o += "},\n";
         o += p + "  \"particles\": " + num(m.particles) + ",\n";
         o += p + "  \"coverage_pct\": " + num(m.coveragePct) + ",\n";

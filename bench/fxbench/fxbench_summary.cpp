@@ -50,6 +50,8 @@ ModeSummary summarise(const ModeRun& run, const ModeRun* hard, const ModeRun* no
     for (const std::string& name : run.passOrder) {
         const auto it = run.passFragments.find(name);
         if (it != run.passFragments.end()) s.passFragments.emplace_back(name, median(it->second));
+        const auto sh = run.passShaded.find(name);
+        if (sh != run.passShaded.end()) s.passShaded.emplace_back(name, median(sh->second));
     }
     s.particles = median(run.particlesDrawn);
     s.coveragePct = median(run.coveragePct);

@@ -21,6 +21,7 @@ struct ModeSummary {
     double outsidePassesMs = 0;                 ///< median of frame ms - sum of pass ms (ModeRun)
     double particleFragments = 0;               ///< median over error frames of the samples the particle passes wrote
     std::vector<std::pair<std::string, double>> passFragments;  ///< the same per particle pass, run order
+    std::vector<std::pair<std::string, double>> passShaded;     ///< per particle pass: fragment shader invocations
     double particles = 0;                       ///< median particles drawn (0 for nofx)
     double coveragePct = 0;                     ///< share of pixels the particles changed
     double fillLimitMs = 0;                     ///< median fill-limit draw over that coverage

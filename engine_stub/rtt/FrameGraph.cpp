@@ -27,6 +27,7 @@ FrameGraph::~FrameGraph() {
     for (uint32_t i = 0; i < resourceCount_; ++i)
         if (!resources_[i].imported && pool_.isValid(resources_[i].handle)) pool_.release(resources_[i].handle);
     if (!sampleQueries_.empty()) glDeleteQueries(GLsizei(sampleQueries_.size()), sampleQueries_.data());
+    if (!shadedQueries_.empty()) glDeleteQueries(GLsizei(shadedQueries_.size()), shadedQueries_.data());
 }
 
 void FrameGraph::reset() {
@@ -184,6 +185,7 @@ bool FrameGraph::execute() {
     size_t executed = 0, culled = culledAtCompile_;
     ScopedTargetBinding saved;
     timer_.beginFrame();
+    const bool countShaded = countFragments_ && GLAD_GL_ARB_pipeline_statistics_query;
     for (size_t pos = 0; pos < passCount_; ++pos) {
         Pass& p = passes_[order_[pos]];
         if (!p.kept) continue;
@@ -204,12 +206,20 @@ bool FrameGraph::execute() {
                 }
                 glBeginQuery(GL_SAMPLES_PASSED, sampleQueries_[executed]);
             }
+            if (countShaded) {
+                if (shadedQueries_.size() <= executed) {
+                    shadedQueries_.push_back(0);
+                    glGenQueries(1, &shadedQueries_.back());
+                }
+                glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, shadedQueries_[executed]);
+            }
             timer_.beginPass(p.name.c_str());
             PassContext ctx(*this, order_[pos]);
             p.execute(ctx);
             ctx.endPass();
             timer_.endPass();
             if (countFragments_) glEndQuery(GL_SAMPLES_PASSED);
+            if (countShaded) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
             saved.restore();
             setAt(report_.executed, executed++, p.name);
         } else if (p.skipped) {
@@ -225,11 +235,16 @@ bool FrameGraph::execute() {
     }
     timer_.endFrame();
     fragments_.assign(executed, -1);
+    shaded_.assign(executed, -1);
     if (countFragments_) {
         for (size_t i = 0; i < executed; ++i) {
             GLint64 n = 0;
             glGetQueryObjecti64v(sampleQueries_[i], GL_QUERY_RESULT, &n);
             fragments_[i] = static_cast<long long>(n);
+            if (!countShaded) continue;
+            n = 0;
+            glGetQueryObjecti64v(shadedQueries_[i], GL_QUERY_RESULT, &n);
+            shaded_[i] = static_cast<long long>(n);
         }
     }
     report_.executed.resize(executed);
@@ -254,6 +269,7 @@ void FrameGraph::buildReport() {
         t.samples = 0;
         timer_.stats(t.name.c_str(), &t.lastMs, &t.medianMs, &t.samples);
         t.fragments = i < fragments_.size() ? fragments_[i] : -1;
+        t.shaded = i < shaded_.size() ? shaded_[i] : -1;
     }
     const RenderTargetPoolStats st = pool_.stats();
     report_.targetsAcquired = acquired_;

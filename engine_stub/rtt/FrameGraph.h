@@ -114,7 +114,8 @@ public:
     /// Counts, per executed pass, the samples it writes that pass the depth test (a
     /// GL_SAMPLES_PASSED query around the pass, read back at the end of execute(), which then
     /// waits for the GPU). Off by default; benchmarks switch it on for untimed frames. Reported
-    /// as PassTiming::fragments.
+    /// as PassTiming::fragments, and, where the context has ARB_pipeline_statistics_query, the
+    /// fragment shader invocations as PassTiming::shaded.
     void setCountFragments(bool on) { countFragments_ = on; }
 
     /// Waits for the last execute()'s GPU pass timings (and any older ones still pending) and
@@ -201,7 +202,8 @@ private:
     FrameGraphReport report_;
     bool countFragments_ = false;
     std::vector<uint32_t> sampleQueries_;  // one per executed pass, grown as needed
-    std::vector<long long> fragments_;
+    std::vector<uint32_t> shadedQueries_;  // the same, GL_FRAGMENT_SHADER_INVOCATIONS_ARB
+    std::vector<long long> fragments_, shaded_;
 };
 
 }  // namespace cube::rtt

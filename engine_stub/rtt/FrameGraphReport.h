@@ -13,6 +13,10 @@ struct PassTiming {
     /// Samples the pass wrote that passed the depth test (GL_SAMPLES_PASSED) in the last frame;
     /// -1 unless FrameGraph::setCountFragments is on.
     long long fragments = -1;
+    /// Fragment shader invocations of the pass in the last frame (GL_FRAGMENT_SHADER_INVOCATIONS_ARB:
+    /// also the fragments it discarded, and whatever the driver counts for helper lanes); -1 unless
+    /// FrameGraph::setCountFragments is on and the context has ARB_pipeline_statistics_query.
+    long long shaded = -1;
 };
 
 /// Defaults: empty, nothing run.

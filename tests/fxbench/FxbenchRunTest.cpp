@@ -156,6 +156,34 @@ TEST(Fxbench, PerPassFragmentsAddUpAndShowTheCompositesDiscards) {
     EXPECT_EQ(modeNode(run, "soft")["passes_fragments"].size(), 1u);  // chase.particles alone
 }
 
+// Where the context counts fragment shader invocations (llvmpipe does), every particle pass has
+// them, never fewer than the samples it wrote, and the composite's show its early outs: it shades
+// every pixel of its tiles and writes only those with smoke.
+TEST(Fxbench, PerPassShadedFragmentsHoldEveryWrittenSampleAndTheCompositesDiscards) {
+    const YAML::Node& run = tinyRun("standard");
+    const bool llvmpipe = run["renderer"].as<std::string>().find("llvmpipe") != std::string::npos;
+    for (const char* name : {"hard", "soft", "spherical", "soft+quarter-always", "spherical+quarter"}) {
+        SCOPED_TRACE(name);
+        const YAML::Node m = modeNode(run, name);
+        const YAML::Node shaded = m["passes_shaded"];
+        ASSERT_TRUE(shaded.IsMap());
+        if (shaded.size() == 0) {
+            EXPECT_FALSE(llvmpipe) << "llvmpipe lists ARB_pipeline_statistics_query";
+            continue;
+        }
+        EXPECT_EQ(shaded.size(), m["passes_fragments"].size());
+        for (const auto& kv : m["passes_fragments"]) {
+            const std::string pass = kv.first.as<std::string>();
+            ASSERT_TRUE(shaded[pass]) << pass;
+            EXPECT_GE(finite(shaded[pass], "passes_shaded." + pass), kv.second.as<double>()) << pass;
+        }
+    }
+    const YAML::Node q = modeNode(run, "soft+quarter-always");
+    if (q["passes_shaded"].size() == 0) return;
+    EXPECT_GT(q["passes_shaded"]["chase.particles_composite"].as<double>(),
+              1.5 * q["passes_fragments"]["chase.particles_composite"].as<double>());
+}
+
 TEST(Fxbench, ParticleModesDrawParticlesInTheStandardScenario) {
     // The positive control for the "no particle pass" checks.
     const YAML::Node& run = tinyRun("standard");

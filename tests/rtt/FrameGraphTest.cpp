@@ -535,6 +535,58 @@ TEST_F(FrameGraphTest, ExecuteRestoresFramebufferAndViewportAfterEachPass) {
 }
 
 // 10,000 frames of a small graph rebuilt every frame, with a view resize every 1,000: the pool
+
+// With counting on, each pass reports the samples it wrote and, where the context has
+// ARB_pipeline_statistics_query, the fragments it shaded: a quad over a 64 x 64 target whose
+// shader discards the left half writes 32 x 64 samples and shades at least every pixel. A pass
+// that draws nothing counts 0 of both; with counting off, both are -1.
+TEST_F(FrameGraphTest, CountsTheSamplesEachPassWroteAndTheFragmentsItShaded) {
+    static constexpr const char* kFsDiscardLeft = R"(#version 330 core
+layout(location = 0) out vec4 o0;
+void main() {
+    if (gl_FragCoord.x < 32.0) discard;
+    o0 = vec4(1.0);
+}
+)";
+    TestProgram prog(testutil::kVsQuad, kFsDiscardLeft);
+    for (const bool counting : {true, false}) {
+        SCOPED_TRACE(counting ? "counting" : "not counting");
+        graph().reset();
+        pool().beginFrame();
+        auto t = graph().create("t", fixed(64, 64));
+        graph().addPass("half", 0, {}, {t}, [&](PassContext& ctx) {
+            ctx.bindForDraw(t);
+            prog.drawQuad();
+        });
+        graph().addPass("nothing", 1, {t}, {t}, [&](PassContext& ctx) { ctx.bindForDraw(t); });
+        graph().addPass("present", 2, {t}, {}, [](PassContext&) {}, true);
+        graph().setCountFragments(counting);
+        ASSERT_TRUE(graph().compile());
+        ASSERT_TRUE(graph().execute());
+        graph().setCountFragments(false);
+        pool().endFrame();
+        const std::vector<PassTiming>& timings = graph().report().timings;
+        ASSERT_EQ(timings.size(), 3u);
+        ASSERT_EQ(timings[0].name, "half");
+        ASSERT_EQ(timings[1].name, "nothing");
+        if (!counting) {
+            for (const PassTiming& p : timings) {
+                EXPECT_EQ(p.fragments, -1);
+                EXPECT_EQ(p.shaded, -1);
+            }
+            continue;
+        }
+        EXPECT_EQ(timings[0].fragments, 32 * 64);
+        EXPECT_EQ(timings[1].fragments, 0);
+        if (!GLAD_GL_ARB_pipeline_statistics_query) {
+            EXPECT_EQ(timings[0].shaded, -1);
+            continue;
+        }
+        EXPECT_GE(timings[0].shaded, 64 * 64);  // the discarded half was shaded too
+        EXPECT_EQ(timings[1].shaded, 0);
+    }
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
 // must keep the number of live GL objects flat and create nothing after the first frame.
 TEST_F(FrameGraphTest, TenThousandFramesKeepGlObjectCountsFlat) {
     uint32_t maxTexture = 0, maxFramebuffer = 0;
