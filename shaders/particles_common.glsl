@@ -143,9 +143,16 @@ float nearFadeFactor(float depth) {
 // depth texture is particles_scene_depth.glsl's (both offsets 0 for a view at (0, 0) of its own).
 // uDepthUv: (texel of the view's pixel (0, 0) - uDrawOrigin, 1) / the texture's size, set once per
 // draw (SceneDepthSource.cpp), so a fragment pays one multiply-add for its coordinate.
+// FX_HALF_RES_DEPTH (the quarter-res draws, ProgramCache::Key::halfRes): the texture is the
+// plugin's own half-res depth, linear metres already made safe by the downsample (which decoded
+// it with linearSceneDepth), so it is read as it is: no division, no range check.
 uniform vec4 uDepthUv;
 float sceneDepthAt(vec2 fragCoord) {
+#ifdef FX_HALF_RES_DEPTH
+    return textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r;
+#else
     return linearSceneDepth(textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r);
+#endif
 }
 
 // Premultiplied output. `ramp`: the ramp colour (straight alpha); `fade`: the particle's

@@ -100,14 +100,20 @@ void ParticleRenderer::bindPassPrograms() {
 }
 
 
-bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps) {
+bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps, bool quarterRes) {
     const bool ready = ensureLoaded();
     if (ready) {
         // The soft programs of the contrast powers the loaded reactions draw with, now rather
-        // than at their first visible particle (each key is tried once: reported once).
+        // than at their first visible particle (each key is tried once: reported once); with
+        // quarter res on, the quarter-res builds too.
         GlStateGuard guard;
         std::vector<ProgramCache::Key> keys;
-        for (int s : powerSteps) ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), false, &keys);
+        if (quarterRes) keys = ProgramCache::halfResKeys();
+        for (int s : powerSteps) {
+            for (bool half : {false, true}) {
+                if (!half || quarterRes) ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), half, &keys);
+            }
+        }
         std::vector<std::string> errors;
         draw_.programs().build(keys, &errors);
         // A power's build fails for the cause that failed the soft programs above: not told twice.

@@ -76,11 +76,12 @@ public:
 
     /// Loads GL resources now (Plugin::prepareGl) and builds every program the options can reach
     /// (ProgramCache::techniqueKeys) and the soft programs of the contrast powers in `powerSteps`
-    /// (2 contrast_power each: those the loaded reactions draw with). Called again after options
+    /// (2 contrast_power each: those the loaded reactions draw with); with `quarterRes` also their
+    /// quarter-res builds (ProgramCache::halfResKeys and the powers'). Called again after options
     /// or reactions change, it builds only what is missing. True when everything built; otherwise false with
     /// every problem appended to `out` (the technique that did build still draws). Each distinct
     /// "file:line: message" is logged once.
-    bool prepare(Diagnostics* out, const std::vector<int>& powerSteps = {});
+    bool prepare(Diagnostics* out, const std::vector<int>& powerSteps = {}, bool quarterRes = false);
 
     /// A shader reload (Renderers::reload, one transaction over every renderer): true, once per
     /// edit, when Config::shaderDir is set, the renderer is loaded and a plugin shader file there

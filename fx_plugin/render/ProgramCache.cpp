@@ -21,7 +21,7 @@ struct Source {
 // ProgramCache::Program (from DepthDownsample on).
 constexpr Source kSources[ProgramCache::VariantCount + ProgramCache::ProgramCount - 1] = {
     {"vs_particles.glsl", "fs_particles_hard.glsl", ""},
-    {"vs_particles.glsl", "fs_particles_hard.glsl", "#define FX_LINEAR_DEPTH_TEST 1\n"},
+    {"vs_particles.glsl", "fs_particles_hard.glsl", "#define FX_LINEAR_DEPTH_TEST 1\n#define FX_HALF_RES_DEPTH 1\n"},
     {"vs_particles.glsl", "fs_particles_soft.glsl", ""},
     {"vs_particles.glsl", "fs_particles_spherical.glsl", "#define FX_SPHERICAL 1\n"},
     {"vs_particles.glsl", "fs_particles_soft.glsl", "#define FX_GENERAL_POWER 1\n"},
@@ -95,7 +95,8 @@ const ParticleProgram kNone{};
 }  // namespace
 
 uint32_t ProgramCache::Key::bits() const {
-    return uint32_t(variant) | (lit ? 1u << 3 : 0u) | (uint32_t(powerSteps + 1) << 4) | (uint32_t(program) << 10);
+    return uint32_t(variant) | (lit ? 1u << 3 : 0u) | (uint32_t(powerSteps + 1) << 4) | (uint32_t(program) << 10) |
+           (halfRes ? 1u << 14 : 0u);
 }
 
 std::string ProgramCache::Key::defines() const {
@@ -107,6 +108,7 @@ std::string ProgramCache::Key::defines() const {
                          program == MegaComposite;
     if (gathers && FXGLAD_GL_ARB_texture_gather) d += "#extension GL_ARB_texture_gather : require\n#define FX_GATHER 1\n";
     d += sourceOf(*this).defines;
+    if (halfRes) d += "#define FX_HALF_RES_DEPTH 1\n";
     if (powerSteps >= 0) d += "#define FX_POWER_STEPS " + std::to_string(powerSteps) + "\n";
     if (lit) d += "#define FX_LIT 1\n";
     return d;
@@ -173,12 +175,25 @@ ProgramCache::Key ProgramCache::drawKey(Technique technique, bool quarterRes, fl
     const Variant v = variantFor(technique, quarterRes, contrastPower);
     int whole = 0, half = 0;
     const int steps = v == Soft && halfWholePower(contrastPower, &whole, &half) ? 2 * whole + half : -1;
-    return Key{v, lit, steps};
+    Key key{v, lit, steps};
+    key.halfRes = quarterRes && v != HardLinearDepth;  // that variant is half-res by its defines
+    return key;
 }
 
 ProgramCache::Key ProgramCache::filter(Key wanted) const {
-    if (wanted.lit && !find(Key{wanted.variant, true, -1})) wanted.lit = false;
-    const Key general{wanted.variant, wanted.lit, -1};
+    if (wanted.halfRes) {
+        Key general{wanted.variant, false, -1};
+        general.halfRes = true;
+        // The full-res build reads the half-res depth correctly too (through an identity decode).
+        if (!find(general)) wanted.halfRes = false;
+    }
+    if (wanted.lit) {
+        Key lit{wanted.variant, true, -1};
+        lit.halfRes = wanted.halfRes;
+        if (!find(lit)) wanted.lit = false;
+    }
+    Key general{wanted.variant, wanted.lit, -1};
+    general.halfRes = wanted.halfRes;
     // A power's own build stands in for nothing when the variant's general one is missing.
     if (wanted.powerSteps < 0 || !find(general) || !find(wanted)) return general;
     return wanted;
@@ -188,6 +203,18 @@ std::vector<ProgramCache::Key> ProgramCache::techniqueKeys() {
     std::vector<Key> keys;
     for (bool lit : {false, true}) {
         for (int v = 0; v < VariantCount; ++v) keys.push_back(Key{Variant(v), lit, -1});
+    }
+    return keys;
+}
+
+std::vector<ProgramCache::Key> ProgramCache::halfResKeys() {
+    std::vector<Key> keys;
+    for (bool lit : {false, true}) {
+        for (Variant v : {Soft, SoftGeneralPower, Spherical}) {
+            Key k{v, lit, -1};
+            k.halfRes = true;
+            keys.push_back(k);
+        }
     }
     return keys;
 }
@@ -207,7 +234,9 @@ std::vector<ProgramCache::Key> ProgramCache::megaKeys() {
 void ProgramCache::addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys) {
     for (bool lit : {false, true}) {
         const Key key = drawKey(technique, quarterRes, contrastPower, lit);
-        addOnce(Key{key.variant, lit, -1}, keys);
+        Key general{key.variant, lit, -1};
+        general.halfRes = key.halfRes;
+        addOnce(general, keys);
         if (key.powerSteps >= 0) addOnce(key, keys);
     }
 }

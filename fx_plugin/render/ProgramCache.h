@@ -16,9 +16,13 @@
 //   lit              FX_LIT: particles_common.glsl's smokeLight, for reactions under a scene light
 //   power            FX_POWER_STEPS = 2 contrast_power: Soft with the curve's multiplies folded
 //                    (power 1 draws no curve at all); -1 = no power folded
+//   halfRes          FX_HALF_RES_DEPTH: Soft, SoftGeneralPower and Spherical drawn at quarter res,
+//                    reading the plugin's half-res linear depth as it is (no decode); HardLinearDepth
+//                    is quarter res only and always reads it so
 // Key::bits() packs them with the program; nothing else names a program. The resolution path is in the variant
-// (quarter res draws HardLinearDepth for hard); the depth convention is no variant: the programs
-// read linear depth, and reversed-Z changes only the depth function the pass sets.
+// (quarter res draws HardLinearDepth for hard) and halfRes; the depth convention is no variant: the
+// programs decode the depth the pass hands them, and reversed-Z changes only the depth function the
+// pass sets.
 //
 // Contract:
 //  - build(keys) is the only call that compiles. It runs from prepareGl and a shader reload (and,
@@ -29,10 +33,12 @@
 //  - Every build of one cache reads the one snapshot it was made with (ShaderLoader.h): a
 //    variant built later is built from the files that went live, never a later broken edit.
 //  - A draw asks for drawKey() of its batch, filtered to the programs that exist (filter(), after
-//    Filament's filterVariant): unlit where the variant's lit build is missing, the variant's
-//    general build where the power's own is missing; no key where the variant itself did not
-//    build: its technique is not drawn (usableTechniques), the others still are. The fallback
-//    lives there alone; find() of the filtered key is the program.
+//    Filament's filterVariant): the full-res build where the halfRes one is missing (it reads the
+//    half-res depth through the decode, which the quarter-res pass sets to the identity), unlit
+//    where the variant's lit build is missing, the variant's general build where the power's own is
+//    missing; no key where the variant itself did not build: its technique is not drawn
+//    (usableTechniques), the others still are. The fallback lives there alone; find() of the
+//    filtered key is the program.
 //  - A pass program's uniforms are its user's (QuarterResPrograms, SmokeOpacityMap,
 //    DepthLinearizer, MegaPrograms, StatelessRenderer: bind), looked up on passProgram() once per
 //    build; a billboard's are looked up here once per build.
@@ -95,13 +101,14 @@ public:
         bool lit = false;
         int powerSteps = -1;  ///< 2 contrast_power, 0 .. kMaxPowerSteps; -1: none (Soft only)
         Program program = Billboard;
+        bool halfRes = false;  ///< drawn at quarter res, on the plugin's half-res depth (not HardLinearDepth)
         /// The key of a pass's fixed program.
         static Key of(Program p) {
             Key k;
             k.program = p;
             return k;
         }
-        /// variant in bits 0-2, lit 3, powerSteps + 1 in 4-9, program in 10-13.
+        /// variant in bits 0-2, lit 3, powerSteps + 1 in 4-9, program in 10-13, halfRes 14.
         uint32_t bits() const;
         /// The #defines that select this variant (prepended to each stage).
         std::string defines() const;
@@ -150,6 +157,8 @@ public:
     /// Every variant, lit and unlit: what prepareGl always builds (a technique whose general
     /// program fails is not drawn; the run-time override can pick any of them).
     static std::vector<Key> techniqueKeys();
+    /// The general halfRes builds, lit and unlit: what prepareGl adds while quarter res is on.
+    static std::vector<Key> halfResKeys();
     /// The billboard renderer's fixed programs (the quarter-res passes', the opacity map's): what
     /// its loading builds with techniqueKeys (a failed one turns its pass off: quarter res draws
     /// at full res, lit smoke goes without self-shadowing). The lineariser's is the immediate

@@ -129,7 +129,8 @@ TEST_F(ProgramCacheTest, NoFrameCompilesAcrossOptionSwitchesWhenTheHostPreparesA
         // The soft override reaches the contrast powers of reactions drawn hard or spherical so far.
         {"soft override", [&] { o.techniqueOverride = fx::Technique::Soft; plugin->setRenderOptions(o); }, false},
         {"mega override", [&] { o.techniqueOverride = fx::Technique::Mega; plugin->setRenderOptions(o); }, true},
-        {"quarter res", [&] { o = fx::RenderOptions{}; o.quarterRes = true; plugin->setRenderOptions(o); }, false},
+        // Quarter res reaches the quarter-res builds (ProgramCache::halfResKeys).
+        {"quarter res", [&] { o = fx::RenderOptions{}; o.quarterRes = true; plugin->setRenderOptions(o); }, true},
         {"bilinear upsample", [&] { o.bilinearUpsample = true; plugin->setRenderOptions(o); }, false},
         {"full res, quads", [&] {
              o = fx::RenderOptions{};

@@ -281,6 +281,65 @@ TEST_F(ShaderLoaderTest, SoftProgramsForOnePowerAreKeysOfTheCache) {
     EXPECT_EQ(std::unique(bits.begin(), bits.end()), bits.end());
 }
 
+// Quarter-res draws ask for builds of their own (Key::halfRes: the half-res depth read without the
+// decode), powers included; where such a build is missing the full-res one stands in (it reads the
+// half-res depth through the identity decode the quarter-res pass sets). Hard at quarter res is
+// its own variant, half-res by its defines.
+TEST_F(ShaderLoaderTest, QuarterResDrawsTakeTheirHalfResBuildsOrTheFullResOnes) {
+    using Cache = fx::ProgramCache;
+    Cache programs(fx::snapshotShaderReader(fx::shaderReader(kShaders)));
+    std::vector<std::string> errors;
+    ASSERT_EQ(programs.build(Cache::techniqueKeys(), &errors), 2 * Cache::VariantCount);
+    ASSERT_TRUE(errors.empty()) << errors.front();
+
+    const Cache::Key soft = Cache::drawKey(fx::Technique::Soft, true, 2.0f, false);
+    EXPECT_TRUE(soft.halfRes);
+    EXPECT_NE(soft.bits(), Cache::drawKey(fx::Technique::Soft, false, 2.0f, false).bits());
+    const Cache::Key hard = Cache::drawKey(fx::Technique::Hard, true, 1.0f, false);
+    EXPECT_EQ(hard.variant, Cache::HardLinearDepth);
+    EXPECT_FALSE(hard.halfRes);
+    EXPECT_NE(Cache::Key{Cache::HardLinearDepth}.defines().find("FX_HALF_RES_DEPTH"), std::string::npos);
+    EXPECT_NE(soft.defines().find("FX_HALF_RES_DEPTH"), std::string::npos);
+    EXPECT_EQ(Cache::drawKey(fx::Technique::Soft, false, 2.0f, false).defines().find("FX_HALF_RES_DEPTH"),
+              std::string::npos);
+
+    // Nothing half-res built yet: the full-res general builds stand in.
+    for (fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical}) {
+        for (bool lit : {false, true}) {
+            const Cache::Key wanted = Cache::drawKey(t, true, 2.0f, lit);
+            const Cache::Key got = programs.filter(wanted);
+            EXPECT_FALSE(got.halfRes);
+            EXPECT_EQ(got.lit, lit);
+            ASSERT_NE(programs.find(got), nullptr);
+            EXPECT_EQ(programs.find(got)->program, programs.get(got.variant, lit).program);
+        }
+    }
+
+    // What prepareGl builds while quarter res is on, and a power's: then each draw has its own.
+    std::vector<Cache::Key> keys = Cache::halfResKeys();
+    EXPECT_EQ(keys.size(), 6u);  // Soft, SoftGeneralPower, Spherical; lit and unlit
+    Cache::addDrawKeys(fx::Technique::Soft, 2.0f, true, &keys);
+    EXPECT_EQ(keys.size(), 8u);  // the power's own two
+    EXPECT_EQ(programs.build(keys, &errors), 8);
+    ASSERT_TRUE(errors.empty()) << errors.front();
+    for (fx::Technique t : {fx::Technique::Soft, fx::Technique::Spherical}) {
+        for (bool lit : {false, true}) {
+            const Cache::Key got = programs.filter(Cache::drawKey(t, true, 2.0f, lit));
+            EXPECT_TRUE(got.halfRes);
+            EXPECT_EQ(got.lit, lit);
+            ASSERT_NE(programs.find(got), nullptr);
+            EXPECT_NE(programs.find(got)->program, programs.get(got.variant, lit).program);
+        }
+    }
+    EXPECT_EQ(programs.filter(soft).powerSteps, 4);  // the power's own half-res build
+    // The general power at quarter res: its half-res build.
+    const Cache::Key general = programs.filter(Cache::drawKey(fx::Technique::Soft, true, 1.3f, false));
+    EXPECT_EQ(general.variant, Cache::SoftGeneralPower);
+    EXPECT_TRUE(general.halfRes);
+    // A full-res draw never takes a half-res build.
+    EXPECT_FALSE(programs.filter(Cache::drawKey(fx::Technique::Soft, false, 2.0f, false)).halfRes);
+}
+
 // Puffs sunk into the ground, 0.3 .. 1.1 m in front of a wall that ends 2.2 m up, sky above it
 // (reversed-Z): the ground fades their lower halves gradually, the wall each one by its own
 // amount, and their tops stand against the sky.
