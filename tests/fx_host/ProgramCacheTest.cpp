@@ -176,6 +176,27 @@ TEST_F(ProgramCacheTest, NoFrameCompilesAcrossHotReloads) {
     EXPECT_TRUE(host.errors().empty()) << host.errors().front();
 }
 
+// Quarter res draws with builds of its own (ProgramCache::Key::halfRes): prepareGl builds them,
+// a shader reload rebuilds them with every other key, and no frame compiles either time.
+TEST_F(ProgramCacheTest, AShaderReloadRebuildsTheQuarterResProgramsAndNoFrameCompiles) {
+    const uint64_t passBuildsBefore = fx::programBuildCounts().inPass;
+    fx::RenderOptions o;
+    o.quarterRes = true;
+    o.quarterResAlways = true;
+    plugin->setRenderOptions(o);
+    EXPECT_GT(prepareThenDraw("quarter res"), 0u);
+    ASSERT_GT(drawn, 0);
+    ASSERT_TRUE(graph.ran("particles_quarter"));
+    ASSERT_NO_FATAL_FAILURE(editAndReloadShader("particles_common.glsl"));
+    const int drawnBefore = drawn;
+    EXPECT_EQ(frames(), 0u) << "after the shader reload";
+    EXPECT_GT(drawn, drawnBefore) << "nothing drawn after the reload";
+    EXPECT_TRUE(graph.ran("particles_quarter"));
+    EXPECT_EQ(prepareThenDraw("after the shader reload"), 0u) << "the reload built every key the old cache had";
+    EXPECT_EQ(fx::programBuildCounts().inPass, passBuildsBefore);
+    EXPECT_TRUE(host.errors().empty()) << host.errors().front();
+}
+
 // The mega and stateless programs are keys of the same cache: an edit to a mega file rebuilds
 // them with every other key in one swap, the renderers take the new builds (a stale program would
 // raise a GL error, which the fixture checks), and no frame compiles.
