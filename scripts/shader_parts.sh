@@ -2,27 +2,34 @@
 # What each part of the particle shaders costs: fxbench over the same frames with the shaders as
 # they are, then with copies that each leave one part out (read through CUBE_SHADER_DIR), and the
 # per-pass times side by side. The pictures of the copies are wrong on purpose (but for
-# discard-empty's, which only tries a cheaper way to the same one); only their times mean something. A measurement aid, made for a GPU session's few minutes: one command answers
-# where soft's and spherical's extra time per fragment and the composite's time go.
-#   scripts/shader_parts.sh [fxbench options...]            (here: llvmpipe through OSMesa)
-#   FXBENCH="bash .gpu/run-egl.sh fxbench" scripts/shader_parts.sh --backend egl --size 1920x1080
-# Default options: the standard scene, 8 frames, 2 rounds, no error frames. Runs alternate
-# variant by variant, twice; the table gives each pass's two medians.
-#   scripts/shader_parts.sh --check    only checks that every part is still where it is looked for
+# discard-empty's, which only tries a cheaper way to the same one); only their times mean something.
+# A measurement aid, made for a GPU session's few minutes: one command answers where soft's and
+# spherical's extra time per fragment and the composite's time go.
+#   scripts/shader_parts.sh [fxbench options...]      the three steps below, here (llvmpipe)
+#   scripts/shader_parts.sh --check                   only checks that every part is still found
+# In steps, for a machine that may have no python3 (the GPU machine: scripts/gpu_check.sh):
+#   scripts/shader_parts.sh --prepare DIR             1. the copies, into DIR (python3)
+#   scripts/shader_parts.sh --run DIR OUT [options]   2. fxbench over them, JSON into OUT (bash)
+#   scripts/shader_parts.sh --table OUT               3. the table (python3)
+# fxbench is $FXBENCH (default ./build/bin/fxbench; on the GPU machine
+# FXBENCH="bash .gpu/run-egl.sh fxbench", with --backend egl --size 1920x1080). Default options:
+# the standard scene, 8 frames, 2 rounds, no error frames. Runs alternate variant by variant,
+# twice; the table gives each pass's two medians.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 
+# Step 1: each variant a copy of shaders/ in $1/<variant>; their names in $1/variants.
 # Each variant: (file, text that must be there exactly once, replacement).
-python3 - "$work" <<'EOF'
+prepare() {
+    python3 - "$1" <<'PY'
 import pathlib, shutil, sys
 work = pathlib.Path(sys.argv[1])
 variants = {
     # Soft without its fade: the scene-depth fetch, its decode and the contrast curve gone.
     "soft-no-fade": [("fs_particles_soft.glsl", "float fade = softFade(sceneDepthAt(gl_FragCoord.xy), depth);",
                       "float fade = 1.0;")],
-    # Every particle shader's scene depth read without its decode (the division).
+    # The full-res particle shaders' scene depth read without its decode (the division; the
+    # quarter-res builds read theirs without one already: FX_HALF_RES_DEPTH).
     "no-depth-decode": [("particles_common.glsl",
                          "return linearSceneDepth(textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r);",
                          "return textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r * 1000.0;")],
@@ -54,33 +61,49 @@ for name, changes in variants.items():
             sys.exit(f"shader_parts.sh: {file}: expected exactly one '{old}'")
         path.write_text(text.replace(old, new))
 (work / "variants").write_text("\n".join(variants) + "\n")
-EOF
-if [ "${1:-}" = "--check" ]; then
-    echo "shader_parts.sh: every part found ($(tr '\n' ' ' < "$work/variants"))"
-    exit 0
-fi
+PY
+}
 
-read -r -a fxbench <<< "${FXBENCH:-./build/bin/fxbench}"
-[ "${fxbench[0]}" != ./build/bin/fxbench ] || [ -x ./build/bin/fxbench ] ||
-    { echo "shader_parts.sh: build first (./run.sh or cmake --build build)" >&2; exit 1; }
-args=("$@")
-[ ${#args[@]} -gt 0 ] || args=(--frames 8 --rounds 2)
-mapfile -t variants < "$work/variants"
-for round in 1 2; do
-    for variant in now "${variants[@]}"; do
-        # An empty CUBE_SHADER_DIR means the shaders built into fxbench (engine_stub/gl/Paths.cpp).
-        shaderDir=""
-        [ "$variant" = now ] || shaderDir="$work/$variant"
-        CUBE_SHADER_DIR="$shaderDir" "${fxbench[@]}" --modes hard,soft,spherical,soft+quarter-always \
-            --error-frames 0 "${args[@]}" --json "$work/$variant.$round.json" >/dev/null
+# Step 2 (bash only): fxbench with its built-in shaders ("now") and with each copy in $1, twice,
+# alternating; into $2/<variant>.<round>.json. The rest: fxbench options.
+run() {
+    local parts=$1 out=$2
+    shift 2
+    [ -f "$parts/variants" ] || { echo "shader_parts.sh: no $parts/variants (--prepare first)" >&2; exit 1; }
+    local fxbench
+    read -r -a fxbench <<< "${FXBENCH:-./build/bin/fxbench}"
+    [ "${fxbench[0]}" != ./build/bin/fxbench ] || [ -x ./build/bin/fxbench ] ||
+        { echo "shader_parts.sh: build first (./run.sh or cmake --build build)" >&2; exit 1; }
+    local args=("$@")
+    [ ${#args[@]} -gt 0 ] || args=(--frames 8 --rounds 2)
+    mkdir -p "$out"
+    cp "$parts/variants" "$out/variants"
+    local variants round variant shaderDir
+    mapfile -t variants < "$parts/variants"
+    for round in 1 2; do
+        for variant in now "${variants[@]}"; do
+            # An empty CUBE_SHADER_DIR means the shaders built into fxbench (engine_stub/gl/Paths.cpp).
+            shaderDir=""
+            [ "$variant" = now ] || shaderDir=$(cd "$parts/$variant" && pwd)
+            CUBE_SHADER_DIR="$shaderDir" "${fxbench[@]}" --modes hard,soft,spherical,soft+quarter-always \
+                --error-frames 0 "${args[@]}" --json "$out/$variant.$round.json" >/dev/null
+        done
     done
-done
+}
 
-python3 - "$work" now "${variants[@]}" <<'EOF'
+# Step 3: the table of the runs in $1.
+table() {
+    local variants
+    mapfile -t variants < "$1/variants"
+    python3 - "$1" now "${variants[@]}" <<'PY'
 import json, sys
 work, variants = sys.argv[1], sys.argv[2:]
-def passes(variant, round):
-    run = json.load(open(f"{work}/{variant}.{round}.json"))
+import os
+def passes(variant, round):  # a run cut short (a device call's time limit) is left out: "-"
+    path = f"{work}/{variant}.{round}.json"
+    if not os.path.exists(path):
+        return {}
+    run = json.load(open(path))
     return {(m["name"], p): ms for m in run["modes"] for p, ms in m["passes_ms"].items() if "particles" in p}
 runs = {v: [passes(v, 1), passes(v, 2)] for v in variants}
 rows = list(runs["now"][0])
@@ -93,4 +116,22 @@ for mode, p in rows:
         a, b = (r.get((mode, p)) for r in runs[v])
         cells.append("-" if a is None or b is None else f"{a:.3f}, {b:.3f}")
     print(f"| {mode} | {p} | " + " | ".join(cells) + " |")
-EOF
+PY
+}
+
+case "${1:-}" in
+    --check)
+        work=$(mktemp -d)
+        trap 'rm -rf "$work"' EXIT
+        prepare "$work"
+        echo "shader_parts.sh: every part found ($(tr '\n' ' ' < "$work/variants"))" ;;
+    --prepare) prepare "${2:?--prepare DIR}" ;;
+    --run) run "${2:?--run DIR OUT}" "${3:?--run DIR OUT}" "${@:4}" ;;
+    --table) table "${2:?--table OUT}" ;;
+    *)
+        work=$(mktemp -d)
+        trap 'rm -rf "$work"' EXIT
+        prepare "$work/parts"
+        run "$work/parts" "$work/out" "$@"
+        table "$work/out" ;;
+esac

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# A session's whole GPU check in one device call (about three and a half minutes of device time on
+# an H200: ../shared/gpu/run-all.sh's tables, then scripts/shader_parts.sh's runs), so a lent
+# machine's fifteen minutes hold it with room for a rerun. It needs no python3 there.
+# Here, after a build:
+#   ../shared/gpu/pack.sh && scripts/shader_parts.sh --prepare .gpu/parts
+# The device call, with .gpu carried along:
+#   bash scripts/gpu_check.sh
+# Into $OUT: run-all.sh's data.tgz and img.tgz.* (standard, fill, overdraw, 4K, the particle sweep,
+# the drive through both depth paths) and parts.tgz (shader_parts.sh's runs and their log). Back
+# here: tar xzf parts.tgz -C /tmp && scripts/shader_parts.sh --table /tmp/parts
+set -u
+cd "$(dirname "$0")/.."
+out=${OUT:-/tmp/gpu-out}
+mkdir -p "$out"
+if [ ! -f .gpu/run-all.sh ] || [ ! -f .gpu/parts/variants ]; then
+    echo "gpu_check.sh: pack first: ../shared/gpu/pack.sh && scripts/shader_parts.sh --prepare .gpu/parts" >&2
+    exit 1
+fi
+bash .gpu/run-all.sh
+s=$(date +%s)
+FXBENCH="bash .gpu/run-egl.sh fxbench" timeout 300 bash scripts/shader_parts.sh --run .gpu/parts "$out/parts" \
+    --backend egl --size 1920x1080 > "$out/parts.log" 2>&1
+echo "shader_parts rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+tar czf "$out/parts.tgz" -C "$out" parts parts.log && rm -rf "$out/parts" "$out/parts.log"
+ls -la "$out"
