@@ -143,7 +143,9 @@ public:
     virtual ErrorCode setRenderOptions(const RenderOptions& options) = 0;
     virtual RenderOptions renderOptions() const = 0;
 
-    /// Compiles and links every particle program and uploads the atlas now. Needs the host's GL
+    /// Compiles and links every particle program the render options and the loaded reactions can
+    /// draw with (quarter res has programs of its own: call it again after switching options) and
+    /// uploads the atlas now. Needs the host's GL
     /// context current. Returns false with ShaderBuild ("file:line: message"), ResourceMissing or
     /// NoGlContext diagnostics in `out` (also logged); the plugin then draws what did build.
     /// Without this call the same work happens at the first declarePasses() that sees a
