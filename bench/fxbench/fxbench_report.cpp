@@ -43,16 +43,18 @@ std::string fmt(const char* f, double v) {
 
 std::string psnrText(double db) { return db >= kPsnrCapDb ? "cap (identical)" : fmt("%.1f", db); }
 
-// A table of one count per particle pass (rows) and mode (columns), when any mode has one.
-using PassCounts = std::vector<std::pair<std::string, double>>;
-void perPassCounts(const Report& r, PassCounts ModeSummary::*counts, const char* title, std::string* out) {
+// A table of one figure per pass (rows) and mode (columns), each printed with `format`; nothing
+// when no mode has one.
+using PassFigures = std::vector<std::pair<std::string, double>>;
+void perPassTable(const Report& r, PassFigures ModeSummary::*figures, const std::string& title, const char* format,
+                  std::string* out) {
     std::vector<std::string> passes;
     for (const ModeSummary& m : r.modes)
-        for (const auto& p : m.*counts)
+        for (const auto& p : m.*figures)
             if (std::find(passes.begin(), passes.end(), p.first) == passes.end()) passes.push_back(p.first);
     if (passes.empty()) return;
     std::string& o = *out;
-    o += std::string("\n") + title + "\n\n| pass |";
+    o += "\n" + title + "\n\n| pass |";
     for (const ModeSummary& m : r.modes) o += " " + m.name + " |";
     o += "\n|---|";
     for (size_t i = 0; i < r.modes.size(); ++i) o += "---:|";
@@ -61,8 +63,8 @@ void perPassCounts(const Report& r, PassCounts ModeSummary::*counts, const char*
         o += "| " + p + " |";
         for (const ModeSummary& m : r.modes) {
             std::string cell = " - |";
-            for (const auto& q : m.*counts)
-                if (q.first == p) cell = " " + fmt("%.0f", q.second) + " |";
+            for (const auto& q : m.*figures)
+                if (q.first == p) cell = " " + fmt(format, q.second) + " |";
             o += cell;
         }
         o += "\n";
@@ -124,36 +126,19 @@ std::string markdownReport(const Report& r) {
     }
 
     // Per-pass medians: one column per mode.
-    std::vector<std::string> passNames;
-    for (const ModeSummary& m : r.modes)
-        for (const auto& p : m.passes)
-            if (std::find(passNames.begin(), passNames.end(), p.first) == passNames.end()) passNames.push_back(p.first);
-    if (!passNames.empty()) {
-        o += "\nPer-pass median ms (" + r.timingMethod + "); '-' = pass not run in that mode\n\n| pass |";
-        for (const ModeSummary& m : r.modes) o += " " + m.name + " |";
-        o += "\n|---|";
-        for (size_t i = 0; i < r.modes.size(); ++i) o += "---:|";
-        o += "\n";
-        for (const std::string& p : passNames) {
-            o += "| " + p + " |";
-            for (const ModeSummary& m : r.modes) {
-                std::string cell = " - |";
-                for (const auto& q : m.passes)
-                    if (q.first == p) cell = " " + fmt("%.3f", q.second) + " |";
-                o += cell;
-            }
-            o += "\n";
-        }
-    }
+    perPassTable(r, &ModeSummary::passes, "Per-pass median ms (" + r.timingMethod + "); '-' = pass not run in that mode",
+                 "%.3f", &o);
 
     // Per particle pass, the samples it wrote: what a pass's time is paid for (a composite's
     // blended pixels, a downsample's half-res texels); then, where the context counts them, the
     // fragments it shaded (discarded ones included: a bound's waste, a composite's early outs).
-    perPassCounts(r, &ModeSummary::passFragments,
-                  "Per particle pass, samples written (GL_SAMPLES_PASSED, median over error frames); '-' = not run", &o);
-    perPassCounts(r, &ModeSummary::passShaded,
-                  "Per particle pass, fragments shaded (GL_FRAGMENT_SHADER_INVOCATIONS_ARB: discarded ones too; "
-                  "median over error frames); '-' = not run", &o);
+    perPassTable(r, &ModeSummary::passFragments,
+                 "Per particle pass, samples written (GL_SAMPLES_PASSED, median over error frames); '-' = not run",
+                 "%.0f", &o);
+    perPassTable(r, &ModeSummary::passShaded,
+                 "Per particle pass, fragments shaded (GL_FRAGMENT_SHADER_INVOCATIONS_ARB: discarded ones too; "
+                 "median over error frames); '-' = not run",
+                 "%.0f", &o);
 
     o += "\nParticle work vs the fill limit (trivial textured quad blended once over the covered pixels)\n\n"
          "| mode | particles drawn | coverage % | particle ms | particle fragments | fill-limit ms | ratio | vs nofx | "
