@@ -9,6 +9,16 @@
 #include "ViewFrustum.h"
 
 namespace fx {
+namespace {
+
+// One pixel of a target `height` pixels tall in ray slope (y/depth; square pixels): the spheres'
+// margin against the rasteriser's snapping, and with the atlas cell's texels the billboards' LOD
+// scale.
+float pixelSlopeOf(const glm::mat4& proj, float height) {
+    return 2.0f / std::fmax(std::fabs(proj[1][1]) * height, 1e-6f);
+}
+
+}  // namespace
 
 void ParticleDraw::create() {
     stream_.create();
@@ -28,9 +38,8 @@ BillboardReach ParticleDraw::billboardReach(const ParticleView& record, bool hal
     // may be a row taller or shorter: the reach table's neighbouring buckets cover that).
     const ViewInfo& view = record.view;
     const float height = float(std::max(view.height, 1)) * (halfRes ? 0.5f : 1.0f);
-    const float pixelSlope = 2.0f / std::fmax(std::fabs(view.proj[1][1]) * height, 1e-6f);
     BillboardReach r = reach_;
-    r.lodScale = float(atlas_.cellTexels()) * pixelSlope;
+    r.lodScale = float(atlas_.cellTexels()) * pixelSlopeOf(view.proj, height);
     return r;
 }
 
@@ -71,9 +80,7 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
     GLint viewport[4] = {0, 0, 1, 1};
     glGetIntegerv(GL_VIEWPORT, viewport);
     const bool trimmed = record.settings.shape == ParticleShape::Trimmed && !shapeTable_.empty();
-    // One pixel of the target in ray slope (y/depth; square pixels): the spheres' margin against
-    // the rasteriser's snapping, and with the atlas cell's texels the billboards' LOD scale.
-    const float pixelSlope = 2.0f / std::fmax(std::fabs(view.proj[1][1]) * float(std::max(viewport[3], 1)), 1e-6f);
+    const float pixelSlope = pixelSlopeOf(view.proj, float(std::max(viewport[3], 1)));
     const float lodScale = float(atlas_.cellTexels()) * pixelSlope;
     const ProgramCache& programs = *programs_;
     for (const DrawBatch& batch : list.batches) {

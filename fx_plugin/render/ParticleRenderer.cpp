@@ -110,9 +110,8 @@ bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSt
         std::vector<ProgramCache::Key> keys;
         if (quarterRes) keys = ProgramCache::halfResKeys();
         for (int s : powerSteps) {
-            for (bool half : {false, true}) {
-                if (!half || quarterRes) ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), half, &keys);
-            }
+            ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), false, &keys);
+            if (quarterRes) ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), true, &keys);
         }
         std::vector<std::string> errors;
         draw_.programs().build(keys, &errors);

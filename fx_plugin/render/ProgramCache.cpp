@@ -175,25 +175,15 @@ ProgramCache::Key ProgramCache::drawKey(Technique technique, bool quarterRes, fl
     const Variant v = variantFor(technique, quarterRes, contrastPower);
     int whole = 0, half = 0;
     const int steps = v == Soft && halfWholePower(contrastPower, &whole, &half) ? 2 * whole + half : -1;
-    Key key{v, lit, steps};
-    key.halfRes = quarterRes && v != HardLinearDepth;  // that variant is half-res by its defines
-    return key;
+    // HardLinearDepth is half-res by its defines.
+    return Key{v, lit, steps, Billboard, quarterRes && v != HardLinearDepth};
 }
 
 ProgramCache::Key ProgramCache::filter(Key wanted) const {
-    if (wanted.halfRes) {
-        Key general{wanted.variant, false, -1};
-        general.halfRes = true;
-        // The full-res build reads the half-res depth correctly too (through an identity decode).
-        if (!find(general)) wanted.halfRes = false;
-    }
-    if (wanted.lit) {
-        Key lit{wanted.variant, true, -1};
-        lit.halfRes = wanted.halfRes;
-        if (!find(lit)) wanted.lit = false;
-    }
-    Key general{wanted.variant, wanted.lit, -1};
-    general.halfRes = wanted.halfRes;
+    // The full-res build reads the half-res depth correctly too (through an identity decode).
+    if (wanted.halfRes && !find(Key{wanted.variant, false, -1, Billboard, true})) wanted.halfRes = false;
+    if (wanted.lit && !find(Key{wanted.variant, true, -1, Billboard, wanted.halfRes})) wanted.lit = false;
+    const Key general = wanted.general();
     // A power's own build stands in for nothing when the variant's general one is missing.
     if (wanted.powerSteps < 0 || !find(general) || !find(wanted)) return general;
     return wanted;
@@ -210,11 +200,7 @@ std::vector<ProgramCache::Key> ProgramCache::techniqueKeys() {
 std::vector<ProgramCache::Key> ProgramCache::halfResKeys() {
     std::vector<Key> keys;
     for (bool lit : {false, true}) {
-        for (Variant v : {Soft, SoftGeneralPower, Spherical}) {
-            Key k{v, lit, -1};
-            k.halfRes = true;
-            keys.push_back(k);
-        }
+        for (Variant v : {Soft, SoftGeneralPower, Spherical}) keys.push_back(Key{v, lit, -1, Billboard, true});
     }
     return keys;
 }
@@ -234,9 +220,7 @@ std::vector<ProgramCache::Key> ProgramCache::megaKeys() {
 void ProgramCache::addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys) {
     for (bool lit : {false, true}) {
         const Key key = drawKey(technique, quarterRes, contrastPower, lit);
-        Key general{key.variant, lit, -1};
-        general.halfRes = key.halfRes;
-        addOnce(general, keys);
+        addOnce(key.general(), keys);
         if (key.powerSteps >= 0) addOnce(key, keys);
     }
 }

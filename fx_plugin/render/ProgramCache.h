@@ -102,6 +102,8 @@ public:
         int powerSteps = -1;  ///< 2 contrast_power, 0 .. kMaxPowerSteps; -1: none (Soft only)
         Program program = Billboard;
         bool halfRes = false;  ///< drawn at quarter res, on the plugin's half-res depth (not HardLinearDepth)
+        /// This billboard key without its power: the variant's general build (lit, halfRes kept).
+        Key general() const { return Key{variant, lit, -1, Billboard, halfRes}; }
         /// The key of a pass's fixed program.
         static Key of(Program p) {
             Key k;
