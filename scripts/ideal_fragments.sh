@@ -14,8 +14,10 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 python3 - "$work" <<'EOF'
-import pathlib, shutil, sys
-work = pathlib.Path(sys.argv[1])
+import sys
+sys.dont_write_bytecode = True
+sys.path.insert(0, "scripts")
+from shader_copies import write_copies
 # (file, text that must be there, replacement): stop loudly when a shader no longer matches.
 edits = {
     "alpha": [
@@ -29,15 +31,7 @@ edits["visible"] = edits["alpha"] + [
     ("fs_particles_spherical.glsl", "    float coverage = texel.a * visible",
      "    if (visible <= 0.0) discard;\n    float coverage = texel.a * visible"),
 ]
-for name, changes in edits.items():
-    folder = work / name
-    shutil.copytree("shaders", folder)
-    for file, old, new in changes:
-        path = folder / file
-        text = path.read_text()
-        if text.count(old) != 1:
-            sys.exit(f"ideal_fragments.sh: {file}: expected exactly one '{old.strip()}'")
-        path.write_text(text.replace(old, new))
+write_copies(sys.argv[1], edits, "ideal_fragments.sh")
 EOF
 
 args=("$@")

@@ -22,7 +22,10 @@ cd "$(dirname "$0")/.."
 # Each variant: (file, text that must be there exactly once, replacement).
 prepare() {
     python3 - "$1" <<'PY'
-import pathlib, shutil, sys
+import pathlib, sys
+sys.dont_write_bytecode = True
+sys.path.insert(0, "scripts")
+from shader_copies import write_copies
 work = pathlib.Path(sys.argv[1])
 variants = {
     # Soft without its fade: the scene-depth fetch, its decode and the contrast curve gone.
@@ -51,15 +54,7 @@ variants = {
                        "    if (oColor == vec4(0.0)) discard;")
                       for f in ("fs_particles_hard.glsl", "fs_particles_soft.glsl")],
 }
-for name, changes in variants.items():
-    folder = work / name
-    shutil.copytree("shaders", folder)
-    for file, old, new in changes:
-        path = folder / file
-        text = path.read_text()
-        if text.count(old) != 1:
-            sys.exit(f"shader_parts.sh: {file}: expected exactly one '{old}'")
-        path.write_text(text.replace(old, new))
+write_copies(work, variants, "shader_parts.sh")
 (work / "variants").write_text("\n".join(variants) + "\n")
 PY
 }
