@@ -33,9 +33,7 @@ variants = {
                       "float fade = 1.0;")],
     # The full-res particle shaders' scene depth read without its decode (the division; the
     # quarter-res builds read theirs without one already: FX_HALF_RES_DEPTH).
-    "no-depth-decode": [("particles_common.glsl",
-                         "return linearSceneDepth(textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r);",
-                         "return textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r * 1000.0;")],
+    "no-depth-decode": [("particles_common.glsl", "return linearSceneDepth(d);", "return d * 1000.0;")],
     # Spherical without the scene depth: the chord clipped by the near plane only.
     "sphere-no-depth": [("fs_particles_spherical.glsl", "float sceneZ = sceneDepthAt(gl_FragCoord.xy);",
                          "float sceneZ = 3.0e38;")],

@@ -148,10 +148,11 @@ float nearFadeFactor(float depth) {
 // it with linearSceneDepth), so it is read as it is: no division, no range check.
 uniform vec4 uDepthUv;
 float sceneDepthAt(vec2 fragCoord) {
+    float d = textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r;
 #ifdef FX_HALF_RES_DEPTH
-    return textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r;
+    return d;
 #else
-    return linearSceneDepth(textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r);
+    return linearSceneDepth(d);
 #endif
 }
 
