@@ -2,11 +2,15 @@
 # What each part of the particle shaders costs: fxbench over the same frames with the shaders as
 # they are, then with copies that each leave one part out (read through CUBE_SHADER_DIR), and the
 # per-pass times side by side. The pictures of the copies are wrong on purpose (but for
-# discard-empty's, which only tries a cheaper way to the same one); only their times mean something.
+# depth-texelfetch's and discard-empty's, which only try a cheaper way to the same one); only their
+# times mean something.
 # A measurement aid, made for a GPU session's few minutes: one command answers where soft's and
 # spherical's extra time per fragment and the composite's time go.
 #   scripts/shader_parts.sh [fxbench options...]      the three steps below, here (llvmpipe)
 #   scripts/shader_parts.sh --check                   only checks that every part is still found
+#   scripts/shader_parts.sh --same-pictures [options] checks that the variants meant to draw the
+#                                                     same picture (same_picture below) do, byte
+#                                                     for byte (fxbench --images, one frame)
 # In steps, for a machine that may have no python3 (the GPU machine: scripts/gpu_check.sh):
 #   scripts/shader_parts.sh --prepare DIR             1. the copies, into DIR (python3)
 #   scripts/shader_parts.sh --run DIR OUT [options]   2. fxbench over them, JSON into OUT (bash)
@@ -43,6 +47,14 @@ variants = {
                          "float coverage = texel.a;")],
     # The composite without its edge test: plain bilinear (one fetch a pixel).
     "composite-no-edges": [("fs_particles_composite.glsl", "#if defined(FX_COMPOSITE_BILINEAR)", "#if 1")],
+    # The scene depth read with texelFetch instead of textureLod through the nearest sampler: the
+    # same texel (the picture is the same bit for bit), a load instead of a filtered sample. The
+    # shaders take textureLod because llvmpipe bounds-checks every texelFetch lane; a GPU may
+    # prefer the load. The texel's offset is worked out per fragment here (a division of two
+    # uniforms), which only counts against the load.
+    "depth-texelfetch": [("particles_common.glsl",
+                          "float d = textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r;",
+                          "float d = texelFetch(uSceneDepth, ivec2(fragCoord + uDepthUv.xy / uDepthUv.zw), 0).r;")],
     # One part added, not left out: as the spherical shader does, a fragment whose output is
     # exactly 0 (the atlas's empty rim inside a trimmed polygon) is discarded, so it costs no
     # blend. The picture is the same bit for bit; fxbench's standard frames at 1920x1080 discard
@@ -56,6 +68,9 @@ write_copies(work, variants, "shader_parts.sh")
 (work / "variants").write_text("\n".join(variants) + "\n")
 PY
 }
+
+# The variants that only try a cheaper way to the same picture.
+same_picture=(depth-texelfetch discard-empty)
 
 # Step 2 (bash only): fxbench with its built-in shaders ("now") and with each copy in $1, twice,
 # alternating; into $2/<variant>.<round>.json. The rest: fxbench options.
@@ -118,6 +133,30 @@ case "${1:-}" in
         trap 'rm -rf "$work"' EXIT
         prepare "$work"
         echo "shader_parts.sh: every part found ($(tr '\n' ' ' < "$work/variants"))" ;;
+    --same-pictures)
+        shift
+        work=$(mktemp -d)
+        trap 'rm -rf "$work"' EXIT
+        prepare "$work/parts"
+        read -r -a fxbench <<< "${FXBENCH:-./build/bin/fxbench}"
+        for variant in now "${same_picture[@]}"; do
+            shaderDir=""
+            [ "$variant" = now ] || shaderDir="$work/parts/$variant"
+            CUBE_SHADER_DIR="$shaderDir" "${fxbench[@]}" --modes hard,soft,spherical,soft+quarter-always \
+                --frames 1 --rounds 1 --warmup 1 --error-frames 1 "$@" --images "$work/$variant" \
+                >"$work/$variant.log" 2>&1 || { cat "$work/$variant.log" >&2; exit 1; }
+        done
+        status=0
+        for mode in hard soft spherical soft-quarter-always; do
+            for variant in "${same_picture[@]}"; do
+                if ! cmp -s "$work/now/standard_$mode.png" "$work/$variant/standard_$mode.png"; then
+                    echo "shader_parts.sh: $variant draws $mode differently (or not at all)" >&2
+                    status=1
+                fi
+            done
+        done
+        [ "$status" -eq 0 ] && echo "shader_parts.sh: ${same_picture[*]}: the same pictures of hard, soft, spherical and soft+quarter-always"
+        exit "$status" ;;
     --prepare) prepare "${2:?--prepare DIR}" ;;
     --run) run "${2:?--run DIR OUT}" "${3:?--run DIR OUT}" "${@:4}" ;;
     --table) table "${2:?--table OUT}" ;;
