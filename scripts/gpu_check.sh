@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A session's whole GPU check in one device call (about three and a half minutes of device time on
+# A session's whole GPU check in one device call (about four minutes of device time on
 # an H200: ../shared/gpu/run-all.sh's tables, then scripts/shader_parts.sh's runs), so a lent
 # machine's fifteen minutes hold it with room for a rerun. It needs no python3 there.
 # Here, after a build:
