@@ -24,7 +24,7 @@ uniform float uSoftScale;     // 1 / render.softness, 1/m
 uniform float uContrastPower; // render.contrast_power, 1 = linear fade
 uniform int uPowerWhole;      // without FX_GENERAL_POWER: contrast_power = uPowerWhole + uPowerHalf / 2
 uniform int uPowerHalf;       // 0 or 1
-uniform float uNearFade;      // render.near_fade, metres in front of the near plane; 0 = off
+uniform vec2 uNearFadeMap;    // render.near_fade f as a line in depth: (1 / f, -uNear / f); (0, 1) for f = 0 (off)
 
 uniform sampler2D uAtlas;      // 2x2 smoke atlas, RGBA8, straight alpha, frames row-major from top-left
 uniform sampler2D uRamp;       // colour by life: one row per reaction, kRampTexels wide
@@ -127,10 +127,11 @@ float softFade(float sceneDepth, float particleDepth) {
     return contrastCurve(x, uContrastPower);
 }
 
-// 0 at the near plane, 1 from uNearFade metres in front of it on (no pop when a particle
-// reaches the near plane and is clipped).
+// 0 at the near plane, 1 from render.near_fade metres in front of it on (no pop when a particle
+// reaches the near plane and is clipped). One multiply-add: the division and the switch are
+// worked out once per draw (ParticleDraw's nearFadeMap), not per fragment.
 float nearFadeFactor(float depth) {
-    return uNearFade > 0.0 ? clamp((depth - uNear) / uNearFade, 0.0, 1.0) : 1.0;
+    return clamp(depth * uNearFadeMap.x + uNearFadeMap.y, 0.0, 1.0);
 }
 
 // The scene's linear depth at this pixel (particles_scene_depth.glsl: decoded from the z-buffer,

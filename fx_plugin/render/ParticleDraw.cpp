@@ -18,6 +18,13 @@ float pixelSlopeOf(const glm::mat4& proj, float height) {
     return 2.0f / std::fmax(std::fabs(proj[1][1]) * height, 1e-6f);
 }
 
+// render.near_fade `fade` metres in front of the near plane as the shaders' uNearFadeMap: the
+// factor clamp(depth * x + y, 0, 1) rises from 0 at the near plane to 1 at `fade` metres past it;
+// with fade 0 (off) it is 1 at every depth.
+glm::vec2 nearFadeMap(float fade, float nearPlane) {
+    return fade > 0.0f ? glm::vec2(1.0f / fade, -nearPlane / fade) : glm::vec2(0.0f, 1.0f);
+}
+
 }  // namespace
 
 void ParticleDraw::create() {
@@ -129,7 +136,8 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
             glUniform1i(p.powerWhole, powerWhole);
             glUniform1i(p.powerHalf, powerHalf);
         }
-        glUniform1f(p.nearFade, batch.nearFade);
+        const glm::vec2 nearFade = nearFadeMap(batch.nearFade, view.nearPlane);
+        glUniform2f(p.nearFade, nearFade.x, nearFade.y);
         if (lit) setLightUniforms(p, batch, record, in.opacity);
         glUniform1i(p.atlas, kAtlasUnit);
         glUniform1i(p.ramp, kRampUnit);

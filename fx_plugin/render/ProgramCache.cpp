@@ -56,7 +56,7 @@ ParticleProgram locate(GLuint program) {
     p.blendMode = glGetUniformLocation(program, "uBlendMode");
     p.softScale = glGetUniformLocation(program, "uSoftScale");
     p.contrastPower = glGetUniformLocation(program, "uContrastPower");
-    p.nearFade = glGetUniformLocation(program, "uNearFade");
+    p.nearFade = glGetUniformLocation(program, "uNearFadeMap");
     p.atlas = glGetUniformLocation(program, "uAtlas");
     p.ramp = glGetUniformLocation(program, "uRamp");
     p.sceneDepth = glGetUniformLocation(program, "uSceneDepth");

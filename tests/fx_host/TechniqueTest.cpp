@@ -1,8 +1,9 @@
 // The three techniques against geometry, with one hand-placed particle drawn by the plugin's
 // renderer in the fx_host frame graph: the ground-contact line (soft and spherical have no
 // step, hard does), a particle entirely behind a wall (contributes nothing), a camera flying
-// through a spherical particle (no frame-to-frame jump), extreme clip planes (the soft fade
-// matches the CPU value at 1 m and at 10 km), and back-to-front order.
+// through a spherical particle (no frame-to-frame jump), the near fade's line, extreme clip planes
+// (the soft fade matches the CPU value at 1 m and at 10 km), and back-to-front order.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -191,6 +192,44 @@ TEST_F(TechniqueTest, CameraMovingThroughASphericalParticleHasNoJump) {
     std::printf("[ measured ] soft near_fade 0.5: max mean change %.4f, max pixel change %d/255\n",
                 faded.maxMeanChange, faded.maxPixelChange);
     EXPECT_LT(faded.maxMeanChange, 0.1f);
+}
+
+// The near fade is the line from 0 at the near plane to 1 at near_fade metres past it: a
+// billboard at near + k/4 of near_fade draws k/4 of the same billboard without the fade (near_fade
+// 0), and one past it all of it. Hard and soft (on black, a sky far behind: soft's own fade is 1).
+// Tolerance 0.03 (8-bit read-back, compared where the unfaded smoke is above 100/255).
+TEST_F(TechniqueTest, NearFadeRisesLinearlyFromTheNearPlane) {
+    constexpr int kW = 96, kH = 72;
+    constexpr float kNear = 0.1f, kFade = 0.5f;
+    TestFrameGraph graph(kW, kH);
+    TestScene scene;
+    scene.sky = glm::vec3(0.0f);
+    const fx::ViewInfo view = makeView(glm::vec3(0.0f), glm::vec3(0, 0, -1), kW, kH, kNear, 1000.0f);
+    for (const fx::Technique technique : {fx::Technique::Hard, fx::Technique::Soft}) {
+        direct.desc.render.technique = technique;
+        for (const float part : {0.25f, 0.5f, 0.75f, 1.5f}) {
+            const float depth = kNear + part * kFade;
+            direct.set({HandParticle{glm::vec3(0.0f, 0.0f, -depth), depth * 0.6f}});
+            direct.desc.render.nearFade = 0.0f;
+            const Image full = draw(graph, scene, view, true);
+            direct.desc.render.nearFade = kFade;
+            const Image faded = draw(graph, scene, view, true);
+            const float expected = std::min(part, 1.0f);
+            float worst = 0.0f;
+            int used = 0;
+            for (int y = 0; y < kH; ++y) {
+                for (int x = 0; x < kW; ++x) {
+                    if (full.at(x, y)[1] < 100) continue;
+                    ++used;
+                    worst = std::max(worst, std::fabs(faded.value(x, y, 1) / full.value(x, y, 1) - expected));
+                }
+            }
+            ASSERT_GT(used, 50) << name(technique) << " at " << depth << " m barely visible";
+            std::printf("[ measured ] %s near fade at %.3f m (%.2f of near_fade): expected %.2f, worst error "
+                        "%.4f over %d px\n", name(technique), depth, part, expected, worst, used);
+            EXPECT_LT(worst, 0.03f) << name(technique) << " at " << depth << " m";
+        }
+    }
 }
 
 // --- extreme clip planes ----------------------------------------------------------------------
