@@ -6,6 +6,7 @@ CUBE_PACKAGES=(build-essential cmake pkg-config python3-glad
   libglfw3-dev libglm-dev libtinygltf-dev nlohmann-json3-dev libyaml-cpp-dev libosmesa6-dev libegl-dev
   libstb-dev libimgui-dev libgtest-dev libbenchmark-dev xvfb xauth python3
   libirrlicht-dev  # examples/irrlicht_host: a legacy engine as host (Irrlicht 1.8, OpenGL driver)
+  glslang-tools spirv-tools  # scripts/shader_ops.py: the particle shaders' operations per fragment
   # What runs need: the engine links no back end but dlopens the one --backend names, so the
   # runtime libraries are listed themselves rather than left to the -dev packages' Depends.
   # osmesa: libosmesa6. egl: libegl1 + Mesa's vendor driver and its DRI drivers (llvmpipe's

@@ -59,8 +59,8 @@ variants = {
     # exactly 0 (the atlas's empty rim inside a trimmed polygon) is discarded, so it costs no
     # blend. The picture is the same bit for bit; fxbench's standard frames at 1920x1080 discard
     # 11 % of hard's and soft's samples. Hard and soft have no discard otherwise.
-    "discard-empty": [(f, "    oColor = applyParticleFog(shadeOutput(vRamp, vFade, texel, coverage), vFog);",
-                       "    oColor = applyParticleFog(shadeOutput(vRamp, vFade, texel, coverage), vFog);\n"
+    "discard-empty": [(f, "    oColor = shadeOutput(vTint, vFogAdd, texel.rgb, coverage);",
+                       "    oColor = shadeOutput(vTint, vFogAdd, texel.rgb, coverage);\n"
                        "    if (oColor == vec4(0.0)) discard;")
                       for f in ("fs_particles_hard.glsl", "fs_particles_soft.glsl")],
 }

@@ -9,7 +9,9 @@
 layout(location = 0) out vec4 oColor;
 
 void main() {
-    vec4 texel = texture(uAtlas, atlasUV(vLocal, vCell)) * insideFrame(vLocal);
+    // Outside the frame only the alpha needs masking: coverage carries it to the colour.
+    vec4 texel = texture(uAtlas, atlasUV(vLocal, vCell));
+    texel.a *= insideFrame(vLocal);
     float depth = -vViewPos.z;
     float coverage = texel.a * nearFadeFactor(depth);
 #ifdef FX_LINEAR_DEPTH_TEST
@@ -18,5 +20,5 @@ void main() {
 #ifdef FX_LIT
     texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vTurn), texel.a, vSunLight, vPhase);
 #endif
-    oColor = applyParticleFog(shadeOutput(vRamp, vFade, texel, coverage), vFog);
+    oColor = shadeOutput(vTint, vFogAdd, texel.rgb, coverage);
 }

@@ -11,12 +11,14 @@
 layout(location = 0) out vec4 oColor;
 
 void main() {
-    vec4 texel = texture(uAtlas, atlasUV(vLocal, vCell)) * insideFrame(vLocal);
+    // Outside the frame only the alpha needs masking: coverage carries it to the colour.
+    vec4 texel = texture(uAtlas, atlasUV(vLocal, vCell));
+    texel.a *= insideFrame(vLocal);
     float depth = -vViewPos.z;
     float fade = softFade(sceneDepthAt(gl_FragCoord.xy), depth);
     float coverage = texel.a * fade * nearFadeFactor(depth);
 #ifdef FX_LIT
     texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vTurn), texel.a, vSunLight, vPhase);
 #endif
-    oColor = applyParticleFog(shadeOutput(vRamp, vFade, texel, coverage), vFog);
+    oColor = shadeOutput(vTint, vFogAdd, texel.rgb, coverage);
 }

@@ -51,7 +51,7 @@ void main() {
     texel.rgb = texel.bbb * smokeLight(n, texel.a, vSunLight, vPhase);
 #endif
     // Fogged at the sphere's centre (particleFog): the middle of the chord through it.
-    oColor = applyParticleFog(shadeOutput(vRamp, vFade, texel, coverage), vFog);
+    oColor = shadeOutput(vTint, vFogAdd, texel.rgb, coverage);
     // Nothing to blend (the atlas's empty rim inside the trimmed bound, a chord wholly behind the
     // scene): 19 % of the samples in fxbench's standard frames at 1920x1080. Blending 0 leaves the
     // pixel as it was under every blend mode the renderer sets, so discarding changes no pixel and

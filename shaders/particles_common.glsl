@@ -157,16 +157,24 @@ float sceneDepthAt(vec2 fragCoord) {
 #endif
 }
 
-// Premultiplied output. `ramp`: the ramp colour (straight alpha); `fade`: the particle's
-// life fade; `texel`: atlas sample; `coverage`: every per-pixel factor (atlas alpha, soft fade,
-// sphere visibility, near fade).
-//   alpha:         (rgb * a, a)        with a = ramp.a * fade * coverage
+// Premultiplied output, fogged. With `ramp` the ramp colour at the particle's life (straight
+// alpha), `fade` its life fade, `colour` the atlas colour (lit smoke: the light on it) and
+// `coverage` every per-pixel factor (atlas alpha, soft fade, sphere visibility, near fade):
+//   alpha:         (rgb * a, a)        with a = ramp.a * fade * coverage, rgb = ramp.rgb * colour
 //   premultiplied: (rgb * k, ramp.a * k) with k = fade * coverage (ramp rgb taken as premultiplied)
 //   additive:      (rgb * a, 0)        blended (ONE, ONE): adds light, leaves coverage alone
-vec4 shadeOutput(vec4 ramp, float fade, vec4 texel, float coverage) {
-    float k = fade * coverage;
-    float a = ramp.a * k;
-    return vec4(ramp.rgb * texel.rgb * (uBlendMode == 1 ? k : a), uBlendMode == 2 ? 0.0 : a);
+// then fogged as (f rgb + (1 - f) fogColour alpha, alpha) (particles_fog.glsl). Everything but
+// colour and coverage is the particle's own, so the vertex shader folds it into two flat values
+// (particleTint) and a fragment does five multiply-adds and a multiply (shadeOutput): 23 scalar
+// operations in all for hard's fragment instead of 40 (SPIR-V, spirv-opt -O).
+void particleTint(vec4 ramp, float fade, vec4 fog, out vec4 tint, out vec3 fogAdd) {
+    float a = ramp.a * fade;
+    float alpha = uBlendMode == 2 ? 0.0 : a;
+    tint = vec4(ramp.rgb * (uBlendMode == 1 ? fade : a) * fog.a, alpha);
+    fogAdd = fog.rgb * alpha;
+}
+vec4 shadeOutput(vec4 tint, vec3 fogAdd, vec3 colour, float coverage) {
+    return vec4(coverage * (tint.rgb * colour + fogAdd), tint.a * coverage);
 }
 
 #ifdef FX_LIT

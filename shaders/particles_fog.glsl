@@ -28,23 +28,17 @@ vec4 applyFog(vec4 premultiplied, float distance) {
     return vec4(f * premultiplied.rgb + (1.0 - f) * uFogColor * premultiplied.a, premultiplied.a);
 }
 
-// Light added (blend ONE, ONE) fades to nothing: rgb and the alpha it adds, times f.
 // A particle's fog, once per vertex (vs_particles): (fog colour x (1 - f), f), at the particle's
 // depth; (0, 0, 0, 1) with fog off. Exact for a billboard, which faces the camera at one view
-// depth; a spherical particle takes its centre's depth, the middle of the chord through it. A CPU
-// rasteriser evaluates both sides of a branch on every fragment, so the fragment stage only
-// scales and adds (applyParticleFog).
+// depth; a spherical particle takes its centre's depth, the middle of the chord through it. The
+// vertex shader folds it into the particle's tint (particles_common.glsl, particleTint), so the
+// fragment stage pays nothing for fog.
 vec4 particleFog(float distance) {
     float f = uFogMode == 0 ? 1.0 : fogFactor(distance);
     return vec4(uFogColor * (1.0 - f), f);
 }
 
-// applyFog with the particle's fog already known: (f rgb + (1 - f) fogColour a, a); with fog
-// off the colour unchanged, bit for bit (rgb x 1 + 0).
-vec4 applyParticleFog(vec4 premultiplied, vec4 fog) {
-    return vec4(premultiplied.rgb * fog.a + fog.rgb * premultiplied.a, premultiplied.a);
-}
-
+// Light added (blend ONE, ONE) fades to nothing: rgb and the alpha it adds, times f.
 vec4 applyFogAdditive(vec4 added, float distance) {
     if (uFogMode == 0) return added;
     return added * fogFactor(distance);

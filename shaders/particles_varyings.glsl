@@ -7,12 +7,12 @@
 #endif
 FX_VARYING vec3 vViewPos;       // view-space position on the quad
 FX_VARYING vec2 vLocal;         // billboards: rotated particle-space coordinate, [-1,1]^2 inside the quad
-flat FX_VARYING vec4 vRamp;     // ramp colour at this particle's life, straight alpha
-flat FX_VARYING float vFade;    // life fade
+flat FX_VARYING vec4 vTint;     // the particle's colour, opacity, blend and fog (particleTint)
+flat FX_VARYING vec3 vFogAdd;   // the fog colour its coverage adds (particleTint)
+flat FX_VARYING float vOpacity; // ramp alpha x life fade: its share of the smoke's opacity map
 flat FX_VARYING vec2 vCell;     // atlas coordinate of the frame's corner (atlasCell)
 flat FX_VARYING vec4 vSphere;   // spherical: view-space centre, radius
 flat FX_VARYING vec2 vTurn;     // (cos, sin) of the particle's angle; spherical: divided by the radius
-flat FX_VARYING vec4 vFog;      // the particle's fog (particleFog): (fog colour x (1 - f), f)
 #ifdef FX_LIT
 FX_VARYING vec3 vSunLight;      // sun colour x transmittance through the smoke toward the sun
 FX_VARYING float vPhase;        // Henyey-Greenstein x 4 pi toward the eye

@@ -109,8 +109,9 @@ bool sphereTrimVertex(vec3 centre, float dist, float radius, float frame, float 
 #endif
 
 void main() {
-    vRamp = texture(uRamp, vec2(rampU(aLifeRotFadeFrame.x), uRampRow));
-    vFade = aLifeRotFadeFrame.z;
+    vec4 ramp = texture(uRamp, vec2(rampU(aLifeRotFadeFrame.x), uRampRow));
+    float fade = aLifeRotFadeFrame.z;
+    vOpacity = ramp.a * fade;
     vCell = atlasCell(aLifeRotFadeFrame.w);
     vTurn = vec2(cos(aLifeRotFadeFrame.y), sin(aLifeRotFadeFrame.y));
     float radius = 0.5 * aPosSize.w;
@@ -176,10 +177,11 @@ void main() {
 #endif
     vViewPos = viewPos;
 #ifdef FX_SPHERICAL
-    vFog = particleFog(-centre.z);
+    vec4 fog = particleFog(-centre.z);
 #else
-    vFog = particleFog(-viewPos.z);  // a billboard lies at one depth
+    vec4 fog = particleFog(-viewPos.z);  // a billboard lies at one depth
 #endif
+    particleTint(ramp, fade, fog, vTint, vFogAdd);
 #ifdef FX_LIT
 #ifdef FX_SPHERICAL
     vec3 lightAt = centre;   // the quad lies at the sphere's front: light the sphere as a whole

@@ -1,0 +1,123 @@
+#!/usr/bin/env python3
+"""What each particle fragment program costs per fragment, counted without a GPU: the shader as
+the program cache builds it (its includes inlined, its defines after #version), compiled to
+SPIR-V by glslang and optimised by spirv-opt -O, then its operations counted:
+
+  alu      scalar arithmetic operations (a vec3 multiply counts 3, a dot of n components 2n)
+  texture  texture reads (samples, fetches, gathers)
+  branch   conditional branches and discards
+
+A GPU compiler makes its own code from the same source, so the counts are a yardstick between
+versions of a shader, not a GPU's instruction count. They are what a GPU pays per fragment where
+its fragment stage is bound by arithmetic.
+
+  python3 scripts/shader_ops.py            the table
+  python3 scripts/shader_ops.py --check    fails where a program exceeds its budget below, and
+                                           says where one is under it (lower the budget then)
+
+Needs glslangValidator and spirv-opt (Debian: glslang-tools, spirv-tools; scripts/deps.sh).
+"""
+import pathlib
+import re
+import subprocess
+import sys
+import tempfile
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+SHADERS = ROOT / "shaders"
+
+# (name, fragment shader, defines as ProgramCache::Key::defines() writes them, budget alu,
+# budget texture reads). Soft is built per contrast power: FX_POWER_STEPS = 2 x power.
+PROGRAMS = [
+    ("hard", "fs_particles_hard.glsl", [], 23, 1),
+    ("hard, quarter res", "fs_particles_hard.glsl", ["FX_LINEAR_DEPTH_TEST", "FX_HALF_RES_DEPTH"], 28, 2),
+    ("soft, power 1", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2"], 36, 2),
+    ("soft, power 2", "fs_particles_soft.glsl", ["FX_POWER_STEPS 4"], 45, 2),
+    ("soft, any power", "fs_particles_soft.glsl", ["FX_GENERAL_POWER"], 45, 2),
+    ("soft, power 1, quarter res", "fs_particles_soft.glsl", ["FX_HALF_RES_DEPTH", "FX_POWER_STEPS 2"], 29, 2),
+    ("spherical", "fs_particles_spherical.glsl", ["FX_SPHERICAL"], 70, 2),
+    ("spherical, quarter res", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_HALF_RES_DEPTH"], 63, 2),
+    ("hard, lit", "fs_particles_hard.glsl", ["FX_LIT"], 62, 1),
+    ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 75, 2),
+    ("spherical, lit", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_LIT"], 120, 2),
+]
+
+ALU = re.compile(r"= Op(F[A-Z]\w*|I[A-Z]\w*|S[A-Z][a-z]*Div|ExtInst|Select|VectorTimesScalar|Dot|Logical\w*|"
+                 r"Convert\w+|BitwiseAnd|BitwiseOr|ShiftRightArithmetic|ShiftLeftLogical|Any|All|Not)\b")
+TEXTURE = re.compile(r"= OpImage(Sample|Fetch|Gather)\w*")
+BRANCH = re.compile(r"\bOp(BranchConditional|Kill)\b")
+
+
+def inline(path):
+    """The shader with its #include "file" lines replaced by the files (recursively)."""
+    out = []
+    for line in path.read_text().splitlines():
+        m = re.match(r'\s*#include\s+"([^"]+)"', line)
+        out.append(inline(path.parent / m.group(1)) if m else line)
+    return "\n".join(out)
+
+
+def source(fragment, defines):
+    lines = inline(SHADERS / fragment).split("\n")
+    if not lines[0].startswith("#version"):
+        sys.exit(f"shader_ops.py: {fragment}: expected #version on its first line")
+    return "\n".join([lines[0]] + ["#define " + d for d in defines] + lines[1:]) + "\n"
+
+
+def count(fragment, defines):
+    with tempfile.TemporaryDirectory() as work:
+        work = pathlib.Path(work)
+        (work / "s.frag").write_text(source(fragment, defines))
+        for cmd in (["glslangValidator", "-G", "--auto-map-locations", "--auto-map-bindings", "-o",
+                     str(work / "s.spv"), str(work / "s.frag")],
+                    ["spirv-opt", "-O", str(work / "s.spv"), "-o", str(work / "o.spv")],
+                    ["spirv-dis", "-o", str(work / "o.txt"), str(work / "o.spv")]):
+            r = subprocess.run(cmd, capture_output=True, text=True)
+            if r.returncode != 0:
+                sys.exit(f"shader_ops.py: {fragment} {defines}: {cmd[0]} failed:\n{r.stdout}{r.stderr}")
+        text = (work / "o.txt").read_text().splitlines()
+    width = {}
+    for line in text:
+        m = re.match(r"\s*(%\w+) = OpType(Float|Int|Bool)\b", line)
+        if m:
+            width[m.group(1)] = 1
+        m = re.match(r"\s*(%\w+) = OpTypeVector (%\w+) (\d+)", line)
+        if m:
+            width[m.group(1)] = int(m.group(3))
+    alu = texture = branch = 0
+    for line in text:
+        if ALU.search(line):
+            m = re.match(r"\s*%\w+ = Op\w+ (%\w+)", line)
+            n = width.get(m.group(1), 1) if m else 1
+            alu += 2 * n if "= OpDot " in line else n
+        if TEXTURE.search(line):
+            texture += 1
+        if BRANCH.search(line):
+            branch += 1
+    return alu, texture, branch
+
+
+def main():
+    check = sys.argv[1:] == ["--check"]
+    if sys.argv[1:] and not check:
+        sys.exit(__doc__)
+    print("| program | alu | texture | branch | budget alu, texture |")
+    print("|---|---:|---:|---:|---:|")
+    over, under = [], []
+    for name, fragment, defines, budget_alu, budget_texture in PROGRAMS:
+        alu, texture, branch = count(fragment, defines)
+        print(f"| {name} | {alu} | {texture} | {branch} | {budget_alu}, {budget_texture} |")
+        if alu > budget_alu or texture > budget_texture:
+            over.append(f"{name}: {alu} alu, {texture} texture against {budget_alu}, {budget_texture}")
+        elif alu < budget_alu or texture < budget_texture:
+            under.append(f"{name}: {alu} alu, {texture} texture, under its budget {budget_alu}, {budget_texture}")
+    for line in under:
+        print(f"shader_ops.py: {line} (lower the budget in scripts/shader_ops.py)")
+    for line in over:
+        print(f"shader_ops.py: over budget: {line}")
+    if check and over:
+        sys.exit(1)
+
+
+if __name__ == "__main__":
+    main()
