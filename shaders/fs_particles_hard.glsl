@@ -10,7 +10,7 @@ layout(location = 0) out vec4 oColor;
 
 void main() {
     // Outside the frame only the alpha needs masking: coverage carries it to the colour.
-    vec4 texel = texture(uAtlas, atlasUV(vLocal, vCell));
+    vec4 texel = texture(uAtlas, vAtlasUV);
     texel.a *= insideFrame(vLocal);
     float depth = -vViewPos.z;
     float coverage = texel.a * nearFadeFactor(depth);

@@ -14,7 +14,7 @@ uniform vec2 uDepthRange;  // light-view distance (metres) of light depth 0 and 
 layout(location = 0) out vec4 oOpacity;
 
 void main() {
-    float opacity = texture(uAtlas, atlasUV(vLocal, vCell)).a * insideFrame(vLocal) * vOpacity;
+    float opacity = texture(uAtlas, vAtlasUV).a * insideFrame(vLocal) * vOpacity;
     float depth = (-vViewPos.z - uDepthRange.x) / (uDepthRange.y - uDepthRange.x);
     vec4 share = clamp((vec4(0.25, 0.5, 0.75, 1.0) - depth) * 4.0 + 0.5, 0.0, 1.0);
     oOpacity = opacity * share;

@@ -12,7 +12,7 @@ layout(location = 0) out vec4 oColor;
 
 void main() {
     // Outside the frame only the alpha needs masking: coverage carries it to the colour.
-    vec4 texel = texture(uAtlas, atlasUV(vLocal, vCell));
+    vec4 texel = texture(uAtlas, vAtlasUV);
     texel.a *= insideFrame(vLocal);
     float depth = -vViewPos.z;
     float fade = softFade(sceneDepthAt(gl_FragCoord.xy), depth);

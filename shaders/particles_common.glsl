@@ -53,13 +53,20 @@ vec2 atlasCell(float frame) {
 }
 
 // Atlas coordinate of a particle-space point `local` in [-1, 1]^2 (+y up, already rotated) in
-// the frame whose corner is `cell` (atlasCell). Rotated corners leave the unit square: they are
-// clamped onto the cell border, where the atlas alpha is exactly 0, so no neighbouring frame
-// ever bleeds in. The PNG is uploaded top row first, so t = 0 is the image's top: +y (up) goes
-// to smaller t.
-vec2 atlasUV(vec2 local, vec2 cell) {
-    local = clamp(local, -1.0, 1.0);
+// the frame whose corner is `cell` (atlasCell). The PNG is uploaded top row first, so t = 0 is
+// the image's top: +y (up) goes to smaller t. The map is affine in `local`, so billboards work it
+// out per vertex and the rasteriser interpolates it (vAtlasUV): their fragments do no arithmetic
+// for it. Past the frame's square (a rotated quad's corners) it reads into the neighbouring cell,
+// where insideFrame masks the fragment.
+vec2 atlasUVOf(vec2 local, vec2 cell) {
     return cell + vec2(0.25 + 0.25 * local.x, 0.25 - 0.25 * local.y);
+}
+
+// atlasUVOf with `local` clamped onto the frame's square, whose border the atlas alpha is exactly
+// 0 on, so no neighbouring frame bleeds in: spherical billboards' lookup point, worked out per
+// fragment (it lies inside the unit disc; the clamp guards its rounding).
+vec2 atlasUV(vec2 local, vec2 cell) {
+    return atlasUVOf(clamp(local, -1.0, 1.0), cell);
 }
 
 // `v` turned by the angle whose (cos, sin) is `turn` (rotate2 with the sine and cosine computed
@@ -165,8 +172,8 @@ float sceneDepthAt(vec2 fragCoord) {
 //   additive:      (rgb * a, 0)        blended (ONE, ONE): adds light, leaves coverage alone
 // then fogged as (f rgb + (1 - f) fogColour alpha, alpha) (particles_fog.glsl). Everything but
 // colour and coverage is the particle's own, so the vertex shader folds it into two flat values
-// (particleTint) and a fragment does five multiply-adds and a multiply (shadeOutput): 23 scalar
-// operations in all for hard's fragment instead of 40 (SPIR-V, spirv-opt -O).
+// (particleTint) and a fragment does seven scalar operations for it (shadeOutput). What each
+// particle program does per fragment: scripts/shader_ops.py, held to a budget by a test.
 void particleTint(vec4 ramp, float fade, vec4 fog, out vec4 tint, out vec3 fogAdd) {
     float a = ramp.a * fade;
     float alpha = uBlendMode == 2 ? 0.0 : a;

@@ -7,6 +7,7 @@
 #endif
 FX_VARYING vec3 vViewPos;       // view-space position on the quad
 FX_VARYING vec2 vLocal;         // billboards: rotated particle-space coordinate, [-1,1]^2 inside the quad
+FX_VARYING vec2 vAtlasUV;       // billboards: atlasUVOf(vLocal, vCell), worked out per vertex
 flat FX_VARYING vec4 vTint;     // the particle's colour, opacity, blend and fog (particleTint)
 flat FX_VARYING vec3 vFogAdd;   // the fog colour its coverage adds (particleTint)
 flat FX_VARYING float vOpacity; // ramp alpha x life fade: its share of the smoke's opacity map

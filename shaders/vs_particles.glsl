@@ -159,6 +159,7 @@ void main() {
     vSphere = vec4(centre, radius);
     vTurn /= radius;  // the fragment shader turns offsets from the centre into units of radius
     vLocal = vec2(0.0);
+    vAtlasUV = vec2(0.0);
 #else
     vec3 right = normalize(vec3(uView[0][0], uView[1][0], uView[2][0]));
     vec3 up = normalize(vec3(uView[0][1], uView[1][1], uView[2][1]));
@@ -174,6 +175,7 @@ void main() {
     vec3 viewPos = (uView * vec4(world, 1.0)).xyz;
     vSphere = vec4(0.0);
     vLocal = local;
+    vAtlasUV = atlasUVOf(local, vCell);
 #endif
     vViewPos = viewPos;
 #ifdef FX_SPHERICAL
