@@ -35,11 +35,11 @@ PROGRAMS = [
     ("soft, power 2", "fs_particles_soft.glsl", ["FX_POWER_STEPS 4"], 39, 2),
     ("soft, any power", "fs_particles_soft.glsl", ["FX_GENERAL_POWER"], 39, 2),
     ("soft, power 1, quarter res", "fs_particles_soft.glsl", ["FX_HALF_RES_DEPTH", "FX_POWER_STEPS 2"], 23, 2),
-    ("spherical", "fs_particles_spherical.glsl", ["FX_SPHERICAL"], 70, 2),
-    ("spherical, quarter res", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_HALF_RES_DEPTH"], 63, 2),
+    ("spherical", "fs_particles_spherical.glsl", ["FX_SPHERICAL"], 66, 2),
+    ("spherical, quarter res", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_HALF_RES_DEPTH"], 59, 2),
     ("hard, lit", "fs_particles_hard.glsl", ["FX_LIT"], 56, 1),
     ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 69, 2),
-    ("spherical, lit", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_LIT"], 120, 2),
+    ("spherical, lit", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_LIT"], 116, 2),
 ]
 
 ALU = re.compile(r"= Op(F[A-Z]\w*|I[A-Z]\w*|S[A-Z][a-z]*Div|ExtInst|Select|VectorTimesScalar|Dot|Logical\w*|"

@@ -55,13 +55,13 @@ variants = {
     "depth-texelfetch": [("particles_common.glsl",
                           "float d = textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r;",
                           "float d = texelFetch(uSceneDepth, ivec2(fragCoord + uDepthUv.xy / uDepthUv.zw), 0).r;")],
-    # One part added, not left out: as the spherical shader does, a fragment whose output is
-    # exactly 0 (the atlas's empty rim inside a trimmed polygon) is discarded, so it costs no
-    # blend. The picture is the same bit for bit; fxbench's standard frames at 1920x1080 discard
+    # One part added, not left out: as the spherical shader does, a fragment whose coverage is 0
+    # (output exactly 0: the atlas's empty rim inside a trimmed polygon) is discarded, so it costs
+    # no blend. The picture is the same bit for bit; fxbench's standard frames at 1920x1080 discard
     # 11 % of hard's and soft's samples. Hard and soft have no discard otherwise.
     "discard-empty": [(f, "    oColor = shadeOutput(vTint, vFogAdd, texel.rgb, coverage);",
-                       "    oColor = shadeOutput(vTint, vFogAdd, texel.rgb, coverage);\n"
-                       "    if (oColor == vec4(0.0)) discard;")
+                       "    if (coverage == 0.0) discard;\n"
+                       "    oColor = shadeOutput(vTint, vFogAdd, texel.rgb, coverage);")
                       for f in ("fs_particles_hard.glsl", "fs_particles_soft.glsl")],
 }
 # The same discard, but for soft before its scene-depth fetch (where the atlas alone already
