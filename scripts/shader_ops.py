@@ -29,16 +29,16 @@ SHADERS = ROOT / "shaders"
 # (name, fragment shader, defines as ProgramCache::Key::defines() writes them, budget alu,
 # budget texture reads). Soft is built per contrast power: FX_POWER_STEPS = 2 x power.
 PROGRAMS = [
-    ("hard", "fs_particles_hard.glsl", [], 17, 1),
-    ("hard, quarter res", "fs_particles_hard.glsl", ["FX_LINEAR_DEPTH_TEST", "FX_HALF_RES_DEPTH"], 22, 2),
-    ("soft, power 1", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2"], 30, 2),
-    ("soft, power 2", "fs_particles_soft.glsl", ["FX_POWER_STEPS 4"], 39, 2),
-    ("soft, any power", "fs_particles_soft.glsl", ["FX_GENERAL_POWER"], 39, 2),
-    ("soft, power 1, quarter res", "fs_particles_soft.glsl", ["FX_HALF_RES_DEPTH", "FX_POWER_STEPS 2"], 23, 2),
+    ("hard", "fs_particles_hard.glsl", [], 13, 1),
+    ("hard, quarter res", "fs_particles_hard.glsl", ["FX_LINEAR_DEPTH_TEST", "FX_HALF_RES_DEPTH"], 19, 2),
+    ("soft, power 1", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2"], 27, 2),
+    ("soft, power 2", "fs_particles_soft.glsl", ["FX_POWER_STEPS 4"], 36, 2),
+    ("soft, any power", "fs_particles_soft.glsl", ["FX_GENERAL_POWER"], 36, 2),
+    ("soft, power 1, quarter res", "fs_particles_soft.glsl", ["FX_HALF_RES_DEPTH", "FX_POWER_STEPS 2"], 20, 2),
     ("spherical", "fs_particles_spherical.glsl", ["FX_SPHERICAL"], 66, 2),
     ("spherical, quarter res", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_HALF_RES_DEPTH"], 59, 2),
-    ("hard, lit", "fs_particles_hard.glsl", ["FX_LIT"], 56, 1),
-    ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 69, 2),
+    ("hard, lit", "fs_particles_hard.glsl", ["FX_LIT"], 52, 1),
+    ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 66, 2),
     ("spherical, lit", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_LIT"], 116, 2),
 ]
 

@@ -13,7 +13,7 @@ void main() {
     vec4 texel = texture(uAtlas, vAtlasUV);
     texel.a *= insideFrame(vLocal);
     float depth = -vViewPos.z;
-    float coverage = texel.a * nearFadeFactor(depth);
+    float coverage = texel.a;  // the near fade is in vTint (a billboard lies at one depth)
 #ifdef FX_LINEAR_DEPTH_TEST
     coverage *= depth <= sceneDepthAt(gl_FragCoord.xy) ? 1.0 : 0.0;
 #endif

@@ -16,7 +16,7 @@ void main() {
     texel.a *= insideFrame(vLocal);
     float depth = -vViewPos.z;
     float fade = softFade(sceneDepthAt(gl_FragCoord.xy), depth);
-    float coverage = texel.a * fade * nearFadeFactor(depth);
+    float coverage = texel.a * fade;  // the near fade is in vTint (a billboard lies at one depth)
 #ifdef FX_LIT
     texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vTurn), texel.a, vSunLight, vPhase);
 #endif

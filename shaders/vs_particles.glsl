@@ -180,10 +180,13 @@ void main() {
     vViewPos = viewPos;
 #ifdef FX_SPHERICAL
     vec4 fog = particleFog(-centre.z);
+    particleTint(ramp, fade, fog, vTint, vFogAdd);  // the near fade: per fragment, at the chord
 #else
-    vec4 fog = particleFog(-viewPos.z);  // a billboard lies at one depth
+    // A billboard lies at one depth, so its fog and its near fade are the particle's own: the
+    // near fade scales its output as the life fade does, and goes into the tint with it.
+    vec4 fog = particleFog(-viewPos.z);
+    particleTint(ramp, fade * nearFadeFactor(-viewPos.z), fog, vTint, vFogAdd);
 #endif
-    particleTint(ramp, fade, fog, vTint, vFogAdd);
 #ifdef FX_LIT
 #ifdef FX_SPHERICAL
     vec3 lightAt = centre;   // the quad lies at the sphere's front: light the sphere as a whole
