@@ -194,6 +194,22 @@ TEST_F(TechniqueTest, CameraMovingThroughASphericalParticleHasNoJump) {
     EXPECT_LT(faded.maxMeanChange, 0.1f);
 }
 
+// How far a faded frame is from `expected` times the unfaded one: the largest |faded / full -
+// expected| of the green channel over the pixels where the unfaded smoke is above 100/255 (8-bit
+// read-back is too coarse below), their count in *used.
+float worstRatioError(const Image& full, const Image& faded, float expected, int* used) {
+    float worst = 0.0f;
+    *used = 0;
+    for (int y = 0; y < full.height; ++y) {
+        for (int x = 0; x < full.width; ++x) {
+            if (full.at(x, y)[1] < 100) continue;
+            ++*used;
+            worst = std::max(worst, std::fabs(faded.value(x, y, 1) / full.value(x, y, 1) - expected));
+        }
+    }
+    return worst;
+}
+
 // The near fade is the line from 0 at the near plane to 1 at near_fade metres past it: a
 // billboard at near + k/4 of near_fade draws k/4 of the same billboard without the fade (near_fade
 // 0), and one past it all of it. Hard and soft (on black, a sky far behind: soft's own fade is 1).
@@ -215,15 +231,8 @@ TEST_F(TechniqueTest, NearFadeRisesLinearlyFromTheNearPlane) {
             direct.desc.render.nearFade = kFade;
             const Image faded = draw(graph, scene, view, true);
             const float expected = std::min(part, 1.0f);
-            float worst = 0.0f;
             int used = 0;
-            for (int y = 0; y < kH; ++y) {
-                for (int x = 0; x < kW; ++x) {
-                    if (full.at(x, y)[1] < 100) continue;
-                    ++used;
-                    worst = std::max(worst, std::fabs(faded.value(x, y, 1) / full.value(x, y, 1) - expected));
-                }
-            }
+            const float worst = worstRatioError(full, faded, expected, &used);
             ASSERT_GT(used, 50) << name(technique) << " at " << depth << " m barely visible";
             std::printf("[ measured ] %s near fade at %.3f m (%.2f of near_fade): expected %.2f, worst error "
                         "%.4f over %d px\n", name(technique), depth, part, expected, worst, used);
@@ -281,15 +290,8 @@ TEST_F(TechniqueTest, SoftFadeIsExactWithExtremeClipPlanes) {
             for (float gap : {0.1f, 0.3f, 0.7f}) {
                 const Image faded = frameWithWallAt(gap);
                 const float expected = cpuSoftFade(distance + gap, distance, 1.0f, contrast);
-                float worst = 0.0f;
                 int used = 0;
-                for (int y = 0; y < kH; ++y) {
-                    for (int x = 0; x < kW; ++x) {
-                        if (full.at(x, y)[1] < 100) continue;
-                        ++used;
-                        worst = std::max(worst, std::fabs(faded.value(x, y, 1) / full.value(x, y, 1) - expected));
-                    }
-                }
+                const float worst = worstRatioError(full, faded, expected, &used);
                 ASSERT_GT(used, 20) << "particle at " << distance << " m barely visible";
                 std::printf("[ measured ] %s far %.0e: soft fade at %.0f m, gap %.1f m, contrast %.1f: "
                             "expected %.3f, worst error %.4f over %d px\n",
