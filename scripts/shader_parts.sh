@@ -77,31 +77,61 @@ PY
 # The variants that only try a cheaper way to the same picture.
 same_picture=(depth-texelfetch discard-empty soft-empty-before-fetch)
 
+# fxbench over the modes the variants touch, with the shaders of variant $2 of the copies in $1
+# ("now": the shaders built into fxbench); the rest: fxbench options.
+fxbench_with() {
+    local parts=$1 variant=$2
+    shift 2
+    local fxbench shaderDir=""
+    read -r -a fxbench <<< "${FXBENCH:-./build/bin/fxbench}"
+    [ "${fxbench[0]}" != ./build/bin/fxbench ] || [ -x ./build/bin/fxbench ] ||
+        { echo "shader_parts.sh: build first (./run.sh or cmake --build build)" >&2; exit 1; }
+    # An empty CUBE_SHADER_DIR means the shaders built into fxbench (engine_stub/gl/Paths.cpp).
+    [ "$variant" = now ] || shaderDir=$(cd "$parts/$variant" && pwd)
+    CUBE_SHADER_DIR="$shaderDir" "${fxbench[@]}" --modes hard,soft,spherical,soft+quarter-always "$@"
+}
+
 # Step 2 (bash only): fxbench with its built-in shaders ("now") and with each copy in $1, twice,
 # alternating; into $2/<variant>.<round>.json. The rest: fxbench options.
 run() {
     local parts=$1 out=$2
     shift 2
     [ -f "$parts/variants" ] || { echo "shader_parts.sh: no $parts/variants (--prepare first)" >&2; exit 1; }
-    local fxbench
-    read -r -a fxbench <<< "${FXBENCH:-./build/bin/fxbench}"
-    [ "${fxbench[0]}" != ./build/bin/fxbench ] || [ -x ./build/bin/fxbench ] ||
-        { echo "shader_parts.sh: build first (./run.sh or cmake --build build)" >&2; exit 1; }
     local args=("$@")
     [ ${#args[@]} -gt 0 ] || args=(--frames 8 --rounds 2)
     mkdir -p "$out"
     cp "$parts/variants" "$out/variants"
-    local variants round variant shaderDir
+    local variants round variant
     mapfile -t variants < "$parts/variants"
     for round in 1 2; do
         for variant in now "${variants[@]}"; do
-            # An empty CUBE_SHADER_DIR means the shaders built into fxbench (engine_stub/gl/Paths.cpp).
-            shaderDir=""
-            [ "$variant" = now ] || shaderDir=$(cd "$parts/$variant" && pwd)
-            CUBE_SHADER_DIR="$shaderDir" "${fxbench[@]}" --modes hard,soft,spherical,soft+quarter-always \
-                --error-frames 0 "${args[@]}" --json "$out/$variant.$round.json" >/dev/null
+            fxbench_with "$parts" "$variant" --error-frames 0 "${args[@]}" --json "$out/$variant.$round.json" >/dev/null
         done
     done
+}
+
+# Whether the same_picture variants draw what the shaders as they are draw, byte for byte: one
+# frame's PNGs (fxbench --images) of each. The rest: fxbench options.
+same_pictures() {
+    local work
+    work=$(mktemp -d)
+    trap 'rm -rf "$work"' EXIT
+    prepare "$work/parts"
+    local variant mode status=0
+    for variant in now "${same_picture[@]}"; do
+        fxbench_with "$work/parts" "$variant" --frames 1 --rounds 1 --warmup 1 --error-frames 1 "$@" \
+            --images "$work/$variant" >"$work/$variant.log" 2>&1 || { cat "$work/$variant.log" >&2; exit 1; }
+    done
+    for mode in hard soft spherical soft-quarter-always; do
+        for variant in "${same_picture[@]}"; do
+            if ! cmp -s "$work/now/standard_$mode.png" "$work/$variant/standard_$mode.png"; then
+                echo "shader_parts.sh: $variant draws $mode differently (or not at all)" >&2
+                status=1
+            fi
+        done
+    done
+    [ "$status" -eq 0 ] && echo "shader_parts.sh: ${same_picture[*]}: the same pictures of hard, soft, spherical and soft+quarter-always"
+    exit "$status"
 }
 
 # Step 3: the table of the runs in $1.
@@ -138,30 +168,7 @@ case "${1:-}" in
         trap 'rm -rf "$work"' EXIT
         prepare "$work"
         echo "shader_parts.sh: every part found ($(tr '\n' ' ' < "$work/variants"))" ;;
-    --same-pictures)
-        shift
-        work=$(mktemp -d)
-        trap 'rm -rf "$work"' EXIT
-        prepare "$work/parts"
-        read -r -a fxbench <<< "${FXBENCH:-./build/bin/fxbench}"
-        for variant in now "${same_picture[@]}"; do
-            shaderDir=""
-            [ "$variant" = now ] || shaderDir="$work/parts/$variant"
-            CUBE_SHADER_DIR="$shaderDir" "${fxbench[@]}" --modes hard,soft,spherical,soft+quarter-always \
-                --frames 1 --rounds 1 --warmup 1 --error-frames 1 "$@" --images "$work/$variant" \
-                >"$work/$variant.log" 2>&1 || { cat "$work/$variant.log" >&2; exit 1; }
-        done
-        status=0
-        for mode in hard soft spherical soft-quarter-always; do
-            for variant in "${same_picture[@]}"; do
-                if ! cmp -s "$work/now/standard_$mode.png" "$work/$variant/standard_$mode.png"; then
-                    echo "shader_parts.sh: $variant draws $mode differently (or not at all)" >&2
-                    status=1
-                fi
-            done
-        done
-        [ "$status" -eq 0 ] && echo "shader_parts.sh: ${same_picture[*]}: the same pictures of hard, soft, spherical and soft+quarter-always"
-        exit "$status" ;;
+    --same-pictures) same_pictures "${@:2}" ;;
     --prepare) prepare "${2:?--prepare DIR}" ;;
     --run) run "${2:?--run DIR OUT}" "${3:?--run DIR OUT}" "${@:4}" ;;
     --table) table "${2:?--table OUT}" ;;
