@@ -12,10 +12,9 @@ void main() {
     // Outside the frame only the alpha needs masking: coverage carries it to the colour.
     vec4 texel = texture(uAtlas, vAtlasUV);
     texel.a *= insideFrame(vLocal);
-    float depth = -vViewPos.z;
     float coverage = texel.a;  // the near fade is in vTint (a billboard lies at one depth)
 #ifdef FX_LINEAR_DEPTH_TEST
-    coverage *= depth <= sceneDepthAt(gl_FragCoord.xy) ? 1.0 : 0.0;
+    coverage *= -vViewPos.z <= sceneDepthAt(gl_FragCoord.xy) ? 1.0 : 0.0;
 #endif
 #ifdef FX_LIT
     texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vTurn), texel.a, vSunLight, vPhase);

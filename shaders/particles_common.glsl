@@ -165,8 +165,9 @@ float sceneDepthAt(vec2 fragCoord) {
 }
 
 // Premultiplied output, fogged. With `ramp` the ramp colour at the particle's life (straight
-// alpha), `fade` its life fade, `colour` the atlas colour (lit smoke: the light on it) and
-// `coverage` every per-pixel factor (atlas alpha, soft fade, sphere visibility, near fade):
+// alpha), `fade` its life fade (billboards: times their near fade, which is the particle's own),
+// `colour` the atlas colour (lit smoke: the light on it) and `coverage` every per-pixel factor
+// (atlas alpha, soft fade, sphere visibility, spheres' near fade):
 //   alpha:         (rgb * a, a)        with a = ramp.a * fade * coverage, rgb = ramp.rgb * colour
 //   premultiplied: (rgb * k, ramp.a * k) with k = fade * coverage (ramp rgb taken as premultiplied)
 //   additive:      (rgb * a, 0)        blended (ONE, ONE): adds light, leaves coverage alone
