@@ -43,9 +43,17 @@ std::string fmt(const char* f, double v) {
 
 std::string psnrText(double db) { return db >= kPsnrCapDb ? "cap (identical)" : fmt("%.1f", db); }
 
+using PassFigures = std::vector<std::pair<std::string, double>>;
+
+// {"pass": figure, ...} in the passes' order.
+std::string jsonObject(const PassFigures& figures) {
+    std::string o = "{";
+    for (size_t k = 0; k < figures.size(); ++k) o += (k ? ", " : "") + jsonQuote(figures[k].first) + ": " + num(figures[k].second);
+    return o + "}";
+}
+
 // A table of one figure per pass (rows) and mode (columns), each printed with `format`; nothing
 // when no mode has one.
-using PassFigures = std::vector<std::pair<std::string, double>>;
 void perPassTable(const Report& r, PassFigures ModeSummary::*figures, const std::string& title, const char* format,
                   std::string* out) {
     std::vector<std::string> passes;
@@ -211,21 +219,12 @@ std::string jsonReport(const Report& r, const std::string& in) {
         o += p + "  \"frame_ms\": {\"p50\": " + num(m.p50) + ", \"p95\": " + num(m.p95) + ", \"p99\": " + num(m.p99) + "},\n";
         o += p + "  \"ratio_vs_hard\": " + num(m.ratioVsHard) + ",\n";
         o += p + "  \"ratio_vs_nofx\": " + num(m.ratioVsNofx) + ",\n";
-        o += p + "  \"passes_ms\": {";
-        for (size_t k = 0; k < m.passes.size(); ++k)
-            o += (k ? ", " : "") + jsonQuote(m.passes[k].first) + ": " + num(m.passes[k].second);
-        o += "},\n";
+        o += p + "  \"passes_ms\": " + jsonObject(m.passes) + ",\n";
         o += p + "  \"particle_pass_ms\": " + num(m.particleMs) + ",\n";
         o += p + "  \"outside_passes_ms\": " + num(m.outsidePassesMs) + ",\n";
         o += p + "  \"particle_fragments\": " + num(m.particleFragments) + ",\n";
-        o += p + "  \"passes_fragments\": {";
-        for (size_t k = 0; k < m.passFragments.size(); ++k)
-            o += (k ? ", " : "") + jsonQuote(m.passFragments[k].first) + ": " + num(m.passFragments[k].second);
-        o += "},\n";
-        o += p + "  \"passes_shaded\": {";
-        for (size_t k = 0; k < m.passShaded.size(); ++k)
-            o += (k ? ", " : "") + jsonQuote(m.passShaded[k].first) + ": " + num(m.passShaded[k].second);
-        o += "},\n";
+        o += p + "  \"passes_fragments\": " + jsonObject(m.passFragments) + ",\n";
+        o += p + "  \"passes_shaded\": " + jsonObject(m.passShaded) + ",\n";
         o += p + "  \"particles\": " + num(m.particles) + ",\n";
         o += p + "  \"coverage_pct\": " + num(m.coveragePct) + ",\n";
         o += p + "  \"fill_limit_ms\": " + num(m.fillLimitMs) + ",\n";
