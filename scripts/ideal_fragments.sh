@@ -21,8 +21,8 @@ from shader_copies import write_copies
 # (file, text that must be there, replacement): stop loudly when a shader no longer matches.
 edits = {
     "alpha": [
-        ("fs_particles_soft.glsl", "    float depth = -vViewPos.z;\n",
-         "    if (texel.a <= 0.0) discard;\n    float depth = -vViewPos.z;\n"),
+        ("fs_particles_soft.glsl", "    float fade = softFade(",
+         "    if (texel.a <= 0.0) discard;\n    float fade = softFade("),
         ("fs_particles_spherical.glsl", "if (d2 >= r * r) discard;",
          "if (d2 >= r * r || texel.a <= 0.0) discard;"),
     ],

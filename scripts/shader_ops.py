@@ -31,14 +31,14 @@ SHADERS = ROOT / "shaders"
 PROGRAMS = [
     ("hard", "fs_particles_hard.glsl", [], 13, 1),
     ("hard, quarter res", "fs_particles_hard.glsl", ["FX_LINEAR_DEPTH_TEST", "FX_HALF_RES_DEPTH"], 19, 2),
-    ("soft, power 1", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2"], 27, 2),
-    ("soft, power 2", "fs_particles_soft.glsl", ["FX_POWER_STEPS 4"], 36, 2),
-    ("soft, any power", "fs_particles_soft.glsl", ["FX_GENERAL_POWER"], 36, 2),
-    ("soft, power 1, quarter res", "fs_particles_soft.glsl", ["FX_HALF_RES_DEPTH", "FX_POWER_STEPS 2"], 20, 2),
+    ("soft, power 1", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2"], 22, 2),
+    ("soft, power 2", "fs_particles_soft.glsl", ["FX_POWER_STEPS 4"], 31, 2),
+    ("soft, any power", "fs_particles_soft.glsl", ["FX_GENERAL_POWER"], 31, 2),
+    ("soft, power 1, quarter res", "fs_particles_soft.glsl", ["FX_HALF_RES_DEPTH", "FX_POWER_STEPS 2"], 18, 2),
     ("spherical", "fs_particles_spherical.glsl", ["FX_SPHERICAL"], 66, 2),
     ("spherical, quarter res", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_HALF_RES_DEPTH"], 59, 2),
     ("hard, lit", "fs_particles_hard.glsl", ["FX_LIT"], 52, 1),
-    ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 66, 2),
+    ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 61, 2),
     ("spherical, lit", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_LIT"], 116, 2),
 ]
 

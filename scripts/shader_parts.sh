@@ -33,11 +33,15 @@ from shader_copies import write_copies
 work = pathlib.Path(sys.argv[1])
 variants = {
     # Soft without its fade: the scene-depth fetch, its decode and the contrast curve gone.
-    "soft-no-fade": [("fs_particles_soft.glsl", "float fade = softFade(sceneDepthAt(gl_FragCoord.xy), depth);",
+    "soft-no-fade": [("fs_particles_soft.glsl", "float fade = softFade(sceneDepthTexelAt(gl_FragCoord.xy), vFadeLine);",
                       "float fade = 1.0;")],
-    # The full-res particle shaders' scene depth read without its decode (the division; the
-    # quarter-res builds read theirs without one already: FX_HALF_RES_DEPTH).
-    "no-depth-decode": [("particles_common.glsl", "return linearSceneDepth(d);", "return d * 1000.0;")],
+    # The full-res particle shaders' scene depth read without its decode (the division: soft's
+    # in its fade, spherical's in sceneDepthAt; the quarter-res builds read theirs without one
+    # already: FX_HALF_RES_DEPTH).
+    "no-depth-decode": [("particles_common.glsl", "float v = (line.x + line.y * d) / (uDepthCoeffs.z + uDepthCoeffs.w * d);",
+                         "float v = line.x + line.y * d;"),
+                        ("particles_common.glsl", "return linearSceneDepth(sceneDepthTexelAt(fragCoord));",
+                         "return sceneDepthTexelAt(fragCoord) * 1000.0;")],
     # Spherical without the scene depth: the chord clipped by the near plane only.
     "sphere-no-depth": [("fs_particles_spherical.glsl", "float sceneZ = sceneDepthAt(gl_FragCoord.xy);",
                          "float sceneZ = 3.0e38;")],
@@ -53,8 +57,8 @@ variants = {
     # prefer the load. The texel's offset is worked out per fragment here (a division of two
     # uniforms), which only counts against the load.
     "depth-texelfetch": [("particles_common.glsl",
-                          "float d = textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r;",
-                          "float d = texelFetch(uSceneDepth, ivec2(fragCoord + uDepthUv.xy / uDepthUv.zw), 0).r;")],
+                          "return textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r;",
+                          "return texelFetch(uSceneDepth, ivec2(fragCoord + uDepthUv.xy / uDepthUv.zw), 0).r;")],
     # One part added, not left out: as the spherical shader does, a fragment whose coverage is 0
     # (output exactly 0: the atlas's empty rim inside a trimmed polygon) is discarded, so it costs
     # no blend. The picture is the same bit for bit; fxbench's standard frames at 1920x1080 discard
@@ -67,8 +71,8 @@ variants = {
 # The same discard, but for soft before its scene-depth fetch (where the atlas alone already
 # says the output is 0): whether a GPU then skips the fetch for those 11 %.
 variants["soft-empty-before-fetch"] = [
-    ("fs_particles_soft.glsl", "    float depth = -vViewPos.z;\n",
-     "    if (texel.a == 0.0) discard;\n    float depth = -vViewPos.z;\n")]
+    ("fs_particles_soft.glsl", "    float fade = softFade(",
+     "    if (texel.a == 0.0) discard;\n    float fade = softFade(")]
 write_copies(work, variants, "shader_parts.sh")
 (work / "variants").write_text("\n".join(variants) + "\n")
 PY

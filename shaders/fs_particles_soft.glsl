@@ -1,7 +1,8 @@
 #version 330 core
 // Soft particles (000 section 2.7): the quad fades out where it approaches the scene behind it,
 // fade = saturate((scene_depth - particle_depth) / softness), shaped by the contrast curve.
-// Both depths are linear view-space metres, so the fade is exact at any near/far ratio. The
+// Both depths are linear view-space metres, so the fade is exact at any near/far ratio (the
+// billboard's depth and scale are folded into the scene depth's decode per particle: softFade). The
 // renderer depth-tests soft particles only against a reversed-Z float z-buffer, which keeps that
 // precision too; against a standard 24-bit one (near 0.01 and far 100 km cannot tell 1 m apart
 // at 10 km) it does not, and the fade alone hides what is behind geometry.
@@ -14,8 +15,7 @@ void main() {
     // Outside the frame only the alpha needs masking: coverage carries it to the colour.
     vec4 texel = texture(uAtlas, vAtlasUV);
     texel.a *= insideFrame(vLocal);
-    float depth = -vViewPos.z;
-    float fade = softFade(sceneDepthAt(gl_FragCoord.xy), depth);
+    float fade = softFade(sceneDepthTexelAt(gl_FragCoord.xy), vFadeLine);
     float coverage = texel.a * fade;  // the near fade is in vTint (a billboard lies at one depth)
 #ifdef FX_LIT
     texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vTurn), texel.a, vSunLight, vPhase);

@@ -128,9 +128,37 @@ float contrastCurve(float x, float power) {
 }
 #endif
 
-// fade = saturate((scene_depth - particle_depth) * scale), through the contrast curve.
-float softFade(float sceneDepth, float particleDepth) {
-    float x = clamp((sceneDepth - particleDepth) * uSoftScale, 0.0, 1.0);
+// A billboard's soft fade, saturate((t - z) s) through the contrast curve, with t the scene's
+// depth at window depth d, t = (A + B d) / (C + D d) (linearSceneDepth), z the billboard's depth
+// and s = uSoftScale. A billboard lies at one depth, so its vertices fold z and s into the
+// numerator, flat per particle (softFadeLine): (t - z) s = (a + b d) / (C + D d) with
+// a = (A - z C) s, b = (B - z D) s. A fragment pays two multiply-adds and a division where
+// linearSceneDepth and the fade took those and a subtraction, a multiply and a range check of
+// four operations. The range check becomes one comparison: t > 0 exactly where the quotient
+// exceeds -z s (softFadeLine's third value); where it does not (nothing drawn at a linear host's
+// clear of 0, NaN) the fade is 1, as t's stand-in 3.0e38 gave. A t of 3.0e38 or more, or
+// infinite, fades to 1 through the clamp. The rounding is that of linearSceneDepth's own terms
+// (both sum the same products of the coefficients, z a factor of t's size where the fade is
+// under 1): TechniqueTest.SoftFadeIsExactWithExtremeClipPlanes holds it to the CPU's fade at
+// near 0.01 m and far 1e7 m.
+// FX_HALF_RES_DEPTH: d is already linear metres (the downsample's), so the line is
+// (a, b) = (-z s, s) and there is no division.
+vec3 softFadeLine(float depth) {
+    float zs = depth * uSoftScale;
+#ifdef FX_HALF_RES_DEPTH
+    return vec3(-zs, uSoftScale, -zs);
+#else
+    return vec3((uDepthCoeffs.x - depth * uDepthCoeffs.z) * uSoftScale,
+                (uDepthCoeffs.y - depth * uDepthCoeffs.w) * uSoftScale, -zs);
+#endif
+}
+float softFade(float d, vec3 line) {
+#ifdef FX_HALF_RES_DEPTH
+    float x = clamp(line.x + line.y * d, 0.0, 1.0);
+#else
+    float v = (line.x + line.y * d) / (uDepthCoeffs.z + uDepthCoeffs.w * d);
+    float x = clamp(v > line.z ? v : 1.0, 0.0, 1.0);
+#endif
     return contrastCurve(x, uContrastPower);
 }
 
@@ -155,12 +183,15 @@ float nearFadeFactor(float depth) {
 // plugin's own half-res depth, linear metres already made safe by the downsample (which decoded
 // it with linearSceneDepth), so it is read as it is: no division, no range check.
 uniform vec4 uDepthUv;
+// The texel as stored: window depth (or the host's linear depth), or the half-res linear depth.
+float sceneDepthTexelAt(vec2 fragCoord) {
+    return textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r;
+}
 float sceneDepthAt(vec2 fragCoord) {
-    float d = textureLod(uSceneDepth, fragCoord * uDepthUv.zw + uDepthUv.xy, 0.0).r;
 #ifdef FX_HALF_RES_DEPTH
-    return d;
+    return sceneDepthTexelAt(fragCoord);
 #else
-    return linearSceneDepth(d);
+    return linearSceneDepth(sceneDepthTexelAt(fragCoord));
 #endif
 }
 

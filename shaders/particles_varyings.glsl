@@ -14,6 +14,7 @@ flat FX_VARYING float vOpacity; // ramp alpha x life fade: its share of the smok
 flat FX_VARYING vec2 vCell;     // atlas coordinate of the frame's corner (atlasCell)
 flat FX_VARYING vec4 vSphere;   // spherical: view-space centre, radius
 flat FX_VARYING vec2 vTurn;     // (cos, sin) of the particle's angle; spherical: divided by the radius
+flat FX_VARYING vec3 vFadeLine;  // billboards: softFadeLine at the particle's depth
 #ifdef FX_LIT
 FX_VARYING vec3 vSunLight;      // sun colour x transmittance through the smoke toward the sun
 FX_VARYING float vPhase;        // Henyey-Greenstein x 4 pi toward the eye

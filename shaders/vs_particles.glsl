@@ -160,6 +160,7 @@ void main() {
     vTurn /= radius;  // the fragment shader turns offsets from the centre into units of radius
     vLocal = vec2(0.0);
     vAtlasUV = vec2(0.0);
+    vFadeLine = vec3(0.0);
 #else
     vec3 right = normalize(vec3(uView[0][0], uView[1][0], uView[2][0]));
     vec3 up = normalize(vec3(uView[0][1], uView[1][1], uView[2][1]));
@@ -186,6 +187,7 @@ void main() {
     // near fade scales its output as the life fade does, and goes into the tint with it.
     vec4 fog = particleFog(-viewPos.z);
     particleTint(ramp, fade * nearFadeFactor(-viewPos.z), fog, vTint, vFogAdd);
+    vFadeLine = softFadeLine(-viewPos.z);  // and so is its soft fade's line
 #endif
 #ifdef FX_LIT
 #ifdef FX_SPHERICAL

@@ -143,9 +143,9 @@ TEST_F(ShaderLoaderTest, TheQuarterResProgramsGatherWhereTheContextCan) {
 
 TEST_F(BrokenShaderTest, CompileErrorNamesTheFileAndLine) {
     const std::string dir = copyShaders("error_in_main");
-    const int line = lineOf(dir + "/fs_particles_soft.glsl", "float depth = -vViewPos.z;");
+    const int line = lineOf(dir + "/fs_particles_soft.glsl", "float coverage = texel.a * fade;");
     ASSERT_GT(line, 0);
-    replaceLine(dir + "/fs_particles_soft.glsl", line, "    float depth = -vViewPos.z +;");
+    replaceLine(dir + "/fs_particles_soft.glsl", line, "    float coverage = texel.a * fade +;");
     std::string error;
     EXPECT_EQ(fx::buildProgram(dir, "vs_particles.glsl", "fs_particles_soft.glsl", "", &error), 0u);
     EXPECT_NE(error.find("fs_particles_soft.glsl:" + std::to_string(line) + ":"), std::string::npos)
@@ -210,8 +210,8 @@ TEST_F(ShaderLoaderTest, TranslatesTheCommonDriverLogFormats) {
 // A broken soft shader: the renderer logs file:line, draws no soft particle and still draws hard ones.
 TEST_F(BrokenShaderTest, RendererReportsABrokenShaderAndDrawsNothingWithIt) {
     const std::string dir = copyShaders("broken_soft");
-    const int line = lineOf(dir + "/fs_particles_soft.glsl", "float depth = -vViewPos.z;");
-    replaceLine(dir + "/fs_particles_soft.glsl", line, "    float depth = vViewPos;");
+    const int line = lineOf(dir + "/fs_particles_soft.glsl", "float coverage = texel.a * fade;");
+    replaceLine(dir + "/fs_particles_soft.glsl", line, "    float coverage = vViewPos;");
     TestHostAdapter host;
     DirectParticles particles(&host, dir);
     TestScene scene;
