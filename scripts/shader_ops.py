@@ -3,7 +3,9 @@
 the program cache builds it (its includes inlined, its defines after #version), compiled to
 SPIR-V by glslang and optimised by spirv-opt -O, then its operations counted:
 
-  alu      scalar arithmetic operations (a vec3 multiply counts 3, a dot of n components 2n)
+  alu      scalar arithmetic operations (a vec3 multiply counts 3, a dot of n components n: a
+           multiply and n - 1 multiply-adds); a negation or an absolute value is not counted,
+           being a free operand modifier on GPUs
   texture  texture reads (samples, fetches, gathers)
   branch   conditional branches and discards
 
@@ -29,21 +31,22 @@ SHADERS = ROOT / "shaders"
 # (name, fragment shader, defines as ProgramCache::Key::defines() writes them, budget alu,
 # budget texture reads). Soft is built per contrast power: FX_POWER_STEPS = 2 x power.
 PROGRAMS = [
-    ("hard", "fs_particles_hard.glsl", [], 13, 1),
-    ("hard, quarter res", "fs_particles_hard.glsl", ["FX_LINEAR_DEPTH_TEST", "FX_HALF_RES_DEPTH"], 19, 2),
-    ("soft, power 1", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2"], 22, 2),
-    ("soft, power 2", "fs_particles_soft.glsl", ["FX_POWER_STEPS 4"], 31, 2),
-    ("soft, any power", "fs_particles_soft.glsl", ["FX_GENERAL_POWER"], 31, 2),
-    ("soft, power 1, quarter res", "fs_particles_soft.glsl", ["FX_HALF_RES_DEPTH", "FX_POWER_STEPS 2"], 18, 2),
-    ("spherical", "fs_particles_spherical.glsl", ["FX_SPHERICAL"], 66, 2),
-    ("spherical, quarter res", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_HALF_RES_DEPTH"], 59, 2),
-    ("hard, lit", "fs_particles_hard.glsl", ["FX_LIT"], 52, 1),
-    ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 61, 2),
-    ("spherical, lit", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_LIT"], 116, 2),
+    ("hard", "fs_particles_hard.glsl", [], 11, 1),
+    ("hard, quarter res", "fs_particles_hard.glsl", ["FX_LINEAR_DEPTH_TEST", "FX_HALF_RES_DEPTH"], 16, 2),
+    ("soft, power 1", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2"], 20, 2),
+    ("soft, power 2", "fs_particles_soft.glsl", ["FX_POWER_STEPS 4"], 27, 2),
+    ("soft, any power", "fs_particles_soft.glsl", ["FX_GENERAL_POWER"], 28, 2),
+    ("soft, power 1, quarter res", "fs_particles_soft.glsl", ["FX_HALF_RES_DEPTH", "FX_POWER_STEPS 2"], 16, 2),
+    ("spherical", "fs_particles_spherical.glsl", ["FX_SPHERICAL"], 65, 2),
+    ("spherical, quarter res", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_HALF_RES_DEPTH"], 58, 2),
+    ("hard, lit", "fs_particles_hard.glsl", ["FX_LIT"], 50, 1),
+    ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 59, 2),
+    ("spherical, lit", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_LIT"], 115, 2),
 ]
 
 ALU = re.compile(r"= Op(F[A-Z]\w*|I[A-Z]\w*|S[A-Z][a-z]*Div|ExtInst|Select|VectorTimesScalar|Dot|Logical\w*|"
                  r"Convert\w+|BitwiseAnd|BitwiseOr|ShiftRightArithmetic|ShiftLeftLogical|Any|All|Not)\b")
+MODIFIER = re.compile(r"= Op(FNegate|SNegate|ExtInst %\w+ %\w+ (FAbs|SAbs))\b")
 TEXTURE = re.compile(r"= OpImage(Sample|Fetch|Gather)\w*")
 BRANCH = re.compile(r"\bOp(BranchConditional|Kill)\b")
 
@@ -76,7 +79,8 @@ def count(fragment, defines):
             if r.returncode != 0:
                 sys.exit(f"shader_ops.py: {fragment} {defines}: {cmd[0]} failed:\n{r.stdout}{r.stderr}")
         text = (work / "o.txt").read_text().splitlines()
-    width = {}
+    width = {}  # type -> components
+    typeOf = {}  # value -> its type
     for line in text:
         m = re.match(r"\s*(%\w+) = OpType(Float|Int|Bool)\b", line)
         if m:
@@ -84,12 +88,17 @@ def count(fragment, defines):
         m = re.match(r"\s*(%\w+) = OpTypeVector (%\w+) (\d+)", line)
         if m:
             width[m.group(1)] = int(m.group(3))
+        m = re.match(r"\s*(%\w+) = Op\w+ (%\w+)", line)
+        if m:
+            typeOf[m.group(1)] = m.group(2)
     alu = texture = branch = 0
     for line in text:
-        if ALU.search(line):
-            m = re.match(r"\s*%\w+ = Op\w+ (%\w+)", line)
-            n = width.get(m.group(1), 1) if m else 1
-            alu += 2 * n if "= OpDot " in line else n
+        if ALU.search(line) and not MODIFIER.search(line):
+            m = re.match(r"\s*%\w+ = Op(\w+) (%\w+)(?: (%\w+))?", line)
+            if m and m.group(1) == "Dot":
+                alu += width.get(typeOf.get(m.group(3)), 1)
+            else:
+                alu += width.get(m.group(2), 1) if m else 1
         if TEXTURE.search(line):
             texture += 1
         if BRANCH.search(line):
