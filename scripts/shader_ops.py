@@ -37,11 +37,11 @@ PROGRAMS = [
     ("soft, power 2", "fs_particles_soft.glsl", ["FX_POWER_STEPS 4"], 27, 2),
     ("soft, any power", "fs_particles_soft.glsl", ["FX_GENERAL_POWER"], 28, 2),
     ("soft, power 1, quarter res", "fs_particles_soft.glsl", ["FX_HALF_RES_DEPTH", "FX_POWER_STEPS 2"], 16, 2),
-    ("spherical", "fs_particles_spherical.glsl", ["FX_SPHERICAL"], 65, 2),
-    ("spherical, quarter res", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_HALF_RES_DEPTH"], 58, 2),
+    ("spherical", "fs_particles_spherical.glsl", ["FX_SPHERICAL"], 51, 2),
+    ("spherical, quarter res", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_HALF_RES_DEPTH"], 46, 2),
     ("hard, lit", "fs_particles_hard.glsl", ["FX_LIT"], 50, 1),
     ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 59, 2),
-    ("spherical, lit", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_LIT"], 115, 2),
+    ("spherical, lit", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_LIT"], 98, 2),
 ]
 
 ALU = re.compile(r"= Op(F[A-Z]\w*|I[A-Z]\w*|S[A-Z][a-z]*Div|ExtInst|Select|VectorTimesScalar|Dot|Logical\w*|"

@@ -40,14 +40,14 @@ variants = {
     # already: FX_HALF_RES_DEPTH).
     "no-depth-decode": [("particles_common.glsl", "float v = (line.x + line.y * d) / (uDepthCoeffs.z + uDepthCoeffs.w * d);",
                          "float v = line.x + line.y * d;"),
-                        ("particles_common.glsl", "return linearSceneDepth(sceneDepthTexelAt(fragCoord));",
-                         "return sceneDepthTexelAt(fragCoord) * 1000.0;")],
+                        ("particles_common.glsl", "float t = decodedSceneDepth(sceneDepthTexelAt(fragCoord));",
+                         "float t = sceneDepthTexelAt(fragCoord) * 1000.0;")],
     # Spherical without the scene depth: the chord clipped by the near plane only.
     "sphere-no-depth": [("fs_particles_spherical.glsl", "float sceneZ = sceneDepthAt(gl_FragCoord.xy);",
                          "float sceneZ = 3.0e38;")],
     # Spherical without the chord: the atlas alpha at the closest approach alone.
     "sphere-no-chord": [("fs_particles_spherical.glsl",
-                         "float coverage = texel.a * visible * nearFadeFactor(max(0.5 * (z0 + z1), uNear));",
+                         "float coverage = texel.a * visible * nearFadeFactor(0.5 * (z0 + z1));",
                          "float coverage = texel.a;")],
     # The composite without its edge test: plain bilinear (one fetch a pixel).
     "composite-no-edges": [("fs_particles_composite.glsl", "#if defined(FX_COMPOSITE_BILINEAR)", "#if 1")],

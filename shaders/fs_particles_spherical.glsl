@@ -17,32 +17,37 @@
 layout(location = 0) out vec4 oColor;
 
 void main() {
-    // The ray through this pixel, not normalised: it gains -ray.z of view depth per unit of its
-    // parameter t, and the chord is worked out in view depth directly (one division).
-    vec3 ray = vViewPos;
+    // The ray through this pixel, scaled to one metre of view depth: the quad lies at one depth,
+    // so its slope is what the vertices hand over, and the ray's parameter is view depth itself.
+    // The closest approach's offset is worked out explicitly (not as |c|^2 - (c.ray)^2 / |ray|^2,
+    // which cancels catastrophically for a small sphere far away).
+    vec2 slope = vSlope;
     vec3 centre = vSphere.xyz;
     float r = vSphere.w;
-    float invLen2 = 1.0 / dot(ray, ray);
-    float tMid = dot(centre, ray) * invLen2;  // ray parameter of the closest approach
-    vec3 offset = ray * tMid - centre;
-    float d2 = dot(offset, offset);
+    float invLen2 = 1.0 / (1.0 + slope.x * slope.x + slope.y * slope.y);
+    float tMid = (centre.x * slope.x + centre.y * slope.y - centre.z) * invLen2;  // depth of the closest approach
+    vec2 offset = vec2(slope.x * tMid - centre.x, slope.y * tMid - centre.y);  // the closest approach minus the centre (x, y)
+    float offsetZ = tMid + centre.z;  // and its z, negated: only its square is used
+    float d2 = offset.x * offset.x + offset.y * offset.y + offsetZ * offsetZ;
 
     // Sampled before any discard: the atlas needs derivatives from the whole 2x2 quad. The scene
     // depth is read there too, though the pixels off the sphere's outline (about 6 % of those the
     // bound rasterises: fxbench standard, llvmpipe count) do not need it. Read after the discard,
     // a GPU compiler need not move the fetch above it, and the two waits come one after the
     // other; here both fetches are issued before the first wait.
-    vec4 texel = texture(uAtlas, atlasUV(turnBy(offset.xy, vTurn), vCell));
+    vec2 uv = vec2(vAtlasBase.x + offset.x * vAtlasMap.x + offset.y * vAtlasMap.y,
+                   vAtlasBase.y + offset.x * vAtlasMap.z + offset.y * vAtlasMap.w);  // sphereAtlasMap
+    vec4 texel = texture(uAtlas, uv);
     float sceneZ = sceneDepthAt(gl_FragCoord.xy);
     if (d2 >= r * r) discard;
 
-    float depthPerT = -ray.z;  // > 0: the quad lies at or past the near plane
-    float halfDepth = sqrt((r * r - d2) * invLen2) * depthPerT;
-    float midZ = tMid * depthPerT;
-    float z0 = max(midZ - halfDepth, uNear);
-    float z1 = min(midZ + halfDepth, sceneZ);
+    float halfDepth = sqrt((r * r - d2) * invLen2);
+    float z0 = max(tMid - halfDepth, uNear);
+    float z1 = min(tMid + halfDepth, sceneZ);
     float visible = clamp((z1 - z0) / (2.0 * halfDepth), 0.0, 1.0);
-    float coverage = texel.a * visible * nearFadeFactor(max(0.5 * (z0 + z1), uNear));
+    // The middle of the visible chord lies past the near plane wherever the chord is visible
+    // (z0 >= near); where it is not, visible is 0 and the near fade is in [0, 1] all the same.
+    float coverage = texel.a * visible * nearFadeFactor(0.5 * (z0 + z1));
     // Nothing to blend (the atlas's empty rim inside the trimmed bound, a chord wholly behind the
     // scene): 19 % of the samples in fxbench's standard frames at 1920x1080. The output would be
     // exactly 0, and blending 0 leaves the pixel as it was under every blend mode the renderer
@@ -51,9 +56,9 @@ void main() {
     if (coverage == 0.0) discard;
 #ifdef FX_LIT
     // The sphere's normal where the visible chord starts, bent by the atlas's normal map.
-    vec3 entry = ray * (z0 / depthPerT);
+    vec3 entry = vec3(slope, -1.0) * z0;
     vec3 bumps = atlasNormal(texel);
-    vec3 n = normalize((entry - centre) / r + uNormalStrength * 0.6 * vec3(turnBack(bumps.xy, vTurn) * r, 0.0));
+    vec3 n = normalize((entry - centre) / r + uNormalStrength * 0.6 * vec3(turnBack(bumps.xy, vTurn), 0.0));
     texel.rgb = texel.bbb * smokeLight(n, texel.a, vSunLight, vPhase);
 #endif
     // Fogged at the sphere's centre (particleFog): the middle of the chord through it.

@@ -62,18 +62,21 @@ vec2 atlasUVOf(vec2 local, vec2 cell) {
     return cell + vec2(0.25 + 0.25 * local.x, 0.25 - 0.25 * local.y);
 }
 
-// atlasUVOf with `local` clamped onto the frame's square, whose border the atlas alpha is exactly
-// 0 on, so no neighbouring frame bleeds in: spherical billboards' lookup point, worked out per
-// fragment (it lies inside the unit disc; the clamp guards its rounding).
-vec2 atlasUV(vec2 local, vec2 cell) {
-    return atlasUVOf(clamp(local, -1.0, 1.0), cell);
+// Spherical billboards look the atlas up per fragment at the closest approach's offset o from
+// the centre (view x, y, metres), turned by the particle's angle into units of the radius:
+// atlasUVOf(rotate2(o / r, angle), cell), affine in o. The vertex shader folds the turn, the radius
+// and atlasUVOf's scale into one flat map, so a fragment does four multiply-adds:
+// uv = base + o.x map.xz + o.y map.yw. The point lies inside the unit disc wherever the fragment
+// is kept, so it stays on the frame's square (whose border the atlas alpha is exactly 0 on)
+// up to rounding; the fragments outside the disc that read past it are discarded.
+void sphereAtlasMap(vec2 turn, float radius, vec2 cell, out vec4 map, out vec2 base) {
+    vec2 t = 0.25 * turn / radius;
+    map = vec4(t.x, -t.y, -t.y, -t.x);
+    base = cell + vec2(0.25);
 }
 
-// `v` turned by the angle whose (cos, sin) is `turn` (rotate2 with the sine and cosine computed
-// once per particle in the vertex shader), and turned back by it.
-vec2 turnBy(vec2 v, vec2 turn) {
-    return vec2(turn.x * v.x - turn.y * v.y, turn.y * v.x + turn.x * v.y);
-}
+// `v` turned back by the angle whose (cos, sin) is `turn` (rotate2 with the sine and cosine
+// computed once per particle in the vertex shader).
 vec2 turnBack(vec2 v, vec2 turn) {
     return vec2(turn.x * v.x + turn.y * v.y, turn.x * v.y - turn.y * v.x);
 }
@@ -191,7 +194,11 @@ float sceneDepthAt(vec2 fragCoord) {
 #ifdef FX_HALF_RES_DEPTH
     return sceneDepthTexelAt(fragCoord);
 #else
-    return linearSceneDepth(sceneDepthTexelAt(fragCoord));
+    // At full res only spherical particles read it, and end their chord at min(exit, t): a t of
+    // 3.0e38 or more, or infinite, ends it as far away as linearSceneDepth's stand-in would, so
+    // only a t that is not positive (or NaN) needs the stand-in: one comparison instead of two.
+    float t = decodedSceneDepth(sceneDepthTexelAt(fragCoord));
+    return t > 0.0 ? t : 3.0e38;
 #endif
 }
 

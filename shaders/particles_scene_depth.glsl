@@ -24,8 +24,12 @@ vec2 viewPixelOf(vec2 fragCoord) { return fragCoord - vec2(uDrawOrigin); }
 ivec2 sceneDepthTexel(ivec2 p) { return p + uDepthWindow.xy; }
 ivec2 sceneDepthViewSize() { return uDepthWindow.zw; }
 
+// The quotient alone, for a reader that makes its own range check (sceneDepthAt).
+float decodedSceneDepth(float d) {
+    return (uDepthCoeffs.x + uDepthCoeffs.y * d) / (uDepthCoeffs.z + uDepthCoeffs.w * d);
+}
 float linearSceneDepth(float d) {
-    float t = (uDepthCoeffs.x + uDepthCoeffs.y * d) / (uDepthCoeffs.z + uDepthCoeffs.w * d);
+    float t = decodedSceneDepth(d);
     // A cleared z-buffer texel (at the far plane) decodes to the far plane's distance (or, with an
     // infinite far plane, to a huge or infinite one), which every reader takes as far away, as
     // the linearise pass's background was; only a distance that is not positive needs the

@@ -156,8 +156,9 @@ void main() {
         }
     }
     vec3 viewPos = vec3(slope * quadDepth, -quadDepth);
+    vSlope = slope;
     vSphere = vec4(centre, radius);
-    vTurn /= radius;  // the fragment shader turns offsets from the centre into units of radius
+    sphereAtlasMap(vTurn, radius, vCell, vAtlasMap, vAtlasBase);
     vLocal = vec2(0.0);
     vAtlasUV = vec2(0.0);
     vFadeLine = vec3(0.0);
@@ -175,6 +176,9 @@ void main() {
     vec3 world = aPosSize.xyz + (corner.x * right + corner.y * up) * radius;
     vec3 viewPos = (uView * vec4(world, 1.0)).xyz;
     vSphere = vec4(0.0);
+    vSlope = vec2(0.0);
+    vAtlasMap = vec4(0.0);
+    vAtlasBase = vec2(0.0);
     vLocal = local;
     vAtlasUV = atlasUVOf(local, vCell);
 #endif
