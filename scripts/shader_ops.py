@@ -4,8 +4,11 @@ the program cache builds it (its includes inlined, its defines after #version), 
 SPIR-V by glslang and optimised by spirv-opt -O, then its operations counted:
 
   alu      scalar arithmetic operations (a vec3 multiply counts 3, a dot of n components n: a
-           multiply and n - 1 multiply-adds); a negation or an absolute value is not counted,
-           being a free operand modifier on GPUs
+           multiply and n - 1 multiply-adds); a built-in as the operations it takes (EXT_COST:
+           mix 2 a component, normalize of n components 2n + 1, pow 3); an add or subtract of
+           a multiply's result used nowhere else is not counted (a GPU compiler fuses the two
+           into a multiply-add, as spirv-opt does only for scalars); a negation or an absolute
+           value is not counted either, being a free operand modifier on GPUs
   texture  texture reads (samples, fetches, gathers)
   branch   conditional branches and discards
 
@@ -35,17 +38,20 @@ PROGRAMS = [
     ("hard, quarter res", "fs_particles_hard.glsl", ["FX_LINEAR_DEPTH_TEST", "FX_HALF_RES_DEPTH"], 16, 2),
     ("soft, power 1", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2"], 20, 2),
     ("soft, power 2", "fs_particles_soft.glsl", ["FX_POWER_STEPS 4"], 27, 2),
-    ("soft, any power", "fs_particles_soft.glsl", ["FX_GENERAL_POWER"], 28, 2),
+    ("soft, any power", "fs_particles_soft.glsl", ["FX_GENERAL_POWER"], 30, 2),
     ("soft, power 1, quarter res", "fs_particles_soft.glsl", ["FX_HALF_RES_DEPTH", "FX_POWER_STEPS 2"], 16, 2),
     ("spherical", "fs_particles_spherical.glsl", ["FX_SPHERICAL"], 51, 2),
     ("spherical, quarter res", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_HALF_RES_DEPTH"], 46, 2),
-    ("hard, lit", "fs_particles_hard.glsl", ["FX_LIT"], 50, 1),
-    ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 59, 2),
-    ("spherical, lit", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_LIT"], 98, 2),
+    ("hard, lit", "fs_particles_hard.glsl", ["FX_LIT"], 53, 1),
+    ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 62, 2),
+    ("spherical, lit", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_LIT"], 92, 2),
 ]
 
 ALU = re.compile(r"= Op(F[A-Z]\w*|I[A-Z]\w*|S[A-Z][a-z]*Div|ExtInst|Select|VectorTimesScalar|Dot|Logical\w*|"
                  r"Convert\w+|BitwiseAnd|BitwiseOr|ShiftRightArithmetic|ShiftLeftLogical|Any|All|Not)\b")
+# GLSL built-ins that are more than one operation a component: (per component, once).
+EXT_COST = {"FMix": (2, 0), "Normalize": (2, 1), "Length": (1, 1), "Distance": (2, 1),
+            "Pow": (3, 0), "Exp": (2, 0), "Log": (2, 0), "Cross": (2, 0), "SmoothStep": (5, 0)}
 MODIFIER = re.compile(r"= Op(FNegate|SNegate|ExtInst %\w+ %\w+ (FAbs|SAbs))\b")
 TEXTURE = re.compile(r"= OpImage(Sample|Fetch|Gather)\w*")
 BRANCH = re.compile(r"\bOp(BranchConditional|Kill)\b")
@@ -91,12 +97,29 @@ def count(fragment, defines):
         m = re.match(r"\s*(%\w+) = Op\w+ (%\w+)", line)
         if m:
             typeOf[m.group(1)] = m.group(2)
-    alu = texture = branch = 0
+    # Multiplies whose result one add or subtract uses, and nothing else: that add is fused.
+    products = {m.group(1) for m in (re.match(r"\s*(%\w+) = Op(FMul|VectorTimesScalar) ", line)
+                                     for line in text) if m}
+    uses = {}
+    for line in text:
+        for operand in re.findall(r"%\w+", line.split("=", 1)[1] if " = " in line else line):
+            uses[operand] = uses.get(operand, 0) + 1
+    fused = 0
+    for line in text:
+        m = re.match(r"\s*%\w+ = Op(FAdd|FSub) (%\w+) (%\w+) (%\w+)", line)
+        if m and any(o in products and uses.get(o) == 1 for o in (m.group(3), m.group(4))):
+            fused += width.get(m.group(2), 1)
+    alu = -fused
+    texture = branch = 0
     for line in text:
         if ALU.search(line) and not MODIFIER.search(line):
             m = re.match(r"\s*%\w+ = Op(\w+) (%\w+)(?: (%\w+))?", line)
+            ext = re.search(r"= OpExtInst %\w+ %\w+ (\w+) (%\w+)", line)
             if m and m.group(1) == "Dot":
                 alu += width.get(typeOf.get(m.group(3)), 1)
+            elif ext and ext.group(1) in EXT_COST:
+                each, once = EXT_COST[ext.group(1)]
+                alu += each * width.get(typeOf.get(ext.group(2)), 1) + once
             else:
                 alu += width.get(m.group(2), 1) if m else 1
         if TEXTURE.search(line):
