@@ -42,9 +42,9 @@ PROGRAMS = [
     ("soft, power 1, quarter res", "fs_particles_soft.glsl", ["FX_HALF_RES_DEPTH", "FX_POWER_STEPS 2"], 16, 2),
     ("spherical", "fs_particles_spherical.glsl", ["FX_SPHERICAL"], 51, 2),
     ("spherical, quarter res", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_HALF_RES_DEPTH"], 46, 2),
-    ("hard, lit", "fs_particles_hard.glsl", ["FX_LIT"], 53, 1),
-    ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 62, 2),
-    ("spherical, lit", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_LIT"], 92, 2),
+    ("hard, lit", "fs_particles_hard.glsl", ["FX_LIT"], 42, 1),
+    ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 51, 2),
+    ("spherical, lit", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_LIT"], 81, 2),
 ]
 
 ALU = re.compile(r"= Op(F[A-Z]\w*|I[A-Z]\w*|S[A-Z][a-z]*Div|ExtInst|Select|VectorTimesScalar|Dot|Logical\w*|"

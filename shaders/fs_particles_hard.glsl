@@ -17,7 +17,7 @@ void main() {
     coverage *= -vViewPos.z <= sceneDepthAt(gl_FragCoord.xy) ? 1.0 : 0.0;
 #endif
 #ifdef FX_LIT
-    texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vTurn), texel.a, vSunLight, vPhase);
+    texel.rgb = texel.bbb * smokeLight(sunCosine(billboardNormal(texel, vTurn)), texel.a, vSunLight, vPhase);
 #endif
     oColor = shadeOutput(vTint, vFogAdd, texel.rgb, coverage);
 }

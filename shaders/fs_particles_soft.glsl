@@ -18,7 +18,7 @@ void main() {
     float fade = softFade(sceneDepthTexelAt(gl_FragCoord.xy), vFadeLine);
     float coverage = texel.a * fade;  // the near fade is in vTint (a billboard lies at one depth)
 #ifdef FX_LIT
-    texel.rgb = texel.bbb * smokeLight(billboardNormal(texel, vTurn), texel.a, vSunLight, vPhase);
+    texel.rgb = texel.bbb * smokeLight(sunCosine(billboardNormal(texel, vTurn)), texel.a, vSunLight, vPhase);
 #endif
     oColor = shadeOutput(vTint, vFogAdd, texel.rgb, coverage);
 }

@@ -55,11 +55,13 @@ void main() {
     // shader discards already, so no early test is lost.
     if (coverage == 0.0) discard;
 #ifdef FX_LIT
-    // The sphere's normal where the visible chord starts, bent by the atlas's normal map.
-    vec3 entry = vec3(slope, -1.0) * z0;
+    // The sphere's normal where the visible chord starts, bent by the atlas's normal map:
+    // (entry - centre) / r + 0.6 s (turned bumps, 0), times r (sunCosine takes any length), with
+    // vTurn the angle's (cos, sin) times 0.6 s r (the vertex shader's, in lit programs).
     vec3 bumps = atlasNormal(texel);
-    vec3 n = normalize((entry - centre) / r + uNormalStrength * 0.6 * vec3(turnBack(bumps.xy, vTurn), 0.0));
-    texel.rgb = texel.bbb * smokeLight(n, texel.a, vSunLight, vPhase);
+    vec2 bent = turnBack(bumps.xy, vTurn);
+    vec3 m = vec3(slope.x * z0 - centre.x + bent.x, slope.y * z0 - centre.y + bent.y, -z0 - centre.z);
+    texel.rgb = texel.bbb * smokeLight(sunCosine(m), texel.a, vSunLight, vPhase);
 #endif
     // Fogged at the sphere's centre (particleFog): the middle of the chord through it.
     oColor = shadeOutput(vTint, vFogAdd, texel.rgb, coverage);

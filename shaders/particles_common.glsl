@@ -248,19 +248,27 @@ const float kWrap = 0.5;      // diffuse wrap: light reaches 1/3 of the way roun
 
 // The atlas normal of a lit-atlas texel in particle space (x right, y up, z toward the viewer;
 // the normal map only holds normals facing the viewer, so z is the rest of unit length).
-// (0, 0, 1) where the puff is empty (x = y = 0 there).
+// (0, 0, 1) where the puff is empty (x = y = 0 there). 128 + 127 n decoded as one multiply-add.
 vec3 atlasNormal(vec4 litTexel) {
-    vec2 xy = (litTexel.rg * 255.0 - 128.0) / 127.0;
-    return vec3(xy, sqrt(max(1.0 - dot(xy, xy), 0.0)));
+    float x = litTexel.r * (255.0 / 127.0) - 128.0 / 127.0;
+    float y = litTexel.g * (255.0 / 127.0) - 128.0 / 127.0;
+    return vec3(x, y, sqrt(max(1.0 - x * x - y * y, 0.0)));
 }
 
-// A billboard's shading normal in view space: the atlas normal turned with the sprite (texture
-// axes are the screen axes rotated by the particle's angle, whose (cos, sin) is `turn`), against
-// a flat card facing the camera.
+// A billboard's shading normal in view space, not normalised (sunCosine normalises it): the
+// atlas normal turned with the sprite (texture axes are the screen axes rotated by the
+// particle's angle), mixed by the normal strength s with a flat card facing the camera. `turn`
+// is the angle's (cos, sin) times s (the vertex shader's vTurn in lit programs), so the mix's
+// x and y are the turn alone: (s turned.xy, 1 + s (n.z - 1)).
 vec3 billboardNormal(vec4 litTexel, vec2 turn) {
     vec3 n = atlasNormal(litTexel);
-    vec3 turned = vec3(turnBack(n.xy, turn), n.z);
-    return normalize(mix(vec3(0.0, 0.0, 1.0), turned, uNormalStrength));
+    return vec3(turnBack(n.xy, turn), 1.0 + uNormalStrength * (n.z - 1.0));
+}
+
+// The cosine between the normal `m` (any positive length) and the sun: light only needs the
+// normal through this, so it is never normalised on its own.
+float sunCosine(vec3 m) {
+    return dot(m, uSunView) * inversesqrt(dot(m, m));
 }
 
 // Optical depth of the smoke between view-space point `p` and the sun. The four channels are
@@ -294,12 +302,14 @@ vec3 sunThroughSmoke(vec3 p) {
     return uSunColor * exp(-uAbsorption * opticalDepthToSun(p));
 }
 
-// Light arriving at a smoke pixel of normal `n` (view space) whose opacity is `density`:
+// Light arriving at a smoke pixel whose normal makes `cosSun` with the sun (sunCosine) and whose
+// opacity is `density`:
 // ambient + the sun through the smoke x (the diffuse and scattered shares). `sunLight` and
 // `phase` come from the vertex shader (sunThroughSmoke, phaseHG).
-vec3 smokeLight(vec3 n, float density, vec3 sunLight, float phase) {
-    float diffuse = clamp((dot(n, uSunView) + kWrap) / (1.0 + kWrap), 0.0, 1.0);
+vec3 smokeLight(float cosSun, float density, vec3 sunLight, float phase) {
+    float diffuse = clamp(cosSun * (1.0 / (1.0 + kWrap)) + kWrap / (1.0 + kWrap), 0.0, 1.0);
     float thin = 1.0 - 0.6 * density;  // thin edges pass more forward-scattered light
-    return uAmbient + sunLight * mix(diffuse, phase * thin, uScattering);
+    float lit = diffuse + uScattering * (phase * thin - diffuse);  // mix(diffuse, phase thin, scattering)
+    return uAmbient + sunLight * lit;
 }
 #endif

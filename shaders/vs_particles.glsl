@@ -201,6 +201,14 @@ void main() {
 #endif
     vSunLight = sunThroughSmoke(lightAt);
     vPhase = phaseHG(lightAt);
+    // The fragment bends its normal by the atlas's, turned by vTurn: the normal strength (and for
+    // spheres the bump scale 0.6 and the radius) go in here, once (billboardNormal, the
+    // spherical fragment shader).
+#ifdef FX_SPHERICAL
+    vTurn *= uNormalStrength * 0.6 * radius;
+#else
+    vTurn *= uNormalStrength;
+#endif
 #endif
     gl_Position = uProj * vec4(viewPos, 1.0);
 }
