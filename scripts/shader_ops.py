@@ -9,7 +9,8 @@ SPIR-V by glslang and optimised by spirv-opt -O, then its operations counted:
            a multiply's result used nowhere else is not counted (a GPU compiler fuses the two
            into a multiply-add, as spirv-opt does only for scalars); a negation or an absolute
            value is not counted either, being a free operand modifier on GPUs
-  texture  texture reads (samples, fetches, gathers)
+  texture  texture reads (samples, fetches, gathers) and size queries (a GPU's texture unit
+           answers those too)
   branch   conditional branches and discards
 
 A GPU compiler makes its own code from the same source, so the counts are a yardstick between
@@ -33,6 +34,7 @@ SHADERS = ROOT / "shaders"
 
 # (name, fragment shader, defines as ProgramCache::Key::defines() writes them, budget alu,
 # budget texture reads). Soft is built per contrast power: FX_POWER_STEPS = 2 x power.
+GATHER = "#extension GL_ARB_texture_gather : require"
 PROGRAMS = [
     ("hard", "fs_particles_hard.glsl", [], 11, 1),
     ("hard, quarter res", "fs_particles_hard.glsl", ["FX_LINEAR_DEPTH_TEST", "FX_HALF_RES_DEPTH"], 16, 2),
@@ -45,6 +47,12 @@ PROGRAMS = [
     ("hard, lit", "fs_particles_hard.glsl", ["FX_LIT"], 42, 1),
     ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 51, 2),
     ("spherical, lit", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_LIT"], 81, 2),
+    # Quarter res's fixed passes as a GL 4 context builds them (ProgramCache::Key::defines): the
+    # depth downsample (per half-res texel), the composite (per pixel of its tiles; the counts
+    # take every side of its branches: a smoke-free pixel stops after the first fetch, one
+    # without a depth edge after the gather).
+    ("quarter res: downsample", "fs_particles_depth_downsample.glsl", [GATHER, "FX_GATHER"], 58, 2),
+    ("quarter res: composite", "fs_particles_composite.glsl", [GATHER, "FX_GATHER"], 96, 5),
 ]
 
 ALU = re.compile(r"= Op(F[A-Z]\w*|I[A-Z]\w*|S[A-Z][a-z]*Div|ExtInst|Select|VectorTimesScalar|Dot|Logical\w*|"
@@ -53,7 +61,7 @@ ALU = re.compile(r"= Op(F[A-Z]\w*|I[A-Z]\w*|S[A-Z][a-z]*Div|ExtInst|Select|Vecto
 EXT_COST = {"FMix": (2, 0), "Normalize": (2, 1), "Length": (1, 1), "Distance": (2, 1),
             "Pow": (3, 0), "Exp": (2, 0), "Log": (2, 0), "Cross": (2, 0), "SmoothStep": (5, 0)}
 MODIFIER = re.compile(r"= Op(FNegate|SNegate|ExtInst %\w+ %\w+ (FAbs|SAbs))\b")
-TEXTURE = re.compile(r"= OpImage(Sample|Fetch|Gather)\w*")
+TEXTURE = re.compile(r"= OpImage(Sample|Fetch|Gather|Query)\w*")
 BRANCH = re.compile(r"\bOp(BranchConditional|Kill)\b")
 
 
@@ -70,7 +78,8 @@ def source(fragment, defines):
     lines = inline(SHADERS / fragment).split("\n")
     if not lines[0].startswith("#version"):
         sys.exit(f"shader_ops.py: {fragment}: expected #version on its first line")
-    return "\n".join([lines[0]] + ["#define " + d for d in defines] + lines[1:]) + "\n"
+    # A define given with its directive (an #extension line) is written as it is.
+    return "\n".join([lines[0]] + [d if d.startswith("#") else "#define " + d for d in defines] + lines[1:]) + "\n"
 
 
 def count(fragment, defines):

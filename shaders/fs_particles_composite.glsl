@@ -26,19 +26,24 @@ uniform sampler2D uHalfColor;   // premultiplied RGBA8 (RGBA16F with spheres), h
 uniform sampler2D uHalfDepth;   // red: min depth per 2x2 block (RG32F, green the max)
 uniform sampler2D uSceneDepth;  // full-res scene depth (particles_scene_depth.glsl)
 uniform float uDepthThreshold;  // relative: |low - full| > threshold * full is an edge
+// The footprint as a line in gl_FragCoord, worked out once per draw (QuarterResPath::composite),
+// so a fragment pays two multiply-adds for it and no size query, conversion or division:
+// uLowMap maps the view pixel p = gl_FragCoord - uDrawOrigin into the half-res image,
+// lowPos = p lowSize / viewSize - 0.5 (in texels past the first tap's centre, as
+// particles_footprint.glsl's lowResFootprint). Its bilinear coordinate is (lowPos + 0.5) / lowSize.
+// (Folding that into a second line saves two operations, but on llvmpipe, whose filter takes
+// the coordinate rounded differently, the composite pass then took 12 % longer, same pixels.)
+uniform vec4 uLowMap;           // lowPos = gl_FragCoord.xy * xy + zw
+uniform vec2 uInvLow;           // 1 / lowSize
+uniform vec4 uDepthUv;          // the scene depth texel's coordinate = gl_FragCoord.xy * zw + xy (SceneDepthSource.cpp)
 #include "particles_scene_depth.glsl"
-#include "particles_footprint.glsl"
 
 layout(location = 0) out vec4 oColor;
 
 void main() {
-    ivec2 lowSize = textureSize(uHalfColor, 0);
-    vec2 invLow = 1.0 / vec2(lowSize);
-    ivec2 base, last;
-    vec2 f;
-    vec2 pixel = fragmentFootprint(lowSize, base, f, last);
-    // The bilinear colour of the footprint: (base + f + 0.5) / lowSize.
-    vec4 bilinear = textureLod(uHalfColor, (vec2(base) + f + 0.5) * invLow, 0.0);
+    // The bilinear colour of the footprint.
+    vec2 lowPos = gl_FragCoord.xy * uLowMap.xy + uLowMap.zw;
+    vec4 bilinear = textureLod(uHalfColor, (lowPos + 0.5) * uInvLow, 0.0);
     // No smoke in the footprint (premultiplied, so additive smoke with alpha 0 still counts; every
     // channel is >= 0 and every weight > 0, so the blend is 0 exactly when all four texels are):
     // blending it would leave the pixel as it is, so it is not blended at all. Inside the tiles
@@ -51,16 +56,18 @@ void main() {
 #else
     // This pixel's depth texel, read at its centre through the nearest sampler (the texel
     // texelFetch reads, which a CPU rasteriser bounds-checks lane by lane); nothing drawn: 3.0e38.
-    vec2 depthUv = (vec2(sceneDepthTexel(ivec2(pixel))) + 0.5) / vec2(textureSize(uSceneDepth, 0));
-    float full = linearSceneDepth(textureLod(uSceneDepth, depthUv, 0.0).r);
+    float full = linearSceneDepth(textureLod(uSceneDepth, gl_FragCoord.xy * uDepthUv.zw + uDepthUv.xy, 0.0).r);
     float limit = uDepthThreshold * full;
+    // The footprint's first tap (base) and how far past it the pixel lies (f), in texels.
+    vec2 base = floor(lowPos);
     // Depths of the taps t0 = base, t1 = base + (1, 0), t2 = base + (0, 1), t3 = base + (1, 1),
     // each clamped into the image. Gathered at the corner the four share: the footprint cannot
     // round to a neighbouring one there, and clamping to the edge clamps the taps.
 #ifdef FX_GATHER
-    vec4 low = textureGather(uHalfDepth, (vec2(base) + 1.0) * invLow).wzxy;
+    vec4 low = textureGather(uHalfDepth, (base + 1.0) * uInvLow).wzxy;
 #else
-    ivec2 t0 = clamp(base, ivec2(0), last), t3 = clamp(base + ivec2(1), ivec2(0), last);
+    ivec2 last = textureSize(uHalfColor, 0) - 1;
+    ivec2 t0 = clamp(ivec2(base), ivec2(0), last), t3 = clamp(ivec2(base) + ivec2(1), ivec2(0), last);
     vec4 low = vec4(texelFetch(uHalfDepth, t0, 0).r, texelFetch(uHalfDepth, ivec2(t3.x, t0.y), 0).r,
                     texelFetch(uHalfDepth, ivec2(t0.x, t3.y), 0).r, texelFetch(uHalfDepth, t3, 0).r);
 #endif
@@ -72,6 +79,7 @@ void main() {
     }
     // On an edge, keep the bilinear weights of the texels on this pixel's side of it,
     // renormalised; only when none is, the single nearest-depth texel (the first of equal ones).
+    vec2 f = lowPos - base;
     vec4 w = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
     vec4 kept = mix(vec4(0.0), w, inside);
     if (kept.x + kept.y + kept.z + kept.w <= 1e-3) {
@@ -83,8 +91,8 @@ void main() {
     // texels' weighted centre; a row that keeps none is fetched anyway, at weight 0.
     vec2 rowWeight = vec2(kept.x + kept.y, kept.z + kept.w);
     vec2 rowX = vec2(rowWeight.x > 0.0 ? kept.y / rowWeight.x : 0.0, rowWeight.y > 0.0 ? kept.w / rowWeight.y : 0.0);
-    vec4 row0 = textureLod(uHalfColor, (vec2(base) + vec2(0.5 + rowX.x, 0.5)) * invLow, 0.0);
-    vec4 row1 = textureLod(uHalfColor, (vec2(base) + vec2(0.5 + rowX.y, 1.5)) * invLow, 0.0);
+    vec4 row0 = textureLod(uHalfColor, (base + vec2(0.5 + rowX.x, 0.5)) * uInvLow, 0.0);
+    vec4 row1 = textureLod(uHalfColor, (base + vec2(0.5 + rowX.y, 1.5)) * uInvLow, 0.0);
     oColor = (rowWeight.x * row0 + rowWeight.y * row1) / (rowWeight.x + rowWeight.y);
 #endif
 }

@@ -159,9 +159,19 @@ void QuarterResPath::composite(PassContext& ctx, const ParticleView& v, Target s
     glUniform1i(c.halfColor, 0);
     glUniform1i(c.halfDepth, 1);
     glUniform1i(c.sceneDepth, 2);
-    setSceneDepthDecode(c.decode, decode.placedFor(depthRef, v.view, true));  // drawn into sceneColor
+    const SceneDepthDecode placed = decode.placedFor(depthRef, v.view, true);  // drawn into sceneColor
+    setSceneDepthDecode(c.decode, placed);
     sceneDepthBarrier(decode);
     glUniform1f(c.threshold, kDepthThreshold);
+    // The footprint's line in gl_FragCoord (fs_particles_composite.glsl): worked out here once,
+    // not per fragment.
+    const TextureRef halfRef = ctx.texture(halfColor, 0);
+    const glm::vec2 invLow = 1.0f / glm::vec2(float(halfRef.width), float(halfRef.height));
+    const glm::vec2 scale = glm::vec2(float(halfRef.width), float(halfRef.height)) /
+                            glm::vec2(float(v.view.width), float(v.view.height));
+    const glm::vec2 origin = -glm::vec2(placed.drawOrigin) * scale;
+    glUniform4f(c.lowMap, scale.x, scale.y, origin.x - 0.5f, origin.y - 0.5f);
+    glUniform2f(c.invLow, invLow.x, invLow.y);
     p.drawTiles(c.viewSize, v.tiles);
 }
 

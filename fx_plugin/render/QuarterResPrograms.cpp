@@ -31,7 +31,8 @@ void QuarterResPrograms::bind(const ProgramCache& programs) {
                                    {&c.sceneDepth, "uSceneDepth"}, {&c.threshold, "uDepthThreshold"},
                                    {&c.viewSize, "uViewSize"},
                                    {&c.decode.coeffs, "uDepthCoeffs"},
-                                   {&c.decode.window, "uDepthWindow"}, {&c.decode.drawOrigin, "uDrawOrigin"}});
+                                   {&c.decode.window, "uDepthWindow"}, {&c.decode.drawOrigin, "uDrawOrigin"},
+                                   {&c.decode.uv, "uDepthUv"}, {&c.lowMap, "uLowMap"}, {&c.invLow, "uInvLow"}});
     }
     if (!tileVao_) {
         glGenVertexArrays(1, &tileVao_);

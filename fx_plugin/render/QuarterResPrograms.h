@@ -49,6 +49,7 @@ struct QuarterResPrograms {
     struct CompositeProgram {
         uint32_t program = 0;
         int halfColor = -1, halfDepth = -1, sceneDepth = -1, threshold = -1, viewSize = -1;
+        int lowMap = -1, invLow = -1;  ///< the footprint's line (fs_particles_composite.glsl)
         SceneDepthUniforms decode;
     };
     CompositeProgram composite[CompositeVariantCount];
