@@ -51,7 +51,7 @@ PROGRAMS = [
     # depth downsample (per half-res texel), the composite (per pixel of its tiles; the counts
     # take every side of its branches: a smoke-free pixel stops after the first fetch, one
     # without a depth edge after the gather).
-    ("quarter res: downsample", "fs_particles_depth_downsample.glsl", [GATHER, "FX_GATHER"], 58, 2),
+    ("quarter res: downsample", "fs_particles_depth_downsample.glsl", [GATHER, "FX_GATHER"], 40, 1),
     ("quarter res: composite", "fs_particles_composite.glsl", [GATHER, "FX_GATHER"], 96, 5),
 ]
 

@@ -10,6 +10,12 @@
 // edge-clamped sampler.
 #include "particles_scene_depth.glsl"
 uniform sampler2D uSceneDepth;  // full resolution: the z-buffer or linear R32F (particles_scene_depth.glsl)
+// FX_GATHER: the block's corner as a texture coordinate, a line in gl_FragCoord set once per draw
+// (QuarterResPath::downsampleDepth): the half-res texel i (gl_FragCoord i + 0.5) covers view pixels
+// 2i and 2i + 1, whose shared corner is 2 gl_FragCoord in view pixels, plus the view's texel
+// origin (uDepthWindow.xy), over the texture's size. No size query, conversion or division.
+uniform vec4 uCornerUv;         // corner = gl_FragCoord.xy * xy + zw
+uniform vec2 uViewSize;         // the view's full-res size (vs_particles_tiles.glsl's)
 
 layout(location = 0) out vec4 oDepth;
 
@@ -19,21 +25,21 @@ float sceneDepth(ivec2 p) {
 }
 
 void main() {
+#ifdef FX_GATHER
+    // (2i, 2i + x, 2i + y, 2i + x + y). Past the view's last row or column (an odd size n: the
+    // last texel, where 2 gl_FragCoord = 2i + 1 >= n) the gather reads the texel beyond it, which
+    // may be another view's: the clamped texel is 2i's own.
+    vec4 g = textureGather(uSceneDepth, gl_FragCoord.xy * uCornerUv.xy + uCornerUv.zw).wzxy;
+    if (2.0 * gl_FragCoord.x >= uViewSize.x) g.yw = g.xz;
+    if (2.0 * gl_FragCoord.y >= uViewSize.y) g.zw = g.xy;
+    float a = linearSceneDepth(g.x), b = linearSceneDepth(g.y);
+    float c = linearSceneDepth(g.z), d = linearSceneDepth(g.w);
+#else
     ivec2 fullSize = sceneDepthViewSize();  // the view's pixels, wherever it lies in the texture
     ivec2 last = fullSize - 1;
     // Texel i covers full-res pixels 2i and 2i + 1 (an odd last row/column is clamped).
     ivec2 p = min(ivec2(gl_FragCoord.xy) * 2, last);
     ivec2 q = min(p + 1, last);
-#ifdef FX_GATHER
-    // (p, p + x, p + y, p + x + y). Past the view's last row or column (an odd size) the gather
-    // reads the texel beyond it, which may be another view's: the clamped texel is p's own.
-    vec2 corner = vec2(sceneDepthTexel(p)) + 1.0;
-    vec4 g = textureGather(uSceneDepth, corner / vec2(textureSize(uSceneDepth, 0))).wzxy;
-    if (q.x == p.x) g.yw = g.xz;
-    if (q.y == p.y) g.zw = g.xy;
-    float a = linearSceneDepth(g.x), b = linearSceneDepth(g.y);
-    float c = linearSceneDepth(g.z), d = linearSceneDepth(g.w);
-#else
     float a = sceneDepth(p), b = sceneDepth(ivec2(q.x, p.y));
     float c = sceneDepth(ivec2(p.x, q.y)), d = sceneDepth(q);
 #endif

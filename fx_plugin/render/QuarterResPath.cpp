@@ -99,8 +99,13 @@ void QuarterResPath::downsampleDepth(PassContext& ctx, const ParticleView& v, Ta
     const TextureRef depthRef = ctx.texture(sceneDepth, 0);
     p.hostDepth.bindTexture(0, depthRef.name);
     glUniform1i(p.downsampleDepthLoc, 0);
-    setSceneDepthDecode(p.downsampleDecode, decode.placedFor(depthRef, v.view, false));
+    const SceneDepthDecode placed = decode.placedFor(depthRef, v.view, false);
+    setSceneDepthDecode(p.downsampleDecode, placed);
     sceneDepthBarrier(decode);
+    // The block's corner as a line in gl_FragCoord (fs_particles_depth_downsample.glsl).
+    const glm::vec2 inv = 1.0f / glm::vec2(float(depthRef.width), float(depthRef.height));
+    glUniform4f(p.downsampleCornerLoc, 2.0f * inv.x, 2.0f * inv.y, float(placed.texel.x) * inv.x,
+                float(placed.texel.y) * inv.y);
     p.drawTiles(p.downsampleViewLoc, v.tiles);
 }
 

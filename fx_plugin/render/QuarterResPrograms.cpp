@@ -16,6 +16,7 @@ void QuarterResPrograms::bind(const ProgramCache& programs) {
     halfColorSampler.create();
     downsample = programs.passProgram(ProgramCache::DepthDownsample);
     locateUniforms(downsample, {{&downsampleDepthLoc, "uSceneDepth"}, {&downsampleViewLoc, "uViewSize"},
+                                {&downsampleCornerLoc, "uCornerUv"},
                                 {&downsampleDecode.coeffs, "uDepthCoeffs"},
                                 {&downsampleDecode.window, "uDepthWindow"},
                                 {&downsampleDecode.drawOrigin, "uDrawOrigin"}});

@@ -40,7 +40,7 @@ struct QuarterResPrograms {
     NearestSampler hostDepth;  ///< the host's scene depth and the half-res depth, read whatever sampling was set
     ClampSampler halfColorSampler{ClampSampler::Filter::Linear};  ///< the composite's half-res colour, filtered
     uint32_t downsample = 0;
-    int downsampleDepthLoc = -1, downsampleViewLoc = -1;
+    int downsampleDepthLoc = -1, downsampleViewLoc = -1, downsampleCornerLoc = -1;
     SceneDepthUniforms downsampleDecode;
     uint32_t halfZ = 0;
     int halfZDepthLoc = -1, halfZFromLinearLoc = -1, halfZFarLoc = -1, halfZViewLoc = -1;
