@@ -68,6 +68,16 @@ variants = {
                        "    oColor = shadeOutput(vTint, vFogAdd, texel.rgb, coverage);")
                       for f in ("fs_particles_hard.glsl", "fs_particles_soft.glsl")],
 }
+# What one operation costs a fragment: hard with 16 dependent multiply-adds more, which the
+# compiler cannot fold (they go through a uniform it does not know, left at its default 0) and
+# which add exactly 0 to the coverage, so the picture is the same bit for bit. Its pass time over
+# hard's, divided by 16, is the slope to read the counts of scripts/shader_ops.py by.
+chain = "".join("    ops = ops * uShaderPartsZero + vAtlasUV.y;\n" for _ in range(16))
+variants["hard-16-ops"] = [
+    ("fs_particles_hard.glsl", "    float coverage = texel.a;",
+     "    float ops = vAtlasUV.x;\n" + chain + "    float coverage = texel.a + ops * uShaderPartsZero;"),
+    ("fs_particles_hard.glsl", "layout(location = 0) out vec4 oColor;",
+     "layout(location = 0) out vec4 oColor;\nuniform float uShaderPartsZero;")]
 # The same discard, but for soft before its scene-depth fetch (where the atlas alone already
 # says the output is 0): whether a GPU then skips the fetch for those 11 %.
 variants["soft-empty-before-fetch"] = [
@@ -79,7 +89,7 @@ PY
 }
 
 # The variants that only try a cheaper way to the same picture.
-same_picture=(depth-texelfetch discard-empty soft-empty-before-fetch)
+same_picture=(depth-texelfetch discard-empty soft-empty-before-fetch hard-16-ops)
 
 # fxbench over the modes the variants touch, with the shaders of variant $2 of the copies in $1
 # ("now": the shaders built into fxbench); the rest: fxbench options.
