@@ -23,7 +23,7 @@ void main() {
     // which cancels catastrophically for a small sphere far away).
     vec2 slope = vSlope;
     vec3 centre = vSphere.xyz;
-    float r = vSphere.w;
+    float r2 = vSphere.w;  // the radius squared
     float invLen2 = 1.0 / (1.0 + slope.x * slope.x + slope.y * slope.y);
     float tMid = (centre.x * slope.x + centre.y * slope.y - centre.z) * invLen2;  // depth of the closest approach
     vec2 offset = vec2(slope.x * tMid - centre.x, slope.y * tMid - centre.y);  // the closest approach minus the centre (x, y)
@@ -39,9 +39,9 @@ void main() {
                    vAtlasBase.y + offset.x * vAtlasMap.z + offset.y * vAtlasMap.w);  // sphereAtlasMap
     vec4 texel = texture(uAtlas, uv);
     float sceneZ = sceneDepthAt(gl_FragCoord.xy);
-    if (d2 >= r * r) discard;
+    if (d2 >= r2) discard;
 
-    float halfDepth = sqrt((r * r - d2) * invLen2);
+    float halfDepth = sqrt((r2 - d2) * invLen2);
     float z0 = max(tMid - halfDepth, uNear);
     float z1 = min(tMid + halfDepth, sceneZ);
     float visible = clamp((z1 - z0) / (2.0 * halfDepth), 0.0, 1.0);

@@ -13,7 +13,7 @@ flat FX_VARYING vec4 vTint;     // the particle's colour, opacity, blend and fog
 flat FX_VARYING vec3 vFogAdd;   // the fog colour its coverage adds (particleTint)
 flat FX_VARYING float vOpacity; // ramp alpha x life fade: its share of the smoke's opacity map
 flat FX_VARYING vec2 vCell;     // atlas coordinate of the frame's corner (atlasCell)
-flat FX_VARYING vec4 vSphere;   // spherical: view-space centre, radius
+flat FX_VARYING vec4 vSphere;   // spherical: view-space centre, radius squared
 flat FX_VARYING vec2 vTurn;     // (cos, sin) of the particle's angle
 flat FX_VARYING vec4 vAtlasMap;  // spherical: the atlas coordinate as an affine map of the offset (sphereAtlasMap)
 flat FX_VARYING vec2 vAtlasBase;

@@ -157,7 +157,7 @@ void main() {
     }
     vec3 viewPos = vec3(slope * quadDepth, -quadDepth);
     vSlope = slope;
-    vSphere = vec4(centre, radius);
+    vSphere = vec4(centre, radius * radius);
     sphereAtlasMap(vTurn, radius, vCell, vAtlasMap, vAtlasBase);
     vLocal = vec2(0.0);
     vAtlasUV = vec2(0.0);
