@@ -53,6 +53,7 @@ PROGRAMS = [
     # without a depth edge after the gather).
     ("quarter res: downsample", "fs_particles_depth_downsample.glsl", [GATHER, "FX_GATHER"], 40, 1),
     ("quarter res: composite", "fs_particles_composite.glsl", [GATHER, "FX_GATHER"], 96, 5),
+    ("mega: composite", "fs_mega_composite.glsl", [GATHER, "FX_GATHER"], 53, 3),
 ]
 
 ALU = re.compile(r"= Op(F[A-Z]\w*|I[A-Z]\w*|S[A-Z][a-z]*Div|ExtInst|Select|VectorTimesScalar|Dot|Logical\w*|"

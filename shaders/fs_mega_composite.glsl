@@ -14,27 +14,33 @@ uniform sampler2D uCloudDepth;  // R32F metres, 0 = no cloud
 uniform sampler2D uSceneDepth;  // full resolution: the z-buffer or linear R32F
 #include "particles_scene_depth.glsl"
 uniform float uSoftScale;       // 1 / render.softness, 1/m
-#include "particles_footprint.glsl"
+// The bilinear footprint as a line in gl_FragCoord, set once per draw (MegaPasses.cpp), as the
+// quarter-res composite takes it: lowPos = p lowSize / viewSize - 0.5 for the view pixel p, in
+// texels past the first tap's centre (the tap floor(lowPos), the weights lowPos - floor(lowPos)),
+// with no size query, conversion or division per pixel.
+uniform vec4 uLowMap;           // lowPos = gl_FragCoord.xy * xy + zw
+uniform vec2 uInvLow;           // 1 / the cloud's size
+uniform ivec2 uLowLast;         // the cloud's last texel
 
 layout(location = 0) out vec4 oColor;
 
 void main() {
-    ivec2 lowSize = textureSize(uCloud, 0);
-    ivec2 base, last;
-    vec2 f;
-    vec2 pixel = fragmentFootprint(lowSize, base, f, last);
+    vec2 lowPos = gl_FragCoord.xy * uLowMap.xy + uLowMap.zw;
+    vec2 corner = floor(lowPos);
+    ivec2 base = ivec2(corner), last = uLowLast;
+    vec2 f = lowPos - corner;
     // The four taps' cloud depths (t0 = base, t1 = +x, t2 = +y, t3 = +x+y, each clamped into the
     // image): one textureGather at the corner they share, through an edge-clamped sampler
     // (FX_GATHER: the context has ARB_texture_gather), else four texelFetch. A footprint without
     // cloud adds nothing: the pixel is discarded before its colour and scene-depth fetches.
 #ifdef FX_GATHER
-    vec4 cloud = textureGather(uCloudDepth, (vec2(base) + 1.0) / vec2(lowSize)).wzxy;
+    vec4 cloud = textureGather(uCloudDepth, (corner + 1.0) * uInvLow).wzxy;
 #else
     vec4 cloud;
     for (int i = 0; i < 4; ++i) cloud[i] = texelFetch(uCloudDepth, clamp(base + ivec2(i & 1, i >> 1), ivec2(0), last), 0).r;
 #endif
     if (all(lessThanEqual(cloud, vec4(0.0)))) discard;
-    float scene = linearSceneDepth(texelFetch(uSceneDepth, sceneDepthTexel(ivec2(pixel)), 0).r);  // nothing drawn: 3.0e38
+    float scene = linearSceneDepth(texelFetch(uSceneDepth, sceneDepthTexel(ivec2(viewPixelOf(gl_FragCoord.xy))), 0).r);  // nothing drawn: 3.0e38
     vec4 sum = vec4(0.0);
     for (int i = 0; i < 4; ++i) {
         ivec2 o = ivec2(i & 1, i >> 1);

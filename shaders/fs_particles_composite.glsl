@@ -29,8 +29,9 @@ uniform float uDepthThreshold;  // relative: |low - full| > threshold * full is 
 // The footprint as a line in gl_FragCoord, worked out once per draw (QuarterResPath::composite),
 // so a fragment pays two multiply-adds for it and no size query, conversion or division:
 // uLowMap maps the view pixel p = gl_FragCoord - uDrawOrigin into the half-res image,
-// lowPos = p lowSize / viewSize - 0.5 (in texels past the first tap's centre, as
-// particles_footprint.glsl's lowResFootprint). Its bilinear coordinate is (lowPos + 0.5) / lowSize.
+// lowPos = p lowSize / viewSize - 0.5, in texels past the first tap's centre (the tap
+// floor(lowPos), the weights lowPos - floor(lowPos)). Its bilinear coordinate is
+// (lowPos + 0.5) / lowSize.
 // (Folding that into a second line saves two operations, but on llvmpipe, whose filter takes
 // the coordinate rounded differently, the composite pass then took 12 % longer, same pixels.)
 uniform vec4 uLowMap;           // lowPos = gl_FragCoord.xy * xy + zw

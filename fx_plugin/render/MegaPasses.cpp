@@ -178,9 +178,17 @@ void MegaPasses::runComposite(PassContext& ctx, const MegaCloud& r, Target cloud
     glUniform1i(programs_->cCloud, kUnit0);
     glUniform1i(programs_->cCloudDepth, kUnit1);
     glUniform1i(programs_->cScene, kUnit2);
-    setSceneDepthDecode(programs_->cDecode, r.depthDecode.placedFor(depthRef, r.view, true));  // into sceneColor
+    const SceneDepthDecode placed = r.depthDecode.placedFor(depthRef, r.view, true);  // into sceneColor
+    setSceneDepthDecode(programs_->cDecode, placed);
     sceneDepthBarrier(r.depthDecode);
     glUniform1f(programs_->cSoft, r.softScale);
+    // The footprint's line in gl_FragCoord (fs_mega_composite.glsl), worked out once here.
+    const glm::vec2 lowSize(float(ctx.width(cloud)), float(ctx.height(cloud)));
+    const glm::vec2 footprintScale = lowSize / glm::vec2(float(r.view.width), float(r.view.height));
+    const glm::vec2 origin = -glm::vec2(placed.drawOrigin) * footprintScale - 0.5f;
+    glUniform4f(programs_->cLowMap, footprintScale.x, footprintScale.y, origin.x, origin.y);
+    glUniform2f(programs_->cInvLow, 1.0f / lowSize.x, 1.0f / lowSize.y);
+    glUniform2i(programs_->cLowLast, ctx.width(cloud) - 1, ctx.height(cloud) - 1);
     drawFullscreen();
 }
 

@@ -33,7 +33,8 @@ void MegaPrograms::bind(const ProgramCache& programs) {
     locateUniforms(composite, {{&cCloud, "uCloud"}, {&cCloudDepth, "uCloudDepth"}, {&cScene, "uSceneDepth"},
                                {&cDecode.coeffs, "uDepthCoeffs"},
                                {&cDecode.window, "uDepthWindow"}, {&cDecode.drawOrigin, "uDrawOrigin"},
-                               {&cSoft, "uSoftScale"}});
+                               {&cSoft, "uSoftScale"}, {&cLowMap, "uLowMap"}, {&cInvLow, "uInvLow"},
+                               {&cLowLast, "uLowLast"}});
     shadeFog = FogUniforms::of(shade);
 }
 

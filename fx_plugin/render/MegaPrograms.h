@@ -25,6 +25,7 @@ struct MegaPrograms {
         int toSun = -1, sunColor = -1, ambient = -1, scattering = -1, anisotropy = -1, absorption = -1;
     } b[2];  // [0] blur, [1] blur + shade
     int cCloud = -1, cCloudDepth = -1, cScene = -1, cSoft = -1;
+    int cLowMap = -1, cInvLow = -1, cLowLast = -1;  ///< the footprint's line (fs_mega_composite.glsl)
     SceneDepthUniforms cDecode;
     FogUniforms shadeFog;  ///< the shading blur's (the cloud is fogged there, at its resolution)
 
