@@ -54,6 +54,9 @@ PROGRAMS = [
     ("quarter res: downsample", "fs_particles_depth_downsample.glsl", [GATHER, "FX_GATHER"], 40, 1),
     ("quarter res: composite", "fs_particles_composite.glsl", [GATHER, "FX_GATHER"], 96, 5),
     ("mega: composite", "fs_mega_composite.glsl", [GATHER, "FX_GATHER"], 53, 3),
+    # The mega blur passes loop over their taps (uTaps each side): the loop's body counts once.
+    ("mega: blur", "fs_mega_blur.glsl", [], 48, 4),
+    ("mega: blur and shade", "fs_mega_blur.glsl", ["FX_MEGA_SHADE"], 365, 4),
 ]
 
 ALU = re.compile(r"= Op(F[A-Z]\w*|I[A-Z]\w*|S[A-Z][a-z]*Div|ExtInst|Select|VectorTimesScalar|Dot|Logical\w*|"

@@ -21,8 +21,10 @@ uniform sampler2D uColor;
 uniform sampler2D uDensity;
 uniform int uEncodedDepth;
 uniform ivec2 uDirection;
-uniform int uTaps;               // taps each side (0 = copy)
-uniform float uSigma;            // texels
+uniform int uTaps;               // taps each side (0 = copy), at most 48
+// The Gaussian's weight of a tap i texels away, exp(-i^2 / (2 sigma^2)), for i = 0..uTaps:
+// worked out once per draw (MegaPasses.cpp), not as an exp per tap of every texel.
+uniform float uTapWeight[49];
 uniform float uDepthFalloff;     // relative depth difference where the weight is 1/e
 
 layout(location = 0) out vec4 oColor;
@@ -47,7 +49,6 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     ivec2 last = textureSize(uColor, 0) - 1;
     float d0 = depthOf(texelFetch(uColor, p, 0));
-    float inv2s2 = 0.5 / max(uSigma * uSigma, 1e-6);
     vec3 sumC = vec3(0.0);
     vec4 sumDensity = vec4(0.0);
     float sumW = 0.0, sumD = 0.0, sumDW = 0.0;
@@ -56,7 +57,7 @@ void main() {
         vec4 c = texelFetch(uColor, q, 0);
         vec4 density = texelFetch(uDensity, q, 0);
         float d = depthOf(c);
-        float w = exp(-float(i * i) * inv2s2);
+        float w = uTapWeight[abs(i)];
         if (d0 > 0.0 && d > 0.0) {
             float rel = (d - d0) / (uDepthFalloff * d0);
             w *= exp(-rel * rel);

@@ -1,6 +1,7 @@
 #include "MegaPasses.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 
@@ -132,9 +133,15 @@ void MegaPasses::runBlur(PassContext& ctx, const MegaCloud& r, Target inColor, T
     glUniform1i(u.density, kUnit1);
     glUniform1i(u.encoded, shade ? 0 : 1);
     glUniform2i(u.direction, shade ? 0 : 1, shade ? 1 : 0);
+    // Taps out to 3 sigma each side, sigma = blur_radius / 2 texels (at most 16: 48 taps); their
+    // Gaussian weights once here (fs_mega_blur.glsl's uTapWeight).
     const float sigma = 0.5f * std::clamp(r.mega.blurRadius, 0.0f, 32.0f);
-    glUniform1i(u.taps, int(std::ceil(3.0f * sigma)));
-    glUniform1f(u.sigma, std::max(sigma, 1e-3f));
+    const int taps = int(std::ceil(3.0f * sigma));
+    const float inv2s2 = 0.5f / std::max(sigma * sigma, 1e-6f);
+    std::array<GLfloat, 49> weights{};
+    for (int i = 0; i <= taps; ++i) weights[size_t(i)] = std::exp(-float(i * i) * inv2s2);
+    glUniform1i(u.taps, taps);
+    glUniform1fv(u.tapWeights, taps + 1, weights.data());
     glUniform1f(u.falloff, kDepthFalloff);
     if (shade) {
         setFogUniforms(programs_->shadeFog, r.view.fog);

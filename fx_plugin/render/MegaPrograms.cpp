@@ -23,7 +23,7 @@ void MegaPrograms::bind(const ProgramCache& programs) {
         Blur& u = b[i];
         locateUniforms(blurs[i],
                        {{&u.color, "uColor"}, {&u.density, "uDensity"}, {&u.encoded, "uEncodedDepth"},
-                        {&u.direction, "uDirection"}, {&u.taps, "uTaps"}, {&u.sigma, "uSigma"},
+                        {&u.direction, "uDirection"}, {&u.taps, "uTaps"}, {&u.tapWeights, "uTapWeight"},
                         {&u.falloff, "uDepthFalloff"}, {&u.invView, "uInvView"}, {&u.projTerms, "uProjTerms"},
                         {&u.time, "uTime"}, {&u.noiseStrength, "uNoiseStrength"}, {&u.noiseScale, "uNoiseScale"},
                         {&u.lit, "uLit"}, {&u.toSun, "uToSun"}, {&u.sunColor, "uSunColor"}, {&u.ambient, "uAmbient"},

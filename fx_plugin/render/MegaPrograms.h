@@ -20,7 +20,7 @@ struct MegaPrograms {
     int sView = -1, sProj = -1, sNear = -1, sFar = -1, sSlope = -1, sRamp = -1, sRampRow = -1, sMegaDepth = -1,
         sDensity = -1;
     struct Blur {
-        int color = -1, density = -1, encoded = -1, direction = -1, taps = -1, sigma = -1, falloff = -1;
+        int color = -1, density = -1, encoded = -1, direction = -1, taps = -1, tapWeights = -1, falloff = -1;
         int invView = -1, projTerms = -1, time = -1, noiseStrength = -1, noiseScale = -1, lit = -1;
         int toSun = -1, sunColor = -1, ambient = -1, scattering = -1, anisotropy = -1, absorption = -1;
     } b[2];  // [0] blur, [1] blur + shade
