@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # How far the particle shapes are from perfect (README, "How far the shapes are from perfect").
-# Runs fxbench three times over the same frames: with the shaders as they are, then with copies
-# of the soft and spherical fragment shaders that also discard what a perfect shape would never
-# draw (atlas alpha 0; for spheres also a chord wholly behind the scene). `particle_fragments`
-# counts what is not discarded, so the second and third runs count the ideal. A measurement aid
-# only: the copies live in a temporary folder read through CUBE_SHADER_DIR.
+# Runs fxbench three times over the same frames, each with copies of the shaders read through
+# CUBE_SHADER_DIR (a measurement aid only; the copies live in a temporary folder):
+# `particle_fragments` counts what is not discarded, so
+#   drawn:   soft without its early out on an empty atlas texel: what each shape rasterises
+#            (spheres discard outside their outline, as they do as shipped);
+#   alpha:   the same, soft with its early out, spheres also discarding atlas alpha 0: the ideal;
+#   visible: spheres also discarding a chord wholly behind the scene.
 #   scripts/ideal_fragments.sh [fxbench options...]   (default: the standard scene, 1 round)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,9 +22,8 @@ sys.path.insert(0, "scripts")
 from shader_copies import write_copies
 # (file, text that must be there, replacement): stop loudly when a shader no longer matches.
 edits = {
+    "drawn": [("fs_particles_soft.glsl", "    if (texel.a == 0.0) discard;\n", "")],
     "alpha": [
-        ("fs_particles_soft.glsl", "    float fade = softFade(",
-         "    if (texel.a <= 0.0) discard;\n    float fade = softFade("),
         ("fs_particles_spherical.glsl", "if (d2 >= r * r) discard;",
          "if (d2 >= r * r || texel.a <= 0.0) discard;"),
     ],
@@ -36,11 +37,8 @@ EOF
 
 args=("$@")
 [ ${#args[@]} -gt 0 ] || args=(--rounds 1)
-for variant in now alpha visible; do
-    # An empty CUBE_SHADER_DIR means the shaders built into fxbench (engine_stub/gl/Paths.cpp).
-    shaderDir=""
-    [ "$variant" = now ] || shaderDir="$work/$variant"
-    CUBE_SHADER_DIR="$shaderDir" "$fxbench" --modes soft,soft-quads,spherical,spherical-quads "${args[@]}" \
+for variant in drawn alpha visible; do
+    CUBE_SHADER_DIR="$work/$variant" "$fxbench" --modes soft,soft-quads,spherical,spherical-quads "${args[@]}" \
         --json "$work/$variant.json" >/dev/null
 done
 
@@ -48,10 +46,10 @@ python3 - "$work" <<'EOF'
 import json, sys
 work = sys.argv[1]
 runs = {v: {m["name"]: m["particle_fragments"] for m in json.load(open(f"{work}/{v}.json"))["modes"]}
-        for v in ("now", "alpha", "visible")}
-print("| mode | drawn now | atlas alpha > 0 (spheres: inside the outline) | spheres: and a visible chord |")
+        for v in ("drawn", "alpha", "visible")}
+print("| mode | drawn (soft: rasterised; spheres: inside the outline) | atlas alpha > 0 | spheres: and a visible chord |")
 print("|---|---:|---:|---:|")
-for mode in runs["now"]:
+for mode in runs["drawn"]:
     visible = f"{runs['visible'][mode]:,.0f}" if mode.startswith("spherical") else "-"
-    print(f"| {mode} | {runs['now'][mode]:,.0f} | {runs['alpha'][mode]:,.0f} | {visible} |")
+    print(f"| {mode} | {runs['drawn'][mode]:,.0f} | {runs['alpha'][mode]:,.0f} | {visible} |")
 EOF

@@ -38,14 +38,14 @@ GATHER = "#extension GL_ARB_texture_gather : require"
 PROGRAMS = [
     ("hard", "fs_particles_hard.glsl", [], 11, 1),
     ("hard, quarter res", "fs_particles_hard.glsl", ["FX_LINEAR_DEPTH_TEST", "FX_HALF_RES_DEPTH"], 16, 2),
-    ("soft, power 1", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2"], 20, 2),
-    ("soft, power 2", "fs_particles_soft.glsl", ["FX_POWER_STEPS 4"], 27, 2),
-    ("soft, any power", "fs_particles_soft.glsl", ["FX_GENERAL_POWER"], 30, 2),
-    ("soft, power 1, quarter res", "fs_particles_soft.glsl", ["FX_HALF_RES_DEPTH", "FX_POWER_STEPS 2"], 16, 2),
+    ("soft, power 1", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2"], 21, 2),
+    ("soft, power 2", "fs_particles_soft.glsl", ["FX_POWER_STEPS 4"], 28, 2),
+    ("soft, any power", "fs_particles_soft.glsl", ["FX_GENERAL_POWER"], 31, 2),
+    ("soft, power 1, quarter res", "fs_particles_soft.glsl", ["FX_HALF_RES_DEPTH", "FX_POWER_STEPS 2"], 17, 2),
     ("spherical", "fs_particles_spherical.glsl", ["FX_SPHERICAL"], 50, 2),
     ("spherical, quarter res", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_HALF_RES_DEPTH"], 45, 2),
     ("hard, lit", "fs_particles_hard.glsl", ["FX_LIT"], 42, 1),
-    ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 51, 2),
+    ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 52, 2),
     ("spherical, lit", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_LIT"], 80, 2),
     # Quarter res's fixed passes as a GL 4 context builds them (ProgramCache::Key::defines): the
     # depth downsample (per half-res texel), the composite (per pixel of its tiles; the counts

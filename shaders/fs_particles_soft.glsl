@@ -15,6 +15,9 @@ void main() {
     // Outside the frame only the alpha needs masking: coverage carries it to the colour.
     vec4 texel = texture(uAtlas, vAtlasUV);
     texel.a *= insideFrame(vLocal);
+    // Where the atlas alone says the output is 0 (the empty rim inside a trimmed polygon), the
+    // scene-depth fetch, the pass's costliest part on a GPU, is not made.
+    if (texel.a == 0.0) discard;
     float fade = softFade(sceneDepthTexelAt(gl_FragCoord.xy), vFadeLine);
     float coverage = texel.a * fade;  // the near fade is in vTint (a billboard lies at one depth)
 #ifdef FX_LIT
