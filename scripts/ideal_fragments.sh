@@ -3,14 +3,17 @@
 # Runs fxbench three times over the same frames, each with copies of the shaders read through
 # CUBE_SHADER_DIR (a measurement aid only; the copies live in a temporary folder):
 # `particle_fragments` counts what is not discarded, so
-#   drawn:   soft without its early out on an empty atlas texel: what each shape rasterises
-#            (spheres discard outside their outline, as they do as shipped);
+#   drawn:   soft without its early out on an empty atlas texel: what its shape rasterises
+#            (spheres as shipped: they discard outside the outline and any coverage of 0);
 #   alpha:   the same, soft with its early out, spheres also discarding atlas alpha 0: the ideal;
-#   visible: spheres also discarding a chord wholly behind the scene.
-#   scripts/ideal_fragments.sh [fxbench options...]   (default: the standard scene, 1 round)
+#   visible: spheres also discarding a chord wholly behind the scene; soft also discarding a
+#            fade of 1 (no geometry within its softness): what soft must fetch the scene depth
+#            for, the ceiling of any fade classification.
+#   scripts/ideal_fragments.sh [fxbench options...]   (default: the standard scene, 1 round;
+#                                                      fxbench is $FXBENCH, default ./build/bin/fxbench)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-fxbench=./build/bin/fxbench
+fxbench=${FXBENCH:-./build/bin/fxbench}
 [ -x "$fxbench" ] || { echo "ideal_fragments.sh: build first (./run.sh or cmake --build build)" >&2; exit 1; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -24,13 +27,15 @@ from shader_copies import write_copies
 edits = {
     "drawn": [("fs_particles_soft.glsl", "    if (texel.a == 0.0) discard;\n", "")],
     "alpha": [
-        ("fs_particles_spherical.glsl", "if (d2 >= r * r) discard;",
-         "if (d2 >= r * r || texel.a <= 0.0) discard;"),
+        ("fs_particles_spherical.glsl", "if (d2 >= r2) discard;",
+         "if (d2 >= r2 || texel.a <= 0.0) discard;"),
     ],
 }
 edits["visible"] = edits["alpha"] + [
     ("fs_particles_spherical.glsl", "    float coverage = texel.a * visible",
      "    if (visible <= 0.0) discard;\n    float coverage = texel.a * visible"),
+    ("fs_particles_soft.glsl", "    float coverage = texel.a * fade;",
+     "    if (fade >= 1.0) discard;\n    float coverage = texel.a * fade;"),
 ]
 write_copies(sys.argv[1], edits, "ideal_fragments.sh")
 EOF
@@ -47,9 +52,14 @@ import json, sys
 work = sys.argv[1]
 runs = {v: {m["name"]: m["particle_fragments"] for m in json.load(open(f"{work}/{v}.json"))["modes"]}
         for v in ("drawn", "alpha", "visible")}
-print("| mode | drawn (soft: rasterised; spheres: inside the outline) | atlas alpha > 0 | spheres: and a visible chord |")
+print("| mode | drawn (soft: rasterised; spheres: written, their own discards leave out alpha 0 "
+      "and a hidden chord already) | atlas alpha > 0 "
+      "| and a visible chord (spheres) or a fade below 1 (soft) |")
 print("|---|---:|---:|---:|")
 for mode in runs["drawn"]:
-    visible = f"{runs['visible'][mode]:,.0f}" if mode.startswith("spherical") else "-"
-    print(f"| {mode} | {runs['drawn'][mode]:,.0f} | {runs['alpha'][mode]:,.0f} | {visible} |")
+    print(f"| {mode} | {runs['drawn'][mode]:,.0f} | {runs['alpha'][mode]:,.0f} | {runs['visible'][mode]:,.0f} |")
+# Each copy only discards more than the one before it.
+bad = [m for m in runs["drawn"] if not runs["drawn"][m] >= runs["alpha"][m] >= runs["visible"][m]]
+if bad or not any(runs["drawn"].values()):
+    sys.exit(f"ideal_fragments.sh: counts not falling from column to column (or all 0): {bad}")
 EOF
