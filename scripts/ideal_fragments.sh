@@ -8,7 +8,10 @@
 #   alpha:   the same, soft with its early out, spheres also discarding atlas alpha 0: the ideal;
 #   visible: spheres also discarding a chord wholly behind the scene; soft also discarding a
 #            fade of 1 (no geometry within its softness): what soft must fetch the scene depth
-#            for, the ceiling of any fade classification.
+#            for, the ceiling of any fade classification;
+#   fetched: soft+classify (FadePyramid.h) with the fragments it skips discarded: those that
+#            still fetch the scene depth (the pyramid's own samples, written in the same pass,
+#            taken off).
 #   scripts/ideal_fragments.sh [fxbench options...]   (default: the standard scene, 1 round;
 #                                                      fxbench is $FXBENCH, default ./build/bin/fxbench)
 set -euo pipefail
@@ -31,6 +34,8 @@ edits = {
          "if (d2 >= r2 || texel.a <= 0.0) discard;"),
     ],
 }
+edits["fetched"] = [("fs_particles_soft.glsl", "    float fade = 1.0;\n",
+                     "    if (!nearScene) discard;\n    float fade = 1.0;\n")]
 edits["visible"] = edits["alpha"] + [
     ("fs_particles_spherical.glsl", "    float coverage = texel.a * visible",
      "    if (visible <= 0.0) discard;\n    float coverage = texel.a * visible"),
@@ -46,6 +51,7 @@ for variant in drawn alpha visible; do
     CUBE_SHADER_DIR="$work/$variant" "$fxbench" --modes soft,soft-quads,spherical,spherical-quads "${args[@]}" \
         --json "$work/$variant.json" >/dev/null
 done
+CUBE_SHADER_DIR="$work/fetched" "$fxbench" --modes soft+classify "${args[@]}" --json "$work/fetched.json" >/dev/null
 
 python3 - "$work" <<'EOF'
 import json, sys
@@ -62,4 +68,18 @@ for mode in runs["drawn"]:
 bad = [m for m in runs["drawn"] if not runs["drawn"][m] >= runs["alpha"][m] >= runs["visible"][m]]
 if bad or not any(runs["drawn"].values()):
     sys.exit(f"ideal_fragments.sh: counts not falling from column to column (or all 0): {bad}")
+
+# The fade pyramid's samples (FadePyramid::build): level 0 a texel per 4 x 4 pixels, padded so
+# that each level up halves exactly, down to at most 4 x 4.
+fetched = json.load(open(f"{work}/fetched.json"))
+w, h = fetched["size"]
+top, levels = [(w + 3) // 4, (h + 3) // 4], 1
+while max(top) > 4:
+    top, levels = [(top[0] + 1) // 2, (top[1] + 1) // 2], levels + 1
+pyramid = sum((top[0] << (levels - 1 - l)) * (top[1] << (levels - 1 - l)) for l in range(levels))
+classified = fetched["modes"][0]["particle_fragments"] - pyramid
+print(f"\nsoft+classify: {classified:,.0f} fragments fetch the scene depth, of {runs['alpha']['soft']:,.0f} with "
+      f"smoke ({runs['visible']['soft']:,.0f} need it)")
+if not runs["visible"]["soft"] <= classified <= runs["alpha"]["soft"]:
+    sys.exit("ideal_fragments.sh: classification fetches fewer than need it, or more than soft does")
 EOF

@@ -33,8 +33,8 @@ from shader_copies import write_copies
 work = pathlib.Path(sys.argv[1])
 variants = {
     # Soft without its fade: the scene-depth fetch, its decode and the contrast curve gone.
-    "soft-no-fade": [("fs_particles_soft.glsl", "float fade = softFade(sceneDepthTexelAt(gl_FragCoord.xy), vFadeLine);",
-                      "float fade = 1.0;")],
+    "soft-no-fade": [("fs_particles_soft.glsl", "fade = softFade(sceneDepthTexelAt(gl_FragCoord.xy), vFadeLine);",
+                      "fade = 1.0;")],
     # The full-res particle shaders' scene depth read without its decode (the division: soft's
     # in its fade, spherical's in sceneDepthAt; the quarter-res builds read theirs without one
     # already: FX_HALF_RES_DEPTH).

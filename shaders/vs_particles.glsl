@@ -46,6 +46,56 @@ uniform vec4 uShapeInfo[16];   // spherical: [frame][bucket] (inradius, area / 4
 #define FX_VARYING out
 #include "particles_varyings.glsl"
 
+#ifdef FX_FADE_MASK
+// Fade classification (FadePyramid.h): which parts of a soft billboard have no geometry within
+// its softness. The billboard lies at one depth, so on the screen it stays inside the box of its
+// view-plane square (edge 2 extent around the centre, extent = radius (|cos| + |sin|) of its
+// angle: the rotated polygon's reach, and the unrotated quad's), grown by a pixel. The lowest
+// pyramid level on which that box spans at most 16 x 16 blocks is read, block by block: where a
+// block's nearest scene depth lies at least the softness behind the billboard (a margin of
+// 2^-12 of it for rounding), every pixel of the block fades to exactly 1 and its bit stays
+// clear. A block past the box keeps its bit, and so does every block of a billboard behind the
+// camera, one no level holds in 16 x 16 blocks, or one under kClassifyPixels across, whose few
+// fragments would not repay the reads: those fragments fetch the depth as without
+// classification. Only a triangle's last vertex reads the blocks: the renderer draws under
+// GL_LAST_VERTEX_CONVENTION (GlStateGuard), and a fan's or strip's first two vertices end no
+// triangle; were the first vertex to provoke, its mask would keep every bit (no fetch skipped).
+uniform sampler2D uFadePyramid;  // level L: min linear depth per 4 2^L x 4 2^L view pixels
+uniform vec4 uMaskNdc;           // level-0 block coordinate of a point of NDC: ndc * xy + zw
+uniform vec4 uMaskWindow;        // and of a window point: gl_FragCoord * xy + zw
+uniform int uPyramidTop;         // the pyramid's last level
+const float kClassifyPixels = 48.0;
+
+void fadeMask(vec3 centre, float extent) {
+    for (int i = 0; i < 8; ++i) vFadeMask[i] = 0xFFFFFFFFu;
+    vMaskMap = vec4(0.0, 0.0, -32.0, -32.0);  // every fragment outside the 16 x 16 blocks
+    vec4 c = uProj * vec4(centre, 1.0);
+    if (gl_VertexID < 2 || !(c.w > 0.0)) return;
+    vec2 reach = extent * (abs(uProj[0].xy) + abs(uProj[1].xy));
+    vec2 lo = clamp((c.xy - reach) / c.w * uMaskNdc.xy + uMaskNdc.zw - 0.25, -1.0e6, 1.0e6);
+    vec2 hi = clamp((c.xy + reach) / c.w * uMaskNdc.xy + uMaskNdc.zw + 0.25, -1.0e6, 1.0e6);
+    if (max(hi.x - lo.x, hi.y - lo.y) < 0.25 * kClassifyPixels) return;
+    ivec2 last = textureSize(uFadePyramid, 0) - 1;  // blocks past the view hold no fragment
+    ivec2 a = clamp(ivec2(floor(lo)), ivec2(0), last);
+    ivec2 b = clamp(ivec2(floor(hi)), ivec2(0), last);
+    int level = 0;
+    while (level < uPyramidTop && any(greaterThan((b >> level) - (a >> level), ivec2(15)))) ++level;
+    a >>= level;
+    b >>= level;
+    if (any(greaterThan(b - a, ivec2(15)))) return;
+    float limit = (-centre.z + 1.0 / uSoftScale) * (1.0 + 1.0 / 4096.0);
+    for (int y = 0; y <= b.y - a.y; ++y) {
+        for (int x = 0; x <= b.x - a.x; ++x) {
+            if (texelFetch(uFadePyramid, a + ivec2(x, y), level).r >= limit) {
+                vFadeMask[y >> 1] &= ~(1u << uint(x + 16 * (y & 1)));
+            }
+        }
+    }
+    float scale = exp2(-float(level));
+    vMaskMap = vec4(uMaskWindow.xy * scale, uMaskWindow.zw * scale - vec2(a) + 1.0);  // block + 1
+}
+#endif
+
 // The trimmed polygon's vertex gl_VertexID for a particle whose texture maps `texelsPerPixel`
 // texels of level 0 onto a pixel (its LOD bucket: TrimmedShapes.h), and that polygon's index
 // into uShapes' [frame][bucket] table.
@@ -192,6 +242,9 @@ void main() {
     vec4 fog = particleFog(-viewPos.z);
     particleTint(ramp, fade * nearFadeFactor(-viewPos.z), fog, vTint, vFogAdd);
     vFadeLine = softFadeLine(-viewPos.z);  // and so is its soft fade's line
+#ifdef FX_FADE_MASK
+    fadeMask((uView * vec4(aPosSize.xyz, 1.0)).xyz, radius * (abs(vTurn.x) + abs(vTurn.y)));
+#endif
 #endif
 #ifdef FX_LIT
 #ifdef FX_SPHERICAL

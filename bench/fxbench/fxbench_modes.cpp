@@ -26,6 +26,9 @@ const std::vector<Mode>& allModes() {
          "soft", fx::ParticleShape::Trimmed, false, false, false, true},
         {"soft+equal+quarter", "Soft particles, prepass EQUAL + 1/4-size texture", true, Technique::Soft, true,
          true, "soft"},
+        // The depth fetch skipped where no geometry lies within the softness (FadePyramid.h).
+        {"soft+classify", "Soft particles, fade classified per block of each billboard", true, Technique::Soft, false,
+         false, "soft", fx::ParticleShape::Trimmed, false, false, false, false, true},
         {"spherical", "Spherical billboards", true, Technique::Spherical, false, false, "spherical"},
         {"spherical-quads", "Spherical billboards drawn as full quads (untrimmed)", true, Technique::Spherical, false,
          false, "spherical", fx::ParticleShape::Quad},
@@ -72,8 +75,9 @@ namespace {
 // Modes of earlier builds whose rendering feature was removed: named in the refusal so a script
 // written for them learns why rather than only that the name is unknown.
 const char* removedModeReason(const std::string& name) {
-    if (name == "soft+classify" || name == "spherical+classify") {
-        return "fade classification was removed in API 2.1 (on a GPU its tile pass cost more than it saved)";
+    if (name == "spherical+classify") {
+        return "fade classification of spheres was removed in API 2.1 (on a GPU its tile pass cost more than it "
+               "saved); soft+classify classifies soft billboards by blocks of each one instead";
     }
     if (name == "soft+mixed") {
         return "mixed resolution was removed in API 2.1 (on a GPU its edge pass cost more than quarter res "
@@ -123,11 +127,15 @@ void applyMode(cube::Game& game, const Mode& mode) {
     ro.bilinearUpsample = false;  // the depth-aware composite is the one under test
     plugin->setRenderOptions(ro);
     plugin->setParticleShape(mode.shape);
+    const fx::FadeClassification classification =
+        mode.classify ? fx::FadeClassification::On : fx::FadeClassification::Off;
+    const bool reclassified = plugin->fadeClassification() != classification;
+    plugin->setFadeClassification(classification);
     // The engine's rule for a window key or a panel switch (Render::handleKeys, the panel): a
     // switch that may reach programs the old one did not is followed by prepareGl, between
     // frames, so no program is built while the next frame is declared (nor inside a timed render).
     if (ro.techniqueOverride != was.techniqueOverride || ro.quarterRes != was.quarterRes ||
-        ro.quarterResAlways != was.quarterResAlways || ro.bilinearUpsample != was.bilinearUpsample) {
+        ro.quarterResAlways != was.quarterResAlways || ro.bilinearUpsample != was.bilinearUpsample || reclassified) {
         (void)plugin->prepareGl(nullptr);  // a failure is logged once by the plugin
     }
     if (mode.lit) {

@@ -36,10 +36,14 @@ struct Mode {
     bool linearDepth = false;
     /// Quarter res in every view (RenderOptions::quarterResAlways) instead of only where it pays.
     bool quarterResAlways = false;
+    /// Fade classification (Plugin::setFadeClassification, `soft+classify`): soft billboards skip
+    /// the scene-depth fetch where the fade pyramid says their fade is 1.
+    bool classify = false;
 };
 
 /// Every mode, in table order: nofx, hard, soft, soft-quads, soft+equal, soft+quarter,
-/// soft+equal+quarter, spherical, spherical-quads, spherical+quarter, hard-lit, soft-lit,
+/// soft+quarter-always, soft+equal+quarter, soft+classify (against soft: the same picture),
+/// spherical, spherical-quads, spherical+quarter, hard-lit, soft-lit,
 /// spherical-lit, mega (image error
 /// against spherical: the same particles as exact spheres), mega-lit (against spherical-lit),
 /// soft-zbuffer and spherical-zbuffer (the immediate path on the engine's z-buffer, against

@@ -53,6 +53,27 @@ BillboardReach ParticleDraw::billboardReach(const ParticleView& record, bool hal
 void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
     const DrawList& list = record.list;
     const ViewInfo& view = record.view;
+    depthSampler_.bindTexture(kSceneDepthUnit, in.sceneDepth);  // the host's, or the half-res copy
+    if (in.sceneDepth) sceneDepthBarrier(in.depthDecode);
+    // The depth texture's size for uDepthUv where the pass did not place the decode (the half-res
+    // depth of quarter res, read in its own target from its (0, 0)).
+    SceneDepthDecode depthDecode = in.depthDecode;
+    if (in.sceneDepth && depthDecode.depthSize.x == 0) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + kSceneDepthUnit));
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &depthDecode.depthSize.x);
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &depthDecode.depthSize.y);
+    }
+    // Fade classification (FadePyramid.h): the pyramid first, in this pass, whose time includes
+    // it; it sets its own draw state, so before the particles' below. Full res only: at quarter
+    // res the soft programs read the plugin's half-res depth.
+    bool fadeMask = false;
+    if (record.settings.classification == FadeClassification::On && !in.quarterRes && in.sceneDepth &&
+        list.needsSceneDepth) {
+        bool soft = false;
+        for (const DrawBatch& batch : list.batches) soft = soft || batch.technique == Technique::Soft;
+        fadeMask = soft && fadePyramid_.build(in.sceneDepth, depthDecode, glm::ivec2(view.width, view.height),
+                                              depthSampler_, kSceneDepthUnit, kFadePyramidUnit);
+    }
     glActiveTexture(GL_TEXTURE0);
     ramp_.upload();
     stream_.upload(list.instances.data(), list.particleCount(), jobs_);
@@ -63,17 +84,6 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
     glBlendEquation(GL_FUNC_ADD);
     bindTextureUnit(kAtlasUnit, atlas_.texture());
     bindTextureUnit(kRampUnit, ramp_.texture());
-    depthSampler_.bindTexture(kSceneDepthUnit, in.sceneDepth);  // the host's, or the half-res copy
-    if (in.sceneDepth) sceneDepthBarrier(in.depthDecode);
-    // The depth texture's size for uDepthUv where the pass did not place the decode (the half-res
-    // depth of quarter res, read in its own target from its (0, 0)).
-    SceneDepthDecode depthDecode = in.depthDecode;
-    if (in.sceneDepth && depthDecode.depthSize.x == 0) {
-        glActiveTexture(GLenum(GL_TEXTURE0 + kSceneDepthUnit));
-        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &depthDecode.depthSize.x);
-        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &depthDecode.depthSize.y);
-        glActiveTexture(GL_TEXTURE0);
-    }
     if (record.lit()) {
         bindTextureUnit(kOpacityUnit, in.opacity);
     }
@@ -95,8 +105,9 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
         // program it built (unlit if the lit build failed, the general soft build if the power's
         // own did); nothing here compiles (the cache was filled by prepare() or before the
         // passes: ParticleRenderer::ensureDrawPrograms).
-        const ProgramCache::Key key = programs.filter(ProgramCache::drawKey(
-            batch.technique, in.quarterRes, batch.contrastPower, record.lit() && batch.lighting.lit(batch.blend)));
+        const ProgramCache::Key key =
+            programs.filter(ProgramCache::drawKey(batch.technique, in.quarterRes, batch.contrastPower,
+                                                  record.lit() && batch.lighting.lit(batch.blend), fadeMask));
         const ParticleProgram* found = programs.find(key);
         if (!found) continue;
         const ParticleProgram& p = *found;
@@ -143,6 +154,18 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
         glUniform1i(p.ramp, kRampUnit);
         glUniform1i(p.sceneDepth, kSceneDepthUnit);
         setSceneDepthDecode(p.depthDecode, depthDecode);
+        if (key.fadeMask) {
+            // Level-0 blocks of the view's pixels p = window - drawOrigin, 4 x 4 each; NDC to
+            // window through the viewport the pass bound.
+            const glm::vec2 origin(depthDecode.drawOrigin);
+            const glm::vec2 vpOrigin{float(viewport[0]), float(viewport[1])};
+            const glm::vec2 vpHalf{0.5f * float(viewport[2]), 0.5f * float(viewport[3])};
+            const glm::vec2 ndcOffset = (vpHalf + vpOrigin - origin) * 0.25f;
+            glUniform1i(p.fadePyramid, kFadePyramidUnit);
+            glUniform4f(p.maskNdc, vpHalf.x * 0.25f, vpHalf.y * 0.25f, ndcOffset.x, ndcOffset.y);
+            glUniform4f(p.maskWindow, 0.25f, 0.25f, -origin.x * 0.25f, -origin.y * 0.25f);
+            glUniform1i(p.pyramidTop, fadePyramid_.topLevel());
+        }
         setFogUniforms(p.fog, view.fog);
         // Spherical particles trim to their frame's polygon clipped to the disc (the octagon
         // around the sphere where its bounds do not hold: vs_particles.glsl).

@@ -97,24 +97,30 @@ bool ParticleRenderer::shadersChanged() {
 void ParticleRenderer::bindPassPrograms() {
     quarter_.programs().bind(draw_.programs());
     opacity_.bind(draw_.programs());
+    draw_.fadePyramid().bind(draw_.programs());
 }
 
 
-bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps, bool quarterRes) {
+bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps, bool quarterRes, bool fadeMask) {
     const bool ready = ensureLoaded();
     if (ready) {
         // The soft programs of the contrast powers the loaded reactions draw with, now rather
         // than at their first visible particle (each key is tried once: reported once); with
-        // quarter res on, the quarter-res builds too.
+        // quarter res on, the quarter-res builds too; with fade classification, the mask's.
         GlStateGuard guard;
         std::vector<ProgramCache::Key> keys;
         if (quarterRes) keys = ProgramCache::halfResKeys();
+        if (fadeMask) {
+            const std::vector<ProgramCache::Key> mask = ProgramCache::fadeMaskKeys();
+            keys.insert(keys.end(), mask.begin(), mask.end());
+        }
         for (int s : powerSteps) {
-            ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), false, &keys);
+            ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), false, &keys, fadeMask);
             if (quarterRes) ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), true, &keys);
         }
         std::vector<std::string> errors;
         draw_.programs().build(keys, &errors);
+        if (fadeMask) draw_.fadePyramid().bind(draw_.programs());
         // A power's build fails for the cause that failed the soft programs above: not told twice.
         reportLoadErrors(errors);
     }
@@ -124,8 +130,14 @@ bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSt
 
 void ParticleRenderer::ensureDrawPrograms(const ParticleView& record, bool quarterRes) {
     drawKeys_.clear();
+    const bool fadeMask = record.settings.classification == FadeClassification::On && !quarterRes;
+    if (fadeMask) {
+        for (ProgramCache::Program p : {ProgramCache::FadePyramidFirst, ProgramCache::FadePyramidReduce}) {
+            drawKeys_.push_back(ProgramCache::Key::of(p));
+        }
+    }
     for (const DrawBatch& batch : record.list.batches) {
-        ProgramCache::addDrawKeys(batch.technique, batch.contrastPower, quarterRes, &drawKeys_);
+        ProgramCache::addDrawKeys(batch.technique, batch.contrastPower, quarterRes, &drawKeys_, fadeMask);
     }
     bool missing = false;
     for (const ProgramCache::Key& k : drawKeys_) missing = missing || !draw_.programs().tried(k);
@@ -133,6 +145,7 @@ void ParticleRenderer::ensureDrawPrograms(const ParticleView& record, bool quart
     GlStateGuard guard;
     std::vector<std::string> errors;
     const int built = draw_.programs().build(drawKeys_, &errors);
+    if (fadeMask) draw_.fadePyramid().bind(draw_.programs());
     if (!frameBuildLogged_) {
         log(LogLevel::Warning, "fx: " + std::to_string(built) +
                                    " particle program(s) built while declaring a frame: call prepareGl after "

@@ -3,8 +3,8 @@
 // Key::program names the shader pair: Billboard, the particle draw (below), or one of the fixed
 // programs of the other passes (the quarter-res depth downsample, half-res z-fill and
 // composite's two builds; the opacity map's; the immediate path's depth lineariser; the five
-// mega passes'; the stateless particles'), whose files and defines are in ProgramCache.cpp
-// beside the billboards'.
+// mega passes'; the stateless particles'; the fade pyramid's two), whose files and defines are
+// in ProgramCache.cpp beside the billboards'.
 // A billboard key is the variant a batch draws with:
 //   variant          the technique's shaders and target kind (vs_particles + ...):
 //     HardZBuffer      fs_particles_hard                         (full res, z-buffer test)
@@ -16,6 +16,8 @@
 //   lit              FX_LIT: particles_common.glsl's smokeLight, for reactions under a scene light
 //   power            FX_POWER_STEPS = 2 contrast_power: Soft with the curve's multiplies folded
 //                    (power 1 draws no curve at all); -1 = no power folded
+//   fadeMask         FX_FADE_MASK: Soft and SoftGeneralPower at full res under fade
+//                    classification, skipping the depth fetch where FadePyramid says the fade is 1
 //   halfRes          FX_HALF_RES_DEPTH: Soft, SoftGeneralPower and Spherical drawn at quarter res,
 //                    reading the plugin's half-res linear depth as it is (no decode); HardLinearDepth
 //                    is quarter res only and always reads it so
@@ -69,6 +71,8 @@ struct ParticleProgram {
     FogUniforms fog;
     int trimmed = -1, shapeBuckets = -1, lodScale = -1, shapes = -1, shapeInfo = -1, pixelSlope = -1;
     int powerWhole = -1, powerHalf = -1;
+    // FX_FADE_MASK only.
+    int fadePyramid = -1, maskNdc = -1, maskWindow = -1, pyramidTop = -1;
     // FX_LIT only.
     int sunView = -1, sunColor = -1, ambient = -1, normalStrength = -1, scattering = -1, anisotropy = -1,
         absorption = -1, shadowed = -1, viewToShadow = -1, opacity = -1;
@@ -93,6 +97,8 @@ public:
         MegaShade,          ///< the same, FX_MEGA_SHADE
         MegaComposite,      ///< vs_particles_fullscreen + fs_mega_composite
         Stateless,          ///< vs_stateless_particles + fs_stateless_particles
+        FadePyramidFirst,   ///< vs_particles_fullscreen + fs_particles_fade_pyramid, FX_FADE_PYRAMID_FIRST
+        FadePyramidReduce,  ///< the same without it
         ProgramCount
     };
 
@@ -102,15 +108,20 @@ public:
         int powerSteps = -1;  ///< 2 contrast_power, 0 .. kMaxPowerSteps; -1: none (Soft only)
         Program program = Billboard;
         bool halfRes = false;  ///< drawn at quarter res, on the plugin's half-res depth (not HardLinearDepth)
-        /// This billboard key without its power: the variant's general build (lit, halfRes kept).
-        Key general() const { return Key{variant, lit, -1, Billboard, halfRes}; }
+        /// FX_FADE_MASK: Soft and SoftGeneralPower at full res, with the fade pyramid
+        /// (FadeClassification::On: FadePyramid.h)
+        bool fadeMask = false;
+        /// This billboard key without its power: the variant's general build (lit, halfRes and
+        /// fadeMask kept).
+        Key general() const { return Key{variant, lit, -1, Billboard, halfRes, fadeMask}; }
         /// The key of a pass's fixed program.
         static Key of(Program p) {
             Key k;
             k.program = p;
             return k;
         }
-        /// variant in bits 0-2, lit 3, powerSteps + 1 in 4-9, program in 10-13, halfRes 14.
+        /// variant in bits 0-2, lit 3, powerSteps + 1 in 4-9, program in 10-13, halfRes 14,
+        /// fadeMask 15.
         uint32_t bits() const;
         /// The #defines that select this variant (prepended to each stage).
         std::string defines() const;
@@ -146,8 +157,9 @@ public:
     /// find(filter(...)) of a batch of `v` with `contrastPower` (program 0 where none exists).
     const ParticleProgram& get(Variant v, bool lit, float contrastPower) const;
     /// The key a batch of `technique` with `contrastPower` asks for: its variant, `lit`, and for
-    /// Soft with a whole or half-whole power that power's folded build. Not filtered.
-    static Key drawKey(Technique technique, bool quarterRes, float contrastPower, bool lit);
+    /// Soft with a whole or half-whole power that power's folded build; with `fadeMask`, a soft
+    /// variant at full res takes its FX_FADE_MASK build. Not filtered.
+    static Key drawKey(Technique technique, bool quarterRes, float contrastPower, bool lit, bool fadeMask = false);
     /// `wanted` reduced to a program that was built (see the contract above); a key find() gives
     /// null for where the variant's general build is missing. Never builds.
     Key filter(Key wanted) const;
@@ -169,8 +181,12 @@ public:
     /// The mega renderer's five programs (MegaRenderer: built when mega is loaded).
     static std::vector<Key> megaKeys();
     /// Adds (once each) the keys a batch of `technique` with `contrastPower` draws with, lit and
-    /// unlit, on a quarter-res target or not.
-    static void addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys);
+    /// unlit, on a quarter-res target or not, with the fade mask or not (drawKey).
+    static void addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys,
+                            bool fadeMask = false);
+    /// The general FX_FADE_MASK builds of both soft variants, lit and unlit, and the fade
+    /// pyramid's two programs: what prepareGl adds while fade classification is on.
+    static std::vector<Key> fadeMaskKeys();
     /// `contrastPower` picks between the two soft programs (see above).
     static Variant variantFor(Technique technique, bool quarterRes, float contrastPower = 1.0f);
     /// contrast_power = whole + half / 2 with whole in [0, 16], half 0 or 1: true and the split.

@@ -66,7 +66,7 @@ public:
     ErrorCode setQuarterResEdges(QuarterResEdges mode) override;
     QuarterResEdges quarterResEdges() const override { return edges_; }
     ErrorCode setFadeClassification(FadeClassification mode) override;
-    FadeClassification fadeClassification() const override { return classification_; }
+    FadeClassification fadeClassification() const override { return settings_.classification; }
     ErrorCode setFadeClassCounting(bool on) override {
         (void)on;
         return ErrorCode::None;
@@ -113,7 +113,6 @@ private:
     int runtimeGeneration_ = 0;
     FrameSettings settings_;
     QuarterResEdges edges_ = QuarterResEdges::DepthAware;
-    FadeClassification classification_ = FadeClassification::Off;
     std::unique_ptr<Renderers> renderers_;
     mutable ApiErrors errors_;  // mutable: a const query (reactionName) may refuse too
     int particlesDrawn_ = 0;

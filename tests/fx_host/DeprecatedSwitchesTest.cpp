@@ -1,6 +1,8 @@
-// The switches deprecated in API 2.1 (Plugin::setQuarterResEdges, setFadeClassification,
-// setFadeClassCounting): a host written against 2.0 still calls them. They validate and keep
-// their value as before, and change nothing in the frame: the same passes, the same pixels.
+// The switches deprecated in API 2.1 (Plugin::setQuarterResEdges, setFadeClassCounting) and fade
+// classification (no effect in 2.1, per billboard block since 2.2): a host written against 2.0
+// still calls them. They validate and keep their value as before, and change nothing in the
+// frame: the same passes, the same pixels (FadeClassificationTest checks classification's
+// pixels on billboards large enough to be classified).
 #include <string>
 #include <vector>
 

@@ -314,6 +314,7 @@ struct RenderMode {
     const char* label;
     fx::Technique technique;
     bool quarter = false, lit = false;
+    bool classify = false;  ///< fade classification (FadeClassification::On)
 };
 /// The modes that more than one test file goes through.
 namespace modes {
@@ -324,6 +325,7 @@ inline constexpr RenderMode kSoftQuarter{"soft quarter", fx::Technique::Soft, tr
 inline constexpr RenderMode kSphericalQuarter{"spherical quarter", fx::Technique::Spherical, true};
 inline constexpr RenderMode kMega{"mega", fx::Technique::Mega};
 inline constexpr RenderMode kSoftLit{"soft lit", fx::Technique::Soft, false, true};
+inline constexpr RenderMode kSoftClassified{"soft classified", fx::Technique::Soft, false, false, true};
 }  // namespace modes
 
 // ---- hand-placed particles (TestParticles.cpp) ------------------------------------------------
@@ -347,7 +349,8 @@ public:
     void set(const std::vector<HandParticle>& particles);
     /// The plugin's hook body for one view: declares the renderer's passes into `frame`.
     int declare(const fx::ViewInfo& view, fx::FrameBuilder& frame);
-    /// The technique of `m` and its quarter res (always, when on) in `settings`; the light stays.
+    /// The technique of `m`, its quarter res (always, when on) and its fade classification in
+    /// `settings`; the light stays.
     void setMode(const RenderMode& m);
 
     fx::ReactionDesc desc;

@@ -38,7 +38,8 @@ constexpr int kColourBufferTolerance = 1;
 using Source = fx::ImmediateView::DepthSource;
 
 const RenderMode kModes[] = {modes::kHard,        modes::kSoft, modes::kSpherical,
-                             modes::kSoftQuarter, modes::kMega, modes::kSoftLit};
+                             modes::kSoftQuarter, modes::kMega, modes::kSoftLit,
+                             modes::kSoftClassified};
 
 
 class ImmediateRendererTest : public LoadedPluginTest {

@@ -39,6 +39,8 @@ void PluginHostTest::setMode(const RenderMode& m) {
     o.quarterRes = m.quarter;
     o.quarterResAlways = m.quarter;
     ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
+    ASSERT_EQ(plugin->setFadeClassification(m.classify ? fx::FadeClassification::On : fx::FadeClassification::Off),
+              fx::ErrorCode::None);
     if (m.lit) {
         ASSERT_EQ(plugin->setSceneLight(fx::SceneLight{}), fx::ErrorCode::None);
     } else {

@@ -29,6 +29,7 @@ const RenderMode kModes[] = {
     modes::kSphericalQuarter,
     modes::kMega,
     modes::kSoftLit,
+    modes::kSoftClassified,
     {"spherical quarter lit", fx::Technique::Spherical, true, true},
     {"from reactions (stateless sparks too)", fx::Technique::FromReaction},
 };

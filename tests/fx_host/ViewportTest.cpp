@@ -31,7 +31,8 @@ constexpr int kTolerance = 1;
 constexpr int kSphericalTolerance = 2;
 
 const RenderMode kModes[] = {modes::kHard,        modes::kSoft,             modes::kSpherical,
-                             modes::kSoftQuarter, modes::kSphericalQuarter, modes::kMega};
+                             modes::kSoftQuarter, modes::kSphericalQuarter, modes::kMega,
+                             modes::kSoftClassified};
 
 // An RGBA8 colour texture + a GL_DEPTH_COMPONENT24 depth texture in one framebuffer.
 struct Framebuffer : HostTarget {

@@ -80,10 +80,13 @@ enum class ParticleShape : uint8_t { Trimmed = 0, Quad = 1 };
 /// upsamples depth-aware.
 enum class QuarterResEdges : uint8_t { DepthAware = 0, MixedResolution = 1 };
 
-/// Deprecated since API 2.1, kept so hosts written against earlier versions still compile: no
-/// value has any effect (Plugin::setFadeClassification). On sorted soft and spherical particles
-/// by the scene depth's range per screen tile (API 1.3 to 2.0); on a GPU its tile pass cost more
-/// than the depth fetches it skipped, so it was removed.
+/// Fade classification (Plugin::setFadeClassification). On (since API 2.2): soft billboards drawn
+/// at full resolution skip the scene-depth fetch, and their fade, in the blocks of the screen
+/// where a pyramid of the scene's nearest depth (built in the particle pass) says no geometry
+/// lies within their softness; the picture is the same bit for bit. Billboards under 48 px
+/// across, quarter res and spherical particles are not classified. Off (the default) reads the
+/// depth everywhere. (API 1.3 to 2.0 classified soft and spherical particles per screen tile; on
+/// a GPU that tile pass cost more than it saved, and 2.1 removed it: no value had an effect.)
 enum class FadeClassification : uint8_t { Off = 0, On = 1 };
 
 /// Deprecated since API 2.1 with FadeClassification: Plugin::fadeClassCounts always returns it
@@ -257,11 +260,11 @@ public:
     }
     virtual QuarterResEdges quarterResEdges() const { return QuarterResEdges::DepthAware; }
 
-    // ---- API 1.3: fade classification (deprecated since API 2.1) ----
+    // ---- API 1.3: fade classification (no effect in API 2.1; per block since API 2.2) ----
 
-    /// API 1.3; deprecated since API 2.1, no effect (FadeClassification says why). The value is
-    /// still validated and kept: refused (InvalidValue, nothing changes) for a value outside the
-    /// enum, else fadeClassification() returns it. Default Off.
+    /// API 1.3; what On does: FadeClassification. Refused (InvalidValue, nothing changes) for a
+    /// value outside the enum, else fadeClassification() returns it. Default Off. Call prepareGl
+    /// after switching it on, as after any option, so no frame compiles its programs.
     virtual ErrorCode setFadeClassification(FadeClassification mode) {
         (void)mode;
         return ErrorCode::InvalidValue;

@@ -27,9 +27,9 @@
  *    2.0 entries that write them stay in the table and write exactly that layout, so a host built
  *    against the 2.0 header runs unchanged. A new host uses the entries named ...2 above. The
  *    option setters of 2.0 stay too: setParticleShape/particleShape are
- *    fxRenderOptions.particleShape now; the quarter-res edge and fade classification entries are
- *    accepted and have no effect since 2.1. Each deprecated entry is marked where the table lists
- *    it.
+ *    fxRenderOptions.particleShape now; the quarter-res edge entries are accepted and have no
+ *    effect since 2.1 (fade classification: see setFadeClassification). Each deprecated entry is
+ *    marked where the table lists it.
  *  - A refused call changes nothing, returns a named FX_ERROR_* code and is logged through the
  *    host's log callback ("fx: error[Code] function: what was expected"), at most a few times
  *    per (function, code), then counted in fxStats2.apiErrors. Where no host can be reached
@@ -422,10 +422,10 @@ typedef struct fxApi {
     /* Deprecated since API 2.1 (kept for 2.0 hosts): fxRenderOptions.particleShape. */
     int (*setParticleShape)(fxPlugin* p, int shape);
     int (*particleShape)(const fxPlugin* p);
-    /* Deprecated since API 2.1 (kept for 2.0 hosts): mixed-resolution edges and fade
-     * classification are gone from the renderer. The setters check their value as in 2.0 and the
-     * getters return it, with no effect on the picture; fadeClassCounts writes counted 0 and
-     * every count 0. */
+    /* Mixed-resolution edges (deprecated since 2.1, no effect) and fade classification: ON
+     * (since 2.2; off by default) lets soft billboards skip the scene-depth fetch per block where
+     * no geometry lies within their softness; the picture is the same. fadeClassCounts
+     * (deprecated since 2.1) writes counted 0 and every count 0. */
     int (*setQuarterResEdges)(fxPlugin* p, int edges);
     int (*quarterResEdges)(const fxPlugin* p);
     int (*setFadeClassification)(fxPlugin* p, int mode);
