@@ -90,6 +90,17 @@ variants["sphere-empty-before-fetch"] = [
     ("fs_particles_spherical.glsl",
      "    float sceneZ = sceneDepthAt(gl_FragCoord.xy);\n    if (d2 >= r2) discard;\n",
      "    if (d2 >= r2 || texel.a == 0.0) discard;\n    float sceneZ = sceneDepthAt(gl_FragCoord.xy);\n")]
+# Fade classification (soft+classify) without its mask: every block marked, so every fragment
+# fetches as soft's do. Its pass time less soft's is the pyramid's and the branch's cost; against
+# soft+classify's own, what the skipped fetches save (and the vertices' reads cost).
+variants["classify-no-mask"] = [
+    ("vs_particles.glsl", "    if (gl_VertexID < 2 || !(c.w > 0.0)) return;", "    return;")]
+# The fragment shader reduced to one blended write of nearly nothing: what is left of a pass is
+# its vertices, rasterisation, varyings and blending. Against the pass as it is: the fragment
+# shader's own cost (spherical's pass is 3.681 ms against hard's 1.205 on the H200, with 1.34
+# times the samples; its depth fetch is 0.36 ms of it and its chord nothing).
+for name, file in (("hard-fs-trivial", "fs_particles_hard.glsl"), ("sphere-fs-trivial", "fs_particles_spherical.glsl")):
+    variants[name] = [(file, "void main() {\n", "void main() {\n    oColor = vec4(0.0, 0.0, 0.0, 1.0 / 255.0);\n    return;\n")]
 write_copies(work, variants, "shader_parts.sh")
 (work / "variants").write_text("\n".join(variants) + "\n")
 PY
@@ -109,7 +120,7 @@ fxbench_with() {
         { echo "shader_parts.sh: build first (./run.sh or cmake --build build)" >&2; exit 1; }
     # An empty CUBE_SHADER_DIR means the shaders built into fxbench (engine_stub/gl/Paths.cpp).
     [ "$variant" = now ] || shaderDir=$(cd "$parts/$variant" && pwd)
-    CUBE_SHADER_DIR="$shaderDir" "${fxbench[@]}" --modes hard,soft,spherical,soft+quarter-always "$@"
+    CUBE_SHADER_DIR="$shaderDir" "${fxbench[@]}" --modes hard,soft,spherical,soft+quarter-always,soft+classify "$@"
 }
 
 # Step 2 (bash only): fxbench with its built-in shaders ("now") and with each copy in $1, twice,
