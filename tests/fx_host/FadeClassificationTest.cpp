@@ -16,12 +16,33 @@
 #include <string>
 #include <vector>
 
+#include <glad/gl.h>
+
 #include "FxTestHost.h"
 
 namespace fxtest {
 namespace fade_classification_test {  // named: the fx_host tests build as unity batches
 
 constexpr int kW = 256, kH = 192;
+
+// The shaders with the soft program's skipped fragments discarded, in a folder of their own.
+std::string shadersDiscardingSkips() {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(scratchDir()) / "shaders_discarding_skips";
+    fs::remove_all(dir);
+    fs::copy(fs::path(CUBE_SOURCE_DIR) / "shaders", dir);
+    const fs::path soft = dir / "fs_particles_soft.glsl";
+    std::ifstream in(soft);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string s = text.str();
+    const std::string at = "    float fade = 1.0;\n";
+    const size_t pos = s.find(at);
+    EXPECT_NE(pos, std::string::npos) << soft << ": the line this test edits is not there";
+    if (pos != std::string::npos) s.insert(pos, "    if (!nearScene) discard;\n");
+    std::ofstream(soft) << s;
+    return dir.string();
+}
 
 class FadeClassificationTest : public FxHostTest {
 protected:
@@ -31,25 +52,6 @@ protected:
         renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = particles.declare(view, f); });
         return graph.readColor();
     }
-    // The shaders with the soft program's skipped fragments discarded, in a folder of their own.
-    static std::string shadersDiscardingSkips() {
-        namespace fs = std::filesystem;
-        const fs::path dir = fs::path(scratchDir()) / "shaders_discarding_skips";
-        fs::remove_all(dir);
-        fs::copy(fs::path(CUBE_SOURCE_DIR) / "shaders", dir);
-        const fs::path soft = dir / "fs_particles_soft.glsl";
-        std::ifstream in(soft);
-        std::stringstream text;
-        text << in.rdbuf();
-        std::string s = text.str();
-        const std::string at = "    float fade = 1.0;\n";
-        const size_t pos = s.find(at);
-        EXPECT_NE(pos, std::string::npos) << soft << ": the line this test edits is not there";
-        if (pos != std::string::npos) s.insert(pos, "    if (!nearScene) discard;\n");
-        std::ofstream(soft) << s;
-        return dir.string();
-    }
-
     TestHostAdapter host;
     DirectParticles direct{&host};
     int drawn = 0;
@@ -172,6 +174,96 @@ TEST_F(FadeClassificationTest, SkipsTheFetchOnlyWhereTheFadeIsOne) {
         EXPECT_GT(kept, 0) << "the contact line needs its fade";
         EXPECT_EQ(wrong, 0) << "a skipped pixel whose fade is not 1";
     }
+}
+
+// A view away from (0, 0) of a larger framebuffer (a split screen's second player), drawn through
+// renderView: the blocks are the view's own pixels, wherever it lies, so the classified frame is
+// the unclassified one bit for bit, reading the bound framebuffer's depth (the plugin's copy) or
+// the host's whole-framebuffer depth texture in place. The camera stands 3 m from the smoke; a
+// second plugin with the soft shader that discards what it skips shows that classification
+// does skip there (fewer smoke pixels classified than not).
+class FadeClassificationSplitTest : public LoadedPluginTest {
+protected:
+    FadeClassificationSplitTest() : LoadedPluginTest(kW, kH, kSmokeOnWall) {}
+
+    static constexpr int kX = 37, kY = 11, kFw = kX + kW + 5, kFh = kY + kH + 3;
+
+    // The view's frame into `split` at (kX, kY), classified or not, by `p`.
+    Image frame(fx::Plugin& p, const fx::ViewInfo& v, bool classify, bool texture, const HostTarget& scratch,
+                const HostTarget& split) {
+        EXPECT_EQ(p.setFadeClassification(classify ? fx::FadeClassification::On : fx::FadeClassification::Off),
+                  fx::ErrorCode::None);
+        EXPECT_TRUE(p.prepareGl(nullptr));
+        glBindFramebuffer(GL_FRAMEBUFFER, scratch.fbo);
+        scene.drawOpaque(v);
+        glBindFramebuffer(GL_FRAMEBUFFER, split.fbo);
+        glViewport(0, 0, kFw, kFh);
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glClearDepth(1.0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, scratch.fbo);
+        glBlitFramebuffer(0, 0, kW, kH, kX, kY, kX + kW, kY + kH, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT,
+                          GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, split.fbo);
+        glViewport(kX, kY, kW, kH);
+        fx::HostDepth depth;
+        if (texture) {
+            depth.source = fx::HostDepth::Source::DepthTexture;
+            depth.texture = split.depth;
+        }
+        EXPECT_EQ(p.renderView(v, depth), fx::ErrorCode::None);
+        EXPECT_GT(p.stats().particlesDrawn, 0);
+        return readFramebuffer(split.fbo, kFw, kFh);
+    }
+    // Pixels of the view's rectangle of `f` that differ from the opaque scene alone.
+    int smokePixels(const Image& f, const Image& opaque) const {
+        int n = 0;
+        for (int y = 0; y < kH; ++y) {
+            for (int x = 0; x < kW; ++x) n += f.at(kX + x, kY + y)[1] != opaque.at(x, y)[1] ? 1 : 0;
+        }
+        return n;
+    }
+};
+
+TEST_F(FadeClassificationSplitTest, AViewAwayFromTheOriginIsTheUnclassifiedOne) {
+    const fx::ViewInfo near = makeView(glm::vec3(-2.0f, 1.0f, 3.0f), glm::vec3(0.3f, 0.6f, 0.5f), kW, kH);
+    HostTarget scratch(kW, kH, GL_DEPTH_COMPONENT24), split(kFw, kFh, GL_DEPTH_COMPONENT24);
+    fx::RenderOptions o;
+    o.techniqueOverride = fx::Technique::Soft;
+    ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
+
+    // The same smoke in a plugin that reads the discarding copy: simulated alike.
+    fx::PluginImports imports;
+    imports.host = &host;
+    imports.shaderDir = shadersDiscardingSkips();
+    std::unique_ptr<fx::Plugin> discarding = fxCreatePlugin(imports);
+    ASSERT_TRUE(discarding);
+    ASSERT_TRUE(discarding->loadReactions(kSmokeOnWall.reactions, nullptr));
+    ASSERT_EQ(discarding->setRenderOptions(o), fx::ErrorCode::None);
+    plugin.swap(discarding);
+    simulate(1.0f, kSmokeOnWall.slippingSteps);
+    plugin.swap(discarding);
+
+    glBindFramebuffer(GL_FRAMEBUFFER, scratch.fbo);
+    scene.drawOpaque(near);
+    const Image opaque = readFramebuffer(scratch.fbo, kW, kH);
+    for (const bool texture : {false, true}) {
+        SCOPED_TRACE(texture ? "the host's depth texture" : "the bound framebuffer's depth");
+        const Image plain = frame(*plugin, near, false, texture, scratch, split);
+        const Image classified = frame(*plugin, near, true, texture, scratch, split);
+        const int smoke = smokePixels(plain, opaque);
+        EXPECT_GT(smoke, kW * kH / 20) << "little smoke in the view: the comparison would prove little";
+        EXPECT_EQ(maxAbsDiff(plain, classified), 0);
+
+        EXPECT_EQ(maxAbsDiff(frame(*discarding, near, false, texture, scratch, split), plain), 0)
+            << "the discarding copy draws the same smoke unclassified";
+        const int kept = smokePixels(frame(*discarding, near, true, texture, scratch, split), opaque);
+        std::printf("[ measured ] split screen, %s: %d of %d smoke pixels fetch the depth classified\n",
+                    texture ? "depth texture" : "bound framebuffer", kept, smoke);
+        EXPECT_LT(kept, smoke) << "nothing was classified: the comparison above proves nothing";
+    }
+    discarding.reset();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 }  // namespace fade_classification_test
