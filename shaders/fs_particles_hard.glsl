@@ -10,7 +10,7 @@ layout(location = 0) out vec4 oColor;
 
 void main() {
     // Outside the frame only the alpha needs masking: coverage carries it to the colour.
-    vec4 texel = texture(uAtlas, vAtlasUV);
+    vec4 texel = texture(uAtlas, vAtlasUV);  // one mip level, the nearest (ParticleDraw's atlasSampler_)
     texel.a *= insideFrame(vLocal);
     float coverage = texel.a;  // the near fade is in vTint (a billboard lies at one depth)
 #ifdef FX_LINEAR_DEPTH_TEST

@@ -13,7 +13,7 @@ layout(location = 0) out vec4 oColor;
 
 void main() {
     // Outside the frame only the alpha needs masking: coverage carries it to the colour.
-    vec4 texel = texture(uAtlas, vAtlasUV);
+    vec4 texel = texture(uAtlas, vAtlasUV);  // one mip level, the nearest (ParticleDraw's atlasSampler_)
     texel.a *= insideFrame(vLocal);
     // Where the atlas alone says the output is 0 (the empty rim inside a trimmed polygon), the
     // scene-depth fetch, the pass's costliest part on a GPU, is not made.

@@ -19,9 +19,10 @@ ClampSampler::~ClampSampler() {
 
 void ClampSampler::create() {
     if (sampler_) return;
-    const GLint filter = filter_ == Filter::Linear ? GL_LINEAR : GL_NEAREST;
+    const GLint filter = filter_ == Filter::Nearest ? GL_NEAREST : GL_LINEAR;
     glGenSamplers(1, &sampler_);
-    glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, filter);
+    glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER,
+                        filter_ == Filter::LinearNearestMip ? GL_LINEAR_MIPMAP_NEAREST : filter);
     glSamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, filter);
     glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);

@@ -89,9 +89,11 @@ void bindTextureUnit(int unit, uint32_t texture, uint32_t sampler = 0);
 ///   filter is bound.
 /// - Linear: the quarter-res composite's half-res colour, whose bilinear weights the filter
 ///   computes (a host's frame graph may not honour TargetDesc::linearFilter).
+/// - LinearNearestMip: bilinear within the nearest mip level (GL_LINEAR_MIPMAP_NEAREST), the
+///   levels the texture has: the billboards' atlas reads (one level, half trilinear's texels).
 class ClampSampler {
 public:
-    enum class Filter { Nearest, Linear };
+    enum class Filter { Nearest, Linear, LinearNearestMip };
     explicit ClampSampler(Filter filter = Filter::Nearest) : filter_(filter) {}
     ~ClampSampler();
     ClampSampler(const ClampSampler&) = delete;
@@ -100,6 +102,7 @@ public:
     /// bindTextureUnit with this sampler on `unit` (below GlStateGuard::kTextureUnits, so a guard
     /// restores the host's).
     void bindTexture(int unit, uint32_t texture) const;
+    uint32_t name() const { return sampler_; }
 
 private:
     Filter filter_;

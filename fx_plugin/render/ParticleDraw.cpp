@@ -30,6 +30,7 @@ glm::vec2 nearFadeMap(float fade, float nearPlane) {
 void ParticleDraw::create() {
     stream_.create();
     depthSampler_.create();
+    atlasSampler_.create();
     ramp_.upload();
     shapeTable_ = atlas_.shapes().packed();
     discTable_ = atlas_.shapes().packed(TrimmedShapes::Clip::Disc);
@@ -82,7 +83,6 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
     in.clip.apply();  // a host's scissor on sceneColor keeps clipping the smoke
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
-    bindTextureUnit(kAtlasUnit, atlas_.texture());
     bindTextureUnit(kRampUnit, ramp_.texture());
     if (record.lit()) {
         bindTextureUnit(kOpacityUnit, in.opacity);
@@ -112,7 +112,12 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
         if (!found) continue;
         const ParticleProgram& p = *found;
         const bool lit = key.lit;
-        if (record.lit()) bindTextureUnit(kAtlasUnit, lit ? atlas_.litTexture() : atlas_.texture());
+        // Billboards read one mip level, the nearest (atlasSampler_): a billboard faces the camera,
+        // so its level of detail is one value over the whole quad, and trilinear's blend of two
+        // levels would cost a second bilinear read of every fragment for a picture within 4/255.
+        // Spheres, whose level of detail varies over the disc, keep the texture's trilinear filter.
+        const bool sphere = key.variant == ProgramCache::Spherical;
+        bindTextureUnit(kAtlasUnit, lit ? atlas_.litTexture() : atlas_.texture(), sphere ? 0u : atlasSampler_.name());
         // Full resolution tests against the host's z-buffer without writing it. Hard particles
         // always do (that is their look). Soft and spherical ones only skip fragments there that
         // would shade to nothing (behind geometry their fade / visible chord is 0), which needs a
@@ -171,7 +176,6 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
         // around the sphere where its bounds do not hold: vs_particles.glsl).
         glUniform1i(p.trimmed, trimmed ? 1 : 0);
         if (trimmed) {
-            const bool sphere = key.variant == ProgramCache::Spherical;
             const std::vector<glm::vec4>& table = sphere ? discTable_ : shapeTable_;
             glUniform1i(p.shapeBuckets, atlas_.shapes().buckets());
             glUniform1f(p.lodScale, lodScale);

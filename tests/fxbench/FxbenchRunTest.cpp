@@ -128,7 +128,10 @@ TEST(Fxbench, TrimmedSoftRasterisesFewerFragmentsThanQuadsForTheSameImage) {
     const YAML::Node& run = tinyRun("standard");
     const YAML::Node soft = modeNode(run, "soft"), quads = modeNode(run, "soft-quads");
     EXPECT_EQ(quads["error"]["reference"].as<std::string>(), "soft");
-    EXPECT_LE(quads["error"]["max_abs"].as<double>(), 1.0);  // 8-bit levels
+    // 8-bit levels. At 64x64 the particles are a few pixels across and read coarse mip levels,
+    // whose steeper bilinear slopes turn the two triangulations' rounding into up to 2 (1 from
+    // 160x120 up).
+    EXPECT_LE(quads["error"]["max_abs"].as<double>(), 2.0);
     const double written = soft["particle_fragments"].as<double>();
     ASSERT_GT(written, 0.0);
     // A trimmed polygon holds every texel with smoke: the same samples within 1 % (at 64x64 a
