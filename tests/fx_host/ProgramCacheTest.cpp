@@ -144,6 +144,10 @@ TEST_F(ProgramCacheTest, NoFrameCompilesAcrossOptionSwitchesWhenTheHostPreparesA
              light.ambient = glm::vec3(0.3f);
              ASSERT_EQ(plugin->setSceneLight(light), fx::ErrorCode::None);
          }, false},
+        // Fade classification reaches the soft programs' FX_FADE_MASK builds and the pyramid's.
+        {"fade classification", [&] {
+             ASSERT_EQ(plugin->setFadeClassification(fx::FadeClassification::On), fx::ErrorCode::None);
+         }, true},
     };
     for (const Switch& s : switches) {
         s.apply();
