@@ -12,6 +12,11 @@
 #   fetched: soft+classify (FadePyramid.h) with the fragments it skips discarded: those that
 #            still fetch the scene depth (the pyramid's own samples, written in the same pass,
 #            taken off).
+# and, for spheres, whose fetch comes before their discards (so those are taken out of these copies):
+#   sphere-all:     spherical: every fragment its shape rasterises fetches;
+#   sphere-fetched: spherical+classify with the fragments it skips discarded (pyramid taken off);
+#   sphere-need:    spherical as shipped, also discarding a chord the scene does not clip: what
+#                   needs the fetch, the ceiling of any classification of spheres.
 #   scripts/ideal_fragments.sh [fxbench options...]   (default: the standard scene, 1 round;
 #                                                      fxbench is $FXBENCH, default ./build/bin/fxbench)
 set -euo pipefail
@@ -36,6 +41,12 @@ edits = {
 }
 edits["fetched"] = [("fs_particles_soft.glsl", "    float fade = 1.0;\n",
                      "    if (!nearScene) discard;\n    float fade = 1.0;\n")]
+edits["sphere-all"] = [("fs_particles_spherical.glsl", "    if (d2 >= r2) discard;\n", ""),
+                       ("fs_particles_spherical.glsl", "    if (coverage == 0.0) discard;\n", "")]
+edits["sphere-fetched"] = edits["sphere-all"] + [
+    ("fs_particles_spherical.glsl", "    float sceneZ = 3.0e38;\n", "    if (!nearScene) discard;\n    float sceneZ = 3.0e38;\n")]
+edits["sphere-need"] = [("fs_particles_spherical.glsl", "    float visible = clamp(",
+                         "    if (sceneZ >= tMid + halfDepth) discard;\n    float visible = clamp(")]
 edits["visible"] = edits["alpha"] + [
     ("fs_particles_spherical.glsl", "    float coverage = texel.a * visible",
      "    if (visible <= 0.0) discard;\n    float coverage = texel.a * visible"),
@@ -52,6 +63,10 @@ for variant in drawn alpha visible; do
         --json "$work/$variant.json" >/dev/null
 done
 CUBE_SHADER_DIR="$work/fetched" "$fxbench" --modes soft+classify "${args[@]}" --json "$work/fetched.json" >/dev/null
+for variant in sphere-all:spherical sphere-fetched:spherical+classify sphere-need:spherical; do
+    CUBE_SHADER_DIR="$work/${variant%%:*}" "$fxbench" --modes "${variant#*:}" "${args[@]}" \
+        --json "$work/${variant%%:*}.json" >/dev/null
+done
 
 python3 - "$work" <<'EOF'
 import json, sys
@@ -82,4 +97,10 @@ print(f"\nsoft+classify: {classified:,.0f} fragments fetch the scene depth, of {
       f"smoke ({runs['visible']['soft']:,.0f} need it)")
 if not runs["visible"]["soft"] <= classified <= runs["alpha"]["soft"]:
     sys.exit("ideal_fragments.sh: classification fetches fewer than need it, or more than soft does")
+sphere = {v: json.load(open(f"{work}/sphere-{v}.json"))["modes"][0]["particle_fragments"] for v in ("all", "fetched", "need")}
+sphere["fetched"] -= pyramid
+print(f"spherical+classify: {sphere['fetched']:,.0f} fragments fetch the scene depth, of {sphere['all']:,.0f} spherical "
+      f"rasterises ({sphere['need']:,.0f} need it: a chord the scene clips)")
+if not sphere["need"] <= sphere["fetched"] <= sphere["all"]:
+    sys.exit("ideal_fragments.sh: spheres' classification fetches fewer than need it, or more than spherical does")
 EOF

@@ -88,13 +88,16 @@ variants["soft-fetch-empty"] = [
 # chosen for the two fetches' overlap and has not been timed against it.
 variants["sphere-empty-before-fetch"] = [
     ("fs_particles_spherical.glsl",
-     "    float sceneZ = sceneDepthAt(gl_FragCoord.xy);\n    if (d2 >= r2) discard;\n",
-     "    if (d2 >= r2 || texel.a == 0.0) discard;\n    float sceneZ = sceneDepthAt(gl_FragCoord.xy);\n")]
-# Fade classification (soft+classify) without its mask: every block marked, so every fragment
-# fetches as soft's do. Its pass time less soft's is the pyramid's and the branch's cost; against
-# soft+classify's own, what the skipped fetches save (and the vertices' reads cost).
+     "#else\n    float sceneZ = sceneDepthAt(gl_FragCoord.xy);\n#endif\n    if (d2 >= r2) discard;\n",
+     "#else\n    if (d2 >= r2 || texel.a == 0.0) discard;\n    float sceneZ = sceneDepthAt(gl_FragCoord.xy);\n"
+     "#endif\n    if (d2 >= r2) discard;\n")]
+# Fade classification (soft+classify, spherical+classify) without its mask: every block marked,
+# so every fragment fetches as soft's (spherical's) do. Its pass time less soft's is the
+# pyramid's and the branch's cost; against soft+classify's own, what the skipped fetches save
+# (and the vertices' reads cost).
 variants["classify-no-mask"] = [
-    ("vs_particles.glsl", "    if (gl_VertexID < 2 || !(c.w > 0.0)) return;", "    return;")]
+    ("vs_particles.glsl", "void fadeMaskOf(vec2 ndcLo, vec2 ndcHi, float depth) {\n",
+     "void fadeMaskOf(vec2 ndcLo, vec2 ndcHi, float depth) {\n    return;\n")]
 # The fragment shader reduced to one blended write of nearly nothing: what is left of a pass is
 # its vertices, rasterisation, varyings and blending. Against the pass as it is: the fragment
 # shader's own cost (spherical's pass is 3.681 ms against hard's 1.205 on the H200, with 1.34
@@ -120,7 +123,7 @@ fxbench_with() {
         { echo "shader_parts.sh: build first (./run.sh or cmake --build build)" >&2; exit 1; }
     # An empty CUBE_SHADER_DIR means the shaders built into fxbench (engine_stub/gl/Paths.cpp).
     [ "$variant" = now ] || shaderDir=$(cd "$parts/$variant" && pwd)
-    CUBE_SHADER_DIR="$shaderDir" "${fxbench[@]}" --modes hard,soft,spherical,soft+quarter-always,soft+classify "$@"
+    CUBE_SHADER_DIR="$shaderDir" "${fxbench[@]}" --modes hard,soft,spherical,soft+quarter-always,soft+classify,spherical+classify "$@"
 }
 
 # Step 2 (bash only): fxbench with its built-in shaders ("now") and with each copy in $1, twice,

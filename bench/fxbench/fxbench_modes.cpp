@@ -34,6 +34,10 @@ const std::vector<Mode>& allModes() {
          false, "spherical", fx::ParticleShape::Quad},
         {"spherical+quarter", "Spherical billboards, 1/4-size texture", true, Technique::Spherical, false, true,
          "spherical"},
+        // The depth fetch skipped where the scene lies past each sphere's deepest point.
+        {"spherical+classify", "Spherical billboards, chord clipping classified per block of each sphere", true,
+         Technique::Spherical, false, false, "spherical", fx::ParticleShape::Trimmed, false, false, false, false,
+         true},
         // Lit smoke: normals, sun, scattering and the opacity map; each its own
         // reference (the cost of light is read against the unlit row above it).
         {"hard-lit", "Hard particles, lit and self-shadowed", true, Technique::Hard, false, false, "hard-lit",
@@ -75,10 +79,6 @@ namespace {
 // Modes of earlier builds whose rendering feature was removed: named in the refusal so a script
 // written for them learns why rather than only that the name is unknown.
 const char* removedModeReason(const std::string& name) {
-    if (name == "spherical+classify") {
-        return "fade classification of spheres was removed in API 2.1 (on a GPU its tile pass cost more than it "
-               "saved); soft+classify classifies soft billboards by blocks of each one instead";
-    }
     if (name == "soft+mixed") {
         return "mixed resolution was removed in API 2.1 (on a GPU its edge pass cost more than quarter res "
                "saves, for no better image)";

@@ -36,14 +36,16 @@ struct Mode {
     bool linearDepth = false;
     /// Quarter res in every view (RenderOptions::quarterResAlways) instead of only where it pays.
     bool quarterResAlways = false;
-    /// Fade classification (Plugin::setFadeClassification, `soft+classify`): soft billboards skip
-    /// the scene-depth fetch where the fade pyramid says their fade is 1.
+    /// Fade classification (Plugin::setFadeClassification, `soft+classify`,
+    /// `spherical+classify`): soft billboards and spheres skip the scene-depth fetch where the
+    /// fade pyramid says their fade is 1 or their chord ends inside them.
     bool classify = false;
 };
 
 /// Every mode, in table order: nofx, hard, soft, soft-quads, soft+equal, soft+quarter,
 /// soft+quarter-always, soft+equal+quarter, soft+classify (against soft: the same picture),
-/// spherical, spherical-quads, spherical+quarter, hard-lit, soft-lit,
+/// spherical, spherical-quads, spherical+quarter, spherical+classify (against spherical: the same
+/// picture), hard-lit, soft-lit,
 /// spherical-lit, mega (image error
 /// against spherical: the same particles as exact spheres), mega-lit (against spherical-lit),
 /// soft-zbuffer and spherical-zbuffer (the immediate path on the engine's z-buffer, against

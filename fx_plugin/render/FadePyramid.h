@@ -1,11 +1,13 @@
 #pragma once
 // The fade pyramid: the scene's nearest linear depth over square blocks of a view, 4 x 4 pixels
 // at level 0 and twice as wide each level up, down to a level of at most 4 x 4 blocks
-// (fs_particles_fade_pyramid.glsl). Built in the particle pass before the soft billboards draw
-// (FadeClassification::On, full resolution): each billboard's vertices read the 4 x 4 blocks of
-// the lowest level that covers it in that many and set one bit per block where the scene may come
-// within its softness (vs_particles.glsl, FX_FADE_MASK). A fragment in a block without its bit
-// has a fade of exactly 1 and skips the scene-depth fetch (fs_particles_soft.glsl).
+// (fs_particles_fade_pyramid.glsl). Built in the particle pass before the soft billboards and
+// spheres draw (FadeClassification::On, full resolution): each particle's vertices read the
+// blocks of the lowest level that covers it in 16 x 16 of them and set one bit per block where
+// the scene may come within its softness, or (a sphere) nearer than its deepest point
+// (vs_particles.glsl, FX_FADE_MASK). A fragment in a block without its bit has a fade of exactly
+// 1, or a chord the scene does not clip, and skips the scene-depth fetch
+// (fs_particles_soft.glsl, fs_particles_spherical.glsl).
 //
 // Contract:
 //  - every level is a lower bound of the decoded scene depth (linearSceneDepth) of every view

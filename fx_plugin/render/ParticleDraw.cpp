@@ -70,9 +70,11 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
     bool fadeMask = false;
     if (record.settings.classification == FadeClassification::On && !in.quarterRes && in.sceneDepth &&
         list.needsSceneDepth) {
-        bool soft = false;
-        for (const DrawBatch& batch : list.batches) soft = soft || batch.technique == Technique::Soft;
-        fadeMask = soft && fadePyramid_.build(in.sceneDepth, depthDecode, glm::ivec2(view.width, view.height),
+        bool reads = false;  // a soft or spherical batch: their fragments read the scene depth
+        for (const DrawBatch& batch : list.batches) {
+            reads = reads || batch.technique == Technique::Soft || batch.technique == Technique::Spherical;
+        }
+        fadeMask = reads && fadePyramid_.build(in.sceneDepth, depthDecode, glm::ivec2(view.width, view.height),
                                               depthSampler_, kSceneDepthUnit, kFadePyramidUnit);
     }
     glActiveTexture(GL_TEXTURE0);

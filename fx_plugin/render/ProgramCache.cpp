@@ -185,7 +185,7 @@ ProgramCache::Key ProgramCache::drawKey(Technique technique, bool quarterRes, fl
     const int steps = v == Soft && halfWholePower(contrastPower, &whole, &half) ? 2 * whole + half : -1;
     // HardLinearDepth is half-res by its defines.
     return Key{v, lit, steps, Billboard, quarterRes && v != HardLinearDepth,
-               fadeMask && !quarterRes && (v == Soft || v == SoftGeneralPower)};
+               fadeMask && !quarterRes && (v == Soft || v == SoftGeneralPower || v == Spherical)};
 }
 
 ProgramCache::Key ProgramCache::filter(Key wanted) const {
@@ -235,7 +235,7 @@ std::vector<ProgramCache::Key> ProgramCache::megaKeys() {
 std::vector<ProgramCache::Key> ProgramCache::fadeMaskKeys() {
     std::vector<Key> keys;
     for (bool lit : {false, true}) {
-        for (Variant v : {Soft, SoftGeneralPower}) keys.push_back(Key{v, lit, -1, Billboard, false, true});
+        for (Variant v : {Soft, SoftGeneralPower, Spherical}) keys.push_back(Key{v, lit, -1, Billboard, false, true});
     }
     for (Program p : {FadePyramidFirst, FadePyramidReduce}) keys.push_back(Key::of(p));
     return keys;

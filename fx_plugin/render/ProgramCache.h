@@ -16,8 +16,9 @@
 //   lit              FX_LIT: particles_common.glsl's smokeLight, for reactions under a scene light
 //   power            FX_POWER_STEPS = 2 contrast_power: Soft with the curve's multiplies folded
 //                    (power 1 draws no curve at all); -1 = no power folded
-//   fadeMask         FX_FADE_MASK: Soft and SoftGeneralPower at full res under fade
+//   fadeMask         FX_FADE_MASK: Soft, SoftGeneralPower and Spherical at full res under fade
 //                    classification, skipping the depth fetch where FadePyramid says the fade is 1
+//                    (a sphere's chord ends inside it)
 //   halfRes          FX_HALF_RES_DEPTH: Soft, SoftGeneralPower and Spherical drawn at quarter res,
 //                    reading the plugin's half-res linear depth as it is (no decode); HardLinearDepth
 //                    is quarter res only and always reads it so
@@ -108,7 +109,7 @@ public:
         int powerSteps = -1;  ///< 2 contrast_power, 0 .. kMaxPowerSteps; -1: none (Soft only)
         Program program = Billboard;
         bool halfRes = false;  ///< drawn at quarter res, on the plugin's half-res depth (not HardLinearDepth)
-        /// FX_FADE_MASK: Soft and SoftGeneralPower at full res, with the fade pyramid
+        /// FX_FADE_MASK: Soft, SoftGeneralPower and Spherical at full res, with the fade pyramid
         /// (FadeClassification::On: FadePyramid.h)
         bool fadeMask = false;
         /// This billboard key without its power: the variant's general build (lit, halfRes and
@@ -158,7 +159,7 @@ public:
     const ParticleProgram& get(Variant v, bool lit, float contrastPower) const;
     /// The key a batch of `technique` with `contrastPower` asks for: its variant, `lit`, and for
     /// Soft with a whole or half-whole power that power's folded build; with `fadeMask`, a soft
-    /// variant at full res takes its FX_FADE_MASK build. Not filtered.
+    /// or spherical variant at full res takes its FX_FADE_MASK build. Not filtered.
     static Key drawKey(Technique technique, bool quarterRes, float contrastPower, bool lit, bool fadeMask = false);
     /// `wanted` reduced to a program that was built (see the contract above); a key find() gives
     /// null for where the variant's general build is missing. Never builds.
@@ -184,8 +185,9 @@ public:
     /// unlit, on a quarter-res target or not, with the fade mask or not (drawKey).
     static void addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys,
                             bool fadeMask = false);
-    /// The general FX_FADE_MASK builds of both soft variants, lit and unlit, and the fade
-    /// pyramid's two programs: what prepareGl adds while fade classification is on.
+    /// The general FX_FADE_MASK builds of both soft variants and the spherical one, lit and
+    /// unlit, and the fade pyramid's two programs: what prepareGl adds while fade classification
+    /// is on.
     static std::vector<Key> fadeMaskKeys();
     /// `contrastPower` picks between the two soft programs (see above).
     static Variant variantFor(Technique technique, bool quarterRes, float contrastPower = 1.0f);

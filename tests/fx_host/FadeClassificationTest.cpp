@@ -1,14 +1,15 @@
-// Fade classification (FadePyramid.h, FadeClassification::On): soft billboards skip the scene-depth
-// fetch in the blocks where the fade pyramid says no geometry lies within their softness.
+// Fade classification (FadePyramid.h, FadeClassification::On): soft billboards and spheres skip
+// the scene-depth fetch in the blocks where the fade pyramid says no geometry lies within their
+// softness, or (spheres) no nearer than their deepest point.
 //  - The picture is the one drawn without it, bit for bit: under standard depth (the linear
 //    target), reversed-Z and a reversed-Z z-buffer read in place, near and far clip planes of
-//    0.01 m and 1e7 m, contrast powers folded and general, and billboards that cross the ground,
+//    0.01 m and 1e7 m, contrast powers folded and general, and particles that cross the ground,
 //    stand well in front of a wall, just in front of it, fill more than the view, reach behind
 //    the camera or lie wholly behind it.
-//  - It skips: with a copy of the soft shader that discards a skipped fragment instead of giving
-//    it a fade of 1, a billboard far in front of a wall draws nothing at all, and one that crosses
-//    the ground loses a share of its pixels, each of which the unclassified draw shows exactly as
-//    with the ground gone (its fade there is 1).
+//  - It skips: with copies of the soft and spherical shaders that discard a skipped fragment
+//    instead of giving it a fade of 1 (an unclipped chord), a particle far in front of a wall
+//    draws nothing at all, and one that crosses the ground loses a share of its pixels, each of
+//    which the unclassified draw shows exactly as with the ground gone.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -25,24 +26,29 @@ namespace fade_classification_test {  // named: the fx_host tests build as unity
 
 constexpr int kW = 256, kH = 192;
 
-// The shaders with the soft program's skipped fragments discarded, in a folder of their own.
+// The shaders with the soft and spherical programs' skipped fragments discarded, in a folder of
+// their own.
 std::string shadersDiscardingSkips() {
     namespace fs = std::filesystem;
     const fs::path dir = fs::path(scratchDir()) / "shaders_discarding_skips";
     fs::remove_all(dir);
     fs::copy(fs::path(CUBE_SOURCE_DIR) / "shaders", dir);
-    const fs::path soft = dir / "fs_particles_soft.glsl";
-    std::ifstream in(soft);
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string s = text.str();
-    const std::string at = "    float fade = 1.0;\n";
-    const size_t pos = s.find(at);
-    EXPECT_NE(pos, std::string::npos) << soft << ": the line this test edits is not there";
-    if (pos != std::string::npos) s.insert(pos, "    if (!nearScene) discard;\n");
-    std::ofstream(soft) << s;
+    for (const auto& [file, at] : {std::pair<const char*, const char*>{"fs_particles_soft.glsl", "    float fade = 1.0;\n"},
+                                   {"fs_particles_spherical.glsl", "    float sceneZ = 3.0e38;\n"}}) {
+        const fs::path path = dir / file;
+        std::ifstream in(path);
+        std::stringstream text;
+        text << in.rdbuf();
+        std::string s = text.str();
+        const size_t pos = s.find(at);
+        EXPECT_NE(pos, std::string::npos) << path << ": the line this test edits is not there";
+        if (pos != std::string::npos) s.insert(pos, "    if (!nearScene) discard;\n");
+        std::ofstream(path) << s;
+    }
     return dir.string();
 }
+
+const char* techniqueName(fx::Technique t) { return t == fx::Technique::Soft ? "soft" : "spherical"; }
 
 class FadeClassificationTest : public FxHostTest {
 protected:
@@ -57,12 +63,11 @@ protected:
     int drawn = 0;
 };
 
-// White smoke (softness 1 m) on a black world: ground, a far wall and billboards of every kind of
-// placement; every frame drawn with and without classification.
+// White smoke (softness 1 m) on a black world: ground, a far wall and particles of every kind of
+// placement, soft billboards and spheres; every frame drawn with and without classification.
 TEST_F(FadeClassificationTest, ClassifiedFramesAreBitIdenticalToUnclassifiedOnes) {
     direct.desc.render.softness = 1.0f;
     direct.desc.render.nearFade = 0.3f;
-    direct.desc.render.technique = fx::Technique::Soft;
     direct.set({
         HandParticle{glm::vec3(0.0f, 1.0f, 0.0f), 4.0f, 0.5f, 0.3f},    // crosses the ground
         HandParticle{glm::vec3(-3.0f, 3.0f, -5.0f), 3.0f, 0.5f, 1.1f},  // 15 m in front of the wall
@@ -72,107 +77,115 @@ TEST_F(FadeClassificationTest, ClassifiedFramesAreBitIdenticalToUnclassifiedOnes
         HandParticle{glm::vec3(0.0f, 2.0f, 11.0f), 2.0f},               // behind the camera
     });
     int compared = 0;
-    for (const int host : {0, 1, 2}) {
-        const bool reversed = host > 0, zBuffer = host == 2;
-        for (const float nearPlane : {0.1f, 0.01f}) {
-            for (const float farPlane : {1000.0f, 1.0e7f}) {
-                TestFrameGraph graph(kW, kH, reversed, zBuffer);
-                TestScene scene;
-                scene.sky = glm::vec3(0.0f);
-                scene.reversedZ = reversed;
-                scene.quads = {TestScene::ground(60.0f, glm::vec3(0.0f)),
-                               TestScene::wallZ(-20.0f, -40.0f, 40.0f, 0.0f, 30.0f, glm::vec3(0.0f))};
-                fx::ViewInfo view = makeView(glm::vec3(0.0f, 2.0f, 8.0f), glm::vec3(0.0f, 1.0f, 0.0f), kW, kH,
-                                             nearPlane, farPlane);
-                if (reversed) useReversedZ(&view);
-                for (const float contrast : {1.0f, 2.0f, 1.3f}) {  // 1.3: the general-power program
-                    direct.desc.render.contrastPower = contrast;
-                    SCOPED_TRACE(std::string(zBuffer ? "reversed-Z, z-buffer read" : reversed ? "reversed-Z" : "standard") +
-                                 ", near " + std::to_string(nearPlane) + ", far " + std::to_string(farPlane) +
-                                 ", contrast " + std::to_string(contrast));
-                    const Image plain = draw(direct, graph, scene, view, false);
-                    ASSERT_GE(drawn, 4);
-                    const Image classified = draw(direct, graph, scene, view, true);
-                    int smoke = 0;
-                    for (int y = 0; y < kH; ++y) {
-                        for (int x = 0; x < kW; ++x) smoke += plain.at(x, y)[0] > 8 ? 1 : 0;
+    for (const fx::Technique technique : {fx::Technique::Soft, fx::Technique::Spherical}) {
+        direct.desc.render.technique = technique;
+        for (const int host : {0, 1, 2}) {
+            const bool reversed = host > 0, zBuffer = host == 2;
+            for (const float nearPlane : {0.1f, 0.01f}) {
+                for (const float farPlane : {1000.0f, 1.0e7f}) {
+                    TestFrameGraph graph(kW, kH, reversed, zBuffer);
+                    TestScene scene;
+                    scene.sky = glm::vec3(0.0f);
+                    scene.reversedZ = reversed;
+                    scene.quads = {TestScene::ground(60.0f, glm::vec3(0.0f)),
+                                   TestScene::wallZ(-20.0f, -40.0f, 40.0f, 0.0f, 30.0f, glm::vec3(0.0f))};
+                    fx::ViewInfo view = makeView(glm::vec3(0.0f, 2.0f, 8.0f), glm::vec3(0.0f, 1.0f, 0.0f), kW, kH,
+                                                 nearPlane, farPlane);
+                    if (reversed) useReversedZ(&view);
+                    for (const float contrast : {1.0f, 2.0f, 1.3f}) {  // 1.3: the general-power program
+                        direct.desc.render.contrastPower = contrast;
+                        SCOPED_TRACE(std::string(techniqueName(technique)) + ", " +
+                                     (zBuffer ? "reversed-Z, z-buffer read" : reversed ? "reversed-Z" : "standard") +
+                                     ", near " + std::to_string(nearPlane) + ", far " + std::to_string(farPlane) +
+                                     ", contrast " + std::to_string(contrast));
+                        const Image plain = draw(direct, graph, scene, view, false);
+                        ASSERT_GE(drawn, 4);
+                        const Image classified = draw(direct, graph, scene, view, true);
+                        int smoke = 0;
+                        for (int y = 0; y < kH; ++y) {
+                            for (int x = 0; x < kW; ++x) smoke += plain.at(x, y)[0] > 8 ? 1 : 0;
+                        }
+                        ASSERT_GT(smoke, kW * kH / 10) << "too little smoke: the comparison would prove little";
+                        EXPECT_EQ(maxAbsDiff(plain, classified), 0);
+                        ++compared;
                     }
-                    ASSERT_GT(smoke, kW * kH / 10) << "too little smoke: the comparison would prove little";
-                    EXPECT_EQ(maxAbsDiff(plain, classified), 0);
-                    ++compared;
                 }
             }
         }
     }
-    EXPECT_EQ(compared, 3 * 2 * 2 * 3);
+    EXPECT_EQ(compared, 2 * 3 * 2 * 2 * 3);
 }
 
 TEST_F(FadeClassificationTest, SkipsTheFetchOnlyWhereTheFadeIsOne) {
     DirectParticles discarding(&host, shadersDiscardingSkips());
-    for (DirectParticles* p : {&direct, &discarding}) {
-        p->desc.render.softness = 1.0f;
-        p->desc.render.technique = fx::Technique::Soft;
-    }
-    for (const int host : {0, 1, 2}) {
-        const bool reversed = host > 0, zBuffer = host == 2;
-        const char* label = zBuffer ? "reversed-Z, z-buffer read" : reversed ? "reversed-Z" : "standard";
-        SCOPED_TRACE(label);
-        TestFrameGraph graph(kW, kH, reversed, zBuffer);
-        fx::ViewInfo view = makeView(glm::vec3(0.0f, 2.0f, 8.0f), glm::vec3(0.0f, 1.0f, 0.0f), kW, kH);
-        if (reversed) useReversedZ(&view);
-        auto sceneWithGroundAt = [&](float groundY) {
-            TestScene scene;
-            scene.sky = glm::vec3(0.0f);
-            scene.reversedZ = reversed;
-            scene.quads = {TestScene::ground(60.0f, glm::vec3(0.0f), groundY),
-                           TestScene::wallZ(-20.0f, -40.0f, 40.0f, groundY, 30.0f, glm::vec3(0.0f))};
-            return scene;
-        };
-        auto smokePixels = [](const Image& img) {
-            int n = 0;
-            for (int y = 0; y < kH; ++y) {
-                for (int x = 0; x < kW; ++x) n += img.at(x, y)[0] > 0 ? 1 : 0;
-            }
-            return n;
-        };
-        TestScene scene = sceneWithGroundAt(0.0f);
-
-        // 10 m from the camera, its lower edge 1 m above the ground: the ground behind it lies
-        // 10 m further on and the wall 18 m, so no block of it comes within 1 m. (Large enough
-        // on the screen to be classified: 80 px across, over vs_particles.glsl's kClassifyPixels.)
-        const std::vector<HandParticle> inFront = {HandParticle{glm::vec3(-1.0f, 3.5f, -2.0f), 5.0f}};
-        direct.set(inFront);
-        discarding.set(inFront);
-        const int shown = smokePixels(draw(direct, graph, scene, view, true));
-        ASSERT_GT(shown, 400);
-        EXPECT_EQ(smokePixels(draw(discarding, graph, scene, view, true)), 0) << "of " << shown << " smoke pixels";
-        EXPECT_EQ(smokePixels(draw(discarding, graph, scene, view, false)), shown) << "unclassified: nothing skipped";
-
-        // Crossing the ground: the blocks near the contact line fetch, the upper ones skip.
-        const std::vector<HandParticle> crossing = {HandParticle{glm::vec3(0.0f, 1.0f, 0.0f), 4.0f}};
-        direct.set(crossing);
-        discarding.set(crossing);
-        const Image all = draw(direct, graph, scene, view, true);
-        const Image fetched = draw(discarding, graph, scene, view, true);
-        TestScene groundGone = sceneWithGroundAt(-100.0f);
-        const Image fadeOne = draw(direct, graph, groundGone, view, false);
-        int skipped = 0, kept = 0, wrong = 0;
-        for (int y = 0; y < kH; ++y) {
-            for (int x = 0; x < kW; ++x) {
-                if (all.at(x, y)[0] == 0) continue;
-                if (fetched.at(x, y)[0] != 0) {
-                    ++kept;
-                    continue;
-                }
-                ++skipped;
-                for (int c = 0; c < 3; ++c) wrong += all.at(x, y)[c] != fadeOne.at(x, y)[c] ? 1 : 0;
-            }
+    for (const fx::Technique technique : {fx::Technique::Soft, fx::Technique::Spherical}) {
+        for (DirectParticles* p : {&direct, &discarding}) {
+            p->desc.render.softness = 1.0f;
+            p->desc.render.technique = technique;
         }
-        std::printf("[ measured ] %s: a billboard across the ground, %d smoke pixels skip the depth fetch, %d fetch\n",
-                    label, skipped, kept);
-        EXPECT_GT(skipped, (skipped + kept) / 4) << "classification skips little";
-        EXPECT_GT(kept, 0) << "the contact line needs its fade";
-        EXPECT_EQ(wrong, 0) << "a skipped pixel whose fade is not 1";
+        for (const int host : {0, 1, 2}) {
+            const bool reversed = host > 0, zBuffer = host == 2;
+            const std::string label = std::string(techniqueName(technique)) + ", " +
+                                      (zBuffer ? "reversed-Z, z-buffer read" : reversed ? "reversed-Z" : "standard");
+            SCOPED_TRACE(label);
+            TestFrameGraph graph(kW, kH, reversed, zBuffer);
+            fx::ViewInfo view = makeView(glm::vec3(0.0f, 2.0f, 8.0f), glm::vec3(0.0f, 1.0f, 0.0f), kW, kH);
+            if (reversed) useReversedZ(&view);
+            auto sceneWithGroundAt = [&](float groundY) {
+                TestScene scene;
+                scene.sky = glm::vec3(0.0f);
+                scene.reversedZ = reversed;
+                scene.quads = {TestScene::ground(60.0f, glm::vec3(0.0f), groundY),
+                               TestScene::wallZ(-20.0f, -40.0f, 40.0f, groundY, 30.0f, glm::vec3(0.0f))};
+                return scene;
+            };
+            auto smokePixels = [](const Image& img) {
+                int n = 0;
+                for (int y = 0; y < kH; ++y) {
+                    for (int x = 0; x < kW; ++x) n += img.at(x, y)[0] > 0 ? 1 : 0;
+                }
+                return n;
+            };
+            TestScene scene = sceneWithGroundAt(0.0f);
+
+            // 10 m from the camera, its lower edge 1 m above the ground: the ground behind it lies
+            // 10 m further on and the wall 18 m, so no block of it comes within 1 m (nor within the
+            // sphere's deepest point, 2.5 m behind its centre). (Large enough on the screen to be
+            // classified: 80 px across, over vs_particles.glsl's kClassifyPixels.)
+            const std::vector<HandParticle> inFront = {HandParticle{glm::vec3(-1.0f, 3.5f, -2.0f), 5.0f}};
+            direct.set(inFront);
+            discarding.set(inFront);
+            const int shown = smokePixels(draw(direct, graph, scene, view, true));
+            ASSERT_GT(shown, 400);
+            EXPECT_EQ(smokePixels(draw(discarding, graph, scene, view, true)), 0) << "of " << shown << " smoke pixels";
+            EXPECT_EQ(smokePixels(draw(discarding, graph, scene, view, false)), shown) << "unclassified: nothing skipped";
+
+            // Crossing the ground: the blocks near the contact line fetch, the upper ones skip.
+            const std::vector<HandParticle> crossing = {HandParticle{glm::vec3(0.0f, 1.0f, 0.0f), 4.0f}};
+            direct.set(crossing);
+            discarding.set(crossing);
+            const Image all = draw(direct, graph, scene, view, true);
+            const Image fetched = draw(discarding, graph, scene, view, true);
+            TestScene groundGone = sceneWithGroundAt(-100.0f);
+            const Image fadeOne = draw(direct, graph, groundGone, view, false);
+            int skipped = 0, kept = 0, wrong = 0;
+            for (int y = 0; y < kH; ++y) {
+                for (int x = 0; x < kW; ++x) {
+                    if (all.at(x, y)[0] == 0) continue;
+                    if (fetched.at(x, y)[0] != 0) {
+                        ++kept;
+                        continue;
+                    }
+                    ++skipped;
+                    for (int c = 0; c < 3; ++c) wrong += all.at(x, y)[c] != fadeOne.at(x, y)[c] ? 1 : 0;
+                }
+            }
+            std::printf("[ measured ] %s: a particle across the ground, %d smoke pixels skip the depth fetch, %d fetch\n",
+                        label.c_str(), skipped, kept);
+            EXPECT_GT(skipped, (skipped + kept) / 4) << "classification skips little";
+            EXPECT_GT(kept, 0) << "the contact line needs its fade";
+            EXPECT_EQ(wrong, 0) << "a skipped pixel whose fade is not 1 (whose chord the ground clips)";
+        }
     }
 }
 

@@ -83,10 +83,11 @@ enum class QuarterResEdges : uint8_t { DepthAware = 0, MixedResolution = 1 };
 /// Fade classification (Plugin::setFadeClassification). On (since API 2.2): soft billboards drawn
 /// at full resolution skip the scene-depth fetch, and their fade, in the blocks of the screen
 /// where a pyramid of the scene's nearest depth (built in the particle pass) says no geometry
-/// lies within their softness; the picture is the same bit for bit. Billboards under 48 px
-/// across, quarter res and spherical particles are not classified. Off (the default) reads the
-/// depth everywhere. (API 1.3 to 2.0 classified soft and spherical particles per screen tile; on
-/// a GPU that tile pass cost more than it saved, and 2.1 removed it: no value had an effect.)
+/// lies within their softness; spherical particles likewise where it lies past the sphere's
+/// deepest point (their chord ends inside). The picture is the same bit for bit. Particles under
+/// 48 px across and quarter res are not classified. Off (the default) reads the depth
+/// everywhere. (API 1.3 to 2.0 classified soft and spherical particles per screen tile; on a GPU
+/// that tile pass cost more than it saved, and 2.1 removed it: no value had an effect.)
 enum class FadeClassification : uint8_t { Off = 0, On = 1 };
 
 /// Deprecated since API 2.1 with FadeClassification: Plugin::fadeClassCounts always returns it

@@ -423,8 +423,8 @@ typedef struct fxApi {
     int (*setParticleShape)(fxPlugin* p, int shape);
     int (*particleShape)(const fxPlugin* p);
     /* Mixed-resolution edges (deprecated since 2.1, no effect) and fade classification: ON
-     * (since 2.2; off by default) lets soft billboards skip the scene-depth fetch per block where
-     * no geometry lies within their softness; the picture is the same. fadeClassCounts
+     * (since 2.2; off by default) lets soft billboards and spheres skip the scene-depth fetch per
+     * block where no geometry lies within their reach; the picture is the same. fadeClassCounts
      * (deprecated since 2.1) writes counted 0 and every count 0. */
     int (*setQuarterResEdges)(fxPlugin* p, int edges);
     int (*quarterResEdges)(const fxPlugin* p);
