@@ -90,7 +90,7 @@ void bindTextureUnit(int unit, uint32_t texture, uint32_t sampler = 0);
 /// - Linear: the quarter-res composite's half-res colour, whose bilinear weights the filter
 ///   computes (a host's frame graph may not honour TargetDesc::linearFilter).
 /// - LinearNearestMip: bilinear within the nearest mip level (GL_LINEAR_MIPMAP_NEAREST), the
-///   levels the texture has: the billboards' atlas reads (one level, half trilinear's texels).
+///   levels the texture has: the particles' atlas reads (one level, half trilinear's texels).
 class ClampSampler {
 public:
     enum class Filter { Nearest, Linear, LinearNearestMip };

@@ -114,12 +114,17 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
         if (!found) continue;
         const ParticleProgram& p = *found;
         const bool lit = key.lit;
-        // Billboards read one mip level, the nearest (atlasSampler_): a billboard faces the camera,
-        // so its level of detail is one value over the whole quad, and trilinear's blend of two
-        // levels would cost a second bilinear read of every fragment for a picture within 4/255.
-        // Spheres, whose level of detail varies over the disc, keep the texture's trilinear filter.
+        // The atlas is read from one mip level, the nearest (atlasSampler_): trilinear's blend of
+        // two levels would cost a second bilinear read of every fragment. A billboard faces the
+        // camera, so its level of detail is one value over the whole quad (a picture within 4/255
+        // of trilinear's). A sphere's varies over its disc by the curve of its atlas mapping, little
+        // but enough that, rarely, a pixel whose level of detail sits at the middle between two
+        // levels takes the other one with another rounding (a view elsewhere in the window, a
+        // trimmed polygon instead of the quad): within 3/255 of trilinear in fxbench's frames, up
+        // to 12/255 at two pixels of a hard-edged atlas (TrimmedParticleTest). (A level per
+        // sphere through textureLod costs llvmpipe 7 % in the fill scene: its per-pixel path.)
         const bool sphere = key.variant == ProgramCache::Spherical;
-        bindTextureUnit(kAtlasUnit, lit ? atlas_.litTexture() : atlas_.texture(), sphere ? 0u : atlasSampler_.name());
+        bindTextureUnit(kAtlasUnit, lit ? atlas_.litTexture() : atlas_.texture(), atlasSampler_.name());
         // Full resolution tests against the host's z-buffer without writing it. Hard particles
         // always do (that is their look). Soft and spherical ones only skip fragments there that
         // would shade to nothing (behind geometry their fade / visible chord is 0), which needs a

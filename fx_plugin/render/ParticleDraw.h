@@ -93,8 +93,8 @@ private:
     ColorRampTexture ramp_;
     InstanceStream stream_;
     NearestSampler depthSampler_;        ///< the scene depth's unit, whatever sampling the host set
-    /// The billboards' atlas: one mip level per read, the nearest (a billboard's level of detail
-    /// is one value over its quad); spheres read it through its own trilinear filter.
+    /// The particles' atlas, billboards' and spheres': one mip level per read, the nearest (draw()
+    /// says what that costs the picture).
     ClampSampler atlasSampler_{ClampSampler::Filter::LinearNearestMip};
     std::vector<glm::vec4> shapeTable_;  ///< atlas_.shapes().packed(), uploaded per draw
     std::vector<glm::vec4> discTable_;   ///< the same for spheres (TrimmedShapes::Clip::Disc)

@@ -2,8 +2,8 @@
 // The smoke texture atlas (000 sections 2.12 and 3.3.6): data/smoke_atlas.png, 2x2 frames of
 // straight-alpha RGBA8 puffs, row-major from the top-left. Uploaded unflipped (t = 0 is the
 // image's top row; particles_common.glsl's atlasUV() accounts for it) with a full mip chain,
-// trilinear filtering, clamp to edge (billboards read it bilinearly from the nearest level:
-// ParticleDraw's atlas sampler). Every cell's border has alpha exactly 0, so neither
+// trilinear filtering, clamp to edge (the particle programs read it bilinearly from the nearest
+// level: ParticleDraw's atlas sampler). Every cell's border has alpha exactly 0, so neither
 // filtering nor the rotated texture coordinates pull a neighbouring frame in.
 #include <cstdint>
 #include <string>

@@ -10,7 +10,7 @@
 // 0 .. b. A billboard facing the camera has one isotropic LOD over its whole area (its mapping to
 // the screen is affine), so the vertex shader knows it: at LOD l the sampler reads level 0 alone
 // when l <= 0 (magnification) and levels floor(l), floor(l) + 1 otherwise (trilinear; the
-// billboards' nearest-level sampler reads one of the two); with half a level of margin for the
+// particles' nearest-level sampler reads one of the two); with half a level of margin for the
 // hardware's LOD approximation the shader takes bucket ceil(l + 0.5), clamped.
 // Large particles (the costly ones) get the tight level-0 polygon; small ones the larger
 // polygons of the coarse levels, where the saving no longer matters anyway.

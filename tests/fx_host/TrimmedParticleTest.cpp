@@ -6,8 +6,10 @@
 //   - the polygons are convex, inside the quad, and leave a stated share of it out;
 //   - trimmed and quad images are equal within 1/255 (hard and soft, rotations, near and far);
 //   - depth-tested soft/spherical equal untested within 1/255 on a scene that hides some smoke.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include <filesystem>
 #include <fstream>
@@ -335,7 +337,11 @@ TEST_F(TrimmedImageTest, TrimmedShapesDrawTheQuadsImage) {
 // corners, from spheres 3.4 degrees across (a few pixels: coarse LOD buckets) to 45 degrees
 // (sin A 0.38, just inside the polygon's range) and 53 (0.45: the octagon or the box), at 4 m
 // and 30 m, with every frame at both and many angles, at full and at quarter resolution, the
-// trimmed picture equals the full box's within 1/255.
+// trimmed picture equals the full box's within 1/255, but at a few pixels: the atlas is read from
+// the nearest mip level, and where a pixel's level of detail sits at the middle between two, the
+// polygon's other rounding may take the other level (measured: 2 pixels of 76,800, up to 12/255,
+// with the 3.4-degree spheres). A polygon that missed part of a shape would lose whole pixels of
+// opaque white (255/255), and many of them.
 // A hard-edged atlas for them: opaque white shapes whose edge is where the alpha drops from 1 to 0
 // (a small disc, a turned square, an off-centre blob, a triangle reaching past the unit disc), so
 // a fragment the polygon misses costs a whole pixel of smoke, not the faint rim of a puff.
@@ -419,8 +425,16 @@ TEST_F(HardEdgedSphereTest, SphericalPolygonsDrawTheQuadsImageAcrossTheFrustum) 
             const Image trimmed = drawHardEdged(view);
             writePng(scratchDir() + "/spherical_trimmed_" + std::to_string(int(sinA * 100)) +
                          (quarter ? "_quarter" : "") + ".png", trimmed);
-            EXPECT_LE(maxAbsDiff(trimmed, quads), 1) << "sin A " << sinA << ", " << ps.size() << " spheres"
-                                                     << (quarter ? ", quarter res" : "");
+            int beyondOne = 0;  // pixels whose largest channel difference exceeds 1/255
+            for (size_t i = 0; i < trimmed.rgba.size(); i += 4) {
+                int d = 0;
+                for (size_t c = 0; c < 3; ++c) d = std::max(d, std::abs(int(trimmed.rgba[i + c]) - int(quads.rgba[i + c])));
+                beyondOne += d > 1 ? 1 : 0;
+            }
+            EXPECT_LE(beyondOne, 4) << "sin A " << sinA << ", " << ps.size() << " spheres"
+                                    << (quarter ? ", quarter res" : "");
+            EXPECT_LE(maxAbsDiff(trimmed, quads), 16) << "sin A " << sinA << ", " << ps.size() << " spheres"
+                                                      << (quarter ? ", quarter res" : "");
             ASSERT_EQ(graph.ran("particles_quarter"), quarter);
             // Not vacuous: the smoke is in the picture.
             TestScene bare = scene;
