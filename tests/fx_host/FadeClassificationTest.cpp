@@ -192,9 +192,9 @@ TEST_F(FadeClassificationTest, SkipsTheFetchOnlyWhereTheFadeIsOne) {
 // A view away from (0, 0) of a larger framebuffer (a split screen's second player), drawn through
 // renderView: the blocks are the view's own pixels, wherever it lies, so the classified frame is
 // the unclassified one bit for bit, reading the bound framebuffer's depth (the plugin's copy) or
-// the host's whole-framebuffer depth texture in place. The camera stands 3 m from the smoke; a
-// second plugin with the soft shader that discards what it skips shows that classification
-// does skip there (fewer smoke pixels classified than not).
+// the host's whole-framebuffer depth texture in place, soft billboards and spheres. The camera
+// stands 3 m from the smoke; a second plugin with the shaders that discard what they skip shows
+// that classification does skip there (fewer smoke pixels classified than not).
 class FadeClassificationSplitTest : public LoadedPluginTest {
 protected:
     FadeClassificationSplitTest() : LoadedPluginTest(kW, kH, kSmokeOnWall) {}
@@ -241,9 +241,6 @@ protected:
 TEST_F(FadeClassificationSplitTest, AViewAwayFromTheOriginIsTheUnclassifiedOne) {
     const fx::ViewInfo near = makeView(glm::vec3(-2.0f, 1.0f, 3.0f), glm::vec3(0.3f, 0.6f, 0.5f), kW, kH);
     HostTarget scratch(kW, kH, GL_DEPTH_COMPONENT24), split(kFw, kFh, GL_DEPTH_COMPONENT24);
-    fx::RenderOptions o;
-    o.techniqueOverride = fx::Technique::Soft;
-    ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
 
     // The same smoke in a plugin that reads the discarding copy: simulated alike.
     fx::PluginImports imports;
@@ -252,7 +249,6 @@ TEST_F(FadeClassificationSplitTest, AViewAwayFromTheOriginIsTheUnclassifiedOne) 
     std::unique_ptr<fx::Plugin> discarding = fxCreatePlugin(imports);
     ASSERT_TRUE(discarding);
     ASSERT_TRUE(discarding->loadReactions(kSmokeOnWall.reactions, nullptr));
-    ASSERT_EQ(discarding->setRenderOptions(o), fx::ErrorCode::None);
     plugin.swap(discarding);
     simulate(1.0f, kSmokeOnWall.slippingSteps);
     plugin.swap(discarding);
@@ -260,20 +256,28 @@ TEST_F(FadeClassificationSplitTest, AViewAwayFromTheOriginIsTheUnclassifiedOne) 
     glBindFramebuffer(GL_FRAMEBUFFER, scratch.fbo);
     scene.drawOpaque(near);
     const Image opaque = readFramebuffer(scratch.fbo, kW, kH);
-    for (const bool texture : {false, true}) {
-        SCOPED_TRACE(texture ? "the host's depth texture" : "the bound framebuffer's depth");
-        const Image plain = frame(*plugin, near, false, texture, scratch, split);
-        const Image classified = frame(*plugin, near, true, texture, scratch, split);
-        const int smoke = smokePixels(plain, opaque);
-        EXPECT_GT(smoke, kW * kH / 20) << "little smoke in the view: the comparison would prove little";
-        EXPECT_EQ(maxAbsDiff(plain, classified), 0);
+    for (const fx::Technique technique : {fx::Technique::Soft, fx::Technique::Spherical}) {
+        fx::RenderOptions o;
+        o.techniqueOverride = technique;
+        ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
+        ASSERT_EQ(discarding->setRenderOptions(o), fx::ErrorCode::None);
+        for (const bool texture : {false, true}) {
+            const std::string label = std::string(techniqueName(technique)) + ", " +
+                                      (texture ? "the host's depth texture" : "the bound framebuffer's depth");
+            SCOPED_TRACE(label);
+            const Image plain = frame(*plugin, near, false, texture, scratch, split);
+            const Image classified = frame(*plugin, near, true, texture, scratch, split);
+            const int smoke = smokePixels(plain, opaque);
+            EXPECT_GT(smoke, kW * kH / 20) << "little smoke in the view: the comparison would prove little";
+            EXPECT_EQ(maxAbsDiff(plain, classified), 0);
 
-        EXPECT_EQ(maxAbsDiff(frame(*discarding, near, false, texture, scratch, split), plain), 0)
-            << "the discarding copy draws the same smoke unclassified";
-        const int kept = smokePixels(frame(*discarding, near, true, texture, scratch, split), opaque);
-        std::printf("[ measured ] split screen, %s: %d of %d smoke pixels fetch the depth classified\n",
-                    texture ? "depth texture" : "bound framebuffer", kept, smoke);
-        EXPECT_LT(kept, smoke) << "nothing was classified: the comparison above proves nothing";
+            EXPECT_EQ(maxAbsDiff(frame(*discarding, near, false, texture, scratch, split), plain), 0)
+                << "the discarding copy draws the same smoke unclassified";
+            const int kept = smokePixels(frame(*discarding, near, true, texture, scratch, split), opaque);
+            std::printf("[ measured ] split screen, %s: %d of %d smoke pixels fetch the depth classified\n",
+                        label.c_str(), kept, smoke);
+            EXPECT_LT(kept, smoke) << "nothing was classified: the comparison above proves nothing";
+        }
     }
     discarding.reset();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
