@@ -29,6 +29,11 @@ const std::vector<Mode>& allModes() {
         // The depth fetch skipped where no geometry lies within the softness (FadePyramid.h).
         {"soft+classify", "Soft particles, fade classified per block of each billboard", true, Technique::Soft, false,
          false, "soft", fx::ParticleShape::Trimmed, false, false, false, false, true},
+        // Shaded per 16 px tile by a compute shader (TiledPath.h): one depth read and one blend per pixel.
+        {"hard+tiled", "Hard particles, shaded per screen tile (compute)", true, Technique::Hard, false, false, "hard",
+         fx::ParticleShape::Trimmed, false, false, false, false, false, true},
+        {"soft+tiled", "Soft particles, shaded per screen tile (compute)", true, Technique::Soft, false, false, "soft",
+         fx::ParticleShape::Trimmed, false, false, false, false, false, true},
         {"spherical", "Spherical billboards", true, Technique::Spherical, false, false, "spherical"},
         {"spherical-quads", "Spherical billboards drawn as full quads (untrimmed)", true, Technique::Spherical, false,
          false, "spherical", fx::ParticleShape::Quad},
@@ -125,6 +130,7 @@ void applyMode(cube::Game& game, const Mode& mode) {
     ro.quarterRes = mode.quarterRes;
     ro.quarterResAlways = mode.quarterResAlways;
     ro.bilinearUpsample = false;  // the depth-aware composite is the one under test
+    ro.tiled = mode.tiled;
     plugin->setRenderOptions(ro);
     plugin->setParticleShape(mode.shape);
     const fx::FadeClassification classification =
@@ -135,7 +141,7 @@ void applyMode(cube::Game& game, const Mode& mode) {
     // switch that may reach programs the old one did not is followed by prepareGl, between
     // frames, so no program is built while the next frame is declared (nor inside a timed render).
     if (ro.techniqueOverride != was.techniqueOverride || ro.quarterRes != was.quarterRes ||
-        ro.quarterResAlways != was.quarterResAlways || ro.bilinearUpsample != was.bilinearUpsample || reclassified) {
+        ro.quarterResAlways != was.quarterResAlways || ro.bilinearUpsample != was.bilinearUpsample || ro.tiled != was.tiled || reclassified) {
         (void)plugin->prepareGl(nullptr);  // a failure is logged once by the plugin
     }
     if (mode.lit) {

@@ -40,10 +40,14 @@ struct Mode {
     /// `spherical+classify`): soft billboards and spheres skip the scene-depth fetch where the
     /// fade pyramid says their fade is 1 or their chord ends inside them.
     bool classify = false;
+    /// The tiled compute path (RenderOptions::tiled, `hard+tiled`, `soft+tiled`): billboards
+    /// shaded per 16 px tile, one scene-depth read and one blend per pixel.
+    bool tiled = false;
 };
 
 /// Every mode, in table order: nofx, hard, soft, soft-quads, soft+equal, soft+quarter,
 /// soft+quarter-always, soft+equal+quarter, soft+classify (against soft: the same picture),
+/// hard+tiled and soft+tiled (against hard and soft: the raster picture up to rounding),
 /// spherical, spherical-quads, spherical+quarter, spherical+classify (against spherical: the same
 /// picture), hard-lit, soft-lit,
 /// spherical-lit, mega (image error

@@ -145,7 +145,8 @@ std::string markdownReport(const Report& r) {
                  "%.0f", &o);
     perPassTable(r, &ModeSummary::passShaded,
                  "Per particle pass, fragments shaded (GL_FRAGMENT_SHADER_INVOCATIONS_ARB: discarded ones too; "
-                 "median over error frames); '-' = not run",
+                 "a compute pass adds its invocations, one per pixel of its tiles; median over error frames); "
+                 "'-' = not run",
                  "%.0f", &o);
 
     o += "\nParticle work vs the fill limit (trivial textured quad blended once over the covered pixels)\n\n"

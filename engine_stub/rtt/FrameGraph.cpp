@@ -28,6 +28,7 @@ FrameGraph::~FrameGraph() {
         if (!resources_[i].imported && pool_.isValid(resources_[i].handle)) pool_.release(resources_[i].handle);
     if (!sampleQueries_.empty()) glDeleteQueries(GLsizei(sampleQueries_.size()), sampleQueries_.data());
     if (!shadedQueries_.empty()) glDeleteQueries(GLsizei(shadedQueries_.size()), shadedQueries_.data());
+    if (!computeQueries_.empty()) glDeleteQueries(GLsizei(computeQueries_.size()), computeQueries_.data());
 }
 
 void FrameGraph::reset() {
@@ -186,6 +187,15 @@ bool FrameGraph::execute() {
     ScopedTargetBinding saved;
     timer_.beginFrame();
     const bool countShaded = countFragments_ && GLAD_GL_ARB_pipeline_statistics_query;
+    if (countShaded && computeCounted_ < 0) {
+        // A pass that dispatches compute work (the plugin's tiled path) counts its invocations
+        // too: GL_COMPUTE_SHADER_INVOCATIONS_ARB exists where compute shaders do (GL 4.3).
+        GLint major = 0, minor = 0;
+        glGetIntegerv(GL_MAJOR_VERSION, &major);
+        glGetIntegerv(GL_MINOR_VERSION, &minor);
+        computeCounted_ = major * 10 + minor >= 43 ? 1 : 0;
+    }
+    const bool countCompute = countShaded && computeCounted_ == 1;
     for (size_t pos = 0; pos < passCount_; ++pos) {
         Pass& p = passes_[order_[pos]];
         if (!p.kept) continue;
@@ -213,6 +223,13 @@ bool FrameGraph::execute() {
                 }
                 glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, shadedQueries_[executed]);
             }
+            if (countCompute) {
+                if (computeQueries_.size() <= executed) {
+                    computeQueries_.push_back(0);
+                    glGenQueries(1, &computeQueries_.back());
+                }
+                glBeginQuery(GL_COMPUTE_SHADER_INVOCATIONS_ARB, computeQueries_[executed]);
+            }
             timer_.beginPass(p.name.c_str());
             PassContext ctx(*this, order_[pos]);
             p.execute(ctx);
@@ -220,6 +237,7 @@ bool FrameGraph::execute() {
             timer_.endPass();
             if (countFragments_) glEndQuery(GL_SAMPLES_PASSED);
             if (countShaded) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+            if (countCompute) glEndQuery(GL_COMPUTE_SHADER_INVOCATIONS_ARB);
             saved.restore();
             setAt(report_.executed, executed++, p.name);
         } else if (p.skipped) {
@@ -245,6 +263,10 @@ bool FrameGraph::execute() {
             n = 0;
             glGetQueryObjecti64v(shadedQueries_[i], GL_QUERY_RESULT, &n);
             shaded_[i] = static_cast<long long>(n);
+            if (!countCompute) continue;
+            n = 0;
+            glGetQueryObjecti64v(computeQueries_[i], GL_QUERY_RESULT, &n);
+            shaded_[i] += static_cast<long long>(n);
         }
     }
     report_.executed.resize(executed);

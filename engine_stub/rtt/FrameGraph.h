@@ -115,7 +115,8 @@ public:
     /// GL_SAMPLES_PASSED query around the pass, read back at the end of execute(), which then
     /// waits for the GPU). Off by default; benchmarks switch it on for untimed frames. Reported
     /// as PassTiming::fragments, and, where the context has ARB_pipeline_statistics_query, the
-    /// fragment shader invocations as PassTiming::shaded.
+    /// fragment shader invocations (with a pass's compute shader invocations where the context
+    /// has compute shaders) as PassTiming::shaded.
     void setCountFragments(bool on) { countFragments_ = on; }
 
     /// Waits for the last execute()'s GPU pass timings (and any older ones still pending) and
@@ -203,6 +204,8 @@ private:
     bool countFragments_ = false;
     std::vector<uint32_t> sampleQueries_;  // one per executed pass, grown as needed
     std::vector<uint32_t> shadedQueries_;  // the same, GL_FRAGMENT_SHADER_INVOCATIONS_ARB
+    std::vector<uint32_t> computeQueries_;  // and GL_COMPUTE_SHADER_INVOCATIONS_ARB (GL 4.3)
+    int computeCounted_ = -1;               // -1 not asked yet; 1 where compute work is counted
     std::vector<long long> fragments_, shaded_;
 };
 

@@ -14,8 +14,10 @@ struct PassTiming {
     /// -1 unless FrameGraph::setCountFragments is on.
     long long fragments = -1;
     /// Fragment shader invocations of the pass in the last frame (GL_FRAGMENT_SHADER_INVOCATIONS_ARB:
-    /// also the fragments it discarded, and whatever the driver counts for helper lanes); -1 unless
-    /// FrameGraph::setCountFragments is on and the context has ARB_pipeline_statistics_query.
+    /// also the fragments it discarded, and whatever the driver counts for helper lanes), plus its
+    /// compute shader invocations where the context has compute shaders (a compute pass's work
+    /// items: the tiled particle path's pixels); -1 unless FrameGraph::setCountFragments is on and
+    /// the context has ARB_pipeline_statistics_query.
     long long shaded = -1;
 };
 

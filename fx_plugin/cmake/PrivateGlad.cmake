@@ -17,7 +17,7 @@ function(fx_add_private_glad target out)
   add_custom_command(
     OUTPUT ${gen_c} ${gen_h} ${out}/include/KHR/khrplatform.h
     COMMAND ${GLAD_EXECUTABLE} --quiet --reproducible --api gl:compatibility=3.3
-            --extensions GL_KHR_debug,GL_ARB_timer_query,GL_ARB_clip_control,GL_ARB_texture_barrier,GL_ARB_texture_gather --out-path ${raw} c
+            --extensions GL_KHR_debug,GL_ARB_timer_query,GL_ARB_clip_control,GL_ARB_texture_barrier,GL_ARB_texture_gather,GL_ARB_compute_shader,GL_ARB_shader_storage_buffer_object,GL_ARB_shader_image_load_store --out-path ${raw} c
     COMMAND ${CMAKE_COMMAND} -DRAW=${raw} -DOUT=${out} -P ${CUBEFX_CMAKE_DIR}/RenameGlad.cmake
     DEPENDS ${CUBEFX_CMAKE_DIR}/RenameGlad.cmake
     COMMENT "Generating the plugin's private GL 3.3 loader (glad, renamed fxglad_)"

@@ -46,6 +46,8 @@ public:
     /// Binds the vertex array with the instance attributes starting at instance `first`.
     void bindRange(int first);
     size_t capacityBytes() const { return capacityBytes_; }
+    /// The instance buffer (the tiled path reads it as a shader storage buffer).
+    uint32_t instanceBuffer() const { return instanceBuffer_; }
     /// Uploads that had to grow the buffer (a warm stream stops growing).
     int growCount() const { return growCount_; }
 

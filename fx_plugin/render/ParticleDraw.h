@@ -33,6 +33,7 @@ struct ParticleView {
     bool reversedZ = false;    ///< view.depth is ReversedZ
     ScreenRect rect;           ///< quarter res: where the particles can be
     ScreenTiles tiles;         ///< quarter res: the same, as screen tiles
+    TileBins bins;             ///< the tiled path: the particles per tile (TiledPath.h)
     Target opacity;            ///< the opacity map of this frame (invalid: unshadowed)
     glm::mat4 worldToShadow{1.0f};
     bool lit() const { return settings.light.on; }
@@ -81,6 +82,9 @@ public:
     /// Fade classification's pyramid (its programs bound by the renderer with the pass programs).
     FadePyramid& fadePyramid() { return fadePyramid_; }
     const InstanceStream& stream() const { return stream_; }
+    /// The samplers draw() reads the atlas and the scene depth through (the tiled path's too).
+    const ClampSampler& atlasSampler() const { return atlasSampler_; }
+    const NearestSampler& depthSampler() const { return depthSampler_; }
 
 private:
     /// Sets the FX_LIT uniforms of `p` for `batch` (the program is in use).

@@ -29,7 +29,8 @@ ParticleRenderer::ParticleRenderer(RendererConfig config, ProgramCache& programs
     : config_(std::move(config)),
       draw_(programs),
       fullRes_(draw_, sizeMismatchTo(config_.errors)),
-      quarter_(draw_, sizeMismatchTo(config_.errors)) {
+      quarter_(draw_, sizeMismatchTo(config_.errors)),
+      tiled_(draw_, sizeMismatchTo(config_.errors)) {
     draw_.setJobs(config_.jobs);
 }
 
@@ -98,10 +99,12 @@ void ParticleRenderer::bindPassPrograms() {
     quarter_.programs().bind(draw_.programs());
     opacity_.bind(draw_.programs());
     draw_.fadePyramid().bind(draw_.programs());
+    if (TiledPath::available()) tiled_.bind(draw_.programs());
 }
 
 
-bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps, bool quarterRes, bool fadeMask) {
+bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps, bool quarterRes, bool fadeMask,
+                               bool tiled) {
     const bool ready = ensureLoaded();
     if (ready) {
         // The soft programs of the contrast powers the loaded reactions draw with, now rather
@@ -118,9 +121,15 @@ bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSt
             ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), false, &keys, fadeMask);
             if (quarterRes) ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), true, &keys);
         }
+        tiled = tiled && TiledPath::available();
+        if (tiled) {
+            const std::vector<ProgramCache::Key> t = ProgramCache::tiledKeys();
+            keys.insert(keys.end(), t.begin(), t.end());
+        }
         std::vector<std::string> errors;
         draw_.programs().build(keys, &errors);
         if (fadeMask) draw_.fadePyramid().bind(draw_.programs());
+        if (tiled) tiled_.bind(draw_.programs());
         // A power's build fails for the cause that failed the soft programs above: not told twice.
         reportLoadErrors(errors);
     }
@@ -128,8 +137,9 @@ bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSt
     return ready && loadDiagnostics_.empty();
 }
 
-void ParticleRenderer::ensureDrawPrograms(const ParticleView& record, bool quarterRes) {
+void ParticleRenderer::ensureDrawPrograms(const ParticleView& record, bool quarterRes, bool tiled) {
     drawKeys_.clear();
+    if (tiled) drawKeys_ = ProgramCache::tiledKeys();
     const bool fadeMask = record.settings.classification == FadeClassification::On && !quarterRes;
     if (fadeMask) {
         for (ProgramCache::Program p : {ProgramCache::FadePyramidFirst, ProgramCache::FadePyramidReduce}) {
@@ -146,6 +156,7 @@ void ParticleRenderer::ensureDrawPrograms(const ParticleView& record, bool quart
     std::vector<std::string> errors;
     const int built = draw_.programs().build(drawKeys_, &errors);
     if (fadeMask) draw_.fadePyramid().bind(draw_.programs());
+    if (tiled) tiled_.bind(draw_.programs());
     if (!frameBuildLogged_) {
         log(LogLevel::Warning, "fx: " + std::to_string(built) +
                                    " particle program(s) built while declaring a frame: call prepareGl after "
@@ -211,7 +222,9 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
             }
         }
     }
-    ensureDrawPrograms(*record, quarterRes);
+    // Tiled (TiledPath.h): a full-resolution view it can draw, in a context with compute shaders.
+    const bool tiled = !quarterRes && options.tiled && TiledPath::available() && TiledPath::canDraw(*record);
+    ensureDrawPrograms(*record, quarterRes, tiled);
 
     draw_.ramp().setRows(batches, batchCount);
 
@@ -225,6 +238,8 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     }
     if (quarterRes) {
         quarter_.declare(frame, record);
+    } else if (tiled && tiled_.ok() && tiled_.declare(frame, record)) {
+        // declared; a view it cannot bin (a particle with no bound) falls through to full res
     } else {
         fullRes_.declare(frame, record);
     }

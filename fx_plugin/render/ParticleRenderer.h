@@ -15,6 +15,8 @@
 //                with targets "particles_half_depth" (RG32F: min, max) and "particles_half_color"
 //                (RGBA16F), both half x half, created through FrameBuilder::createTarget
 //                (see QuarterResPath.h).
+//   tiled:       "particles_tiled" reads sceneDepth, writes sceneColor (RenderOptions::tiled:
+//                TiledPath.h says where it draws; elsewhere the view is drawn at full res).
 //
 // GL: loaded by prepare() (Plugin::prepareGl), or else lazily by the first declarePasses() that
 // finds a visible particle (the host has a context current by then; a scene without smoke never
@@ -51,6 +53,7 @@
 #include "RendererConfig.h"
 #include "ShaderLoader.h"
 #include "SmokeOpacityMap.h"
+#include "TiledPath.h"
 #include "fx/Diagnostic.h"
 #include "fx/HostAdapter.h"
 #include "fx/Plugin.h"
@@ -77,12 +80,13 @@ public:
     /// Loads GL resources now (Plugin::prepareGl) and builds every program the options can reach
     /// (ProgramCache::techniqueKeys) and the soft programs of the contrast powers in `powerSteps`
     /// (2 contrast_power each: those the loaded reactions draw with); with `quarterRes` also their
-    /// quarter-res builds (ProgramCache::halfResKeys and the powers'). Called again after options
+    /// quarter-res builds (ProgramCache::halfResKeys and the powers'); with `tiled`, where the
+    /// context has compute shaders, the tiled path's (ProgramCache::tiledKeys). Called again after options
     /// or reactions change, it builds only what is missing. True when everything built; otherwise false with
     /// every problem appended to `out` (the technique that did build still draws). Each distinct
     /// "file:line: message" is logged once.
     bool prepare(Diagnostics* out, const std::vector<int>& powerSteps = {}, bool quarterRes = false,
-                 bool fadeMask = false);
+                 bool fadeMask = false, bool tiled = false);
 
     /// A shader reload (Renderers::reload, one transaction over every renderer): true, once per
     /// edit, when Config::shaderDir is set, the renderer is loaded and a plugin shader file there
@@ -110,7 +114,7 @@ private:
     void reportLoadErrors(const std::vector<std::string>& errors);
     /// Builds the programs `record`'s batches draw with that prepare() has not built (options or
     /// reactions changed since without another prepareGl): before any pass, never inside one.
-    void ensureDrawPrograms(const ParticleView& record, bool quarterRes);
+    void ensureDrawPrograms(const ParticleView& record, bool quarterRes, bool tiled = false);
     /// Loads the renderer if needed, records the casters and declares the opacity pass.
     SmokeShadow declareOpacityPass(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
                                    int batchCount, const LightState& light);
@@ -120,6 +124,7 @@ private:
     ParticleDraw draw_;
     FullResPath fullRes_;
     QuarterResPath quarter_;
+    TiledPath tiled_;
     SmokeOpacityMap opacity_;
     bool quarterFallbackLogged_ = false;
     bool frameBuildLogged_ = false;            ///< ensureDrawPrograms' warning, once

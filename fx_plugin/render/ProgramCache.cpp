@@ -39,6 +39,8 @@ constexpr Source kSources[ProgramCache::VariantCount + ProgramCache::ProgramCoun
     {"vs_stateless_particles.glsl", "fs_stateless_particles.glsl", ""},
     {"vs_particles_fullscreen.glsl", "fs_particles_fade_pyramid.glsl", "#define FX_FADE_PYRAMID_FIRST 1\n"},
     {"vs_particles_fullscreen.glsl", "fs_particles_fade_pyramid.glsl", ""},
+    {"cs_particles_tiled.glsl", "", "#define FX_GENERAL_POWER 1\n"},
+    {"vs_particles_tiles.glsl", "fs_particles_tiled_composite.glsl", ""},
 };
 
 const Source& sourceOf(const ProgramCache::Key& key) {
@@ -101,8 +103,9 @@ const ParticleProgram kNone{};
 }  // namespace
 
 uint32_t ProgramCache::Key::bits() const {
+    static_assert(ProgramCount <= 32, "program takes bits 10-14");
     return uint32_t(variant) | (lit ? 1u << 3 : 0u) | (uint32_t(powerSteps + 1) << 4) | (uint32_t(program) << 10) |
-           (halfRes ? 1u << 14 : 0u) | (fadeMask ? 1u << 15 : 0u);
+           (halfRes ? 1u << 15 : 0u) | (fadeMask ? 1u << 16 : 0u);
 }
 
 std::string ProgramCache::Key::defines() const {
@@ -230,6 +233,10 @@ std::vector<ProgramCache::Key> ProgramCache::megaKeys() {
     std::vector<Key> keys;
     for (Program p : {MegaDepth, MegaSpheres, MegaBlur, MegaShade, MegaComposite}) keys.push_back(Key::of(p));
     return keys;
+}
+
+std::vector<ProgramCache::Key> ProgramCache::tiledKeys() {
+    return {Key::of(TiledShade), Key::of(TiledComposite)};
 }
 
 std::vector<ProgramCache::Key> ProgramCache::fadeMaskKeys() {

@@ -100,6 +100,8 @@ public:
         Stateless,          ///< vs_stateless_particles + fs_stateless_particles
         FadePyramidFirst,   ///< vs_particles_fullscreen + fs_particles_fade_pyramid, FX_FADE_PYRAMID_FIRST
         FadePyramidReduce,  ///< the same without it
+        TiledShade,         ///< cs_particles_tiled (compute: TiledPath.h)
+        TiledComposite,     ///< vs_particles_tiles + fs_particles_tiled_composite
         ProgramCount
     };
 
@@ -121,8 +123,8 @@ public:
             k.program = p;
             return k;
         }
-        /// variant in bits 0-2, lit 3, powerSteps + 1 in 4-9, program in 10-13, halfRes 14,
-        /// fadeMask 15.
+        /// variant in bits 0-2, lit 3, powerSteps + 1 in 4-9, program in 10-14, halfRes 15,
+        /// fadeMask 16.
         uint32_t bits() const;
         /// The #defines that select this variant (prepended to each stage).
         std::string defines() const;
@@ -189,6 +191,9 @@ public:
     /// unlit, and the fade pyramid's two programs: what prepareGl adds while fade classification
     /// is on.
     static std::vector<Key> fadeMaskKeys();
+    /// The tiled path's two programs (TiledPath.h): what prepareGl adds while it is on, in a
+    /// context with compute shaders.
+    static std::vector<Key> tiledKeys();
     /// `contrastPower` picks between the two soft programs (see above).
     static Variant variantFor(Technique technique, bool quarterRes, float contrastPower = 1.0f);
     /// contrast_power = whole + half / 2 with whole in [0, 16], half 0 or 1: true and the split.

@@ -329,6 +329,87 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
     return r;
 }
 
+bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const TileBins::Range* batches,
+                  int batchCount, const BillboardReach* reach, TileBins* out) {
+    const int w = view.width, h = view.height;
+    const int tilesX = (w + kTileSize - 1) / kTileSize, tilesY = (h + kTileSize - 1) / kTileSize;
+    out->entries.clear();
+    out->tiles.clear();
+    out->cover.vertices.clear();
+    out->cover.pixels = 0;
+    out->cover.viewWidth = w;
+    out->cover.viewHeight = h;
+    if (batchCount > (1 << (32 - TileBins::kBatchShift))) return false;
+    if (tilesX <= 0 || tilesY <= 0) return true;  // an empty view: no tiles
+    int total = 0;
+    for (int b = 0; b < batchCount; ++b) total = std::max(total, batches[b].first + batches[b].count);
+    if (total >= (1 << TileBins::kBatchShift)) return false;
+    const FootprintMath math(view, true, reach);
+    const bool perspective = plainPerspective(view.proj);
+    out->counts.assign(size_t(tilesX) * size_t(tilesY) + 1, 0);
+    out->ranges.resize(size_t(total) * 4);
+    int32_t* counts = out->counts.data();
+    // Each particle's tile range (empty where it is clipped or off the view), and the entries per
+    // tile.
+    for (int b = 0; b < batchCount; ++b) {
+        for (int i = batches[b].first; i < batches[b].first + batches[b].count; ++i) {
+            const Bounds q = perspective ? math.perspective<true>(instances[i]) : math.general(instances[i]);
+            int32_t* r = &out->ranges[size_t(i) * 4];
+            r[0] = 0;
+            r[1] = -1;  // empty
+            r[2] = 0;
+            r[3] = -1;
+            if (q.state == Bounds::Unbounded) return false;
+            if (q.state == Bounds::Behind || q.x1 < -1.0f || q.y1 < -1.0f || q.x0 > float(w) + 1.0f ||
+                q.y0 > float(h) + 1.0f) {
+                continue;
+            }
+            auto tileOf = [](float pixel, int tileCount) {
+                const float t = pixel * (1.0f / float(kTileSize));
+                return int(std::min(std::max(t, 0.0f), float(tileCount - 1)));
+            };
+            r[0] = tileOf(q.x0 - 1.0f, tilesX);
+            r[1] = tileOf(q.x1 + 1.0f, tilesX);
+            r[2] = tileOf(q.y0 - 1.0f, tilesY);
+            r[3] = tileOf(q.y1 + 1.0f, tilesY);
+            for (int ty = r[2]; ty <= r[3]; ++ty) {
+                for (int tx = r[0]; tx <= r[1]; ++tx) ++counts[ty * tilesX + tx];
+            }
+        }
+    }
+    // Offsets, the tiles with particles, and their runs for the composite.
+    int32_t sum = 0;
+    for (int ty = 0; ty < tilesY; ++ty) {
+        int runStart = -1;
+        for (int tx = 0; tx <= tilesX; ++tx) {
+            const bool any = tx < tilesX && counts[ty * tilesX + tx] > 0;
+            if (any) {
+                const int32_t n = counts[ty * tilesX + tx];
+                out->tiles.insert(out->tiles.end(), {uint32_t(tx), uint32_t(ty), uint32_t(sum), uint32_t(n)});
+                counts[ty * tilesX + tx] = sum;
+                sum += n;
+                if (runStart < 0) runStart = tx;
+            } else if (runStart >= 0) {
+                addRun(&out->cover, runStart * kTileSize, ty * kTileSize, std::min(w, tx * kTileSize),
+                       std::min(h, (ty + 1) * kTileSize));
+                runStart = -1;
+            }
+        }
+    }
+    // The entries, front to back: the last batch's last particle first.
+    out->entries.resize(size_t(sum));
+    for (int b = batchCount - 1; b >= 0; --b) {
+        for (int i = batches[b].first + batches[b].count - 1; i >= batches[b].first; --i) {
+            const int32_t* r = &out->ranges[size_t(i) * 4];
+            const uint32_t entry = uint32_t(i) | (uint32_t(b) << TileBins::kBatchShift);
+            for (int ty = r[2]; ty <= r[3]; ++ty) {
+                for (int tx = r[0]; tx <= r[1]; ++tx) out->entries[size_t(counts[ty * tilesX + tx]++)] = entry;
+            }
+        }
+    }
+    return true;
+}
+
 bool quarterResPays(const ScreenRect& rect, const ScreenTiles& tiles) {
     if (tiles.pixels <= 0) return false;  // nothing on screen: no pass either way
     return rect.footprintPixels >= kQuarterResMinOverdraw * double(tiles.pixels);

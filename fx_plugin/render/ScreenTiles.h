@@ -115,6 +115,28 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
 constexpr double kQuarterResMinOverdraw = 16.0;
 bool quarterResPays(const ScreenRect& rect, const ScreenTiles& tiles);
 
+/// The tiled path's bins (TiledPath.h): each particle of a view in the kTileSize tiles its bound
+/// (the trimmed polygon's with a reach table, else its quad's, grown by a pixel) touches, every
+/// tile's list front to back: the reverse of the draw order, batch by batch.
+struct TileBins {
+    static constexpr int kBatchShift = 26;  ///< an entry: instance index | batch << kBatchShift
+    struct Range {
+        int first = 0, count = 0;  ///< a batch's instances
+    };
+    std::vector<uint32_t> entries;  ///< per tile, front to back
+    std::vector<uint32_t> tiles;    ///< per tile holding particles: tile x, tile y, first entry, count
+    ScreenTiles cover;              ///< those tiles as runs (the composite's draw)
+    std::vector<int32_t> counts;    ///< scratch: entries per tile of the view, then their offsets
+    std::vector<int32_t> ranges;    ///< scratch: per particle its tile range (tx0, tx1, ty0, ty1)
+    int tileCount() const { return int(tiles.size() / 4); }
+};
+
+/// Bins `instances` (billboards of a full-resolution view, drawn in `batches`' order) into `out`.
+/// False where a particle has no bound (a position or size that is not finite): the caller draws
+/// the view another way. At most 2^26 instances and 64 batches (else false too).
+bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const TileBins::Range* batches,
+                  int batchCount, const BillboardReach* reach, TileBins* out);
+
 /// Scissor to `rect` on a target of w x h whose pixels are the view's times `scale` (0.5: half
 /// resolution), grown by `border` texels; no scissor for a whole-view rect.
 void scissorTo(const ScreenRect& rect, float scale, int border, int w, int h);

@@ -157,6 +157,24 @@ uint32_t buildProgram(const ShaderReader& read, const std::string& vertexFile,
     ++gCounts.built;  // tried: a failing build costs the compile as well
     if (gFrameDepth > 0) ++gCounts.inFrame;
     if (gPassDepth > 0) ++gCounts.inPass;
+    if (fragmentFile.empty()) {
+        // A compute program (ARB_compute_shader: the caller checked the context has it).
+        const GLuint cs = compileStage(GL_COMPUTE_SHADER, read, vertexFile, defines, error);
+        if (!cs) return 0;
+        const GLuint program = glCreateProgram();
+        glAttachShader(program, cs);
+        glLinkProgram(program);
+        glDetachShader(program, cs);
+        glDeleteShader(cs);
+        GLint ok = GL_FALSE;
+        glGetProgramiv(program, GL_LINK_STATUS, &ok);
+        if (ok != GL_TRUE) {
+            *error = vertexFile + ":0: link failed: " + infoLog(program, true);
+            glDeleteProgram(program);
+            return 0;
+        }
+        return program;
+    }
     const GLuint vs = compileStage(GL_VERTEX_SHADER, read, vertexFile, defines, error);
     if (!vs) return 0;
     const GLuint fs = compileStage(GL_FRAGMENT_SHADER, read, fragmentFile, defines, error);

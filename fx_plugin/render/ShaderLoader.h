@@ -21,9 +21,10 @@ ShaderReader shaderReader(const std::string& dir);
 bool loadShaderSource(const std::string& dir, const std::string& name, const std::string& defines,
                       ShaderSource* out, std::string* error);
 
-/// Builds a program from two stage files. Returns the GL program name, or 0 with every compile
-/// or link message in *error ("file:line: message" lines); nothing leaks on failure. Changes no
-/// bound GL state (no glUseProgram).
+/// Builds a program from two stage files, or with `fragmentFile` empty a compute program from
+/// `vertexFile` alone (the caller checks the context has ARB_compute_shader). Returns the GL
+/// program name, or 0 with every compile or link message in *error ("file:line: message" lines);
+/// nothing leaks on failure. Changes no bound GL state (no glUseProgram).
 uint32_t buildProgram(const std::string& dir, const std::string& vertexFile,
                       const std::string& fragmentFile, const std::string& defines,
                       std::string* error);

@@ -20,15 +20,21 @@ Enum enumFrom(int v) {
 // API 2.0's fxRenderOptions ended with bilinearUpsample; 2.1 appended particleShape and
 // quarterResAlways.
 constexpr size_t kRenderOptionsSize20 = offsetof(fxRenderOptions, particleShape);
+// 2.3 appended tiled: a 2.1 or 2.2 host's size ends before it.
+constexpr size_t kRenderOptionsSize21 = offsetof(fxRenderOptions, tiled);
+bool knownOptionsSize(uint32_t size) {
+    return knownSize(size, sizeof(fxRenderOptions), kRenderOptionsSize20) || size == kRenderOptionsSize21;
+}
 
 }  // namespace
 
 int setRenderOptions(fxPlugin* p, const fxRenderOptions* o) {
     if (!usable(p, "setRenderOptions")) return handleError(p);
     if (!o) return code(refuse(p, ErrorCode::NullArgument, "setRenderOptions", "options is null"));
-    if (!knownSize(o->size, sizeof *o, kRenderOptionsSize20)) {
+    if (!knownOptionsSize(o->size)) {
         return code(refuse(p, ErrorCode::BadDescriptor, "setRenderOptions",
-                           sizeProblem("fxRenderOptions", o->size, sizeof *o, kRenderOptionsSize20)));
+                           sizeProblem("fxRenderOptions", o->size, sizeof *o, kRenderOptionsSize20) + " (or " +
+                               std::to_string(kRenderOptionsSize21) + ": API 2.1-2.2)"));
     }
     const fxRenderOptions full = fullDesc(*o);
     if (full.techniqueOverride < 0 || full.techniqueOverride > FX_TECHNIQUE_MEGA) {
@@ -49,6 +55,8 @@ int setRenderOptions(fxPlugin* p, const fxRenderOptions* o) {
     r.bilinearUpsample = full.bilinearUpsample != 0;
     // Like the shape, a 2.0 host's call leaves quarterResAlways as it was.
     r.quarterResAlways = setsShape ? full.quarterResAlways != 0 : impl(p).renderOptions().quarterResAlways;
+    // And a 2.0-2.2 host's call leaves tiled as it was.
+    r.tiled = o->size > kRenderOptionsSize21 ? full.tiled != 0 : impl(p).renderOptions().tiled;
     const ErrorCode set = impl(p).setRenderOptions(r);
     if (set != ErrorCode::None || !setsShape) return code(set);
     return code(impl(p).setParticleShape(static_cast<ParticleShape>(full.particleShape)));
@@ -62,10 +70,11 @@ void getRenderOptions(const fxPlugin* p, fxRenderOptions* out) {
     full.bilinearUpsample = r.bilinearUpsample ? 1 : 0;
     full.particleShape = static_cast<int>(impl(p).particleShape());
     full.quarterResAlways = r.quarterResAlways ? 1 : 0;
+    full.tiled = r.tiled ? 1 : 0;
     // 2.0 filled its fields whatever the size (hosts may never have set it on a struct they only
     // read): a size the library does not know still gets them, and only them, as every host's
     // struct has at least those.
-    writeOut(out, full, knownSize(out->size, sizeof full, kRenderOptionsSize20) ? out->size : kRenderOptionsSize20);
+    writeOut(out, full, knownOptionsSize(out->size) ? out->size : kRenderOptionsSize20);
 }
 
 int setParticleShape(fxPlugin* p, int s) {

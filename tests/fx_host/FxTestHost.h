@@ -315,6 +315,7 @@ struct RenderMode {
     fx::Technique technique;
     bool quarter = false, lit = false;
     bool classify = false;  ///< fade classification (FadeClassification::On)
+    bool tiled = false;     ///< the tiled compute path (RenderOptions::tiled)
 };
 /// The modes that more than one test file goes through.
 namespace modes {
@@ -326,6 +327,8 @@ inline constexpr RenderMode kSphericalQuarter{"spherical quarter", fx::Technique
 inline constexpr RenderMode kMega{"mega", fx::Technique::Mega};
 inline constexpr RenderMode kSoftLit{"soft lit", fx::Technique::Soft, false, true};
 inline constexpr RenderMode kSoftClassified{"soft classified", fx::Technique::Soft, false, false, true};
+inline constexpr RenderMode kHardTiled{"hard tiled", fx::Technique::Hard, false, false, false, true};
+inline constexpr RenderMode kSoftTiled{"soft tiled", fx::Technique::Soft, false, false, false, true};
 }  // namespace modes
 
 // ---- hand-placed particles (TestParticles.cpp) ------------------------------------------------

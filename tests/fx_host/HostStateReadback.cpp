@@ -77,6 +77,24 @@ HostStateReadback readHostState() {
     GLint mask = 0;
     glGetIntegeri_v(GL_SAMPLE_MASK_VALUE, 0, &mask);
     r["sample mask value 0"] = {double(mask)};
+    if (phg::glVersion() >= 43) {
+        // The tiled path's bindings: shader storage buffers 0-2 (with their ranges) and the generic
+        // one, image unit 0.
+        ints("shader storage buffer", phg::kShaderStorageBufferBinding, 1);
+        for (GLuint i = 0; i < 3; ++i) {
+            GLint b = 0;
+            GLint64 start = 0, size = 0;
+            glGetIntegeri_v(phg::kShaderStorageBufferBinding, i, &b);
+            phg::compat().getInteger64i_v(phg::kShaderStorageBufferStart, i, &start);
+            phg::compat().getInteger64i_v(phg::kShaderStorageBufferSize, i, &size);
+            r["shader storage buffer " + std::to_string(i)] = {double(b), double(start), double(size)};
+        }
+        GLint image[3] = {0, 0, 0};
+        glGetIntegeri_v(phg::kImageBindingName, 0, &image[0]);
+        glGetIntegeri_v(phg::kImageBindingAccess, 0, &image[1]);
+        glGetIntegeri_v(phg::kImageBindingFormat, 0, &image[2]);
+        r["image unit 0"] = {double(image[0]), double(image[1]), double(image[2])};
+    }
     if (phg::compat().clipControl) {
         ints("clip origin", GL_CLIP_ORIGIN, 1);
         ints("clip depth mode", GL_CLIP_DEPTH_MODE, 1);
@@ -142,7 +160,12 @@ void resetHostState() {
                      GL_SAMPLE_MASK, GL_TEXTURE_CUBE_MAP_SEAMLESS, GL_FRAMEBUFFER_SRGB, GL_COLOR_LOGIC_OP}) {
         glDisable(e);
     }
-    if (phg::glVersion() >= 43) glDisable(phg::kPrimitiveRestartFixedIndex);
+    if (phg::glVersion() >= 43) {
+        glDisable(phg::kPrimitiveRestartFixedIndex);
+        for (GLuint i = 0; i < 3; ++i) glBindBufferBase(phg::kShaderStorageBuffer, i, 0);
+        glBindBuffer(phg::kShaderStorageBuffer, 0);
+        phg::compat().bindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, phg::kRgba8);
+    }
     glEnable(GL_MULTISAMPLE);
     glEnable(GL_DITHER);
     glPrimitiveRestartIndex(0);

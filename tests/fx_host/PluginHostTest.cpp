@@ -38,6 +38,7 @@ void PluginHostTest::setMode(const RenderMode& m) {
     o.techniqueOverride = m.technique;
     o.quarterRes = m.quarter;
     o.quarterResAlways = m.quarter;
+    o.tiled = m.tiled;
     ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
     ASSERT_EQ(plugin->setFadeClassification(m.classify ? fx::FadeClassification::On : fx::FadeClassification::Off),
               fx::ErrorCode::None);

@@ -17,6 +17,11 @@ constexpr GLenum kBlueScale = 0x0D1A, kBlueBias = 0x0D1B, kAlphaScale = 0x0D1C, 
 constexpr GLenum kDepthScale = 0x0D1E, kDepthBias = 0x0D1F;
 constexpr GLenum kTextureFilterControl = 0x8500, kTextureLodBias = 0x8501;
 constexpr GLenum kPrimitiveRestartFixedIndex = 0x8D69;
+// GL 4.3's shader storage buffers and 4.2's image units (the tiled path binds both).
+constexpr GLenum kShaderStorageBuffer = 0x90D2, kShaderStorageBufferBinding = 0x90D3;
+constexpr GLenum kShaderStorageBufferStart = 0x90D4, kShaderStorageBufferSize = 0x90D5;
+constexpr GLenum kImageBindingName = 0x8F3A, kImageBindingAccess = 0x8F3E, kImageBindingFormat = 0x906E;
+constexpr GLenum kReadWrite = 0x88BA, kRgba8 = 0x8058;
 constexpr int kUnits = 6;  // GlStateGuard::kTextureUnits
 
 // The pixel-store parameters, by the names the poisons and the readback give them.
@@ -38,6 +43,8 @@ struct Compat {
     void (*clipPlane)(GLenum, const GLdouble*) = nullptr;
     void (*polygonStipple)(const GLubyte*) = nullptr;
     void (*clipControl)(GLenum, GLenum) = nullptr;
+    void (*bindImageTexture)(GLuint, GLuint, GLint, GLboolean, GLint, GLenum, GLenum) = nullptr;
+    void (*getInteger64i_v)(GLenum, GLuint, GLint64*) = nullptr;
     // The fixed-function fog and immediate-mode drawing of FogTest.cpp.
     void (*fogi)(GLenum, GLint) = nullptr;
     void (*fogf)(GLenum, GLfloat) = nullptr;
@@ -65,6 +72,8 @@ inline const Compat& compat() {
         load(&k.clipPlane, "glClipPlane");
         load(&k.polygonStipple, "glPolygonStipple");
         load(&k.clipControl, "glClipControl");
+        load(&k.bindImageTexture, "glBindImageTexture");
+        load(&k.getInteger64i_v, "glGetInteger64i_v");
         load(&k.fogi, "glFogi");
         load(&k.fogf, "glFogf");
         load(&k.fogfv, "glFogfv");

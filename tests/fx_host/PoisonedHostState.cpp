@@ -58,6 +58,24 @@ std::vector<HostPoison> buildPoisons() {
         add("clip control", [] { phg::compat().clipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE); });
     }
     add("depth range", [] { glDepthRange(0.25, 0.75); });
+    if (phg::glVersion() >= 43) {
+        // What the tiled path binds: a range of a host buffer on storage binding 1 and the generic
+        // binding, a host texture on image unit 0.
+        add("shader storage buffers", [] {
+            glBindBufferRange(phg::kShaderStorageBuffer, 1, ownBuffer(), 0, 16);
+            glBindBuffer(phg::kShaderStorageBuffer, ownBuffer());
+        });
+        add("image unit 0", [] {
+            static GLuint t = 0;
+            if (!t) {
+                glGenTextures(1, &t);
+                glBindTexture(GL_TEXTURE_2D, t);
+                glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+                glBindTexture(GL_TEXTURE_2D, 0);
+            }
+            phg::compat().bindImageTexture(0, t, 0, GL_FALSE, 0, phg::kReadWrite, phg::kRgba8);
+        });
+    }
     enable("depth clamp", GL_DEPTH_CLAMP);
     if (compatProfile) {
         add("polygon mode front", [] { glPolygonMode(GL_FRONT, GL_LINE); }, true);

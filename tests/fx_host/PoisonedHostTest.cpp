@@ -30,6 +30,8 @@ const RenderMode kModes[] = {
     modes::kMega,
     modes::kSoftLit,
     modes::kSoftClassified,
+    modes::kHardTiled,
+    modes::kSoftTiled,
     {"spherical quarter lit", fx::Technique::Spherical, true, true},
     {"from reactions (stateless sparks too)", fx::Technique::FromReaction},
 };

@@ -299,5 +299,97 @@ TEST(ScreenTiles, ASteadyFrameReusesTheBuffers) {
     EXPECT_EQ(tiles.grid.data(), grid) << "the second frame reallocated the grid";
 }
 
+
+// binParticles (the tiled path): every particle is in each tile its bound touches and in no tile
+// farther than a pixel past it, each tile's list runs front to back (the last batch's last
+// particle first) with the batch in the entry's top bits, and the cover's runs are exactly the
+// tiles that hold particles.
+TEST(TileBins, EveryParticleIsInTheTilesItsBoundTouchesFrontToBack) {
+    const ViewInfo view = testView();
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> across(-4.0f, 4.0f), up(0.0f, 3.0f), deep(-30.0f, 2.0f), size(0.05f, 2.5f);
+    const int tilesX = (kW + ScreenTiles::kTileSize - 1) / ScreenTiles::kTileSize;
+    const int tilesY = (kH + ScreenTiles::kTileSize - 1) / ScreenTiles::kTileSize;
+    TileBins bins;
+    for (int trial = 0; trial < 30; ++trial) {
+        std::vector<ParticleInstance> particles(1 + trial % 20);
+        for (ParticleInstance& p : particles) {
+            p.x = across(rng);
+            p.y = up(rng);
+            p.z = deep(rng);
+            p.size = size(rng);
+        }
+        // Two batches: the first third, then the rest.
+        const int n = int(particles.size()), split = n / 3;
+        const TileBins::Range ranges[2] = {{0, split}, {split, n - split}};
+        ASSERT_TRUE(binParticles(view, particles.data(), ranges, 2, nullptr, &bins)) << "trial " << trial;
+        // Where each particle is expected: the bound of its corners at 0.71 size (ScreenTiles'
+        // kQuadReach) grown by a pixel, everything left of the view in the first tile, right of
+        // it in the last.
+        std::vector<std::vector<uint32_t>> expected(size_t(tilesX * tilesY));
+        for (int i = n - 1; i >= 0; --i) {
+            const ParticleInstance& p = particles[size_t(i)];
+            const glm::vec4 c = view.view * glm::vec4(p.x, p.y, p.z, 1.0f);
+            if (-c.z < view.nearPlane) continue;  // clipped: binned nowhere
+            float lo[2] = {1e30f, 1e30f}, hi[2] = {-1e30f, -1e30f};
+            for (int k = 0; k < 4; ++k) {
+                const float r = 0.71f * p.size;
+                const glm::vec4 clip = view.proj * (c + glm::vec4(k & 1 ? r : -r, k & 2 ? r : -r, 0.0f, 0.0f));
+                const float px[2] = {(clip.x / clip.w * 0.5f + 0.5f) * kW, (clip.y / clip.w * 0.5f + 0.5f) * kH};
+                for (int a = 0; a < 2; ++a) {
+                    lo[a] = std::min(lo[a], px[a] - 1.0f);
+                    hi[a] = std::max(hi[a], px[a] + 1.0f);
+                }
+            }
+            if (hi[0] < 0.0f || hi[1] < 0.0f || lo[0] > float(kW) || lo[1] > float(kH)) continue;
+            const float t = float(ScreenTiles::kTileSize);
+            const int tx0 = std::max(0, int(std::floor(lo[0] / t))), tx1 = std::min(tilesX - 1, int(std::floor(hi[0] / t)));
+            const int ty0 = std::max(0, int(std::floor(lo[1] / t))), ty1 = std::min(tilesY - 1, int(std::floor(hi[1] / t)));
+            const uint32_t entry = uint32_t(i) | (uint32_t(i >= split ? 1 : 0) << TileBins::kBatchShift);
+            for (int ty = std::min(ty0, tilesY - 1); ty <= ty1; ++ty) {
+                for (int tx = std::min(tx0, tilesX - 1); tx <= tx1; ++tx) expected[size_t(ty * tilesX + tx)].push_back(entry);
+            }
+        }
+        std::vector<std::vector<uint32_t>> got(size_t(tilesX * tilesY));
+        int64_t coverPixels = 0;
+        for (int k = 0; k < bins.tileCount(); ++k) {
+            const uint32_t* t = &bins.tiles[size_t(k) * 4];
+            ASSERT_LT(int(t[0]), tilesX);
+            ASSERT_LT(int(t[1]), tilesY);
+            ASSERT_GT(t[3], 0u) << "a listed tile holds particles";
+            got[size_t(t[1] * tilesX + t[0])].assign(bins.entries.begin() + t[2], bins.entries.begin() + t[2] + t[3]);
+            coverPixels += int64_t(std::min(kW, int(t[0] + 1) * ScreenTiles::kTileSize) - int(t[0]) * ScreenTiles::kTileSize) *
+                           (std::min(kH, int(t[1] + 1) * ScreenTiles::kTileSize) - int(t[1]) * ScreenTiles::kTileSize);
+        }
+        for (size_t k = 0; k < got.size(); ++k) {
+            EXPECT_EQ(got[k], expected[k]) << "tile " << k % size_t(tilesX) << "," << k / size_t(tilesX) << ", trial " << trial;
+        }
+        EXPECT_EQ(bins.cover.pixels, coverPixels) << "the cover is the tiles with particles, trial " << trial;
+        bool insideView = false;
+        for (int c : rasterise(bins.cover, &insideView)) ASSERT_LE(c, 1);
+        EXPECT_TRUE(insideView);
+    }
+}
+
+TEST(TileBins, AParticleWithNoBoundOrTooManyBatchesRefuseTheView) {
+    const ViewInfo view = testView();
+    ParticleInstance p = centredParticle(1.0f);
+    TileBins bins;
+    const TileBins::Range one{0, 1};
+    ASSERT_TRUE(binParticles(view, &p, &one, 1, nullptr, &bins));
+    EXPECT_GT(bins.tileCount(), 0);
+    p.x = std::nanf("");
+    EXPECT_FALSE(binParticles(view, &p, &one, 1, nullptr, &bins)) << "a position that is not a number";
+    p = centredParticle(1.0f);
+    p.z = 10.0f;  // behind the camera: clipped, binned nowhere
+    ASSERT_TRUE(binParticles(view, &p, &one, 1, nullptr, &bins));
+    EXPECT_EQ(bins.tileCount(), 0);
+    EXPECT_TRUE(bins.entries.empty());
+    EXPECT_TRUE(bins.cover.vertices.empty());
+    std::vector<TileBins::Range> many(65, TileBins::Range{0, 0});
+    many[0] = one;
+    EXPECT_FALSE(binParticles(view, &p, many.data(), 65, nullptr, &bins)) << "64 batches fit the entries' 6 bits";
+}
+
 }  // namespace
 }  // namespace fx

@@ -22,6 +22,7 @@ void DirectParticles::setMode(const RenderMode& m) {
     settings.options.techniqueOverride = m.technique;
     settings.options.quarterRes = m.quarter;
     settings.options.quarterResAlways = m.quarter;
+    settings.options.tiled = m.tiled;
     settings.classification = m.classify ? fx::FadeClassification::On : fx::FadeClassification::Off;
 }
 

@@ -270,6 +270,41 @@ TEST_F(OutputStructTest, QuarterResAlwaysIsSetFromA21SizeAndKeptByA20One) {
     EXPECT_TRUE(host.errors.empty());
 }
 
+// tiled (2.3) reads back as set; a 2.1-2.2 host's size (ending before it) is taken and leaves it
+// as it was, and a read with that size writes nothing past it.
+TEST_F(OutputStructTest, TiledIsSetFromA23SizeAndKeptByA22One) {
+    fxRenderOptions back = FX_DESC_INIT(fxRenderOptions);
+    api->getRenderOptions(plugin, &back);
+    EXPECT_EQ(back.tiled, 0) << "rasterised by default";
+
+    fxRenderOptions set = FX_DESC_INIT(fxRenderOptions);
+    set.tiled = 1;
+    ASSERT_EQ(api->setRenderOptions(plugin, &set), FX_ERROR_NONE);
+    api->getRenderOptions(plugin, &back);
+    EXPECT_EQ(back.tiled, 1);
+
+    const size_t size22 = offsetof(fxRenderOptions, tiled);
+    fxRenderOptions set22 = FX_DESC_INIT(fxRenderOptions);
+    set22.size = uint32_t(size22);
+    set22.quarterResAlways = 1;
+    set22.tiled = 0;  // past its size: not read
+    ASSERT_EQ(api->setRenderOptions(plugin, &set22), FX_ERROR_NONE);
+    api->getRenderOptions(plugin, &back);
+    EXPECT_EQ(back.tiled, 1);
+    EXPECT_EQ(back.quarterResAlways, 1) << "the 2.1 field inside a 2.2 size is read";
+
+    Guarded<fxRenderOptions> old{uint32_t(size22)};
+    api->getRenderOptions(plugin, old.out());
+    EXPECT_EQ(old.writtenFrom(size22), 0u);
+    EXPECT_EQ(old.out()->quarterResAlways, 1);
+
+    set.tiled = 0;
+    ASSERT_EQ(api->setRenderOptions(plugin, &set), FX_ERROR_NONE);
+    api->getRenderOptions(plugin, &back);
+    EXPECT_EQ(back.tiled, 0);
+    EXPECT_TRUE(host.errors.empty());
+}
+
 // fxHostCallbacks grew in 2.2 (parallelFor): a 2.0/2.1 host's size is taken, parallelFor past it
 // is not read (a poisoned pointer there would crash the first large view); a size between the two
 // is refused with the sizes it could have been.

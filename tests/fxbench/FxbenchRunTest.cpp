@@ -89,7 +89,7 @@ TEST_P(FxbenchScenario, TinyRunWritesEveryKeyWithFiniteValues) {
     EXPECT_FALSE(run["renderer"].as<std::string>().empty());
     EXPECT_GE(run["threads"].as<int>(), 1);  // --threads 0: one per hardware thread
     ASSERT_TRUE(run["modes"].IsSequence());
-    EXPECT_EQ(run["modes"].size(), 22u);  // every mode by default (lit, mega, *-zbuffer, *-linear included)
+    EXPECT_EQ(run["modes"].size(), 24u);  // every mode by default (lit, mega, *-zbuffer, *-linear, *+tiled included)
     for (const YAML::Node& m : run["modes"]) {
         const std::string name = m["name"].as<std::string>();
         SCOPED_TRACE(name);
@@ -184,6 +184,33 @@ TEST(Fxbench, ClassifiedModesDrawTheirReferencesPicture) {
     std::filesystem::remove(json);
     EXPECT_EQ(modeNode(run, "soft+classify")["error"]["max_abs"].as<double>(), 0.0);
     EXPECT_EQ(modeNode(run, "spherical+classify")["error"]["max_abs"].as<double>(), 0.0);
+    EXPECT_EQ(r.output.find("built while declaring a frame"), std::string::npos) << r.output;
+}
+
+// The tiled modes draw their reference's picture up to the blend's rounding (measured at 320x180:
+// max 3-6/255 at 50-60 dB) in a pass of their own, and blend each covered pixel once: far fewer
+// samples than the rasterised pass writes (overdraw 5 and more in the standard scene).
+TEST(Fxbench, TiledModesDrawTheirReferencesPictureWithOneBlendAPixel) {
+    const std::string json = tempPath("tiled.json");
+    const RunOutput r = runFxbench("--scenario standard --modes hard,soft,hard+tiled,soft+tiled "
+                                   "--size 320x180 --frames 3 --rounds 1 --warmup 1 --error-frames 2 --json " + json);
+    ASSERT_EQ(r.status, 0) << r.output;
+    const YAML::Node run = YAML::Load(readFile(json));
+    std::filesystem::remove(json);
+    for (const char* name : {"hard+tiled", "soft+tiled"}) {
+        SCOPED_TRACE(name);
+        const YAML::Node m = modeNode(run, name);
+        const std::string reference = name[0] == 'h' ? "hard" : "soft";
+        EXPECT_EQ(m["error"]["reference"].as<std::string>(), reference);
+        EXPECT_LE(m["error"]["max_abs"].as<double>(), 8.0);
+        EXPECT_GE(m["error"]["psnr_db"].as<double>(), 45.0);
+        ASSERT_TRUE(m["passes_fragments"]["chase.particles_tiled"]);
+        EXPECT_FALSE(m["passes_fragments"]["chase.particles"]) << "the rasterised pass ran too";
+        const double tiled = m["passes_fragments"]["chase.particles_tiled"].as<double>();
+        const double raster = modeNode(run, reference.c_str())["passes_fragments"]["chase.particles"].as<double>();
+        EXPECT_GT(tiled, 0.0);
+        EXPECT_LT(tiled * 4.0, raster) << "one blend a covered pixel, against one a fragment";
+    }
     EXPECT_EQ(r.output.find("built while declaring a frame"), std::string::npos) << r.output;
 }
 

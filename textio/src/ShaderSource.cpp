@@ -33,6 +33,7 @@ struct Expander {
     std::vector<std::string>* files;
     std::set<std::string> seen;
     bool sawVersion = false;
+    std::string versionLine = "#version 330 core";  ///< the top file's own, where it has one
     ShaderError code = ShaderError::None;
 
     // `where` is "file:line" of the #include that asked for `name` (empty for the top file).
@@ -69,7 +70,10 @@ struct Expander {
             size_t at = 0;
             if (startsWithDirective(line, "#version", &at)) {
                 // Emitted once by the caller, ahead of the defines.
-                if (depth == 0) sawVersion = true;
+                if (depth == 0 && !sawVersion) {
+                    sawVersion = true;
+                    versionLine = line;  // "#version 330 core", or "#version 430 core" (compute)
+                }
                 continue;
             }
             if (!marked) {
@@ -175,7 +179,7 @@ ShaderError expandShaderSource(const ShaderReader& read, const std::string& name
         *error = name + ":1: missing #version (expected \"#version 330 core\" on the first line)";
         return ShaderError::MissingVersion;
     }
-    out->text = "#version 330 core\n" + defines + body;
+    out->text = expander.versionLine + "\n" + defines + body;
     return ShaderError::None;
 }
 

@@ -45,11 +45,12 @@ using ShaderReader = std::function<bool(const std::string& name, std::string* te
 ShaderReader folderShaderReader(const std::string& dir);
 
 /// Whether the top file must carry its own `#version` line (the plugin's files do; the engine's
-/// scene shaders leave it to the loader). Either way the result starts with "#version 330 core".
+/// scene shaders leave it to the loader). The result starts with the top file's own #version line
+/// (330 core for every stage but the plugin's compute shader, 430 core), else "#version 330 core".
 enum class VersionLine { Required, Implied };
 
-/// Expands `name` and its includes. `defines` is inserted verbatim right after "#version 330
-/// core" (e.g. "#define FX_SPHERICAL 1\n"). On failure returns the code with "file:line: message"
+/// Expands `name` and its includes. `defines` is inserted verbatim right after the #version line
+/// (e.g. "#define FX_SPHERICAL 1\n"). On failure returns the code with "file:line: message"
 /// in *error.
 ShaderError expandShaderSource(const ShaderReader& read, const std::string& name, const std::string& defines,
                                ShaderSource* out, std::string* error,

@@ -201,6 +201,7 @@ public:
         c.quarterRes = o.quarterRes ? 1 : 0;
         c.bilinearUpsample = o.bilinearUpsample ? 1 : 0;
         c.quarterResAlways = o.quarterResAlways ? 1 : 0;
+        c.tiled = o.tiled ? 1 : 0;
         return static_cast<ErrorCode>(api_->setRenderOptions(p_, &c));
     }
     RenderOptions renderOptions() const override {
@@ -211,6 +212,7 @@ public:
         o.quarterRes = c.quarterRes != 0;
         o.bilinearUpsample = c.bilinearUpsample != 0;
         o.quarterResAlways = c.quarterResAlways != 0;
+        o.tiled = c.tiled != 0;
         return o;
     }
     bool prepareGl(Diagnostics* out) override {

@@ -1,0 +1,276 @@
+#include "TiledPath.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "render/PrivateGl.h"
+
+#include "GlStateGuard.h"
+#include "ImmediateFrame.h"
+#include "PassDeclaration.h"
+#include "SceneDepthSource.h"
+
+namespace fx {
+namespace {
+
+constexpr int kEntryBinding = 1, kTileBinding = 2, kInstanceBinding = 0, kAccumImage = 0;
+constexpr int kAtlasUnit = ParticleDraw::kAtlasUnit, kRampUnit = ParticleDraw::kRampUnit,
+              kDepthUnit = ParticleDraw::kSceneDepthUnit, kAccumUnit = 3;
+
+// The bindings the pass changes that GlStateGuard has no rows for: read on entry, put back on
+// exit (shader storage buffers 0-2 with their ranges, the generic binding, image unit 0).
+class ComputeBindingsScope {
+public:
+    ComputeBindingsScope() {
+        glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &generic_);
+        for (int i = 0; i < 3; ++i) {
+            glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, GLuint(i), &buffer_[i]);
+            GLint64 v = 0;
+            glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_START, GLuint(i), &v);
+            start_[i] = v;
+            glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_SIZE, GLuint(i), &v);
+            size_[i] = v;
+        }
+        glGetIntegeri_v(GL_IMAGE_BINDING_NAME, kAccumImage, &image_[0]);
+        glGetIntegeri_v(GL_IMAGE_BINDING_LEVEL, kAccumImage, &image_[1]);
+        glGetIntegeri_v(GL_IMAGE_BINDING_LAYERED, kAccumImage, &image_[2]);
+        glGetIntegeri_v(GL_IMAGE_BINDING_LAYER, kAccumImage, &image_[3]);
+        glGetIntegeri_v(GL_IMAGE_BINDING_ACCESS, kAccumImage, &image_[4]);
+        glGetIntegeri_v(GL_IMAGE_BINDING_FORMAT, kAccumImage, &image_[5]);
+    }
+    ~ComputeBindingsScope() {
+        glBindImageTexture(kAccumImage, GLuint(image_[0]), image_[1], GLboolean(image_[2]), image_[3], GLenum(image_[4]),
+                           GLenum(image_[5]));
+        for (int i = 0; i < 3; ++i) {
+            if (buffer_[i] != 0 && size_[i] > 0) {
+                glBindBufferRange(GL_SHADER_STORAGE_BUFFER, GLuint(i), GLuint(buffer_[i]), GLintptr(start_[i]),
+                                  GLsizeiptr(size_[i]));
+            } else {
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(i), GLuint(buffer_[i]));
+            }
+        }
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, GLuint(generic_));
+    }
+    ComputeBindingsScope(const ComputeBindingsScope&) = delete;
+    ComputeBindingsScope& operator=(const ComputeBindingsScope&) = delete;
+
+private:
+    GLint generic_ = 0;
+    GLint buffer_[3] = {0, 0, 0};
+    GLint64 start_[3] = {0, 0, 0}, size_[3] = {0, 0, 0};
+    GLint image_[6] = {0, 0, 0, 0, GL_READ_ONLY, GL_R8};
+};
+
+// Fills `buffer` (GL_SHADER_STORAGE_BUFFER) with `bytes`, orphaning the old contents.
+void upload(uint32_t buffer, const void* data, size_t bytes) {
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(std::max<size_t>(bytes, 16)), nullptr, GL_STREAM_DRAW);
+    if (bytes > 0) glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(bytes), data);
+}
+
+// render.near_fade as the shaders' line in depth (ParticleDraw's nearFadeMap).
+glm::vec2 nearFadeMap(float fade, float nearPlane) {
+    return fade > 0.0f ? glm::vec2(1.0f / fade, -nearPlane / fade) : glm::vec2(0.0f, 1.0f);
+}
+
+}  // namespace
+
+TiledPath::TiledPath(ParticleDraw& draw, SizeMismatchReport sizeMismatch)
+    : draw_(draw), sizeMismatch_(std::move(sizeMismatch)) {}
+
+TiledPath::~TiledPath() {
+    // The renderer deletes its GL objects inside a guard with the context current (~ParticleRenderer).
+    if (!privateGlContextCurrent()) return;
+    const uint32_t buffers[3] = {entryBuffer_, tileBuffer_, coverVbo_};
+    for (uint32_t b : buffers) {
+        if (b) glDeleteBuffers(1, &b);
+    }
+    if (accum_) glDeleteTextures(1, &accum_);
+    if (coverVao_) glDeleteVertexArrays(1, &coverVao_);
+}
+
+bool TiledPath::available() {
+    const bool extensions = FXGLAD_GL_ARB_compute_shader && FXGLAD_GL_ARB_shader_storage_buffer_object &&
+                            FXGLAD_GL_ARB_shader_image_load_store;
+    return extensions && glDispatchCompute && glMemoryBarrier && glBindImageTexture && glBindBufferBase &&
+           glBindBufferRange && glGetInteger64i_v;
+}
+
+void TiledPath::bind(const ProgramCache& programs) {
+    shade_ = programs.passProgram(ProgramCache::TiledShade);
+    composite_ = programs.passProgram(ProgramCache::TiledComposite);
+    if (shade_) {
+        ShadeUniforms& u = s_;
+        u.view = glGetUniformLocation(shade_, "uView");
+        u.proj = glGetUniformLocation(shade_, "uProj");
+        u.nearPlane = glGetUniformLocation(shade_, "uNear");
+        u.farPlane = glGetUniformLocation(shade_, "uFar");
+        u.atlas = glGetUniformLocation(shade_, "uAtlas");
+        u.ramp = glGetUniformLocation(shade_, "uRamp");
+        u.sceneDepth = glGetUniformLocation(shade_, "uSceneDepth");
+        u.batchA = glGetUniformLocation(shade_, "uBatchA");
+        u.batchNearFade = glGetUniformLocation(shade_, "uBatchNearFade");
+        u.tileCount = glGetUniformLocation(shade_, "uTileCount");
+        u.groupsX = glGetUniformLocation(shade_, "uGroupsX");
+        u.viewSize = glGetUniformLocation(shade_, "uViewSize");
+        u.pixelToNdc = glGetUniformLocation(shade_, "uPixelToNdc");
+        u.atlasTexels = glGetUniformLocation(shade_, "uAtlasTexels");
+        u.decode.locate(shade_);
+        u.fog = FogUniforms::of(shade_);
+    }
+    if (composite_) {
+        compositeAccum_ = glGetUniformLocation(composite_, "uAccum");
+        compositeOrigin_ = glGetUniformLocation(composite_, "uDrawOrigin");
+        compositeViewSize_ = glGetUniformLocation(composite_, "uViewSize");
+    }
+}
+
+bool TiledPath::canDraw(const ParticleView& v) {
+    if (v.lit() || v.list.batches.size() > size_t(kMaxBatches)) return false;
+    for (const DrawBatch& b : v.list.batches) {
+        if (b.technique != Technique::Hard && b.technique != Technique::Soft) return false;
+    }
+    const glm::mat4& p = v.view.proj;
+    return p[0][3] == 0.0f && p[1][3] == 0.0f && p[0][0] * p[1][1] - p[1][0] * p[0][1] != 0.0f;
+}
+
+bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& record) {
+    const ViewInfo& view = record->view;
+    // Hard particles are cut against the scene depth too: the pass reads it whatever the batches
+    // (a host that hands none in gets the full-resolution pass).
+    const SceneDepthSource source = sceneDepthSource(frame, view);
+    const Target depth = source.target;
+    const SceneDepthDecode decode = source.decode;
+    if (!depth.valid()) return false;
+    TileBins::Range ranges[kMaxBatches];
+    const int batchCount = int(record->list.batches.size());
+    for (int b = 0; b < batchCount; ++b) ranges[b] = {record->list.batches[size_t(b)].first, record->list.batches[size_t(b)].count};
+    const BillboardReach reach = draw_.billboardReach(*record, false);
+    if (!binParticles(view, record->list.instances.data(), ranges, batchCount, &reach, &record->bins)) return false;
+    const Target color = frame.sceneColor();
+    ScreenRect bound;  // whole
+    if (dynamic_cast<ImmediateFrame*>(&frame)) {
+        bound = screenRect(view, record->list.instances.data(), record->list.particleCount(), nullptr,
+                           Footprint::Billboard, Jobs(), &reach);
+    }
+    narrowDepthRead(frame, bound, view.width, view.height);
+    addPassReading(frame, kPass, {depth}, color, [this, record, depth, decode, color](PassContext& ctx) {
+        if (!targetsFitView(ctx, record->view, color, depth, sizeMismatch_)) return;
+        GlStateGuard guard;  // nothing z-tested: the compute shader compares depths itself
+        DebugGroup group(kPass);
+        run(ctx, *record, color, depth, decode);
+    });
+    return true;
+}
+
+void TiledPath::ensureObjects(int width, int height) {
+    if (!entryBuffer_) glGenBuffers(1, &entryBuffer_);
+    if (!tileBuffer_) glGenBuffers(1, &tileBuffer_);
+    if (!coverVao_) {
+        glGenVertexArrays(1, &coverVao_);
+        glGenBuffers(1, &coverVbo_);
+        glBindVertexArray(coverVao_);
+        glBindBuffer(GL_ARRAY_BUFFER, coverVbo_);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+    }
+    if (!accum_ || width > accumWidth_ || height > accumHeight_) {
+        // Grows only: split-screen views of different sizes share it.
+        accumWidth_ = std::max(width, accumWidth_);
+        accumHeight_ = std::max(height, accumHeight_);
+        if (accum_) glDeleteTextures(1, &accum_);
+        glGenTextures(1, &accum_);
+        glActiveTexture(GLenum(GL_TEXTURE0 + kAccumUnit));
+        glBindTexture(GL_TEXTURE_2D, accum_);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, accumWidth_, accumHeight_, 0, GL_RGBA, GL_HALF_FLOAT, nullptr);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        glActiveTexture(GL_TEXTURE0);
+    }
+}
+
+void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Target depth, const SceneDepthDecode& decode) {
+    const TileBins& bins = v.bins;
+    const ViewInfo& view = v.view;
+    if (bins.tileCount() == 0 || !ok()) return;
+    ComputeBindingsScope bindings;
+    ensureObjects(view.width, view.height);
+
+    // The bins and the instances.
+    upload(entryBuffer_, bins.entries.data(), bins.entries.size() * sizeof(uint32_t));
+    upload(tileBuffer_, bins.tiles.data(), bins.tiles.size() * sizeof(uint32_t));
+    InstanceStream& stream = draw_.stream();
+    stream.upload(v.list.instances.data(), v.list.particleCount());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceBinding, stream.instanceBuffer());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEntryBinding, entryBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBinding, tileBuffer_);
+    glBindImageTexture(kAccumImage, accum_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+
+    // What the pass reads.
+    ColorRampTexture& ramp = draw_.ramp();
+    ramp.upload();
+    const SmokeAtlas& atlas = draw_.atlas();
+    bindTextureUnit(kAtlasUnit, atlas.texture(), draw_.atlasSampler().name());
+    bindTextureUnit(kRampUnit, ramp.texture());
+    const TextureRef depthRef = depth.valid() ? ctx.texture(depth, 0) : TextureRef{};
+    draw_.depthSampler().bindTexture(kDepthUnit, depthRef.name);
+    const SceneDepthDecode placed = decode.placedFor(depthRef, view, true);  // addressed as in sceneColor
+    if (depthRef.name) sceneDepthBarrier(decode);
+
+    glUseProgram(shade_);
+    const ShadeUniforms& u = s_;
+    glUniformMatrix4fv(u.view, 1, GL_FALSE, &view.view[0][0]);
+    glUniformMatrix4fv(u.proj, 1, GL_FALSE, &view.proj[0][0]);
+    glUniform1f(u.nearPlane, view.nearPlane);
+    glUniform1f(u.farPlane, view.farPlane);
+    glUniform1i(u.atlas, kAtlasUnit);
+    glUniform1i(u.ramp, kRampUnit);
+    glUniform1i(u.sceneDepth, kDepthUnit);
+    setSceneDepthDecode(u.decode, placed);
+    setFogUniforms(u.fog, view.fog);
+    glm::vec4 batchA[kMaxBatches];
+    glm::vec2 batchNear[kMaxBatches];
+    const int batchCount = int(v.list.batches.size());
+    for (int b = 0; b < batchCount; ++b) {
+        const DrawBatch& batch = v.list.batches[size_t(b)];
+        const bool soft = batch.technique == Technique::Soft;
+        batchA[b] = glm::vec4(ramp.rowV(batch.rampRow), float(static_cast<int>(batch.blend)),
+                              soft ? batch.softScale : 0.0f, batch.contrastPower);
+        batchNear[b] = nearFadeMap(batch.nearFade, view.nearPlane);
+    }
+    glUniform4fv(u.batchA, batchCount, &batchA[0][0]);
+    glUniform2fv(u.batchNearFade, batchCount, &batchNear[0][0]);
+    glUniform2i(u.viewSize, view.width, view.height);
+    glUniform4f(u.pixelToNdc, 2.0f / float(view.width), 2.0f / float(view.height), -1.0f, -1.0f);
+    glUniform1f(u.atlasTexels, float(atlas.width()));
+    const int tiles = bins.tileCount();
+    const int groupsX = std::min(tiles, 65535);
+    const int groupsY = (tiles + groupsX - 1) / groupsX;
+    glUniform1i(u.tileCount, tiles);
+    glUniform1i(u.groupsX, groupsX);
+    glDispatchCompute(GLuint(groupsX), GLuint(groupsY), 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+
+    // The covered tiles onto sceneColor.
+    ctx.bindForDraw(color);
+    const HostClip clip = HostClip::current();
+    plainDrawState();
+    clip.apply();
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glUseProgram(composite_);
+    bindTextureUnit(kAccumUnit, accum_);
+    glUniform1i(compositeAccum_, kAccumUnit);
+    glUniform2i(compositeOrigin_, placed.drawOrigin.x, placed.drawOrigin.y);
+    glUniform2f(compositeViewSize_, float(bins.cover.viewWidth), float(bins.cover.viewHeight));
+    glBindVertexArray(coverVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, coverVbo_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(bins.cover.vertices.size() * sizeof(float)), bins.cover.vertices.data(),
+                 GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(bins.cover.vertices.size() / 2));
+}
+
+}  // namespace fx

@@ -1,0 +1,85 @@
+#pragma once
+// Tiled (RenderOptions::tiled, API 2.3): hard and soft billboards of a full-resolution view
+// shaded by a compute shader per 16 x 16 pixel tile instead of rasterised and blended one
+// fragment at a time.
+//   "particles_tiled"  reads sceneDepth (the z-buffer in place, or the host's linear depth),
+//                      writes sceneColor
+// Declaring the pass bins the view's particles on the CPU (binParticles, ScreenTiles.h: each
+// particle into the tiles its trimmed polygon's bound touches, front to back). The pass uploads the
+// bins, dispatches cs_particles_tiled over the tiles that hold particles (one invocation per
+// pixel: one scene-depth fetch per pixel, the blend in registers, stopped once the pixel is
+// opaque) into the plugin's own RGBA16F image, then draws those tiles onto sceneColor blended
+// (ONE, ONE_MINUS_SRC_ALPHA): one blend per covered pixel instead of one per particle fragment.
+//
+// Why: on the GPUs this project is measured on, soft's raster pass is bound by its per-fragment
+// texture reads (docs/results.md, session 21: soft's depth fetch is 0.485 ms of its 1.690 ms
+// pass on the H200), and by the blend of every fragment of overdraw; here the depth fetch is paid
+// per pixel and no fragment is blended.
+//
+// Where it draws: a context with compute shaders, shader storage buffers and image load/store
+// (GL 4.3, or the three ARB extensions: available()), a view whose every batch is unlit hard or
+// soft, at most kMaxBatches batches, under a projection whose w does not depend on x and y
+// (perspective or orthographic). Elsewhere the renderer draws the view at full resolution as
+// before (canDraw() says which). Quarter res, when it pays for a view, takes precedence.
+//
+// The picture: the raster path's up to rounding (the accumulation in 16-bit floats instead of
+// the target's blend; a texel level picked from one level of detail per particle), hard particles
+// cut where the scene is nearer in linear depth instead of window depth, and a pixel's particles
+// behind an opacity of 1 - 1/2048 left out (docs/results.md has the measured error).
+//
+// GL state: the pass runs in a GlStateGuard; what it touches beyond the guard's rows (shader
+// storage buffer bindings 0-2 and the generic one, image unit 0) it reads first and puts back.
+#include <memory>
+
+#include "ParticleDraw.h"
+#include "RendererConfig.h"
+
+namespace fx {
+
+class TiledPath {
+public:
+    static constexpr const char* kPass = "particles_tiled";
+    static constexpr int kMaxBatches = 32;  ///< cs_particles_tiled.glsl's kMaxBatches
+    static constexpr int kTileSize = ScreenTiles::kTileSize;  ///< the compute shader's group size
+
+    TiledPath(ParticleDraw& draw, SizeMismatchReport sizeMismatch);
+    ~TiledPath();
+    TiledPath(const TiledPath&) = delete;
+    TiledPath& operator=(const TiledPath&) = delete;
+
+    /// The current context has what the path needs (see above). Context current.
+    static bool available();
+    /// Takes the tiled programs of `programs` (0 where one failed or was never built) and looks
+    /// their uniforms up. Context current, inside a guard.
+    void bind(const ProgramCache& programs);
+    /// Both programs built.
+    bool ok() const { return shade_ != 0 && composite_ != 0; }
+    /// Whether this view can be drawn tiled (the rule above; no GL).
+    static bool canDraw(const ParticleView& view);
+
+    /// Bins the view's particles and declares its pass; false (nothing declared) where a particle
+    /// has no bound: the caller declares the full-resolution pass instead.
+    bool declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& view);
+
+private:
+    void run(PassContext& ctx, const ParticleView& v, Target color, Target depth, const SceneDepthDecode& decode);
+    void ensureObjects(int width, int height);
+
+    ParticleDraw& draw_;
+    SizeMismatchReport sizeMismatch_;
+    uint32_t shade_ = 0, composite_ = 0;
+    struct ShadeUniforms {
+        int view = -1, proj = -1, nearPlane = -1, farPlane = -1, atlas = -1, ramp = -1, sceneDepth = -1;
+        int batchA = -1, batchNearFade = -1, tileCount = -1, groupsX = -1, viewSize = -1, pixelToNdc = -1,
+            atlasTexels = -1;
+        SceneDepthUniforms decode;
+        FogUniforms fog;
+    } s_;
+    int compositeAccum_ = -1, compositeOrigin_ = -1, compositeViewSize_ = -1;
+    uint32_t entryBuffer_ = 0, tileBuffer_ = 0;  ///< the bins (shader storage)
+    uint32_t accum_ = 0;                         ///< RGBA16F, at least the view's size
+    int accumWidth_ = 0, accumHeight_ = 0;
+    uint32_t coverVao_ = 0, coverVbo_ = 0;       ///< the covered tiles' runs
+};
+
+}  // namespace fx

@@ -1,0 +1,144 @@
+#version 430 core
+// Tiled particles (fx_plugin/render/TiledPath.h): hard and soft billboards shaded by a compute
+// shader, one work group per 16 x 16 pixel tile of the view, one invocation per pixel. The CPU
+// binned every particle into the tiles its bound touches, in draw order (TileBins, ScreenTiles.h);
+// a group walks its tile's list front to back, 256 particles at a time: each invocation sets one
+// particle up in shared memory (what the vertex shader works out per vertex), then every
+// invocation evaluates them for its pixel in registers.
+//   - The scene depth is fetched once per pixel, not once per particle fragment: the fetch that
+//     bounds soft's raster pass on the GPUs we measured is paid by the pixels, not the overdraw.
+//   - The blend is done in registers, front to back (premultiplied "under": what the raster path's
+//     (ONE, ONE_MINUS_SRC_ALPHA) and additive (ONE, ONE) blends give back to front, with the
+//     additive particles' alpha 0), and stops once the pixel is opaque to 1/2048: no fixed-function
+//     blend per fragment, one write per pixel.
+// The result, premultiplied colour and 1 - transmittance, goes to uAccum; a draw over the covered
+// tiles blends it onto sceneColor with (ONE, ONE_MINUS_SRC_ALPHA) (fs_particles_tiled_composite).
+//
+// Per particle it is the billboard's own program (vs_particles.glsl + fs_particles_hard/soft):
+// a billboard lies at one view depth, so its texture coordinate is an affine map of the pixel
+// (worked out per particle below), its level of detail one value (the atlas is read from one mip
+// level, the nearest, as ParticleDraw's sampler does), its tint, fog and near fade the particle's
+// own. Hard particles are cut where the scene lies in front of them, compared in linear depth
+// (the raster path's z-test compares window depths: the two differ only where the depths are equal
+// to rounding). Soft particles fade as softFade does (FX_GENERAL_POWER: pow() for any contrast
+// power).
+layout(local_size_x = 16, local_size_y = 16) in;
+
+#include "particles_common.glsl"
+
+// Two vec4 per particle: InstanceStream's ParticleInstance (x, y, z, size), (life, rotation,
+// fade, frame).
+layout(std430, binding = 0) readonly buffer Instances { vec4 uInstances[]; };
+// Each tile's particles, front to back: instance index | batch << 26.
+layout(std430, binding = 1) readonly buffer Entries { uint uEntries[]; };
+// The tiles with particles: (tile x, tile y, first entry, entry count).
+layout(std430, binding = 2) readonly buffer Tiles { uvec4 uTiles[]; };
+layout(rgba16f, binding = 0) writeonly uniform image2D uAccum;
+
+const int kMaxBatches = 32;         // TiledPath::kMaxBatches
+uniform vec4 uBatchA[kMaxBatches];  // ramp row v, blend mode, soft scale (0: hard), contrast power
+uniform vec2 uBatchNearFade[kMaxBatches];  // the batch's uNearFadeMap
+uniform int uTileCount;
+uniform int uGroupsX;               // groups per row of the dispatch
+uniform ivec2 uViewSize;            // the view's pixels
+uniform vec4 uPixelToNdc;           // ndc = (view pixel + 0.5) * xy + zw
+uniform float uAtlasTexels;         // the atlas's level-0 width (square)
+
+const uint kBatchShift = 26u;
+const float kOpaque = 1.0 - 1.0 / 2048.0;
+
+shared vec4 sMap[256];     // local = sMap.xy * px + sMap.zw * py + sOffset.xy, p the pixel centre
+shared vec4 sOffset[256];  // (local offset, atlas cell)
+shared vec4 sTint[256];    // particleTint's tint
+shared vec4 sFogLod[256];  // (fogAdd, atlas level of detail)
+shared vec4 sFade[256];    // soft: (softFadeLine, contrast power); hard: (0, 0, 0, -depth)
+
+void setUp(uint slot, uint entry) {
+    uint index = entry & ((1u << kBatchShift) - 1u);
+    int batch = int(entry >> kBatchShift);
+    vec4 posSize = uInstances[2u * index];
+    vec4 lrff = uInstances[2u * index + 1u];
+    vec4 a = uBatchA[batch];
+    vec3 c = (uView * vec4(posSize.xyz, 1.0)).xyz;
+    float depth = -c.z;
+    float radius = 0.5 * posSize.w;
+    // The plane z = c.z: clip.w = P23 z + P33, ndc = (M xy + k) / w with M the projection's upper
+    // 2 x 2 (TiledPath takes only projections whose w does not depend on x, y). Inverted:
+    // xy = M^-1 (ndc w - k), and local = rotate2((xy - c.xy) / radius, angle).
+    float w = uProj[2][3] * c.z + uProj[3][3];
+    mat2 m = mat2(uProj[0].xy, uProj[1].xy);
+    vec2 k = uProj[2].xy * c.z + uProj[3].xy;
+    mat2 inv = inverse(m);
+    float s = sin(lrff.y), co = cos(lrff.y);
+    mat2 turn = mat2(co, s, -s, co);  // rotate2
+    mat2 toLocal = turn * inv * (w / radius);
+    vec2 offset = turn * (-(inv * k) - c.xy) / radius;
+    // ndc = p * uPixelToNdc.xy + uPixelToNdc.zw folded in.
+    mat2 perPixel = toLocal * mat2(uPixelToNdc.x, 0.0, 0.0, uPixelToNdc.y);
+    offset += toLocal * uPixelToNdc.zw;
+    bool clipped = !(depth >= uNear && depth <= uFar) || !(radius > 0.0);
+    sMap[slot] = clipped ? vec4(0.0) : vec4(perPixel[0], perPixel[1]);
+    sOffset[slot] = vec4(clipped ? vec2(2.0) : offset, atlasCell(lrff.w));
+    // The tint, as particleTint with this batch's blend mode and near fade.
+    vec4 ramp = textureLod(uRamp, vec2(rampU(lrff.x), a.x), 0.0);
+    float fade = lrff.z * clamp(depth * uBatchNearFade[batch].x + uBatchNearFade[batch].y, 0.0, 1.0);
+    vec4 fog = particleFog(depth);
+    float alpha = ramp.a * fade;
+    float outAlpha = a.y == 2.0 ? 0.0 : alpha;
+    sTint[slot] = vec4(ramp.rgb * (a.y == 1.0 ? fade : alpha) * fog.a, outAlpha);
+    // Texels of level 0 per pixel: the map's larger column (atlasUVOf scales local by 1/4).
+    float rho = 0.25 * uAtlasTexels * max(length(perPixel[0]), length(perPixel[1]));
+    sFogLod[slot] = vec4(fog.rgb * outAlpha, log2(max(rho, 1e-8)));
+    float zs = depth * a.z;
+    sFade[slot] = a.z > 0.0 ? vec4((uDepthCoeffs.x - depth * uDepthCoeffs.z) * a.z,
+                                   (uDepthCoeffs.y - depth * uDepthCoeffs.w) * a.z, -zs, a.w)
+                            : vec4(0.0, 0.0, 0.0, -depth);
+}
+
+void main() {
+    uint tileIndex = gl_WorkGroupID.y * uint(uGroupsX) + gl_WorkGroupID.x;
+    if (tileIndex >= uint(uTileCount)) return;  // the whole group: no barrier is skipped by some
+    uvec4 tile = uTiles[tileIndex];
+    ivec2 pixel = ivec2(tile.xy) * 16 + ivec2(gl_LocalInvocationID.xy);
+    bool inView = all(lessThan(pixel, uViewSize));
+    vec2 p = vec2(pixel) + 0.5;
+    // The scene depth under the pixel, once (gl_FragCoord's stand-in: the view's pixel placed in
+    // sceneColor, as the raster pass reads it).
+    float d = sceneDepthTexelAt(p + vec2(uDrawOrigin));
+    float invDen = 1.0 / (uDepthCoeffs.z + uDepthCoeffs.w * d);
+    float quotient = (uDepthCoeffs.x + uDepthCoeffs.y * d) * invDen;
+    float sceneLinear = quotient > 0.0 && quotient < 3.0e38 ? quotient : 3.0e38;
+
+    vec4 acc = vec4(0.0);  // premultiplied colour in front; acc.a = 1 - transmittance
+    uint count = tile.w;
+    for (uint base = 0u; base < count; base += 256u) {
+        barrier();  // the previous chunk is read by every invocation
+        uint mine = base + gl_LocalInvocationIndex;
+        if (mine < count) setUp(gl_LocalInvocationIndex, uEntries[tile.z + mine]);
+        barrier();
+        uint n = min(256u, count - base);
+        for (uint j = 0u; j < n && acc.a < kOpaque; ++j) {
+            vec4 mo = sOffset[j];
+            vec4 map = sMap[j];
+            vec2 local = map.xy * p.x + map.zw * p.y + mo.xy;
+            if (max(abs(local.x), abs(local.y)) >= 0.996) continue;  // insideFrame
+            vec4 fogLod = sFogLod[j];
+            vec4 texel = textureLod(uAtlas, atlasUVOf(local, mo.zw), fogLod.w);
+            if (texel.a == 0.0) continue;
+            vec4 f = sFade[j];
+            float fade;
+            if (f.w < 0.0) {
+                fade = -f.w <= sceneLinear ? 1.0 : 0.0;
+            } else {
+                float v = (f.x + f.y * d) * invDen;
+                float x = clamp(v > f.z ? v : 1.0, 0.0, 1.0);
+                fade = f.w == 1.0 ? x : contrastCurve(x, f.w);
+            }
+            float coverage = texel.a * fade;
+            vec4 tint = sTint[j];
+            vec4 src = vec4(coverage * (tint.rgb * texel.rgb + fogLod.rgb), tint.a * coverage);
+            acc += (1.0 - acc.a) * src;
+        }
+    }
+    if (inView) imageStore(uAccum, pixel, acc);
+}
