@@ -1,12 +1,13 @@
 #version 430 core
-// Tiled particles (fx_plugin/render/TiledPath.h): hard and soft billboards shaded by a compute
-// shader, one work group per 16 x 16 pixel tile of the view, one invocation per pixel. The CPU
-// binned every particle into the tiles its bound touches, in draw order (TileBins, ScreenTiles.h);
-// a group walks its tile's list front to back, 256 particles at a time: each invocation sets one
-// particle up in shared memory (what the vertex shader works out per vertex), then every
-// invocation evaluates them for its pixel in registers.
+// Tiled particles (fx_plugin/render/TiledPath.h): hard and soft billboards and spheres shaded by a
+// compute shader, one work group per 16 x 16 pixel tile of the view, one invocation per pixel. The
+// CPU binned every particle into the tiles its bound touches, in draw order (TileBins,
+// ScreenTiles.h); a group walks its tile's list front to back, 256 particles at a time: each
+// invocation sets one particle up in shared memory (what the vertex shader works out per vertex),
+// then every invocation evaluates them for its pixel in registers.
 //   - The scene depth is fetched once per pixel, not once per particle fragment: the fetch that
-//     bounds soft's raster pass on the GPUs we measured is paid by the pixels, not the overdraw.
+//     bounds soft's and spherical's raster passes on the GPUs we measured is paid by the pixels,
+//     not the overdraw.
 //   - The blend is done in registers, front to back (premultiplied "under": what the raster path's
 //     (ONE, ONE_MINUS_SRC_ALPHA) and additive (ONE, ONE) blends give back to front, with the
 //     additive particles' alpha 0), and stops once the pixel is opaque to 1/2048: no fixed-function
@@ -14,14 +15,18 @@
 // The result, premultiplied colour and 1 - transmittance, goes to uAccum; a draw over the covered
 // tiles blends it onto sceneColor with (ONE, ONE_MINUS_SRC_ALPHA) (fs_particles_tiled_composite).
 //
-// Per particle it is the billboard's own program (vs_particles.glsl + fs_particles_hard/soft):
-// a billboard lies at one view depth, so its texture coordinate is an affine map of the pixel
-// (worked out per particle below), its level of detail one value (the atlas is read from one mip
-// level, the nearest, as ParticleDraw's sampler does), its tint, fog and near fade the particle's
-// own. Hard particles are cut where the scene lies in front of them, compared in linear depth
-// (the raster path's z-test compares window depths: the two differ only where the depths are equal
-// to rounding). Soft particles fade as softFade does (FX_GENERAL_POWER: pow() for any contrast
-// power).
+// Per particle it is the raster path's own program (vs_particles.glsl with fs_particles_hard, _soft
+// or _spherical), unlit:
+//   - A billboard lies at one view depth, so its texture coordinate is an affine map of the pixel
+//     (worked out per particle below), its level of detail one value, its tint, fog and near fade
+//     the particle's own. Hard particles are cut where the scene lies in front of them, compared in
+//     linear depth (the raster path's z-test compares window depths: the two differ only where the
+//     depths are equal to rounding). Soft particles fade as softFade does (pow() for any contrast
+//     power).
+//   - A sphere (perspective views only: TiledPath::canDraw) is intersected with the pixel's ray as
+//     fs_particles_spherical does; its atlas level of detail is one value per sphere, that of its
+//     centre (the raster path's varies a little over the disc).
+// The atlas is read from one mip level, the nearest, as ParticleDraw's sampler does.
 layout(local_size_x = 16, local_size_y = 16) in;
 
 #include "particles_common.glsl"
@@ -36,22 +41,28 @@ layout(std430, binding = 2) readonly buffer Tiles { uvec4 uTiles[]; };
 layout(rgba16f, binding = 0) writeonly uniform image2D uAccum;
 
 const int kMaxBatches = 32;         // TiledPath::kMaxBatches
-uniform vec4 uBatchA[kMaxBatches];  // ramp row v, blend mode, soft scale (0: hard), contrast power
-uniform vec2 uBatchNearFade[kMaxBatches];  // the batch's uNearFadeMap
+uniform vec4 uBatchA[kMaxBatches];  // ramp row v, blend mode, soft scale, contrast power
+uniform vec4 uBatchB[kMaxBatches];  // the batch's uNearFadeMap (x, y), kind (0 hard, 1 soft, 2 sphere), 0
 uniform int uTileCount;
 uniform int uGroupsX;               // groups per row of the dispatch
 uniform ivec2 uViewSize;            // the view's pixels
 uniform vec4 uPixelToNdc;           // ndc = (view pixel + 0.5) * xy + zw
 uniform float uAtlasTexels;         // the atlas's level-0 width (square)
+uniform float uPixelSlope;          // spheres: one pixel in ray slope (the larger of x and y)
 
 const uint kBatchShift = 26u;
 const float kOpaque = 1.0 - 1.0 / 2048.0;
 
-shared vec4 sMap[256];     // local = sMap.xy * px + sMap.zw * py + sOffset.xy, p the pixel centre
-shared vec4 sOffset[256];  // (local offset, atlas cell)
+// Per particle of the chunk. Billboards: sMap = the local map (local = sMap.xy px + sMap.zw py +
+// sOffset.xy, p the pixel centre), sOffset.zw the atlas cell, sFade soft: (softFadeLine, contrast
+// power), hard: (0, 0, 0, depth). Spheres: sMap = (view centre, radius squared), sOffset = (atlas
+// base, near fade map), sFade = the atlas map (sphereAtlasMap).
+shared vec4 sMap[256];
+shared vec4 sOffset[256];
 shared vec4 sTint[256];    // particleTint's tint
 shared vec4 sFogLod[256];  // (fogAdd, atlas level of detail)
-shared vec4 sFade[256];    // soft: (softFadeLine, contrast power); hard: (0, 0, 0, -depth)
+shared vec4 sFade[256];
+shared uint sKind[256];    // 0 hard, 1 soft, 2 sphere
 
 void setUp(uint slot, uint entry) {
     uint index = entry & ((1u << kBatchShift) - 1u);
@@ -59,40 +70,62 @@ void setUp(uint slot, uint entry) {
     vec4 posSize = uInstances[2u * index];
     vec4 lrff = uInstances[2u * index + 1u];
     vec4 a = uBatchA[batch];
+    vec4 b = uBatchB[batch];
+    uint kind = uint(b.z);
     vec3 c = (uView * vec4(posSize.xyz, 1.0)).xyz;
     float depth = -c.z;
     float radius = 0.5 * posSize.w;
-    // The plane z = c.z: clip.w = P23 z + P33, ndc = (M xy + k) / w with M the projection's upper
-    // 2 x 2 (TiledPath takes only projections whose w does not depend on x, y). Inverted:
-    // xy = M^-1 (ndc w - k), and local = rotate2((xy - c.xy) / radius, angle).
-    float w = uProj[2][3] * c.z + uProj[3][3];
-    mat2 m = mat2(uProj[0].xy, uProj[1].xy);
-    vec2 k = uProj[2].xy * c.z + uProj[3].xy;
-    mat2 inv = inverse(m);
-    float s = sin(lrff.y), co = cos(lrff.y);
-    mat2 turn = mat2(co, s, -s, co);  // rotate2
-    mat2 toLocal = turn * inv * (w / radius);
-    vec2 offset = turn * (-(inv * k) - c.xy) / radius;
-    // ndc = p * uPixelToNdc.xy + uPixelToNdc.zw folded in.
-    mat2 perPixel = toLocal * mat2(uPixelToNdc.x, 0.0, 0.0, uPixelToNdc.y);
-    offset += toLocal * uPixelToNdc.zw;
-    bool clipped = !(depth >= uNear && depth <= uFar) || !(radius > 0.0);
-    sMap[slot] = clipped ? vec4(0.0) : vec4(perPixel[0], perPixel[1]);
-    sOffset[slot] = vec4(clipped ? vec2(2.0) : offset, atlasCell(lrff.w));
-    // The tint, as particleTint with this batch's blend mode and near fade.
     vec4 ramp = textureLod(uRamp, vec2(rampU(lrff.x), a.x), 0.0);
-    float fade = lrff.z * clamp(depth * uBatchNearFade[batch].x + uBatchNearFade[batch].y, 0.0, 1.0);
+    vec2 cell = atlasCell(lrff.w);
+    sKind[slot] = kind;
+    float fade = lrff.z;
+    float lod;
+    if (kind == 2u) {
+        // As the vertex shader's FX_SPHERICAL branch: the sphere itself, its atlas map; the near
+        // fade is per pixel, at the visible chord's middle.
+        vec4 map;
+        vec2 base;
+        sphereAtlasMap(vec2(cos(lrff.y), sin(lrff.y)), radius, cell, map, base);
+        sMap[slot] = vec4(c, radius > 0.0 ? radius * radius : 0.0);
+        sOffset[slot] = vec4(base, b.xy);
+        sFade[slot] = map;
+        // Texels of level 0 per pixel at the centre: the map's 1/4 per radius, a pixel's slope
+        // times the depth.
+        lod = log2(max(0.25 / radius * max(depth, uNear) * uPixelSlope * uAtlasTexels, 1e-8));
+    } else {
+        // The plane z = c.z: clip.w = P23 z + P33, ndc = (M xy + k) / w with M the projection's
+        // upper 2 x 2 (TiledPath takes only projections whose w does not depend on x, y).
+        // Inverted: xy = M^-1 (ndc w - k), and local = rotate2((xy - c.xy) / radius, angle).
+        float w = uProj[2][3] * c.z + uProj[3][3];
+        mat2 m = mat2(uProj[0].xy, uProj[1].xy);
+        vec2 k = uProj[2].xy * c.z + uProj[3].xy;
+        mat2 inv = inverse(m);
+        float s = sin(lrff.y), co = cos(lrff.y);
+        mat2 turn = mat2(co, s, -s, co);  // rotate2
+        mat2 toLocal = turn * inv * (w / radius);
+        vec2 offset = turn * (-(inv * k) - c.xy) / radius;
+        // ndc = p * uPixelToNdc.xy + uPixelToNdc.zw folded in.
+        mat2 perPixel = toLocal * mat2(uPixelToNdc.x, 0.0, 0.0, uPixelToNdc.y);
+        offset += toLocal * uPixelToNdc.zw;
+        bool clipped = !(depth >= uNear && depth <= uFar) || !(radius > 0.0);
+        sMap[slot] = clipped ? vec4(0.0) : vec4(perPixel[0], perPixel[1]);
+        sOffset[slot] = vec4(clipped ? vec2(2.0) : offset, cell);
+        float zs = depth * a.z;
+        sFade[slot] = kind == 1u ? vec4((uDepthCoeffs.x - depth * uDepthCoeffs.z) * a.z,
+                                        (uDepthCoeffs.y - depth * uDepthCoeffs.w) * a.z, -zs, a.w)
+                                 : vec4(0.0, 0.0, 0.0, depth);
+        // A billboard's near fade is its own: into the tint with the life fade.
+        fade *= clamp(depth * b.x + b.y, 0.0, 1.0);
+        // Texels of level 0 per pixel: the map's larger column (atlasUVOf scales local by 1/4).
+        float rho = 0.25 * uAtlasTexels * max(length(perPixel[0]), length(perPixel[1]));
+        lod = log2(max(rho, 1e-8));
+    }
+    // The tint, as particleTint with this batch's blend mode.
     vec4 fog = particleFog(depth);
     float alpha = ramp.a * fade;
     float outAlpha = a.y == 2.0 ? 0.0 : alpha;
     sTint[slot] = vec4(ramp.rgb * (a.y == 1.0 ? fade : alpha) * fog.a, outAlpha);
-    // Texels of level 0 per pixel: the map's larger column (atlasUVOf scales local by 1/4).
-    float rho = 0.25 * uAtlasTexels * max(length(perPixel[0]), length(perPixel[1]));
-    sFogLod[slot] = vec4(fog.rgb * outAlpha, log2(max(rho, 1e-8)));
-    float zs = depth * a.z;
-    sFade[slot] = a.z > 0.0 ? vec4((uDepthCoeffs.x - depth * uDepthCoeffs.z) * a.z,
-                                   (uDepthCoeffs.y - depth * uDepthCoeffs.w) * a.z, -zs, a.w)
-                            : vec4(0.0, 0.0, 0.0, -depth);
+    sFogLod[slot] = vec4(fog.rgb * outAlpha, lod);
 }
 
 void main() {
@@ -108,6 +141,11 @@ void main() {
     float invDen = 1.0 / (uDepthCoeffs.z + uDepthCoeffs.w * d);
     float quotient = (uDepthCoeffs.x + uDepthCoeffs.y * d) * invDen;
     float sceneLinear = quotient > 0.0 && quotient < 3.0e38 ? quotient : 3.0e38;
+    // Spheres: the pixel's ray per metre of view depth (x/depth, y/depth), as the raster quad's
+    // interpolated slope gives it at the pixel centre.
+    vec2 ndc = p * uPixelToNdc.xy + uPixelToNdc.zw;
+    vec2 slope = vec2((ndc.x + uProj[2][0]) / uProj[0][0], (ndc.y + uProj[2][1]) / uProj[1][1]);
+    float invLen2 = 1.0 / (1.0 + slope.x * slope.x + slope.y * slope.y);
 
     vec4 acc = vec4(0.0);  // premultiplied colour in front; acc.a = 1 - transmittance
     uint count = tile.w;
@@ -118,25 +156,51 @@ void main() {
         barrier();
         uint n = min(256u, count - base);
         for (uint j = 0u; j < n && acc.a < kOpaque; ++j) {
-            vec4 mo = sOffset[j];
             vec4 map = sMap[j];
-            vec2 local = map.xy * p.x + map.zw * p.y + mo.xy;
-            if (max(abs(local.x), abs(local.y)) >= 0.996) continue;  // insideFrame
-            vec4 fogLod = sFogLod[j];
-            vec4 texel = textureLod(uAtlas, atlasUVOf(local, mo.zw), fogLod.w);
-            if (texel.a == 0.0) continue;
-            vec4 f = sFade[j];
-            float fade;
-            if (f.w < 0.0) {
-                fade = -f.w <= sceneLinear ? 1.0 : 0.0;
+            vec4 mo = sOffset[j];
+            bool sphere = sKind[j] == 2u;
+            vec2 uv;
+            float tMid = 0.0, d2 = 0.0;
+            if (sphere) {
+                // fs_particles_spherical: the ray's closest approach to the centre.
+                vec3 centre = map.xyz;
+                tMid = (centre.x * slope.x + centre.y * slope.y - centre.z) * invLen2;
+                vec2 offset = vec2(slope.x * tMid - centre.x, slope.y * tMid - centre.y);
+                float offsetZ = tMid + centre.z;
+                d2 = offset.x * offset.x + offset.y * offset.y + offsetZ * offsetZ;
+                if (d2 >= map.w) continue;
+                vec4 am = sFade[j];
+                uv = vec2(mo.x + offset.x * am.x + offset.y * am.y, mo.y + offset.x * am.z + offset.y * am.w);
             } else {
-                float v = (f.x + f.y * d) * invDen;
-                float x = clamp(v > f.z ? v : 1.0, 0.0, 1.0);
-                fade = f.w == 1.0 ? x : contrastCurve(x, f.w);
+                vec2 local = map.xy * p.x + map.zw * p.y + mo.xy;
+                if (max(abs(local.x), abs(local.y)) >= 0.996) continue;  // insideFrame
+                uv = atlasUVOf(local, mo.zw);
             }
-            float coverage = texel.a * fade;
+            vec4 texel = textureLod(uAtlas, uv, sFogLod[j].w);
+            if (texel.a == 0.0) continue;
+            float coverage;
+            if (sphere) {
+                // The chord clipped to the near plane and the scene, the near fade at the visible
+                // chord's middle.
+                float halfDepth = sqrt((map.w - d2) * invLen2);
+                float z0 = max(tMid - halfDepth, uNear);
+                float z1 = min(tMid + halfDepth, sceneLinear);
+                float visible = clamp((z1 - z0) / (2.0 * halfDepth), 0.0, 1.0);
+                coverage = texel.a * visible * clamp(0.5 * (z0 + z1) * mo.z + mo.w, 0.0, 1.0);
+            } else {
+                vec4 f = sFade[j];
+                float fade;
+                if (sKind[j] == 0u) {
+                    fade = f.w <= sceneLinear ? 1.0 : 0.0;  // hard: cut where the scene is nearer
+                } else {
+                    float v = (f.x + f.y * d) * invDen;
+                    float x = clamp(v > f.z ? v : 1.0, 0.0, 1.0);
+                    fade = f.w == 1.0 ? x : contrastCurve(x, f.w);
+                }
+                coverage = texel.a * fade;
+            }
             vec4 tint = sTint[j];
-            vec4 src = vec4(coverage * (tint.rgb * texel.rgb + fogLod.rgb), tint.a * coverage);
+            vec4 src = vec4(coverage * (tint.rgb * texel.rgb + sFogLod[j].rgb), tint.a * coverage);
             acc += (1.0 - acc.a) * src;
         }
     }

@@ -43,6 +43,8 @@ const std::vector<Mode>& allModes() {
         {"spherical+classify", "Spherical billboards, chord clipping classified per block of each sphere", true,
          Technique::Spherical, false, false, "spherical", fx::ParticleShape::Trimmed, false, false, false, false,
          true},
+        {"spherical+tiled", "Spherical billboards, shaded per screen tile (compute)", true, Technique::Spherical,
+         false, false, "spherical", fx::ParticleShape::Trimmed, false, false, false, false, false, true},
         // Lit smoke: normals, sun, scattering and the opacity map; each its own
         // reference (the cost of light is read against the unlit row above it).
         {"hard-lit", "Hard particles, lit and self-shadowed", true, Technique::Hard, false, false, "hard-lit",

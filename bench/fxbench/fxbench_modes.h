@@ -40,8 +40,9 @@ struct Mode {
     /// `spherical+classify`): soft billboards and spheres skip the scene-depth fetch where the
     /// fade pyramid says their fade is 1 or their chord ends inside them.
     bool classify = false;
-    /// The tiled compute path (RenderOptions::tiled, `hard+tiled`, `soft+tiled`): billboards
-    /// shaded per 16 px tile, one scene-depth read and one blend per pixel.
+    /// The tiled compute path (RenderOptions::tiled, `hard+tiled`, `soft+tiled`,
+    /// `spherical+tiled`): particles shaded per 16 px tile, one scene-depth read and one blend
+    /// per pixel.
     bool tiled = false;
 };
 
@@ -49,7 +50,7 @@ struct Mode {
 /// soft+quarter-always, soft+equal+quarter, soft+classify (against soft: the same picture),
 /// hard+tiled and soft+tiled (against hard and soft: the raster picture up to rounding),
 /// spherical, spherical-quads, spherical+quarter, spherical+classify (against spherical: the same
-/// picture), hard-lit, soft-lit,
+/// picture), spherical+tiled (against spherical: up to rounding), hard-lit, soft-lit,
 /// spherical-lit, mega (image error
 /// against spherical: the same particles as exact spheres), mega-lit (against spherical-lit),
 /// soft-zbuffer and spherical-zbuffer (the immediate path on the engine's z-buffer, against

@@ -88,9 +88,12 @@ struct FootprintMath {
     int w, h;
     bool flat;
     const BillboardReach* reach;  // flat footprints under a perspective projection; null: quads
-    FootprintMath(const ViewInfo& view, bool flatFootprint, const BillboardReach* billboardReach)
+    float reachOfSize;            // the footprint's half-size in sizes: kQuadReach, or 0.5 for a sphere alone
+    FootprintMath(const ViewInfo& view, bool flatFootprint, const BillboardReach* billboardReach,
+                  float halfSize = kQuadReach)
         : V(view.view), P(view.proj), nearPlane(view.nearPlane), w(view.width), h(view.height), flat(flatFootprint),
-          reach(flatFootprint && billboardReach && billboardReach->lodScale > 0.0f ? billboardReach : nullptr) {}
+          reach(flatFootprint && billboardReach && billboardReach->lodScale > 0.0f ? billboardReach : nullptr),
+          reachOfSize(halfSize) {}
 
     glm::vec3 centre(const ParticleInstance& p) const {
         return glm::vec3(V[0][0] * p.x + V[1][0] * p.y + V[2][0] * p.z + V[3][0],
@@ -116,7 +119,7 @@ struct FootprintMath {
     template <bool Flat>
     Bounds perspective(const ParticleInstance& p) const {
         const glm::vec3 c = centre(p);
-        const float radius = kQuadReach * p.size;
+        const float radius = reachOfSize * p.size;
         const float depthExtent = Flat ? 0.0f : radius;
         const float nearInv = 1.0f / -(c.z + depthExtent), farInv = Flat ? nearInv : 1.0f / -(c.z - depthExtent);
         float plo[2], phi[2];
@@ -152,7 +155,7 @@ struct FootprintMath {
     // Any other projection: the footprint's corners (8, or 4 for a flat square) projected.
     Bounds general(const ParticleInstance& p) const {
         const glm::vec3 c = centre(p);
-        const float radius = kQuadReach * p.size;
+        const float radius = reachOfSize * p.size;
         const float depthExtent = flat ? 0.0f : radius;
         const int st = state(c, radius, depthExtent);
         float plo[2] = {1e30f, 1e30f}, phi[2] = {-1e30f, -1e30f};
@@ -344,7 +347,8 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
     int total = 0;
     for (int b = 0; b < batchCount; ++b) total = std::max(total, batches[b].first + batches[b].count);
     if (total >= (1 << TileBins::kBatchShift)) return false;
-    const FootprintMath math(view, true, reach);
+    // A sphere (radius size / 2) lies in the cube of half-size size / 2 around its centre.
+    const FootprintMath flat(view, true, reach), box(view, false, nullptr, 0.5f);
     const bool perspective = plainPerspective(view.proj);
     out->counts.assign(size_t(tilesX) * size_t(tilesY) + 1, 0);
     out->ranges.resize(size_t(total) * 4);
@@ -352,14 +356,26 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
     // Each particle's tile range (empty where it is clipped or off the view), and the entries per
     // tile.
     for (int b = 0; b < batchCount; ++b) {
+        const bool sphere = batches[b].sphere;
+        const FootprintMath& math = sphere ? box : flat;
         for (int i = batches[b].first; i < batches[b].first + batches[b].count; ++i) {
-            const Bounds q = perspective ? math.perspective<true>(instances[i]) : math.general(instances[i]);
+            const ParticleInstance& p = instances[i];
+            const Bounds q = !perspective ? math.general(p)
+                             : sphere     ? math.perspective<false>(p)
+                                          : math.perspective<true>(p);
             int32_t* r = &out->ranges[size_t(i) * 4];
             r[0] = 0;
             r[1] = -1;  // empty
             r[2] = 0;
             r[3] = -1;
-            if (q.state == Bounds::Unbounded) return false;
+            if (q.state == Bounds::Unbounded) {
+                if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.size))) return false;
+                // A sphere across the near plane (a billboard has one depth: never): every tile.
+                r[1] = tilesX - 1;
+                r[3] = tilesY - 1;
+                for (int t = 0; t < tilesX * tilesY; ++t) ++counts[t];
+                continue;
+            }
             if (q.state == Bounds::Behind || q.x1 < -1.0f || q.y1 < -1.0f || q.x0 > float(w) + 1.0f ||
                 q.y0 > float(h) + 1.0f) {
                 continue;

@@ -116,12 +116,14 @@ constexpr double kQuarterResMinOverdraw = 16.0;
 bool quarterResPays(const ScreenRect& rect, const ScreenTiles& tiles);
 
 /// The tiled path's bins (TiledPath.h): each particle of a view in the kTileSize tiles its bound
-/// (the trimmed polygon's with a reach table, else its quad's, grown by a pixel) touches, every
+/// (a billboard's trimmed polygon's with a reach table, else its quad's; a sphere's box; grown by
+/// a pixel) touches, every
 /// tile's list front to back: the reverse of the draw order, batch by batch.
 struct TileBins {
     static constexpr int kBatchShift = 26;  ///< an entry: instance index | batch << kBatchShift
     struct Range {
         int first = 0, count = 0;  ///< a batch's instances
+        bool sphere = false;       ///< spheres: bounded as Footprint::Box, the reach table not used
     };
     std::vector<uint32_t> entries;  ///< per tile, front to back
     std::vector<uint32_t> tiles;    ///< per tile holding particles: tile x, tile y, first entry, count
@@ -131,9 +133,10 @@ struct TileBins {
     int tileCount() const { return int(tiles.size() / 4); }
 };
 
-/// Bins `instances` (billboards of a full-resolution view, drawn in `batches`' order) into `out`.
-/// False where a particle has no bound (a position or size that is not finite): the caller draws
-/// the view another way. At most 2^26 instances and 64 batches (else false too).
+/// Bins `instances` (billboards and spheres of a full-resolution view, drawn in `batches`' order)
+/// into `out`. A sphere across the near plane is in every tile. False where a particle has no
+/// bound (a position or size that is not finite): the caller draws the view another way. At most
+/// 2^26 instances and 64 batches (else false too).
 bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const TileBins::Range* batches,
                   int batchCount, const BillboardReach* reach, TileBins* out);
 

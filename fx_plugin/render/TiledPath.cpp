@@ -1,6 +1,7 @@
 #include "TiledPath.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "render/PrivateGl.h"
@@ -109,7 +110,8 @@ void TiledPath::bind(const ProgramCache& programs) {
         u.ramp = glGetUniformLocation(shade_, "uRamp");
         u.sceneDepth = glGetUniformLocation(shade_, "uSceneDepth");
         u.batchA = glGetUniformLocation(shade_, "uBatchA");
-        u.batchNearFade = glGetUniformLocation(shade_, "uBatchNearFade");
+        u.batchB = glGetUniformLocation(shade_, "uBatchB");
+        u.pixelSlope = glGetUniformLocation(shade_, "uPixelSlope");
         u.tileCount = glGetUniformLocation(shade_, "uTileCount");
         u.groupsX = glGetUniformLocation(shade_, "uGroupsX");
         u.viewSize = glGetUniformLocation(shade_, "uViewSize");
@@ -127,11 +129,17 @@ void TiledPath::bind(const ProgramCache& programs) {
 
 bool TiledPath::canDraw(const ParticleView& v) {
     if (v.lit() || v.list.batches.size() > size_t(kMaxBatches)) return false;
-    for (const DrawBatch& b : v.list.batches) {
-        if (b.technique != Technique::Hard && b.technique != Technique::Soft) return false;
-    }
     const glm::mat4& p = v.view.proj;
-    return p[0][3] == 0.0f && p[1][3] == 0.0f && p[0][0] * p[1][1] - p[1][0] * p[0][1] != 0.0f;
+    // Billboards: a projection whose w does not depend on x and y (perspective, orthographic).
+    // Spheres: a perspective one whose x and y are not mixed (their rays' slopes, as the raster
+    // path's vertex shader has them).
+    const bool flatW = p[0][3] == 0.0f && p[1][3] == 0.0f && p[0][0] * p[1][1] - p[1][0] * p[0][1] != 0.0f;
+    const bool perspective = flatW && p[0][1] == 0.0f && p[1][0] == 0.0f && p[2][3] == -1.0f && p[3][3] == 0.0f;
+    for (const DrawBatch& b : v.list.batches) {
+        const bool billboard = b.technique == Technique::Hard || b.technique == Technique::Soft;
+        if (!(billboard && flatW) && !(b.technique == Technique::Spherical && perspective)) return false;
+    }
+    return flatW;
 }
 
 bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& record) {
@@ -144,7 +152,10 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
     if (!depth.valid()) return false;
     TileBins::Range ranges[kMaxBatches];
     const int batchCount = int(record->list.batches.size());
-    for (int b = 0; b < batchCount; ++b) ranges[b] = {record->list.batches[size_t(b)].first, record->list.batches[size_t(b)].count};
+    for (int b = 0; b < batchCount; ++b) {
+        const DrawBatch& batch = record->list.batches[size_t(b)];
+        ranges[b] = {batch.first, batch.count, batch.technique == Technique::Spherical};
+    }
     const BillboardReach reach = draw_.billboardReach(*record, false);
     if (!binParticles(view, record->list.instances.data(), ranges, batchCount, &reach, &record->bins)) return false;
     const Target color = frame.sceneColor();
@@ -230,18 +241,22 @@ void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Targe
     glUniform1i(u.sceneDepth, kDepthUnit);
     setSceneDepthDecode(u.decode, placed);
     setFogUniforms(u.fog, view.fog);
-    glm::vec4 batchA[kMaxBatches];
-    glm::vec2 batchNear[kMaxBatches];
+    glm::vec4 batchA[kMaxBatches], batchB[kMaxBatches];
     const int batchCount = int(v.list.batches.size());
     for (int b = 0; b < batchCount; ++b) {
         const DrawBatch& batch = v.list.batches[size_t(b)];
-        const bool soft = batch.technique == Technique::Soft;
-        batchA[b] = glm::vec4(ramp.rowV(batch.rampRow), float(static_cast<int>(batch.blend)),
-                              soft ? batch.softScale : 0.0f, batch.contrastPower);
-        batchNear[b] = nearFadeMap(batch.nearFade, view.nearPlane);
+        const float kind = batch.technique == Technique::Hard ? 0.0f : batch.technique == Technique::Soft ? 1.0f : 2.0f;
+        batchA[b] = glm::vec4(ramp.rowV(batch.rampRow), float(static_cast<int>(batch.blend)), batch.softScale,
+                              batch.contrastPower);
+        const glm::vec2 nearFade = nearFadeMap(batch.nearFade, view.nearPlane);
+        batchB[b] = glm::vec4(nearFade, kind, 0.0f);
     }
     glUniform4fv(u.batchA, batchCount, &batchA[0][0]);
-    glUniform2fv(u.batchNearFade, batchCount, &batchNear[0][0]);
+    glUniform4fv(u.batchB, batchCount, &batchB[0][0]);
+    // One pixel in ray slope, the larger of x and y (ParticleDraw's pixelSlopeOf, per axis).
+    const float slopeX = 2.0f / std::fmax(std::fabs(view.proj[0][0]) * float(view.width), 1e-6f);
+    const float slopeY = 2.0f / std::fmax(std::fabs(view.proj[1][1]) * float(view.height), 1e-6f);
+    glUniform1f(u.pixelSlope, std::fmax(slopeX, slopeY));
     glUniform2i(u.viewSize, view.width, view.height);
     glUniform4f(u.pixelToNdc, 2.0f / float(view.width), 2.0f / float(view.height), -1.0f, -1.0f);
     glUniform1f(u.atlasTexels, float(atlas.width()));

@@ -1,11 +1,11 @@
 #pragma once
-// Tiled (RenderOptions::tiled, API 2.3): hard and soft billboards of a full-resolution view
-// shaded by a compute shader per 16 x 16 pixel tile instead of rasterised and blended one
-// fragment at a time.
+// Tiled (RenderOptions::tiled, API 2.3): hard and soft billboards and spherical particles of a
+// full-resolution view shaded by a compute shader per 16 x 16 pixel tile instead of rasterised and
+// blended one fragment at a time.
 //   "particles_tiled"  reads sceneDepth (the z-buffer in place, or the host's linear depth),
 //                      writes sceneColor
 // Declaring the pass bins the view's particles on the CPU (binParticles, ScreenTiles.h: each
-// particle into the tiles its trimmed polygon's bound touches, front to back). The pass uploads the
+// particle into the tiles its bound touches, front to back). The pass uploads the
 // bins, dispatches cs_particles_tiled over the tiles that hold particles (one invocation per
 // pixel: one scene-depth fetch per pixel, the blend in registers, stopped once the pixel is
 // opaque) into the plugin's own RGBA16F image, then draws those tiles onto sceneColor blended
@@ -13,19 +13,21 @@
 //
 // Why: on the GPUs this project is measured on, soft's raster pass is bound by its per-fragment
 // texture reads (docs/results.md, session 21: soft's depth fetch is 0.485 ms of its 1.690 ms
-// pass on the H200), and by the blend of every fragment of overdraw; here the depth fetch is paid
-// per pixel and no fragment is blended.
+// pass on the H200, spherical's 0.36 ms of 3.681), and by the blend of every fragment of
+// overdraw; here the depth fetch is paid per pixel and no fragment is blended.
 //
 // Where it draws: a context with compute shaders, shader storage buffers and image load/store
-// (GL 4.3, or the three ARB extensions: available()), a view whose every batch is unlit hard or
-// soft, at most kMaxBatches batches, under a projection whose w does not depend on x and y
-// (perspective or orthographic). Elsewhere the renderer draws the view at full resolution as
-// before (canDraw() says which). Quarter res, when it pays for a view, takes precedence.
+// (GL 4.3, or the three ARB extensions: available()), a view whose every batch is unlit hard,
+// soft or spherical, at most kMaxBatches batches, under a projection whose w does not depend on x
+// and y (perspective or orthographic; with spheres, perspective). Elsewhere the renderer draws the
+// view at full resolution as before (canDraw() says which). Quarter res, when it pays for a view,
+// takes precedence.
 //
-// The picture: the raster path's up to rounding (the accumulation in 16-bit floats instead of
-// the target's blend; a texel level picked from one level of detail per particle), hard particles
-// cut where the scene is nearer in linear depth instead of window depth, and a pixel's particles
-// behind an opacity of 1 - 1/2048 left out (docs/results.md has the measured error).
+// The picture: the raster path's up to rounding (one blend of a float sum instead of a blend per
+// fragment into the target; a texel level picked from one level of detail per particle, for a
+// sphere that of its centre), hard particles cut where the scene is nearer in linear depth instead
+// of window depth, and a pixel's particles behind an opacity of 1 - 1/2048 left out
+// (TiledPathTest: at most 4/255, spheres 5; docs/results.md has fxbench's error).
 //
 // GL state: the pass runs in a GlStateGuard; what it touches beyond the guard's rows (shader
 // storage buffer bindings 0-2 and the generic one, image unit 0) it reads first and puts back.
@@ -70,7 +72,7 @@ private:
     uint32_t shade_ = 0, composite_ = 0;
     struct ShadeUniforms {
         int view = -1, proj = -1, nearPlane = -1, farPlane = -1, atlas = -1, ramp = -1, sceneDepth = -1;
-        int batchA = -1, batchNearFade = -1, tileCount = -1, groupsX = -1, viewSize = -1, pixelToNdc = -1,
+        int batchA = -1, batchB = -1, pixelSlope = -1, tileCount = -1, groupsX = -1, viewSize = -1, pixelToNdc = -1,
             atlasTexels = -1;
         SceneDepthUniforms decode;
         FogUniforms fog;

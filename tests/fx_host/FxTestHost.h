@@ -329,6 +329,7 @@ inline constexpr RenderMode kSoftLit{"soft lit", fx::Technique::Soft, false, tru
 inline constexpr RenderMode kSoftClassified{"soft classified", fx::Technique::Soft, false, false, true};
 inline constexpr RenderMode kHardTiled{"hard tiled", fx::Technique::Hard, false, false, false, true};
 inline constexpr RenderMode kSoftTiled{"soft tiled", fx::Technique::Soft, false, false, false, true};
+inline constexpr RenderMode kSphericalTiled{"spherical tiled", fx::Technique::Spherical, false, false, false, true};
 }  // namespace modes
 
 // ---- hand-placed particles (TestParticles.cpp) ------------------------------------------------

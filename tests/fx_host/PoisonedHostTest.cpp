@@ -32,6 +32,7 @@ const RenderMode kModes[] = {
     modes::kSoftClassified,
     modes::kHardTiled,
     modes::kSoftTiled,
+    modes::kSphericalTiled,
     {"spherical quarter lit", fx::Technique::Spherical, true, true},
     {"from reactions (stateless sparks too)", fx::Technique::FromReaction},
 };

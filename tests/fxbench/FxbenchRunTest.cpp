@@ -89,7 +89,7 @@ TEST_P(FxbenchScenario, TinyRunWritesEveryKeyWithFiniteValues) {
     EXPECT_FALSE(run["renderer"].as<std::string>().empty());
     EXPECT_GE(run["threads"].as<int>(), 1);  // --threads 0: one per hardware thread
     ASSERT_TRUE(run["modes"].IsSequence());
-    EXPECT_EQ(run["modes"].size(), 24u);  // every mode by default (lit, mega, *-zbuffer, *-linear, *+tiled included)
+    EXPECT_EQ(run["modes"].size(), 25u);  // every mode by default (lit, mega, *-zbuffer, *-linear, *+tiled included)
     for (const YAML::Node& m : run["modes"]) {
         const std::string name = m["name"].as<std::string>();
         SCOPED_TRACE(name);
@@ -192,15 +192,15 @@ TEST(Fxbench, ClassifiedModesDrawTheirReferencesPicture) {
 // samples than the rasterised pass writes (overdraw 5 and more in the standard scene).
 TEST(Fxbench, TiledModesDrawTheirReferencesPictureWithOneBlendAPixel) {
     const std::string json = tempPath("tiled.json");
-    const RunOutput r = runFxbench("--scenario standard --modes hard,soft,hard+tiled,soft+tiled "
+    const RunOutput r = runFxbench("--scenario standard --modes hard,soft,spherical,hard+tiled,soft+tiled,spherical+tiled "
                                    "--size 320x180 --frames 3 --rounds 1 --warmup 1 --error-frames 2 --json " + json);
     ASSERT_EQ(r.status, 0) << r.output;
     const YAML::Node run = YAML::Load(readFile(json));
     std::filesystem::remove(json);
-    for (const char* name : {"hard+tiled", "soft+tiled"}) {
+    for (const char* name : {"hard+tiled", "soft+tiled", "spherical+tiled"}) {
         SCOPED_TRACE(name);
         const YAML::Node m = modeNode(run, name);
-        const std::string reference = name[0] == 'h' ? "hard" : "soft";
+        const std::string reference = name[0] == 'h' ? "hard" : name[1] == 'o' ? "soft" : "spherical";
         EXPECT_EQ(m["error"]["reference"].as<std::string>(), reference);
         EXPECT_LE(m["error"]["max_abs"].as<double>(), 8.0);
         EXPECT_GE(m["error"]["psnr_db"].as<double>(), 45.0);

@@ -63,9 +63,9 @@ struct RenderOptions {
     /// With quarterRes: every view at quarter res, also where full res is cheaper (the 2.0
     /// behaviour; for comparisons and tests). Since API 2.1.
     bool quarterResAlways = false;
-    /// Unlit hard and soft billboards of a full-resolution view shaded per 16 px tile by a
-    /// compute shader (one scene-depth read and one blend per pixel) where the context has
-    /// compute shaders; elsewhere, and for other techniques, rasterised as before. Since API 2.3.
+    /// Unlit hard, soft and spherical particles of a full-resolution view shaded per 16 px tile
+    /// by a compute shader (one scene-depth read and one blend per pixel) where the context has
+    /// compute shaders; elsewhere, and for lit smoke and mega, rasterised as before. Since API 2.3.
     bool tiled = false;
 };
 

@@ -244,8 +244,8 @@ typedef struct fxRenderOptions {
      * the composite (else that view at full resolution); else every view at quarter res (the 2.0
      * behaviour, for comparisons). A 2.0 host's size leaves it as it is (0 unless set). */
     fxBool quarterResAlways;
-    /* API 2.3 (a 2.0-2.2 size leaves it as it is): 1 = unlit hard and soft billboards shaded per
-     * 16 px tile by a compute shader where the context has one (GL 4.3); 0 = rasterised. */
+    /* API 2.3 (a 2.0-2.2 size leaves it as it is): 1 = unlit hard, soft and spherical particles
+     * shaded per 16 px tile by a compute shader where the context has one (GL 4.3); 0 = raster. */
     fxBool tiled;
 } fxRenderOptions;
 
