@@ -9,6 +9,11 @@
 //   BM_ScreenRectBox/N    the same with box footprints (a view with spherical particles)
 //   BM_ScreenRectTrimmed/N  billboards bounded by their trimmed polygons' reach (BillboardReach):
 //                         the quarter-res path's bound for trimmed billboards
+//   BM_TileBins/N/T       fx::binParticles (the tiled path's bins: every particle into the 16 px
+//                         tiles its trimmed bound touches, front to back) on T job threads (T = 1:
+//                         the pieces on the calling thread)
+//   BM_TileBinsLarge/N/T  the same with every particle 8 m across (the fill scene's kind: a few
+//                         hundred particles over thousands of tiles each)
 //   BM_InstanceCopy/N     reference: memcpy of the N instances (32 N bytes read and written)
 //   BM_DrawListBuildJobs/N/T, BM_ScreenRectJobs/N/T
 //                         the build and the bound through the host's job system
@@ -127,6 +132,31 @@ void BM_InstanceCopy(benchmark::State& state) {
     state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(n));
 }
 
+void tileBinsBench(benchmark::State& state, float size) {
+    Scene s(int(state.range(0)));
+    bench::JobsHost host(int(state.range(1)));
+    const fx::ParticleBatch batch = s.batch();
+    fx::DrawListBuilder builder;
+    fx::DrawList list;
+    builder.build(s.view, &batch, 1, fx::Technique::FromReaction, kAll, &list);
+    if (size > 0.0f) {
+        for (fx::ParticleInstance& p : list.instances) p.size = size;
+    }
+    const fx::BillboardReach reach = benchReach(s.view);
+    const fx::TileBins::Range range{0, list.particleCount(), false};
+    fx::TileBins bins;
+    for (auto _ : state) {
+        fx::binParticles(s.view, list.instances.data(), &range, 1, &reach, &bins, fx::Jobs(&host));
+        benchmark::DoNotOptimize(bins.entries.data());
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * list.particleCount());
+    state.counters["entries"] = double(bins.entries.size());
+    state.counters["tiles"] = double(bins.tileCount());
+}
+
+void BM_TileBins(benchmark::State& state) { tileBinsBench(state, 0.0f); }
+void BM_TileBinsLarge(benchmark::State& state) { tileBinsBench(state, 8.0f); }
+
 void BM_DrawListBuildJobs(benchmark::State& state) {
     Scene s(int(state.range(0)));
     bench::JobsHost host(int(state.range(1)));
@@ -164,6 +194,8 @@ BENCHMARK(BM_DrawListBuild)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 BENCHMARK(BM_ScreenRect)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 BENCHMARK(BM_ScreenRectBox)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 BENCHMARK(BM_ScreenRectTrimmed)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
+BENCHMARK(BM_TileBins)->ArgsProduct({{1000, 16000, 256000}, {1, 2}})->UseRealTime();
+BENCHMARK(BM_TileBinsLarge)->ArgsProduct({{300, 1000}, {1, 2}})->UseRealTime();
 BENCHMARK(BM_InstanceCopy)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 
 BENCHMARK_MAIN();

@@ -7,7 +7,8 @@
 # The device call, with .gpu carried along:
 #   bash scripts/gpu_check.sh
 # Into $OUT: run-all.sh's data.tgz and img.tgz.* (standard, fill, overdraw, 4K, the particle sweep,
-# the drive through both depth paths) and parts.tgz (shader_parts.sh's runs and their log). Back
+# the drive through both depth paths) and parts.tgz (shader_parts.sh's runs and their log, and a
+# particle sweep of the tiled modes: parts/tiled_sweep.json). Back
 # here: tar xzf parts.tgz -C /tmp && scripts/shader_parts.sh --table /tmp/parts
 set -u
 cd "$(dirname "$0")/.."
@@ -22,5 +23,13 @@ s=$(date +%s)
 FXBENCH="bash .gpu/run-egl.sh fxbench" timeout 300 bash scripts/shader_parts.sh --run .gpu/parts "$out/parts" \
     --backend egl --size 1920x1080 > "$out/parts.log" 2>&1
 echo "shader_parts rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+# The tiled compute path (TiledPath.h) against the raster one as the particle count grows: run-all's
+# tables have the tiled modes at their scenes' counts, its sweep not.
+mkdir -p "$out/parts"
+s=$(date +%s)
+timeout 120 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 --sweep particles=1000,16000,64000 \
+    --frames 6 --error-frames 0 --modes hard,soft,soft+tiled,spherical,spherical+tiled \
+    --json "$out/parts/tiled_sweep.json" > "$out/parts/tiled_sweep.txt" 2>&1
+echo "tiled sweep rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
 tar czf "$out/parts.tgz" -C "$out" parts parts.log && rm -rf "$out/parts" "$out/parts.log"
 ls -la "$out"

@@ -238,7 +238,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     }
     if (quarterRes) {
         quarter_.declare(frame, record);
-    } else if (tiled && tiled_.ok() && tiled_.declare(frame, record)) {
+    } else if (tiled && tiled_.ok() && tiled_.declare(frame, record, config_.jobs)) {
         // declared; a view it cannot bin (a particle with no bound) falls through to full res
     } else {
         fullRes_.declare(frame, record);

@@ -128,8 +128,9 @@ struct TileBins {
     std::vector<uint32_t> entries;  ///< per tile, front to back
     std::vector<uint32_t> tiles;    ///< per tile holding particles: tile x, tile y, first entry, count
     ScreenTiles cover;              ///< those tiles as runs (the composite's draw)
-    std::vector<int32_t> counts;    ///< scratch: entries per tile of the view, then their offsets
+    std::vector<int32_t> counts;    ///< scratch: entries per tile of the view, then its cursors
     std::vector<int32_t> ranges;    ///< scratch: per particle its tile range (tx0, tx1, ty0, ty1)
+    std::vector<uint32_t> weights;  ///< scratch: per particle its tile count
     int tileCount() const { return int(tiles.size() / 4); }
 };
 
@@ -137,8 +138,11 @@ struct TileBins {
 /// into `out`. A sphere across the near plane is in every tile. False where a particle has no
 /// bound (a position or size that is not finite): the caller draws the view another way. At most
 /// 2^26 instances and 64 batches (else false too).
+/// `jobs`: the host's job system. The bounds go in pieces of the particles, the binning in bands
+/// of tile rows (as many as the entries pay for, however few the particles), each band writing
+/// only its own tiles' counts and entries: the bins are the same bit for bit however they run.
 bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const TileBins::Range* batches,
-                  int batchCount, const BillboardReach* reach, TileBins* out);
+                  int batchCount, const BillboardReach* reach, TileBins* out, const Jobs& jobs = Jobs());
 
 /// Scissor to `rect` on a target of w x h whose pixels are the view's times `scale` (0.5: half
 /// resolution), grown by `border` texels; no scissor for a whole-view rect.

@@ -142,7 +142,7 @@ bool TiledPath::canDraw(const ParticleView& v) {
     return flatW;
 }
 
-bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& record) {
+bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& record, const Jobs& jobs) {
     const ViewInfo& view = record->view;
     // Hard particles are cut against the scene depth too: the pass reads it whatever the batches
     // (a host that hands none in gets the full-resolution pass).
@@ -157,7 +157,7 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
         ranges[b] = {batch.first, batch.count, batch.technique == Technique::Spherical};
     }
     const BillboardReach reach = draw_.billboardReach(*record, false);
-    if (!binParticles(view, record->list.instances.data(), ranges, batchCount, &reach, &record->bins)) return false;
+    if (!binParticles(view, record->list.instances.data(), ranges, batchCount, &reach, &record->bins, jobs)) return false;
     const Target color = frame.sceneColor();
     ScreenRect bound;  // whole
     if (dynamic_cast<ImmediateFrame*>(&frame)) {

@@ -61,7 +61,8 @@ public:
 
     /// Bins the view's particles and declares its pass; false (nothing declared) where a particle
     /// has no bound: the caller declares the full-resolution pass instead.
-    bool declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& view);
+    /// `jobs`: the host's job system, for the binning.
+    bool declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& view, const Jobs& jobs = Jobs());
 
 private:
     void run(PassContext& ctx, const ParticleView& v, Target color, Target depth, const SceneDepthDecode& decode);

@@ -185,4 +185,55 @@ TEST(ParallelBuild, AViewThatSeesNothingGivesAnEmptyList) {
     }
 }
 
+// The tiled path's bins (binParticles) in pieces: the same entries, tiles and runs as one
+// thread's, bit for bit, however the pieces run; many small particles (pieces of the particles)
+// and a few that cover much of the view (pieces of nearly equal entries), billboards and spheres.
+TEST(ParallelBuild, TileBinsInPiecesAreTheSerialOnes) {
+    const Scene s(120000);
+    const fx::ParticleBatch batches[2] = {s.batch(false), s.batch(true)};
+    fx::DrawListBuilder builder;
+    fx::DrawList list;
+    builder.build(s.view, batches, 2, fx::Technique::FromReaction, ~0u, &list);
+    ASSERT_EQ(list.batches.size(), 2u);
+    // The same particles, and the first 300 of them grown to 20 m (each over hundreds of tiles).
+    std::vector<fx::ParticleInstance> large(list.instances.begin(), list.instances.begin() + 300);
+    for (fx::ParticleInstance& p : large) p.size = 20.0f;
+    struct Case {
+        const fx::ParticleInstance* instances;
+        fx::TileBins::Range ranges[2];
+    };
+    const Case cases[] = {
+        {list.instances.data(), {{list.batches[0].first, list.batches[0].count, false},
+                                 {list.batches[1].first, list.batches[1].count, true}}},
+        {large.data(), {{0, 150, false}, {150, 150, true}}},
+    };
+    for (const Case& c : cases) {
+        fx::TileBins serial;
+        ASSERT_TRUE(fx::binParticles(s.view, c.instances, c.ranges, 2, nullptr, &serial));
+        ASSERT_GT(serial.entries.size(), 65536u) << "two pieces of 32768 entries at least";
+        // Every tile's list runs front to back across the pieces' seams: (batch, instance) falls.
+        for (int t = 0; t < serial.tileCount(); ++t) {
+            const uint32_t first = serial.tiles[size_t(t) * 4 + 2], count = serial.tiles[size_t(t) * 4 + 3];
+            for (uint32_t e = first + 1; e < first + count; ++e) {
+                const uint32_t a = serial.entries[e - 1], b = serial.entries[e];
+                const uint32_t mask = (1u << fx::TileBins::kBatchShift) - 1u;
+                const uint64_t keyA = (uint64_t(a >> fx::TileBins::kBatchShift) << 32) | (a & mask);
+                const uint64_t keyB = (uint64_t(b >> fx::TileBins::kBatchShift) << 32) | (b & mask);
+                ASSERT_GT(keyA, keyB) << "tile " << t << " entry " << e;
+            }
+        }
+        for (HowRun how : kRuns) {
+            JobHost host(how);
+            fx::TileBins bins;
+            for (int round = 0; round < 2; ++round) {  // the scratch of the first is reused
+                ASSERT_TRUE(fx::binParticles(s.view, c.instances, c.ranges, 2, nullptr, &bins, fx::Jobs(&host)));
+                EXPECT_EQ(bins.entries, serial.entries) << int(how);
+                EXPECT_EQ(bins.tiles, serial.tiles) << int(how);
+                EXPECT_EQ(bins.cover.vertices, serial.cover.vertices) << int(how);
+            }
+            EXPECT_GT(host.calls, 0) << int(how);
+        }
+    }
+}
+
 }  // namespace
