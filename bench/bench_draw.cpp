@@ -35,6 +35,7 @@
 #include "reactions/ReactionDesc.h"
 #include "render/DrawList.h"
 #include "render/ScreenTiles.h"
+#include "render/TileBins.h"
 #include "sim/ParticlePool.h"
 #include "BenchJobsHost.h"
 

@@ -20,6 +20,7 @@
 #include "ProgramCache.h"
 #include "ScreenTiles.h"
 #include "SmokeAtlas.h"
+#include "TileBins.h"
 #include "fx/HostAdapter.h"
 
 namespace fx {

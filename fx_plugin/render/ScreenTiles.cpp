@@ -6,30 +6,14 @@
 
 #include "render/PrivateGl.h"
 
+#include "FootprintMath.h"
+
 namespace fx {
 namespace {
 
+using namespace footprint;
+
 constexpr int kTileSize = ScreenTiles::kTileSize, kTileBorder = ScreenTiles::kTileBorder;
-
-// NDC to pixels.
-float toPixel(float ndc, int size) { return (ndc * 0.5f + 0.5f) * float(size); }
-
-// Appends the pixel rectangle [x0, x1) x [y0, y1) as two triangles.
-void addRun(ScreenTiles* tiles, int x0, int y0, int x1, int y1) {
-    const float a = float(x0), b = float(x1), c = float(y0), d = float(y1);
-    const float v[12] = {a, c, b, c, b, d, a, c, b, d, a, d};
-    tiles->vertices.insert(tiles->vertices.end(), v, v + 12);
-    tiles->pixels += int64_t(x1 - x0) * (y1 - y0);
-}
-
-// The projection's shape: a perspective one (glm::perspective, glm::frustum, an infinite or
-// reversed-Z far plane: clip.w = -z, x and y not mixed) lets a footprint's screen bound come from
-// its centre's two extreme depths instead of projecting eight corners. Any other projection
-// (orthographic, skewed) takes the general path.
-bool plainPerspective(const glm::mat4& p) {
-    return p[0][1] == 0.0f && p[1][0] == 0.0f && p[0][3] == 0.0f && p[1][3] == 0.0f && p[2][3] == -1.0f &&
-           p[3][3] == 0.0f && p[0][0] > 0.0f && p[1][1] > 0.0f;
-}
 
 // Marks the tiles [tx0, tx1] x [ty0, ty1] in the (tilesX + 1) x (tilesY + 1) difference grid: four
 // writes whatever the particle's size; the prefix sum in tileRuns() turns them into coverage.
@@ -68,113 +52,7 @@ void tileRuns(ScreenTiles* tiles, int tilesX, int tilesY, int w, int h) {
     }
 }
 
-// One particle's footprint on screen, in pixels ([x0, x1] x [y0, y1], unclipped), or why there
-// is none; box: its quad's (what footprintPixels counts), the same unless a billboard's reach
-// bounds it tighter.
-struct Bounds {
-    enum State : int { Bounded, Behind, Unbounded };
-    float x0, x1, y0, y1;
-    int state;
-    float box[4];  // x0, x1, y0, y1
-};
-
-constexpr float kQuadReach = 0.71f;  // a quad's corners from its centre, in sizes (sqrt(2) / 2, up)
 constexpr int kChunk = 256;
-
-// The per-particle arithmetic of screenRect, for one view and footprint kind.
-struct FootprintMath {
-    glm::mat4 V, P;
-    float nearPlane;
-    int w, h;
-    bool flat;
-    const BillboardReach* reach;  // flat footprints under a perspective projection; null: quads
-    float reachOfSize;            // the footprint's half-size in sizes: kQuadReach, or 0.5 for a sphere alone
-    FootprintMath(const ViewInfo& view, bool flatFootprint, const BillboardReach* billboardReach,
-                  float halfSize = kQuadReach)
-        : V(view.view), P(view.proj), nearPlane(view.nearPlane), w(view.width), h(view.height), flat(flatFootprint),
-          reach(flatFootprint && billboardReach && billboardReach->lodScale > 0.0f ? billboardReach : nullptr),
-          reachOfSize(halfSize) {}
-
-    glm::vec3 centre(const ParticleInstance& p) const {
-        return glm::vec3(V[0][0] * p.x + V[1][0] * p.y + V[2][0] * p.z + V[3][0],
-                         V[0][1] * p.x + V[1][1] * p.y + V[2][1] * p.z + V[3][1],
-                         V[0][2] * p.x + V[1][2] * p.y + V[2][2] * p.z + V[3][2]);
-    }
-    // Non-finite (no bound to trust) or reaching the near plane: Unbounded; wholly behind it:
-    // Behind. A billboard lies in the view plane through its centre: no depth extent.
-    int state(const glm::vec3& c, float radius, float depthExtent) const {
-        const bool finite = std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(radius);
-        if (!finite) return Bounds::Unbounded;
-        if (c.z - depthExtent >= -nearPlane) return Bounds::Behind;
-        return c.z + depthExtent >= -nearPlane ? Bounds::Unbounded : Bounds::Bounded;
-    }
-    Bounds pixels(const float plo[2], const float phi[2], int state) const {
-        const float x0 = toPixel(plo[0], w), x1 = toPixel(phi[0], w), y0 = toPixel(plo[1], h), y1 = toPixel(phi[1], h);
-        return Bounds{x0, x1, y0, y1, state, {x0, x1, y0, y1}};
-    }
-
-    // Under a perspective projection (plainPerspective): ndc.x = (P00 x + P30) / -z - P20, monotone
-    // in x and in 1/-z, so the extremes lie at the corners (x +- r, z +- e) and two reciprocals
-    // bound all eight (y likewise); a billboard has one depth, one reciprocal.
-    template <bool Flat>
-    Bounds perspective(const ParticleInstance& p) const {
-        const glm::vec3 c = centre(p);
-        const float radius = reachOfSize * p.size;
-        const float depthExtent = Flat ? 0.0f : radius;
-        const float nearInv = 1.0f / -(c.z + depthExtent), farInv = Flat ? nearInv : 1.0f / -(c.z - depthExtent);
-        float plo[2], phi[2];
-        for (int a = 0; a < 2; ++a) {
-            const float lowEdge = P[a][a] * (c[a] - radius) + P[3][a];
-            const float highEdge = P[a][a] * (c[a] + radius) + P[3][a];
-            if (Flat) {
-                plo[a] = lowEdge * nearInv - P[2][a];
-                phi[a] = highEdge * nearInv - P[2][a];
-            } else {
-                plo[a] = std::min(lowEdge * nearInv, lowEdge * farInv) - P[2][a];
-                phi[a] = std::max(highEdge * nearInv, highEdge * farInv) - P[2][a];
-            }
-        }
-        Bounds b = pixels(plo, phi, state(c, radius, depthExtent));
-        if (Flat && reach) {
-            // The trimmed polygon of the LOD bucket the vertex shader picks (BillboardReach), of
-            // radius `tight`: the same projection, about the same centre.
-            const float depth = std::max(-c.z, nearPlane);
-            const float tight = reach->at(p.frame, reach->lodScale * depth / std::max(p.size, 1e-6f)) * p.size;
-            for (int a = 0; a < 2; ++a) {
-                plo[a] = (P[a][a] * (c[a] - tight) + P[3][a]) * nearInv - P[2][a];
-                phi[a] = (P[a][a] * (c[a] + tight) + P[3][a]) * nearInv - P[2][a];
-            }
-            b.x0 = toPixel(plo[0], w);
-            b.x1 = toPixel(phi[0], w);
-            b.y0 = toPixel(plo[1], h);
-            b.y1 = toPixel(phi[1], h);
-        }
-        return b;
-    }
-
-    // Any other projection: the footprint's corners (8, or 4 for a flat square) projected.
-    Bounds general(const ParticleInstance& p) const {
-        const glm::vec3 c = centre(p);
-        const float radius = reachOfSize * p.size;
-        const float depthExtent = flat ? 0.0f : radius;
-        const int st = state(c, radius, depthExtent);
-        float plo[2] = {1e30f, 1e30f}, phi[2] = {-1e30f, -1e30f};
-        if (st == Bounds::Bounded) {
-            const int corners = depthExtent > 0.0f ? 8 : 4;
-            for (int corner = 0; corner < corners; ++corner) {
-                const glm::vec3 q = c + glm::vec3(corner & 1 ? radius : -radius, corner & 2 ? radius : -radius,
-                                                  corner & 4 ? depthExtent : -depthExtent);
-                const glm::vec4 clip = P * glm::vec4(q, 1.0f);
-                for (int a = 0; a < 2; ++a) {
-                    const float ndc = clip[a] / clip.w;
-                    plo[a] = std::min(plo[a], ndc);
-                    phi[a] = std::max(phi[a], ndc);
-                }
-            }
-        }
-        return pixels(plo, phi, st);
-    }
-};
 
 // What one piece of the particles adds to the bound: its rect, its boxes' pixels, its tiles
 // (marked in `grid`), or that it has no bound at all.
@@ -330,144 +208,6 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
     r.whole = r.x0 == 0 && r.y0 == 0 && r.x1 == w && r.y1 == h;
     if (tiles) tileRuns(tiles, tilesX, tilesY, w, h);
     return r;
-}
-
-bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const TileBins::Range* batches,
-                  int batchCount, const BillboardReach* reach, TileBins* out, const Jobs& jobs) {
-    const int w = view.width, h = view.height;
-    const int tilesX = (w + kTileSize - 1) / kTileSize, tilesY = (h + kTileSize - 1) / kTileSize;
-    out->entries.clear();
-    out->tiles.clear();
-    out->cover.vertices.clear();
-    out->cover.pixels = 0;
-    out->cover.viewWidth = w;
-    out->cover.viewHeight = h;
-    if (batchCount > (1 << (32 - TileBins::kBatchShift))) return false;
-    if (tilesX <= 0 || tilesY <= 0) return true;  // an empty view: no tiles
-    int top = 0;
-    for (int b = 0; b < batchCount; ++b) top = std::max(top, batches[b].first + batches[b].count);
-    if (top >= (1 << TileBins::kBatchShift)) return false;
-    // Front-to-back order k: the last batch's last particle first. orderStart[j]: the first k of
-    // the j-th batch from the back.
-    int orderStart[(1 << (32 - TileBins::kBatchShift)) + 1];
-    int n = 0;
-    for (int j = 0; j < batchCount; ++j) {
-        orderStart[j] = n;
-        n += std::max(batches[batchCount - 1 - j].count, 0);
-    }
-    orderStart[batchCount] = n;
-    // Walks k over [k0, k1) with its entry (instance | batch << kBatchShift).
-    auto walk = [&](size_t k0, size_t k1, auto&& f) {
-        int j = 0;
-        while (j < batchCount && size_t(orderStart[j + 1]) <= k0) ++j;
-        for (size_t k = k0; k < k1; ++k) {
-            while (size_t(orderStart[j + 1]) <= k) ++j;
-            const int b = batchCount - 1 - j;
-            const int i = batches[b].first + batches[b].count - 1 - (int(k) - orderStart[j]);
-            f(k, i, uint32_t(i) | (uint32_t(b) << TileBins::kBatchShift));
-        }
-    };
-    const int tileCount = tilesX * tilesY;
-    const FootprintMath flat(view, true, reach), box(view, false, nullptr, 0.5f);
-    const bool perspective = plainPerspective(view.proj);
-    out->ranges.resize(size_t(n) * 4);
-    out->weights.resize(size_t(n));
-
-    // 1. Each particle's tile range (empty where it is clipped or off the view) and its tile count,
-    // in pieces of the particles.
-    const Pieces boundPieces = splitWork(size_t(n), 8192, 16);
-    bool failed[HostAdapter::kMaxTasks] = {};
-    jobs.run(boundPieces, [&](uint32_t piece) {
-        walk(boundPieces.begin(piece), boundPieces.end(piece), [&](size_t k, int i, uint32_t entry) {
-            const bool sphere = batches[entry >> TileBins::kBatchShift].sphere;
-            const FootprintMath& math = sphere ? box : flat;
-            const ParticleInstance& p = instances[i];
-            const Bounds q = !perspective ? math.general(p) : sphere ? math.perspective<false>(p) : math.perspective<true>(p);
-            int32_t* r = &out->ranges[k * 4];
-            r[0] = 0;
-            r[1] = -1;  // empty
-            r[2] = 0;
-            r[3] = -1;
-            out->weights[k] = 0;
-            if (q.state == Bounds::Unbounded) {
-                if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.size))) {
-                    failed[piece] = true;
-                    return;
-                }
-                // A sphere across the near plane (a billboard has one depth: never): every tile.
-                r[1] = tilesX - 1;
-                r[3] = tilesY - 1;
-                out->weights[k] = uint32_t(tileCount);
-                return;
-            }
-            if (q.state == Bounds::Behind || q.x1 < -1.0f || q.y1 < -1.0f || q.x0 > float(w) + 1.0f ||
-                q.y0 > float(h) + 1.0f) {
-                return;
-            }
-            auto tileOf = [](float pixel, int tiles) {
-                const float t = pixel * (1.0f / float(kTileSize));
-                return int(std::min(std::max(t, 0.0f), float(tiles - 1)));
-            };
-            r[0] = tileOf(q.x0 - 1.0f, tilesX);
-            r[1] = tileOf(q.x1 + 1.0f, tilesX);
-            r[2] = tileOf(q.y0 - 1.0f, tilesY);
-            r[3] = tileOf(q.y1 + 1.0f, tilesY);
-            out->weights[k] = uint32_t((r[1] - r[0] + 1) * (r[3] - r[2] + 1));
-        });
-    });
-    for (uint32_t piece = 0; piece < boundPieces.count; ++piece) {
-        if (failed[piece]) return false;
-    }
-
-    // 2. Bands of tile rows, each counted and filled by one piece: a band owns its tiles' counts
-    // and its stretch of the entries (no two threads write one cache line), and reads every
-    // particle's range (cheap beside its entries). As many bands as the entries pay for.
-    uint64_t entries = 0;
-    for (int k = 0; k < n; ++k) entries += out->weights[size_t(k)];
-    const Pieces bands = splitWork(size_t(tilesY), 1, uint32_t(std::min<uint64_t>(std::max<uint64_t>(entries / 32768, 1), 16)));
-    out->counts.assign(size_t(tileCount), 0);
-    int32_t* counts = out->counts.data();
-    jobs.run(bands, [&](uint32_t band) {
-        const int y0 = int(bands.begin(band)), y1 = int(bands.end(band)) - 1;
-        for (int k = 0; k < n; ++k) {
-            const int32_t* r = &out->ranges[size_t(k) * 4];
-            for (int ty = std::max(r[2], y0); ty <= std::min(r[3], y1); ++ty) {
-                for (int tx = r[0]; tx <= r[1]; ++tx) ++counts[ty * tilesX + tx];
-            }
-        }
-    });
-    // 3. Each tile's first entry (its cursor from now on), the tiles with particles and their runs
-    // for the composite.
-    int32_t sum = 0;
-    for (int ty = 0; ty < tilesY; ++ty) {
-        int runStart = -1;
-        for (int tx = 0; tx <= tilesX; ++tx) {
-            const int32_t tileEntries = tx < tilesX ? counts[ty * tilesX + tx] : 0;
-            if (tileEntries > 0) {
-                out->tiles.insert(out->tiles.end(), {uint32_t(tx), uint32_t(ty), uint32_t(sum), uint32_t(tileEntries)});
-                counts[ty * tilesX + tx] = sum;
-                sum += tileEntries;
-                if (runStart < 0) runStart = tx;
-            } else if (runStart >= 0) {
-                addRun(&out->cover, runStart * kTileSize, ty * kTileSize, std::min(w, tx * kTileSize),
-                       std::min(h, (ty + 1) * kTileSize));
-                runStart = -1;
-            }
-        }
-    }
-    // 4. The entries, front to back (k order), each band into its own tiles.
-    out->entries.resize(size_t(sum));
-    jobs.run(bands, [&](uint32_t band) {
-        const int y0 = int(bands.begin(band)), y1 = int(bands.end(band)) - 1;
-        uint32_t* entriesOut = out->entries.data();
-        walk(0, size_t(n), [&](size_t k, int, uint32_t entry) {
-            const int32_t* r = &out->ranges[k * 4];
-            for (int ty = std::max(r[2], y0); ty <= std::min(r[3], y1); ++ty) {
-                for (int tx = r[0]; tx <= r[1]; ++tx) entriesOut[counts[ty * tilesX + tx]++] = entry;
-            }
-        });
-    });
-    return true;
 }
 
 bool quarterResPays(const ScreenRect& rect, const ScreenTiles& tiles) {

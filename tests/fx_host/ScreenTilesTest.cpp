@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/ScreenTiles.h"
+#include "render/TileBins.h"
 
 namespace fx {
 namespace {

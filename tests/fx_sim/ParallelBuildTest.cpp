@@ -9,6 +9,7 @@
 #include "DrawListScene.h"
 #include "JobHosts.h"
 #include "../../fx_plugin/render/ScreenTiles.h"
+#include "../../fx_plugin/render/TileBins.h"
 
 namespace {
 
