@@ -1,10 +1,14 @@
 #version 430 core
-// Tiled particles (fx_plugin/render/TiledPath.h): hard and soft billboards and spheres shaded by a
-// compute shader, one work group per 16 x 16 pixel tile of the view, one invocation per pixel. The
-// CPU binned every particle into the tiles its bound touches, in draw order (TileBins,
-// ScreenTiles.h); a group walks its tile's list front to back, 256 particles at a time: each
-// invocation sets one particle up in shared memory (what the vertex shader works out per vertex),
-// then every invocation evaluates them for its pixel in registers.
+// Tiled particles (fx_plugin/render/TiledPath.h): hard and soft billboards and spheres shaded by
+// compute shaders in two dispatches.
+//   FX_TILED_SETUP: one invocation per particle works out what the vertex shader does per vertex
+//     (the particle's map from pixels to its texture, its tint, fog, fade line, level of detail)
+//     into six vec4 of uRecords, once however many tiles the particle touches.
+//   Otherwise: one work group per 16 x 16 pixel tile of the view, one invocation per pixel. The
+//     CPU binned every particle into the tiles its bound touches, front to back (TileBins.h); each
+//     invocation walks its tile's list, reading each particle's record (the same address across
+//     the group: one cached read for all), and evaluates it for its pixel in registers. No shared
+//     memory and no barrier.
 //   - The scene depth is fetched once per pixel, not once per particle fragment: the fetch that
 //     bounds soft's and spherical's raster passes on the GPUs we measured is paid by the pixels,
 //     not the overdraw.
@@ -27,8 +31,6 @@
 //     fs_particles_spherical does; its atlas level of detail is one value per sphere, that of its
 //     centre (the raster path's varies a little over the disc).
 // The atlas is read from one mip level, the nearest, as ParticleDraw's sampler does.
-layout(local_size_x = 16, local_size_y = 16) in;
-
 #include "particles_common.glsl"
 
 // Two vec4 per particle: InstanceStream's ParticleInstance (x, y, z, size), (life, rotation,
@@ -38,35 +40,36 @@ layout(std430, binding = 0) readonly buffer Instances { vec4 uInstances[]; };
 layout(std430, binding = 1) readonly buffer Entries { uint uEntries[]; };
 // The tiles with particles: (tile x, tile y, first entry, entry count).
 layout(std430, binding = 2) readonly buffer Tiles { uvec4 uTiles[]; };
-layout(rgba16f, binding = 0) writeonly uniform image2D uAccum;
+// Six vec4 per particle, by instance index. Billboards: [0] the local map (local = [0].xy px +
+// [0].zw py + [1].xy, p the pixel centre), [1].zw the atlas cell, [2] soft: (softFadeLine,
+// contrast power), hard: (0, 0, 0, depth). Spheres: [0] = (view centre, radius squared), [1] =
+// (atlas base, near fade map), [2] = the atlas map (sphereAtlasMap). Both: [3] particleTint's
+// tint, [4] (fogAdd, atlas level of detail), [5].x the kind (0 hard, 1 soft, 2 sphere).
+layout(std430, binding = 3) buffer Records { vec4 uRecords[]; };
 
 const int kMaxBatches = 32;         // TiledPath::kMaxBatches
+const uint kBatchShift = 26u;
+const float kOpaque = 1.0 - 1.0 / 2048.0;
+uniform vec4 uPixelToNdc;           // ndc = (view pixel + 0.5) * xy + zw
+uniform int uGroupsX;               // groups per row of the dispatch (a row holds at most 65,535)
+
+#ifdef FX_TILED_SETUP
+layout(local_size_x = 64) in;
 uniform vec4 uBatchA[kMaxBatches];  // ramp row v, blend mode, soft scale, contrast power
 uniform vec4 uBatchB[kMaxBatches];  // the batch's uNearFadeMap (x, y), kind (0 hard, 1 soft, 2 sphere), 0
-uniform int uTileCount;
-uniform int uGroupsX;               // groups per row of the dispatch
-uniform ivec2 uViewSize;            // the view's pixels
-uniform vec4 uPixelToNdc;           // ndc = (view pixel + 0.5) * xy + zw
+uniform ivec2 uBatchRange[kMaxBatches];  // first instance, count
+uniform int uBatchCount;
+uniform int uInstanceCount;
 uniform float uAtlasTexels;         // the atlas's level-0 width (square)
 uniform float uPixelSlope;          // spheres: one pixel in ray slope (the larger of x and y)
 
-const uint kBatchShift = 26u;
-const float kOpaque = 1.0 - 1.0 / 2048.0;
-
-// Per particle of the chunk. Billboards: sMap = the local map (local = sMap.xy px + sMap.zw py +
-// sOffset.xy, p the pixel centre), sOffset.zw the atlas cell, sFade soft: (softFadeLine, contrast
-// power), hard: (0, 0, 0, depth). Spheres: sMap = (view centre, radius squared), sOffset = (atlas
-// base, near fade map), sFade = the atlas map (sphereAtlasMap).
-shared vec4 sMap[256];
-shared vec4 sOffset[256];
-shared vec4 sTint[256];    // particleTint's tint
-shared vec4 sFogLod[256];  // (fogAdd, atlas level of detail)
-shared vec4 sFade[256];
-shared uint sKind[256];    // 0 hard, 1 soft, 2 sphere
-
-void setUp(uint slot, uint entry) {
-    uint index = entry & ((1u << kBatchShift) - 1u);
-    int batch = int(entry >> kBatchShift);
+void main() {
+    uint index = gl_GlobalInvocationID.y * uint(uGroupsX) * 64u + gl_GlobalInvocationID.x;
+    if (index >= uint(uInstanceCount)) return;
+    int batch = 0;
+    for (int b = 0; b < uBatchCount; ++b) {
+        if (int(index) >= uBatchRange[b].x && int(index) < uBatchRange[b].x + uBatchRange[b].y) batch = b;
+    }
     vec4 posSize = uInstances[2u * index];
     vec4 lrff = uInstances[2u * index + 1u];
     vec4 a = uBatchA[batch];
@@ -77,18 +80,18 @@ void setUp(uint slot, uint entry) {
     float radius = 0.5 * posSize.w;
     vec4 ramp = textureLod(uRamp, vec2(rampU(lrff.x), a.x), 0.0);
     vec2 cell = atlasCell(lrff.w);
-    sKind[slot] = kind;
     float fade = lrff.z;
     float lod;
+    vec4 r0, r1, r2;
     if (kind == 2u) {
         // As the vertex shader's FX_SPHERICAL branch: the sphere itself, its atlas map; the near
         // fade is per pixel, at the visible chord's middle.
         vec4 map;
         vec2 base;
         sphereAtlasMap(vec2(cos(lrff.y), sin(lrff.y)), radius, cell, map, base);
-        sMap[slot] = vec4(c, radius > 0.0 ? radius * radius : 0.0);
-        sOffset[slot] = vec4(base, b.xy);
-        sFade[slot] = map;
+        r0 = vec4(c, radius > 0.0 ? radius * radius : 0.0);
+        r1 = vec4(base, b.xy);
+        r2 = map;
         // Texels of level 0 per pixel at the centre: the map's 1/4 per radius, a pixel's slope
         // times the depth.
         lod = log2(max(0.25 / radius * max(depth, uNear) * uPixelSlope * uAtlasTexels, 1e-8));
@@ -108,12 +111,12 @@ void setUp(uint slot, uint entry) {
         mat2 perPixel = toLocal * mat2(uPixelToNdc.x, 0.0, 0.0, uPixelToNdc.y);
         offset += toLocal * uPixelToNdc.zw;
         bool clipped = !(depth >= uNear && depth <= uFar) || !(radius > 0.0);
-        sMap[slot] = clipped ? vec4(0.0) : vec4(perPixel[0], perPixel[1]);
-        sOffset[slot] = vec4(clipped ? vec2(2.0) : offset, cell);
+        r0 = clipped ? vec4(0.0) : vec4(perPixel[0], perPixel[1]);
+        r1 = vec4(clipped ? vec2(2.0) : offset, cell);
         float zs = depth * a.z;
-        sFade[slot] = kind == 1u ? vec4((uDepthCoeffs.x - depth * uDepthCoeffs.z) * a.z,
-                                        (uDepthCoeffs.y - depth * uDepthCoeffs.w) * a.z, -zs, a.w)
-                                 : vec4(0.0, 0.0, 0.0, depth);
+        r2 = kind == 1u ? vec4((uDepthCoeffs.x - depth * uDepthCoeffs.z) * a.z,
+                               (uDepthCoeffs.y - depth * uDepthCoeffs.w) * a.z, -zs, a.w)
+                        : vec4(0.0, 0.0, 0.0, depth);
         // A billboard's near fade is its own: into the tint with the life fade.
         fade *= clamp(depth * b.x + b.y, 0.0, 1.0);
         // Texels of level 0 per pixel: the map's larger column (atlasUVOf scales local by 1/4).
@@ -124,16 +127,26 @@ void setUp(uint slot, uint entry) {
     vec4 fog = particleFog(depth);
     float alpha = ramp.a * fade;
     float outAlpha = a.y == 2.0 ? 0.0 : alpha;
-    sTint[slot] = vec4(ramp.rgb * (a.y == 1.0 ? fade : alpha) * fog.a, outAlpha);
-    sFogLod[slot] = vec4(fog.rgb * outAlpha, lod);
+    uint at = 6u * index;
+    uRecords[at] = r0;
+    uRecords[at + 1u] = r1;
+    uRecords[at + 2u] = r2;
+    uRecords[at + 3u] = vec4(ramp.rgb * (a.y == 1.0 ? fade : alpha) * fog.a, outAlpha);
+    uRecords[at + 4u] = vec4(fog.rgb * outAlpha, lod);
+    uRecords[at + 5u] = vec4(float(kind), 0.0, 0.0, 0.0);
 }
+#else
+layout(local_size_x = 16, local_size_y = 16) in;
+layout(rgba16f, binding = 0) writeonly uniform image2D uAccum;
+uniform int uTileCount;
+uniform ivec2 uViewSize;            // the view's pixels
 
 void main() {
     uint tileIndex = gl_WorkGroupID.y * uint(uGroupsX) + gl_WorkGroupID.x;
-    if (tileIndex >= uint(uTileCount)) return;  // the whole group: no barrier is skipped by some
+    if (tileIndex >= uint(uTileCount)) return;
     uvec4 tile = uTiles[tileIndex];
     ivec2 pixel = ivec2(tile.xy) * 16 + ivec2(gl_LocalInvocationID.xy);
-    bool inView = all(lessThan(pixel, uViewSize));
+    if (!all(lessThan(pixel, uViewSize))) return;  // past the view's last column or row
     vec2 p = vec2(pixel) + 0.5;
     // The scene depth under the pixel, once (gl_FragCoord's stand-in: the view's pixel placed in
     // sceneColor, as the raster pass reads it).
@@ -148,61 +161,56 @@ void main() {
     float invLen2 = 1.0 / (1.0 + slope.x * slope.x + slope.y * slope.y);
 
     vec4 acc = vec4(0.0);  // premultiplied colour in front; acc.a = 1 - transmittance
-    uint count = tile.w;
-    for (uint base = 0u; base < count; base += 256u) {
-        barrier();  // the previous chunk is read by every invocation
-        uint mine = base + gl_LocalInvocationIndex;
-        if (mine < count) setUp(gl_LocalInvocationIndex, uEntries[tile.z + mine]);
-        barrier();
-        uint n = min(256u, count - base);
-        for (uint j = 0u; j < n && acc.a < kOpaque; ++j) {
-            vec4 map = sMap[j];
-            vec4 mo = sOffset[j];
-            bool sphere = sKind[j] == 2u;
-            vec2 uv;
-            float tMid = 0.0, d2 = 0.0;
-            if (sphere) {
-                // fs_particles_spherical: the ray's closest approach to the centre.
-                vec3 centre = map.xyz;
-                tMid = (centre.x * slope.x + centre.y * slope.y - centre.z) * invLen2;
-                vec2 offset = vec2(slope.x * tMid - centre.x, slope.y * tMid - centre.y);
-                float offsetZ = tMid + centre.z;
-                d2 = offset.x * offset.x + offset.y * offset.y + offsetZ * offsetZ;
-                if (d2 >= map.w) continue;
-                vec4 am = sFade[j];
-                uv = vec2(mo.x + offset.x * am.x + offset.y * am.y, mo.y + offset.x * am.z + offset.y * am.w);
-            } else {
-                vec2 local = map.xy * p.x + map.zw * p.y + mo.xy;
-                if (max(abs(local.x), abs(local.y)) >= 0.996) continue;  // insideFrame
-                uv = atlasUVOf(local, mo.zw);
-            }
-            vec4 texel = textureLod(uAtlas, uv, sFogLod[j].w);
-            if (texel.a == 0.0) continue;
-            float coverage;
-            if (sphere) {
-                // The chord clipped to the near plane and the scene, the near fade at the visible
-                // chord's middle.
-                float halfDepth = sqrt((map.w - d2) * invLen2);
-                float z0 = max(tMid - halfDepth, uNear);
-                float z1 = min(tMid + halfDepth, sceneLinear);
-                float visible = clamp((z1 - z0) / (2.0 * halfDepth), 0.0, 1.0);
-                coverage = texel.a * visible * clamp(0.5 * (z0 + z1) * mo.z + mo.w, 0.0, 1.0);
-            } else {
-                vec4 f = sFade[j];
-                float fade;
-                if (sKind[j] == 0u) {
-                    fade = f.w <= sceneLinear ? 1.0 : 0.0;  // hard: cut where the scene is nearer
-                } else {
-                    float v = (f.x + f.y * d) * invDen;
-                    float x = clamp(v > f.z ? v : 1.0, 0.0, 1.0);
-                    fade = f.w == 1.0 ? x : contrastCurve(x, f.w);
-                }
-                coverage = texel.a * fade;
-            }
-            vec4 tint = sTint[j];
-            vec4 src = vec4(coverage * (tint.rgb * texel.rgb + sFogLod[j].rgb), tint.a * coverage);
-            acc += (1.0 - acc.a) * src;
+    for (uint e = 0u; e < tile.w && acc.a < kOpaque; ++e) {
+        uint at = 6u * (uEntries[tile.z + e] & ((1u << kBatchShift) - 1u));
+        uint kind = uint(uRecords[at + 5u].x);
+        vec4 map = uRecords[at];
+        vec4 mo = uRecords[at + 1u];
+        vec2 uv;
+        float tMid = 0.0, d2 = 0.0;
+        if (kind == 2u) {
+            // fs_particles_spherical: the ray's closest approach to the centre.
+            vec3 centre = map.xyz;
+            tMid = (centre.x * slope.x + centre.y * slope.y - centre.z) * invLen2;
+            vec2 offset = vec2(slope.x * tMid - centre.x, slope.y * tMid - centre.y);
+            float offsetZ = tMid + centre.z;
+            d2 = offset.x * offset.x + offset.y * offset.y + offsetZ * offsetZ;
+            if (d2 >= map.w) continue;
+            vec4 am = uRecords[at + 2u];
+            uv = vec2(mo.x + offset.x * am.x + offset.y * am.y, mo.y + offset.x * am.z + offset.y * am.w);
+        } else {
+            vec2 local = map.xy * p.x + map.zw * p.y + mo.xy;
+            if (max(abs(local.x), abs(local.y)) >= 0.996) continue;  // insideFrame
+            uv = atlasUVOf(local, mo.zw);
         }
+        vec4 fogLod = uRecords[at + 4u];
+        vec4 texel = textureLod(uAtlas, uv, fogLod.w);
+        if (texel.a == 0.0) continue;
+        float coverage;
+        if (kind == 2u) {
+            // The chord clipped to the near plane and the scene, the near fade at the visible
+            // chord's middle.
+            float halfDepth = sqrt((map.w - d2) * invLen2);
+            float z0 = max(tMid - halfDepth, uNear);
+            float z1 = min(tMid + halfDepth, sceneLinear);
+            float visible = clamp((z1 - z0) / (2.0 * halfDepth), 0.0, 1.0);
+            coverage = texel.a * visible * clamp(0.5 * (z0 + z1) * mo.z + mo.w, 0.0, 1.0);
+        } else {
+            vec4 f = uRecords[at + 2u];
+            float fade;
+            if (kind == 0u) {
+                fade = f.w <= sceneLinear ? 1.0 : 0.0;  // hard: cut where the scene is nearer
+            } else {
+                float v = (f.x + f.y * d) * invDen;
+                float x = clamp(v > f.z ? v : 1.0, 0.0, 1.0);
+                fade = f.w == 1.0 ? x : contrastCurve(x, f.w);
+            }
+            coverage = texel.a * fade;
+        }
+        vec4 tint = uRecords[at + 3u];
+        vec4 src = vec4(coverage * (tint.rgb * texel.rgb + fogLod.rgb), tint.a * coverage);
+        acc += (1.0 - acc.a) * src;
     }
-    if (inView) imageStore(uAccum, pixel, acc);
+    imageStore(uAccum, pixel, acc);
 }
+#endif

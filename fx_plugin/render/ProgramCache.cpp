@@ -41,6 +41,7 @@ constexpr Source kSources[ProgramCache::VariantCount + ProgramCache::ProgramCoun
     {"vs_particles_fullscreen.glsl", "fs_particles_fade_pyramid.glsl", ""},
     {"cs_particles_tiled.glsl", "", "#define FX_GENERAL_POWER 1\n"},
     {"vs_particles_tiles.glsl", "fs_particles_tiled_composite.glsl", ""},
+    {"cs_particles_tiled.glsl", "", "#define FX_TILED_SETUP 1\n"},
 };
 
 const Source& sourceOf(const ProgramCache::Key& key) {
@@ -236,7 +237,7 @@ std::vector<ProgramCache::Key> ProgramCache::megaKeys() {
 }
 
 std::vector<ProgramCache::Key> ProgramCache::tiledKeys() {
-    return {Key::of(TiledShade), Key::of(TiledComposite)};
+    return {Key::of(TiledSetup), Key::of(TiledShade), Key::of(TiledComposite)};
 }
 
 std::vector<ProgramCache::Key> ProgramCache::fadeMaskKeys() {

@@ -102,6 +102,7 @@ public:
         FadePyramidReduce,  ///< the same without it
         TiledShade,         ///< cs_particles_tiled (compute: TiledPath.h)
         TiledComposite,     ///< vs_particles_tiles + fs_particles_tiled_composite
+        TiledSetup,         ///< cs_particles_tiled, FX_TILED_SETUP
         ProgramCount
     };
 
@@ -191,7 +192,7 @@ public:
     /// unlit, and the fade pyramid's two programs: what prepareGl adds while fade classification
     /// is on.
     static std::vector<Key> fadeMaskKeys();
-    /// The tiled path's two programs (TiledPath.h): what prepareGl adds while it is on, in a
+    /// The tiled path's three programs (TiledPath.h): what prepareGl adds while it is on, in a
     /// context with compute shaders.
     static std::vector<Key> tiledKeys();
     /// `contrastPower` picks between the two soft programs (see above).

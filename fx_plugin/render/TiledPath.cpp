@@ -14,17 +14,18 @@
 namespace fx {
 namespace {
 
-constexpr int kEntryBinding = 1, kTileBinding = 2, kInstanceBinding = 0, kAccumImage = 0;
+constexpr int kEntryBinding = 1, kTileBinding = 2, kInstanceBinding = 0, kRecordBinding = 3, kAccumImage = 0;
+constexpr size_t kRecordBytes = 6 * 16;  // cs_particles_tiled.glsl's six vec4 per particle
 constexpr int kAtlasUnit = ParticleDraw::kAtlasUnit, kRampUnit = ParticleDraw::kRampUnit,
               kDepthUnit = ParticleDraw::kSceneDepthUnit, kAccumUnit = 3;
 
 // The bindings the pass changes that GlStateGuard has no rows for: read on entry, put back on
-// exit (shader storage buffers 0-2 with their ranges, the generic binding, image unit 0).
+// exit (shader storage buffers 0-3 with their ranges, the generic binding, image unit 0).
 class ComputeBindingsScope {
 public:
     ComputeBindingsScope() {
         glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &generic_);
-        for (int i = 0; i < 3; ++i) {
+        for (int i = 0; i < kBindings; ++i) {
             glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, GLuint(i), &buffer_[i]);
             GLint64 v = 0;
             glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_START, GLuint(i), &v);
@@ -42,7 +43,7 @@ public:
     ~ComputeBindingsScope() {
         glBindImageTexture(kAccumImage, GLuint(image_[0]), image_[1], GLboolean(image_[2]), image_[3], GLenum(image_[4]),
                            GLenum(image_[5]));
-        for (int i = 0; i < 3; ++i) {
+        for (int i = 0; i < kBindings; ++i) {
             if (buffer_[i] != 0 && size_[i] > 0) {
                 glBindBufferRange(GL_SHADER_STORAGE_BUFFER, GLuint(i), GLuint(buffer_[i]), GLintptr(start_[i]),
                                   GLsizeiptr(size_[i]));
@@ -57,8 +58,9 @@ public:
 
 private:
     GLint generic_ = 0;
-    GLint buffer_[3] = {0, 0, 0};
-    GLint64 start_[3] = {0, 0, 0}, size_[3] = {0, 0, 0};
+    static constexpr int kBindings = 4;
+    GLint buffer_[kBindings] = {};
+    GLint64 start_[kBindings] = {}, size_[kBindings] = {};
     GLint image_[6] = {0, 0, 0, 0, GL_READ_ONLY, GL_R8};
 };
 
@@ -82,7 +84,7 @@ TiledPath::TiledPath(ParticleDraw& draw, SizeMismatchReport sizeMismatch)
 TiledPath::~TiledPath() {
     // The renderer deletes its GL objects inside a guard with the context current (~ParticleRenderer).
     if (!privateGlContextCurrent()) return;
-    const uint32_t buffers[3] = {entryBuffer_, tileBuffer_, coverVbo_};
+    const uint32_t buffers[4] = {entryBuffer_, tileBuffer_, recordBuffer_, coverVbo_};
     for (uint32_t b : buffers) {
         if (b) glDeleteBuffers(1, &b);
     }
@@ -98,27 +100,34 @@ bool TiledPath::available() {
 }
 
 void TiledPath::bind(const ProgramCache& programs) {
+    setup_ = programs.passProgram(ProgramCache::TiledSetup);
     shade_ = programs.passProgram(ProgramCache::TiledShade);
     composite_ = programs.passProgram(ProgramCache::TiledComposite);
-    if (shade_) {
-        ShadeUniforms& u = s_;
-        u.view = glGetUniformLocation(shade_, "uView");
-        u.proj = glGetUniformLocation(shade_, "uProj");
-        u.nearPlane = glGetUniformLocation(shade_, "uNear");
-        u.farPlane = glGetUniformLocation(shade_, "uFar");
-        u.atlas = glGetUniformLocation(shade_, "uAtlas");
-        u.ramp = glGetUniformLocation(shade_, "uRamp");
-        u.sceneDepth = glGetUniformLocation(shade_, "uSceneDepth");
-        u.batchA = glGetUniformLocation(shade_, "uBatchA");
-        u.batchB = glGetUniformLocation(shade_, "uBatchB");
-        u.pixelSlope = glGetUniformLocation(shade_, "uPixelSlope");
-        u.tileCount = glGetUniformLocation(shade_, "uTileCount");
-        u.groupsX = glGetUniformLocation(shade_, "uGroupsX");
-        u.viewSize = glGetUniformLocation(shade_, "uViewSize");
-        u.pixelToNdc = glGetUniformLocation(shade_, "uPixelToNdc");
-        u.atlasTexels = glGetUniformLocation(shade_, "uAtlasTexels");
-        u.decode.locate(shade_);
-        u.fog = FogUniforms::of(shade_);
+    // Each program's uniforms (-1 where it has none of that name: glUniform ignores those).
+    for (ShadeUniforms* u : {&setupUniforms_, &shadeUniforms_}) {
+        const uint32_t prog = u == &setupUniforms_ ? setup_ : shade_;
+        *u = ShadeUniforms{};
+        if (!prog) continue;
+        u->view = glGetUniformLocation(prog, "uView");
+        u->proj = glGetUniformLocation(prog, "uProj");
+        u->nearPlane = glGetUniformLocation(prog, "uNear");
+        u->farPlane = glGetUniformLocation(prog, "uFar");
+        u->atlas = glGetUniformLocation(prog, "uAtlas");
+        u->ramp = glGetUniformLocation(prog, "uRamp");
+        u->sceneDepth = glGetUniformLocation(prog, "uSceneDepth");
+        u->batchA = glGetUniformLocation(prog, "uBatchA");
+        u->batchB = glGetUniformLocation(prog, "uBatchB");
+        u->batchRange = glGetUniformLocation(prog, "uBatchRange");
+        u->batchCount = glGetUniformLocation(prog, "uBatchCount");
+        u->instanceCount = glGetUniformLocation(prog, "uInstanceCount");
+        u->pixelSlope = glGetUniformLocation(prog, "uPixelSlope");
+        u->tileCount = glGetUniformLocation(prog, "uTileCount");
+        u->groupsX = glGetUniformLocation(prog, "uGroupsX");
+        u->viewSize = glGetUniformLocation(prog, "uViewSize");
+        u->pixelToNdc = glGetUniformLocation(prog, "uPixelToNdc");
+        u->atlasTexels = glGetUniformLocation(prog, "uAtlasTexels");
+        u->decode.locate(prog);
+        u->fog = FogUniforms::of(prog);
     }
     if (composite_) {
         compositeAccum_ = glGetUniformLocation(composite_, "uAccum");
@@ -177,6 +186,7 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
 void TiledPath::ensureObjects(int width, int height) {
     if (!entryBuffer_) glGenBuffers(1, &entryBuffer_);
     if (!tileBuffer_) glGenBuffers(1, &tileBuffer_);
+    if (!recordBuffer_) glGenBuffers(1, &recordBuffer_);
     if (!coverVao_) {
         glGenVertexArrays(1, &coverVao_);
         glGenBuffers(1, &coverVbo_);
@@ -230,42 +240,75 @@ void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Targe
     const SceneDepthDecode placed = decode.placedFor(depthRef, view, true);  // addressed as in sceneColor
     if (depthRef.name) sceneDepthBarrier(decode);
 
-    glUseProgram(shade_);
-    const ShadeUniforms& u = s_;
-    glUniformMatrix4fv(u.view, 1, GL_FALSE, &view.view[0][0]);
-    glUniformMatrix4fv(u.proj, 1, GL_FALSE, &view.proj[0][0]);
-    glUniform1f(u.nearPlane, view.nearPlane);
-    glUniform1f(u.farPlane, view.farPlane);
-    glUniform1i(u.atlas, kAtlasUnit);
-    glUniform1i(u.ramp, kRampUnit);
-    glUniform1i(u.sceneDepth, kDepthUnit);
-    setSceneDepthDecode(u.decode, placed);
-    setFogUniforms(u.fog, view.fog);
-    glm::vec4 batchA[kMaxBatches], batchB[kMaxBatches];
-    const int batchCount = int(v.list.batches.size());
-    for (int b = 0; b < batchCount; ++b) {
-        const DrawBatch& batch = v.list.batches[size_t(b)];
-        const float kind = batch.technique == Technique::Hard ? 0.0f : batch.technique == Technique::Soft ? 1.0f : 2.0f;
-        batchA[b] = glm::vec4(ramp.rowV(batch.rampRow), float(static_cast<int>(batch.blend)), batch.softScale,
-                              batch.contrastPower);
-        const glm::vec2 nearFade = nearFadeMap(batch.nearFade, view.nearPlane);
-        batchB[b] = glm::vec4(nearFade, kind, 0.0f);
+    // 1. Each particle's record, once (the vertex shader's work).
+    const int count = v.list.particleCount();
+    const size_t recordBytes = size_t(count) * kRecordBytes;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, recordBuffer_);
+    if (recordBytes > recordCapacity_) {
+        recordCapacity_ = std::max(recordBytes, 2 * recordCapacity_);
+        glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(recordCapacity_), nullptr, GL_DYNAMIC_COPY);
     }
-    glUniform4fv(u.batchA, batchCount, &batchA[0][0]);
-    glUniform4fv(u.batchB, batchCount, &batchB[0][0]);
-    // One pixel in ray slope, the larger of x and y (ParticleDraw's pixelSlopeOf, per axis).
-    const float slopeX = 2.0f / std::fmax(std::fabs(view.proj[0][0]) * float(view.width), 1e-6f);
-    const float slopeY = 2.0f / std::fmax(std::fabs(view.proj[1][1]) * float(view.height), 1e-6f);
-    glUniform1f(u.pixelSlope, std::fmax(slopeX, slopeY));
-    glUniform2i(u.viewSize, view.width, view.height);
-    glUniform4f(u.pixelToNdc, 2.0f / float(view.width), 2.0f / float(view.height), -1.0f, -1.0f);
-    glUniform1f(u.atlasTexels, float(atlas.width()));
-    const int tiles = bins.tileCount();
-    const int groupsX = std::min(tiles, 65535);
-    const int groupsY = (tiles + groupsX - 1) / groupsX;
-    glUniform1i(u.tileCount, tiles);
-    glUniform1i(u.groupsX, groupsX);
-    glDispatchCompute(GLuint(groupsX), GLuint(groupsY), 1);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRecordBinding, recordBuffer_);
+    const glm::vec4 pixelToNdc(2.0f / float(view.width), 2.0f / float(view.height), -1.0f, -1.0f);
+    glUseProgram(setup_);
+    {
+        const ShadeUniforms& u = setupUniforms_;
+        glUniformMatrix4fv(u.view, 1, GL_FALSE, &view.view[0][0]);
+        glUniformMatrix4fv(u.proj, 1, GL_FALSE, &view.proj[0][0]);
+        glUniform1f(u.nearPlane, view.nearPlane);
+        glUniform1f(u.farPlane, view.farPlane);
+        glUniform1i(u.ramp, kRampUnit);
+        setSceneDepthDecode(u.decode, placed);  // the soft fade's line folds the decode in
+        setFogUniforms(u.fog, view.fog);
+        glm::vec4 batchA[kMaxBatches], batchB[kMaxBatches];
+        glm::ivec2 range[kMaxBatches];
+        const int batchCount = int(v.list.batches.size());
+        for (int b = 0; b < batchCount; ++b) {
+            const DrawBatch& batch = v.list.batches[size_t(b)];
+            const float kind = batch.technique == Technique::Hard ? 0.0f
+                               : batch.technique == Technique::Soft ? 1.0f
+                                                                    : 2.0f;
+            batchA[b] = glm::vec4(ramp.rowV(batch.rampRow), float(static_cast<int>(batch.blend)), batch.softScale,
+                                  batch.contrastPower);
+            batchB[b] = glm::vec4(nearFadeMap(batch.nearFade, view.nearPlane), kind, 0.0f);
+            range[b] = glm::ivec2(batch.first, batch.count);
+        }
+        glUniform4fv(u.batchA, batchCount, &batchA[0][0]);
+        glUniform4fv(u.batchB, batchCount, &batchB[0][0]);
+        glUniform2iv(u.batchRange, batchCount, &range[0][0]);
+        glUniform1i(u.batchCount, batchCount);
+        glUniform1i(u.instanceCount, count);
+        // One pixel in ray slope, the larger of x and y (ParticleDraw's pixelSlopeOf, per axis).
+        const float slopeX = 2.0f / std::fmax(std::fabs(view.proj[0][0]) * float(view.width), 1e-6f);
+        const float slopeY = 2.0f / std::fmax(std::fabs(view.proj[1][1]) * float(view.height), 1e-6f);
+        glUniform1f(u.pixelSlope, std::fmax(slopeX, slopeY));
+        glUniform4f(u.pixelToNdc, pixelToNdc.x, pixelToNdc.y, pixelToNdc.z, pixelToNdc.w);
+        glUniform1f(u.atlasTexels, float(atlas.width()));
+        const int groups = (count + 63) / 64;
+        const int groupsX = std::min(groups, 65535);  // the least GL_MAX_COMPUTE_WORK_GROUP_COUNT
+        glUniform1i(u.groupsX, groupsX);
+        glDispatchCompute(GLuint(groupsX), GLuint((groups + groupsX - 1) / groupsX), 1);
+    }
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+    // 2. The tiles: every pixel through its tile's particles.
+    glUseProgram(shade_);
+    {
+        const ShadeUniforms& u = shadeUniforms_;
+        glUniformMatrix4fv(u.proj, 1, GL_FALSE, &view.proj[0][0]);
+        glUniform1f(u.nearPlane, view.nearPlane);
+        glUniform1i(u.atlas, kAtlasUnit);
+        glUniform1i(u.sceneDepth, kDepthUnit);
+        setSceneDepthDecode(u.decode, placed);
+        glUniform2i(u.viewSize, view.width, view.height);
+        glUniform4f(u.pixelToNdc, pixelToNdc.x, pixelToNdc.y, pixelToNdc.z, pixelToNdc.w);
+        const int tiles = bins.tileCount();
+        const int groupsX = std::min(tiles, 65535);
+        const int groupsY = (tiles + groupsX - 1) / groupsX;
+        glUniform1i(u.tileCount, tiles);
+        glUniform1i(u.groupsX, groupsX);
+        glDispatchCompute(GLuint(groupsX), GLuint(groupsY), 1);
+    }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
     // The covered tiles onto sceneColor.

@@ -4,12 +4,14 @@
 // blended one fragment at a time.
 //   "particles_tiled"  reads sceneDepth (the z-buffer in place, or the host's linear depth),
 //                      writes sceneColor
-// Declaring the pass bins the view's particles on the CPU (binParticles, ScreenTiles.h: each
-// particle into the tiles its bound touches, front to back). The pass uploads the
-// bins, dispatches cs_particles_tiled over the tiles that hold particles (one invocation per
-// pixel: one scene-depth fetch per pixel, the blend in registers, stopped once the pixel is
-// opaque) into the plugin's own RGBA16F image, then draws those tiles onto sceneColor blended
-// (ONE, ONE_MINUS_SRC_ALPHA): one blend per covered pixel instead of one per particle fragment.
+// Declaring the pass bins the view's particles on the CPU (binParticles, TileBins.h: each
+// particle into the tiles its bound touches, front to back). The pass uploads the bins, sets each
+// particle up once (a compute dispatch, one invocation per particle: what the vertex shader works
+// out), then dispatches one work group per tile that holds particles (one invocation per pixel:
+// one scene-depth fetch per pixel, the particles' records read in order, the blend in registers,
+// stopped once the pixel is opaque) into the plugin's own RGBA16F image, and draws those tiles
+// onto sceneColor blended (ONE, ONE_MINUS_SRC_ALPHA): one blend per covered pixel instead of one
+// per particle fragment (cs_particles_tiled.glsl).
 //
 // Why: on the GPUs this project is measured on, soft's raster pass is bound by its per-fragment
 // texture reads (docs/results.md, session 21: soft's depth fetch is 0.485 ms of its 1.690 ms
@@ -30,7 +32,7 @@
 // (TiledPathTest: at most 4/255, spheres 5; docs/results.md has fxbench's error).
 //
 // GL state: the pass runs in a GlStateGuard; what it touches beyond the guard's rows (shader
-// storage buffer bindings 0-2 and the generic one, image unit 0) it reads first and puts back.
+// storage buffer bindings 0-3 and the generic one, image unit 0) it reads first and puts back.
 #include <memory>
 
 #include "ParticleDraw.h"
@@ -54,8 +56,8 @@ public:
     /// Takes the tiled programs of `programs` (0 where one failed or was never built) and looks
     /// their uniforms up. Context current, inside a guard.
     void bind(const ProgramCache& programs);
-    /// Both programs built.
-    bool ok() const { return shade_ != 0 && composite_ != 0; }
+    /// Its three programs built.
+    bool ok() const { return setup_ != 0 && shade_ != 0 && composite_ != 0; }
     /// Whether this view can be drawn tiled (the rule above; no GL).
     static bool canDraw(const ParticleView& view);
 
@@ -70,16 +72,19 @@ private:
 
     ParticleDraw& draw_;
     SizeMismatchReport sizeMismatch_;
-    uint32_t shade_ = 0, composite_ = 0;
+    uint32_t setup_ = 0, shade_ = 0, composite_ = 0;
     struct ShadeUniforms {
         int view = -1, proj = -1, nearPlane = -1, farPlane = -1, atlas = -1, ramp = -1, sceneDepth = -1;
-        int batchA = -1, batchB = -1, pixelSlope = -1, tileCount = -1, groupsX = -1, viewSize = -1, pixelToNdc = -1,
-            atlasTexels = -1;
+        int batchA = -1, batchB = -1, batchRange = -1, batchCount = -1, instanceCount = -1, pixelSlope = -1;
+        int tileCount = -1, groupsX = -1, viewSize = -1, pixelToNdc = -1, atlasTexels = -1;
         SceneDepthUniforms decode;
         FogUniforms fog;
-    } s_;
+    };
+    ShadeUniforms setupUniforms_, shadeUniforms_;
     int compositeAccum_ = -1, compositeOrigin_ = -1, compositeViewSize_ = -1;
     uint32_t entryBuffer_ = 0, tileBuffer_ = 0;  ///< the bins (shader storage)
+    uint32_t recordBuffer_ = 0;                  ///< the particles' records (the setup dispatch's)
+    size_t recordCapacity_ = 0;
     uint32_t accum_ = 0;                         ///< RGBA16F, at least the view's size
     int accumWidth_ = 0, accumHeight_ = 0;
     uint32_t coverVao_ = 0, coverVbo_ = 0;       ///< the covered tiles' runs

@@ -78,10 +78,10 @@ HostStateReadback readHostState() {
     glGetIntegeri_v(GL_SAMPLE_MASK_VALUE, 0, &mask);
     r["sample mask value 0"] = {double(mask)};
     if (phg::glVersion() >= 43) {
-        // The tiled path's bindings: shader storage buffers 0-2 (with their ranges) and the generic
+        // The tiled path's bindings: shader storage buffers 0-3 (with their ranges) and the generic
         // one, image unit 0.
         ints("shader storage buffer", phg::kShaderStorageBufferBinding, 1);
-        for (GLuint i = 0; i < 3; ++i) {
+        for (GLuint i = 0; i < 4; ++i) {
             GLint b = 0;
             GLint64 start = 0, size = 0;
             glGetIntegeri_v(phg::kShaderStorageBufferBinding, i, &b);
@@ -162,7 +162,7 @@ void resetHostState() {
     }
     if (phg::glVersion() >= 43) {
         glDisable(phg::kPrimitiveRestartFixedIndex);
-        for (GLuint i = 0; i < 3; ++i) glBindBufferBase(phg::kShaderStorageBuffer, i, 0);
+        for (GLuint i = 0; i < 4; ++i) glBindBufferBase(phg::kShaderStorageBuffer, i, 0);
         glBindBuffer(phg::kShaderStorageBuffer, 0);
         phg::compat().bindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_ONLY, phg::kRgba8);
     }

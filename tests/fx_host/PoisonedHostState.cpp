@@ -63,6 +63,7 @@ std::vector<HostPoison> buildPoisons() {
         // binding, a host texture on image unit 0.
         add("shader storage buffers", [] {
             glBindBufferRange(phg::kShaderStorageBuffer, 1, ownBuffer(), 0, 16);
+            glBindBufferBase(phg::kShaderStorageBuffer, 3, ownBuffer());
             glBindBuffer(phg::kShaderStorageBuffer, ownBuffer());
         });
         add("image unit 0", [] {
