@@ -171,7 +171,7 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
     ScreenRect bound;  // whole
     if (dynamic_cast<ImmediateFrame*>(&frame)) {
         bound = screenRect(view, record->list.instances.data(), record->list.particleCount(), nullptr,
-                           Footprint::Billboard, Jobs(), &reach);
+                           footprintOf(record->list), Jobs(), &reach);
     }
     narrowDepthRead(frame, bound, view.width, view.height);
     addPassReading(frame, kPass, {depth}, color, [this, record, depth, decode, color](PassContext& ctx) {

@@ -39,7 +39,7 @@ using Source = fx::ImmediateView::DepthSource;
 
 const RenderMode kModes[] = {modes::kHard,        modes::kSoft, modes::kSpherical,
                              modes::kSoftQuarter, modes::kMega, modes::kSoftLit,
-                             modes::kSoftClassified, modes::kSoftTiled};
+                             modes::kSoftClassified, modes::kSoftTiled, modes::kSphericalTiled};
 
 
 class ImmediateRendererTest : public LoadedPluginTest {
