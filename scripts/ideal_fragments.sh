@@ -1,22 +1,20 @@
 #!/usr/bin/env bash
 # How far the particle shapes are from perfect (README, "How far the shapes are from perfect").
-# Runs fxbench three times over the same frames, each with copies of the shaders read through
+# Runs fxbench over the same frames, each time with copies of the shaders read through
 # CUBE_SHADER_DIR (a measurement aid only; the copies live in a temporary folder):
 # `particle_fragments` counts what is not discarded, so
 #   drawn:   soft without its early out on an empty atlas texel: what its shape rasterises
 #            (spheres as shipped: they discard outside the outline and any coverage of 0);
 #   alpha:   the same, soft with its early out, spheres also discarding atlas alpha 0: the ideal;
 #   visible: spheres also discarding a chord wholly behind the scene; soft also discarding a
-#            fade of 1 (no geometry within its softness): what soft must fetch the scene depth
-#            for, the ceiling of any fade classification;
-#   fetched: soft+classify (FadePyramid.h) with the fragments it skips discarded: those that
-#            still fetch the scene depth (the pyramid's own samples, written in the same pass,
-#            taken off).
+#            fade of 1 (no geometry within its softness): what soft needs the scene depth for
+#            (soft fetches it at every fragment with smoke: the alpha column);
 # and, for spheres, whose fetch comes before their discards (so those are taken out of these copies):
-#   sphere-all:     spherical: every fragment its shape rasterises fetches;
-#   sphere-fetched: spherical+classify with the fragments it skips discarded (pyramid taken off);
-#   sphere-need:    spherical as shipped, also discarding a chord the scene does not clip: what
-#                   needs the fetch, the ceiling of any classification of spheres.
+#   sphere-all:  spherical: every fragment its shape rasterises fetches;
+#   sphere-need: spherical as shipped, also discarding a chord the scene does not clip: what
+#                needs the fetch.
+# (Fade classification, API 2.2-2.3, skipped some of the fetches the two columns apart; it was
+# removed in 2.4: on the GPU it cost more than it saved.)
 #   scripts/ideal_fragments.sh [fxbench options...]   (default: the standard scene, 1 round;
 #                                                      fxbench is $FXBENCH, default ./build/bin/fxbench)
 set -euo pipefail
@@ -39,12 +37,8 @@ edits = {
          "if (d2 >= r2 || texel.a <= 0.0) discard;"),
     ],
 }
-edits["fetched"] = [("fs_particles_soft.glsl", "    float fade = 1.0;\n",
-                     "    if (!nearScene) discard;\n    float fade = 1.0;\n")]
 edits["sphere-all"] = [("fs_particles_spherical.glsl", "    if (d2 >= r2) discard;\n", ""),
                        ("fs_particles_spherical.glsl", "    if (coverage == 0.0) discard;\n", "")]
-edits["sphere-fetched"] = edits["sphere-all"] + [
-    ("fs_particles_spherical.glsl", "    float sceneZ = 3.0e38;\n", "    if (!nearScene) discard;\n    float sceneZ = 3.0e38;\n")]
 edits["sphere-need"] = [("fs_particles_spherical.glsl", "    float visible = clamp(",
                          "    if (sceneZ >= tMid + halfDepth) discard;\n    float visible = clamp(")]
 edits["visible"] = edits["alpha"] + [
@@ -62,10 +56,8 @@ for variant in drawn alpha visible; do
     CUBE_SHADER_DIR="$work/$variant" "$fxbench" --modes soft,soft-quads,spherical,spherical-quads "${args[@]}" \
         --json "$work/$variant.json" >/dev/null
 done
-CUBE_SHADER_DIR="$work/fetched" "$fxbench" --modes soft+classify "${args[@]}" --json "$work/fetched.json" >/dev/null
-for variant in sphere-all:spherical sphere-fetched:spherical+classify sphere-need:spherical; do
-    CUBE_SHADER_DIR="$work/${variant%%:*}" "$fxbench" --modes "${variant#*:}" "${args[@]}" \
-        --json "$work/${variant%%:*}.json" >/dev/null
+for variant in sphere-all sphere-need; do
+    CUBE_SHADER_DIR="$work/$variant" "$fxbench" --modes spherical "${args[@]}" --json "$work/$variant.json" >/dev/null
 done
 
 python3 - "$work" <<'EOF'
@@ -84,23 +76,11 @@ bad = [m for m in runs["drawn"] if not runs["drawn"][m] >= runs["alpha"][m] >= r
 if bad or not any(runs["drawn"].values()):
     sys.exit(f"ideal_fragments.sh: counts not falling from column to column (or all 0): {bad}")
 
-# The fade pyramid's samples (FadePyramid::build): level 0 a texel per 4 x 4 pixels, padded so
-# that each level up halves exactly, down to at most 4 x 4.
-fetched = json.load(open(f"{work}/fetched.json"))
-w, h = fetched["size"]
-top, levels = [(w + 3) // 4, (h + 3) // 4], 1
-while max(top) > 4:
-    top, levels = [(top[0] + 1) // 2, (top[1] + 1) // 2], levels + 1
-pyramid = sum((top[0] << (levels - 1 - l)) * (top[1] << (levels - 1 - l)) for l in range(levels))
-classified = fetched["modes"][0]["particle_fragments"] - pyramid
-print(f"\nsoft+classify: {classified:,.0f} fragments fetch the scene depth, of {runs['alpha']['soft']:,.0f} with "
-      f"smoke ({runs['visible']['soft']:,.0f} need it)")
-if not runs["visible"]["soft"] <= classified <= runs["alpha"]["soft"]:
-    sys.exit("ideal_fragments.sh: classification fetches fewer than need it, or more than soft does")
-sphere = {v: json.load(open(f"{work}/sphere-{v}.json"))["modes"][0]["particle_fragments"] for v in ("all", "fetched", "need")}
-sphere["fetched"] -= pyramid
-print(f"spherical+classify: {sphere['fetched']:,.0f} fragments fetch the scene depth, of {sphere['all']:,.0f} spherical "
-      f"rasterises ({sphere['need']:,.0f} need it: a chord the scene clips)")
-if not sphere["need"] <= sphere["fetched"] <= sphere["all"]:
-    sys.exit("ideal_fragments.sh: spheres' classification fetches fewer than need it, or more than spherical does")
+soft = runs["alpha"]["soft"], runs["visible"]["soft"]
+print(f"\nsoft: {soft[0]:,.0f} fragments with smoke fetch the scene depth ({soft[1]:,.0f} need it: a fade below 1)")
+sphere = {v: json.load(open(f"{work}/sphere-{v}.json"))["modes"][0]["particle_fragments"] for v in ("all", "need")}
+print(f"spherical: {sphere['all']:,.0f} fragments fetch the scene depth ({sphere['need']:,.0f} need it: a chord the "
+      f"scene clips)")
+if not sphere["need"] <= sphere["all"] or not sphere["all"]:
+    sys.exit("ideal_fragments.sh: spheres' fragments that need the fetch outnumber those that fetch (or none fetch)")
 EOF

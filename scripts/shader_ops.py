@@ -47,15 +47,6 @@ PROGRAMS = [
     ("hard, lit", "fs_particles_hard.glsl", ["FX_LIT"], 42, 1),
     ("soft, power 1, lit", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_LIT"], 52, 2),
     ("spherical, lit", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_LIT"], 80, 2),
-    # Fade classification (FadePyramid.h): both sides of the branch count; a fragment whose block
-    # says its fade is 1 skips the fetch and the fade, about 15 of these operations.
-    ("soft, power 1, fade mask", "fs_particles_soft.glsl", ["FX_POWER_STEPS 2", "FX_FADE_MASK"], 35, 2),
-    # Spheres under it: a fragment whose block says the scene lies past the sphere skips the fetch.
-    ("spherical, fade mask", "fs_particles_spherical.glsl", ["FX_SPHERICAL", "FX_FADE_MASK"], 64, 2),
-    # The fade pyramid's passes: level 0 per 4 x 4 view pixels (a loop of four gathers: its body
-    # counts once), each level above per texel of its own (four fetches and a size query).
-    ("fade pyramid: level 0", "fs_particles_fade_pyramid.glsl", [GATHER, "FX_GATHER", "FX_FADE_PYRAMID_FIRST"], 46, 1),
-    ("fade pyramid: a level up", "fs_particles_fade_pyramid.glsl", [], 13, 5),
     # Quarter res's fixed passes as a GL 4 context builds them (ProgramCache::Key::defines): the
     # depth downsample (per half-res texel), the composite (per pixel of its tiles; the counts
     # take every side of its branches: a smoke-free pixel stops after the first fetch, one

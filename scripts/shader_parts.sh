@@ -88,34 +88,8 @@ variants["soft-fetch-empty"] = [
 # chosen for the two fetches' overlap and has not been timed against it.
 variants["sphere-empty-before-fetch"] = [
     ("fs_particles_spherical.glsl",
-     "#else\n    float sceneZ = sceneDepthAt(gl_FragCoord.xy);\n#endif\n    if (d2 >= r2) discard;\n",
-     "#else\n    if (d2 >= r2 || texel.a == 0.0) discard;\n    float sceneZ = sceneDepthAt(gl_FragCoord.xy);\n"
-     "#endif\n    if (d2 >= r2) discard;\n")]
-# Fade classification (soft+classify, spherical+classify) without its mask: every block marked,
-# so every fragment fetches as soft's (spherical's) do. Its pass time less soft's is the
-# pyramid's and the branch's cost; against soft+classify's own, what the skipped fetches save
-# (and the vertices' reads cost).
-variants["classify-no-mask"] = [
-    ("vs_particles.glsl", "void fadeMaskOf(vec2 ndcLo, vec2 ndcHi, float depth) {\n",
-     "void fadeMaskOf(vec2 ndcLo, vec2 ndcHi, float depth) {\n    return;\n")]
-# Fade classification with a 32 x 32 mask (1,024 bits in 32 flat words) instead of 16 x 16: the
-# same picture, one pyramid level finer, so fewer fetches (1920x1080, standard: soft 3,088,430 ->
-# 2,272,200, spheres 6,294,580 -> 5,439,220; fill: 28,925,760 -> 17,747,660 and 71,075,560 ->
-# 64,865,960), for four times the vertices' pyramid reads (llvmpipe: soft+classify's pass +10 %).
-# Against soft+classify's own time: whether a finer mask pays on the GPU.
-def mask32(fragment):
-    return [(fragment, "    uint word = vFadeMask[(block.y >> 1) & 7u];\n", "    uint word = vFadeMask[block.y & 31u];\n"),
-            (fragment, "any(greaterThan(block, uvec2(15u))) || ((word >> ((block.x + 16u * block.y) & 31u)) & 1u) != 0u",
-             "any(greaterThan(block, uvec2(31u))) || ((word >> (block.x & 31u)) & 1u) != 0u")]
-variants["classify-mask-32"] = [
-    ("particles_varyings.glsl", "flat FX_VARYING uint vFadeMask[8];", "flat FX_VARYING uint vFadeMask[32];"),
-    ("vs_particles.glsl", "    for (int i = 0; i < 8; ++i) vFadeMask[i] = 0xFFFFFFFFu;",
-     "    for (int i = 0; i < 32; ++i) vFadeMask[i] = 0xFFFFFFFFu;"),
-    ("vs_particles.glsl", "while (level < uPyramidTop && any(greaterThan((b >> level) - (a >> level), ivec2(15)))) ++level;",
-     "while (level < uPyramidTop && any(greaterThan((b >> level) - (a >> level), ivec2(31)))) ++level;"),
-    ("vs_particles.glsl", "    if (any(greaterThan(b - a, ivec2(15)))) return;", "    if (any(greaterThan(b - a, ivec2(31)))) return;"),
-    ("vs_particles.glsl", "vFadeMask[y >> 1] &= ~(1u << uint(x + 16 * (y & 1)));", "vFadeMask[y] &= ~(1u << uint(x));"),
-] + mask32("fs_particles_soft.glsl") + mask32("fs_particles_spherical.glsl")
+     "    float sceneZ = sceneDepthAt(gl_FragCoord.xy);\n    if (d2 >= r2) discard;\n",
+     "    if (d2 >= r2 || texel.a == 0.0) discard;\n    float sceneZ = sceneDepthAt(gl_FragCoord.xy);\n")]
 # The fragment shader reduced to one blended write of nearly nothing: what is left of a pass is
 # its vertices, rasterisation, varyings and blending. Against the pass as it is: the fragment
 # shader's own cost (spherical's pass is 3.681 ms against hard's 1.205 on the H200, with 1.34
@@ -141,7 +115,7 @@ fxbench_with() {
         { echo "shader_parts.sh: build first (./run.sh or cmake --build build)" >&2; exit 1; }
     # An empty CUBE_SHADER_DIR means the shaders built into fxbench (engine_stub/gl/Paths.cpp).
     [ "$variant" = now ] || shaderDir=$(cd "$parts/$variant" && pwd)
-    CUBE_SHADER_DIR="$shaderDir" "${fxbench[@]}" --modes hard,soft,spherical,soft+quarter-always,soft+classify,spherical+classify "$@"
+    CUBE_SHADER_DIR="$shaderDir" "${fxbench[@]}" --modes hard,soft,spherical,soft+quarter-always "$@"
 }
 
 # Step 2 (bash only): fxbench with its built-in shaders ("now") and with each copy in $1, twice,

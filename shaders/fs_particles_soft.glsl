@@ -18,19 +18,7 @@ void main() {
     // Where the atlas alone says the output is 0 (the empty rim inside a trimmed polygon), the
     // scene-depth fetch, the pass's costliest part on a GPU, is not made.
     if (texel.a == 0.0) discard;
-#ifdef FX_FADE_MASK
-    // Fade classification: outside the blocks its vertices marked, the fade is exactly 1 and
-    // the scene depth is not fetched.
-    // The map gives the block plus 1, so that converting to an integer (which rounds toward 0) and
-    // taking 1 away leaves a fragment before the first block out of range as one past the last.
-    uvec2 block = uvec2(ivec2(gl_FragCoord.xy * vMaskMap.xy + vMaskMap.zw)) - 1u;
-    uint word = vFadeMask[(block.y >> 1) & 7u];
-    bool nearScene = any(greaterThan(block, uvec2(15u))) || ((word >> ((block.x + 16u * block.y) & 31u)) & 1u) != 0u;
-#else
-    const bool nearScene = true;
-#endif
-    float fade = 1.0;
-    if (nearScene) fade = softFade(sceneDepthTexelAt(gl_FragCoord.xy), vFadeLine);
+    float fade = softFade(sceneDepthTexelAt(gl_FragCoord.xy), vFadeLine);
     float coverage = texel.a * fade;  // the near fade is in vTint (a billboard lies at one depth)
 #ifdef FX_LIT
     texel.rgb = texel.bbb * smokeLight(sunCosine(billboardNormal(texel, vTurn)), texel.a, vSunLight, vPhase);

@@ -38,18 +38,7 @@ void main() {
     vec2 uv = vec2(vAtlasBase.x + offset.x * vAtlasMap.x + offset.y * vAtlasMap.y,
                    vAtlasBase.y + offset.x * vAtlasMap.z + offset.y * vAtlasMap.w);  // sphereAtlasMap
     vec4 texel = texture(uAtlas, uv);
-#ifdef FX_FADE_MASK
-    // Fade classification (vs_particles.glsl): outside the blocks its vertices marked, the scene
-    // lies past the sphere's deepest point, so the chord ends inside it and the scene depth is
-    // not fetched (3.0e38 ends it there the same).
-    uvec2 block = uvec2(ivec2(gl_FragCoord.xy * vMaskMap.xy + vMaskMap.zw)) - 1u;
-    uint word = vFadeMask[(block.y >> 1) & 7u];
-    bool nearScene = any(greaterThan(block, uvec2(15u))) || ((word >> ((block.x + 16u * block.y) & 31u)) & 1u) != 0u;
-    float sceneZ = 3.0e38;
-    if (nearScene) sceneZ = sceneDepthAt(gl_FragCoord.xy);
-#else
     float sceneZ = sceneDepthAt(gl_FragCoord.xy);
-#endif
     if (d2 >= r2) discard;
 
     float halfDepth = sqrt((r2 - d2) * invLen2);

@@ -18,13 +18,6 @@ flat FX_VARYING vec2 vTurn;     // (cos, sin) of the particle's angle
 flat FX_VARYING vec4 vAtlasMap;  // spherical: the atlas coordinate as an affine map of the offset (sphereAtlasMap)
 flat FX_VARYING vec2 vAtlasBase;
 flat FX_VARYING vec3 vFadeLine;  // billboards: softFadeLine at the particle's depth
-#ifdef FX_FADE_MASK
-// Soft: per block of 16 x 16 fade-pyramid blocks, whether the scene may come within the softness
-// (two rows a word: bit x + 16 (y & 1) of word y / 2), the block (x, y) + 1 =
-// floor(gl_FragCoord.xy * vMaskMap.xy + vMaskMap.zw), 1 .. 16 each.
-flat FX_VARYING uint vFadeMask[8];
-flat FX_VARYING vec4 vMaskMap;
-#endif
 #ifdef FX_LIT
 FX_VARYING vec3 vSunLight;      // sun colour x transmittance through the smoke toward the sun
 FX_VARYING float vPhase;        // Henyey-Greenstein x 4 pi toward the eye

@@ -46,90 +46,6 @@ uniform vec4 uShapeInfo[16];   // spherical: [frame][bucket] (inradius, area / 4
 #define FX_VARYING out
 #include "particles_varyings.glsl"
 
-#ifdef FX_FADE_MASK
-// Fade classification (FadePyramid.h): which parts of a soft billboard or a sphere have no
-// geometry within their reach. A billboard lies at one depth, so on the screen it stays inside the
-// box of its view-plane square (edge 2 extent around the centre, extent = radius (|cos| + |sin|) of
-// its angle: the rotated polygon's reach, and the unrotated quad's), grown by a pixel, and its
-// fade is 1 wherever the scene lies at least its softness behind it. A sphere stays inside the
-// box of its slope range (slopeRange, which the vertex shader draws within), and its chord ends
-// inside it wherever the scene lies at least its radius behind its centre: no exit point is
-// deeper. The lowest pyramid level on which that box spans at most 16 x 16 blocks is read, block
-// by block: where a block's nearest scene depth lies past that limit (a margin of 2^-12 of it for
-// rounding), every pixel of the block has what it would have with the scene read (a fade of
-// exactly 1, an unclipped chord) and its bit stays clear. A block past the box keeps its bit, and
-// so does every block of a particle behind the camera, one no level holds in 16 x 16 blocks, or
-// one under kClassifyPixels across, whose few fragments would not repay the reads: those
-// fragments fetch the depth as without classification. Only a triangle's last vertex reads the
-// blocks: the renderer draws under GL_LAST_VERTEX_CONVENTION (GlStateGuard), and a fan's or
-// strip's first two vertices end no triangle; were the first vertex to provoke, its mask would
-// keep every bit (no fetch skipped).
-uniform sampler2D uFadePyramid;  // level L: min linear depth per 4 2^L x 4 2^L view pixels
-uniform vec4 uMaskNdc;           // level-0 block coordinate of a point of NDC: ndc * xy + zw
-uniform vec4 uMaskWindow;        // and of a window point: gl_FragCoord * xy + zw
-uniform int uPyramidTop;         // the pyramid's last level
-const float kClassifyPixels = 48.0;
-
-// The mask of a particle whose fragments lie inside the NDC box [ndcLo, ndcHi] (where they lie
-// past it, they fetch) and whose fetch may be skipped where the scene lies at `depth` or deeper.
-void fadeMaskOf(vec2 ndcLo, vec2 ndcHi, float depth) {
-    vec2 lo = clamp(ndcLo * uMaskNdc.xy + uMaskNdc.zw - 0.25, -1.0e6, 1.0e6);
-    vec2 hi = clamp(ndcHi * uMaskNdc.xy + uMaskNdc.zw + 0.25, -1.0e6, 1.0e6);
-    if (max(hi.x - lo.x, hi.y - lo.y) < 0.25 * kClassifyPixels) return;
-    ivec2 last = textureSize(uFadePyramid, 0) - 1;  // blocks past the view hold no fragment
-    ivec2 a = clamp(ivec2(floor(lo)), ivec2(0), last);
-    ivec2 b = clamp(ivec2(floor(hi)), ivec2(0), last);
-    int level = 0;
-    while (level < uPyramidTop && any(greaterThan((b >> level) - (a >> level), ivec2(15)))) ++level;
-    a >>= level;
-    b >>= level;
-    if (any(greaterThan(b - a, ivec2(15)))) return;
-    float limit = depth * (1.0 + 1.0 / 4096.0);
-    for (int y = 0; y <= b.y - a.y; ++y) {
-        for (int x = 0; x <= b.x - a.x; ++x) {
-            if (texelFetch(uFadePyramid, a + ivec2(x, y), level).r >= limit) {
-                vFadeMask[y >> 1] &= ~(1u << uint(x + 16 * (y & 1)));
-            }
-        }
-    }
-    float scale = exp2(-float(level));
-    vMaskMap = vec4(uMaskWindow.xy * scale, uMaskWindow.zw * scale - vec2(a) + 1.0);  // block + 1
-}
-
-// Every bit set (every fragment fetches) until fadeMaskOf clears some.
-void fadeMaskAll() {
-    for (int i = 0; i < 8; ++i) vFadeMask[i] = 0xFFFFFFFFu;
-    vMaskMap = vec4(0.0, 0.0, -32.0, -32.0);  // every fragment outside the 16 x 16 blocks
-}
-
-#ifdef FX_SPHERICAL
-// A sphere: view-space `centre`, `radius`, its slope range sx, sy (what it draws within).
-void fadeMask(vec3 centre, float radius, vec2 sx, vec2 sy) {
-    fadeMaskAll();
-    // Slopes are rays of a perspective projection (w = depth): only there is the box known.
-    float depth = -centre.z;
-    if (gl_VertexID < 2 || !(depth > 0.0) || uProj[3][3] != 0.0) return;
-    vec2 ndcLo = vec2(1.0e30), ndcHi = vec2(-1.0e30);
-    for (int i = 0; i < 4; ++i) {
-        vec2 s = vec2((i & 1) == 0 ? sx.x : sx.y, (i & 2) == 0 ? sy.x : sy.y);
-        vec4 c = uProj * vec4(s * depth, -depth, 1.0);
-        ndcLo = min(ndcLo, c.xy / c.w);
-        ndcHi = max(ndcHi, c.xy / c.w);
-    }
-    fadeMaskOf(ndcLo, ndcHi, depth + radius);
-}
-#else
-// A billboard: view-space `centre`, the half edge `extent` of its view-plane square.
-void fadeMask(vec3 centre, float extent) {
-    fadeMaskAll();
-    vec4 c = uProj * vec4(centre, 1.0);
-    if (gl_VertexID < 2 || !(c.w > 0.0)) return;
-    vec2 reach = extent * (abs(uProj[0].xy) + abs(uProj[1].xy));
-    fadeMaskOf((c.xy - reach) / c.w, (c.xy + reach) / c.w, -centre.z + 1.0 / uSoftScale);
-}
-#endif
-#endif
-
 // The trimmed polygon's vertex gl_VertexID for a particle whose texture maps `texelsPerPixel`
 // texels of level 0 onto a pixel (its LOD bucket: TrimmedShapes.h), and that polygon's index
 // into uShapes' [frame][bucket] table.
@@ -205,9 +121,6 @@ void main() {
     float depth = -centre.z;
     vec2 sx = slopeRange(centre.x, depth, radius, uSlopeMax.x, kSnapMarginPixels * uPixelSlope);
     vec2 sy = slopeRange(centre.y, depth, radius, uSlopeMax.y, kSnapMarginPixels * uPixelSlope);
-#ifdef FX_FADE_MASK
-    fadeMask(centre, radius, sx, sy);
-#endif
     float quadDepth = clamp(depth - radius, uNear * 1.01, uFar * 0.99);
     vec2 corner = aCorner;
     if (uTrimmed != 0) {
@@ -279,9 +192,6 @@ void main() {
     vec4 fog = particleFog(-viewPos.z);
     particleTint(ramp, fade * nearFadeFactor(-viewPos.z), fog, vTint, vFogAdd);
     vFadeLine = softFadeLine(-viewPos.z);  // and so is its soft fade's line
-#ifdef FX_FADE_MASK
-    fadeMask((uView * vec4(aPosSize.xyz, 1.0)).xyz, radius * (abs(vTurn.x) + abs(vTurn.y)));
-#endif
 #endif
 #ifdef FX_LIT
 #ifdef FX_SPHERICAL

@@ -10,7 +10,7 @@ namespace fxbench {
 const std::vector<Mode>& allModes() {
     using fx::Technique;
     // name, setup, effects, technique, prepassEqual, quarterRes, reference[, shape, lit, hostZBuffer,
-    // linearDepth, quarterResAlways]
+    // linearDepth, quarterResAlways, tiled]
     static const std::vector<Mode> modes = {
         {"nofx", "No particles (bare engine)", false, Technique::Hard, false, false, "nofx"},
         {"hard", "Hard particles", true, Technique::Hard, false, false, "hard"},
@@ -26,25 +26,18 @@ const std::vector<Mode>& allModes() {
          "soft", fx::ParticleShape::Trimmed, false, false, false, true},
         {"soft+equal+quarter", "Soft particles, prepass EQUAL + 1/4-size texture", true, Technique::Soft, true,
          true, "soft"},
-        // The depth fetch skipped where no geometry lies within the softness (FadePyramid.h).
-        {"soft+classify", "Soft particles, fade classified per block of each billboard", true, Technique::Soft, false,
-         false, "soft", fx::ParticleShape::Trimmed, false, false, false, false, true},
         // Shaded per 16 px tile by a compute shader (TiledPath.h): one depth read and one blend per pixel.
         {"hard+tiled", "Hard particles, shaded per screen tile (compute)", true, Technique::Hard, false, false, "hard",
-         fx::ParticleShape::Trimmed, false, false, false, false, false, true},
+         fx::ParticleShape::Trimmed, false, false, false, false, true},
         {"soft+tiled", "Soft particles, shaded per screen tile (compute)", true, Technique::Soft, false, false, "soft",
-         fx::ParticleShape::Trimmed, false, false, false, false, false, true},
+         fx::ParticleShape::Trimmed, false, false, false, false, true},
         {"spherical", "Spherical billboards", true, Technique::Spherical, false, false, "spherical"},
         {"spherical-quads", "Spherical billboards drawn as full quads (untrimmed)", true, Technique::Spherical, false,
          false, "spherical", fx::ParticleShape::Quad},
         {"spherical+quarter", "Spherical billboards, 1/4-size texture", true, Technique::Spherical, false, true,
          "spherical"},
-        // The depth fetch skipped where the scene lies past each sphere's deepest point.
-        {"spherical+classify", "Spherical billboards, chord clipping classified per block of each sphere", true,
-         Technique::Spherical, false, false, "spherical", fx::ParticleShape::Trimmed, false, false, false, false,
-         true},
         {"spherical+tiled", "Spherical billboards, shaded per screen tile (compute)", true, Technique::Spherical,
-         false, false, "spherical", fx::ParticleShape::Trimmed, false, false, false, false, false, true},
+         false, false, "spherical", fx::ParticleShape::Trimmed, false, false, false, false, true},
         // Lit smoke: normals, sun, scattering and the opacity map; each its own
         // reference (the cost of light is read against the unlit row above it).
         {"hard-lit", "Hard particles, lit and self-shadowed", true, Technique::Hard, false, false, "hard-lit",
@@ -86,6 +79,11 @@ namespace {
 // Modes of earlier builds whose rendering feature was removed: named in the refusal so a script
 // written for them learns why rather than only that the name is unknown.
 const char* removedModeReason(const std::string& name) {
+    if (name == "soft+classify" || name == "spherical+classify") {
+        return "fade classification was removed in API 2.4 (on an H200 its depth pyramid and masks made the "
+               "particle pass 1.27x longer than without); soft+tiled and spherical+tiled read the depth once per "
+               "pixel";
+    }
     if (name == "soft+mixed") {
         return "mixed resolution was removed in API 2.1 (on a GPU its edge pass cost more than quarter res "
                "saves, for no better image)";
@@ -135,15 +133,12 @@ void applyMode(cube::Game& game, const Mode& mode) {
     ro.tiled = mode.tiled;
     plugin->setRenderOptions(ro);
     plugin->setParticleShape(mode.shape);
-    const fx::FadeClassification classification =
-        mode.classify ? fx::FadeClassification::On : fx::FadeClassification::Off;
-    const bool reclassified = plugin->fadeClassification() != classification;
-    plugin->setFadeClassification(classification);
     // The engine's rule for a window key or a panel switch (Render::handleKeys, the panel): a
     // switch that may reach programs the old one did not is followed by prepareGl, between
     // frames, so no program is built while the next frame is declared (nor inside a timed render).
     if (ro.techniqueOverride != was.techniqueOverride || ro.quarterRes != was.quarterRes ||
-        ro.quarterResAlways != was.quarterResAlways || ro.bilinearUpsample != was.bilinearUpsample || ro.tiled != was.tiled || reclassified) {
+        ro.quarterResAlways != was.quarterResAlways || ro.bilinearUpsample != was.bilinearUpsample ||
+        ro.tiled != was.tiled) {
         (void)plugin->prepareGl(nullptr);  // a failure is logged once by the plugin
     }
     if (mode.lit) {

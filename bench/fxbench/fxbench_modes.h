@@ -36,10 +36,6 @@ struct Mode {
     bool linearDepth = false;
     /// Quarter res in every view (RenderOptions::quarterResAlways) instead of only where it pays.
     bool quarterResAlways = false;
-    /// Fade classification (Plugin::setFadeClassification, `soft+classify`,
-    /// `spherical+classify`): soft billboards and spheres skip the scene-depth fetch where the
-    /// fade pyramid says their fade is 1 or their chord ends inside them.
-    bool classify = false;
     /// The tiled compute path (RenderOptions::tiled, `hard+tiled`, `soft+tiled`,
     /// `spherical+tiled`): particles shaded per 16 px tile, one scene-depth read and one blend
     /// per pixel.
@@ -47,10 +43,10 @@ struct Mode {
 };
 
 /// Every mode, in table order: nofx, hard, soft, soft-quads, soft+equal, soft+quarter,
-/// soft+quarter-always, soft+equal+quarter, soft+classify (against soft: the same picture),
+/// soft+quarter-always, soft+equal+quarter,
 /// hard+tiled and soft+tiled (against hard and soft: the raster picture up to rounding),
-/// spherical, spherical-quads, spherical+quarter, spherical+classify (against spherical: the same
-/// picture), spherical+tiled (against spherical: up to rounding), hard-lit, soft-lit,
+/// spherical, spherical-quads, spherical+quarter, spherical+tiled (against spherical: up to
+/// rounding), hard-lit, soft-lit,
 /// spherical-lit, mega (image error
 /// against spherical: the same particles as exact spheres), mega-lit (against spherical-lit),
 /// soft-zbuffer and spherical-zbuffer (the immediate path on the engine's z-buffer, against

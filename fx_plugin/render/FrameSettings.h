@@ -12,9 +12,6 @@ struct FrameSettings {
     RenderOptions options;  ///< technique override, quarter res, bilinear upsample (setRenderOptions)
     ParticleShape shape = ParticleShape::Trimmed;  ///< trimmed polygons or full quads
     LightState light;  ///< the scene light (LightState::on false: unlit)
-    /// Soft billboards at full res skip the scene-depth fetch where the fade pyramid says their
-    /// fade is 1 (FadePyramid.h); the picture is the same
-    FadeClassification classification = FadeClassification::Off;
 };
 
 }  // namespace fx

@@ -64,19 +64,6 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
         glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &depthDecode.depthSize.x);
         glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &depthDecode.depthSize.y);
     }
-    // Fade classification (FadePyramid.h): the pyramid first, in this pass, whose time includes
-    // it; it sets its own draw state, so before the particles' below. Full res only: at quarter
-    // res the soft programs read the plugin's half-res depth.
-    bool fadeMask = false;
-    if (record.settings.classification == FadeClassification::On && !in.quarterRes && in.sceneDepth &&
-        list.needsSceneDepth) {
-        bool reads = false;  // a soft or spherical batch: their fragments read the scene depth
-        for (const DrawBatch& batch : list.batches) {
-            reads = reads || batch.technique == Technique::Soft || batch.technique == Technique::Spherical;
-        }
-        fadeMask = reads && fadePyramid_.build(in.sceneDepth, depthDecode, glm::ivec2(view.width, view.height),
-                                              depthSampler_, kSceneDepthUnit, kFadePyramidUnit);
-    }
     glActiveTexture(GL_TEXTURE0);
     ramp_.upload();
     stream_.upload(list.instances.data(), list.particleCount(), jobs_);
@@ -107,9 +94,8 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
         // program it built (unlit if the lit build failed, the general soft build if the power's
         // own did); nothing here compiles (the cache was filled by prepare() or before the
         // passes: ParticleRenderer::ensureDrawPrograms).
-        const ProgramCache::Key key =
-            programs.filter(ProgramCache::drawKey(batch.technique, in.quarterRes, batch.contrastPower,
-                                                  record.lit() && batch.lighting.lit(batch.blend), fadeMask));
+        const ProgramCache::Key key = programs.filter(ProgramCache::drawKey(
+            batch.technique, in.quarterRes, batch.contrastPower, record.lit() && batch.lighting.lit(batch.blend)));
         const ParticleProgram* found = programs.find(key);
         if (!found) continue;
         const ParticleProgram& p = *found;
@@ -166,18 +152,6 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
         glUniform1i(p.ramp, kRampUnit);
         glUniform1i(p.sceneDepth, kSceneDepthUnit);
         setSceneDepthDecode(p.depthDecode, depthDecode);
-        if (key.fadeMask) {
-            // Level-0 blocks of the view's pixels p = window - drawOrigin, 4 x 4 each; NDC to
-            // window through the viewport the pass bound.
-            const glm::vec2 origin(depthDecode.drawOrigin);
-            const glm::vec2 vpOrigin{float(viewport[0]), float(viewport[1])};
-            const glm::vec2 vpHalf{0.5f * float(viewport[2]), 0.5f * float(viewport[3])};
-            const glm::vec2 ndcOffset = (vpHalf + vpOrigin - origin) * 0.25f;
-            glUniform1i(p.fadePyramid, kFadePyramidUnit);
-            glUniform4f(p.maskNdc, vpHalf.x * 0.25f, vpHalf.y * 0.25f, ndcOffset.x, ndcOffset.y);
-            glUniform4f(p.maskWindow, 0.25f, 0.25f, -origin.x * 0.25f, -origin.y * 0.25f);
-            glUniform1i(p.pyramidTop, fadePyramid_.topLevel());
-        }
         setFogUniforms(p.fog, view.fog);
         // Spherical particles trim to their frame's polygon clipped to the disc (the octagon
         // around the sphere where its bounds do not hold: vs_particles.glsl).

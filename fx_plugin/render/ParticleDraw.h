@@ -13,7 +13,6 @@
 
 #include "ColorRampTexture.h"
 #include "DrawList.h"
-#include "FadePyramid.h"
 #include "FrameSettings.h"
 #include "GlStateGuard.h"
 #include "InstanceStream.h"
@@ -55,7 +54,7 @@ struct DrawInputs {
 class ParticleDraw {
 public:
     /// Texture units of the particle draws (all below GlStateGuard::kTextureUnits).
-    static constexpr int kAtlasUnit = 0, kRampUnit = 1, kSceneDepthUnit = 2, kOpacityUnit = 3, kFadePyramidUnit = 4;
+    static constexpr int kAtlasUnit = 0, kRampUnit = 1, kSceneDepthUnit = 2, kOpacityUnit = 3;
 
     /// Draws with the programs of `programs`, which must outlive this.
     explicit ParticleDraw(ProgramCache& programs) : programs_(&programs) {}
@@ -80,8 +79,6 @@ public:
     const SmokeAtlas& atlas() const { return atlas_; }
     ColorRampTexture& ramp() { return ramp_; }
     InstanceStream& stream() { return stream_; }
-    /// Fade classification's pyramid (its programs bound by the renderer with the pass programs).
-    FadePyramid& fadePyramid() { return fadePyramid_; }
     const InstanceStream& stream() const { return stream_; }
     /// The samplers draw() reads the atlas and the scene depth through (the tiled path's too).
     const ClampSampler& atlasSampler() const { return atlasSampler_; }
@@ -105,7 +102,6 @@ private:
     std::vector<glm::vec4> discTable_;   ///< the same for spheres (TrimmedShapes::Clip::Disc)
     std::vector<glm::vec4> discInfo_;    ///< and their (inradius, area share)
     BillboardReach reach_;               ///< the billboards' reach table (its lodScale is the view's)
-    FadePyramid fadePyramid_;            ///< fade classification: built per soft draw at full res
 };
 
 }  // namespace fx

@@ -98,27 +98,21 @@ bool ParticleRenderer::shadersChanged() {
 void ParticleRenderer::bindPassPrograms() {
     quarter_.programs().bind(draw_.programs());
     opacity_.bind(draw_.programs());
-    draw_.fadePyramid().bind(draw_.programs());
     if (TiledPath::available()) tiled_.bind(draw_.programs());
 }
 
 
-bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps, bool quarterRes, bool fadeMask,
-                               bool tiled) {
+bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSteps, bool quarterRes, bool tiled) {
     const bool ready = ensureLoaded();
     if (ready) {
         // The soft programs of the contrast powers the loaded reactions draw with, now rather
         // than at their first visible particle (each key is tried once: reported once); with
-        // quarter res on, the quarter-res builds too; with fade classification, the mask's.
+        // quarter res on, the quarter-res builds too.
         GlStateGuard guard;
         std::vector<ProgramCache::Key> keys;
         if (quarterRes) keys = ProgramCache::halfResKeys();
-        if (fadeMask) {
-            const std::vector<ProgramCache::Key> mask = ProgramCache::fadeMaskKeys();
-            keys.insert(keys.end(), mask.begin(), mask.end());
-        }
         for (int s : powerSteps) {
-            ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), false, &keys, fadeMask);
+            ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), false, &keys);
             if (quarterRes) ProgramCache::addDrawKeys(Technique::Soft, 0.5f * float(s), true, &keys);
         }
         tiled = tiled && TiledPath::available();
@@ -128,7 +122,6 @@ bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSt
         }
         std::vector<std::string> errors;
         draw_.programs().build(keys, &errors);
-        if (fadeMask) draw_.fadePyramid().bind(draw_.programs());
         if (tiled) tiled_.bind(draw_.programs());
         // A power's build fails for the cause that failed the soft programs above: not told twice.
         reportLoadErrors(errors);
@@ -140,14 +133,8 @@ bool ParticleRenderer::prepare(Diagnostics* out, const std::vector<int>& powerSt
 void ParticleRenderer::ensureDrawPrograms(const ParticleView& record, bool quarterRes, bool tiled) {
     drawKeys_.clear();
     if (tiled) drawKeys_ = ProgramCache::tiledKeys();
-    const bool fadeMask = record.settings.classification == FadeClassification::On && !quarterRes;
-    if (fadeMask) {
-        for (ProgramCache::Program p : {ProgramCache::FadePyramidFirst, ProgramCache::FadePyramidReduce}) {
-            drawKeys_.push_back(ProgramCache::Key::of(p));
-        }
-    }
     for (const DrawBatch& batch : record.list.batches) {
-        ProgramCache::addDrawKeys(batch.technique, batch.contrastPower, quarterRes, &drawKeys_, fadeMask);
+        ProgramCache::addDrawKeys(batch.technique, batch.contrastPower, quarterRes, &drawKeys_);
     }
     bool missing = false;
     for (const ProgramCache::Key& k : drawKeys_) missing = missing || !draw_.programs().tried(k);
@@ -155,7 +142,6 @@ void ParticleRenderer::ensureDrawPrograms(const ParticleView& record, bool quart
     GlStateGuard guard;
     std::vector<std::string> errors;
     const int built = draw_.programs().build(drawKeys_, &errors);
-    if (fadeMask) draw_.fadePyramid().bind(draw_.programs());
     if (tiled) tiled_.bind(draw_.programs());
     if (!frameBuildLogged_) {
         log(LogLevel::Warning, "fx: " + std::to_string(built) +

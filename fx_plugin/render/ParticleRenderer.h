@@ -86,7 +86,7 @@ public:
     /// every problem appended to `out` (the technique that did build still draws). Each distinct
     /// "file:line: message" is logged once.
     bool prepare(Diagnostics* out, const std::vector<int>& powerSteps = {}, bool quarterRes = false,
-                 bool fadeMask = false, bool tiled = false);
+                 bool tiled = false);
 
     /// A shader reload (Renderers::reload, one transaction over every renderer): true, once per
     /// edit, when Config::shaderDir is set, the renderer is loaded and a plugin shader file there

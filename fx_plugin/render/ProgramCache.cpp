@@ -37,8 +37,6 @@ constexpr Source kSources[ProgramCache::VariantCount + ProgramCache::ProgramCoun
     {"vs_particles_fullscreen.glsl", "fs_mega_blur.glsl", "#define FX_MEGA_SHADE 1\n"},
     {"vs_particles_fullscreen.glsl", "fs_mega_composite.glsl", ""},
     {"vs_stateless_particles.glsl", "fs_stateless_particles.glsl", ""},
-    {"vs_particles_fullscreen.glsl", "fs_particles_fade_pyramid.glsl", "#define FX_FADE_PYRAMID_FIRST 1\n"},
-    {"vs_particles_fullscreen.glsl", "fs_particles_fade_pyramid.glsl", ""},
     {"cs_particles_tiled.glsl", "", "#define FX_GENERAL_POWER 1\n"},
     {"vs_particles_tiles.glsl", "fs_particles_tiled_composite.glsl", ""},
     {"cs_particles_tiled.glsl", "", "#define FX_TILED_SETUP 1\n"},
@@ -74,10 +72,6 @@ ParticleProgram locate(GLuint program) {
     p.pixelSlope = glGetUniformLocation(program, "uPixelSlope");
     p.powerWhole = glGetUniformLocation(program, "uPowerWhole");
     p.powerHalf = glGetUniformLocation(program, "uPowerHalf");
-    p.fadePyramid = glGetUniformLocation(program, "uFadePyramid");
-    p.maskNdc = glGetUniformLocation(program, "uMaskNdc");
-    p.maskWindow = glGetUniformLocation(program, "uMaskWindow");
-    p.pyramidTop = glGetUniformLocation(program, "uPyramidTop");
     p.sunView = glGetUniformLocation(program, "uSunView");
     p.sunColor = glGetUniformLocation(program, "uSunColor");
     p.ambient = glGetUniformLocation(program, "uAmbient");
@@ -106,7 +100,7 @@ const ParticleProgram kNone{};
 uint32_t ProgramCache::Key::bits() const {
     static_assert(ProgramCount <= 32, "program takes bits 10-14");
     return uint32_t(variant) | (lit ? 1u << 3 : 0u) | (uint32_t(powerSteps + 1) << 4) | (uint32_t(program) << 10) |
-           (halfRes ? 1u << 15 : 0u) | (fadeMask ? 1u << 16 : 0u);
+           (halfRes ? 1u << 15 : 0u);
 }
 
 std::string ProgramCache::Key::defines() const {
@@ -115,11 +109,10 @@ std::string ProgramCache::Key::defines() const {
     // has ARB_texture_gather (GL 4.0 hardware); declared only then, since a declaration the
     // compiler does not know is a warning on the host's debug output.
     const bool gathers = program == DepthDownsample || program == Composite || program == CompositeBilinear ||
-                         program == MegaComposite || program == FadePyramidFirst;
+                         program == MegaComposite;
     if (gathers && FXGLAD_GL_ARB_texture_gather) d += "#extension GL_ARB_texture_gather : require\n#define FX_GATHER 1\n";
     d += sourceOf(*this).defines;
     if (halfRes) d += "#define FX_HALF_RES_DEPTH 1\n";
-    if (fadeMask) d += "#define FX_FADE_MASK 1\n";
     if (powerSteps >= 0) d += "#define FX_POWER_STEPS " + std::to_string(powerSteps) + "\n";
     if (lit) d += "#define FX_LIT 1\n";
     return d;
@@ -182,24 +175,18 @@ const ParticleProgram& ProgramCache::get(Variant v, bool lit, float contrastPowe
     return p ? *p : kNone;
 }
 
-ProgramCache::Key ProgramCache::drawKey(Technique technique, bool quarterRes, float contrastPower, bool lit,
-                                        bool fadeMask) {
+ProgramCache::Key ProgramCache::drawKey(Technique technique, bool quarterRes, float contrastPower, bool lit) {
     const Variant v = variantFor(technique, quarterRes, contrastPower);
     int whole = 0, half = 0;
     const int steps = v == Soft && halfWholePower(contrastPower, &whole, &half) ? 2 * whole + half : -1;
     // HardLinearDepth is half-res by its defines.
-    return Key{v, lit, steps, Billboard, quarterRes && v != HardLinearDepth,
-               fadeMask && !quarterRes && (v == Soft || v == SoftGeneralPower || v == Spherical)};
+    return Key{v, lit, steps, Billboard, quarterRes && v != HardLinearDepth};
 }
 
 ProgramCache::Key ProgramCache::filter(Key wanted) const {
     // The full-res build reads the half-res depth correctly too (through an identity decode).
     if (wanted.halfRes && !find(Key{wanted.variant, false, -1, Billboard, true})) wanted.halfRes = false;
-    // Without the mask's build the fade is fetched everywhere: the same picture.
-    if (wanted.fadeMask && !find(Key{wanted.variant, false, -1, Billboard, wanted.halfRes, true})) {
-        wanted.fadeMask = false;
-    }
-    if (wanted.lit && !find(Key{wanted.variant, true, -1, Billboard, wanted.halfRes, wanted.fadeMask})) {
+    if (wanted.lit && !find(Key{wanted.variant, true, -1, Billboard, wanted.halfRes})) {
         wanted.lit = false;
     }
     const Key general = wanted.general();
@@ -240,26 +227,11 @@ std::vector<ProgramCache::Key> ProgramCache::tiledKeys() {
     return {Key::of(TiledSetup), Key::of(TiledShade), Key::of(TiledComposite)};
 }
 
-std::vector<ProgramCache::Key> ProgramCache::fadeMaskKeys() {
-    std::vector<Key> keys;
+void ProgramCache::addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys) {
     for (bool lit : {false, true}) {
-        for (Variant v : {Soft, SoftGeneralPower, Spherical}) keys.push_back(Key{v, lit, -1, Billboard, false, true});
-    }
-    for (Program p : {FadePyramidFirst, FadePyramidReduce}) keys.push_back(Key::of(p));
-    return keys;
-}
-
-void ProgramCache::addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys,
-                               bool fadeMask) {
-    for (bool lit : {false, true}) {
-        const Key key = drawKey(technique, quarterRes, contrastPower, lit, fadeMask);
+        const Key key = drawKey(technique, quarterRes, contrastPower, lit);
         addOnce(key.general(), keys);
         if (key.powerSteps >= 0) addOnce(key, keys);
-        if (!key.fadeMask) continue;
-        // The mask's build falls back on the plain one (filter): both are drawable.
-        const Key plain = drawKey(technique, quarterRes, contrastPower, lit);
-        addOnce(plain.general(), keys);
-        if (plain.powerSteps >= 0) addOnce(plain, keys);
     }
 }
 

@@ -3,7 +3,7 @@
 // Key::program names the shader pair: Billboard, the particle draw (below), or one of the fixed
 // programs of the other passes (the quarter-res depth downsample, half-res z-fill and
 // composite's two builds; the opacity map's; the immediate path's depth lineariser; the five
-// mega passes'; the stateless particles'; the fade pyramid's two), whose files and defines are
+// mega passes'; the stateless particles'; the tiled path's three), whose files and defines are
 // in ProgramCache.cpp beside the billboards'.
 // A billboard key is the variant a batch draws with:
 //   variant          the technique's shaders and target kind (vs_particles + ...):
@@ -16,9 +16,6 @@
 //   lit              FX_LIT: particles_common.glsl's smokeLight, for reactions under a scene light
 //   power            FX_POWER_STEPS = 2 contrast_power: Soft with the curve's multiplies folded
 //                    (power 1 draws no curve at all); -1 = no power folded
-//   fadeMask         FX_FADE_MASK: Soft, SoftGeneralPower and Spherical at full res under fade
-//                    classification, skipping the depth fetch where FadePyramid says the fade is 1
-//                    (a sphere's chord ends inside it)
 //   halfRes          FX_HALF_RES_DEPTH: Soft, SoftGeneralPower and Spherical drawn at quarter res,
 //                    reading the plugin's half-res linear depth as it is (no decode); HardLinearDepth
 //                    is quarter res only and always reads it so
@@ -72,8 +69,6 @@ struct ParticleProgram {
     FogUniforms fog;
     int trimmed = -1, shapeBuckets = -1, lodScale = -1, shapes = -1, shapeInfo = -1, pixelSlope = -1;
     int powerWhole = -1, powerHalf = -1;
-    // FX_FADE_MASK only.
-    int fadePyramid = -1, maskNdc = -1, maskWindow = -1, pyramidTop = -1;
     // FX_LIT only.
     int sunView = -1, sunColor = -1, ambient = -1, normalStrength = -1, scattering = -1, anisotropy = -1,
         absorption = -1, shadowed = -1, viewToShadow = -1, opacity = -1;
@@ -98,8 +93,6 @@ public:
         MegaShade,          ///< the same, FX_MEGA_SHADE
         MegaComposite,      ///< vs_particles_fullscreen + fs_mega_composite
         Stateless,          ///< vs_stateless_particles + fs_stateless_particles
-        FadePyramidFirst,   ///< vs_particles_fullscreen + fs_particles_fade_pyramid, FX_FADE_PYRAMID_FIRST
-        FadePyramidReduce,  ///< the same without it
         TiledShade,         ///< cs_particles_tiled (compute: TiledPath.h)
         TiledComposite,     ///< vs_particles_tiles + fs_particles_tiled_composite
         TiledSetup,         ///< cs_particles_tiled, FX_TILED_SETUP
@@ -112,20 +105,15 @@ public:
         int powerSteps = -1;  ///< 2 contrast_power, 0 .. kMaxPowerSteps; -1: none (Soft only)
         Program program = Billboard;
         bool halfRes = false;  ///< drawn at quarter res, on the plugin's half-res depth (not HardLinearDepth)
-        /// FX_FADE_MASK: Soft, SoftGeneralPower and Spherical at full res, with the fade pyramid
-        /// (FadeClassification::On: FadePyramid.h)
-        bool fadeMask = false;
-        /// This billboard key without its power: the variant's general build (lit, halfRes and
-        /// fadeMask kept).
-        Key general() const { return Key{variant, lit, -1, Billboard, halfRes, fadeMask}; }
+        /// This billboard key without its power: the variant's general build (lit, halfRes kept).
+        Key general() const { return Key{variant, lit, -1, Billboard, halfRes}; }
         /// The key of a pass's fixed program.
         static Key of(Program p) {
             Key k;
             k.program = p;
             return k;
         }
-        /// variant in bits 0-2, lit 3, powerSteps + 1 in 4-9, program in 10-14, halfRes 15,
-        /// fadeMask 16.
+        /// variant in bits 0-2, lit 3, powerSteps + 1 in 4-9, program in 10-14, halfRes 15.
         uint32_t bits() const;
         /// The #defines that select this variant (prepended to each stage).
         std::string defines() const;
@@ -161,9 +149,8 @@ public:
     /// find(filter(...)) of a batch of `v` with `contrastPower` (program 0 where none exists).
     const ParticleProgram& get(Variant v, bool lit, float contrastPower) const;
     /// The key a batch of `technique` with `contrastPower` asks for: its variant, `lit`, and for
-    /// Soft with a whole or half-whole power that power's folded build; with `fadeMask`, a soft
-    /// or spherical variant at full res takes its FX_FADE_MASK build. Not filtered.
-    static Key drawKey(Technique technique, bool quarterRes, float contrastPower, bool lit, bool fadeMask = false);
+    /// Soft with a whole or half-whole power that power's folded build. Not filtered.
+    static Key drawKey(Technique technique, bool quarterRes, float contrastPower, bool lit);
     /// `wanted` reduced to a program that was built (see the contract above); a key find() gives
     /// null for where the variant's general build is missing. Never builds.
     Key filter(Key wanted) const;
@@ -185,13 +172,8 @@ public:
     /// The mega renderer's five programs (MegaRenderer: built when mega is loaded).
     static std::vector<Key> megaKeys();
     /// Adds (once each) the keys a batch of `technique` with `contrastPower` draws with, lit and
-    /// unlit, on a quarter-res target or not, with the fade mask or not (drawKey).
-    static void addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys,
-                            bool fadeMask = false);
-    /// The general FX_FADE_MASK builds of both soft variants and the spherical one, lit and
-    /// unlit, and the fade pyramid's two programs: what prepareGl adds while fade classification
-    /// is on.
-    static std::vector<Key> fadeMaskKeys();
+    /// unlit, on a quarter-res target or not (drawKey).
+    static void addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys);
     /// The tiled path's three programs (TiledPath.h): what prepareGl adds while it is on, in a
     /// context with compute shaders.
     static std::vector<Key> tiledKeys();

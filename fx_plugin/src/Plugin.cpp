@@ -204,7 +204,7 @@ ErrorCode PluginImpl::setQuarterResEdges(QuarterResEdges mode) {
 }
 
 ErrorCode PluginImpl::setFadeClassification(FadeClassification mode) {
-    return setSwitch(errors_, mode, FadeClassification::On, &settings_.classification, "setFadeClassification", "mode",
+    return setSwitch(errors_, mode, FadeClassification::On, &classification_, "setFadeClassification", "mode",
                      "Off or On");
 }
 

@@ -66,7 +66,7 @@ public:
     ErrorCode setQuarterResEdges(QuarterResEdges mode) override;
     QuarterResEdges quarterResEdges() const override { return edges_; }
     ErrorCode setFadeClassification(FadeClassification mode) override;
-    FadeClassification fadeClassification() const override { return settings_.classification; }
+    FadeClassification fadeClassification() const override { return classification_; }
     ErrorCode setFadeClassCounting(bool on) override {
         (void)on;
         return ErrorCode::None;
@@ -112,7 +112,9 @@ private:
     std::vector<ReactionRuntime> runtimes_;
     int runtimeGeneration_ = 0;
     FrameSettings settings_;
+    // The deprecated switches' values, kept for their getters; no renderer reads them.
     QuarterResEdges edges_ = QuarterResEdges::DepthAware;
+    FadeClassification classification_ = FadeClassification::Off;
     std::unique_ptr<Renderers> renderers_;
     mutable ApiErrors errors_;  // mutable: a const query (reactionName) may refuse too
     int particlesDrawn_ = 0;

@@ -155,7 +155,8 @@ int main(int argc, char** argv) {
     CHECK(fx->setParticleShape(plugin, FX_SHAPE_TRIMMED) == FX_ERROR_NONE);
     CHECK(fx->particleShape(plugin) == FX_SHAPE_TRIMMED);
 
-    /* Deprecated, accepted (no effect since 2.1), and nothing past the counts. */
+    /* Deprecated, accepted (no effect: the edges since 2.1, fade classification since 2.4), and
+     * nothing past the counts. */
     CHECK(fx->setQuarterResEdges(plugin, FX_EDGES_DEPTH_AWARE) == FX_ERROR_NONE);
     CHECK(fx->setFadeClassification(plugin, FX_FADE_CLASSIFICATION_OFF) == FX_ERROR_NONE);
     memset(fade.bytes, POISON, sizeof fade.bytes);

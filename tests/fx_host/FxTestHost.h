@@ -314,8 +314,7 @@ struct RenderMode {
     const char* label;
     fx::Technique technique;
     bool quarter = false, lit = false;
-    bool classify = false;  ///< fade classification (FadeClassification::On)
-    bool tiled = false;     ///< the tiled compute path (RenderOptions::tiled)
+    bool tiled = false;  ///< the tiled compute path (RenderOptions::tiled)
 };
 /// The modes that more than one test file goes through.
 namespace modes {
@@ -326,10 +325,9 @@ inline constexpr RenderMode kSoftQuarter{"soft quarter", fx::Technique::Soft, tr
 inline constexpr RenderMode kSphericalQuarter{"spherical quarter", fx::Technique::Spherical, true};
 inline constexpr RenderMode kMega{"mega", fx::Technique::Mega};
 inline constexpr RenderMode kSoftLit{"soft lit", fx::Technique::Soft, false, true};
-inline constexpr RenderMode kSoftClassified{"soft classified", fx::Technique::Soft, false, false, true};
-inline constexpr RenderMode kHardTiled{"hard tiled", fx::Technique::Hard, false, false, false, true};
-inline constexpr RenderMode kSoftTiled{"soft tiled", fx::Technique::Soft, false, false, false, true};
-inline constexpr RenderMode kSphericalTiled{"spherical tiled", fx::Technique::Spherical, false, false, false, true};
+inline constexpr RenderMode kHardTiled{"hard tiled", fx::Technique::Hard, false, false, true};
+inline constexpr RenderMode kSoftTiled{"soft tiled", fx::Technique::Soft, false, false, true};
+inline constexpr RenderMode kSphericalTiled{"spherical tiled", fx::Technique::Spherical, false, false, true};
 }  // namespace modes
 
 // ---- hand-placed particles (TestParticles.cpp) ------------------------------------------------
@@ -353,8 +351,8 @@ public:
     void set(const std::vector<HandParticle>& particles);
     /// The plugin's hook body for one view: declares the renderer's passes into `frame`.
     int declare(const fx::ViewInfo& view, fx::FrameBuilder& frame);
-    /// The technique of `m`, its quarter res (always, when on) and its fade classification in
-    /// `settings`; the light stays.
+    /// The technique of `m`, its quarter res (always, when on) and its tiled path in `settings`;
+    /// the light stays.
     void setMode(const RenderMode& m);
 
     fx::ReactionDesc desc;

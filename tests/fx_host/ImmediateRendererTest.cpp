@@ -37,9 +37,9 @@ constexpr int kColourBufferTolerance = 1;
 
 using Source = fx::ImmediateView::DepthSource;
 
-const RenderMode kModes[] = {modes::kHard,        modes::kSoft, modes::kSpherical,
-                             modes::kSoftQuarter, modes::kMega, modes::kSoftLit,
-                             modes::kSoftClassified, modes::kSoftTiled, modes::kSphericalTiled};
+const RenderMode kModes[] = {modes::kHard,        modes::kSoft,      modes::kSpherical,
+                             modes::kSoftQuarter, modes::kMega,      modes::kSoftLit,
+                             modes::kSoftTiled,   modes::kSphericalTiled};
 
 
 class ImmediateRendererTest : public LoadedPluginTest {

@@ -40,8 +40,6 @@ void PluginHostTest::setMode(const RenderMode& m) {
     o.quarterResAlways = m.quarter;
     o.tiled = m.tiled;
     ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
-    ASSERT_EQ(plugin->setFadeClassification(m.classify ? fx::FadeClassification::On : fx::FadeClassification::Off),
-              fx::ErrorCode::None);
     if (m.lit) {
         ASSERT_EQ(plugin->setSceneLight(fx::SceneLight{}), fx::ErrorCode::None);
     } else {

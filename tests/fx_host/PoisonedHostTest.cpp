@@ -29,7 +29,6 @@ const RenderMode kModes[] = {
     modes::kSphericalQuarter,
     modes::kMega,
     modes::kSoftLit,
-    modes::kSoftClassified,
     modes::kHardTiled,
     modes::kSoftTiled,
     modes::kSphericalTiled,

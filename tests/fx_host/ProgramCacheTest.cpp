@@ -109,8 +109,8 @@ protected:
 };
 
 // Every option a host can switch at run time, one after another, each followed by prepareGl:
-// prepareGl builds what the switch reaches (> 0 where it reaches something new), the frames
-// compile nothing, and no pass ever does.
+// prepareGl builds what the switch reaches (> 0 where it reaches something new; nothing for a
+// deprecated switch), the frames compile nothing, and no pass ever does.
 TEST_F(ProgramCacheTest, NoFrameCompilesAcrossOptionSwitchesWhenTheHostPreparesAgain) {
     const uint64_t passBuildsBefore = fx::programBuildCounts().inPass;
     EXPECT_GT(prepareThenDraw("start"), 0u);
@@ -119,7 +119,8 @@ TEST_F(ProgramCacheTest, NoFrameCompilesAcrossOptionSwitchesWhenTheHostPreparesA
     struct Switch {
         const char* label;
         std::function<void()> apply;
-        bool reachesNew;  ///< prepareGl must build something for it
+        bool reachesNew;            ///< prepareGl must build something for it
+        bool buildsNothing = false;  ///< prepareGl must build nothing for it (a switch with no effect)
     };
     fx::RenderOptions o;
     const Switch switches[] = {
@@ -144,10 +145,10 @@ TEST_F(ProgramCacheTest, NoFrameCompilesAcrossOptionSwitchesWhenTheHostPreparesA
              light.ambient = glm::vec3(0.3f);
              ASSERT_EQ(plugin->setSceneLight(light), fx::ErrorCode::None);
          }, false},
-        // Fade classification reaches the soft programs' FX_FADE_MASK builds and the pyramid's.
+        // Fade classification has no effect since API 2.4: no program of its own (nor in 2.1).
         {"fade classification", [&] {
              ASSERT_EQ(plugin->setFadeClassification(fx::FadeClassification::On), fx::ErrorCode::None);
-         }, true},
+         }, false, true},
     };
     for (const Switch& s : switches) {
         s.apply();
@@ -156,6 +157,9 @@ TEST_F(ProgramCacheTest, NoFrameCompilesAcrossOptionSwitchesWhenTheHostPreparesA
         EXPECT_GT(drawn, drawnBefore) << s.label << ": nothing drawn";
         if (s.reachesNew) {
             EXPECT_GT(built, 0u) << s.label << ": prepareGl built nothing for it";
+        }
+        if (s.buildsNothing) {
+            EXPECT_EQ(built, 0u) << s.label << ": prepareGl built programs for a switch with no effect";
         }
         std::printf("[ measured ] %-26s prepareGl built %llu programs, frames 0\n", s.label,
                     static_cast<unsigned long long>(built));

@@ -111,15 +111,6 @@ TEST_F(ShaderLoaderTest, EveryParticleProgramBuilds) {
         EXPECT_NE(p, 0u) << error;
         glDeleteProgram(p);
     }
-    // Fade classification: the soft program with its mask, and the pyramid's two.
-    p = fx::buildProgram(kShaders, "vs_particles.glsl", "fs_particles_soft.glsl", "#define FX_FADE_MASK 1\n", &error);
-    EXPECT_NE(p, 0u) << error;
-    glDeleteProgram(p);
-    for (const char* defines : {"#define FX_FADE_PYRAMID_FIRST 1\n", ""}) {
-        p = fx::buildProgram(kShaders, "vs_particles_fullscreen.glsl", "fs_particles_fade_pyramid.glsl", defines, &error);
-        EXPECT_NE(p, 0u) << error;
-        glDeleteProgram(p);
-    }
 }
 
 // The quarter-res downsample and the composites gather their four depths where the context has
@@ -140,13 +131,12 @@ TEST_F(ShaderLoaderTest, TheQuarterResProgramsGatherWhereTheContextCan) {
         EXPECT_TRUE(listed);
     }
     using PC = fx::ProgramCache;
-    for (PC::Program program :
-         {PC::DepthDownsample, PC::Composite, PC::CompositeBilinear, PC::MegaComposite, PC::FadePyramidFirst}) {
+    for (PC::Program program : {PC::DepthDownsample, PC::Composite, PC::CompositeBilinear, PC::MegaComposite}) {
         const std::string defines = PC::Key::of(program).defines();
         EXPECT_EQ(defines.find("#define FX_GATHER 1") != std::string::npos, listed) << defines;
         EXPECT_EQ(defines.find("#extension GL_ARB_texture_gather : require") != std::string::npos, listed);
     }
-    for (PC::Program program : {PC::HalfZ, PC::LinearizeDepth, PC::MegaSpheres, PC::FadePyramidReduce}) {
+    for (PC::Program program : {PC::HalfZ, PC::LinearizeDepth, PC::MegaSpheres}) {
         EXPECT_EQ(PC::Key::of(program).defines().find("texture_gather"), std::string::npos);
     }
 }

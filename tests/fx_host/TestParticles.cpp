@@ -23,7 +23,6 @@ void DirectParticles::setMode(const RenderMode& m) {
     settings.options.quarterRes = m.quarter;
     settings.options.quarterResAlways = m.quarter;
     settings.options.tiled = m.tiled;
-    settings.classification = m.classify ? fx::FadeClassification::On : fx::FadeClassification::Off;
 }
 
 void DirectParticles::set(const std::vector<HandParticle>& particles) {

@@ -33,8 +33,7 @@ constexpr int kSphericalTolerance = 3;
 
 const RenderMode kModes[] = {modes::kHard,        modes::kSoft,             modes::kSpherical,
                              modes::kSoftQuarter, modes::kSphericalQuarter, modes::kMega,
-                             modes::kSoftClassified, modes::kHardTiled, modes::kSoftTiled,
-                             modes::kSphericalTiled};
+                             modes::kHardTiled,   modes::kSoftTiled,        modes::kSphericalTiled};
 
 // An RGBA8 colour texture + a GL_DEPTH_COMPONENT24 depth texture in one framebuffer.
 struct Framebuffer : HostTarget {

@@ -89,7 +89,7 @@ TEST_P(FxbenchScenario, TinyRunWritesEveryKeyWithFiniteValues) {
     EXPECT_FALSE(run["renderer"].as<std::string>().empty());
     EXPECT_GE(run["threads"].as<int>(), 1);  // --threads 0: one per hardware thread
     ASSERT_TRUE(run["modes"].IsSequence());
-    EXPECT_EQ(run["modes"].size(), 25u);  // every mode by default (lit, mega, *-zbuffer, *-linear, *+tiled included)
+    EXPECT_EQ(run["modes"].size(), 23u);  // every mode by default (lit, mega, *-zbuffer, *-linear, *+tiled included)
     for (const YAML::Node& m : run["modes"]) {
         const std::string name = m["name"].as<std::string>();
         SCOPED_TRACE(name);
@@ -166,25 +166,6 @@ TEST(Fxbench, TrimmedSoftRasterisesFewerFragmentsThanQuadsForTheSameImage) {
     // Every sample the shipped program writes is among those rasterised.
     EXPECT_GE(trimmed, written);
     EXPECT_GT(trimmed, 1.05 * written);  // and the early out discards some: the empty rim
-}
-
-// Fade classification draws soft's and spherical's pictures bit for bit. At 64x64 no particle is
-// large enough to be classified, so also at 320x180, where the near ones are.
-TEST(Fxbench, ClassifiedModesDrawTheirReferencesPicture) {
-    for (const char* name : {"soft+classify", "spherical+classify"}) {
-        const YAML::Node classified = modeNode(tinyRun("standard"), name);
-        EXPECT_EQ(classified["error"]["reference"].as<std::string>(), name[1] == 'o' ? "soft" : "spherical") << name;
-        EXPECT_EQ(classified["error"]["max_abs"].as<double>(), 0.0) << name;
-    }
-    const std::string json = tempPath("classified.json");
-    const RunOutput r = runFxbench("--scenario standard --modes soft,soft+classify,spherical,spherical+classify "
-                                   "--size 320x180 --frames 3 --rounds 1 --warmup 1 --error-frames 2 --json " + json);
-    ASSERT_EQ(r.status, 0) << r.output;
-    const YAML::Node run = YAML::Load(readFile(json));
-    std::filesystem::remove(json);
-    EXPECT_EQ(modeNode(run, "soft+classify")["error"]["max_abs"].as<double>(), 0.0);
-    EXPECT_EQ(modeNode(run, "spherical+classify")["error"]["max_abs"].as<double>(), 0.0);
-    EXPECT_EQ(r.output.find("built while declaring a frame"), std::string::npos) << r.output;
 }
 
 // The tiled modes draw their reference's picture up to the blend's rounding (measured at 320x180:
@@ -455,14 +436,19 @@ TEST(Fxbench, ThreadsFlagSizesTheJobSystemAndTheReportSaysSo) {
 }
 
 // The modes of the removed features are refused by name, with the reason, before anything runs.
-// (spherical+classify, refused from 2.1, names fade classification of spheres again: per block.)
 TEST(Fxbench, RemovedModesAreRefusedWithTheReason) {
-    for (const char* name : {"soft+mixed"}) {
-        SCOPED_TRACE(name);
-        const RunOutput r = runFxbench(std::string("--modes soft,") + name);
+    struct Removed {
+        const char* name;
+        const char* reason;
+    };
+    for (const Removed& m : {Removed{"soft+mixed", "mixed resolution was removed in API 2.1"},
+                             Removed{"soft+classify", "fade classification was removed in API 2.4"},
+                             Removed{"spherical+classify", "fade classification was removed in API 2.4"}}) {
+        SCOPED_TRACE(m.name);
+        const RunOutput r = runFxbench(std::string("--modes soft,") + m.name);
         EXPECT_EQ(r.status, 2);
-        EXPECT_NE(r.output.find(std::string("mode '") + name + "' no longer exists"), std::string::npos) << r.output;
-        EXPECT_NE(r.output.find("removed in API 2.1"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(std::string("mode '") + m.name + "' no longer exists"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(m.reason), std::string::npos) << r.output;
     }
 }
 

@@ -84,14 +84,14 @@ enum class ParticleShape : uint8_t { Trimmed = 0, Quad = 1 };
 /// upsamples depth-aware.
 enum class QuarterResEdges : uint8_t { DepthAware = 0, MixedResolution = 1 };
 
-/// Fade classification (Plugin::setFadeClassification). On (since API 2.2): soft billboards drawn
-/// at full resolution skip the scene-depth fetch, and their fade, in the blocks of the screen
-/// where a pyramid of the scene's nearest depth (built in the particle pass) says no geometry
-/// lies within their softness; spherical particles likewise where it lies past the sphere's
-/// deepest point (their chord ends inside). The picture is the same bit for bit. Particles under
-/// 48 px across and quarter res are not classified. Off (the default) reads the depth
-/// everywhere. (API 1.3 to 2.0 classified soft and spherical particles per screen tile; on a GPU
-/// that tile pass cost more than it saved, and 2.1 removed it: no value had an effect.)
+/// Deprecated again since API 2.4, kept so hosts written against earlier versions still compile:
+/// no value has any effect (Plugin::setFadeClassification); soft and spherical particles read the
+/// scene depth at every fragment. On let soft billboards and spheres skip that read where no
+/// geometry lay within their reach: per screen tile in API 1.3 to 2.0 (removed in 2.1: the tile
+/// pass cost more than it saved), per block of each particle in 2.2 and 2.3, through a pyramid of
+/// the scene's nearest depth. On a GPU the pyramid pass and the mask's reads cost more than the
+/// fetches it skipped (H200: the particle pass 1.27x longer, soft and spherical alike), so 2.4
+/// removed it too. The tiled path (RenderOptions::tiled) reads the depth once per pixel instead.
 enum class FadeClassification : uint8_t { Off = 0, On = 1 };
 
 /// Deprecated since API 2.1 with FadeClassification: Plugin::fadeClassCounts always returns it
@@ -265,11 +265,11 @@ public:
     }
     virtual QuarterResEdges quarterResEdges() const { return QuarterResEdges::DepthAware; }
 
-    // ---- API 1.3: fade classification (no effect in API 2.1; per block since API 2.2) ----
+    // ---- API 1.3: fade classification (deprecated since API 2.4; no effect in 2.1 either) ----
 
-    /// API 1.3; what On does: FadeClassification. Refused (InvalidValue, nothing changes) for a
-    /// value outside the enum, else fadeClassification() returns it. Default Off. Call prepareGl
-    /// after switching it on, as after any option, so no frame compiles its programs.
+    /// API 1.3; deprecated since API 2.4, no effect on the picture or the work (FadeClassification
+    /// says why). The value is still validated and kept: refused (InvalidValue, nothing changes)
+    /// for a value outside the enum, else fadeClassification() returns it. Default Off.
     virtual ErrorCode setFadeClassification(FadeClassification mode) {
         (void)mode;
         return ErrorCode::InvalidValue;

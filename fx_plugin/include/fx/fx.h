@@ -28,7 +28,7 @@
  *    against the 2.0 header runs unchanged. A new host uses the entries named ...2 above. The
  *    option setters of 2.0 stay too: setParticleShape/particleShape are
  *    fxRenderOptions.particleShape now; the quarter-res edge entries are accepted and have no
- *    effect since 2.1 (fade classification: see setFadeClassification). Each deprecated entry is
+ *    effect since 2.1, the fade classification entries none since 2.4. Each deprecated entry is
  *    marked where the table lists it.
  *  - A refused call changes nothing, returns a named FX_ERROR_* code and is logged through the
  *    host's log callback ("fx: error[Code] function: what was expected"), at most a few times
@@ -425,10 +425,10 @@ typedef struct fxApi {
     /* Deprecated since API 2.1 (kept for 2.0 hosts): fxRenderOptions.particleShape. */
     int (*setParticleShape)(fxPlugin* p, int shape);
     int (*particleShape)(const fxPlugin* p);
-    /* Mixed-resolution edges (deprecated since 2.1, no effect) and fade classification: ON
-     * (since 2.2; off by default) lets soft billboards and spheres skip the scene-depth fetch per
-     * block where no geometry lies within their reach; the picture is the same. fadeClassCounts
-     * (deprecated since 2.1) writes counted 0 and every count 0. */
+    /* Deprecated, no effect: mixed-resolution edges (since 2.1) and fade classification (since
+     * 2.4: on a GPU its depth pyramid and masks cost more than the fetches they skipped, see
+     * Plugin.h's FadeClassification). Each still refuses a value outside its enum and returns
+     * the value set. fadeClassCounts writes counted 0 and every count 0. */
     int (*setQuarterResEdges)(fxPlugin* p, int edges);
     int (*quarterResEdges)(const fxPlugin* p);
     int (*setFadeClassification)(fxPlugin* p, int mode);

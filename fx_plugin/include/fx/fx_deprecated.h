@@ -33,7 +33,8 @@ typedef struct fxSmokeShadow {
     uint32_t opacity;
     float worldToShadow[16];
 } fxSmokeShadow;
-/* Deprecated, with no successor: fade classification has no effect since API 2.1. */
+/* Deprecated, with no successor: nothing is counted since API 2.1 (and fade classification has
+ * no effect since 2.4). */
 typedef struct fxFadeClassCounts { int fadeNeeded, inFront, hidden; fxBool counted; } fxFadeClassCounts;
 
 #endif /* FX_FX_DEPRECATED_H */
