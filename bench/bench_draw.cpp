@@ -9,10 +9,12 @@
 //   BM_ScreenRectBox/N    the same with box footprints (a view with spherical particles)
 //   BM_ScreenRectTrimmed/N  billboards bounded by their trimmed polygons' reach (BillboardReach):
 //                         the quarter-res path's bound for trimmed billboards
-//   BM_TileBins/N/T       fx::binParticles (the tiled path's bins: every particle into the 16 px
+//   BM_TileBins/N/T/F     fx::binParticles (the tiled path's bins: every particle into the 16 px
 //                         tiles its trimmed bound touches, front to back) on T job threads (T = 1:
-//                         the pieces on the calling thread)
-//   BM_TileBinsLarge/N/T  the same with every particle 8 m across (the fill scene's kind: a few
+//                         the pieces on the calling thread). F = 0: Fill::Entries, the lists
+//                         written here (the reference); F = 1: Fill::Pairs, what the tiled path
+//                         runs (bounds, counts and first entries; the GPU writes the lists)
+//   BM_TileBinsLarge/N/T/F  the same with every particle 8 m across (the fill scene's kind: a few
 //                         hundred particles over thousands of tiles each)
 //   BM_InstanceCopy/N     reference: memcpy of the N instances (32 N bytes read and written)
 //   BM_DrawListBuildJobs/N/T, BM_ScreenRectJobs/N/T
@@ -146,12 +148,14 @@ void tileBinsBench(benchmark::State& state, float size) {
     const fx::BillboardReach reach = benchReach(s.view);
     const fx::TileBins::Range range{0, list.particleCount(), false};
     fx::TileBins bins;
+    const fx::TileBins::Fill fill = state.range(2) ? fx::TileBins::Fill::Pairs : fx::TileBins::Fill::Entries;
     for (auto _ : state) {
-        fx::binParticles(s.view, list.instances.data(), &range, 1, &reach, &bins, fx::Jobs(&host));
+        fx::binParticles(s.view, list.instances.data(), &range, 1, &reach, &bins, fx::Jobs(&host), fill);
         benchmark::DoNotOptimize(bins.entries.data());
+        benchmark::DoNotOptimize(bins.particles.data());
     }
     state.SetItemsProcessed(int64_t(state.iterations()) * list.particleCount());
-    state.counters["entries"] = double(bins.entries.size());
+    state.counters["entries"] = double(bins.entryCount);
     state.counters["tiles"] = double(bins.tileCount());
 }
 
@@ -195,8 +199,8 @@ BENCHMARK(BM_DrawListBuild)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 BENCHMARK(BM_ScreenRect)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 BENCHMARK(BM_ScreenRectBox)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 BENCHMARK(BM_ScreenRectTrimmed)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
-BENCHMARK(BM_TileBins)->ArgsProduct({{1000, 16000, 256000}, {1, 2}})->UseRealTime();
-BENCHMARK(BM_TileBinsLarge)->ArgsProduct({{300, 1000}, {1, 2}})->UseRealTime();
+BENCHMARK(BM_TileBins)->ArgsProduct({{1000, 16000, 256000, 1000000}, {1, 2}, {0, 1}})->UseRealTime();
+BENCHMARK(BM_TileBinsLarge)->ArgsProduct({{300, 1000}, {1, 2}, {0, 1}})->UseRealTime();
 BENCHMARK(BM_InstanceCopy)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 
 BENCHMARK_MAIN();

@@ -40,6 +40,10 @@ constexpr Source kSources[ProgramCache::VariantCount + ProgramCache::ProgramCoun
     {"cs_particles_tiled.glsl", "", "#define FX_GENERAL_POWER 1\n"},
     {"vs_particles_tiles.glsl", "fs_particles_tiled_composite.glsl", ""},
     {"cs_particles_tiled.glsl", "", "#define FX_TILED_SETUP 1\n"},
+    {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_EMIT 1\n"},
+    {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_COUNT 1\n"},
+    {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_SCAN 1\n"},
+    {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_SCATTER 1\n"},
 };
 
 const Source& sourceOf(const ProgramCache::Key& key) {
@@ -224,7 +228,13 @@ std::vector<ProgramCache::Key> ProgramCache::megaKeys() {
 }
 
 std::vector<ProgramCache::Key> ProgramCache::tiledKeys() {
-    return {Key::of(TiledSetup), Key::of(TiledShade), Key::of(TiledComposite)};
+    std::vector<Key> keys = {Key::of(TiledSetup), Key::of(TiledShade), Key::of(TiledComposite)};
+    for (const Key& k : tileSortKeys()) keys.push_back(k);
+    return keys;
+}
+
+std::vector<ProgramCache::Key> ProgramCache::tileSortKeys() {
+    return {Key::of(TileEmit), Key::of(TileSortCount), Key::of(TileSortScan), Key::of(TileSortScatter)};
 }
 
 void ProgramCache::addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys) {

@@ -3,7 +3,7 @@
 // Key::program names the shader pair: Billboard, the particle draw (below), or one of the fixed
 // programs of the other passes (the quarter-res depth downsample, half-res z-fill and
 // composite's two builds; the opacity map's; the immediate path's depth lineariser; the five
-// mega passes'; the stateless particles'; the tiled path's three), whose files and defines are
+// mega passes'; the stateless particles'; the tiled path's three and its lists' four), whose files and defines are
 // in ProgramCache.cpp beside the billboards'.
 // A billboard key is the variant a batch draws with:
 //   variant          the technique's shaders and target kind (vs_particles + ...):
@@ -96,6 +96,10 @@ public:
         TiledShade,         ///< cs_particles_tiled (compute: TiledPath.h)
         TiledComposite,     ///< vs_particles_tiles + fs_particles_tiled_composite
         TiledSetup,         ///< cs_particles_tiled, FX_TILED_SETUP
+        TileEmit,           ///< cs_particles_tile_sort, FX_TILE_EMIT (compute: TileSort.h)
+        TileSortCount,      ///< the same, FX_TILE_COUNT
+        TileSortScan,       ///< the same, FX_TILE_SCAN
+        TileSortScatter,    ///< the same, FX_TILE_SCATTER
         ProgramCount
     };
 
@@ -174,9 +178,11 @@ public:
     /// Adds (once each) the keys a batch of `technique` with `contrastPower` draws with, lit and
     /// unlit, on a quarter-res target or not (drawKey).
     static void addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys);
-    /// The tiled path's three programs (TiledPath.h): what prepareGl adds while it is on, in a
-    /// context with compute shaders.
+    /// The tiled path's seven programs (TiledPath.h, with tileSortKeys): what prepareGl adds while
+    /// it is on, in a context with compute shaders.
     static std::vector<Key> tiledKeys();
+    /// The four that write the tiled path's lists (TileSort.h).
+    static std::vector<Key> tileSortKeys();
     /// `contrastPower` picks between the two soft programs (see above).
     static Variant variantFor(Technique technique, bool quarterRes, float contrastPower = 1.0f);
     /// contrast_power = whole + half / 2 with whole in [0, 16], half 0 or 1: true and the split.

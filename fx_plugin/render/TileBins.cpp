@@ -1,7 +1,9 @@
 #include "TileBins.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+#include <cstdint>
 
 #include "FootprintMath.h"
 
@@ -14,17 +16,22 @@ constexpr int kTileSize = ScreenTiles::kTileSize;
 }  // namespace
 
 bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const TileBins::Range* batches,
-                  int batchCount, const BillboardReach* reach, TileBins* out, const Jobs& jobs) {
+                  int batchCount, const BillboardReach* reach, TileBins* out, const Jobs& jobs,
+                  TileBins::Fill fill) {
     const int w = view.width, h = view.height;
     const int tilesX = (w + kTileSize - 1) / kTileSize, tilesY = (h + kTileSize - 1) / kTileSize;
     out->entries.clear();
+    out->particles.clear();
     out->tiles.clear();
+    out->entryCount = 0;
+    out->tilesX = out->tilesY = 0;
     out->cover.vertices.clear();
     out->cover.pixels = 0;
     out->cover.viewWidth = w;
     out->cover.viewHeight = h;
     if (batchCount > (1 << (32 - TileBins::kBatchShift))) return false;
     if (tilesX <= 0 || tilesY <= 0) return true;  // an empty view: no tiles
+    if (tilesX > 0xffff || tilesY > 0xffff) return false;  // a range's 16 bit halves
     int top = 0;
     for (int b = 0; b < batchCount; ++b) top = std::max(top, batches[b].first + batches[b].count);
     if (top >= (1 << TileBins::kBatchShift)) return false;
@@ -51,72 +58,102 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
     const int tileCount = tilesX * tilesY;
     const FootprintMath flat(view, true, reach), box(view, false, nullptr, 0.5f);
     const bool perspective = plainPerspective(view.proj);
-    out->ranges.resize(size_t(n) * 4);
-    out->weights.resize(size_t(n));
+    out->tilesX = tilesX;
+    out->tilesY = tilesY;
+    out->particles.resize(size_t(n) * 4);
+    uint32_t* words = out->particles.data();
+    const size_t gridWidth = size_t(tilesX) + 1, gridSize = gridWidth * (size_t(tilesY) + 1);
 
-    // 1. Each particle's tile range (empty where it is clipped or off the view) and its tile count,
-    // in pieces of the particles.
-    const Pieces boundPieces = splitWork(size_t(n), 8192, 16);
+    // 1. Each particle's tile range (empty where it is clipped or off the view), its entry and its
+    // entry count (in the first-entry word for now), in pieces of the particles; each piece marks
+    // its ranges' corners +-1 in its own grid (summed below into each tile's count: a large
+    // particle costs no more than a small one).
+    const Pieces pieces = splitWork(size_t(n), 8192, 16);
+    out->grids.assign(std::max<size_t>(pieces.count, 1) * gridSize, 0);
     bool failed[HostAdapter::kMaxTasks] = {};
-    jobs.run(boundPieces, [&](uint32_t piece) {
-        walk(boundPieces.begin(piece), boundPieces.end(piece), [&](size_t k, int i, uint32_t entry) {
+    uint64_t pieceEntries[HostAdapter::kMaxTasks] = {};
+    jobs.run(pieces, [&](uint32_t piece) {
+        int32_t* grid = &out->grids[piece * gridSize];
+        uint64_t sum = 0;
+        walk(pieces.begin(piece), pieces.end(piece), [&](size_t k, int i, uint32_t entry) {
             const bool sphere = batches[entry >> TileBins::kBatchShift].sphere;
             const FootprintMath& math = sphere ? box : flat;
             const ParticleInstance& p = instances[i];
             const Bounds q = !perspective ? math.general(p) : sphere ? math.perspective<false>(p) : math.perspective<true>(p);
-            int32_t* r = &out->ranges[k * 4];
-            r[0] = 0;
-            r[1] = -1;  // empty
-            r[2] = 0;
-            r[3] = -1;
-            out->weights[k] = 0;
+            uint32_t* word = &words[k * 4];
+            word[0] = word[1] = 1u;  // tx0 1 > tx1 0: none
+            word[2] = 0;
+            word[3] = entry;
+            int r[4];
             if (q.state == Bounds::Unbounded) {
                 if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.size))) {
                     failed[piece] = true;
                     return;
                 }
                 // A sphere across the near plane (a billboard has one depth: never): every tile.
+                r[0] = 0;
                 r[1] = tilesX - 1;
+                r[2] = 0;
                 r[3] = tilesY - 1;
-                out->weights[k] = uint32_t(tileCount);
+            } else if (q.state == Bounds::Behind || q.x1 < -1.0f || q.y1 < -1.0f || q.x0 > float(w) + 1.0f ||
+                       q.y0 > float(h) + 1.0f) {
                 return;
+            } else {
+                auto tileOf = [](float pixel, int tiles) {
+                    const float t = pixel * (1.0f / float(kTileSize));
+                    return int(std::min(std::max(t, 0.0f), float(tiles - 1)));
+                };
+                r[0] = tileOf(q.x0 - 1.0f, tilesX);
+                r[1] = tileOf(q.x1 + 1.0f, tilesX);
+                r[2] = tileOf(q.y0 - 1.0f, tilesY);
+                r[3] = tileOf(q.y1 + 1.0f, tilesY);
             }
-            if (q.state == Bounds::Behind || q.x1 < -1.0f || q.y1 < -1.0f || q.x0 > float(w) + 1.0f ||
-                q.y0 > float(h) + 1.0f) {
-                return;
-            }
-            auto tileOf = [](float pixel, int tiles) {
-                const float t = pixel * (1.0f / float(kTileSize));
-                return int(std::min(std::max(t, 0.0f), float(tiles - 1)));
-            };
-            r[0] = tileOf(q.x0 - 1.0f, tilesX);
-            r[1] = tileOf(q.x1 + 1.0f, tilesX);
-            r[2] = tileOf(q.y0 - 1.0f, tilesY);
-            r[3] = tileOf(q.y1 + 1.0f, tilesY);
-            out->weights[k] = uint32_t((r[1] - r[0] + 1) * (r[3] - r[2] + 1));
+            word[0] = uint32_t(r[0]) | uint32_t(r[1]) << 16;
+            word[1] = uint32_t(r[2]) | uint32_t(r[3]) << 16;
+            word[2] = uint32_t((r[1] - r[0] + 1) * (r[3] - r[2] + 1));
+            sum += word[2];
+            grid[size_t(r[2]) * gridWidth + size_t(r[0])] += 1;
+            grid[size_t(r[2]) * gridWidth + size_t(r[1]) + 1] -= 1;
+            grid[(size_t(r[3]) + 1) * gridWidth + size_t(r[0])] -= 1;
+            grid[(size_t(r[3]) + 1) * gridWidth + size_t(r[1]) + 1] += 1;
         });
+        pieceEntries[piece] = sum;
     });
-    for (uint32_t piece = 0; piece < boundPieces.count; ++piece) {
+    uint64_t total = 0;
+    uint32_t pieceFirst[HostAdapter::kMaxTasks] = {};
+    for (uint32_t piece = 0; piece < pieces.count; ++piece) {
         if (failed[piece]) return false;
+        pieceFirst[piece] = uint32_t(total);
+        total += pieceEntries[piece];
+        if (total > uint64_t(INT32_MAX)) return false;
     }
-
-    // 2. Bands of tile rows, each counted and filled by one piece: a band owns its tiles' counts
-    // and its stretch of the entries (no two threads write one cache line), and reads every
-    // particle's range (cheap beside its entries). As many bands as the entries pay for.
-    uint64_t entries = 0;
-    for (int k = 0; k < n; ++k) entries += out->weights[size_t(k)];
-    const Pieces bands = splitWork(size_t(tilesY), 1, uint32_t(std::min<uint64_t>(std::max<uint64_t>(entries / 32768, 1), 16)));
-    out->counts.assign(size_t(tileCount), 0);
-    int32_t* counts = out->counts.data();
-    jobs.run(bands, [&](uint32_t band) {
-        const int y0 = int(bands.begin(band)), y1 = int(bands.end(band)) - 1;
-        for (int k = 0; k < n; ++k) {
-            const int32_t* r = &out->ranges[size_t(k) * 4];
-            for (int ty = std::max(r[2], y0); ty <= std::min(r[3], y1); ++ty) {
-                for (int tx = r[0]; tx <= r[1]; ++tx) ++counts[ty * tilesX + tx];
-            }
+    out->entryCount = uint32_t(total);
+    // Each particle's first entry: its piece's, then its own count added up in the piece.
+    jobs.run(pieces, [&](uint32_t piece) {
+        uint32_t first = pieceFirst[piece];
+        for (size_t k = pieces.begin(piece); k < pieces.end(piece); ++k) {
+            const uint32_t count = words[k * 4 + 2];
+            words[k * 4 + 2] = first;
+            first += count;
         }
     });
+
+    // 2. Each tile's count: the grids added up, then summed along the rows and down the columns.
+    int32_t* grid = out->grids.data();
+    for (uint32_t piece = 1; piece < pieces.count; ++piece) {
+        const int32_t* other = &out->grids[piece * gridSize];
+        for (size_t c = 0; c < gridSize; ++c) grid[c] += other[c];
+    }
+    out->counts.assign(size_t(tileCount), 0);
+    int32_t* counts = out->counts.data();
+    for (int ty = 0; ty < tilesY; ++ty) {
+        int32_t row = 0;
+        for (int tx = 0; tx < tilesX; ++tx) {
+            row += grid[size_t(ty) * gridWidth + size_t(tx)];
+            counts[ty * tilesX + tx] = row + (ty > 0 ? counts[(ty - 1) * tilesX + tx] : 0);
+        }
+    }
+
     // 3. Each tile's first entry (its cursor from now on), the tiles with particles and their runs
     // for the composite.
     int32_t sum = 0;
@@ -136,17 +173,23 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
             }
         }
     }
-    // 4. The entries, front to back (k order), each band into its own tiles.
+    if (fill == TileBins::Fill::Pairs) return true;
+
+    // 4. The entries, front to back (k order), in bands of tile rows, each band into its own tiles
+    // (it reads every particle's range: cheap beside its entries). As many bands as the entries
+    // pay for.
+    const Pieces bands = splitWork(size_t(tilesY), 1, uint32_t(std::min<uint64_t>(std::max<uint64_t>(total / 32768, 1), 16)));
     out->entries.resize(size_t(sum));
     jobs.run(bands, [&](uint32_t band) {
         const int y0 = int(bands.begin(band)), y1 = int(bands.end(band)) - 1;
         uint32_t* entriesOut = out->entries.data();
-        walk(0, size_t(n), [&](size_t k, int, uint32_t entry) {
-            const int32_t* r = &out->ranges[k * 4];
-            for (int ty = std::max(r[2], y0); ty <= std::min(r[3], y1); ++ty) {
-                for (int tx = r[0]; tx <= r[1]; ++tx) entriesOut[counts[ty * tilesX + tx]++] = entry;
+        for (int k = 0; k < n; ++k) {
+            const uint32_t* r = &words[size_t(k) * 4];
+            const int tx0 = int(r[0] & 0xffffu), tx1 = int(r[0] >> 16);
+            for (int ty = std::max(int(r[1] & 0xffffu), y0); ty <= std::min(int(r[1] >> 16), y1); ++ty) {
+                for (int tx = tx0; tx <= tx1; ++tx) entriesOut[counts[ty * tilesX + tx]++] = r[3];
             }
-        });
+        }
     });
     return true;
 }

@@ -1,6 +1,9 @@
 #pragma once
 // The tiled path's bins (TiledPath.h): a view's particles sorted into the 16 px screen tiles their
-// bounds touch, each tile's list front to back, on the CPU (no GL).
+// bounds touch, each tile's list front to back. The CPU bounds the particles and counts each
+// tile's entries (O(particles + tiles)); the lists themselves, O(entries), are written by the GPU
+// (TileSort.h) from `particles`, or here where a caller asks for them (Fill::Entries: the
+// reference the GPU's are tested against, and bench_draw's).
 #include <cstdint>
 #include <vector>
 
@@ -17,23 +20,34 @@ struct TileBins {
         int first = 0, count = 0;  ///< a batch's instances
         bool sphere = false;       ///< spheres: bounded as Footprint::Box, the reach table not used
     };
-    std::vector<uint32_t> entries;  ///< per tile, front to back
+    /// What binParticles writes besides the counts: the lists (Entries), or only what the GPU
+    /// writes them from (Pairs: `particles`).
+    enum class Fill : uint8_t { Entries, Pairs };
+    /// Per particle, front to back, four words: its tile range (tx0 | tx1 << 16, ty0 | ty1 << 16;
+    /// tx0 > tx1 where it touches none), its first entry in pair order (the entries of the
+    /// particles before it added up) and its entry. The GPU writes a pair (tile, entry) for every
+    /// tile of a range, row by row, and sorts them by tile keeping that order (TileSort.h): the
+    /// sorted entries are `entries`.
+    std::vector<uint32_t> particles;
+    std::vector<uint32_t> entries;  ///< per tile, front to back (Fill::Entries only)
     std::vector<uint32_t> tiles;    ///< per tile holding particles: tile x, tile y, first entry, count
     ScreenTiles cover;              ///< those tiles as runs (the composite's draw)
-    std::vector<int32_t> counts;    ///< scratch: entries per tile of the view, then its cursors
-    std::vector<int32_t> ranges;    ///< scratch: per particle its tile range (tx0, tx1, ty0, ty1)
-    std::vector<uint32_t> weights;  ///< scratch: per particle its tile count
+    uint32_t entryCount = 0;        ///< the entries of every tile (and the pairs)
+    int tilesX = 0, tilesY = 0;     ///< the view's tiles
+    std::vector<int32_t> counts;    ///< scratch: per tile of the view its entries, then its first
+    std::vector<int32_t> grids;     ///< scratch: per piece of the particles, +-1 at its ranges' corners
     int tileCount() const { return int(tiles.size() / 4); }
 };
 
 /// Bins `instances` (billboards and spheres of a full-resolution view, drawn in `batches`' order)
 /// into `out`. A sphere across the near plane is in every tile. False where a particle has no
 /// bound (a position or size that is not finite): the caller draws the view another way. At most
-/// 2^26 instances and 64 batches (else false too).
-/// `jobs`: the host's job system. The bounds go in pieces of the particles, the binning in bands
-/// of tile rows (as many as the entries pay for, however few the particles), each band writing
-/// only its own tiles' counts and entries: the bins are the same bit for bit however they run.
+/// 2^26 instances, 64 batches and 2^31 entries (else false too).
+/// `jobs`: the host's job system. The bounds go in pieces of the particles; with Fill::Entries the
+/// lists in bands of tile rows (as many as the entries pay for), each band writing only its own
+/// tiles' entries: the bins are the same bit for bit however they run.
 bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const TileBins::Range* batches,
-                  int batchCount, const BillboardReach* reach, TileBins* out, const Jobs& jobs = Jobs());
+                  int batchCount, const BillboardReach* reach, TileBins* out, const Jobs& jobs = Jobs(),
+                  TileBins::Fill fill = TileBins::Fill::Entries);
 
 }  // namespace fx

@@ -20,7 +20,7 @@ constexpr int kAtlasUnit = ParticleDraw::kAtlasUnit, kRampUnit = ParticleDraw::k
               kDepthUnit = ParticleDraw::kSceneDepthUnit, kAccumUnit = 3;
 
 // The bindings the pass changes that GlStateGuard has no rows for: read on entry, put back on
-// exit (shader storage buffers 0-3 with their ranges, the generic binding, image unit 0).
+// exit (shader storage buffers 0-4 with their ranges, the generic binding, image unit 0).
 class ComputeBindingsScope {
 public:
     ComputeBindingsScope() {
@@ -58,7 +58,7 @@ public:
 
 private:
     GLint generic_ = 0;
-    static constexpr int kBindings = 4;
+    static constexpr int kBindings = TileSort::kBindings;  // the sort's 0-4 hold the pass's 0-3
     GLint buffer_[kBindings] = {};
     GLint64 start_[kBindings] = {}, size_[kBindings] = {};
     GLint image_[6] = {0, 0, 0, 0, GL_READ_ONLY, GL_R8};
@@ -84,7 +84,7 @@ TiledPath::TiledPath(ParticleDraw& draw, SizeMismatchReport sizeMismatch)
 TiledPath::~TiledPath() {
     // The renderer deletes its GL objects inside a guard with the context current (~ParticleRenderer).
     if (!privateGlContextCurrent()) return;
-    const uint32_t buffers[4] = {entryBuffer_, tileBuffer_, recordBuffer_, coverVbo_};
+    const uint32_t buffers[3] = {tileBuffer_, recordBuffer_, coverVbo_};
     for (uint32_t b : buffers) {
         if (b) glDeleteBuffers(1, &b);
     }
@@ -100,6 +100,7 @@ bool TiledPath::available() {
 }
 
 void TiledPath::bind(const ProgramCache& programs) {
+    sort_.bind(programs);
     setup_ = programs.passProgram(ProgramCache::TiledSetup);
     shade_ = programs.passProgram(ProgramCache::TiledShade);
     composite_ = programs.passProgram(ProgramCache::TiledComposite);
@@ -166,7 +167,11 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
         ranges[b] = {batch.first, batch.count, batch.technique == Technique::Spherical};
     }
     const BillboardReach reach = draw_.billboardReach(*record, false);
-    if (!binParticles(view, record->list.instances.data(), ranges, batchCount, &reach, &record->bins, jobs)) return false;
+    if (!binParticles(view, record->list.instances.data(), ranges, batchCount, &reach, &record->bins, jobs,
+                      TileBins::Fill::Pairs) ||
+        !sort_.fits(record->bins)) {
+        return false;
+    }
     const Target color = frame.sceneColor();
     ScreenRect bound;  // whole
     if (dynamic_cast<ImmediateFrame*>(&frame)) {
@@ -184,7 +189,6 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
 }
 
 void TiledPath::ensureObjects(int width, int height) {
-    if (!entryBuffer_) glGenBuffers(1, &entryBuffer_);
     if (!tileBuffer_) glGenBuffers(1, &tileBuffer_);
     if (!recordBuffer_) glGenBuffers(1, &recordBuffer_);
     if (!coverVao_) {
@@ -219,13 +223,14 @@ void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Targe
     ComputeBindingsScope bindings;
     ensureObjects(view.width, view.height);
 
-    // The bins and the instances.
-    upload(entryBuffer_, bins.entries.data(), bins.entries.size() * sizeof(uint32_t));
+    // The bins: each tile's list written and sorted on the GPU (TileSort.h), the tiles, the instances.
+    const uint32_t entries = sort_.run(bins);
+    if (!entries) return;
     upload(tileBuffer_, bins.tiles.data(), bins.tiles.size() * sizeof(uint32_t));
     InstanceStream& stream = draw_.stream();
     stream.upload(v.list.instances.data(), v.list.particleCount());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceBinding, stream.instanceBuffer());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEntryBinding, entryBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEntryBinding, entries);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBinding, tileBuffer_);
     glBindImageTexture(kAccumImage, accum_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
 

@@ -4,9 +4,10 @@
 // blended one fragment at a time.
 //   "particles_tiled"  reads sceneDepth (the z-buffer in place, or the host's linear depth),
 //                      writes sceneColor
-// Declaring the pass bins the view's particles on the CPU (binParticles, TileBins.h: each
-// particle into the tiles its bound touches, front to back). The pass uploads the bins, sets each
-// particle up once (a compute dispatch, one invocation per particle: what the vertex shader works
+// Declaring the pass bounds the view's particles and counts each tile's entries on the CPU
+// (binParticles, TileBins.h: each particle into the tiles its bound touches, front to back). The
+// pass writes each tile's list on the GPU (TileSort.h: a pair per particle and tile, sorted by
+// tile, stably), sets each particle up once (a compute dispatch, one invocation per particle: what the vertex shader works
 // out), then dispatches one work group per tile that holds particles (one invocation per pixel:
 // one scene-depth fetch per pixel, the particles' records read in order, the blend in registers,
 // stopped once the pixel is opaque) into the plugin's own RGBA16F image, and draws those tiles
@@ -32,11 +33,12 @@
 // (TiledPathTest: at most 4/255, spheres 5; docs/results.md has fxbench's error).
 //
 // GL state: the pass runs in a GlStateGuard; what it touches beyond the guard's rows (shader
-// storage buffer bindings 0-3 and the generic one, image unit 0) it reads first and puts back.
+// storage buffer bindings 0-4 and the generic one, image unit 0) it reads first and puts back.
 #include <memory>
 
 #include "ParticleDraw.h"
 #include "RendererConfig.h"
+#include "TileSort.h"
 
 namespace fx {
 
@@ -56,13 +58,14 @@ public:
     /// Takes the tiled programs of `programs` (0 where one failed or was never built) and looks
     /// their uniforms up. Context current, inside a guard.
     void bind(const ProgramCache& programs);
-    /// Its three programs built.
-    bool ok() const { return setup_ != 0 && shade_ != 0 && composite_ != 0; }
+    /// Its programs built (the sort's too).
+    bool ok() const { return setup_ != 0 && shade_ != 0 && composite_ != 0 && sort_.ok(); }
     /// Whether this view can be drawn tiled (the rule above; no GL).
     static bool canDraw(const ParticleView& view);
 
     /// Bins the view's particles and declares its pass; false (nothing declared) where a particle
-    /// has no bound: the caller declares the full-resolution pass instead.
+    /// has no bound or the lists would not fit a shader storage block: the caller declares the
+    /// full-resolution pass instead.
     /// `jobs`: the host's job system, for the binning.
     bool declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& view, const Jobs& jobs = Jobs());
 
@@ -82,7 +85,8 @@ private:
     };
     ShadeUniforms setupUniforms_, shadeUniforms_;
     int compositeAccum_ = -1, compositeOrigin_ = -1, compositeViewSize_ = -1;
-    uint32_t entryBuffer_ = 0, tileBuffer_ = 0;  ///< the bins (shader storage)
+    TileSort sort_;                              ///< writes the tiles' lists
+    uint32_t tileBuffer_ = 0;                    ///< the tiles (shader storage)
     uint32_t recordBuffer_ = 0;                  ///< the particles' records (the setup dispatch's)
     size_t recordCapacity_ = 0;
     uint32_t accum_ = 0;                         ///< RGBA16F, at least the view's size

@@ -1,0 +1,62 @@
+#pragma once
+// The tiled path's lists written on the GPU (shaders/cs_particles_tile_sort.glsl). binParticles (TileBins.h,
+// Fill::Pairs) bounds the particles and counts each tile's entries on the CPU, in time that grows
+// with the particles and the tiles; the lists grow with the entries (6 M at 256,000 particles in
+// bench_draw's view), so they are written here: a pair (tile, entry) per tile of each particle's
+// range in particle order, then a stable radix sort of the pairs by tile, four bits a pass (four
+// passes for up to 65,536 tiles: 1080p has 8,160, 4K 32,400). The sorted entries are
+// binParticles' Fill::Entries lists bit for bit (TileSortTest).
+//
+// Why not on the CPU: there every list is written once per frame and uploaded (24 MB at 256,000
+// particles); on the H200 that was 37 ms a frame against the tiled pass's 25 ms (docs/results.md,
+// session 24).
+//
+// GL state: run() binds shader storage buffers 0-4 and a program; the caller puts them back
+// (TiledPath's ComputeBindingsScope). Context current.
+#include <cstddef>
+#include <cstdint>
+
+#include "ProgramCache.h"
+#include "TileBins.h"
+
+namespace fx {
+
+class TileSort {
+public:
+    static constexpr int kBindings = 5;            ///< shader storage buffers 0 .. 4
+    static constexpr uint32_t kBlockPairs = 4096;  ///< cs_particles_tile_sort.glsl's pairs per block
+    static constexpr int kDigitBits = 4;           ///< cs_particles_tile_sort.glsl's bits of the tile a pass
+
+    TileSort() = default;
+    ~TileSort();
+    TileSort(const TileSort&) = delete;
+    TileSort& operator=(const TileSort&) = delete;
+
+    /// Takes the four programs of `programs` (0 where one failed) and looks their uniforms up, and
+    /// the context's largest shader storage block. Context current.
+    void bind(const ProgramCache& programs);
+    bool ok() const { return emit_ && count_ && scan_ && scatter_; }
+    /// Whether run() can take `bins` (its pairs fit a shader storage block of the context).
+    bool fits(const TileBins& bins) const;
+    /// Writes and sorts the pairs of `bins` (binParticles with Fill::Pairs); returns the buffer
+    /// whose first bins.entryCount words are the entries, tile by tile (0 where !ok() or
+    /// !fits()). The buffer is the sort's own, valid until the next run(). Ends with a shader
+    /// storage barrier.
+    uint32_t run(const TileBins& bins);
+
+    /// The radix passes a view of `tileCount` tiles takes.
+    static int passes(int tileCount);
+
+private:
+    void ensure(uint32_t* buffer, size_t* capacity, size_t bytes);
+    uint32_t emit_ = 0, count_ = 0, scan_ = 0, scatter_ = 0;
+    struct Uniforms {
+        int groupsX = -1, particleCount = -1, tilesX = -1, pairCount = -1, shift = -1, blocks = -1, length = -1;
+    };
+    Uniforms emitU_, countU_, scanU_, scatterU_;
+    uint32_t particles_ = 0, keys_[2] = {}, entries_[2] = {}, histogram_ = 0;
+    size_t particlesCapacity_ = 0, keysCapacity_[2] = {}, entriesCapacity_[2] = {}, histogramCapacity_ = 0;
+    int64_t maxBlockBytes_ = 0;
+};
+
+}  // namespace fx

@@ -1,0 +1,147 @@
+// The tiled path's lists on the GPU (TileSort.h, cs_particles_tile_sort.glsl): from binParticles' Fill::Pairs
+// words, the emit and the stable radix sort write each tile's entries front to back, and they are
+// Fill::Entries' lists bit for bit:
+//  - on views of 1 tile (no radix pass) up to 1080p (8,160 tiles, four passes), with particles
+//    off the view, clipped, across tiles, and a sphere across the near plane in every tile;
+//  - with more pairs than one block (4,096) and a histogram longer than the scan group (1,024
+//    words: over 65,536 pairs), and a second run on the same buffers with fewer pairs;
+//  - the words themselves, without GL: pairs written row by row in particle order and sorted
+//    stably by tile are the lists (what the shaders do, done on the CPU).
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include <glad/gl.h>
+
+#include "FxTestHost.h"
+#include "render/ShaderLoader.h"
+#include "render/TileSort.h"
+
+namespace fxtest {
+namespace tile_sort_test {  // named: the fx_host tests build as unity batches
+
+constexpr GLenum kShaderStorageBuffer = 0x90D2;  // GL 4.3's (the tests' loader is 3.3 core)
+
+fx::ViewInfo viewOf(int width, int height) {
+    return makeView(glm::vec3(0.0f, 1.5f, 6.0f), glm::vec3(0.0f, 1.0f, 0.0f), width, height, 0.1f, 500.0f);
+}
+
+// `n` particles around the view (some behind the camera, some off its sides), sizes 0.05-`largest`
+// m, in two batches of billboards and a last one of spheres whose first sits on the camera (across
+// the near plane: every tile).
+struct Scene {
+    std::vector<fx::ParticleInstance> particles;
+    std::vector<fx::TileBins::Range> ranges;
+};
+Scene sceneOf(int n, float largest, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> across(-6.0f, 6.0f), up(-1.0f, 4.0f), deep(-40.0f, 8.0f), size(0.05f, largest);
+    Scene s;
+    s.particles.resize(size_t(n));
+    for (fx::ParticleInstance& p : s.particles) {
+        p.x = across(rng);
+        p.y = up(rng);
+        p.z = deep(rng);
+        p.size = size(rng);
+    }
+    const int a = n / 3, b = n / 3;
+    s.ranges = {{0, a, false}, {a, b, false}, {a + b, n - a - b, true}};
+    fx::ParticleInstance& onCamera = s.particles[size_t(a + b)];
+    onCamera.x = 0.0f;
+    onCamera.y = 1.5f;
+    onCamera.z = 6.0f;
+    onCamera.size = 1.0f;
+    return s;
+}
+
+// The emit and the sort on the CPU: pairs row by row in particle order, sorted stably by tile.
+std::vector<uint32_t> sortOnCpu(const fx::TileBins& bins) {
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    for (size_t k = 0; k < bins.particles.size() / 4; ++k) {
+        const uint32_t* w = &bins.particles[k * 4];
+        EXPECT_EQ(w[2], uint32_t(pairs.size())) << "particle " << k << "'s first pair";
+        for (uint32_t y = w[1] & 0xffffu; y <= (w[1] >> 16) && (w[0] & 0xffffu) <= (w[0] >> 16); ++y) {
+            for (uint32_t x = w[0] & 0xffffu; x <= (w[0] >> 16); ++x) pairs.emplace_back(y * uint32_t(bins.tilesX) + x, w[3]);
+        }
+    }
+    std::stable_sort(pairs.begin(), pairs.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
+    std::vector<uint32_t> entries;
+    for (const auto& p : pairs) entries.push_back(p.second);
+    return entries;
+}
+
+struct Case {
+    int width, height, particles;
+    float largest;
+};
+// 1 tile (no pass), 12 (one), 192 (two), 1,320 (three), 8,160 (four); the last two with 66 k and
+// 300 k pairs (more than 16 blocks of histogram per scan invocation).
+const Case kCases[] = {{16, 16, 40, 2.0f}, {64, 48, 300, 2.0f}, {256, 192, 2000, 2.5f}, {640, 480, 3000, 3.0f},
+                       {1920, 1080, 6000, 3.0f}};
+
+TEST(TileSortWords, PairsSortedStablyByTileAreTheLists) {
+    for (const Case& c : kCases) {
+        SCOPED_TRACE(testing::Message() << c.width << "x" << c.height);
+        const Scene s = sceneOf(c.particles, c.largest, 5);
+        const fx::ViewInfo view = viewOf(c.width, c.height);
+        fx::TileBins lists, words;
+        ASSERT_TRUE(fx::binParticles(view, s.particles.data(), s.ranges.data(), 3, nullptr, &lists));
+        ASSERT_TRUE(fx::binParticles(view, s.particles.data(), s.ranges.data(), 3, nullptr, &words, fx::Jobs(),
+                                     fx::TileBins::Fill::Pairs));
+        EXPECT_TRUE(words.entries.empty()) << "Fill::Pairs leaves the lists to the GPU";
+        EXPECT_EQ(words.tiles, lists.tiles);
+        EXPECT_EQ(words.cover.vertices, lists.cover.vertices);
+        EXPECT_EQ(words.entryCount, uint32_t(lists.entries.size()));
+        EXPECT_EQ(words.particles, lists.particles);
+        EXPECT_EQ(sortOnCpu(words), lists.entries);
+    }
+}
+
+class TileSortTest : public FxHostTest {
+protected:
+    fx::ProgramCache programs{fx::snapshotShaderReader(fx::shaderReader(""))};
+};
+
+TEST_F(TileSortTest, SortedEntriesAreTheCpuListsBitForBit) {
+    std::vector<std::string> errors;
+    ASSERT_EQ(programs.build(fx::ProgramCache::tileSortKeys(), &errors), 4) << (errors.empty() ? "" : errors[0]);
+    fx::TileSort sort;
+    sort.bind(programs);
+    ASSERT_TRUE(sort.ok());
+    int sortedAtLeastOncePastOneBlock = 0;
+    for (int round = 0; round < 2; ++round) {
+        // The second round on the same (grown) buffers, the cases backwards: fewer pairs than the
+        // buffers hold must not read the last run's.
+        for (int i = 0; i < int(std::size(kCases)); ++i) {
+            const Case& c = kCases[round == 0 ? i : int(std::size(kCases)) - 1 - i];
+            SCOPED_TRACE(testing::Message() << c.width << "x" << c.height << ", round " << round);
+            const Scene s = sceneOf(c.particles, c.largest, 7 + unsigned(round));
+            const fx::ViewInfo view = viewOf(c.width, c.height);
+            fx::TileBins lists, words;
+            ASSERT_TRUE(fx::binParticles(view, s.particles.data(), s.ranges.data(), 3, nullptr, &lists));
+            ASSERT_TRUE(fx::binParticles(view, s.particles.data(), s.ranges.data(), 3, nullptr, &words, fx::Jobs(),
+                                         fx::TileBins::Fill::Pairs));
+            ASSERT_TRUE(sort.fits(words));
+            const uint32_t buffer = sort.run(words);
+            ASSERT_NE(buffer, 0u);
+            std::vector<uint32_t> got(words.entryCount);
+            glBindBuffer(kShaderStorageBuffer, buffer);
+            glGetBufferSubData(kShaderStorageBuffer, 0, GLsizeiptr(got.size() * 4), got.data());
+            glBindBuffer(kShaderStorageBuffer, 0);
+            ASSERT_EQ(got.size(), lists.entries.size());
+            size_t firstDifference = 0;
+            while (firstDifference < got.size() && got[firstDifference] == lists.entries[firstDifference]) ++firstDifference;
+            EXPECT_EQ(firstDifference, got.size()) << "entries differ from " << firstDifference << " of " << got.size();
+            if (got.size() > fx::TileSort::kBlockPairs) ++sortedAtLeastOncePastOneBlock;
+        }
+    }
+    EXPECT_GE(sortedAtLeastOncePastOneBlock, 4) << "the cases sort more than one block";
+    EXPECT_EQ(fx::TileSort::passes(1), 0);
+    EXPECT_EQ(fx::TileSort::passes(12), 1);
+    EXPECT_EQ(fx::TileSort::passes(8160), 4);
+    EXPECT_EQ(fx::TileSort::passes(65536), 4);
+    EXPECT_EQ(fx::TileSort::passes(65537), 5);
+}
+
+}  // namespace tile_sort_test
+}  // namespace fxtest
