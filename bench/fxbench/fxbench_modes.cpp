@@ -130,7 +130,10 @@ void applyMode(cube::Game& game, const Mode& mode) {
     ro.quarterRes = mode.quarterRes;
     ro.quarterResAlways = mode.quarterResAlways;
     ro.bilinearUpsample = false;  // the depth-aware composite is the one under test
-    ro.tiled = mode.tiled;
+    // Each mode names its path: a +tiled mode tiled on any context, the others rasterised (also
+    // on a GPU, where the default, Tiling::Auto, would draw them tiled).
+    ro.tiled = false;
+    ro.tiling = mode.tiled ? fx::Tiling::On : fx::Tiling::Off;
     plugin->setRenderOptions(ro);
     plugin->setParticleShape(mode.shape);
     // The engine's rule for a window key or a panel switch (Render::handleKeys, the panel): a
@@ -138,7 +141,7 @@ void applyMode(cube::Game& game, const Mode& mode) {
     // frames, so no program is built while the next frame is declared (nor inside a timed render).
     if (ro.techniqueOverride != was.techniqueOverride || ro.quarterRes != was.quarterRes ||
         ro.quarterResAlways != was.quarterResAlways || ro.bilinearUpsample != was.bilinearUpsample ||
-        ro.tiled != was.tiled) {
+        ro.tiled != was.tiled || ro.tiling != was.tiling) {
         (void)plugin->prepareGl(nullptr);  // a failure is logged once by the plugin
     }
     if (mode.lit) {

@@ -209,7 +209,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
         }
     }
     // Tiled (TiledPath.h): a full-resolution view it can draw, in a context with compute shaders.
-    const bool tiled = !quarterRes && options.tiled && TiledPath::available() && TiledPath::canDraw(*record);
+    const bool tiled = !quarterRes && TiledPath::wanted(options) && TiledPath::canDraw(*record);
     ensureDrawPrograms(*record, quarterRes, tiled);
 
     draw_.ramp().setRows(batches, batchCount);

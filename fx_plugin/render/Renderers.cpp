@@ -56,7 +56,7 @@ bool Renderers::prepare(const std::vector<ReactionRuntime>& runtimes, const Fram
         const int s = 2 * whole + half;
         if (std::find(powerSteps.begin(), powerSteps.end(), s) == powerSteps.end()) powerSteps.push_back(s);
     }
-    bool ok = billboards_.prepare(out, powerSteps, settings.options.quarterRes, settings.options.tiled);
+    bool ok = billboards_.prepare(out, powerSteps, settings.options.quarterRes, TiledPath::wanted(settings.options));
     if (mega) ok = mega_.prepare(out) && ok;
     if (stateless) ok = stateless_.prepare(out) && ok;
     // The immediate path's own program too: the first renderView then compiles nothing.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <utility>
 
 #include "render/PrivateGl.h"
@@ -90,6 +91,21 @@ TiledPath::~TiledPath() {
     }
     if (accum_) glDeleteTextures(1, &accum_);
     if (coverVao_) glDeleteVertexArrays(1, &coverVao_);
+}
+
+bool TiledPath::softwareRasterizer(const char* renderer) {
+    if (!renderer) return false;
+    for (const char* name : {"llvmpipe", "softpipe", "Software Rasterizer", "SwiftShader", "Basic Render Driver"}) {
+        if (std::strstr(renderer, name)) return true;
+    }
+    return false;
+}
+
+bool TiledPath::wanted(const RenderOptions& options) {
+    if (options.tiling == Tiling::Off && !options.tiled) return false;
+    if (!available()) return false;
+    if (options.tiled || options.tiling == Tiling::On) return true;
+    return !softwareRasterizer(reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
 }
 
 bool TiledPath::available() {

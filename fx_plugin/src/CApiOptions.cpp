@@ -20,10 +20,12 @@ Enum enumFrom(int v) {
 // API 2.0's fxRenderOptions ended with bilinearUpsample; 2.1 appended particleShape and
 // quarterResAlways.
 constexpr size_t kRenderOptionsSize20 = offsetof(fxRenderOptions, particleShape);
-// 2.3 appended tiled: a 2.1 or 2.2 host's size ends before it.
+// 2.3 appended tiled: a 2.1 or 2.2 host's size ends before it; 2.4 tiling.
 constexpr size_t kRenderOptionsSize21 = offsetof(fxRenderOptions, tiled);
+constexpr size_t kRenderOptionsSize23 = offsetof(fxRenderOptions, tiling);
 bool knownOptionsSize(uint32_t size) {
-    return knownSize(size, sizeof(fxRenderOptions), kRenderOptionsSize20) || size == kRenderOptionsSize21;
+    return knownSize(size, sizeof(fxRenderOptions), kRenderOptionsSize20) || size == kRenderOptionsSize21 ||
+           size == kRenderOptionsSize23;
 }
 
 }  // namespace
@@ -34,7 +36,8 @@ int setRenderOptions(fxPlugin* p, const fxRenderOptions* o) {
     if (!knownOptionsSize(o->size)) {
         return code(refuse(p, ErrorCode::BadDescriptor, "setRenderOptions",
                            sizeProblem("fxRenderOptions", o->size, sizeof *o, kRenderOptionsSize20) + " (or " +
-                               std::to_string(kRenderOptionsSize21) + ": API 2.1-2.2)"));
+                               std::to_string(kRenderOptionsSize21) + ": API 2.1-2.2, " +
+                               std::to_string(kRenderOptionsSize23) + ": API 2.3)"));
     }
     const fxRenderOptions full = fullDesc(*o);
     if (full.techniqueOverride < 0 || full.techniqueOverride > FX_TECHNIQUE_MEGA) {
@@ -49,6 +52,12 @@ int setRenderOptions(fxPlugin* p, const fxRenderOptions* o) {
                            "particleShape = " + std::to_string(full.particleShape) +
                                "; expected FX_SHAPE_TRIMMED (0) or FX_SHAPE_QUAD (1)"));
     }
+    const bool setsTiling = o->size > kRenderOptionsSize23;
+    if (setsTiling && (full.tiling < FX_TILING_AUTO || full.tiling > FX_TILING_ON)) {
+        return code(refuse(p, ErrorCode::InvalidValue, "setRenderOptions",
+                           "tiling = " + std::to_string(full.tiling) +
+                               "; expected FX_TILING_AUTO (0), FX_TILING_OFF (1) or FX_TILING_ON (2)"));
+    }
     RenderOptions r;
     r.techniqueOverride = static_cast<Technique>(full.techniqueOverride);
     r.quarterRes = full.quarterRes != 0;
@@ -57,6 +66,8 @@ int setRenderOptions(fxPlugin* p, const fxRenderOptions* o) {
     r.quarterResAlways = setsShape ? full.quarterResAlways != 0 : impl(p).renderOptions().quarterResAlways;
     // And a 2.0-2.2 host's call leaves tiled as it was.
     r.tiled = o->size > kRenderOptionsSize21 ? full.tiled != 0 : impl(p).renderOptions().tiled;
+    // And a 2.0-2.3 host's call leaves tiling as it was.
+    r.tiling = setsTiling ? static_cast<Tiling>(full.tiling) : impl(p).renderOptions().tiling;
     const ErrorCode set = impl(p).setRenderOptions(r);
     if (set != ErrorCode::None || !setsShape) return code(set);
     return code(impl(p).setParticleShape(static_cast<ParticleShape>(full.particleShape)));
@@ -71,6 +82,7 @@ void getRenderOptions(const fxPlugin* p, fxRenderOptions* out) {
     full.particleShape = static_cast<int>(impl(p).particleShape());
     full.quarterResAlways = r.quarterResAlways ? 1 : 0;
     full.tiled = r.tiled ? 1 : 0;
+    full.tiling = static_cast<int>(r.tiling);
     // 2.0 filled its fields whatever the size (hosts may never have set it on a struct they only
     // read): a size the library does not know still gets them, and only them, as every host's
     // struct has at least those.

@@ -190,6 +190,10 @@ ErrorCode PluginImpl::setRenderOptions(const RenderOptions& options) {
                               "techniqueOverride = " + std::to_string(t) +
                                   "; expected FromReaction, Hard, Soft, Spherical or Mega");
     }
+    if (static_cast<uint8_t>(options.tiling) > static_cast<uint8_t>(Tiling::On)) {
+        return errors_.refuse(ErrorCode::InvalidValue, "setRenderOptions",
+                              "tiling = " + std::to_string(static_cast<int>(options.tiling)) + "; expected Auto, Off or On");
+    }
     settings_.options = options;
     return ErrorCode::None;
 }

@@ -38,7 +38,7 @@ void PluginHostTest::setMode(const RenderMode& m) {
     o.techniqueOverride = m.technique;
     o.quarterRes = m.quarter;
     o.quarterResAlways = m.quarter;
-    o.tiled = m.tiled;
+    o.tiling = m.tiled ? fx::Tiling::On : fx::Tiling::Off;  // the mode's path on any context
     ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
     if (m.lit) {
         ASSERT_EQ(plugin->setSceneLight(fx::SceneLight{}), fx::ErrorCode::None);

@@ -22,7 +22,8 @@ void DirectParticles::setMode(const RenderMode& m) {
     settings.options.techniqueOverride = m.technique;
     settings.options.quarterRes = m.quarter;
     settings.options.quarterResAlways = m.quarter;
-    settings.options.tiled = m.tiled;
+    settings.options.tiled = false;
+    settings.options.tiling = m.tiled ? fx::Tiling::On : fx::Tiling::Off;  // the mode's path on any context
 }
 
 void DirectParticles::set(const std::vector<HandParticle>& particles) {

@@ -36,7 +36,7 @@ class TiledPathTest : public FxHostTest {
 protected:
     Image draw(DirectParticles& particles, TestFrameGraph& graph, TestScene& scene, const fx::ViewInfo& view,
                bool tiled) {
-        particles.settings.options.tiled = tiled;
+        particles.settings.options.tiling = tiled ? fx::Tiling::On : fx::Tiling::Off;
         renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = particles.declare(view, f); });
         return graph.readColor();
     }
@@ -177,6 +177,47 @@ TEST_F(TiledPathTest, ViewsItCannotDrawAreDrawnAsWithoutIt) {
     const Image tiled = draw(direct, graph, scene, ortho, true);
     EXPECT_FALSE(graph.ran(fx::TiledPath::kPass));
     EXPECT_EQ(maxAbsDiff(plain, tiled), 0);
+}
+
+// Tiling::Auto, the default: rasterised on a software rasterizer (this context: llvmpipe), as
+// Off; On and the 2.3 switch `tiled` draw it tiled. The renderer strings Auto tiles on and not.
+TEST_F(TiledPathTest, AutoRasterisesOnASoftwareRasterizerAndOnOrTiledDrawTiled) {
+    EXPECT_EQ(fx::RenderOptions{}.tiling, fx::Tiling::Auto);
+    EXPECT_FALSE(fx::RenderOptions{}.tiled);
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    ASSERT_TRUE(fx::TiledPath::softwareRasterizer(renderer)) << renderer;
+    for (const char* software : {"llvmpipe (LLVM 15.0.6, 256 bits)", "softpipe", "Mesa X11 Software Rasterizer",
+                                 "SwiftShader Device (Subzero)", "D3D12 (Microsoft Basic Render Driver)"}) {
+        EXPECT_TRUE(fx::TiledPath::softwareRasterizer(software)) << software;
+    }
+    for (const char* gpu : {"NVIDIA H200/PCIe/SSE2", "AMD Radeon RX 7900 XTX (radeonsi, navi31, LLVM 15.0.7, DRM 3.54)",
+                            "Mesa Intel(R) UHD Graphics 620 (KBL GT2)", "Apple M2"}) {
+        EXPECT_FALSE(fx::TiledPath::softwareRasterizer(gpu)) << gpu;
+    }
+    EXPECT_FALSE(fx::TiledPath::softwareRasterizer(nullptr));
+
+    direct.set({HandParticle{glm::vec3(0.0f, 1.0f, 0.0f), 4.0f}, HandParticle{glm::vec3(1.0f, 1.5f, -1.0f), 3.0f}});
+    direct.desc.render.technique = fx::Technique::Soft;
+    TestFrameGraph graph(kW, kH);
+    TestScene scene;
+    scene.quads = {TestScene::ground(60.0f, glm::vec3(0.3f))};
+    const fx::ViewInfo view = makeView(glm::vec3(0.0f, 2.0f, 8.0f), glm::vec3(0.0f, 1.0f, 0.0f), kW, kH);
+    struct Case {
+        bool tiled;
+        fx::Tiling tiling;
+        bool expectTiled;
+    };
+    for (const Case& c : {Case{false, fx::Tiling::Auto, false}, Case{false, fx::Tiling::Off, false},
+                          Case{false, fx::Tiling::On, true}, Case{true, fx::Tiling::Auto, true},
+                          Case{true, fx::Tiling::Off, true}}) {
+        SCOPED_TRACE(testing::Message() << "tiled " << c.tiled << ", tiling " << int(c.tiling));
+        direct.settings.options.tiled = c.tiled;
+        direct.settings.options.tiling = c.tiling;
+        renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = direct.declare(view, f); });
+        EXPECT_GE(drawn, 2);
+        EXPECT_EQ(graph.ran(fx::TiledPath::kPass), c.expectTiled);
+        EXPECT_EQ(graph.ran(fx::ParticleRenderer::kFullResPass), !c.expectTiled);
+    }
 }
 
 }  // namespace tiled_path_test

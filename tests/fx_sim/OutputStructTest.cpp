@@ -275,7 +275,7 @@ TEST_F(OutputStructTest, QuarterResAlwaysIsSetFromA21SizeAndKeptByA20One) {
 TEST_F(OutputStructTest, TiledIsSetFromA23SizeAndKeptByA22One) {
     fxRenderOptions back = FX_DESC_INIT(fxRenderOptions);
     api->getRenderOptions(plugin, &back);
-    EXPECT_EQ(back.tiled, 0) << "rasterised by default";
+    EXPECT_EQ(back.tiled, 0) << "left to tiling by default";
 
     fxRenderOptions set = FX_DESC_INIT(fxRenderOptions);
     set.tiled = 1;
@@ -302,6 +302,47 @@ TEST_F(OutputStructTest, TiledIsSetFromA23SizeAndKeptByA22One) {
     ASSERT_EQ(api->setRenderOptions(plugin, &set), FX_ERROR_NONE);
     api->getRenderOptions(plugin, &back);
     EXPECT_EQ(back.tiled, 0);
+    EXPECT_TRUE(host.errors.empty());
+}
+
+// tiling (2.4): FX_TILING_AUTO by default; set from a 2.4 size, refused outside its enum (nothing
+// changes), left as it was by a 2.3 host's size (ending before it), and not written past that
+// size by a read.
+TEST_F(OutputStructTest, TilingIsAutoBySetFromA24SizeAndKeptByA23One) {
+    fxRenderOptions back = FX_DESC_INIT(fxRenderOptions);
+    api->getRenderOptions(plugin, &back);
+    EXPECT_EQ(back.tiling, FX_TILING_AUTO);
+
+    fxRenderOptions set = FX_DESC_INIT(fxRenderOptions);
+    set.tiling = FX_TILING_OFF;
+    ASSERT_EQ(api->setRenderOptions(plugin, &set), FX_ERROR_NONE);
+    api->getRenderOptions(plugin, &back);
+    EXPECT_EQ(back.tiling, FX_TILING_OFF);
+
+    set.tiling = 3;
+    set.quarterRes = 1;
+    EXPECT_EQ(api->setRenderOptions(plugin, &set), FX_ERROR_INVALID_VALUE);
+    api->getRenderOptions(plugin, &back);
+    EXPECT_EQ(back.tiling, FX_TILING_OFF);
+    EXPECT_EQ(back.quarterRes, 0) << "a refused call sets no field";
+    ASSERT_EQ(host.errors.size(), 1u);
+    EXPECT_NE(host.errors[0].find("tiling = 3"), std::string::npos) << host.errors[0];
+    host.errors.clear();
+
+    const size_t size23 = offsetof(fxRenderOptions, tiling);
+    fxRenderOptions set23 = FX_DESC_INIT(fxRenderOptions);
+    set23.size = uint32_t(size23);
+    set23.tiled = 1;
+    set23.tiling = FX_TILING_ON;  // past its size: not read
+    ASSERT_EQ(api->setRenderOptions(plugin, &set23), FX_ERROR_NONE);
+    api->getRenderOptions(plugin, &back);
+    EXPECT_EQ(back.tiling, FX_TILING_OFF);
+    EXPECT_EQ(back.tiled, 1) << "the 2.3 field inside a 2.3 size is read";
+
+    Guarded<fxRenderOptions> old{uint32_t(size23)};
+    api->getRenderOptions(plugin, old.out());
+    EXPECT_EQ(old.writtenFrom(size23), 0u);
+    EXPECT_EQ(old.out()->tiled, 1);
     EXPECT_TRUE(host.errors.empty());
 }
 

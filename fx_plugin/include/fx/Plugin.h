@@ -52,7 +52,14 @@ namespace fx {
 /// the scene depth, blurred, given fractal detail, lit and composited as one volume.
 enum class Technique : uint8_t { FromReaction = 0, Hard, Soft, Spherical, Mega };
 
-/// Run-time switches. Defaults: every reaction draws its own technique at full resolution.
+/// Where the tiled path (RenderOptions::tiled) draws. Auto: in a context with compute shaders that
+/// is not a software rasterizer (llvmpipe, softpipe, SwiftShader, ...): on the H200 the tiled
+/// passes are 6.6-17x shorter than the rasterised ones, on llvmpipe 2.3-5x longer
+/// (docs/results.md). Off: rasterised. On: tiled wherever it can draw. Since API 2.4.
+enum class Tiling : uint8_t { Auto = 0, Off = 1, On = 2 };
+
+/// Run-time switches. Defaults: every reaction draws its own technique at full resolution; the
+/// tiled path on a GPU (Tiling::Auto).
 struct RenderOptions {
     Technique techniqueOverride = Technique::FromReaction;
     /// Particles into a half x half target, depth-aware composite; per view, only where that costs
@@ -65,8 +72,10 @@ struct RenderOptions {
     bool quarterResAlways = false;
     /// Unlit hard, soft and spherical particles of a full-resolution view shaded per 16 px tile
     /// by a compute shader (one scene-depth read and one blend per pixel) where the context has
-    /// compute shaders; elsewhere, and for lit smoke and mega, rasterised as before. Since API 2.3.
+    /// compute shaders; elsewhere, and for lit smoke and mega, rasterised as before. Since API 2.3;
+    /// since 2.4 true is `tiling` On whatever `tiling` says, false leaves it to `tiling`.
     bool tiled = false;
+    Tiling tiling = Tiling::Auto;  ///< where the tiled path draws (Tiling); since API 2.4
 };
 
 /// How billboard particles (hard, soft) are rasterised. Trimmed: per atlas frame a convex

@@ -83,7 +83,7 @@ extern "C" {
 #endif
 
 #define FX_API_VERSION_MAJOR 2
-#define FX_API_VERSION_MINOR 3
+#define FX_API_VERSION_MINOR 4
 #define FX_API_VERSION ((uint32_t)((FX_API_VERSION_MAJOR << 16) | FX_API_VERSION_MINOR))
 
 /* The ranges of numeric inputs (see each field and function). */
@@ -244,9 +244,11 @@ typedef struct fxRenderOptions {
      * the composite (else that view at full resolution); else every view at quarter res (the 2.0
      * behaviour, for comparisons). A 2.0 host's size leaves it as it is (0 unless set). */
     fxBool quarterResAlways;
-    /* API 2.3 (a 2.0-2.2 size leaves it as it is): 1 = unlit hard, soft and spherical particles
-     * shaded per 16 px tile by a compute shader where the context has one (GL 4.3); 0 = raster. */
+    /* API 2.3 (a 2.0-2.2 size leaves it): 1 = unlit hard, soft and spherical particles shaded per
+     * 16 px tile by a compute shader where the context has one; 0 = as tiling says. API 2.4 (older
+     * sizes leave it): tiling, FX_TILING_AUTO (0) tiled on a GPU, not a software rasterizer. */
     fxBool tiled;
+    int tiling;
 } fxRenderOptions;
 
 typedef struct fxSceneLight {

@@ -29,6 +29,7 @@ enum { FX_TECHNIQUE_FROM_REACTION = 0, FX_TECHNIQUE_HARD, FX_TECHNIQUE_SOFT, FX_
 enum { FX_SHAPE_TRIMMED = 0, FX_SHAPE_QUAD = 1 };
 enum { FX_EDGES_DEPTH_AWARE = 0, FX_EDGES_MIXED_RESOLUTION = 1 };
 enum { FX_FADE_CLASSIFICATION_OFF = 0, FX_FADE_CLASSIFICATION_ON = 1 };
+enum { FX_TILING_AUTO = 0, FX_TILING_OFF = 1, FX_TILING_ON = 2 }; /* API 2.4: fxRenderOptions.tiling */
 enum { FX_FORMAT_RGBA8 = 0, FX_FORMAT_RGBA16F, FX_FORMAT_R32F, FX_FORMAT_RG32F,
        FX_FORMAT_DEPTH /* API 2.1: fxTextureRef of fxFrameBuilder.sceneZBuffer only */ };
 /* How the host's z-buffer is ordered: standard (near = 0, LEQUAL) or reversed (near = 1, GEQUAL). */

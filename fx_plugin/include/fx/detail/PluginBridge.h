@@ -202,6 +202,7 @@ public:
         c.bilinearUpsample = o.bilinearUpsample ? 1 : 0;
         c.quarterResAlways = o.quarterResAlways ? 1 : 0;
         c.tiled = o.tiled ? 1 : 0;
+        c.tiling = static_cast<int>(o.tiling);
         return static_cast<ErrorCode>(api_->setRenderOptions(p_, &c));
     }
     RenderOptions renderOptions() const override {
@@ -213,6 +214,7 @@ public:
         o.bilinearUpsample = c.bilinearUpsample != 0;
         o.quarterResAlways = c.quarterResAlways != 0;
         o.tiled = c.tiled != 0;
+        o.tiling = static_cast<Tiling>(c.tiling);
         return o;
     }
     bool prepareGl(Diagnostics* out) override {
