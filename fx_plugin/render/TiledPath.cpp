@@ -8,7 +8,6 @@
 #include "render/PrivateGl.h"
 
 #include "GlStateGuard.h"
-#include "ImmediateFrame.h"
 #include "PassDeclaration.h"
 #include "SceneDepthSource.h"
 
@@ -75,6 +74,25 @@ void upload(uint32_t buffer, const void* data, size_t bytes) {
 // render.near_fade as the shaders' line in depth (ParticleDraw's nearFadeMap).
 glm::vec2 nearFadeMap(float fade, float nearPlane) {
     return fade > 0.0f ? glm::vec2(1.0f / fade, -nearPlane / fade) : glm::vec2(0.0f, 1.0f);
+}
+
+// The pixels of the tiles that hold particles: the only ones the pass reads the scene depth at
+// (the immediate path copies no more of the host's z-buffer). From the bins, so the particles are
+// not bounded a second time.
+ScreenRect tilesBound(const TileBins& bins, int width, int height) {
+    constexpr int kTile = ScreenTiles::kTileSize;
+    ScreenRect r;
+    r.whole = false;
+    if (bins.tileCount() == 0) return r;
+    r.x0 = width;
+    r.x1 = 0;
+    r.y0 = int(bins.tiles[1]) * kTile;                                            // row-major: the first
+    r.y1 = std::min(height, (int(bins.tiles[bins.tiles.size() - 3]) + 1) * kTile);  // and the last row
+    for (size_t t = 0; t < bins.tiles.size(); t += 4) {
+        r.x0 = std::min(r.x0, int(bins.tiles[t]) * kTile);
+        r.x1 = std::max(r.x1, std::min(width, (int(bins.tiles[t]) + 1) * kTile));
+    }
+    return r;
 }
 
 }  // namespace
@@ -189,12 +207,7 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
         return false;
     }
     const Target color = frame.sceneColor();
-    ScreenRect bound;  // whole
-    if (dynamic_cast<ImmediateFrame*>(&frame)) {
-        bound = screenRect(view, record->list.instances.data(), record->list.particleCount(), nullptr,
-                           footprintOf(record->list), Jobs(), &reach);
-    }
-    narrowDepthRead(frame, bound, view.width, view.height);
+    narrowDepthRead(frame, tilesBound(record->bins, view.width, view.height), view.width, view.height);
     addPassReading(frame, kPass, {depth}, color, [this, record, depth, decode, color](PassContext& ctx) {
         if (!targetsFitView(ctx, record->view, color, depth, sizeMismatch_)) return;
         GlStateGuard guard;  // nothing z-tested: the compute shader compares depths itself

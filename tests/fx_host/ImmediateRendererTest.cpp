@@ -198,14 +198,15 @@ TEST_F(ImmediateRendererTest, ReversedZHostSameImagePerDepthSource) {
 }
 
 // The host's z-buffer is copied and linearised only where the plugin's passes read it (the
-// particles' screen bound, grown to whole 64 px blocks), and the picture is the one a
+// particles' screen bound, for the tiled path its tiles that hold particles, grown to whole 64 px
+// blocks), and the picture is the one a
 // whole-view depth gives: with the smoke in one corner of the view, the region is a part of it.
 TEST_F(ImmediateRendererTest, DepthIsMadeOnlyWhereThePassesReadIt) {
     constexpr int W = 480, H = 360;  // large enough for 64 px tiles to leave some of it out
     TestFrameGraph bigGraph(W, H);
     HostTarget host24(W, H, GL_DEPTH_COMPONENT24);
     const fx::ViewInfo v = makeView(glm::vec3(-7.0f, 2.5f, 8.0f), glm::vec3(-3.0f, 0.8f, -1.0f), W, H);
-    for (const RenderMode& m : {kModes[1], kModes[2], kModes[3]}) {
+    for (const RenderMode& m : {kModes[1], kModes[2], kModes[3], kModes[6], kModes[7]}) {  // + the tiled path's tiles
         SCOPED_TRACE(m.label);
         setMode(m);
         renderFrame(bigGraph, scene, v, [&](fx::FrameBuilder& f) { plugin->declarePasses(v, f); });
