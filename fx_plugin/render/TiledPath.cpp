@@ -323,7 +323,9 @@ void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Targe
         glUniform1i(u.groupsX, groupsX);
         glDispatchCompute(GLuint(groupsX), GLuint((groups + groupsX - 1) / groupsX), 1);
     }
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    // The records for the tiles; and the image's stores after the last view's composite read it
+    // (split screen: one image for every view).
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 
     // 2. The tiles: every pixel through its tile's particles.
     glUseProgram(shade_);
