@@ -5,7 +5,8 @@
 //     (the particle's map from pixels to its texture, its tint, fog, fade line, level of detail)
 //     into six vec4 of uRecords, once however many tiles the particle touches.
 //   Otherwise: one work group per 16 x 16 pixel tile of the view, one invocation per pixel. The
-//     CPU binned every particle into the tiles its bound touches, front to back (TileBins.h); each
+//     CPU bounded and counted, and the GPU listed, every particle in the tiles its bound touches,
+//     front to back (TileBins.h, TileSort.h); each
 //     invocation walks its tile's list, reading each particle's record (the same address across
 //     the group: one cached read for all), and evaluates it for its pixel in registers. No shared
 //     memory and no barrier.
