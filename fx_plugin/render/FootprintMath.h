@@ -141,5 +141,16 @@ struct FootprintMath {
     }
 };
 
+// Marks the tiles [tx0, tx1] x [ty0, ty1] in the (tilesX + 1) x (tilesY + 1) difference grid: four
+// writes whatever the particle's size; a prefix sum over the grid turns them into each tile's count
+// (ScreenTiles' runs, TileBins' counts).
+inline void markTiles(int32_t* grid, int tilesX, int tx0, int tx1, int ty0, int ty1) {
+    const size_t stride = size_t(tilesX) + 1;
+    grid[size_t(ty0) * stride + size_t(tx0)] += 1;
+    grid[size_t(ty0) * stride + size_t(tx1) + 1] -= 1;
+    grid[(size_t(ty1) + 1) * stride + size_t(tx0)] -= 1;
+    grid[(size_t(ty1) + 1) * stride + size_t(tx1) + 1] += 1;
+}
+
 }  // namespace footprint
 }  // namespace fx

@@ -15,16 +15,6 @@ using namespace footprint;
 
 constexpr int kTileSize = ScreenTiles::kTileSize, kTileBorder = ScreenTiles::kTileBorder;
 
-// Marks the tiles [tx0, tx1] x [ty0, ty1] in the (tilesX + 1) x (tilesY + 1) difference grid: four
-// writes whatever the particle's size; the prefix sum in tileRuns() turns them into coverage.
-void markTiles(int32_t* grid, int tilesX, int tx0, int tx1, int ty0, int ty1) {
-    const int stride = tilesX + 1;
-    grid[size_t(ty0 * stride + tx0)] += 1;
-    grid[size_t(ty0 * stride + tx1 + 1)] -= 1;
-    grid[size_t((ty1 + 1) * stride + tx0)] -= 1;
-    grid[size_t((ty1 + 1) * stride + tx1 + 1)] += 1;
-}
-
 // The difference grid summed into coverage, row by row, as horizontal runs of covered tiles.
 void tileRuns(ScreenTiles* tiles, int tilesX, int tilesY, int w, int h) {
     const int stride = tilesX + 1;

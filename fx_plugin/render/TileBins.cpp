@@ -112,10 +112,7 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
             word[1] = uint32_t(r[2]) | uint32_t(r[3]) << 16;
             word[2] = uint32_t((r[1] - r[0] + 1) * (r[3] - r[2] + 1));
             sum += word[2];
-            grid[size_t(r[2]) * gridWidth + size_t(r[0])] += 1;
-            grid[size_t(r[2]) * gridWidth + size_t(r[1]) + 1] -= 1;
-            grid[(size_t(r[3]) + 1) * gridWidth + size_t(r[0])] -= 1;
-            grid[(size_t(r[3]) + 1) * gridWidth + size_t(r[1]) + 1] += 1;
+            markTiles(grid, tilesX, r[0], r[1], r[2], r[3]);
         });
         pieceEntries[piece] = sum;
     });
