@@ -193,6 +193,9 @@ private:
         }
         m.particleMs.push_back(particles);
         m.outsidePassesMs.push_back(ms - passes);
+        m.declareMs.push_back(game_.lastFrameCpu().declareMs);
+        m.executeMs.push_back(game_.lastFrameCpu().executeMs);
+        m.finishMs.push_back(game_.lastFrameCpu().finishMs);
         m.frameParticleMs.push_back(particles);
         const fx::Plugin* plugin = game_.specialFX().plugin();
         m.particlesDrawn.push_back(m.mode->effects && plugin ? plugin->stats().particlesDrawn : 0);

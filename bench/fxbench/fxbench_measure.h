@@ -34,6 +34,9 @@ struct ModeRun {
     /// clock's frame less the timer's passes): declaring, compiling and culling the graph, the
     /// CPU work between passes and, with GPU timer queries, GPU time outside any pass.
     std::vector<double> outsidePassesMs;
+    /// Per timed render, Game::lastFrameCpu: the CPU's declaring (before any pass runs: the
+    /// plugin's cull, sort and bins among it), executing (issuing the passes) and glFinish wait.
+    std::vector<double> declareMs, executeMs, finishMs;
     std::map<std::string, std::vector<double>> passMs;
     std::vector<std::string> passOrder;             ///< pass names in first-run order
     std::vector<double> particlesDrawn;

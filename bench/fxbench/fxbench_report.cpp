@@ -160,6 +160,15 @@ std::string markdownReport(const Report& r) {
              fmt("%.3f", m.fillLimitMs) + " | " + (m.fillLimitRatio > 0 ? fmt("%.1f", m.fillLimitRatio) : std::string("-")) + " | " +
              fmt("%.3f", m.ratioVsNofx) + " | " + std::to_string(m.allocatingRenders) + " |\n";
     }
+    // Where the frame's wall time went on the CPU's clock: what the GPU waited for before the
+    // first pass (declare), the issuing of the passes, and the wait for the GPU.
+    o += "\nThe frame on the CPU's clock (medians; declare + execute + finish = the frame)\n\n"
+         "| mode | declare ms | execute ms | finish ms | outside passes ms |\n|---|---:|---:|---:|---:|\n";
+    for (const ModeSummary& m : r.modes) {
+        o += "| " + m.name + " | " + fmt("%.2f", m.declareMs) + " | " + fmt("%.2f", m.executeMs) + " | " +
+             fmt("%.2f", m.finishMs) + " | " + fmt("%.2f", m.outsidePassesMs) + " |\n";
+    }
+    o += std::string("- declare / execute / finish: ") + frameCpuDefinition() + "\n";
     o += "\n- vs hard / vs nofx: median frame ms / that mode's median frame ms (same run)\n";
     o += std::string("- coverage: ") + coverageDefinition() + "; fill-limit x = particle ms / fill-limit ms "
          "(median over error frames; '-' = no particle pass)\n";
@@ -206,6 +215,7 @@ std::string jsonReport(const Report& r, const std::string& in) {
         ? std::string("CPU clock between glFinish calls around each pass")
         : r.timingMethod + " results of each render, waited for after its glFinish (Game::RenderFrame)") + ",\n";
     o += in + "  \"outside_passes_definition\": " + jsonQuote(outsidePassesDefinition()) + ",\n";
+    o += in + "  \"cpu_frame_definition\": " + jsonQuote(frameCpuDefinition()) + ",\n";
     o += in + "  \"notes\": [";
     for (size_t i = 0; i < r.notes.size(); ++i) o += (i ? ", " : "") + jsonQuote(r.notes[i]);
     o += "],\n";
@@ -224,6 +234,9 @@ std::string jsonReport(const Report& r, const std::string& in) {
         o += p + "  \"passes_ms\": " + jsonObject(m.passes) + ",\n";
         o += p + "  \"particle_pass_ms\": " + num(m.particleMs) + ",\n";
         o += p + "  \"outside_passes_ms\": " + num(m.outsidePassesMs) + ",\n";
+        o += p + "  \"cpu_declare_ms\": " + num(m.declareMs) + ",\n";
+        o += p + "  \"cpu_execute_ms\": " + num(m.executeMs) + ",\n";
+        o += p + "  \"cpu_finish_ms\": " + num(m.finishMs) + ",\n";
         o += p + "  \"particle_fragments\": " + num(m.particleFragments) + ",\n";
         o += p + "  \"passes_fragments\": " + jsonObject(m.passFragments) + ",\n";
         o += p + "  \"passes_shaded\": " + jsonObject(m.passShaded) + ",\n";

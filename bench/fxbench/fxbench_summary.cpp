@@ -24,6 +24,13 @@ const char* outsidePassesDefinition() {
            "passes; with GPU timer queries also GPU time outside any pass";
 }
 
+const char* frameCpuDefinition() {
+    return "the frame's CPU wall ms in three stretches (Game::lastFrameCpu): declare, from the frame's start to "
+           "its graph's first pass (culling, declaring, the plugin's particle cull, sort and bins, the graph's "
+           "compile: the GPU has nothing of this frame yet); execute, issuing the passes (draws, dispatches, "
+           "uploads); finish, glFinish's wait for the GPU";
+}
+
 ModeSummary summarise(const ModeRun& run, const ModeRun* hard, const ModeRun* nofx) {
     ModeSummary s;
     s.name = run.mode->name;
@@ -46,6 +53,9 @@ ModeSummary summarise(const ModeRun& run, const ModeRun* hard, const ModeRun* no
     for (const std::string& name : run.passOrder) s.passes.emplace_back(name, median(run.passMs.at(name)));
     s.particleMs = median(run.particleMs);
     s.outsidePassesMs = median(run.outsidePassesMs);
+    s.declareMs = median(run.declareMs);
+    s.executeMs = median(run.executeMs);
+    s.finishMs = median(run.finishMs);
     s.particleFragments = median(run.particleFragments);
     for (const std::string& name : run.passOrder) {
         const auto it = run.passFragments.find(name);

@@ -19,6 +19,7 @@ struct ModeSummary {
     std::vector<std::pair<std::string, double>> passes;  ///< median ms per pass, run order
     double particleMs = 0;                      ///< median of the per-frame sum of particle passes
     double outsidePassesMs = 0;                 ///< median of frame ms - sum of pass ms (ModeRun)
+    double declareMs = 0, executeMs = 0, finishMs = 0;  ///< medians of the frame's CPU stretches (ModeRun)
     double particleFragments = 0;               ///< median over error frames of the samples the particle passes wrote
     std::vector<std::pair<std::string, double>> passFragments;  ///< the same per particle pass, run order
     std::vector<std::pair<std::string, double>> passShaded;     ///< per particle pass: fragment shader invocations
@@ -55,6 +56,7 @@ Report makeReport(const RunConfig& config, const RunResult& result, unsigned see
 const char* edgeDefinition();
 const char* coverageDefinition();
 const char* outsidePassesDefinition();
+const char* frameCpuDefinition();
 
 /// A particle sweep point reached its count when the median live particles are within this
 /// share below the requested count (never above: capacity = count).

@@ -76,8 +76,8 @@ std::string costTable(const Sweep& sweep, const std::vector<Point>& points) {
     std::string o = particles ? "\n## Cost curve: live particles (fixed donut camera, generated reactions)\n\n"
                               : "\n## Cost curve: view size\n\n";
     o += particles ? "| particles requested | reached | reached % | mode | p50 ms | particle ms | outside passes ms | "
-                     "us / particle (particle ms) | vs hard |\n"
-                     "|---:|---:|---:|---|---:|---:|---:|---:|---:|\n"
+                     "CPU declare ms | us / particle (particle ms) | vs hard |\n"
+                     "|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|\n"
                    : "| size | Mpixel | mode | p50 ms | ms / Mpixel | particle ms | outside passes ms | vs hard |\n"
                      "|---|---:|---|---:|---:|---:|---:|---:|\n";
     std::string shortOf;
@@ -88,7 +88,7 @@ std::string costTable(const Sweep& sweep, const std::vector<Point>& points) {
                 o += "| " + p.label + " | " + fmt("%.0f", p.work) + " | " +
                      fmt("%.1f", p.requested > 0 ? 100.0 * p.work / p.requested : 0.0) + " | " + m.name + " | " +
                      fmt("%.2f", m.p50) + " | " + fmt("%.2f", m.particleMs) + " | " + fmt("%.2f", m.outsidePassesMs) +
-                     " | " + (p.work > 0 ? fmt("%.3f", 1000.0 * m.particleMs / p.work) : std::string("-")) + " | " +
+                     " | " + fmt("%.2f", m.declareMs) + " | " + (p.work > 0 ? fmt("%.3f", 1000.0 * m.particleMs / p.work) : std::string("-")) + " | " +
                      fmt("%.3f", m.ratioVsHard) + " |\n";
             } else {
                 o += "| " + p.label + " | " + fmt("%.3f", p.work) + " | " + m.name + " | " + fmt("%.2f", m.p50) + " | " +
@@ -102,6 +102,7 @@ std::string costTable(const Sweep& sweep, const std::vector<Point>& points) {
                      "upload, fill).\n"
                    : "\nms / Mpixel = median frame ms / megapixels; a constant value means cost grows with pixels.\n";
     o += std::string("outside passes ms: ") + outsidePassesDefinition() + ".\n";
+    if (particles) o += std::string("CPU declare ms: the first of ") + frameCpuDefinition() + ".\n";
     if (particles) {
         char line[200];
         std::snprintf(line, sizeof line, "Points reach their count when reached >= %.0f%% of requested; ",

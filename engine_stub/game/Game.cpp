@@ -259,11 +259,16 @@ double Game::RenderFrame() {
     out.passRuns = &passRuns_;
     out.passCulls = &passCulls_;
     if (render_.Dyn(*this, out)) captureNext_ = captureDepthNext_ = false;
+    const auto issued = std::chrono::steady_clock::now();
     gl::finish();  // the frame's GPU work is in the measured time
     // The GPU's pass timings of this very frame (ready after the finish): a later frame, maybe
     // in another mode (fxbench interleaves them), never gets them.
     graph_->resolveTimings();
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const double issuedMs = std::chrono::duration<double, std::milli>(issued - start).count();
+    lastFrameCpu_.executeMs = std::min(graph_->report().executeCpuMs, issuedMs);
+    lastFrameCpu_.declareMs = issuedMs - lastFrameCpu_.executeMs;
+    lastFrameCpu_.finishMs = ms - issuedMs;  // the wait, and reading the timings back
     frameMs_.push_back(ms);
     // Memory and pool probes for the soak test (outside the timed window): after warm-up, and
     // the latest frame.

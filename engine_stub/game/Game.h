@@ -125,6 +125,14 @@ public:
     long long frame() const { return frame_; }
     /// Frame wall times in ms (CPU clock including glFinish), one per rendered frame.
     const std::vector<double>& frameMs() const { return frameMs_; }
+    /// The last RenderFrame's wall ms in its three CPU stretches, which add up to its frame ms:
+    /// declaring (the views' culling and declarations, the plugin's particle sort and bins, the
+    /// graph's compile: no pass has run yet, so the GPU waits), executing (issuing the passes:
+    /// draws, dispatches, uploads) and waiting in glFinish for the GPU to finish.
+    struct FrameCpu {
+        double declareMs = 0.0, executeMs = 0.0, finishMs = 0.0;
+    };
+    const FrameCpu& lastFrameCpu() const { return lastFrameCpu_; }
     /// How many frames each pass ran / was culled in.
     const std::map<std::string, int>& passRuns() const { return passRuns_; }
     const std::map<std::string, int>& passCulls() const { return passCulls_; }
@@ -169,6 +177,7 @@ private:
     std::vector<float> lastSceneDepth_;
     ImageRGBA8 lastFrame_;
     std::vector<double> frameMs_;
+    FrameCpu lastFrameCpu_;
     long rssWarmKb_ = 0, rssLastKb_ = 0;
     int poolFirstLoopMaxTextures_ = 0, poolFirstLoopMaxFramebuffers_ = 0;
     int poolMaxTextures_ = 0, poolMaxFramebuffers_ = 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <chrono>
 #include <cstring>
 
 #include "gl/Gl.h"
@@ -182,6 +183,7 @@ bool FrameGraph::execute() {
         if (report_.error.empty()) report_.error = "execute() without a successful compile()";
         return false;
     }
+    const auto started = std::chrono::steady_clock::now();
     acquired_ = 0;
     size_t executed = 0, culled = culledAtCompile_;
     ScopedTargetBinding saved;
@@ -252,6 +254,7 @@ bool FrameGraph::execute() {
         }
     }
     timer_.endFrame();
+    report_.executeCpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     fragments_.assign(executed, -1);
     shaded_.assign(executed, -1);
     if (countFragments_) {

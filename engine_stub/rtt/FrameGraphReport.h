@@ -33,6 +33,9 @@ struct FrameGraphReport {
     int targetsAllocatedThisFrame = 0;  ///< pool creations since RenderTargetPool::beginFrame
     int targetsLive = 0;                ///< pool targets holding GL objects (in use + free)
     const char* timingMethod = "off";   ///< "cpu-glfinish" | "gpu-timer-query" | "off"
+    /// CPU wall ms of the last execute() (issuing every pass: draws, dispatches, uploads; not
+    /// the GPU's work, which may still be running when it returns).
+    double executeCpuMs = 0.0;
     std::string error;                  ///< compile/allocation problem (empty when none)
 };
 
