@@ -12,6 +12,23 @@ constexpr GLuint kCornerAttrib = 0, kPosSizeAttrib = 1, kLifeRotFadeFrameAttrib 
 
 }  // namespace
 
+bool copyMappedInPieces(uint32_t target, const void* data, size_t bytes, const Jobs& jobs) {
+    const Pieces pieces = splitWork(bytes, 512 * 1024, 16);
+    if (!jobs.parallel() || pieces.count <= 1) return false;
+    void* mapped = glMapBufferRange(GLenum(target), 0, GLsizeiptr(bytes), GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
+    if (!mapped) {
+        glGetError();  // the refusal this call raised (out of memory): taken back, as documented
+        return false;
+    }
+    jobs.run(pieces, [&](uint32_t piece) {
+        const size_t first = pieces.begin(piece);
+        std::memcpy(static_cast<char*>(mapped) + first, static_cast<const char*>(data) + first, pieces.end(piece) - first);
+    });
+    // False: the store was lost while mapped (GL says it may be, on a display change); the caller
+    // fills it again.
+    return glUnmapBuffer(GLenum(target)) == GL_TRUE;
+}
+
 InstanceStream::~InstanceStream() {
     if (instanceBuffer_) glDeleteBuffers(1, &instanceBuffer_);
     if (cornerBuffer_) glDeleteBuffers(1, &cornerBuffer_);
@@ -53,26 +70,9 @@ void InstanceStream::upload(const ParticleInstance* data, int count, const Jobs&
     // Orphan: a fresh store of the same size; draws still queued keep reading the old one.
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(capacityBytes_), nullptr, GL_STREAM_DRAW);
     if (!bytes) return;
-    // Pieces of 16k instances (512 KB): the copy is the driver's one serial step otherwise.
-    const Pieces pieces = splitWork(n, 16384, 16);
-    if (jobs.parallel() && pieces.count > 1) {
-        void* mapped = glMapBufferRange(GL_ARRAY_BUFFER, 0, GLsizeiptr(bytes),
-                                        GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
-        if (mapped) {
-            auto* to = static_cast<ParticleInstance*>(mapped);
-            jobs.run(pieces, [&](uint32_t piece) {
-                const size_t first = pieces.begin(piece);
-                std::memcpy(to + first, data + first, (pieces.end(piece) - first) * sizeof(ParticleInstance));
-            });
-            // False: the store was lost while mapped (GL says it may be, on a display change);
-            // it is filled again below.
-            if (glUnmapBuffer(GL_ARRAY_BUFFER) == GL_TRUE) {
-                ++mappedUploads_;
-                return;
-            }
-        } else {
-            glGetError();  // the refusal this call raised (out of memory): taken back, as documented
-        }
+    if (copyMappedInPieces(GL_ARRAY_BUFFER, data, bytes, jobs)) {
+        ++mappedUploads_;
+        return;
     }
     glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(bytes), data);
 }

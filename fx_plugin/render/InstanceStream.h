@@ -26,6 +26,12 @@ struct ParticleInstance {
 };
 static_assert(sizeof(ParticleInstance) == 32, "the vertex layout assumes 8 packed floats");
 
+/// Fills the start of the buffer bound to `target` with `bytes` of `data`, mapped (the old contents
+/// invalidated) and copied in pieces of 512 KB on the host's threads: with a job system and more
+/// than one piece. False, and nothing written, where that does not apply or mapping fails (then
+/// glBufferSubData is the way). The copy is otherwise the driver's one serial step of an upload.
+bool copyMappedInPieces(uint32_t target, const void* data, size_t bytes, const Jobs& jobs);
+
 class InstanceStream {
 public:
     InstanceStream() = default;
@@ -46,8 +52,6 @@ public:
     /// Binds the vertex array with the instance attributes starting at instance `first`.
     void bindRange(int first);
     size_t capacityBytes() const { return capacityBytes_; }
-    /// The instance buffer (the tiled path reads it as a shader storage buffer).
-    uint32_t instanceBuffer() const { return instanceBuffer_; }
     /// Uploads that had to grow the buffer (a warm stream stops growing).
     int growCount() const { return growCount_; }
 

@@ -60,6 +60,7 @@ public:
     explicit ParticleDraw(ProgramCache& programs) : programs_(&programs) {}
     /// The host's job system for the instance upload's copy (none: one thread).
     void setJobs(const Jobs& jobs) { jobs_ = jobs; }
+    const Jobs& jobs() const { return jobs_; }
 
     /// Loads the atlas (inside a guard): false with "path: reason" in *error.
     bool loadAtlas(const std::string& dataDir, std::string* error) { return atlas_.load(dataDir, error); }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "InstanceStream.h"
 #include "render/PrivateGl.h"
 
 namespace fx {
@@ -66,7 +67,7 @@ bool TileSort::fits(const TileBins& bins) const {
     return pairBytes <= maxBlockBytes_ && particleBytes <= maxBlockBytes_;
 }
 
-void TileSort::ensure(uint32_t* buffer, size_t* capacity, size_t bytes) {
+void TileSort::ensureBuffer(uint32_t* buffer, size_t* capacity, size_t bytes) {
     if (!*buffer) glGenBuffers(1, buffer);
     if (bytes <= *capacity) return;
     // Grows only, to the next power of two (a growing count reallocates a few times, not each frame).
@@ -77,20 +78,23 @@ void TileSort::ensure(uint32_t* buffer, size_t* capacity, size_t bytes) {
     glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(grown), nullptr, GL_DYNAMIC_COPY);
 }
 
-uint32_t TileSort::run(const TileBins& bins) {
+uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs) {
     if (!ok() || !fits(bins)) return 0;
     const uint32_t pairs = bins.entryCount;
     const uint32_t particleCount = uint32_t(bins.particles.size() / 4);
-    ensure(&keys_[0], &keysCapacity_[0], size_t(pairs) * 4);
-    ensure(&entries_[0], &entriesCapacity_[0], size_t(pairs) * 4);
+    ensureBuffer(&keys_[0], &keysCapacity_[0], size_t(pairs) * 4);
+    ensureBuffer(&entries_[0], &entriesCapacity_[0], size_t(pairs) * 4);
     if (pairs == 0 || particleCount == 0) return entries_[0];
     // Whatever read these buffers before (the last view's tile pass) is done with them.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
     // 1. The pairs, in particle order.
-    ensure(&particles_, &particlesCapacity_, bins.particles.size() * 4);
+    ensureBuffer(&particles_, &particlesCapacity_, bins.particles.size() * 4);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, particles_);
-    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(bins.particles.size() * 4), bins.particles.data());
+    const size_t particleBytes = bins.particles.size() * 4;
+    if (!copyMappedInPieces(GL_SHADER_STORAGE_BUFFER, bins.particles.data(), particleBytes, jobs)) {
+        glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(particleBytes), bins.particles.data());
+    }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleBinding, particles_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, keys_[0]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, entries_[0]);
@@ -103,11 +107,11 @@ uint32_t TileSort::run(const TileBins& bins) {
     // 2. The radix passes, from keys_/entries_[0] to [1] and back.
     const int passCount = passes(bins.tilesX * bins.tilesY);
     if (passCount == 0) return entries_[0];
-    ensure(&keys_[1], &keysCapacity_[1], size_t(pairs) * 4);
-    ensure(&entries_[1], &entriesCapacity_[1], size_t(pairs) * 4);
+    ensureBuffer(&keys_[1], &keysCapacity_[1], size_t(pairs) * 4);
+    ensureBuffer(&entries_[1], &entriesCapacity_[1], size_t(pairs) * 4);
     const uint32_t blocks = (pairs + kBlockPairs - 1) / kBlockPairs;
     const uint32_t histogramLength = blocks * (1u << kDigitBits);
-    ensure(&histogram_, &histogramCapacity_, size_t(histogramLength) * 4);
+    ensureBuffer(&histogram_, &histogramCapacity_, size_t(histogramLength) * 4);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kHistogram, histogram_);
     // Count and scatter: one group a block, over the pairs' digit at `shift`.
     auto overBlocks = [&](uint32_t program, const Uniforms& u, int shift) {

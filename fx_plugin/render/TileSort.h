@@ -18,6 +18,7 @@
 
 #include "ProgramCache.h"
 #include "TileBins.h"
+#include "base/ParallelFor.h"
 
 namespace fx {
 
@@ -42,13 +43,17 @@ public:
     /// whose first bins.entryCount words are the entries, tile by tile (0 where !ok() or
     /// !fits()). The buffer is the sort's own, valid until the next run(). Ends with a shader
     /// storage barrier.
-    uint32_t run(const TileBins& bins);
+    /// With `jobs`, the particles' words are copied into the mapped buffer on the host's threads.
+    uint32_t run(const TileBins& bins, const Jobs& jobs = Jobs());
 
     /// The radix passes a view of `tileCount` tiles takes.
     static int passes(int tileCount);
+    /// Makes `*buffer` if there is none and grows its store to hold `bytes` (to the next power of
+    /// two, GL_DYNAMIC_COPY; a growing count reallocates a few times, not each frame); a store
+    /// that grows is left bound to GL_SHADER_STORAGE_BUFFER.
+    static void ensureBuffer(uint32_t* buffer, size_t* capacity, size_t bytes);
 
 private:
-    void ensure(uint32_t* buffer, size_t* capacity, size_t bytes);
     uint32_t emit_ = 0, count_ = 0, scan_ = 0, scatter_ = 0;
     struct Uniforms {
         int groupsX = -1, particleCount = -1, tilesX = -1, pairCount = -1, shift = -1, blocks = -1, length = -1;

@@ -94,6 +94,8 @@ private:
     int compositeAccum_ = -1, compositeOrigin_ = -1, compositeViewSize_ = -1;
     TileSort sort_;                              ///< writes the tiles' lists
     uint32_t tileBuffer_ = 0;                    ///< the tiles (shader storage)
+    uint32_t instanceBuffer_ = 0;                ///< the instances (shader storage, the pass's own)
+    size_t instanceCapacity_ = 0;
     uint32_t recordBuffer_ = 0;                  ///< the particles' records (the setup dispatch's)
     size_t recordCapacity_ = 0;
     uint32_t accum_ = 0;                         ///< RGBA16F, at least the view's size
