@@ -3,6 +3,7 @@
 // on several at once, in reverse, twice (the second call does nothing), or not at all (a host
 // that drops tasks).
 #include <algorithm>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -39,6 +40,45 @@ TEST(ParallelBuild, DrawListIsTheSerialOneHoweverThePiecesRun) {
         }
         EXPECT_GT(host.calls, 0) << int(how);
         EXPECT_GE(host.largest, 8u) << "120000 particles in pieces of 8192";
+    }
+}
+
+// Several reactions, sorted and not, in one build through the job system: each batch comes out as
+// building its reaction alone gives it, also where particles of different reactions have the same
+// depths (b's particles are a's first ones: same seed) and where one pool is drawn twice; then a
+// build with fewer reactions reuses the scratch of the larger one.
+TEST(ParallelBuild, EachReactionComesOutAsBuiltAlone) {
+    const Scene a(60000), b(30000);
+    const fx::ParticleBatch batches[5] = {a.batch(true), b.batch(false), a.batch(true), b.batch(true), b.batch(false)};
+    fx::DrawList alone;
+    std::vector<fx::ParticleInstance> expected;
+    std::vector<int> counts;
+    for (const fx::ParticleBatch& one : batches) {
+        fx::DrawListBuilder builder;
+        builder.build(a.view, &one, 1, fx::Technique::FromReaction, ~0u, &alone);
+        expected.insert(expected.end(), alone.instances.begin(), alone.instances.end());
+        counts.push_back(alone.particleCount());
+    }
+    ASSERT_GT(counts[0], 30000);  // enough for the sort's pieces
+    for (HowRun how : kRuns) {
+        JobHost host(how);
+        fx::DrawListBuilder builder;
+        fx::DrawList list;
+        for (int round = 0; round < 3; ++round) {
+            const int n = round == 1 ? 1 : 5;  // 5, then 1 (fewer slots than the last build), then 5
+            builder.build(a.view, batches, n, fx::Technique::FromReaction, ~0u, &list, fx::Jobs(&host));
+            ASSERT_EQ(list.batches.size(), size_t(n));
+            int first = 0;
+            for (int k = 0; k < n; ++k) {
+                EXPECT_EQ(list.batches[size_t(k)].first, first) << "batch " << k;
+                EXPECT_EQ(list.batches[size_t(k)].count, counts[size_t(k)]) << "batch " << k;
+                EXPECT_EQ(list.batches[size_t(k)].rampRow, k);
+                first += counts[size_t(k)];
+            }
+            ASSERT_EQ(list.particleCount(), first);
+            EXPECT_EQ(std::memcmp(list.instances.data(), expected.data(), size_t(first) * sizeof(fx::ParticleInstance)), 0)
+                << "how " << int(how) << ", round " << round;
+        }
     }
 }
 
