@@ -146,7 +146,8 @@ std::string markdownReport(const Report& r) {
     perPassTable(r, &ModeSummary::passShaded,
                  "Per particle pass, fragments shaded (GL_FRAGMENT_SHADER_INVOCATIONS_ARB: discarded ones too; "
                  "a compute pass adds its invocations: the tiled path's one per pixel of its tiles, two per "
-                 "particle, and per sort pass 512 per 4,096 list entries and 1,024; median over error frames); "
+                 "particle, and where the GPU sorts its lists (over TiledPath::kCpuListEntries) per sort pass 512 per 4,096 "
+                 "list entries and 1,024; median over error frames); "
                  "'-' = not run",
                  "%.0f", &o);
 

@@ -50,4 +50,10 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
                   int batchCount, const BillboardReach* reach, TileBins* out, const Jobs& jobs = Jobs(),
                   TileBins::Fill fill = TileBins::Fill::Entries);
 
+/// The lists of a Fill::Pairs result written here after all (`entries`, what Fill::Entries gives
+/// and TileSort writes on the GPU): where they are few, writing them costs the CPU less than the
+/// GPU's sort costs its fixed passes (TiledPath::kCpuListEntries). Once per binParticles: its
+/// `counts` are the cursors. In bands of tile rows through `jobs`.
+void writeEntries(TileBins* bins, const Jobs& jobs = Jobs());
+
 }  // namespace fx

@@ -1,6 +1,7 @@
 #include "TiledPath.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <utility>
@@ -71,6 +72,20 @@ void upload(uint32_t buffer, const void* data, size_t bytes) {
     if (bytes > 0) glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(bytes), data);
 }
 
+// Fills `*buffer` (a grow-only shader storage buffer, TileSort::ensureBuffer) with `bytes`: mapped and
+// copied on the host's threads where that applies, else glBufferSubData. Leaves it bound to
+// GL_SHADER_STORAGE_BUFFER.
+void fillStorage(uint32_t* buffer, size_t* capacity, const void* data, size_t bytes, const Jobs& jobs) {
+    TileSort::ensureBuffer(buffer, capacity, bytes);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, *buffer);
+    if (bytes > 0 && !copyMappedInPieces(GL_SHADER_STORAGE_BUFFER, data, bytes, jobs)) {
+        glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(bytes), data);
+    }
+}
+
+std::atomic<uint32_t> gCpuListLimit{TiledPath::kCpuListEntries};
+std::atomic<uint64_t> gCpuListViews{0}, gGpuSortedViews{0};
+
 // render.near_fade as the shaders' line in depth (ParticleDraw's nearFadeMap).
 glm::vec2 nearFadeMap(float fade, float nearPlane) {
     return fade > 0.0f ? glm::vec2(1.0f / fade, -nearPlane / fade) : glm::vec2(0.0f, 1.0f);
@@ -103,13 +118,18 @@ TiledPath::TiledPath(ParticleDraw& draw, SizeMismatchReport sizeMismatch)
 TiledPath::~TiledPath() {
     // The renderer deletes its GL objects inside a guard with the context current (~ParticleRenderer).
     if (!privateGlContextCurrent()) return;
-    const uint32_t buffers[4] = {tileBuffer_, recordBuffer_, coverVbo_, instanceBuffer_};
+    const uint32_t buffers[5] = {tileBuffer_, recordBuffer_, coverVbo_, instanceBuffer_, entryBuffer_};
     for (uint32_t b : buffers) {
         if (b) glDeleteBuffers(1, &b);
     }
     if (accum_) glDeleteTextures(1, &accum_);
     if (coverVao_) glDeleteVertexArrays(1, &coverVao_);
 }
+
+uint32_t TiledPath::cpuListLimit() { return gCpuListLimit.load(std::memory_order_relaxed); }
+void TiledPath::setCpuListLimit(uint32_t entries) { gCpuListLimit.store(entries, std::memory_order_relaxed); }
+uint64_t TiledPath::cpuListViews() { return gCpuListViews.load(std::memory_order_relaxed); }
+uint64_t TiledPath::gpuSortedViews() { return gGpuSortedViews.load(std::memory_order_relaxed); }
 
 bool TiledPath::softwareRasterizer(const char* renderer) {
     if (!renderer) return false;
@@ -206,6 +226,7 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
         !sort_.fits(record->bins)) {
         return false;
     }
+    if (record->bins.entryCount <= cpuListLimit()) writeEntries(&record->bins, jobs);
     const Target color = frame.sceneColor();
     narrowDepthRead(frame, tilesBound(record->bins, view.width, view.height), view.width, view.height);
     addPassReading(frame, kPass, {depth}, color, [this, record, depth, decode, color](PassContext& ctx) {
@@ -252,8 +273,17 @@ void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Targe
     ComputeBindingsScope bindings;
     ensureObjects(view.width, view.height);
 
-    // The bins: each tile's list written and sorted on the GPU (TileSort.h), the tiles, the instances.
-    const uint32_t entries = sort_.run(bins, draw_.jobs());
+    // The bins: each tile's list (written on the CPU when declared, else written and sorted on the
+    // GPU: TileSort.h), the tiles, the instances.
+    uint32_t entries = 0;
+    if (!bins.entries.empty()) {
+        fillStorage(&entryBuffer_, &entryCapacity_, bins.entries.data(), bins.entries.size() * sizeof(uint32_t), draw_.jobs());
+        entries = entryBuffer_;
+        gCpuListViews.fetch_add(1, std::memory_order_relaxed);
+    } else {
+        entries = sort_.run(bins, draw_.jobs());
+        gGpuSortedViews.fetch_add(1, std::memory_order_relaxed);
+    }
     if (!entries) return;
     upload(tileBuffer_, bins.tiles.data(), bins.tiles.size() * sizeof(uint32_t));
     // The instances go to a storage buffer of the pass's own, kept (not orphaned) and written
@@ -261,12 +291,8 @@ void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Targe
     // each frame and read here by compute, the H200's driver gave the CPU a store it writes
     // slowly: 2.25 ms for the 8 MB of 256,000 particles, where the sort's 4 MB take 0.25 ms.
     const int count = v.list.particleCount();
-    const size_t instanceBytes = size_t(count) * sizeof(ParticleInstance);
-    TileSort::ensureBuffer(&instanceBuffer_, &instanceCapacity_, instanceBytes);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, instanceBuffer_);
-    if (!copyMappedInPieces(GL_SHADER_STORAGE_BUFFER, v.list.instances.data(), instanceBytes, draw_.jobs())) {
-        glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(instanceBytes), v.list.instances.data());
-    }
+    fillStorage(&instanceBuffer_, &instanceCapacity_, v.list.instances.data(), size_t(count) * sizeof(ParticleInstance),
+                draw_.jobs());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceBinding, instanceBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEntryBinding, entries);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBinding, tileBuffer_);

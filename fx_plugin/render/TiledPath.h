@@ -8,7 +8,8 @@
 // Declaring the pass bounds the view's particles and counts each tile's entries on the CPU
 // (binParticles, TileBins.h: each particle into the tiles its bound touches, front to back). The
 // pass writes each tile's list on the GPU (TileSort.h: a pair per particle and tile, sorted by
-// tile, stably), sets each particle up once (a compute dispatch, one invocation per particle: what the vertex shader works
+// tile, stably); a view of at most kCpuListEntries entries gets its lists written on the CPU
+// instead (writeEntries), where the sort's fixed passes would cost more. It then sets each particle up once (a compute dispatch, one invocation per particle: what the vertex shader works
 // out), then dispatches one work group per tile that holds particles (one invocation per pixel:
 // one scene-depth fetch per pixel, the particles' records read in order, the blend in registers,
 // stopped once the pixel is opaque) into the plugin's own RGBA16F image, and draws those tiles
@@ -48,6 +49,19 @@ public:
     static constexpr const char* kPass = "particles_tiled";
     static constexpr int kMaxBatches = 32;  ///< cs_particles_tiled.glsl's kMaxBatches
     static constexpr int kTileSize = ScreenTiles::kTileSize;  ///< the compute shader's group size
+    /// Up to this many list entries a view's lists are written on the CPU and uploaded (at most
+    /// 512 KB), above it sorted on the GPU. The H200 (docs/results.md, session 26) put the GPU
+    /// sort at about 0.18 ms plus 2 ns an entry (0.34 ms for the standard scene's 73,615 entries
+    /// at 1080p, 1.30 ms for the fill scene's 519,516); the CPU writes an entry in 4-6 ns on one
+    /// thread (bench_draw), in bands of 8,192 entries on the host's threads (writeEntries).
+    static constexpr uint32_t kCpuListEntries = 131072;
+    /// The limit in use (kCpuListEntries unless set; 0: always the GPU sort). Tests set it to
+    /// compare the two ways; it is the process's.
+    static uint32_t cpuListLimit();
+    static void setCpuListLimit(uint32_t entries);
+    /// Views whose lists were written on the CPU / sorted on the GPU, since the process started.
+    static uint64_t cpuListViews();
+    static uint64_t gpuSortedViews();
 
     TiledPath(ParticleDraw& draw, SizeMismatchReport sizeMismatch);
     ~TiledPath();
@@ -96,6 +110,8 @@ private:
     uint32_t tileBuffer_ = 0;                    ///< the tiles (shader storage)
     uint32_t instanceBuffer_ = 0;                ///< the instances (shader storage, the pass's own)
     size_t instanceCapacity_ = 0;
+    uint32_t entryBuffer_ = 0;                   ///< the lists when the CPU wrote them
+    size_t entryCapacity_ = 0;
     uint32_t recordBuffer_ = 0;                  ///< the particles' records (the setup dispatch's)
     size_t recordCapacity_ = 0;
     uint32_t accum_ = 0;                         ///< RGBA16F, at least the view's size

@@ -107,6 +107,50 @@ TEST_F(TiledPathTest, TiledFramesMatchRasterisedOnes) {
     EXPECT_EQ(compared, 3 * 2 * 2 * (1 + 3 + 1));
 }
 
+// A view's lists, written on the CPU (TiledPath::kCpuListEntries or fewer entries: this one) or
+// sorted on the GPU (TileSort), are the same lists: the frames are equal bit for bit, for each
+// technique, and the counters say which way each frame went.
+TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
+    struct LimitBack {
+        ~LimitBack() { fx::TiledPath::setCpuListLimit(fx::TiledPath::kCpuListEntries); }
+    } limitBack;
+    ASSERT_EQ(fx::TiledPath::cpuListLimit(), fx::TiledPath::kCpuListEntries);
+    std::vector<HandParticle> puffs;
+    for (int i = 0; i < 40; ++i) {
+        const float a = 0.5f * float(i);
+        puffs.push_back(HandParticle{glm::vec3(2.5f * std::cos(a), 0.5f + 0.1f * float(i % 7), -2.0f + 2.5f * std::sin(a)),
+                                     2.0f + 0.05f * float(i), float(i) / 40.0f, a, 0.9f, i % 4});
+    }
+    direct.set(puffs);
+    for (const fx::Technique technique : {fx::Technique::Hard, fx::Technique::Soft, fx::Technique::Spherical}) {
+        direct.desc.render.technique = technique;
+        SCOPED_TRACE(int(technique));
+        TestFrameGraph graph(kW, kH, true, true);
+        TestScene scene;
+        scene.reversedZ = true;
+        scene.quads = {TestScene::ground(60.0f, glm::vec3(0.3f))};
+        fx::ViewInfo view = makeView(glm::vec3(0.0f, 2.5f, 6.0f), glm::vec3(0.0f, 0.5f, -1.0f), kW, kH);
+        useReversedZ(&view);
+        uint64_t cpu = fx::TiledPath::cpuListViews(), gpu = fx::TiledPath::gpuSortedViews();
+        const Image byDefault = draw(direct, graph, scene, view, true);  // a few thousand entries
+        ASSERT_GE(drawn, 40);
+        EXPECT_TRUE(graph.ran(fx::TiledPath::kPass));
+        EXPECT_EQ(fx::TiledPath::cpuListViews(), cpu + 1) << "a small view's lists are the CPU's";
+        EXPECT_EQ(fx::TiledPath::gpuSortedViews(), gpu);
+        fx::TiledPath::setCpuListLimit(0);
+        const Image sorted = draw(direct, graph, scene, view, true);
+        EXPECT_EQ(fx::TiledPath::cpuListViews(), cpu + 1);
+        EXPECT_EQ(fx::TiledPath::gpuSortedViews(), gpu + 1) << "with the limit at 0 the GPU sorts";
+        fx::TiledPath::setCpuListLimit(fx::TiledPath::kCpuListEntries);
+        EXPECT_EQ(maxAbsDiff(byDefault, sorted), 0);
+        int smoke = 0;
+        for (int y = 0; y < kH; ++y) {
+            for (int x = 0; x < kW; ++x) smoke += byDefault.at(x, y)[0] > 60 ? 1 : 0;
+        }
+        EXPECT_GT(smoke, kW * kH / 10) << "too little smoke: the comparison would prove little";
+    }
+}
+
 // Each blend mode, with linear fog, billboards and spheres: the tint, the fog's colour and the
 // premultiplied or additive output are the particle's own, as the raster path's vertex shader
 // makes them (a sphere's near fade, per pixel, too: the camera is 2 m from the nearest puffs).
