@@ -82,6 +82,7 @@ bool ParticleRenderer::ensureLoaded() {
         return false;
     }
     draw_.create();
+    if (const char* problem = TiledPath::cpuListLimitProblem()) log(LogLevel::Warning, problem);
     if (!config_.shaderDir.empty()) shaderStamp_ = shaderStamp(config_.shaderDir);
     state_ = State::Ready;
     return true;

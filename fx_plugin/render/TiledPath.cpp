@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <climits>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <utility>
 
@@ -83,7 +85,25 @@ void fillStorage(uint32_t* buffer, size_t* capacity, const void* data, size_t by
     }
 }
 
-std::atomic<uint32_t> gCpuListLimit{TiledPath::kCpuListEntries};
+// CUBEFX_TILED_CPU_LISTS, read once: a whole number of entries (clamped to 2^32 - 1), else the
+// default and a problem to report.
+static_assert(TiledPath::kCpuListEntries == 131072, "the message below names the default");
+const char* gCpuListLimitProblem = nullptr;
+uint32_t cpuListLimitFromEnvironment() {
+    const char* v = std::getenv("CUBEFX_TILED_CPU_LISTS");
+    if (!v || !*v) return TiledPath::kCpuListEntries;
+    uint64_t n = 0;
+    for (const char* c = v; *c; ++c) {
+        if (*c < '0' || *c > '9') {
+            gCpuListLimitProblem = "fx: CUBEFX_TILED_CPU_LISTS is not a whole number of list entries; the tiled "
+                                   "path keeps its default (131072)";
+            return TiledPath::kCpuListEntries;
+        }
+        n = std::min<uint64_t>(n * 10 + uint64_t(*c - '0'), UINT32_MAX);
+    }
+    return uint32_t(n);
+}
+std::atomic<uint32_t> gCpuListLimit{cpuListLimitFromEnvironment()};
 std::atomic<uint64_t> gCpuListViews{0}, gGpuSortedViews{0};
 
 // render.near_fade as the shaders' line in depth (ParticleDraw's nearFadeMap).
@@ -128,6 +148,7 @@ TiledPath::~TiledPath() {
 
 uint32_t TiledPath::cpuListLimit() { return gCpuListLimit.load(std::memory_order_relaxed); }
 void TiledPath::setCpuListLimit(uint32_t entries) { gCpuListLimit.store(entries, std::memory_order_relaxed); }
+const char* TiledPath::cpuListLimitProblem() { return gCpuListLimitProblem; }
 uint64_t TiledPath::cpuListViews() { return gCpuListViews.load(std::memory_order_relaxed); }
 uint64_t TiledPath::gpuSortedViews() { return gGpuSortedViews.load(std::memory_order_relaxed); }
 

@@ -55,10 +55,14 @@ public:
     /// at 1080p, 1.30 ms for the fill scene's 519,516); the CPU writes an entry in 4-6 ns on one
     /// thread (bench_draw), in bands of 8,192 entries on the host's threads (writeEntries).
     static constexpr uint32_t kCpuListEntries = 131072;
-    /// The limit in use (kCpuListEntries unless set; 0: always the GPU sort). Tests set it to
-    /// compare the two ways; it is the process's.
+    /// The limit in use, the process's: kCpuListEntries, or the environment's
+    /// CUBEFX_TILED_CPU_LISTS (a whole number of entries; 0: always the GPU sort) where it is set,
+    /// so a GPU session can find where the CPU's lists stop paying without a rebuild; tests set
+    /// it to compare the two ways.
     static uint32_t cpuListLimit();
     static void setCpuListLimit(uint32_t entries);
+    /// What was wrong with CUBEFX_TILED_CPU_LISTS (ignored then), or null: for the renderer's log.
+    static const char* cpuListLimitProblem();
     /// Views whose lists were written on the CPU / sorted on the GPU, since the process started.
     static uint64_t cpuListViews();
     static uint64_t gpuSortedViews();

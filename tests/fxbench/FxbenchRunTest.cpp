@@ -195,6 +195,39 @@ TEST(Fxbench, TiledModesDrawTheirReferencesPictureWithOneBlendAPixel) {
     EXPECT_EQ(r.output.find("built while declaring a frame"), std::string::npos) << r.output;
 }
 
+// CUBEFX_TILED_CPU_LISTS (TiledPath::cpuListLimit): 0 has the GPU sort the lists of a view the CPU
+// lists by default; the picture is the same byte for byte, and the sort's dispatches show in the
+// pass's shader invocations. A value that is not a number is reported and ignored.
+TEST(Fxbench, TiledListsFromTheCpuOrTheGpuSortGiveTheSamePicture) {
+    std::map<std::string, std::string> png;
+    std::map<std::string, double> shaded;
+    for (const std::string env : {"", "CUBEFX_TILED_CPU_LISTS=0 ", "CUBEFX_TILED_CPU_LISTS=12x "}) {
+        SCOPED_TRACE(env);
+        const std::string json = tempPath("lists.json"), images = tempPath("lists_images");
+        const RunOutput r = cubetest::runCommand(env + std::string(CUBE_TEST_BIN_DIR) +
+                                                     "/fxbench --scenario standard --modes soft,soft+tiled --size 160x96 "
+                                                     "--frames 2 --rounds 1 --warmup 1 --error-frames 1 --json " +
+                                                     json + " --images " + images + " 2>&1",
+                                                 -1);
+        ASSERT_EQ(r.status, 0) << r.output;
+        const bool bad = env.find("12x") != std::string::npos;
+        EXPECT_EQ(r.output.find("CUBEFX_TILED_CPU_LISTS is not a whole number") != std::string::npos, bad) << r.output;
+        const YAML::Node run = YAML::Load(readFile(json));
+        const YAML::Node m = modeNode(run, "soft+tiled");
+        ASSERT_TRUE(m["passes_shaded"]["chase.particles_tiled"]) << "the context counts compute invocations";
+        shaded[env] = m["passes_shaded"]["chase.particles_tiled"].as<double>();
+        png[env] = readFile(images + "/standard_soft-tiled.png");
+        EXPECT_GT(png[env].size(), 1000u);
+        std::filesystem::remove(json);
+        std::filesystem::remove_all(images);
+    }
+    const std::string byDefault = "", sorted = "CUBEFX_TILED_CPU_LISTS=0 ", bad = "CUBEFX_TILED_CPU_LISTS=12x ";
+    EXPECT_EQ(png[byDefault], png[sorted]) << "the same lists, the same picture";
+    EXPECT_EQ(png[byDefault], png[bad]);
+    EXPECT_GT(shaded[sorted], shaded[byDefault] + 1024.0) << "the sort's passes (a scan of 1,024 each) did not run";
+    EXPECT_EQ(shaded[bad], shaded[byDefault]) << "an unreadable value keeps the default";
+}
+
 // Per particle pass, the samples it wrote: their sum is particle_fragments; quarter res's
 // downsample writes its half-res texels and its composite blends fewer pixels than the
 // downsample's tiles hold at full res (a pixel without smoke is discarded).
