@@ -112,6 +112,7 @@ private:
     int compositeAccum_ = -1, compositeOrigin_ = -1, compositeViewSize_ = -1;
     TileSort sort_;                              ///< writes the tiles' lists
     uint32_t tileBuffer_ = 0;                    ///< the tiles (shader storage)
+    size_t tileCapacity_ = 0;
     uint32_t instanceBuffer_ = 0;                ///< the instances (shader storage, the pass's own)
     size_t instanceCapacity_ = 0;
     uint32_t entryBuffer_ = 0;                   ///< the lists when the CPU wrote them
