@@ -7,8 +7,9 @@
 # The device call, with .gpu carried along:
 #   bash scripts/gpu_check.sh
 # Into $OUT: run-all.sh's data.tgz and img.tgz.* (standard, fill, overdraw, 4K, the particle sweep,
-# the drive through both depth paths) and parts.tgz (shader_parts.sh's runs and their log, and a
-# particle sweep of the tiled modes: parts/tiled_sweep.json). Back
+# the drive through both depth paths) and parts.tgz (shader_parts.sh's runs and their log, a
+# particle sweep of the tiled modes: parts/tiled_sweep.json, and the tiled path's list limit in
+# three settings: parts/lists_*.json). Back
 # here: tar xzf parts.tgz -C /tmp && scripts/shader_parts.sh --table /tmp/parts
 set -u
 cd "$(dirname "$0")/.."
@@ -32,5 +33,18 @@ timeout 150 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 --sweep 
     --frames 6 --error-frames 0 --modes hard,soft,soft+tiled,spherical,spherical+tiled \
     --json "$out/parts/tiled_sweep.json" > "$out/parts/tiled_sweep.txt" 2>&1
 echo "tiled sweep rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+# Where the tiled path's lists stop being the CPU's (TiledPath::kCpuListEntries, 131,072 by
+# default): the GPU sort always (0), the default, and the CPU's up to 4 M entries, in the scenes
+# whose lists are long (fill at 1080p: about 520,000 entries; standard at 4K: about 277,000).
+s=$(date +%s)
+for lim in 0 131072 4194304; do
+  for sc in "fill 1920x1080" "standard 3840x2160"; do
+    set -- $sc
+    CUBEFX_TILED_CPU_LISTS=$lim timeout 60 bash .gpu/run-egl.sh fxbench --backend egl --scenario "$1" --size "$2" \
+        --frames 10 --error-frames 0 --modes hard,soft+tiled,spherical+tiled \
+        --json "$out/parts/lists_${1}_${lim}.json" > "$out/parts/lists_${1}_${lim}.txt" 2>&1
+    echo "lists $1 $2 limit $lim rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+  done
+done
 tar czf "$out/parts.tgz" -C "$out" parts parts.log && rm -rf "$out/parts" "$out/parts.log"
 ls -la "$out"
