@@ -21,7 +21,7 @@
 // tiles blends it onto sceneColor with (ONE, ONE_MINUS_SRC_ALPHA) (fs_particles_tiled_composite).
 //
 // Per particle it is the raster path's own program (vs_particles.glsl with fs_particles_hard, _soft
-// or _spherical), unlit:
+// or _spherical), lit (FX_LIT: the TiledSetupLit and TiledShadeLit builds) or not:
 //   - A billboard lies at one view depth, so its texture coordinate is an affine map of the pixel
 //     (worked out per particle below), its level of detail one value, its tint, fog and near fade
 //     the particle's own. Hard particles are cut where the scene lies in front of them, compared in
@@ -31,6 +31,14 @@
 //   - A sphere (perspective views only: TiledPath::canDraw) is intersected with the pixel's ray as
 //     fs_particles_spherical does; its atlas level of detail is one value per sphere, that of its
 //     centre (the raster path's varies a little over the disc).
+//   - Lit smoke (FX_LIT, batches whose reaction takes the scene light): the light that the raster
+//     path's vertex shader works out per vertex (the sun through the opacity map, the phase) is
+//     worked out once per particle in the setup, at a sphere's centre (as the raster path does) and
+//     at a billboard's four quad corners, and read per pixel across the quad's two triangles as
+//     the raster path's quads interpolate it (its trimmed polygons interpolate between their own
+//     vertices instead: TiledPathTest holds the difference to the raster path's own between its
+//     two shapes). The per-pixel light (the atlas normal, the diffuse and scattered shares) is the
+//     raster fragment shaders', with each batch's values from uniform arrays.
 // The atlas is read from one mip level, the nearest, as ParticleDraw's sampler does.
 #include "particles_common.glsl"
 
@@ -46,7 +54,16 @@ layout(std430, binding = 2) readonly buffer Tiles { uvec4 uTiles[]; };
 // contrast power), hard: (0, 0, 0, depth). Spheres: [0] = (view centre, radius squared), [1] =
 // (atlas base, near fade map), [2] = the atlas map (sphereAtlasMap). Both: [3] particleTint's
 // tint, [4] (fogAdd, atlas level of detail), [5].x the kind (0 hard, 1 soft, 2 sphere).
+// [5].y: 1 where the particle is lit (FX_LIT), else 0.
 layout(std430, binding = 3) buffer Records { vec4 uRecords[]; };
+#ifdef FX_LIT
+// Lit particles' light, five vec4 per particle by instance index. Billboards: [0] - [3] (sun light
+// rgb, phase) at the quad's corners (-1, -1), (1, -1), (-1, 1), (1, 1) of its (right, up) frame,
+// [4] = (cos, sin of its angle, normal strength, 0). Spheres: [0] at the centre, [4] = (cos, sin)
+// x 0.6 normal strength x radius (the bumps' scale, as vs_particles.glsl's vTurn), 0, 0.
+layout(std430, binding = 4) buffer Light { vec4 uLight[]; };
+const uint kLightStride = 5u;
+#endif
 
 const int kMaxBatches = 32;         // TiledPath::kMaxBatches
 const uint kBatchShift = 26u;
@@ -63,6 +80,15 @@ uniform int uBatchCount;
 uniform int uInstanceCount;
 uniform float uAtlasTexels;         // the atlas's level-0 width (square)
 uniform float uPixelSlope;          // spheres: one pixel in ray slope (the larger of x and y)
+#ifdef FX_LIT
+uniform vec4 uBatchLight[kMaxBatches];  // anisotropy, absorption, normal strength, 1 lit / 0 unlit
+
+// The light the raster path's vertex shader hands its fragments (vSunLight, vPhase) at view
+// position p: (sun light rgb, phase).
+vec4 lightAt(vec3 p, vec4 batchLight) {
+    return vec4(sunThroughSmokeOf(p, batchLight.y), phaseHGOf(p, batchLight.x));
+}
+#endif
 
 void main() {
     uint index = gl_GlobalInvocationID.y * uint(uGroupsX) * 64u + gl_GlobalInvocationID.x;
@@ -134,13 +160,40 @@ void main() {
     uRecords[at + 2u] = r2;
     uRecords[at + 3u] = vec4(ramp.rgb * (a.y == 1.0 ? fade : alpha) * fog.a, outAlpha);
     uRecords[at + 4u] = vec4(fog.rgb * outAlpha, lod);
-    uRecords[at + 5u] = vec4(float(kind), 0.0, 0.0, 0.0);
+    float lit = 0.0;
+#ifdef FX_LIT
+    vec4 batchLight = uBatchLight[batch];
+    if (batchLight.w != 0.0) {
+        lit = 1.0;
+        uint l = kLightStride * index;
+        vec2 turn = vec2(cos(lrff.y), sin(lrff.y));
+        if (kind == 2u) {
+            uLight[l] = lightAt(c, batchLight);  // the quad lies at the sphere's front: lit as a whole
+            uLight[l + 4u] = vec4(turn * (batchLight.z * 0.6 * radius), 0.0, 0.0);
+        } else {
+            // vs_particles.glsl's corners: the centre plus the camera's right and up times the radius.
+            vec3 right = normalize(vec3(uView[0][0], uView[1][0], uView[2][0]));
+            vec3 up = normalize(vec3(uView[0][1], uView[1][1], uView[2][1]));
+            for (int k = 0; k < 4; ++k) {
+                vec2 corner = vec2((k & 1) != 0 ? 1.0 : -1.0, (k & 2) != 0 ? 1.0 : -1.0);
+                vec3 world = posSize.xyz + (corner.x * right + corner.y * up) * radius;
+                uLight[l + uint(k)] = lightAt((uView * vec4(world, 1.0)).xyz, batchLight);
+            }
+            uLight[l + 4u] = vec4(turn, batchLight.z, 0.0);
+        }
+    }
+#endif
+    uRecords[at + 5u] = vec4(float(kind), lit, 0.0, 0.0);
 }
 #else
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(rgba16f, binding = 0) writeonly uniform image2D uAccum;
 uniform int uTileCount;
 uniform ivec2 uViewSize;            // the view's pixels
+#ifdef FX_LIT
+uniform sampler2D uLitAtlas;        // SmokeAtlas::litTexture: the lit batches' atlas (uAtlas the others')
+uniform vec4 uBatchShade[kMaxBatches];  // ambient (host ambient x lighting.ambient), scattering
+#endif
 
 void main() {
     uint tileIndex = gl_WorkGroupID.y * uint(uGroupsX) + gl_WorkGroupID.x;
@@ -163,15 +216,18 @@ void main() {
 
     vec4 acc = vec4(0.0);  // premultiplied colour in front; acc.a = 1 - transmittance
     for (uint e = 0u; e < tile.w && acc.a < kOpaque; ++e) {
-        uint at = 6u * (uEntries[tile.z + e] & ((1u << kBatchShift) - 1u));
-        uint kind = uint(uRecords[at + 5u].x);
+        uint entry = uEntries[tile.z + e];
+        uint instance = entry & ((1u << kBatchShift) - 1u);
+        uint at = 6u * instance;
+        vec4 kindLit = uRecords[at + 5u];
+        uint kind = uint(kindLit.x);
         vec4 map = uRecords[at];
         vec4 mo = uRecords[at + 1u];
-        vec2 uv;
+        vec2 uv, local = vec2(0.0);
         float tMid = 0.0, d2 = 0.0;
+        vec3 centre = map.xyz;
         if (kind == 2u) {
             // fs_particles_spherical: the ray's closest approach to the centre.
-            vec3 centre = map.xyz;
             tMid = (centre.x * slope.x + centre.y * slope.y - centre.z) * invLen2;
             vec2 offset = vec2(slope.x * tMid - centre.x, slope.y * tMid - centre.y);
             float offsetZ = tMid + centre.z;
@@ -180,19 +236,24 @@ void main() {
             vec4 am = uRecords[at + 2u];
             uv = vec2(mo.x + offset.x * am.x + offset.y * am.y, mo.y + offset.x * am.z + offset.y * am.w);
         } else {
-            vec2 local = map.xy * p.x + map.zw * p.y + mo.xy;
+            local = map.xy * p.x + map.zw * p.y + mo.xy;
             if (max(abs(local.x), abs(local.y)) >= 0.996) continue;  // insideFrame
             uv = atlasUVOf(local, mo.zw);
         }
         vec4 fogLod = uRecords[at + 4u];
+#ifdef FX_LIT
+        bool lit = kindLit.y != 0.0;
+        vec4 texel = lit ? textureLod(uLitAtlas, uv, fogLod.w) : textureLod(uAtlas, uv, fogLod.w);
+#else
         vec4 texel = textureLod(uAtlas, uv, fogLod.w);
+#endif
         if (texel.a == 0.0) continue;
-        float coverage;
+        float coverage, z0 = 0.0;
         if (kind == 2u) {
             // The chord clipped to the near plane and the scene, the near fade at the visible
             // chord's middle.
             float halfDepth = sqrt((map.w - d2) * invLen2);
-            float z0 = max(tMid - halfDepth, uNear);
+            z0 = max(tMid - halfDepth, uNear);
             float z1 = min(tMid + halfDepth, sceneLinear);
             float visible = clamp((z1 - z0) / (2.0 * halfDepth), 0.0, 1.0);
             coverage = texel.a * visible * clamp(0.5 * (z0 + z1) * mo.z + mo.w, 0.0, 1.0);
@@ -208,8 +269,35 @@ void main() {
             }
             coverage = texel.a * fade;
         }
+        vec3 colour = texel.rgb;
+#ifdef FX_LIT
+        if (lit) {
+            // fs_particles_hard, _soft, _spherical's FX_LIT lines, with the vertex shader's light
+            // read from the particle's light record.
+            uint l = kLightStride * instance;
+            vec4 turn = uLight[l + 4u];
+            vec4 sunPhase;
+            vec3 m;
+            if (kind == 2u) {
+                sunPhase = uLight[l];
+                vec2 bent = turnBack(atlasNormal(texel).xy, turn.xy);
+                m = vec3(slope.x * z0 - centre.x + bent.x, slope.y * z0 - centre.y + bent.y, -z0 - centre.z);
+            } else {
+                // The pixel in the quad's (right, up) frame scaled to [0, 1]^2 (local turned back),
+                // and the light linear across the strip's triangles (0, 1, 2) and (1, 2, 3), as the
+                // rasteriser interpolates a billboard (one depth: linear in its plane).
+                vec2 w = clamp(0.5 * turnBack(local, turn.xy) + 0.5, 0.0, 1.0);
+                vec4 l0 = uLight[l], l1 = uLight[l + 1u], l2 = uLight[l + 2u], l3 = uLight[l + 3u];
+                sunPhase = w.x + w.y <= 1.0 ? l0 + w.x * (l1 - l0) + w.y * (l2 - l0)
+                                            : l3 + (1.0 - w.x) * (l2 - l3) + (1.0 - w.y) * (l1 - l3);
+                m = billboardNormalOf(texel, turn.xy * turn.z, turn.z);
+            }
+            vec4 shade = uBatchShade[entry >> kBatchShift];
+            colour = texel.bbb * smokeLightOf(sunCosine(m), texel.a, sunPhase.rgb, sunPhase.a, shade.rgb, shade.a);
+        }
+#endif
         vec4 tint = uRecords[at + 3u];
-        vec4 src = vec4(coverage * (tint.rgb * texel.rgb + fogLod.rgb), tint.a * coverage);
+        vec4 src = vec4(coverage * (tint.rgb * colour + fogLod.rgb), tint.a * coverage);
         acc += (1.0 - acc.a) * src;
     }
     imageStore(uAccum, pixel, acc);

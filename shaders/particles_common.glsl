@@ -260,10 +260,11 @@ vec3 atlasNormal(vec4 litTexel) {
 // particle's angle), mixed by the normal strength s with a flat card facing the camera. `turn`
 // is the angle's (cos, sin) times s (the vertex shader's vTurn in lit programs), so the mix's
 // x and y are the turn alone: (s turned.xy, 1 + s (n.z - 1)).
-vec3 billboardNormal(vec4 litTexel, vec2 turn) {
+vec3 billboardNormalOf(vec4 litTexel, vec2 turn, float strength) {
     vec3 n = atlasNormal(litTexel);
-    return vec3(turnBack(n.xy, turn), 1.0 + uNormalStrength * (n.z - 1.0));
+    return vec3(turnBack(n.xy, turn), 1.0 + strength * (n.z - 1.0));
 }
+vec3 billboardNormal(vec4 litTexel, vec2 turn) { return billboardNormalOf(litTexel, turn, uNormalStrength); }
 
 // The cosine between the normal `m` (any positive length) and the sun: light only needs the
 // normal through this, so it is never normalised on its own.
@@ -290,26 +291,32 @@ float opticalDepthToSun(vec3 p) {
 // direction and the direction to the eye. The vertex shader evaluates it (and the transmittance
 // toward the sun) per vertex: both change slowly across a particle, and per pixel they cost a
 // fetch, a matrix and an exp on every fragment.
-float phaseHG(vec3 p) {
+// The ...Of forms take the reaction's values as arguments (the tiled path's compute shader holds
+// every batch's at once); the others read this draw's uniforms.
+float phaseHGOf(vec3 p, float g) {
     float c = dot(-uSunView, normalize(-p));
-    float g = uAnisotropy;
     float base = max(1.0 + g * g - 2.0 * g * c, 1e-4);
     return (1.0 - g * g) / (base * sqrt(base));
 }
+float phaseHG(vec3 p) { return phaseHGOf(p, uAnisotropy); }
 
 // Sun light reaching view position `p` through the smoke in front of it.
-vec3 sunThroughSmoke(vec3 p) {
-    return uSunColor * exp(-uAbsorption * opticalDepthToSun(p));
+vec3 sunThroughSmokeOf(vec3 p, float absorption) {
+    return uSunColor * exp(-absorption * opticalDepthToSun(p));
 }
+vec3 sunThroughSmoke(vec3 p) { return sunThroughSmokeOf(p, uAbsorption); }
 
 // Light arriving at a smoke pixel whose normal makes `cosSun` with the sun (sunCosine) and whose
 // opacity is `density`:
 // ambient + the sun through the smoke x (the diffuse and scattered shares). `sunLight` and
 // `phase` come from the vertex shader (sunThroughSmoke, phaseHG).
-vec3 smokeLight(float cosSun, float density, vec3 sunLight, float phase) {
+vec3 smokeLightOf(float cosSun, float density, vec3 sunLight, float phase, vec3 ambient, float scattering) {
     float diffuse = clamp(cosSun * (1.0 / (1.0 + kWrap)) + kWrap / (1.0 + kWrap), 0.0, 1.0);
     float thin = 1.0 - 0.6 * density;  // thin edges pass more forward-scattered light
-    float lit = diffuse + uScattering * (phase * thin - diffuse);  // mix(diffuse, phase thin, scattering)
-    return uAmbient + sunLight * lit;
+    float lit = diffuse + scattering * (phase * thin - diffuse);  // mix(diffuse, phase thin, scattering)
+    return ambient + sunLight * lit;
+}
+vec3 smokeLight(float cosSun, float density, vec3 sunLight, float phase) {
+    return smokeLightOf(cosSun, density, sunLight, phase, uAmbient, uScattering);
 }
 #endif

@@ -44,6 +44,8 @@ constexpr Source kSources[ProgramCache::VariantCount + ProgramCache::ProgramCoun
     {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_COUNT 1\n"},
     {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_SCAN 1\n"},
     {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_SCATTER 1\n"},
+    {"cs_particles_tiled.glsl", "", "#define FX_GENERAL_POWER 1\n#define FX_LIT 1\n"},
+    {"cs_particles_tiled.glsl", "", "#define FX_TILED_SETUP 1\n#define FX_LIT 1\n"},
 };
 
 const Source& sourceOf(const ProgramCache::Key& key) {
@@ -228,7 +230,8 @@ std::vector<ProgramCache::Key> ProgramCache::megaKeys() {
 }
 
 std::vector<ProgramCache::Key> ProgramCache::tiledKeys() {
-    std::vector<Key> keys = {Key::of(TiledSetup), Key::of(TiledShade), Key::of(TiledComposite)};
+    std::vector<Key> keys = {Key::of(TiledSetup), Key::of(TiledShade), Key::of(TiledComposite),
+                             Key::of(TiledSetupLit), Key::of(TiledShadeLit)};
     for (const Key& k : tileSortKeys()) keys.push_back(k);
     return keys;
 }

@@ -3,7 +3,7 @@
 // Key::program names the shader pair: Billboard, the particle draw (below), or one of the fixed
 // programs of the other passes (the quarter-res depth downsample, half-res z-fill and
 // composite's two builds; the opacity map's; the immediate path's depth lineariser; the five
-// mega passes'; the stateless particles'; the tiled path's three and its lists' four), whose files and defines are
+// mega passes'; the stateless particles'; the tiled path's five and its lists' four), whose files and defines are
 // in ProgramCache.cpp beside the billboards'.
 // A billboard key is the variant a batch draws with:
 //   variant          the technique's shaders and target kind (vs_particles + ...):
@@ -100,6 +100,8 @@ public:
         TileSortCount,      ///< the same, FX_TILE_COUNT
         TileSortScan,       ///< the same, FX_TILE_SCAN
         TileSortScatter,    ///< the same, FX_TILE_SCATTER
+        TiledShadeLit,      ///< cs_particles_tiled, FX_LIT (lit smoke: TiledPath.h)
+        TiledSetupLit,      ///< cs_particles_tiled, FX_TILED_SETUP and FX_LIT
         ProgramCount
     };
 
@@ -178,8 +180,9 @@ public:
     /// Adds (once each) the keys a batch of `technique` with `contrastPower` draws with, lit and
     /// unlit, on a quarter-res target or not (drawKey).
     static void addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys);
-    /// The tiled path's seven programs (TiledPath.h, with tileSortKeys): what prepareGl adds while
-    /// it is on, in a context with compute shaders.
+    /// The tiled path's nine programs (TiledPath.h: unlit and lit, with tileSortKeys): what
+    /// prepareGl adds while it is on, in a context with compute shaders (lit too, as
+    /// techniqueKeys: a host may set a scene light at any time).
     static std::vector<Key> tiledKeys();
     /// The four that write the tiled path's lists (TileSort.h).
     static std::vector<Key> tileSortKeys();

@@ -17,10 +17,16 @@
 namespace fx {
 namespace {
 
-constexpr int kEntryBinding = 1, kTileBinding = 2, kInstanceBinding = 0, kRecordBinding = 3, kAccumImage = 0;
+constexpr int kEntryBinding = 1, kTileBinding = 2, kInstanceBinding = 0, kRecordBinding = 3, kLightBinding = 4,
+              kAccumImage = 0;
 constexpr size_t kRecordBytes = 6 * 16;  // cs_particles_tiled.glsl's six vec4 per particle
+constexpr size_t kLightBytes = 5 * 16;   // and its kLightStride, lit programs only
+// The composite reads the accumulation on the opacity map's unit: the lit setup is done with it.
 constexpr int kAtlasUnit = ParticleDraw::kAtlasUnit, kRampUnit = ParticleDraw::kRampUnit,
-              kDepthUnit = ParticleDraw::kSceneDepthUnit, kAccumUnit = 3;
+              kDepthUnit = ParticleDraw::kSceneDepthUnit, kOpacityUnit = ParticleDraw::kOpacityUnit, kAccumUnit = 3,
+              kLitAtlasUnit = 4;
+static_assert(kLitAtlasUnit < GlStateGuard::kTextureUnits, "a unit the guard puts back");
+static_assert(kLightBinding < TileSort::kBindings, "a binding ComputeBindingsScope puts back");
 
 // The bindings the pass changes that GlStateGuard has no rows for: read on entry, put back on
 // exit (shader storage buffers 0-4 with their ranges, the generic binding, image unit 0).
@@ -131,7 +137,7 @@ TiledPath::TiledPath(ParticleDraw& draw, SizeMismatchReport sizeMismatch)
 TiledPath::~TiledPath() {
     // The renderer deletes its GL objects inside a guard with the context current (~ParticleRenderer).
     if (!privateGlContextCurrent()) return;
-    const uint32_t buffers[5] = {tileBuffer_, recordBuffer_, coverVbo_, instanceBuffer_, entryBuffer_};
+    const uint32_t buffers[6] = {tileBuffer_, recordBuffer_, coverVbo_, instanceBuffer_, entryBuffer_, lightBuffer_};
     for (uint32_t b : buffers) {
         if (b) glDeleteBuffers(1, &b);
     }
@@ -172,9 +178,14 @@ void TiledPath::bind(const ProgramCache& programs) {
     setup_ = programs.passProgram(ProgramCache::TiledSetup);
     shade_ = programs.passProgram(ProgramCache::TiledShade);
     composite_ = programs.passProgram(ProgramCache::TiledComposite);
+    setupLit_ = programs.passProgram(ProgramCache::TiledSetupLit);
+    shadeLit_ = programs.passProgram(ProgramCache::TiledShadeLit);
     // Each program's uniforms (-1 where it has none of that name: glUniform ignores those).
-    for (ShadeUniforms* u : {&setupUniforms_, &shadeUniforms_}) {
-        const uint32_t prog = u == &setupUniforms_ ? setup_ : shade_;
+    const std::pair<ShadeUniforms*, uint32_t> located[4] = {
+        {&setupUniforms_, setup_}, {&shadeUniforms_, shade_}, {&setupLitUniforms_, setupLit_}, {&shadeLitUniforms_, shadeLit_}};
+    for (const auto& program : located) {
+        ShadeUniforms* u = program.first;
+        const uint32_t prog = program.second;
         *u = ShadeUniforms{};
         if (!prog) continue;
         u->view = glGetUniformLocation(prog, "uView");
@@ -197,6 +208,14 @@ void TiledPath::bind(const ProgramCache& programs) {
         u->atlasTexels = glGetUniformLocation(prog, "uAtlasTexels");
         u->decode.locate(prog);
         u->fog = FogUniforms::of(prog);
+        u->batchLight = glGetUniformLocation(prog, "uBatchLight");
+        u->batchShade = glGetUniformLocation(prog, "uBatchShade");
+        u->sunView = glGetUniformLocation(prog, "uSunView");
+        u->sunColor = glGetUniformLocation(prog, "uSunColor");
+        u->shadowed = glGetUniformLocation(prog, "uShadowed");
+        u->viewToShadow = glGetUniformLocation(prog, "uViewToShadow");
+        u->opacity = glGetUniformLocation(prog, "uOpacity");
+        u->litAtlas = glGetUniformLocation(prog, "uLitAtlas");
     }
     if (composite_) {
         compositeAccum_ = glGetUniformLocation(composite_, "uAccum");
@@ -206,7 +225,7 @@ void TiledPath::bind(const ProgramCache& programs) {
 }
 
 bool TiledPath::canDraw(const ParticleView& v) {
-    if (v.lit() || v.list.batches.size() > size_t(kMaxBatches)) return false;
+    if (v.list.batches.size() > size_t(kMaxBatches)) return false;
     const glm::mat4& p = v.view.proj;
     // Billboards: a projection whose w does not depend on x and y (perspective, orthographic).
     // Spheres: a perspective one whose x and y are not mixed (their rays' slopes, as the raster
@@ -228,6 +247,9 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
     const Target depth = source.target;
     const SceneDepthDecode decode = source.decode;
     if (!depth.valid()) return false;
+    bool lit = false;
+    for (const DrawBatch& batch : record->list.batches) lit = lit || litBatch(*record, batch);
+    if (lit && !litOk()) return false;
     TileBins::Range ranges[kMaxBatches];
     const int batchCount = int(record->list.batches.size());
     for (int b = 0; b < batchCount; ++b) {
@@ -243,11 +265,12 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
     if (record->bins.entryCount <= cpuListLimit()) writeEntries(&record->bins, jobs);
     const Target color = frame.sceneColor();
     narrowDepthRead(frame, tilesBound(record->bins, view.width, view.height), view.width, view.height);
-    addPassReading(frame, kPass, {depth}, color, [this, record, depth, decode, color](PassContext& ctx) {
+    const Target opacity = lit ? record->opacity : Target{};  // lit smoke's opacity map, where there is one
+    addPassReading(frame, kPass, {depth, opacity}, color, [this, record, depth, decode, color, opacity](PassContext& ctx) {
         if (!targetsFitView(ctx, record->view, color, depth, sizeMismatch_)) return;
         GlStateGuard guard;  // nothing z-tested: the compute shader compares depths itself
         DebugGroup group(kPass);
-        run(ctx, *record, color, depth, decode);
+        run(ctx, *record, color, depth, decode, opacity);
     });
     return true;
 }
@@ -279,10 +302,14 @@ void TiledPath::ensureObjects(int width, int height) {
     }
 }
 
-void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Target depth, const SceneDepthDecode& decode) {
+void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Target depth, const SceneDepthDecode& decode,
+                    Target opacity) {
     const TileBins& bins = v.bins;
     const ViewInfo& view = v.view;
     if (bins.tileCount() == 0 || !ok()) return;
+    bool lit = false;
+    for (const DrawBatch& batch : v.list.batches) lit = lit || litBatch(v, batch);
+    if (lit && !litOk()) return;  // declare() said so; a reload since may have lost them
     ComputeBindingsScope bindings;
     ensureObjects(view.width, view.height);
 
@@ -330,10 +357,42 @@ void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Targe
         glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(recordCapacity_), nullptr, GL_DYNAMIC_COPY);
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRecordBinding, recordBuffer_);
+    if (lit) {
+        TileSort::ensureBuffer(&lightBuffer_, &lightCapacity_, size_t(count) * kLightBytes);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightBinding, lightBuffer_);
+        bindTextureUnit(kOpacityUnit, opacity.valid() ? ctx.texture(opacity, 0).name : 0);
+        bindTextureUnit(kLitAtlasUnit, atlas.litTexture(), draw_.atlasSampler().name());
+    }
+    // The lit smoke's light: the scene's sun in view space, each batch's share (ParticleDraw's
+    // setLightUniforms, per batch).
+    const LightState& light = v.settings.light;
+    const glm::vec3 sunView = glm::normalize(glm::mat3(view.view) * light.toSun);
+    const glm::mat4 viewToShadow = v.worldToShadow * glm::inverse(view.view);
+    auto setLight = [&](const ShadeUniforms& u) {
+        if (!lit) return;
+        glUniform3f(u.sunView, sunView.x, sunView.y, sunView.z);
+        glUniform3f(u.sunColor, light.sunColor.x, light.sunColor.y, light.sunColor.z);
+        glUniform1i(u.shadowed, opacity.valid() ? 1 : 0);
+        glUniformMatrix4fv(u.viewToShadow, 1, GL_FALSE, &viewToShadow[0][0]);
+        glUniform1i(u.opacity, kOpacityUnit);
+        glUniform1i(u.litAtlas, kLitAtlasUnit);
+        glm::vec4 setupLight[kMaxBatches], shadeLight[kMaxBatches];
+        const int batchCount = int(v.list.batches.size());
+        for (int b = 0; b < batchCount; ++b) {
+            const DrawBatch& batch = v.list.batches[size_t(b)];
+            const LightingDesc& l = batch.lighting;
+            const glm::vec3 ambient = light.ambient * l.ambient;
+            setupLight[b] = glm::vec4(l.anisotropy, l.absorption, l.normalStrength, litBatch(v, batch) ? 1.0f : 0.0f);
+            shadeLight[b] = glm::vec4(ambient, l.scattering);
+        }
+        glUniform4fv(u.batchLight, batchCount, &setupLight[0][0]);
+        glUniform4fv(u.batchShade, batchCount, &shadeLight[0][0]);
+    };
     const glm::vec4 pixelToNdc(2.0f / float(view.width), 2.0f / float(view.height), -1.0f, -1.0f);
-    glUseProgram(setup_);
+    glUseProgram(lit ? setupLit_ : setup_);
     {
-        const ShadeUniforms& u = setupUniforms_;
+        const ShadeUniforms& u = lit ? setupLitUniforms_ : setupUniforms_;
+        setLight(u);
         glUniformMatrix4fv(u.view, 1, GL_FALSE, &view.view[0][0]);
         glUniformMatrix4fv(u.proj, 1, GL_FALSE, &view.proj[0][0]);
         glUniform1f(u.nearPlane, view.nearPlane);
@@ -375,9 +434,10 @@ void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Targe
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 
     // 2. The tiles: every pixel through its tile's particles.
-    glUseProgram(shade_);
+    glUseProgram(lit ? shadeLit_ : shade_);
     {
-        const ShadeUniforms& u = shadeUniforms_;
+        const ShadeUniforms& u = lit ? shadeLitUniforms_ : shadeUniforms_;
+        setLight(u);
         glUniformMatrix4fv(u.proj, 1, GL_FALSE, &view.proj[0][0]);
         glUniform1f(u.nearPlane, view.nearPlane);
         glUniform1i(u.atlas, kAtlasUnit);

@@ -22,8 +22,9 @@
 // overdraw; here the depth fetch is paid per pixel and no fragment is blended.
 //
 // Where it draws: a context with compute shaders, shader storage buffers and image load/store
-// (GL 4.3, or the three ARB extensions: available()), a view whose every batch is unlit hard,
-// soft or spherical, at most kMaxBatches batches, under a projection whose w does not depend on x
+// (GL 4.3, or the three ARB extensions: available()), a view whose every batch is hard, soft or
+// spherical, lit or not (lit smoke: the FX_LIT builds, reading the frame's opacity map), at most
+// kMaxBatches batches, under a projection whose w does not depend on x
 // and y (perspective or orthographic; with spheres, perspective). Elsewhere the renderer draws the
 // view at full resolution as before (canDraw() says which). Quarter res, when it pays for a view,
 // takes precedence.
@@ -83,32 +84,42 @@ public:
     /// Takes the tiled programs of `programs` (0 where one failed or was never built) and looks
     /// their uniforms up. Context current, inside a guard.
     void bind(const ProgramCache& programs);
-    /// Its programs built (the sort's too).
+    /// Its programs built (the sort's too); litOk: the lit ones as well.
     bool ok() const { return setup_ != 0 && shade_ != 0 && composite_ != 0 && sort_.ok(); }
+    bool litOk() const { return ok() && setupLit_ != 0 && shadeLit_ != 0; }
+    /// Whether `view` draws `batch` lit: a scene light and a reaction that takes it (as the raster
+    /// path's drawKey).
+    static bool litBatch(const ParticleView& view, const DrawBatch& batch) {
+        return view.lit() && batch.lighting.lit(batch.blend);
+    }
     /// Whether this view can be drawn tiled (the rule above; no GL).
     static bool canDraw(const ParticleView& view);
 
     /// Bins the view's particles and declares its pass; false (nothing declared) where a particle
-    /// has no bound or the lists would not fit a shader storage block: the caller declares the
-    /// full-resolution pass instead.
+    /// has no bound, the lists would not fit a shader storage block or a lit batch finds no lit
+    /// program: the caller declares the full-resolution pass instead.
     /// `jobs`: the host's job system, for the binning.
     bool declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& view, const Jobs& jobs = Jobs());
 
 private:
-    void run(PassContext& ctx, const ParticleView& v, Target color, Target depth, const SceneDepthDecode& decode);
+    void run(PassContext& ctx, const ParticleView& v, Target color, Target depth, const SceneDepthDecode& decode,
+             Target opacity);
     void ensureObjects(int width, int height);
 
     ParticleDraw& draw_;
     SizeMismatchReport sizeMismatch_;
-    uint32_t setup_ = 0, shade_ = 0, composite_ = 0;
+    uint32_t setup_ = 0, shade_ = 0, composite_ = 0, setupLit_ = 0, shadeLit_ = 0;
     struct ShadeUniforms {
         int view = -1, proj = -1, nearPlane = -1, farPlane = -1, atlas = -1, ramp = -1, sceneDepth = -1;
         int batchA = -1, batchB = -1, batchRange = -1, batchCount = -1, instanceCount = -1, pixelSlope = -1;
         int tileCount = -1, groupsX = -1, viewSize = -1, pixelToNdc = -1, atlasTexels = -1;
         SceneDepthUniforms decode;
         FogUniforms fog;
+        // FX_LIT only.
+        int batchLight = -1, batchShade = -1, sunView = -1, sunColor = -1, shadowed = -1, viewToShadow = -1,
+            opacity = -1, litAtlas = -1;
     };
-    ShadeUniforms setupUniforms_, shadeUniforms_;
+    ShadeUniforms setupUniforms_, shadeUniforms_, setupLitUniforms_, shadeLitUniforms_;
     int compositeAccum_ = -1, compositeOrigin_ = -1, compositeViewSize_ = -1;
     TileSort sort_;                              ///< writes the tiles' lists
     uint32_t tileBuffer_ = 0;                    ///< the tiles (shader storage)
@@ -119,6 +130,8 @@ private:
     size_t entryCapacity_ = 0;
     uint32_t recordBuffer_ = 0;                  ///< the particles' records (the setup dispatch's)
     size_t recordCapacity_ = 0;
+    uint32_t lightBuffer_ = 0;                   ///< lit particles' light (the lit setup's)
+    size_t lightCapacity_ = 0;
     uint32_t accum_ = 0;                         ///< RGBA16F, at least the view's size
     int accumWidth_ = 0, accumHeight_ = 0;
     uint32_t coverVao_ = 0, coverVbo_ = 0;       ///< the covered tiles' runs

@@ -328,6 +328,7 @@ inline constexpr RenderMode kSoftLit{"soft lit", fx::Technique::Soft, false, tru
 inline constexpr RenderMode kHardTiled{"hard tiled", fx::Technique::Hard, false, false, true};
 inline constexpr RenderMode kSoftTiled{"soft tiled", fx::Technique::Soft, false, false, true};
 inline constexpr RenderMode kSphericalTiled{"spherical tiled", fx::Technique::Spherical, false, false, true};
+inline constexpr RenderMode kSoftLitTiled{"soft lit tiled", fx::Technique::Soft, false, true, true};
 }  // namespace modes
 
 // ---- hand-placed particles (TestParticles.cpp) ------------------------------------------------

@@ -39,7 +39,7 @@ using Source = fx::ImmediateView::DepthSource;
 
 const RenderMode kModes[] = {modes::kHard,        modes::kSoft,      modes::kSpherical,
                              modes::kSoftQuarter, modes::kMega,      modes::kSoftLit,
-                             modes::kSoftTiled,   modes::kSphericalTiled};
+                             modes::kSoftTiled,   modes::kSphericalTiled, modes::kSoftLitTiled};
 
 
 class ImmediateRendererTest : public LoadedPluginTest {

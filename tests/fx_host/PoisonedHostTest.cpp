@@ -13,6 +13,7 @@
 
 #include "FxTestHost.h"
 #include "PoisonedHostState.h"
+#include "render/TiledPath.h"
 #include "render/PinnedGlState.h"
 
 namespace fxtest {
@@ -32,6 +33,8 @@ const RenderMode kModes[] = {
     modes::kHardTiled,
     modes::kSoftTiled,
     modes::kSphericalTiled,
+    modes::kSoftLitTiled,
+    {"spherical lit tiled", fx::Technique::Spherical, false, true, true},
     {"spherical quarter lit", fx::Technique::Spherical, true, true},
     {"from reactions (stateless sparks too)", fx::Technique::FromReaction},
 };
@@ -124,6 +127,7 @@ TEST_F(PoisonedHostTest, EveryTechniqueIgnoresEachPoisonedState) {
         const Image clean = frame(nullptr);
         ASSERT_TRUE(problems_.empty()) << m.label << " (clean host):\n" << problems_;
         ASSERT_GT(maxAbsDiff(clean, bare), 0) << m.label << ": nothing drawn, the test would prove nothing";
+        if (m.tiled) EXPECT_TRUE(graph.ran(fx::TiledPath::kPass)) << m.label << ": the tiled pass did not run";
         int changed = 0;
         for (const HostPoison& p : poisons) {
             const Image img = frame(&p.apply);

@@ -33,7 +33,8 @@ constexpr int kSphericalTolerance = 3;
 
 const RenderMode kModes[] = {modes::kHard,        modes::kSoft,             modes::kSpherical,
                              modes::kSoftQuarter, modes::kSphericalQuarter, modes::kMega,
-                             modes::kHardTiled,   modes::kSoftTiled,        modes::kSphericalTiled};
+                             modes::kHardTiled,   modes::kSoftTiled,        modes::kSphericalTiled,
+                             modes::kSoftLitTiled};
 
 // An RGBA8 colour texture + a GL_DEPTH_COMPONENT24 depth texture in one framebuffer.
 struct Framebuffer : HostTarget {

@@ -70,10 +70,11 @@ struct RenderOptions {
     /// With quarterRes: every view at quarter res, also where full res is cheaper (the 2.0
     /// behaviour; for comparisons and tests). Since API 2.1.
     bool quarterResAlways = false;
-    /// Unlit hard, soft and spherical particles of a full-resolution view shaded per 16 px tile
-    /// by a compute shader (one scene-depth read and one blend per pixel) where the context has
-    /// compute shaders; elsewhere, and for lit smoke and mega, rasterised as before. Since API 2.3;
-    /// since 2.4 true is `tiling` On whatever `tiling` says, false leaves it to `tiling`.
+    /// Hard, soft and spherical particles of a full-resolution view, lit or not, shaded per 16 px
+    /// tile by a compute shader (one scene-depth read and one blend per pixel) where the context
+    /// has compute shaders; elsewhere, and for mega, rasterised as before (lit smoke was
+    /// rasterised until 2026-11-28). Since API 2.3; since 2.4 true is `tiling` On whatever
+    /// `tiling` says, false leaves it to `tiling`.
     bool tiled = false;
     Tiling tiling = Tiling::Auto;  ///< where the tiled path draws (Tiling); since API 2.4
 };

@@ -244,8 +244,8 @@ typedef struct fxRenderOptions {
      * the composite (else that view at full resolution); else every view at quarter res (the 2.0
      * behaviour, for comparisons). A 2.0 host's size leaves it as it is (0 unless set). */
     fxBool quarterResAlways;
-    /* API 2.3 (a 2.0-2.2 size leaves it): 1 = unlit hard, soft and spherical particles shaded per
-     * 16 px tile by a compute shader where the context has one; 0 = as tiling says. API 2.4 (older
+    /* API 2.3 (a 2.0-2.2 size leaves it): 1 = hard, soft and spherical particles (lit too) shaded
+     * per 16 px tile by a compute shader where the context has one; 0 = as tiling says. API 2.4 (older
      * sizes leave it): tiling, FX_TILING_AUTO (0) tiled on a GPU, not a software rasterizer. */
     fxBool tiled;
     int tiling;
