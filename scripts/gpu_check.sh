@@ -9,7 +9,7 @@
 # Into $OUT: run-all.sh's data.tgz and img.tgz.* (standard, fill, overdraw, 4K, the particle sweep,
 # the drive through both depth paths) and parts.tgz (shader_parts.sh's runs and their log, a
 # particle sweep of the tiled modes: parts/tiled_sweep.json, and the tiled path's list limit in
-# three settings: parts/lists_*.json). Back
+# three settings: parts/lists_*.json; lit smoke rasterised and tiled: parts/lit_*.json). Back
 # here: tar xzf parts.tgz -C /tmp && scripts/shader_parts.sh --table /tmp/parts
 set -u
 cd "$(dirname "$0")/.."
@@ -45,6 +45,15 @@ for lim in 0 131072 4194304; do
         --json "$out/parts/lists_${1}_${lim}.json" > "$out/parts/lists_${1}_${lim}.txt" 2>&1
     echo "lists $1 $2 limit $lim rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
   done
+done
+# Lit smoke, rasterised and tiled (the game's drive lights its smoke, and Tiling::Auto now tiles it
+# on a GPU): the standard scene at 1080p and 4K.
+s=$(date +%s)
+for size in 1920x1080 3840x2160; do
+  timeout 60 bash .gpu/run-egl.sh fxbench --backend egl --scenario standard --size "$size" --frames 10 \
+      --error-frames 0 --modes hard,soft-lit,soft-lit+tiled,spherical-lit,spherical-lit+tiled \
+      --json "$out/parts/lit_${size}.json" > "$out/parts/lit_${size}.txt" 2>&1
+  echo "lit $size rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
 done
 tar czf "$out/parts.tgz" -C "$out" parts parts.log && rm -rf "$out/parts" "$out/parts.log"
 ls -la "$out"

@@ -46,6 +46,13 @@ const std::vector<Mode>& allModes() {
          fx::ParticleShape::Trimmed, true},
         {"spherical-lit", "Spherical billboards, lit and self-shadowed", true, Technique::Spherical, false, false,
          "spherical-lit", fx::ParticleShape::Trimmed, true},
+        // Lit smoke shaded per tile: the light per corner (sphere: centre) as the raster vertex
+        // shader works it out, read across the quad's triangles (cs_particles_tiled.glsl).
+        {"soft-lit+tiled", "Soft particles, lit and self-shadowed, shaded per screen tile (compute)", true,
+         Technique::Soft, false, false, "soft-lit", fx::ParticleShape::Trimmed, true, false, false, false, true},
+        {"spherical-lit+tiled", "Spherical billboards, lit and self-shadowed, shaded per screen tile (compute)", true,
+         Technique::Spherical, false, false, "spherical-lit", fx::ParticleShape::Trimmed, true, false, false, false,
+         true},
         // Mega-particles (seed 001): the same particles as blurred, lit spheres melted into one
         // volume. Its image error is measured against `spherical`, the same particles drawn as
         // exact spheres: it says how far the blur, the noise and the reduced resolution move the
