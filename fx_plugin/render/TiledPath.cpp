@@ -366,8 +366,8 @@ void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Targe
     // The lit smoke's light: the scene's sun in view space, each batch's share (ParticleDraw's
     // setLightUniforms, per batch).
     const LightState& light = v.settings.light;
-    const glm::vec3 sunView = glm::normalize(glm::mat3(view.view) * light.toSun);
-    const glm::mat4 viewToShadow = v.worldToShadow * glm::inverse(view.view);
+    const glm::vec3 sunView = lit ? glm::normalize(glm::mat3(view.view) * light.toSun) : glm::vec3(0.0f);
+    const glm::mat4 viewToShadow = lit ? v.worldToShadow * glm::inverse(view.view) : glm::mat4(1.0f);
     auto setLight = [&](const ShadeUniforms& u) {
         if (!lit) return;
         glUniform3f(u.sunView, sunView.x, sunView.y, sunView.z);
