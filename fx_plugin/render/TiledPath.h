@@ -26,8 +26,9 @@
 // spherical, lit or not (lit smoke: the FX_LIT builds, reading the frame's opacity map), at most
 // kMaxBatches batches, under a projection whose w does not depend on x
 // and y (perspective or orthographic; with spheres, perspective). Elsewhere the renderer draws the
-// view at full resolution as before (canDraw() says which). Quarter res, when it pays for a view,
-// takes precedence.
+// view at full resolution as before (canDraw() says which). With RenderOptions::quarterRes a view
+// this path can draw is drawn here, not at quarter res (it costs less: ParticleRenderer's
+// declarePasses); quarterResAlways keeps quarter res.
 //
 // The picture: the raster path's up to rounding (one blend of a float sum instead of a blend per
 // fragment into the target; a texel level picked from one level of detail per particle, for a

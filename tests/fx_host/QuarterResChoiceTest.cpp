@@ -1,7 +1,8 @@
 // RenderOptions::quarterRes draws a view at quarter res only where that costs less than full res
 // (ScreenTiles.h's quarterResPays: the smoke's summed bounds against its tiles' pixels);
 // quarterResAlways forces it. Light smoke at quarter res is drawn exactly as full res draws it (the
-// same passes, the same bytes); heavy smoke takes the quarter-res passes.
+// same passes, the same bytes); heavy smoke takes the quarter-res passes, unless the tiled path
+// draws the view.
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -21,11 +22,12 @@ class QuarterResChoiceTest : public PluginHostTest {
 protected:
     QuarterResChoiceTest() : PluginHostTest(kW, kH) {}
 
-    void setOptions(bool quarter, bool always) {
+    void setOptions(bool quarter, bool always, fx::Tiling tiling = fx::Tiling::Auto) {
         fx::RenderOptions o;
         o.techniqueOverride = fx::Technique::Soft;
         o.quarterRes = quarter;
         o.quarterResAlways = always;
+        o.tiling = tiling;
         ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
         EXPECT_EQ(plugin->renderOptions().quarterResAlways, always) << "the option reads back";
         ASSERT_TRUE(plugin->prepareGl(nullptr));
@@ -67,6 +69,34 @@ TEST_F(QuarterResChoiceTest, HeavySmokeTakesQuarterRes) {
     EXPECT_TRUE(ran(graph.executed(), "particles_quarter")) << plugin->stats().particlesDrawn << " puffs drawn";
     EXPECT_TRUE(ran(graph.executed(), "particles_composite"));
     EXPECT_FALSE(ran(graph.executed(), "particles"));
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+// Where the tiled path draws the view (Tiling::On here; Auto on a GPU) it costs less than quarter
+// res: the heavy smoke above is drawn tiled, the picture the tiled one byte for byte and no
+// quarter-res pass run; quarterResAlways still takes quarter res. (Auto on this software
+// rasterizer does not tile: the test above.)
+TEST_F(QuarterResChoiceTest, WhereTheTiledPathDrawsTheViewItTakesItOverQuarterRes) {
+    createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
+    simulate(1.0f, 240);
+    setOptions(false, false, fx::Tiling::On);
+    const Image tiled = render();
+    ASSERT_GT(plugin->stats().particlesDrawn, 0);
+    ASSERT_TRUE(ran(graph.executed(), "particles_tiled"));
+
+    setOptions(true, false, fx::Tiling::On);
+    const Image chosen = render();
+    EXPECT_TRUE(ran(graph.executed(), "particles_tiled"));
+    for (const char* pass : {"particles_quarter", "particles_composite", "particles_depth_downsample", "particles"}) {
+        EXPECT_FALSE(ran(graph.executed(), pass)) << pass;
+    }
+    EXPECT_EQ(chosen.rgba, tiled.rgba) << "the tiled frame, byte for byte";
+
+    setOptions(true, true, fx::Tiling::On);
+    const Image forced = render();
+    EXPECT_TRUE(ran(graph.executed(), "particles_quarter"));
+    EXPECT_FALSE(ran(graph.executed(), "particles_tiled"));
+    EXPECT_GT(maxAbsDiff(forced, tiled), 0) << "forced: the half-res picture";
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
