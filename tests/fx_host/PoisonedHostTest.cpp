@@ -127,7 +127,9 @@ TEST_F(PoisonedHostTest, EveryTechniqueIgnoresEachPoisonedState) {
         const Image clean = frame(nullptr);
         ASSERT_TRUE(problems_.empty()) << m.label << " (clean host):\n" << problems_;
         ASSERT_GT(maxAbsDiff(clean, bare), 0) << m.label << ": nothing drawn, the test would prove nothing";
-        if (m.tiled) EXPECT_TRUE(graph.ran(fx::TiledPath::kPass)) << m.label << ": the tiled pass did not run";
+        if (m.tiled) {
+            EXPECT_TRUE(graph.ran(fx::TiledPath::kPass)) << m.label << ": the tiled pass did not run";
+        }
         int changed = 0;
         for (const HostPoison& p : poisons) {
             const Image img = frame(&p.apply);

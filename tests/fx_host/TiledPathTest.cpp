@@ -207,8 +207,8 @@ TEST_F(TiledPathTest, BlendModesAndFogMatchRasterisedOnes) {
 }
 
 // Lit smoke (a scene light, the reaction taking it): each technique, with the opacity map's
-// self-shadowing and without, and reactions that do not take the light (additive, lighting off) in
-// a lit view. The raster path interpolates the light its vertex shader works out (the sun through
+// self-shadowing and without, with linear fog, and reactions that do not take the light (additive,
+// lighting off) in a lit view. The raster path interpolates the light its vertex shader works out (the sun through
 // the opacity map, the phase) over its triangles: a quad's two, or a trimmed polygon's fan, whose
 // vertices lie elsewhere. The tiled path follows the quad's two triangles, so:
 //  - it is the raster path's quads up to rounding (kTolerance), spheres kSphericalTolerance;
@@ -231,13 +231,15 @@ TEST_F(TiledPathTest, LitSmokeMatchesRasterisedLitSmoke) {
         float absorption;
         fx::BlendMode blend;
         bool takesLight;
+        bool fog = false;
     };
     int spread = 0;
     for (const Case& c : {Case{fx::Technique::Soft, 0.0f, fx::BlendMode::Alpha, true},
                           Case{fx::Technique::Soft, 3.0f, fx::BlendMode::Alpha, true},
+                          Case{fx::Technique::Soft, 3.0f, fx::BlendMode::Alpha, true, true},
                           Case{fx::Technique::Hard, 3.0f, fx::BlendMode::Premultiplied, true},
                           Case{fx::Technique::Spherical, 3.0f, fx::BlendMode::Alpha, true},
-                          Case{fx::Technique::Spherical, 0.0f, fx::BlendMode::Alpha, true},
+                          Case{fx::Technique::Spherical, 0.0f, fx::BlendMode::Alpha, true, true},
                           Case{fx::Technique::Soft, 3.0f, fx::BlendMode::Additive, true},
                           Case{fx::Technique::Soft, 3.0f, fx::BlendMode::Alpha, false}}) {
         direct.desc.render.technique = c.technique;
@@ -245,11 +247,18 @@ TEST_F(TiledPathTest, LitSmokeMatchesRasterisedLitSmoke) {
         direct.desc.lighting.absorption = c.absorption;
         direct.desc.lighting.enabled = c.takesLight;
         SCOPED_TRACE(testing::Message() << "technique " << int(c.technique) << ", absorption " << c.absorption
-                                        << ", blend " << int(c.blend) << (c.takesLight ? "" : ", lighting off"));
+                                        << ", blend " << int(c.blend) << (c.takesLight ? "" : ", lighting off")
+                                        << (c.fog ? ", fog" : ""));
         TestFrameGraph graph(kW, kH, true, true);
         TestScene scene = reversedGround();
         fx::ViewInfo view = makeView(glm::vec3(0.0f, 2.5f, 6.0f), glm::vec3(0.0f, 0.8f, -1.0f), kW, kH);
         useReversedZ(&view);
+        if (c.fog) {
+            view.fog.mode = fx::Fog::Mode::Linear;
+            view.fog.color = glm::vec3(0.5f, 0.6f, 0.7f);
+            view.fog.start = 2.0f;
+            view.fog.end = 14.0f;
+        }
         direct.settings.shape = fx::ParticleShape::Quad;
         const Image rasterQuads = draw(direct, graph, scene, view, false);
         ASSERT_GE(drawn, 20);
@@ -265,10 +274,10 @@ TEST_F(TiledPathTest, LitSmokeMatchesRasterisedLitSmoke) {
         direct.settings.light.on = true;
         const int quads = maxAbsDiff(rasterQuads, tiled), trimmed = maxAbsDiff(rasterTrimmed, tiled),
                   shapes = maxAbsDiff(rasterQuads, rasterTrimmed);
-        std::printf("[ measured ] technique %d absorption %.0f blend %d%s: tiled against raster quads %d/255, "
+        std::printf("[ measured ] technique %d absorption %.0f blend %d%s%s: tiled against raster quads %d/255, "
                     "against raster trimmed %d/255 (raster quads against trimmed %d/255); lit against unlit %d/255\n",
-                    int(c.technique), double(c.absorption), int(c.blend), c.takesLight ? "" : " (lighting off)", quads,
-                    trimmed, shapes, maxAbsDiff(tiled, unlit));
+                    int(c.technique), double(c.absorption), int(c.blend), c.takesLight ? "" : " (lighting off)",
+                    c.fog ? " fog" : "", quads, trimmed, shapes, maxAbsDiff(tiled, unlit));
         if (c.takesLight && c.blend != fx::BlendMode::Additive) {
             EXPECT_GT(maxAbsDiff(tiled, unlit), 40) << "the light changed nothing";
         } else {
