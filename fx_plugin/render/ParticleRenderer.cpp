@@ -207,8 +207,11 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     // frame / hard in the standard, fill and 4K scenes, soft+tiled 0.711, 0.402, 0.731 against
     // soft+quarter's 0.793, 0.505, 0.803; spheres 0.798, 0.504, 0.809 against 1.164, 0.998,
     // 1.079; 56 against 51 dB): such a view takes it, and its bound is not worked out.
-    // quarterResAlways keeps quarter res.
-    if (quarterRes && !options.quarterResAlways && TiledPath::wanted(options) && TiledPath::canDraw(*record)) {
+    // quarterResAlways keeps quarter res, and so do tiled programs that failed to build (not yet
+    // tried: ensureDrawPrograms builds them below).
+    const bool tiledBuilds = !draw_.programs().tried(ProgramCache::Key::of(ProgramCache::TiledShade)) || tiled_.ok();
+    if (quarterRes && !options.quarterResAlways && tiledBuilds && TiledPath::wanted(options) &&
+        TiledPath::canDraw(*record)) {
         if (!toFullRes()) return 0;
     }
     if (quarterRes) {

@@ -229,6 +229,42 @@ TEST_F(BrokenShaderTest, RendererReportsABrokenShaderAndDrawsNothingWithIt) {
     EXPECT_TRUE(puff.graph.ran("particles"));
 }
 
+// With quarterRes the tiled path takes the views it can draw (Tiling::On here); where its
+// programs do not build, the renderer logs file:line, and quarter res, not full res, draws the
+// heavy smoke it would have taken: the first frame (the programs tried) at full res, the next at
+// quarter res.
+TEST_F(BrokenShaderTest, BrokenTiledProgramsLeaveHeavySmokeToQuarterRes) {
+    const std::string dir = copyShaders("broken_tiled");
+    const int line = lineOf(dir + "/cs_particles_tiled.glsl", "const float kOpaque");
+    ASSERT_GT(line, 0);
+    replaceLine(dir + "/cs_particles_tiled.glsl", line, "const float kOpaque = ;");
+    TestHostAdapter host;
+    DirectParticles particles(&host, dir);
+    std::vector<HandParticle> bank;
+    for (int i = 0; i < 60; ++i) {  // one bank, 60 layers deep
+        bank.push_back(HandParticle{glm::vec3(0.01f * float(i % 7), 1.0f + 0.01f * float(i % 5), -0.01f * float(i)), 2.0f,
+                                    0.5f, 0.3f * float(i)});
+    }
+    particles.set(bank);
+    particles.settings.options.techniqueOverride = fx::Technique::Soft;
+    particles.settings.options.quarterRes = true;
+    particles.settings.options.tiling = fx::Tiling::On;
+    TestScene scene;
+    scene.quads = {TestScene::ground(20.0f, glm::vec3(0.2f))};
+    const fx::ViewInfo view = makeView(glm::vec3(0, 2, 6), glm::vec3(0, 1, 0), 128, 96);
+    TestFrameGraph graph(128, 96);
+    int drawn = 0;
+    renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = particles.declare(view, f); });
+    EXPECT_EQ(drawn, 60);
+    EXPECT_TRUE(host.logged("cs_particles_tiled.glsl:" + std::to_string(line) + ":"))
+        << (host.errors().empty() ? std::string("no error logged") : host.errors().front());
+    EXPECT_FALSE(graph.ran("particles_tiled"));
+    renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) { drawn = particles.declare(view, f); });
+    EXPECT_EQ(drawn, 60);
+    EXPECT_TRUE(graph.ran("particles_quarter")) << "the smoke is heavy enough for quarter res";
+    EXPECT_FALSE(graph.ran("particles_tiled"));
+}
+
 // Soft programs per contrast power: a cache key of their own (ProgramCache::Key::powerSteps),
 // built when asked for, once, with the power's bits folded (no uPowerWhole left in the program);
 // get() never builds: an unbuilt power draws with the general soft program.
