@@ -2,8 +2,8 @@
 // The tiled path's lists written on the GPU (fx_plugin/render/TileSort.h): the CPU bounded the
 // particles and counted each tile's entries (TileBins.h); what grows with the entries (millions
 // at 256,000 particles) is done here, in four programs:
-//   FX_TILE_EMIT: one invocation per particle, front to back, writes a pair (tile, entry) for each
-//     tile of its range, row by row, from its first pair on: the pairs in particle order.
+//   FX_TILE_EMIT: one invocation per pair writes it: (tile, entry) of its particle, each particle's
+//     tiles row by row from its first pair on: the pairs in particle order, front to back.
 //   FX_TILE_COUNT, FX_TILE_SCAN, FX_TILE_SCATTER: one pass of a stable radix sort of the pairs by
 //     tile, kDigitBits bits of the tile at a time from the lowest. A block of kBlockPairs pairs
 //     counts its digits (COUNT); one group adds the counts up digit by digit, block by block
@@ -29,21 +29,28 @@ layout(std430, binding = 0) readonly buffer Particles { uvec4 uParticles[]; };
 layout(std430, binding = 1) writeonly buffer KeysOut { uint uKeysOut[]; };
 layout(std430, binding = 2) writeonly buffer EntriesOut { uint uEntriesOut[]; };
 uniform int uParticleCount;
+uniform int uPairCount;
 uniform int uTilesX;
 
+// One invocation per pair, not per particle: a particle over 2,000 tiles written by one
+// invocation kept one group busy for the whole pass while the GPU idled (the fill scene's 250
+// large puffs: one group of 256 for 520,000 pairs). The pair's particle is the last whose first
+// pair is not past it (a particle with no tiles has the next one's first pair: never chosen for a
+// pair, as that one follows it); its tile is the pair's place in the particle's range, row by row.
 void main() {
-    uint k = groupIndex() * kGroup + gl_LocalInvocationID.x;
-    if (k >= uint(uParticleCount)) return;
-    uvec4 p = uParticles[k];
-    uint x0 = p.x & 0xffffu, x1 = p.x >> 16u, y0 = p.y & 0xffffu, y1 = p.y >> 16u;
-    uint at = p.z;
-    for (uint y = y0; y <= y1 && x0 <= x1; ++y) {
-        for (uint x = x0; x <= x1; ++x) {
-            uKeysOut[at] = y * uint(uTilesX) + x;
-            uEntriesOut[at] = p.w;
-            ++at;
-        }
+    uint i = groupIndex() * kGroup + gl_LocalInvocationID.x;
+    if (i >= uint(uPairCount)) return;
+    uint lo = 0u, hi = uint(uParticleCount) - 1u;
+    while (lo < hi) {
+        uint mid = (lo + hi + 1u) >> 1u;
+        if (uParticles[mid].z <= i) lo = mid; else hi = mid - 1u;
     }
+    uvec4 p = uParticles[lo];
+    uint x0 = p.x & 0xffffu, x1 = p.x >> 16u, y0 = p.y & 0xffffu;
+    uint width = x1 - x0 + 1u;
+    uint local = i - p.z;
+    uKeysOut[i] = (y0 + local / width) * uint(uTilesX) + x0 + local % width;
+    uEntriesOut[i] = p.w;
 }
 
 #elif defined(FX_TILE_COUNT)

@@ -145,9 +145,9 @@ std::string markdownReport(const Report& r) {
                  "%.0f", &o);
     perPassTable(r, &ModeSummary::passShaded,
                  "Per particle pass, fragments shaded (GL_FRAGMENT_SHADER_INVOCATIONS_ARB: discarded ones too; "
-                 "a compute pass adds its invocations: the tiled path's one per pixel of its tiles, two per "
-                 "particle, and where the GPU sorts its lists (over TiledPath::kCpuListEntries) per sort pass 512 per 4,096 "
-                 "list entries and 1,024; median over error frames); "
+                 "a compute pass adds its invocations: the tiled path's one per pixel of its tiles and one per "
+                 "particle, and where the GPU writes its lists (over TiledPath::kCpuListEntries) one per list entry "
+                 "and per sort pass 512 per 4,096 list entries and 1,024; median over error frames); "
                  "'-' = not run",
                  "%.0f", &o);
 

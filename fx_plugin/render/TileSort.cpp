@@ -100,8 +100,9 @@ uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, entries_[0]);
     glUseProgram(emit_);
     glUniform1i(emitU_.particleCount, int(particleCount));
+    glUniform1i(emitU_.pairCount, int(pairs));
     glUniform1i(emitU_.tilesX, bins.tilesX);
-    dispatch((particleCount + kGroup - 1) / kGroup, emitU_.groupsX);
+    dispatch((pairs + kGroup - 1) / kGroup, emitU_.groupsX);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
     // 2. The radix passes, from keys_/entries_[0] to [1] and back.
