@@ -34,10 +34,9 @@
 //   - Lit smoke (FX_LIT, batches whose reaction takes the scene light): the light that the raster
 //     path's vertex shader works out per vertex (the sun through the opacity map, the phase) is
 //     worked out once per particle in the setup, at a sphere's centre (as the raster path does) and
-//     at a billboard's four quad corners, and read per pixel across the quad's two triangles as
-//     the raster path's quads interpolate it (its trimmed polygons interpolate between their own
-//     vertices instead: TiledPathTest holds the difference to the raster path's own between its
-//     two shapes). The per-pixel light (the atlas normal, the diffuse and scattered shares) is the
+//     at the vertices of the fan the raster path draws a billboard with (its frame's trimmed
+//     polygon, or the quad), and read per pixel across that fan's triangles as the rasteriser
+//     interpolates it: the light of a large puff depends on where its vertices lie. The per-pixel light (the atlas normal, the diffuse and scattered shares) is the
 //     raster fragment shaders', with each batch's values from uniform arrays.
 // The atlas is read from one mip level, the nearest, as ParticleDraw's sampler does.
 #include "particles_common.glsl"
@@ -57,12 +56,33 @@ layout(std430, binding = 2) readonly buffer Tiles { uvec4 uTiles[]; };
 // [5].y: 1 where the particle is lit (FX_LIT), else 0.
 layout(std430, binding = 3) buffer Records { vec4 uRecords[]; };
 #ifdef FX_LIT
-// Lit particles' light, five vec4 per particle by instance index. Billboards: [0] - [3] (sun light
-// rgb, phase) at the quad's corners (-1, -1), (1, -1), (-1, 1), (1, 1) of its (right, up) frame,
-// [4] = (cos, sin of its angle, normal strength, 0). Spheres: [0] at the centre, [4] = (cos, sin)
-// x 0.6 normal strength x radius (the bumps' scale, as vs_particles.glsl's vTurn), 0, 0.
+// Lit particles' light, kLightStride vec4 per particle by instance index. Billboards: [0] - [7]
+// (sun light rgb, phase) at the vertices of the fan the raster path draws it with (fanVertex: the
+// frame's trimmed polygon, or the quad's corners), [8] = (cos, sin of its angle, normal strength,
+// the fan: its vertex count + 16 x (its polygon in uShapes + 1), 0 for the quad). Spheres: [0] at
+// the centre, [8] = (cos, sin) x 0.6 normal strength x radius (the bumps' scale, as
+// vs_particles.glsl's vTurn), 0, 0.
 layout(std430, binding = 4) buffer Light { vec4 uLight[]; };
-const uint kLightStride = 5u;
+const uint kLightStride = 9u;
+// The billboards' trimmed polygons (TrimmedShapes::packed(), vs_particles.glsl's uShapes):
+// [frame][bucket][vertex] (x, y) in the particle's texture space, two vertices per vec4.
+layout(std430, binding = 5) readonly buffer Shapes { vec4 uShapes[]; };
+const int kShapeVertices = 8;  // TrimmedShapes::kMaxVertices
+
+// Vertex i of a billboard's fan as the raster path draws it (a GL_TRIANGLE_FAN, convex and
+// counter-clockwise). polygon >= 0: the trimmed polygon's, in texture space (padded by repeating
+// its last vertex). polygon < 0: the quad's corners (1, -1), (1, 1), (-1, 1), (-1, -1) in its
+// (right, up) frame, whose triangles are those of the strip (0, 1, 2), (1, 2, 3) vs_particles.glsl
+// draws with the corners (-1, -1), (1, -1), (-1, 1), (1, 1).
+vec2 fanVertex(int polygon, int i) {
+    if (polygon < 0) {
+        int k = min(i, 3);
+        return vec2(k < 2 ? 1.0 : -1.0, k == 0 || k == 3 ? -1.0 : 1.0);
+    }
+    int index = polygon * kShapeVertices + i;
+    vec4 pair = uShapes[index / 2];
+    return (index % 2) == 0 ? pair.xy : pair.zw;
+}
 #endif
 
 const int kMaxBatches = 32;         // TiledPath::kMaxBatches
@@ -82,6 +102,9 @@ uniform float uAtlasTexels;         // the atlas's level-0 width (square)
 uniform float uPixelSlope;          // spheres: one pixel in ray slope (the larger of x and y)
 #ifdef FX_LIT
 uniform vec4 uBatchLight[kMaxBatches];  // anisotropy, absorption, normal strength, 1 lit / 0 unlit
+uniform int uTrimmed;          // 1: the raster path draws the billboards' trimmed polygons (ParticleShape::Trimmed)
+uniform int uShapeBuckets;     // LOD buckets per frame in uShapes
+uniform float uLodScale;       // texels per pixel = uLodScale * depth / size (vs_particles.glsl's)
 
 // The light the raster path's vertex shader hands its fragments (vSunLight, vPhase) at view
 // position p: (sun light rgb, phase).
@@ -169,17 +192,30 @@ void main() {
         vec2 turn = vec2(cos(lrff.y), sin(lrff.y));
         if (kind == 2u) {
             uLight[l] = lightAt(c, batchLight);  // the quad lies at the sphere's front: lit as a whole
-            uLight[l + 4u] = vec4(turn * (batchLight.z * 0.6 * radius), 0.0, 0.0);
+            uLight[l + 8u] = vec4(turn * (batchLight.z * 0.6 * radius), 0.0, 0.0);
         } else {
-            // vs_particles.glsl's corners: the centre plus the camera's right and up times the radius.
+            // vs_particles.glsl's fan: trimmed, its frame's polygon for the particle's LOD bucket
+            // (shapeVertex()), else the quad; each vertex at the centre plus the camera's right and
+            // up times the radius, turned back by the angle from texture space.
+            int polygon = -1, n = 4;
+            if (uTrimmed != 0) {
+                float texelsPerPixel = uLodScale * max(depth, uNear) / max(posSize.w, 1e-6);
+                int bucket = clamp(int(ceil(log2(max(texelsPerPixel, 1e-6)) + 0.5)), 0, uShapeBuckets - 1);
+                polygon = clamp(int(lrff.w + 0.5), 0, 3) * uShapeBuckets + bucket;
+                n = 1;
+                for (int k = 1; k < kShapeVertices; ++k) {
+                    if (fanVertex(polygon, k) != fanVertex(polygon, k - 1)) n = k + 1;
+                }
+            }
             vec3 right = normalize(vec3(uView[0][0], uView[1][0], uView[2][0]));
             vec3 up = normalize(vec3(uView[0][1], uView[1][1], uView[2][1]));
-            for (int k = 0; k < 4; ++k) {
-                vec2 corner = vec2((k & 1) != 0 ? 1.0 : -1.0, (k & 2) != 0 ? 1.0 : -1.0);
+            for (int k = 0; k < n; ++k) {
+                vec2 v = fanVertex(polygon, k);
+                vec2 corner = polygon < 0 ? v : turnBack(v, turn);
                 vec3 world = posSize.xyz + (corner.x * right + corner.y * up) * radius;
                 uLight[l + uint(k)] = lightAt((uView * vec4(world, 1.0)).xyz, batchLight);
             }
-            uLight[l + 4u] = vec4(turn, batchLight.z, 0.0);
+            uLight[l + 8u] = vec4(turn, batchLight.z, float(n + 16 * (polygon + 1)));
         }
     }
 #endif
@@ -275,7 +311,7 @@ void main() {
             // fs_particles_hard, _soft, _spherical's FX_LIT lines, with the vertex shader's light
             // read from the particle's light record.
             uint l = kLightStride * instance;
-            vec4 turn = uLight[l + 4u];
+            vec4 turn = uLight[l + 8u];
             vec4 sunPhase;
             vec3 m;
             if (kind == 2u) {
@@ -283,13 +319,26 @@ void main() {
                 vec2 bent = turnBack(atlasNormal(texel).xy, turn.xy);
                 m = vec3(slope.x * z0 - centre.x + bent.x, slope.y * z0 - centre.y + bent.y, -z0 - centre.z);
             } else {
-                // The pixel in the quad's (right, up) frame scaled to [0, 1]^2 (local turned back),
-                // and the light linear across the strip's triangles (0, 1, 2) and (1, 2, 3), as the
-                // rasteriser interpolates a billboard (one depth: linear in its plane).
-                vec2 w = clamp(0.5 * turnBack(local, turn.xy) + 0.5, 0.0, 1.0);
-                vec4 l0 = uLight[l], l1 = uLight[l + 1u], l2 = uLight[l + 2u], l3 = uLight[l + 3u];
-                sunPhase = w.x + w.y <= 1.0 ? l0 + w.x * (l1 - l0) + w.y * (l2 - l0)
-                                            : l3 + (1.0 - w.x) * (l2 - l3) + (1.0 - w.y) * (l1 - l3);
+                // The light linear across the raster fan's triangles (0, j + 1, j + 2), as the
+                // rasteriser interpolates a billboard (one depth: linear in its plane). The pixel's
+                // triangle lies between the two rays from vertex 0 it lies between (the fan is
+                // convex and counter-clockwise: it is left of every ray before); its weights are
+                // its barycentric ones (outside the polygon, where the atlas is empty, the nearest
+                // triangle's carried on).
+                int code = int(turn.w);
+                int n = code % 16, polygon = code / 16 - 1;
+                vec2 v0 = fanVertex(polygon, 0);
+                vec2 d = (polygon < 0 ? turnBack(local, turn.xy) : local) - v0;
+                int j = 0;
+                for (int i = 2; i <= n - 2; ++i) {
+                    vec2 e = fanVertex(polygon, i) - v0;
+                    if (e.x * d.y - e.y * d.x > 0.0) j = i - 1;
+                }
+                vec2 a = fanVertex(polygon, j + 1) - v0, b = fanVertex(polygon, j + 2) - v0;
+                float area = a.x * b.y - a.y * b.x;
+                vec2 w = abs(area) > 1e-12 ? vec2(d.x * b.y - d.y * b.x, a.x * d.y - a.y * d.x) / area : vec2(0.0);
+                vec4 l0 = uLight[l];
+                sunPhase = l0 + w.x * (uLight[l + uint(j + 1)] - l0) + w.y * (uLight[l + uint(j + 2)] - l0);
                 m = billboardNormalOf(texel, turn.xy * turn.z, turn.z);
             }
             vec4 shade = uBatchShade[entry >> kBatchShift];

@@ -51,6 +51,10 @@ BillboardReach ParticleDraw::billboardReach(const ParticleView& record, bool hal
     return r;
 }
 
+float ParticleDraw::lodScaleFor(const glm::mat4& proj, float height) const {
+    return float(atlas_.cellTexels()) * pixelSlopeOf(proj, height);
+}
+
 void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
     const DrawList& list = record.list;
     const ViewInfo& view = record.view;
@@ -87,7 +91,7 @@ void ParticleDraw::draw(const ParticleView& record, const DrawInputs& in) {
     glGetIntegerv(GL_VIEWPORT, viewport);
     const bool trimmed = record.settings.shape == ParticleShape::Trimmed && !shapeTable_.empty();
     const float pixelSlope = pixelSlopeOf(view.proj, float(std::max(viewport[3], 1)));
-    const float lodScale = float(atlas_.cellTexels()) * pixelSlope;
+    const float lodScale = lodScaleFor(view.proj, float(std::max(viewport[3], 1)));
     const ProgramCache& programs = *programs_;
     for (const DrawBatch& batch : list.batches) {
         // Lit when the host set a light and the reaction takes it. The cache reduces the key to a

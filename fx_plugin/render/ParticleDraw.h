@@ -84,6 +84,10 @@ public:
     /// The samplers draw() reads the atlas and the scene depth through (the tiled path's too).
     const ClampSampler& atlasSampler() const { return atlasSampler_; }
     const NearestSampler& depthSampler() const { return depthSampler_; }
+    /// The billboards' trimmed polygons as vs_particles.glsl's uShapes takes them (empty: no table,
+    /// quads are drawn), and its uLodScale for a target `height` pixels high under `proj`.
+    const std::vector<glm::vec4>& shapeTable() const { return shapeTable_; }
+    float lodScaleFor(const glm::mat4& proj, float height) const;
 
 private:
     /// Sets the FX_LIT uniforms of `p` for `batch` (the program is in use).

@@ -10,6 +10,7 @@
 
 #include "render/PrivateGl.h"
 
+#include "ComputeBindings.h"
 #include "GlStateGuard.h"
 #include "PassDeclaration.h"
 #include "SceneDepthSource.h"
@@ -18,71 +19,16 @@ namespace fx {
 namespace {
 
 constexpr int kEntryBinding = 1, kTileBinding = 2, kInstanceBinding = 0, kRecordBinding = 3, kLightBinding = 4,
-              kAccumImage = 0;
+              kShapeBinding = 5, kAccumImage = 0;
 constexpr size_t kRecordBytes = 6 * 16;  // cs_particles_tiled.glsl's six vec4 per particle
-constexpr size_t kLightBytes = 5 * 16;   // and its kLightStride, lit programs only
+constexpr size_t kLightBytes = 9 * 16;   // and its kLightStride, lit programs only
 // The composite reads the accumulation on the opacity map's unit: the lit setup is done with it.
 constexpr int kAtlasUnit = ParticleDraw::kAtlasUnit, kRampUnit = ParticleDraw::kRampUnit,
               kDepthUnit = ParticleDraw::kSceneDepthUnit, kOpacityUnit = ParticleDraw::kOpacityUnit, kAccumUnit = 3,
               kLitAtlasUnit = 4;
 static_assert(kLitAtlasUnit < GlStateGuard::kTextureUnits, "a unit the guard puts back");
-static_assert(kLightBinding < TileSort::kBindings, "a binding ComputeBindingsScope puts back");
-
-// The bindings the pass changes that GlStateGuard has no rows for: read on entry, put back on
-// exit (shader storage buffers 0-4 with their ranges, the generic binding, image unit 0).
-class ComputeBindingsScope {
-public:
-    ComputeBindingsScope() {
-        glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &generic_);
-        for (int i = 0; i < kBindings; ++i) {
-            glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, GLuint(i), &buffer_[i]);
-            GLint64 v = 0;
-            glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_START, GLuint(i), &v);
-            start_[i] = v;
-            glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_SIZE, GLuint(i), &v);
-            size_[i] = v;
-        }
-        glGetIntegeri_v(GL_IMAGE_BINDING_NAME, kAccumImage, &image_[0]);
-        glGetIntegeri_v(GL_IMAGE_BINDING_LEVEL, kAccumImage, &image_[1]);
-        glGetIntegeri_v(GL_IMAGE_BINDING_LAYERED, kAccumImage, &image_[2]);
-        glGetIntegeri_v(GL_IMAGE_BINDING_LAYER, kAccumImage, &image_[3]);
-        glGetIntegeri_v(GL_IMAGE_BINDING_ACCESS, kAccumImage, &image_[4]);
-        glGetIntegeri_v(GL_IMAGE_BINDING_FORMAT, kAccumImage, &image_[5]);
-    }
-    ~ComputeBindingsScope() {
-        glBindImageTexture(kAccumImage, GLuint(image_[0]), image_[1], GLboolean(image_[2]), image_[3], GLenum(image_[4]),
-                           GLenum(image_[5]));
-        for (int i = 0; i < kBindings; ++i) {
-            if (buffer_[i] != 0 && size_[i] > 0) {
-                glBindBufferRange(GL_SHADER_STORAGE_BUFFER, GLuint(i), GLuint(buffer_[i]), GLintptr(start_[i]),
-                                  GLsizeiptr(size_[i]));
-            } else {
-                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(i), GLuint(buffer_[i]));
-            }
-        }
-        glBindBuffer(GL_SHADER_STORAGE_BUFFER, GLuint(generic_));
-    }
-    ComputeBindingsScope(const ComputeBindingsScope&) = delete;
-    ComputeBindingsScope& operator=(const ComputeBindingsScope&) = delete;
-
-private:
-    GLint generic_ = 0;
-    static constexpr int kBindings = TileSort::kBindings;  // the sort's 0-4 hold the pass's 0-3
-    GLint buffer_[kBindings] = {};
-    GLint64 start_[kBindings] = {}, size_[kBindings] = {};
-    GLint image_[6] = {0, 0, 0, 0, GL_READ_ONLY, GL_R8};
-};
-
-// Fills `*buffer` (a grow-only shader storage buffer, TileSort::ensureBuffer) with `bytes`: mapped and
-// copied on the host's threads where that applies, else glBufferSubData. Leaves it bound to
-// GL_SHADER_STORAGE_BUFFER.
-void fillStorage(uint32_t* buffer, size_t* capacity, const void* data, size_t bytes, const Jobs& jobs) {
-    TileSort::ensureBuffer(buffer, capacity, bytes);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, *buffer);
-    if (bytes > 0 && !copyMappedInPieces(GL_SHADER_STORAGE_BUFFER, data, bytes, jobs)) {
-        glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(bytes), data);
-    }
-}
+static_assert(kShapeBinding < ComputeBindingsScope::kBindings, "a binding ComputeBindingsScope puts back");
+static_assert(kAccumImage == ComputeBindingsScope::kImage, "the image unit ComputeBindingsScope puts back");
 
 // CUBEFX_TILED_CPU_LISTS, read once: a whole number of entries (clamped to 2^32 - 1), else the
 // default and a problem to report.
@@ -137,7 +83,8 @@ TiledPath::TiledPath(ParticleDraw& draw, SizeMismatchReport sizeMismatch)
 TiledPath::~TiledPath() {
     // The renderer deletes its GL objects inside a guard with the context current (~ParticleRenderer).
     if (!privateGlContextCurrent()) return;
-    const uint32_t buffers[6] = {tileBuffer_, recordBuffer_, coverVbo_, instanceBuffer_, entryBuffer_, lightBuffer_};
+    const uint32_t buffers[7] = {tileBuffer_,  recordBuffer_, coverVbo_,   instanceBuffer_,
+                                 entryBuffer_, lightBuffer_,  shapeBuffer_};
     for (uint32_t b : buffers) {
         if (b) glDeleteBuffers(1, &b);
     }
@@ -216,6 +163,9 @@ void TiledPath::bind(const ProgramCache& programs) {
         u->viewToShadow = glGetUniformLocation(prog, "uViewToShadow");
         u->opacity = glGetUniformLocation(prog, "uOpacity");
         u->litAtlas = glGetUniformLocation(prog, "uLitAtlas");
+        u->trimmed = glGetUniformLocation(prog, "uTrimmed");
+        u->shapeBuckets = glGetUniformLocation(prog, "uShapeBuckets");
+        u->lodScale = glGetUniformLocation(prog, "uLodScale");
     }
     if (composite_) {
         compositeAccum_ = glGetUniformLocation(composite_, "uAccum");
@@ -362,6 +312,18 @@ void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Targe
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightBinding, lightBuffer_);
         bindTextureUnit(kOpacityUnit, opacity.valid() ? ctx.texture(opacity, 0).name : 0);
         bindTextureUnit(kLitAtlasUnit, atlas.litTexture(), draw_.atlasSampler().name());
+        // The trimmed polygons the raster path would draw the billboards with (their light is
+        // interpolated between the polygon's vertices), uploaded when the atlas's change.
+        const std::vector<glm::vec4>& shapes = draw_.shapeTable();
+        if (!shapeBuffer_ || shapes != shapesUploaded_) {
+            if (!shapeBuffer_) glGenBuffers(1, &shapeBuffer_);
+            glBindBuffer(GL_SHADER_STORAGE_BUFFER, shapeBuffer_);
+            const glm::vec4 none(0.0f);  // a store of one vec4 where there is no table (the quads read none)
+            glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(std::max<size_t>(shapes.size(), 1) * sizeof(glm::vec4)),
+                         shapes.empty() ? &none[0] : &shapes[0][0], GL_STATIC_DRAW);
+            shapesUploaded_ = shapes;
+        }
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShapeBinding, shapeBuffer_);
     }
     // The lit smoke's light: the scene's sun in view space, each batch's share (ParticleDraw's
     // setLightUniforms, per batch).
@@ -376,6 +338,10 @@ void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Targe
         glUniformMatrix4fv(u.viewToShadow, 1, GL_FALSE, &viewToShadow[0][0]);
         glUniform1i(u.opacity, kOpacityUnit);
         glUniform1i(u.litAtlas, kLitAtlasUnit);
+        const bool trimmed = v.settings.shape == ParticleShape::Trimmed && !draw_.shapeTable().empty();
+        glUniform1i(u.trimmed, trimmed ? 1 : 0);
+        glUniform1i(u.shapeBuckets, draw_.atlas().shapes().buckets());
+        glUniform1f(u.lodScale, draw_.lodScaleFor(view.proj, float(view.height)));
         glm::vec4 setupLight[kMaxBatches], shadeLight[kMaxBatches];
         const int batchCount = int(v.list.batches.size());
         for (int b = 0; b < batchCount; ++b) {

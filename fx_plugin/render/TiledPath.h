@@ -118,7 +118,7 @@ private:
         FogUniforms fog;
         // FX_LIT only.
         int batchLight = -1, batchShade = -1, sunView = -1, sunColor = -1, shadowed = -1, viewToShadow = -1,
-            opacity = -1, litAtlas = -1;
+            opacity = -1, litAtlas = -1, trimmed = -1, shapeBuckets = -1, lodScale = -1;
     };
     ShadeUniforms setupUniforms_, shadeUniforms_, setupLitUniforms_, shadeLitUniforms_;
     int compositeAccum_ = -1, compositeOrigin_ = -1, compositeViewSize_ = -1;
@@ -133,6 +133,8 @@ private:
     size_t recordCapacity_ = 0;
     uint32_t lightBuffer_ = 0;                   ///< lit particles' light (the lit setup's)
     size_t lightCapacity_ = 0;
+    uint32_t shapeBuffer_ = 0;                   ///< the billboards' trimmed polygons (lit setup and shade)
+    std::vector<glm::vec4> shapesUploaded_;      ///< what shapeBuffer_ holds
     uint32_t accum_ = 0;                         ///< RGBA16F, at least the view's size
     int accumWidth_ = 0, accumHeight_ = 0;
     uint32_t coverVao_ = 0, coverVbo_ = 0;       ///< the covered tiles' runs

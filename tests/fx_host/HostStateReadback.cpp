@@ -78,10 +78,10 @@ HostStateReadback readHostState() {
     glGetIntegeri_v(GL_SAMPLE_MASK_VALUE, 0, &mask);
     r["sample mask value 0"] = {double(mask)};
     if (phg::glVersion() >= 43) {
-        // The tiled path's bindings: shader storage buffers 0-4 (with their ranges) and the generic
+        // The tiled path's bindings: shader storage buffers 0-5 (with their ranges) and the generic
         // one, image unit 0.
         ints("shader storage buffer", phg::kShaderStorageBufferBinding, 1);
-        for (GLuint i = 0; i < 5; ++i) {
+        for (GLuint i = 0; i < 6; ++i) {
             GLint b = 0;
             GLint64 start = 0, size = 0;
             glGetIntegeri_v(phg::kShaderStorageBufferBinding, i, &b);

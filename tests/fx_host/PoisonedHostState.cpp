@@ -59,12 +59,13 @@ std::vector<HostPoison> buildPoisons() {
     }
     add("depth range", [] { glDepthRange(0.25, 0.75); });
     if (phg::glVersion() >= 43) {
-        // What the tiled path binds: ranges of a host buffer on storage bindings 1 and 4 (its
-        // sort's last), the generic binding, a host texture on image unit 0.
+        // What the tiled path binds: ranges of a host buffer on storage bindings 1, 4 (its
+        // sort's last) and 5 (lit smoke's shapes), the generic binding, a host texture on image unit 0.
         add("shader storage buffers", [] {
             glBindBufferRange(phg::kShaderStorageBuffer, 1, ownBuffer(), 0, 16);
             glBindBufferBase(phg::kShaderStorageBuffer, 3, ownBuffer());
             glBindBufferRange(phg::kShaderStorageBuffer, 4, ownBuffer(), 0, 8);
+            glBindBufferRange(phg::kShaderStorageBuffer, 5, ownBuffer(), 0, 16);
             glBindBuffer(phg::kShaderStorageBuffer, ownBuffer());
         });
         add("image unit 0", [] {

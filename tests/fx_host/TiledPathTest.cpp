@@ -210,11 +210,11 @@ TEST_F(TiledPathTest, BlendModesAndFogMatchRasterisedOnes) {
 // self-shadowing and without, with linear fog, and reactions that do not take the light (additive,
 // lighting off) in a lit view. The raster path interpolates the light its vertex shader works out (the sun through
 // the opacity map, the phase) over its triangles: a quad's two, or a trimmed polygon's fan, whose
-// vertices lie elsewhere. The tiled path follows the quad's two triangles, so:
-//  - it is the raster path's quads up to rounding (kTolerance), spheres kSphericalTolerance;
-//  - it is no farther from the raster path's trimmed polygons than its quads are, plus rounding
-//    (measured on llvmpipe with absorption 3: quads against trimmed 21-25/255);
-//  - the shape does not change it (the tiled path draws no polygons).
+// vertices lie elsewhere (measured on llvmpipe with absorption 3: quads against trimmed 21-25/255).
+// The tiled path interpolates over the same triangles as the raster path of the same shape, so each
+// shape's tiled frame is that shape's raster frame up to rounding: kTolerance, and spheres (lit at
+// their centre whatever the shape) kSphericalTolerance; trimmed billboards one more (measured: one
+// or two channel values of 147,456 at 5/255, the rest within 3/255, PSNR 58.6-59.0 dB).
 TEST_F(TiledPathTest, LitSmokeMatchesRasterisedLitSmoke) {
     direct.set(ringOfPuffs(0.8f, 0.9f));
     direct.desc.render.softness = 0.5f;
@@ -272,10 +272,10 @@ TEST_F(TiledPathTest, LitSmokeMatchesRasterisedLitSmoke) {
         direct.settings.light.on = false;
         const Image unlit = draw(direct, graph, scene, view, true);
         direct.settings.light.on = true;
-        const int quads = maxAbsDiff(rasterQuads, tiled), trimmed = maxAbsDiff(rasterTrimmed, tiled),
+        const int quads = maxAbsDiff(rasterQuads, tiled), trimmed = maxAbsDiff(rasterTrimmed, tiledTrimmed),
                   shapes = maxAbsDiff(rasterQuads, rasterTrimmed);
-        std::printf("[ measured ] technique %d absorption %.0f blend %d%s%s: tiled against raster quads %d/255, "
-                    "against raster trimmed %d/255 (raster quads against trimmed %d/255); lit against unlit %d/255\n",
+        std::printf("[ measured ] technique %d absorption %.0f blend %d%s%s: tiled against raster, quads %d/255, "
+                    "trimmed %d/255 (raster quads against trimmed %d/255); lit against unlit %d/255\n",
                     int(c.technique), double(c.absorption), int(c.blend), c.takesLight ? "" : " (lighting off)",
                     c.fog ? " fog" : "", quads, trimmed, shapes, maxAbsDiff(tiled, unlit));
         if (c.takesLight && c.blend != fx::BlendMode::Additive) {
@@ -285,11 +285,10 @@ TEST_F(TiledPathTest, LitSmokeMatchesRasterisedLitSmoke) {
         }
         const int tolerance = c.technique == fx::Technique::Spherical ? kSphericalTolerance : kTolerance;
         EXPECT_LE(quads, tolerance);
-        EXPECT_LE(trimmed, shapes + tolerance);
-        EXPECT_EQ(maxAbsDiff(tiled, tiledTrimmed), 0);
+        EXPECT_LE(trimmed, c.technique == fx::Technique::Spherical ? tolerance : tolerance + 1);
         spread = std::max(spread, shapes);
     }
-    EXPECT_GT(spread, 10) << "the shadowed cases should show the raster shapes' own difference";
+    EXPECT_GT(spread, 10) << "the shadowed cases should tell the shapes apart (else the trimmed check shows nothing)";
     direct.settings.light = fx::LightState{};
 }
 
