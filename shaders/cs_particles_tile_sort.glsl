@@ -5,8 +5,8 @@
 //   FX_TILE_EMIT: one invocation per pair writes it: (tile, entry) of its particle, each particle's
 //     tiles row by row from its first pair on: the pairs in particle order, front to back.
 //   FX_TILE_COUNT, FX_TILE_SCAN, FX_TILE_SCATTER: one pass of a stable radix sort of the pairs by
-//     tile, kDigitBits bits of the tile at a time from the lowest. A block of kBlockPairs pairs
-//     counts its digits (COUNT); one group adds the counts up digit by digit, block by block
+//     tile, kDigitBits bits of the tile at a time from the lowest. A block of uRows rows of kGroup
+//     pairs (TileSort::rowsFor: few rows, so many blocks, where the pairs are few) counts its digits (COUNT); one group adds the counts up digit by digit, block by block
 //     (SCAN: each block's first place for each digit); the block writes each pair to its digit's
 //     place plus the pairs of that digit before it in the block (SCATTER). Stable, so after the
 //     last pass each tile's pairs are in particle order: front to back, the CPU's lists bit for bit.
@@ -15,8 +15,7 @@
 const uint kDigitBits = 4u;
 const uint kDigits = 16u;
 const uint kGroup = 256u;
-const uint kRows = 16u;                   // a block: kRows rows of kGroup pairs
-const uint kBlockPairs = kGroup * kRows;  // TileSort::kBlockPairs
+uniform int uRows;  // a block: uRows rows of kGroup pairs (1 .. TileSort::kMaxRows; COUNT, SCATTER)
 
 uniform int uGroupsX;  // groups per row of the dispatch (a row holds at most 65,535)
 
@@ -68,8 +67,9 @@ void main() {
     uint lane = gl_LocalInvocationID.x;
     if (lane < kDigits) sCounts[lane] = 0u;
     barrier();
-    for (uint row = 0u; row < kRows; ++row) {
-        uint i = block * kBlockPairs + row * kGroup + lane;
+    uint rows = uint(uRows);
+    for (uint row = 0u; row < rows; ++row) {
+        uint i = (block * rows + row) * kGroup + lane;
         if (i < uint(uPairCount)) atomicAdd(sCounts[(uKeysIn[i] >> uint(uShift)) & (kDigits - 1u)], 1u);
     }
     barrier();
@@ -126,10 +126,11 @@ void main() {
     uint lane = gl_LocalInvocationID.x;
     if (lane < kDigits) sPlace[lane] = uHistogram[lane * uint(uBlocks) + block];
     uint word = lane >> 5u, bit = 1u << (lane & 31u);
-    for (uint row = 0u; row < kRows; ++row) {
+    uint rows = uint(uRows);
+    for (uint row = 0u; row < rows; ++row) {
         if (lane < kDigits * kGroup / 32u) sMask[lane] = 0u;
         barrier();
-        uint i = block * kBlockPairs + row * kGroup + lane;
+        uint i = (block * rows + row) * kGroup + lane;
         bool live = i < uint(uPairCount);
         uint key = 0u, entry = 0u, digit = 0u;
         if (live) {

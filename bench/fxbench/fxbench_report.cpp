@@ -147,7 +147,8 @@ std::string markdownReport(const Report& r) {
                  "Per particle pass, fragments shaded (GL_FRAGMENT_SHADER_INVOCATIONS_ARB: discarded ones too; "
                  "a compute pass adds its invocations: the tiled path's one per pixel of its tiles and one per "
                  "particle, and where the GPU writes its lists (over TiledPath::kCpuListEntries) one per list entry "
-                 "and per sort pass 512 per 4,096 list entries and 1,024; median over error frames); "
+                 "and per sort pass 512 per block (TileSort::rowsFor: 256 to 4,096 entries) and 1,024; median over error "
+                 "frames); "
                  "'-' = not run",
                  "%.0f", &o);
 

@@ -1,6 +1,8 @@
 #include "TileSort.h"
 
 #include <algorithm>
+#include <atomic>
+#include <cstdlib>
 
 #include "InstanceStream.h"
 #include "render/PrivateGl.h"
@@ -9,7 +11,16 @@ namespace fx {
 namespace {
 
 constexpr int kParticleBinding = 0, kKeysIn = 1, kEntriesIn = 2, kKeysOut = 3, kEntriesOut = 0, kHistogram = 4;
-constexpr uint32_t kGroup = 256;
+constexpr uint32_t kGroup = TileSort::kGroup;
+
+// CUBEFX_TILE_SORT_ROWS, read once: 1 .. kMaxRows fixes the rows per block (for measuring), else 0.
+int rowsFromEnvironment() {
+    const char* v = std::getenv("CUBEFX_TILE_SORT_ROWS");
+    if (!v || !*v) return 0;
+    const int rows = std::atoi(v);
+    return rows >= 1 && rows <= TileSort::kMaxRows ? rows : 0;
+}
+std::atomic<int> gRows{rowsFromEnvironment()};
 
 // `groups` work groups in rows of at most 65,535 (the least GL_MAX_COMPUTE_WORK_GROUP_COUNT),
 // the row length in the program's uGroupsX.
@@ -49,6 +60,7 @@ void TileSort::bind(const ProgramCache& programs) {
         u.shift = glGetUniformLocation(progs[p], "uShift");
         u.blocks = glGetUniformLocation(progs[p], "uBlocks");
         u.length = glGetUniformLocation(progs[p], "uLength");
+        u.rows = glGetUniformLocation(progs[p], "uRows");
     }
     GLint64 bytes = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &bytes);
@@ -60,6 +72,15 @@ int TileSort::passes(int tileCount) {
     while (bits < 31 && (int64_t(1) << bits) < int64_t(tileCount)) ++bits;
     return (bits + kDigitBits - 1) / kDigitBits;
 }
+
+int TileSort::rowsFor(uint32_t pairs) {
+    const int fixed = gRows.load(std::memory_order_relaxed);
+    if (fixed > 0) return fixed;
+    const uint64_t perBlock = (uint64_t(pairs) + kTargetBlocks - 1) / kTargetBlocks;
+    return int(std::min<uint64_t>(std::max<uint64_t>((perBlock + kGroup - 1) / kGroup, 1), kMaxRows));
+}
+
+void TileSort::setRows(int rows) { gRows.store(rows >= 1 && rows <= kMaxRows ? rows : 0, std::memory_order_relaxed); }
 
 bool TileSort::fits(const TileBins& bins) const {
     const int64_t pairBytes = int64_t(bins.entryCount) * 4;
@@ -110,7 +131,9 @@ uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs) {
     if (passCount == 0) return entries_[0];
     ensureBuffer(&keys_[1], &keysCapacity_[1], size_t(pairs) * 4);
     ensureBuffer(&entries_[1], &entriesCapacity_[1], size_t(pairs) * 4);
-    const uint32_t blocks = (pairs + kBlockPairs - 1) / kBlockPairs;
+    const int rows = rowsFor(pairs);
+    const uint32_t blockPairs = kGroup * uint32_t(rows);
+    const uint32_t blocks = (pairs + blockPairs - 1) / blockPairs;
     const uint32_t histogramLength = blocks * (1u << kDigitBits);
     ensureBuffer(&histogram_, &histogramCapacity_, size_t(histogramLength) * 4);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kHistogram, histogram_);
@@ -120,6 +143,7 @@ uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs) {
         glUniform1i(u.pairCount, int(pairs));
         glUniform1i(u.shift, shift);
         glUniform1i(u.blocks, int(blocks));
+        glUniform1i(u.rows, rows);
         dispatch(blocks, u.groupsX);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     };

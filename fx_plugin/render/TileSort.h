@@ -25,7 +25,8 @@ namespace fx {
 class TileSort {
 public:
     static constexpr int kBindings = 5;            ///< shader storage buffers 0 .. 4
-    static constexpr uint32_t kBlockPairs = 4096;  ///< cs_particles_tile_sort.glsl's pairs per block
+    static constexpr int kGroup = 256;             ///< cs_particles_tile_sort.glsl's pairs per row of a block
+    static constexpr int kMaxRows = 16;            ///< rows of a block at most
     static constexpr int kDigitBits = 4;           ///< cs_particles_tile_sort.glsl's bits of the tile a pass
 
     TileSort() = default;
@@ -48,6 +49,14 @@ public:
 
     /// The radix passes a view of `tileCount` tiles takes.
     static int passes(int tileCount);
+    /// The rows of kGroup pairs a block of the sort takes for `pairs` pairs: one until there are
+    /// about kTargetBlocks blocks, then more, up to kMaxRows. A block is one work group that counts
+    /// and scatters its rows one after another, so few blocks leave a large GPU idle (an H200 holds
+    /// about 1,000 groups of 256 at once) while many lengthen the one-group scan of their
+    /// histogram. setRows (or CUBEFX_TILE_SORT_ROWS, read once) fixes the rows instead, 0 undoes it.
+    static int rowsFor(uint32_t pairs);
+    static void setRows(int rows);
+    static constexpr uint32_t kTargetBlocks = 1024;
     /// Makes `*buffer` if there is none and grows its store to hold `bytes` (to the next power of
     /// two, GL_DYNAMIC_COPY; a growing count reallocates a few times, not each frame); a store
     /// that grows is left bound to GL_SHADER_STORAGE_BUFFER.
@@ -56,7 +65,8 @@ public:
 private:
     uint32_t emit_ = 0, count_ = 0, scan_ = 0, scatter_ = 0;
     struct Uniforms {
-        int groupsX = -1, particleCount = -1, tilesX = -1, pairCount = -1, shift = -1, blocks = -1, length = -1;
+        int groupsX = -1, particleCount = -1, tilesX = -1, pairCount = -1, shift = -1, blocks = -1, length = -1,
+            rows = -1;
     };
     Uniforms emitU_, countU_, scanU_, scatterU_;
     uint32_t particles_ = 0, keys_[2] = {}, entries_[2] = {}, histogram_ = 0;

@@ -3,7 +3,8 @@
 // Fill::Entries' lists bit for bit:
 //  - on views of 1 tile (no radix pass) up to 1080p (8,160 tiles, four passes), with particles
 //    off the view, clipped, across tiles, and a sphere across the near plane in every tile;
-//  - with more pairs than one block (4,096) and a histogram longer than the scan group (1,024
+//  - with the rows per block TileSort::rowsFor picks and with 1, 3 and 16 (the most) fixed, more
+//    pairs than one block and a histogram longer than the scan group (1,024
 //    words: over 65,536 pairs), and a second run on the same buffers with fewer pairs;
 //  - the words themselves, without GL: pairs written row by row in particle order and sorted
 //    stably by tile are the lists (what the shaders do, done on the CPU).
@@ -108,13 +109,15 @@ TEST_F(TileSortTest, SortedEntriesAreTheCpuListsBitForBit) {
     fx::TileSort sort;
     sort.bind(programs);
     ASSERT_TRUE(sort.ok());
-    int sortedAtLeastOncePastOneBlock = 0;
-    for (int round = 0; round < 2; ++round) {
-        // The second round on the same (grown) buffers, the cases backwards: fewer pairs than the
+    int sortedAtLeastOncePastOneBlock = 0, longestHistogram = 0;
+    for (int round = 0; round < 8; ++round) {
+        const int rows = round / 2 == 0 ? 0 : round / 2 == 1 ? 1 : round / 2 == 2 ? 3 : fx::TileSort::kMaxRows;
+        fx::TileSort::setRows(rows);
+        // Every second round on the same (grown) buffers, the cases backwards: fewer pairs than the
         // buffers hold must not read the last run's.
         for (int i = 0; i < int(std::size(kCases)); ++i) {
-            const Case& c = kCases[round == 0 ? i : int(std::size(kCases)) - 1 - i];
-            SCOPED_TRACE(testing::Message() << c.width << "x" << c.height << ", round " << round);
+            const Case& c = kCases[round % 2 == 0 ? i : int(std::size(kCases)) - 1 - i];
+            SCOPED_TRACE(testing::Message() << c.width << "x" << c.height << ", round " << round << ", rows " << rows);
             const Scene s = sceneOf(c.particles, c.largest, 7 + unsigned(round));
             const fx::ViewInfo view = viewOf(c.width, c.height);
             fx::TileBins lists, words;
@@ -132,10 +135,22 @@ TEST_F(TileSortTest, SortedEntriesAreTheCpuListsBitForBit) {
             size_t firstDifference = 0;
             while (firstDifference < got.size() && got[firstDifference] == lists.entries[firstDifference]) ++firstDifference;
             EXPECT_EQ(firstDifference, got.size()) << "entries differ from " << firstDifference << " of " << got.size();
-            if (got.size() > fx::TileSort::kBlockPairs) ++sortedAtLeastOncePastOneBlock;
+            const size_t blockPairs = size_t(fx::TileSort::kGroup) * size_t(fx::TileSort::rowsFor(words.entryCount));
+            if (got.size() > blockPairs) ++sortedAtLeastOncePastOneBlock;
+            longestHistogram = std::max(longestHistogram, int((got.size() + blockPairs - 1) / blockPairs) * 16);
         }
     }
-    EXPECT_GE(sortedAtLeastOncePastOneBlock, 4) << "the cases sort more than one block";
+    fx::TileSort::setRows(0);
+    EXPECT_GE(sortedAtLeastOncePastOneBlock, 16) << "the cases sort more than one block";
+    EXPECT_GT(longestHistogram, 1024) << "a histogram longer than the scan group";
+    // The rows: one up to kTargetBlocks blocks of one row, then as many as spread the pairs over
+    // about that many blocks, at most kMaxRows.
+    EXPECT_EQ(fx::TileSort::rowsFor(0), 1);
+    EXPECT_EQ(fx::TileSort::rowsFor(256 * 1024), 1);
+    EXPECT_EQ(fx::TileSort::rowsFor(256 * 1024 + 1), 2);
+    EXPECT_EQ(fx::TileSort::rowsFor(520000), 2);
+    EXPECT_EQ(fx::TileSort::rowsFor(6000000), 16);
+    EXPECT_EQ(fx::TileSort::rowsFor(UINT32_MAX), fx::TileSort::kMaxRows);
     EXPECT_EQ(fx::TileSort::passes(1), 0);
     EXPECT_EQ(fx::TileSort::passes(12), 1);
     EXPECT_EQ(fx::TileSort::passes(8160), 4);
