@@ -1,16 +1,15 @@
 #!/usr/bin/env bash
-# The tiled path's GPU-written lists and lit smoke, before and after a change to their shaders, in
-# one device call (about two minutes of device time on an H200, start included). Three variants of
-# the same binary, each its own fxbench process (pass times are GPU timer queries, so the variants
-# need not share a run):
-#   old   the shaders of an earlier commit (CUBE_SHADER_DIR=.gpu/old/shaders) with the sort's blocks
-#         of 16 rows that they were written for (CUBEFX_TILE_SORT_ROWS=16)
-#   rows16  this tree's shaders, blocks of 16 rows
-#   new   this tree's shaders, TileSort::rowsFor's rows
-# in the scenes whose lists are long (fill at 1080p, standard at 4K) and the standard one at 1080p,
-# with the lists always written on the GPU (CUBEFX_TILED_CPU_LISTS=0); then the standard scene's
-# default (CPU-written lists below TiledPath::kCpuListEntries), a particle sweep, and lit smoke's
-# image error against the raster path in the fill and standard scenes (PNGs of the fill one).
+# The tiled path before and after a change to its shaders, and its list limit, in one device call
+# (about a minute and a half of device time on an H200, start included). Each run is its own
+# fxbench process (pass times are GPU timer queries, so the variants need not share a run):
+#   old   the shaders of an earlier commit (CUBE_SHADER_DIR=.gpu/old/shaders)
+#   new   this tree's shaders
+# in the fill scene at 1080p, the standard one at 4K and at 1080p, with the lists always written on
+# the GPU (CUBEFX_TILED_CPU_LISTS=0); then the limit below which the CPU writes the lists
+# (TiledPath::kCpuListEntries) at 0, 16,384 and 131,072 entries in the standard and fill scenes and
+# a sweep of small particle counts; lit smoke's image error against the raster path in the fill and
+# standard scenes (PNGs of the fill one). Set OLD_ROWS=16 where the old shaders predate
+# TileSort::rowsFor (their blocks are 16 rows).
 # Here, after a build:
 #   ../shared/gpu/pack.sh && mkdir -p .gpu/old && git archive <commit> shaders | tar x -C .gpu/old
 # The device call, with .gpu carried along:
@@ -38,22 +37,24 @@ run() {
 }
 variant() {
     case $1 in
-        old) echo "CUBE_SHADER_DIR=$old CUBEFX_TILE_SORT_ROWS=16" ;;
-        rows16) echo "CUBEFX_TILE_SORT_ROWS=16" ;;
+        old) echo "CUBE_SHADER_DIR=$old CUBEFX_TILE_SORT_ROWS=${OLD_ROWS:-0}" ;;
         *) echo "CUBEFX_TILE_SORT_ROWS=0" ;;
     esac
 }
 for sc in "fill 1920x1080" "standard 3840x2160" "standard 1920x1080"; do
     set -- $sc
-    for v in old rows16 new; do
+    for v in old new; do
         run "${1}_${2}_gpu_$v" env CUBEFX_TILED_CPU_LISTS=0 $(variant $v) $F --scenario "$1" --size "$2" \
             --frames 10 --error-frames 0 --modes $modes
     done
 done
-run standard_1920x1080_default $F --scenario standard --size 1920x1080 --frames 10 --error-frames 0 --modes $modes
-for v in old new; do
-    run "sweep_$v" env $(variant $v) $F --size 1920x1080 --sweep particles=16000,256000 --frames 6 --error-frames 0 \
-        --modes hard,soft+tiled,spherical+tiled
+for lim in 0 16384 131072; do
+    for sc in standard fill; do
+        run "limit_${sc}_$lim" env CUBEFX_TILED_CPU_LISTS=$lim $F --scenario $sc --size 1920x1080 --frames 10 \
+            --error-frames 0 --modes hard,soft+tiled,spherical+tiled
+    done
+    run "limit_sweep_$lim" env CUBEFX_TILED_CPU_LISTS=$lim $F --size 1920x1080 --sweep particles=1000,4000,16000 \
+        --frames 8 --error-frames 0 --modes hard,soft+tiled,spherical+tiled
 done
 lit=soft-lit,soft-lit+tiled,spherical-lit,spherical-lit+tiled
 run lit_fill $F --scenario fill --size 1920x1080 --frames 4 --error-frames 1 --modes $lit --images "$R/img-fill"

@@ -327,17 +327,36 @@ void main() {
                 // triangle's carried on).
                 int code = int(turn.w);
                 int n = code % 16, polygon = code / 16 - 1;
-                vec2 v0 = fanVertex(polygon, 0);
-                vec2 d = (polygon < 0 ? turnBack(local, turn.xy) : local) - v0;
-                int j = 0;
-                for (int i = 2; i <= n - 2; ++i) {
-                    vec2 e = fanVertex(polygon, i) - v0;
-                    if (e.x * d.y - e.y * d.x > 0.0) j = i - 1;
+                vec4 l0 = uLight[l];
+                // The fan's eight vertices at once (a polygon is four vec4 of uShapes): loads that
+                // wait on nothing, and a search unrolled over registers (one load after another
+                // per ray cost the fill scene's lit pass 0.35 ms on an H200).
+                vec4 s0, s1, s2, s3;
+                if (polygon < 0) {
+                    s0 = vec4(1.0, -1.0, 1.0, 1.0);
+                    s1 = vec4(-1.0, 1.0, -1.0, -1.0);
+                    s2 = s3 = vec4(-1.0);
+                } else {
+                    int at = polygon * (kShapeVertices / 2);
+                    s0 = uShapes[at];
+                    s1 = uShapes[at + 1];
+                    s2 = uShapes[at + 2];
+                    s3 = uShapes[at + 3];
                 }
-                vec2 a = fanVertex(polygon, j + 1) - v0, b = fanVertex(polygon, j + 2) - v0;
+                vec2 v0 = s0.xy;
+                vec2 e[7] = vec2[7](s0.zw - v0, s1.xy - v0, s1.zw - v0, s2.xy - v0, s2.zw - v0, s3.xy - v0, s3.zw - v0);
+                vec2 d = (polygon < 0 ? turnBack(local, turn.xy) : local) - v0;
+                int j = 0;  // triangle j: vertices 0, j + 1, j + 2; e[k] is vertex k + 1's ray
+                vec2 a = e[0], b = e[1];
+                for (int k = 1; k < 6; ++k) {
+                    if (k <= n - 3 && e[k].x * d.y - e[k].y * d.x > 0.0) {
+                        j = k;
+                        a = e[k];
+                        b = e[k + 1];
+                    }
+                }
                 float area = a.x * b.y - a.y * b.x;
                 vec2 w = abs(area) > 1e-12 ? vec2(d.x * b.y - d.y * b.x, a.x * d.y - a.y * d.x) / area : vec2(0.0);
-                vec4 l0 = uLight[l];
                 sunPhase = l0 + w.x * (uLight[l + uint(j + 1)] - l0) + w.y * (uLight[l + uint(j + 2)] - l0);
                 m = billboardNormalOf(texel, turn.xy * turn.z, turn.z);
             }
