@@ -33,8 +33,8 @@ timeout 150 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 --sweep 
     --frames 6 --error-frames 0 --modes hard,soft,soft+tiled,spherical,spherical+tiled \
     --json "$out/parts/tiled_sweep.json" > "$out/parts/tiled_sweep.txt" 2>&1
 echo "tiled sweep rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
-# Where the tiled path's lists stop being the CPU's (TiledPath::kCpuListEntries, 131,072 by
-# default): the GPU sort always (0), the default, and the CPU's up to 4 M entries, in the scenes
+# Where the tiled path's lists stop being the CPU's (TiledPath::kCpuListEntries, 0 by default since
+# session 28): the GPU sort always (0), the old default, and the CPU's up to 4 M entries, in the scenes
 # whose lists are long (fill at 1080p: about 520,000 entries; standard at 4K: about 277,000).
 s=$(date +%s)
 for lim in 0 131072 4194304; do

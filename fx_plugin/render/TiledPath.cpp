@@ -32,7 +32,7 @@ static_assert(kAccumImage == ComputeBindingsScope::kImage, "the image unit Compu
 
 // CUBEFX_TILED_CPU_LISTS, read once: a whole number of entries (clamped to 2^32 - 1), else the
 // default and a problem to report.
-static_assert(TiledPath::kCpuListEntries == 131072, "the message below names the default");
+static_assert(TiledPath::kCpuListEntries == 0, "the message below names the default");
 const char* gCpuListLimitProblem = nullptr;
 uint32_t cpuListLimitFromEnvironment() {
     const char* v = std::getenv("CUBEFX_TILED_CPU_LISTS");
@@ -41,7 +41,7 @@ uint32_t cpuListLimitFromEnvironment() {
     for (const char* c = v; *c; ++c) {
         if (*c < '0' || *c > '9') {
             gCpuListLimitProblem = "fx: CUBEFX_TILED_CPU_LISTS is not a whole number of list entries; the tiled "
-                                   "path keeps its default (131072)";
+                                   "path keeps its default (0: the GPU writes every view's lists)";
             return TiledPath::kCpuListEntries;
         }
         n = std::min<uint64_t>(n * 10 + uint64_t(*c - '0'), UINT32_MAX);

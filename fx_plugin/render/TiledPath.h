@@ -8,8 +8,8 @@
 // Declaring the pass bounds the view's particles and counts each tile's entries on the CPU
 // (binParticles, TileBins.h: each particle into the tiles its bound touches, front to back). The
 // pass writes each tile's list on the GPU (TileSort.h: a pair per particle and tile, sorted by
-// tile, stably); a view of at most kCpuListEntries entries gets its lists written on the CPU
-// instead (writeEntries), where the sort's fixed passes would cost more. It then sets each particle up once (a compute dispatch, one invocation per particle: what the vertex shader works
+// tile, stably); a view of at most kCpuListEntries entries (none by default) gets its lists written
+// on the CPU instead (writeEntries). It then sets each particle up once (a compute dispatch, one invocation per particle: what the vertex shader works
 // out), then dispatches one work group per tile that holds particles (one invocation per pixel:
 // one scene-depth fetch per pixel, the particles' records read in order, the blend in registers,
 // stopped once the pixel is opaque) into the plugin's own RGBA16F image, and draws those tiles
@@ -51,12 +51,13 @@ public:
     static constexpr const char* kPass = "particles_tiled";
     static constexpr int kMaxBatches = 32;  ///< cs_particles_tiled.glsl's kMaxBatches
     static constexpr int kTileSize = ScreenTiles::kTileSize;  ///< the compute shader's group size
-    /// Up to this many list entries a view's lists are written on the CPU and uploaded (at most
-    /// 512 KB), above it sorted on the GPU. The H200 (docs/results.md, session 26) put the GPU
-    /// sort at about 0.18 ms plus 2 ns an entry (0.34 ms for the standard scene's 73,615 entries
-    /// at 1080p, 1.30 ms for the fill scene's 519,516); the CPU writes an entry in 4-6 ns on one
-    /// thread (bench_draw), in bands of 8,192 entries on the host's threads (writeEntries).
-    static constexpr uint32_t kCpuListEntries = 131072;
+    /// Up to this many list entries a view's lists are written on the CPU and uploaded, above it
+    /// on the GPU (TileSort). 0 since the emit wrote one pair per invocation: on the H200
+    /// (docs/results.md, session 28) the GPU's lists then cost the pass 0.06-0.07 ms where the CPU's
+    /// cost the frame 0.14-0.36 ms more outside the passes (1,000 and 4,000 particles, the standard
+    /// scene), and were never the cheaper frame at any size measured (1,000 to 520,000 entries).
+    /// Until then 131,072: the GPU's lists took 0.18 ms plus 2 ns an entry (session 26).
+    static constexpr uint32_t kCpuListEntries = 0;
     /// The limit in use, the process's: kCpuListEntries, or the environment's
     /// CUBEFX_TILED_CPU_LISTS (a whole number of entries; 0: always the GPU sort) where it is set,
     /// so a GPU session can find where the CPU's lists stop paying without a rebuild; tests set
