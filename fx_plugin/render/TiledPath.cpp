@@ -30,25 +30,27 @@ static_assert(kLitAtlasUnit < GlStateGuard::kTextureUnits, "a unit the guard put
 static_assert(kShapeBinding < ComputeBindingsScope::kBindings, "a binding ComputeBindingsScope puts back");
 static_assert(kAccumImage == ComputeBindingsScope::kImage, "the image unit ComputeBindingsScope puts back");
 
-// CUBEFX_TILED_CPU_LISTS, read once: a whole number of entries (clamped to 2^32 - 1), else the
-// default and a problem to report.
-static_assert(TiledPath::kCpuListEntries == 0, "the message below names the default");
+// CUBEFX_TILED_CPU_LISTS, read once: a whole number of entries (clamped to 2^32 - 1), else -1 (the
+// defaults), with a problem to report where it was set but not a number.
 const char* gCpuListLimitProblem = nullptr;
-uint32_t cpuListLimitFromEnvironment() {
+int64_t cpuListLimitFromEnvironment() {
     const char* v = std::getenv("CUBEFX_TILED_CPU_LISTS");
-    if (!v || !*v) return TiledPath::kCpuListEntries;
+    if (!v || !*v) return -1;
     uint64_t n = 0;
     for (const char* c = v; *c; ++c) {
         if (*c < '0' || *c > '9') {
             gCpuListLimitProblem = "fx: CUBEFX_TILED_CPU_LISTS is not a whole number of list entries; the tiled "
-                                   "path keeps its default (0: the GPU writes every view's lists)";
-            return TiledPath::kCpuListEntries;
+                                   "path keeps its defaults (the GPU writes the lists, on a software rasterizer "
+                                   "the CPU up to 131072 entries)";
+            return -1;
         }
         n = std::min<uint64_t>(n * 10 + uint64_t(*c - '0'), UINT32_MAX);
     }
-    return uint32_t(n);
+    return int64_t(n);
 }
-std::atomic<uint32_t> gCpuListLimit{cpuListLimitFromEnvironment()};
+static_assert(TiledPath::kSoftwareCpuListEntries == 131072, "the message above names the default");
+const int64_t gCpuListLimitFromEnvironment = cpuListLimitFromEnvironment();
+std::atomic<int64_t> gCpuListLimit{gCpuListLimitFromEnvironment};  // -1: the defaults
 std::atomic<uint64_t> gCpuListViews{0}, gGpuSortedViews{0};
 
 // render.near_fade as the shaders' line in depth (ParticleDraw's nearFadeMap).
@@ -92,8 +94,13 @@ TiledPath::~TiledPath() {
     if (coverVao_) glDeleteVertexArrays(1, &coverVao_);
 }
 
-uint32_t TiledPath::cpuListLimit() { return gCpuListLimit.load(std::memory_order_relaxed); }
-void TiledPath::setCpuListLimit(uint32_t entries) { gCpuListLimit.store(entries, std::memory_order_relaxed); }
+uint32_t TiledPath::cpuListLimit(bool softwareRasterizer) {
+    const int64_t set = gCpuListLimit.load(std::memory_order_relaxed);
+    if (set >= 0) return uint32_t(set);
+    return softwareRasterizer ? kSoftwareCpuListEntries : kCpuListEntries;
+}
+void TiledPath::setCpuListLimit(uint32_t entries) { gCpuListLimit.store(int64_t(entries), std::memory_order_relaxed); }
+void TiledPath::resetCpuListLimit() { gCpuListLimit.store(gCpuListLimitFromEnvironment, std::memory_order_relaxed); }
 const char* TiledPath::cpuListLimitProblem() { return gCpuListLimitProblem; }
 uint64_t TiledPath::cpuListViews() { return gCpuListViews.load(std::memory_order_relaxed); }
 uint64_t TiledPath::gpuSortedViews() { return gGpuSortedViews.load(std::memory_order_relaxed); }
@@ -121,6 +128,7 @@ bool TiledPath::available() {
 }
 
 void TiledPath::bind(const ProgramCache& programs) {
+    software_ = softwareRasterizer(reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
     sort_.bind(programs);
     setup_ = programs.passProgram(ProgramCache::TiledSetup);
     shade_ = programs.passProgram(ProgramCache::TiledShade);
@@ -212,7 +220,7 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
         !sort_.fits(record->bins)) {
         return false;
     }
-    if (record->bins.entryCount <= cpuListLimit()) writeEntries(&record->bins, jobs);
+    if (record->bins.entryCount <= cpuListLimit(software_)) writeEntries(&record->bins, jobs);
     const Target color = frame.sceneColor();
     narrowDepthRead(frame, tilesBound(record->bins, view.width, view.height), view.width, view.height);
     const Target opacity = lit ? record->opacity : Target{};  // lit smoke's opacity map, where there is one

@@ -8,8 +8,8 @@
 // Declaring the pass bounds the view's particles and counts each tile's entries on the CPU
 // (binParticles, TileBins.h: each particle into the tiles its bound touches, front to back). The
 // pass writes each tile's list on the GPU (TileSort.h: a pair per particle and tile, sorted by
-// tile, stably); a view of at most kCpuListEntries entries (none by default) gets its lists written
-// on the CPU instead (writeEntries). It then sets each particle up once (a compute dispatch, one invocation per particle: what the vertex shader works
+// tile, stably); a view of at most cpuListLimit() entries (none by default on a GPU) gets its lists
+// written on the CPU instead (writeEntries). It then sets each particle up once (a compute dispatch, one invocation per particle: what the vertex shader works
 // out), then dispatches one work group per tile that holds particles (one invocation per pixel:
 // one scene-depth fetch per pixel, the particles' records read in order, the blend in registers,
 // stopped once the pixel is opaque) into the plugin's own RGBA16F image, and draws those tiles
@@ -58,12 +58,18 @@ public:
     /// scene), and were never the cheaper frame at any size measured (1,000 to 520,000 entries).
     /// Until then 131,072: the GPU's lists took 0.18 ms plus 2 ns an entry (session 26).
     static constexpr uint32_t kCpuListEntries = 0;
-    /// The limit in use, the process's: kCpuListEntries, or the environment's
-    /// CUBEFX_TILED_CPU_LISTS (a whole number of entries; 0: always the GPU sort) where it is set,
-    /// so a GPU session can find where the CPU's lists stop paying without a rebuild; tests set
-    /// it to compare the two ways.
-    static uint32_t cpuListLimit();
+    /// The same on a software rasterizer (softwareRasterizer()), whose compute shaders run on the
+    /// CPU: there the host writing the lists costs less than its "GPU" sorting them (llvmpipe,
+    /// 640x360: soft+tiled 104.7 ms a frame with these, 116.8 with the GPU's).
+    static constexpr uint32_t kSoftwareCpuListEntries = 131072;
+    /// The limit in use: the environment's CUBEFX_TILED_CPU_LISTS (a whole number of entries; 0:
+    /// always the GPU sort) or setCpuListLimit()'s where either is set, so a GPU session can find
+    /// where the CPU's lists stop paying without a rebuild and tests can compare the two ways;
+    /// else kSoftwareCpuListEntries on a software rasterizer, kCpuListEntries elsewhere.
+    static uint32_t cpuListLimit(bool softwareRasterizer);
     static void setCpuListLimit(uint32_t entries);
+    /// Back to the environment's limit, or the defaults where it has none.
+    static void resetCpuListLimit();
     /// What was wrong with CUBEFX_TILED_CPU_LISTS (ignored then), or null: for the renderer's log.
     static const char* cpuListLimitProblem();
     /// Views whose lists were written on the CPU / sorted on the GPU, since the process started.
@@ -111,6 +117,7 @@ private:
     ParticleDraw& draw_;
     SizeMismatchReport sizeMismatch_;
     uint32_t setup_ = 0, shade_ = 0, composite_ = 0, setupLit_ = 0, shadeLit_ = 0;
+    bool software_ = false;  ///< the context is a software rasterizer (bind()): cpuListLimit's default
     struct ShadeUniforms {
         int view = -1, proj = -1, nearPlane = -1, farPlane = -1, atlas = -1, ramp = -1, sceneDepth = -1;
         int batchA = -1, batchB = -1, batchRange = -1, batchCount = -1, instanceCount = -1, pixelSlope = -1;

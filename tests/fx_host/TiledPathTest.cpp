@@ -131,14 +131,18 @@ TEST_F(TiledPathTest, TiledFramesMatchRasterisedOnes) {
     EXPECT_EQ(compared, 3 * 2 * 2 * (1 + 3 + 1));
 }
 
-// A view's lists, sorted on the GPU (TileSort: every view's by default, kCpuListEntries 0) or
-// written on the CPU (a limit above its entries), are the same lists: the frames are equal bit for
-// bit, for each technique, and the counters say which way each frame went.
+// A view's lists, written on the CPU (a software rasterizer's default up to
+// kSoftwareCpuListEntries: these tests run on one) or sorted on the GPU (TileSort: a GPU's default,
+// kCpuListEntries 0), are the same lists: the frames are equal bit for bit, for each technique, and
+// the counters say which way each frame went.
 TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
     struct LimitBack {
-        ~LimitBack() { fx::TiledPath::setCpuListLimit(fx::TiledPath::kCpuListEntries); }
+        ~LimitBack() { fx::TiledPath::resetCpuListLimit(); }
     } limitBack;
-    ASSERT_EQ(fx::TiledPath::cpuListLimit(), fx::TiledPath::kCpuListEntries);
+    ASSERT_TRUE(fx::TiledPath::softwareRasterizer(reinterpret_cast<const char*>(glGetString(GL_RENDERER))));
+    ASSERT_EQ(fx::TiledPath::cpuListLimit(true), fx::TiledPath::kSoftwareCpuListEntries);
+    ASSERT_EQ(fx::TiledPath::cpuListLimit(false), fx::TiledPath::kCpuListEntries);
+    EXPECT_EQ(fx::TiledPath::kCpuListEntries, 0u) << "on a GPU the GPU writes every view's lists";
     std::vector<HandParticle> puffs;
     for (int i = 0; i < 40; ++i) {
         const float a = 0.5f * float(i);
@@ -157,14 +161,14 @@ TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
         const Image byDefault = draw(direct, graph, scene, view, true);  // a few thousand entries
         ASSERT_GE(drawn, 40);
         EXPECT_TRUE(graph.ran(fx::TiledPath::kPass));
-        EXPECT_EQ(fx::TiledPath::gpuSortedViews(), gpu + 1) << "by default the GPU sorts, however few the entries";
-        EXPECT_EQ(fx::TiledPath::cpuListViews(), cpu);
-        fx::TiledPath::setCpuListLimit(UINT32_MAX);
-        const Image written = draw(direct, graph, scene, view, true);
-        EXPECT_EQ(fx::TiledPath::gpuSortedViews(), gpu + 1);
-        EXPECT_EQ(fx::TiledPath::cpuListViews(), cpu + 1) << "with the limit above its entries the CPU writes them";
-        fx::TiledPath::setCpuListLimit(fx::TiledPath::kCpuListEntries);
-        EXPECT_EQ(maxAbsDiff(byDefault, written), 0);
+        EXPECT_EQ(fx::TiledPath::cpuListViews(), cpu + 1) << "a small view's lists are the CPU's on llvmpipe";
+        EXPECT_EQ(fx::TiledPath::gpuSortedViews(), gpu);
+        fx::TiledPath::setCpuListLimit(0);
+        const Image sorted = draw(direct, graph, scene, view, true);
+        EXPECT_EQ(fx::TiledPath::cpuListViews(), cpu + 1);
+        EXPECT_EQ(fx::TiledPath::gpuSortedViews(), gpu + 1) << "with the limit at 0 the GPU sorts";
+        fx::TiledPath::resetCpuListLimit();
+        EXPECT_EQ(maxAbsDiff(byDefault, sorted), 0);
         int smoke = 0;
         for (int y = 0; y < kH; ++y) {
             for (int x = 0; x < kW; ++x) smoke += byDefault.at(x, y)[0] > 60 ? 1 : 0;
