@@ -36,8 +36,9 @@
 //     worked out once per particle in the setup, at a sphere's centre (as the raster path does) and
 //     at the vertices of the fan the raster path draws a billboard with (its frame's trimmed
 //     polygon, or the quad), and read per pixel across that fan's triangles as the rasteriser
-//     interpolates it: the light of a large puff depends on where its vertices lie. The per-pixel light (the atlas normal, the diffuse and scattered shares) is the
-//     raster fragment shaders', with each batch's values from uniform arrays.
+//     interpolates it: the light of a large puff depends on where its vertices lie. The per-pixel
+//     light (the atlas normal, the diffuse and scattered shares) is the raster fragment shaders',
+//     with each batch's values from uniform arrays.
 // The atlas is read from one mip level, the nearest, as ParticleDraw's sampler does.
 #include "particles_common.glsl"
 
@@ -355,9 +356,14 @@ void main() {
                         b = e[k + 1];
                     }
                 }
+                // A fan of fewer than three vertices (a frame with nothing drawn) lights vertex 0
+                // alone: the setup wrote no others, and 0 x an unwritten NaN is NaN.
                 float area = a.x * b.y - a.y * b.x;
-                vec2 w = abs(area) > 1e-12 ? vec2(d.x * b.y - d.y * b.x, a.x * d.y - a.y * d.x) / area : vec2(0.0);
-                sunPhase = l0 + w.x * (uLight[l + uint(j + 1)] - l0) + w.y * (uLight[l + uint(j + 2)] - l0);
+                sunPhase = l0;
+                if (n >= 3 && abs(area) > 1e-12) {
+                    vec2 w = vec2(d.x * b.y - d.y * b.x, a.x * d.y - a.y * d.x) / area;
+                    sunPhase += w.x * (uLight[l + uint(j + 1)] - l0) + w.y * (uLight[l + uint(j + 2)] - l0);
+                }
                 m = billboardNormalOf(texel, turn.xy * turn.z, turn.z);
             }
             vec4 shade = uBatchShade[entry >> kBatchShift];
