@@ -7,7 +7,7 @@
 //    and particles that cross the ground, stand in front of a wall, reach past the view's edge,
 //    around the near plane and behind the camera; coloured particles whose order shows in the
 //    picture (the compute shader blends front to back what the raster path blends back to front).
-//  - Lit smoke: the rasterised lit quads' picture up to rounding.
+//  - Lit smoke: the rasterised lit picture of the same shape (quads, trimmed polygons) up to rounding.
 //  - Where it cannot draw (spheres under an orthographic projection), the view is drawn as
 //    without it.
 #include <algorithm>
