@@ -164,6 +164,8 @@ void tileBinsBench(benchmark::State& state, float size) {
 void BM_TileBins(benchmark::State& state) { tileBinsBench(state, 0.0f); }
 void BM_TileBinsLarge(benchmark::State& state) { tileBinsBench(state, 8.0f); }
 
+// range(2): 1 builds without the back-to-front sort (deferOrder: what the tiled path's GPU order
+// leaves the CPU).
 void BM_DrawListBuildJobs(benchmark::State& state) {
     Scene s(int(state.range(0)));
     bench::JobsHost host(int(state.range(1)));
@@ -171,7 +173,7 @@ void BM_DrawListBuildJobs(benchmark::State& state) {
     fx::DrawListBuilder builder;
     fx::DrawList list;
     for (auto _ : state) {
-        builder.build(s.view, &batch, 1, fx::Technique::FromReaction, kAll, &list, fx::Jobs(&host));
+        builder.build(s.view, &batch, 1, fx::Technique::FromReaction, kAll, &list, fx::Jobs(&host), state.range(2) != 0);
         benchmark::DoNotOptimize(list.instances.data());
     }
     state.SetItemsProcessed(int64_t(state.iterations()) * state.range(0));
@@ -202,7 +204,7 @@ std::vector<int64_t> threadCounts() {
     if (all > 2) t.push_back(all);
     return t;
 }
-BENCHMARK(BM_DrawListBuildJobs)->ArgsProduct({{16000, 256000, 1000000}, threadCounts()})->UseRealTime();
+BENCHMARK(BM_DrawListBuildJobs)->ArgsProduct({{16000, 256000, 1000000}, threadCounts(), {0, 1}})->UseRealTime();
 BENCHMARK(BM_ScreenRectJobs)->ArgsProduct({{16000, 256000, 1000000}, threadCounts()})->UseRealTime();
 BENCHMARK(BM_DrawListBuild)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 BENCHMARK(BM_ScreenRect)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);

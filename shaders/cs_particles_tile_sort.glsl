@@ -10,6 +10,11 @@
 //     (SCAN: each block's first place for each digit); the block writes each pair to its digit's
 //     place plus the pairs of that digit before it in the block (SCATTER). Stable, so after the
 //     last pass each tile's pairs are in particle order: front to back, the CPU's lists bit for bit.
+//   FX_TILE_ORDER_KEY, FX_TILE_ORDER_BATCH, FX_TILE_ORDER_PREFIX, FX_TILE_ORDER_ADD: the particles
+//     of a list built without its back-to-front sort (TileSort::DepthOrder) put in front-to-back
+//     order before the emit: a key per particle (its depth's bits), the radix passes above over
+//     those keys, then over its batch (BATCH rekeys), and the pair counts added up in that order
+//     (PREFIX: each group's 1,024, SCAN: the groups' sums, ADD: each group's first added on).
 // The pairs' keys and entries are separate arrays (std430 uint); the histogram is digit-major.
 
 const uint kDigitBits = 4u;
@@ -156,5 +161,113 @@ void main() {
         }
         barrier();
     }
+}
+
+#elif defined(FX_TILE_ORDER_KEY)
+layout(local_size_x = 256) in;
+// The words of an unsorted list's particles (TileBins::particles, binned as the list lies).
+layout(std430, binding = 0) readonly buffer Particles { uvec4 uParticles[]; };
+layout(std430, binding = 1) writeonly buffer KeysOut { uint uKeysOut[]; };
+layout(std430, binding = 2) writeonly buffer EntriesOut { uint uEntriesOut[]; };
+// InstanceStream's ParticleInstance: (x, y, z, size), (life, rotation, fade, frame).
+layout(std430, binding = 3) readonly buffer Instances { vec4 uInstances[]; };
+uniform int uParticleCount;
+uniform vec3 uEye;
+uniform vec3 uForward;     // viewForward (DrawList.h)
+uniform uint uBackToFront;  // a bit per batch drawn back to front
+
+// The key's ascending order is front to back: the depth as DrawListBuilder works it out, to the
+// bit (`precise`: the same products and sums, none fused), -0 as +0, and its bits mapped so that
+// their unsigned order is the float's (negative ones flipped, positive ones with the sign set):
+// the reverse of the CPU's descendingKey. A batch drawn in pool order keys 0 (the order stays).
+// The payload is the particle's place in the words.
+void main() {
+    uint k = groupIndex() * kGroup + gl_LocalInvocationID.x;
+    if (k >= uint(uParticleCount)) return;
+    uint entry = uParticles[k].w;
+    uint key = 0u;
+    if (((uBackToFront >> (entry >> 26u)) & 1u) != 0u) {
+        vec3 p = uInstances[(entry & 0x3ffffffu) * 2u].xyz;
+        precise float depth = (p.x - uEye.x) * uForward.x + (p.y - uEye.y) * uForward.y + (p.z - uEye.z) * uForward.z;
+        uint bits = floatBitsToUint(depth);
+        if (bits == 0x80000000u) bits = 0u;
+        key = (bits & 0x80000000u) != 0u ? ~bits : (bits | 0x80000000u);
+    }
+    uKeysOut[k] = key;
+    uEntriesOut[k] = k;
+}
+
+#elif defined(FX_TILE_ORDER_BATCH)
+layout(local_size_x = 256) in;
+layout(std430, binding = 0) readonly buffer Particles { uvec4 uParticles[]; };
+layout(std430, binding = 1) writeonly buffer KeysOut { uint uKeysOut[]; };
+layout(std430, binding = 2) readonly buffer EntriesIn { uint uEntriesIn[]; };
+uniform int uParticleCount;
+uniform int uBatchCount;
+
+// Each particle's key becomes its batch, the last first (TileBins' front-to-back order).
+void main() {
+    uint s = groupIndex() * kGroup + gl_LocalInvocationID.x;
+    if (s >= uint(uParticleCount)) return;
+    uKeysOut[s] = uint(uBatchCount - 1) - (uParticles[uEntriesIn[s]].w >> 26u);
+}
+
+#elif defined(FX_TILE_ORDER_PREFIX)
+layout(local_size_x = 256) in;
+layout(std430, binding = 0) readonly buffer Particles { uvec4 uParticles[]; };
+layout(std430, binding = 2) readonly buffer EntriesIn { uint uEntriesIn[]; };  // the sorted places
+layout(std430, binding = 3) writeonly buffer Ordered { uvec4 uOrdered[]; };
+layout(std430, binding = 4) writeonly buffer Sums { uint uSums[]; };
+uniform int uParticleCount;
+shared uint sSums[256];
+
+// A particle's pairs: its tile range's tiles (none where tx0 > tx1).
+uint pairsOf(uvec4 w) {
+    uint x0 = w.x & 0xffffu, x1 = w.x >> 16u, y0 = w.y & 0xffffu, y1 = w.y >> 16u;
+    return x0 > x1 ? 0u : (x1 - x0 + 1u) * (y1 - y0 + 1u);
+}
+
+// Each group: 1,024 sorted places, four per invocation; their words in order, each with its first
+// pair within the group, and the group's sum.
+void main() {
+    uint lane = gl_LocalInvocationID.x;
+    uint first = groupIndex() * 1024u + lane * 4u;
+    uint n = uint(uParticleCount);
+    uvec4 words[4];
+    uint counts[4];
+    uint sum = 0u;
+    for (int j = 0; j < 4; ++j) {
+        uint s = first + uint(j);
+        words[j] = s < n ? uParticles[uEntriesIn[s]] : uvec4(1u, 1u, 0u, 0u);
+        counts[j] = s < n ? pairsOf(words[j]) : 0u;
+        sum += counts[j];
+    }
+    sSums[lane] = sum;
+    barrier();
+    for (uint offset = 1u; offset < 256u; offset <<= 1u) {
+        uint before = lane >= offset ? sSums[lane - offset] : 0u;
+        barrier();
+        sSums[lane] += before;
+        barrier();
+    }
+    uint running = sSums[lane] - sum;
+    for (int j = 0; j < 4; ++j) {
+        uint s = first + uint(j);
+        if (s < n) uOrdered[s] = uvec4(words[j].x, words[j].y, running, words[j].w);
+        running += counts[j];
+    }
+    if (lane == 255u) uSums[groupIndex()] = sSums[255];
+}
+
+#elif defined(FX_TILE_ORDER_ADD)
+layout(local_size_x = 256) in;
+layout(std430, binding = 3) buffer Ordered { uvec4 uOrdered[]; };
+layout(std430, binding = 4) readonly buffer Sums { uint uSums[]; };  // scanned: each group's first pair
+uniform int uParticleCount;
+
+void main() {
+    uint s = groupIndex() * kGroup + gl_LocalInvocationID.x;
+    if (s >= uint(uParticleCount)) return;
+    uOrdered[s].z += uSums[s >> 10u];
 }
 #endif

@@ -23,12 +23,11 @@ Technique resolveTechnique(Technique override, Technique fromReaction) {
 
 void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, int batchCount,
                             Technique techniqueOverride, uint32_t usableTechniques,
-                            DrawList* out, const Jobs& jobs) {
+                            DrawList* out, const Jobs& jobs, bool deferOrder) {
     out->clear();
     if (batchCount <= 0) return;
     const ViewFrustum frustum(view.view, view.proj, view.nearPlane, view.farPlane);
-    // Camera forward in world space: minus the third row of the view rotation.
-    const glm::vec3 forward(-view.view[0][2], -view.view[1][2], -view.view[2][2]);
+    const glm::vec3 forward = viewForward(view);
     constexpr float kHalfDiagonal = 0.70710678f;
     // The distance slice (ViewInfo::slice): the centre's distance along the view axis, -z_view,
     // which orders particles as the back-to-front sort does; a particle lies wholly in one slice.
@@ -62,7 +61,7 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
         // waits for another); the pieces' counts then place them in the list, in pool order.
         DrawBatch batch;
         batch.first = static_cast<int>(out->instances.size());
-        const bool sort = in.sortBackToFront;
+        const bool sort = in.sortBackToFront && !deferOrder;
         const int alive = pool.alive();
         // Sized for the whole pool once: a frame that sees more of it than any before does not
         // allocate.
@@ -146,8 +145,41 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
         batch.contrastPower = render.contrastPower;
         batch.nearFade = render.nearFade;
         batch.lighting = in.desc->lighting;
+        batch.backToFront = in.sortBackToFront;
+        if (in.sortBackToFront && deferOrder && batch.count > 1) out->orderPending = true;
         out->batches.push_back(batch);
         if (techniqueRow(technique, false).needsSceneDepth) out->needsSceneDepth = true;
+    }
+}
+
+void DrawListBuilder::order(const ViewInfo& view, DrawList* list, const Jobs& jobs) {
+    if (!list->orderPending) return;
+    list->orderPending = false;
+    const glm::vec3 forward = viewForward(view);
+    for (const DrawBatch& batch : list->batches) {
+        if (!batch.backToFront || batch.count < 2) continue;
+        // What build() sorts: the batch's visible particles in pool order, their depths worked out
+        // as it does; the same stable sort, so the same order.
+        const size_t n = size_t(batch.count);
+        if (culled_.size() < n) {
+            culled_.resize(n);
+            packedDepth_.resize(n);
+            sorter_.reserve(int(n));
+        }
+        ParticleInstance* const drawn = list->instances.data() + batch.first;
+        const Pieces pieces = splitWork(n, kCullGrain, HostAdapter::kMaxTasks);
+        jobs.run(pieces, [&](uint32_t piece) {
+            for (size_t k = pieces.begin(piece), e = pieces.end(piece); k < e; ++k) {
+                const ParticleInstance& p = drawn[k];
+                packedDepth_[k] = (p.x - view.eye.x) * forward.x + (p.y - view.eye.y) * forward.y +
+                                  (p.z - view.eye.z) * forward.z;
+            }
+        });
+        const ParticleSorter::Order order = sorter_.sortDescending(packedDepth_.data(), nullptr, int(n), jobs);
+        jobs.run(pieces, [&](uint32_t piece) {
+            for (size_t k = pieces.begin(piece), e = pieces.end(piece); k < e; ++k) culled_[k] = drawn[order.indices[k]];
+        });
+        std::memcpy(drawn, culled_.data(), n * sizeof(ParticleInstance));
     }
 }
 

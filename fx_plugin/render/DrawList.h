@@ -7,7 +7,8 @@
 //  - slice: only particles whose view distance lies in ViewInfo::slice (default: all);
 //  - order: back to front (sim/ParticleSorter, over the particles left after culling) for
 //    reactions that need it (ReactionRuntime::needsSorting: sorted alpha blending), pool order
-//    otherwise (additive);
+//    otherwise (additive); with deferOrder the back-to-front sort is left out (DrawList::orderPending)
+//    for the tiled path to do on the GPU (TileSort.h), or order() to do later;
 //    reactions are drawn in reaction order (no sorting across reactions);
 //  - technique: RenderOptions::techniqueOverride, else the reaction's render.technique;
 //    batches whose technique is not in the caller's usable mask are left out (each renderer
@@ -46,17 +47,23 @@ struct DrawBatch {
     float contrastPower = 1.0f;
     float nearFade = 0.5f;
     LightingDesc lighting;       ///< the reaction's `lighting:` keys (lit when a scene light is set)
+    bool backToFront = false;    ///< drawn back to front (ParticleBatch::sortBackToFront)
 };
 
 struct DrawList {
     NoInitVector<ParticleInstance> instances;
     std::vector<DrawBatch> batches;
     bool needsSceneDepth = false;  ///< a soft or spherical batch is visible
+    /// Built with deferOrder: the batches drawn back to front hold their particles in pool order
+    /// (culled), not yet sorted. DrawListBuilder::order sorts them; the tiled path can instead
+    /// sort them on the GPU (TileSort.h). Every other consumer needs the order in place.
+    bool orderPending = false;
 
     void clear() {
         instances.clear();
         batches.clear();
         needsSceneDepth = false;
+        orderPending = false;
     }
     int particleCount() const { return static_cast<int>(instances.size()); }
 };
@@ -64,6 +71,11 @@ struct DrawList {
 /// The technique a reaction is drawn with under `override`.
 Technique resolveTechnique(Technique override, Technique fromReaction);
 inline uint32_t techniqueBit(Technique t) { return 1u << static_cast<uint32_t>(t); }
+/// The camera's forward axis in world space (minus the third row of the view rotation): a
+/// particle's sort depth is dot(p - eye, viewForward) on the CPU and on the GPU alike.
+inline glm::vec3 viewForward(const ViewInfo& view) {
+    return glm::vec3(-view.view[0][2], -view.view[1][2], -view.view[2][2]);
+}
 
 class DrawListBuilder {
 public:
@@ -71,9 +83,13 @@ public:
     /// programs built. Keeps its scratch between calls; after warm-up it allocates nothing.
     /// `jobs`: the host's job system for pools of tens of thousands of particles (culled, sorted
     /// and gathered in pieces); the list is the same bit for bit with or without it.
+    /// `deferOrder`: leave the back-to-front sort out (DrawList::orderPending).
     void build(const ViewInfo& view, const ParticleBatch* batches, int batchCount,
                Technique techniqueOverride, uint32_t usableTechniques, DrawList* out,
-               const Jobs& jobs = Jobs());
+               const Jobs& jobs = Jobs(), bool deferOrder = false);
+    /// Puts a deferred order in place: `list` as build() without deferOrder gives it, bit for
+    /// bit. Nothing where no order is pending. `view`: the view it was built for.
+    void order(const ViewInfo& view, DrawList* list, const Jobs& jobs = Jobs());
 
 private:
     ParticleSorter sorter_;                   // the batch being built's order

@@ -83,6 +83,7 @@ bool ParticleRenderer::ensureLoaded() {
     }
     draw_.create();
     if (const char* problem = TiledPath::cpuListLimitProblem()) log(LogLevel::Warning, problem);
+    if (const char* problem = TileSort::orderLimitProblem()) log(LogLevel::Warning, problem);
     if (!config_.shaderDir.empty()) shaderStamp_ = shaderStamp(config_.shaderDir);
     state_ = State::Ready;
     return true;
@@ -177,14 +178,23 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     const bool wasReady = state_ == State::Ready;
     bool quarterRes = options.quarterRes && (!wasReady || quarter_.ok());
     uint32_t usable = wasReady ? draw_.programs().usableTechniques(quarterRes) & mine : mine;
-    builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list, config_.jobs);
+    // A view the tiled path will likely draw, of enough particles, is sorted back to front on the
+    // GPU (TileSort.h): its list is built without the CPU's sort, which order() below does where
+    // another path draws it after all.
+    int alive = 0;
+    for (int b = 0; b < batchCount; ++b) alive += batches[b].pool ? batches[b].pool->alive() : 0;
+    const bool deferOrder = !(options.quarterRes && options.quarterResAlways) && tiled_.ordersOnGpu(alive) &&
+                            TiledPath::wanted(options);
+    builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list, config_.jobs,
+                   deferOrder);
     if (record->list.particleCount() == 0) return 0;
     if (!wasReady) {
         if (!ensureLoaded()) return 0;
         quarterRes = options.quarterRes && quarter_.ok();
         if ((draw_.programs().usableTechniques(quarterRes) & mine) != usable) {
             usable = draw_.programs().usableTechniques(quarterRes) & mine;
-            builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list, config_.jobs);
+            builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list, config_.jobs,
+                           deferOrder);
         }
     }
     if (options.quarterRes && !quarterRes && !quarterFallbackLogged_) {
@@ -199,7 +209,8 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
         quarterRes = false;
         if ((draw_.programs().usableTechniques(false) & mine) == usable) return true;
         usable = draw_.programs().usableTechniques(false) & mine;
-        builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list, config_.jobs);
+        builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list, config_.jobs,
+                       deferOrder);
         return record->list.particleCount() > 0;
     };
     // Quarter res is weighed against the full-resolution raster pass. Where the tiled path draws
@@ -236,10 +247,15 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
         record->opacity = shadow.opacity;
         record->worldToShadow = shadow.worldToShadow;
     }
+    if (!quarterRes && tiled && tiled_.ok()) {
+        // The GPU sorts the particles where ordersOnGpu says so; else the order goes in here.
+        if (!tiled_.ordersOnGpu(record->list.particleCount())) builder_.order(view, &record->list, config_.jobs);
+        // False for a view it cannot bin (a particle with no bound): that one falls through to full res.
+        if (tiled_.declare(frame, record, config_.jobs)) return record->list.particleCount();
+    }
+    builder_.order(view, &record->list, config_.jobs);  // nothing where the order is in place
     if (quarterRes) {
         quarter_.declare(frame, record);
-    } else if (tiled && tiled_.ok() && tiled_.declare(frame, record, config_.jobs)) {
-        // declared; a view it cannot bin (a particle with no bound) falls through to full res
     } else {
         fullRes_.declare(frame, record);
     }

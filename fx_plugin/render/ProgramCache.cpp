@@ -46,6 +46,10 @@ constexpr Source kSources[ProgramCache::VariantCount + ProgramCache::ProgramCoun
     {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_SCATTER 1\n"},
     {"cs_particles_tiled.glsl", "", "#define FX_GENERAL_POWER 1\n#define FX_LIT 1\n"},
     {"cs_particles_tiled.glsl", "", "#define FX_TILED_SETUP 1\n#define FX_LIT 1\n"},
+    {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_ORDER_KEY 1\n"},
+    {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_ORDER_BATCH 1\n"},
+    {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_ORDER_PREFIX 1\n"},
+    {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_ORDER_ADD 1\n"},
 };
 
 const Source& sourceOf(const ProgramCache::Key& key) {
@@ -237,7 +241,8 @@ std::vector<ProgramCache::Key> ProgramCache::tiledKeys() {
 }
 
 std::vector<ProgramCache::Key> ProgramCache::tileSortKeys() {
-    return {Key::of(TileEmit), Key::of(TileSortCount), Key::of(TileSortScan), Key::of(TileSortScatter)};
+    return {Key::of(TileEmit),     Key::of(TileSortCount),  Key::of(TileSortScan),    Key::of(TileSortScatter),
+            Key::of(TileOrderKey), Key::of(TileOrderBatch), Key::of(TileOrderPrefix), Key::of(TileOrderAdd)};
 }
 
 void ProgramCache::addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys) {

@@ -102,6 +102,10 @@ public:
         TileSortScatter,    ///< the same, FX_TILE_SCATTER
         TiledShadeLit,      ///< cs_particles_tiled, FX_LIT (lit smoke: TiledPath.h)
         TiledSetupLit,      ///< cs_particles_tiled, FX_TILED_SETUP and FX_LIT
+        TileOrderKey,       ///< cs_particles_tile_sort, FX_TILE_ORDER_KEY (TileSort::DepthOrder)
+        TileOrderBatch,     ///< the same, FX_TILE_ORDER_BATCH
+        TileOrderPrefix,    ///< the same, FX_TILE_ORDER_PREFIX
+        TileOrderAdd,       ///< the same, FX_TILE_ORDER_ADD
         ProgramCount
     };
 
@@ -180,11 +184,12 @@ public:
     /// Adds (once each) the keys a batch of `technique` with `contrastPower` draws with, lit and
     /// unlit, on a quarter-res target or not (drawKey).
     static void addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys);
-    /// The tiled path's nine programs (TiledPath.h: unlit and lit, with tileSortKeys): what
+    /// The tiled path's thirteen programs (TiledPath.h: unlit and lit, with tileSortKeys): what
     /// prepareGl adds while it is on, in a context with compute shaders (lit too, as
     /// techniqueKeys: a host may set a scene light at any time).
     static std::vector<Key> tiledKeys();
-    /// The four that write the tiled path's lists (TileSort.h).
+    /// The eight that write the tiled path's lists (TileSort.h): the four of the lists, then the
+    /// four that sort the particles of a list built without its order.
     static std::vector<Key> tileSortKeys();
     /// `contrastPower` picks between the two soft programs (see above).
     static Variant variantFor(Technique technique, bool quarterRes, float contrastPower = 1.0f);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <climits>
 #include <cstdlib>
 
 #include "InstanceStream.h"
@@ -22,6 +23,28 @@ int rowsFromEnvironment() {
 }
 std::atomic<int> gRows{rowsFromEnvironment()};
 
+// CUBEFX_TILED_GPU_ORDER, read once: a whole number of particles (clamped to 2^32 - 1), else -1
+// (the defaults), with a problem to report where it was set but not a number.
+const char* gOrderLimitProblem = nullptr;
+int64_t orderLimitFromEnvironment() {
+    const char* v = std::getenv("CUBEFX_TILED_GPU_ORDER");
+    if (!v || !*v) return -1;
+    uint64_t n = 0;
+    for (const char* c = v; *c; ++c) {
+        if (*c < '0' || *c > '9') {
+            gOrderLimitProblem = "fx: CUBEFX_TILED_GPU_ORDER is not a whole number of particles; the tiled path "
+                                 "keeps its default (the GPU sorts views of 32768 particles or more)";
+            return -1;
+        }
+        n = std::min<uint64_t>(n * 10 + uint64_t(*c - '0'), UINT32_MAX);
+    }
+    return int64_t(n);
+}
+static_assert(TileSort::kOrderParticles == 32768, "the message above names the default");
+const int64_t gOrderLimitFromEnvironment = orderLimitFromEnvironment();
+std::atomic<int64_t> gOrderLimit{gOrderLimitFromEnvironment};  // -1: the defaults
+std::atomic<uint64_t> gGpuOrderedViews{0};
+
 // `groups` work groups in rows of at most 65,535 (the least GL_MAX_COMPUTE_WORK_GROUP_COUNT),
 // the row length in the program's uGroupsX.
 void dispatch(uint32_t groups, int groupsXUniform) {
@@ -33,10 +56,20 @@ void dispatch(uint32_t groups, int groupsXUniform) {
 
 }  // namespace
 
+uint32_t TileSort::orderLimit(bool softwareRasterizer) {
+    const int64_t set = gOrderLimit.load(std::memory_order_relaxed);
+    if (set >= 0) return uint32_t(set);
+    return softwareRasterizer ? UINT32_MAX : kOrderParticles;
+}
+void TileSort::setOrderLimit(uint32_t particles) { gOrderLimit.store(int64_t(particles), std::memory_order_relaxed); }
+void TileSort::resetOrderLimit() { gOrderLimit.store(gOrderLimitFromEnvironment, std::memory_order_relaxed); }
+const char* TileSort::orderLimitProblem() { return gOrderLimitProblem; }
+uint64_t TileSort::gpuOrderedViews() { return gGpuOrderedViews.load(std::memory_order_relaxed); }
+
 TileSort::~TileSort() {
     // The renderer deletes its GL objects with the context current (~ParticleRenderer).
     if (!privateGlContextCurrent()) return;
-    const uint32_t buffers[6] = {particles_, keys_[0], keys_[1], entries_[0], entries_[1], histogram_};
+    const uint32_t buffers[7] = {particles_, keys_[0], keys_[1], entries_[0], entries_[1], histogram_, ordered_};
     for (uint32_t b : buffers) {
         if (b) glDeleteBuffers(1, &b);
     }
@@ -47,9 +80,13 @@ void TileSort::bind(const ProgramCache& programs) {
     count_ = programs.passProgram(ProgramCache::TileSortCount);
     scan_ = programs.passProgram(ProgramCache::TileSortScan);
     scatter_ = programs.passProgram(ProgramCache::TileSortScatter);
-    const uint32_t progs[4] = {emit_, count_, scan_, scatter_};
-    Uniforms* uniforms[4] = {&emitU_, &countU_, &scanU_, &scatterU_};
-    for (int p = 0; p < 4; ++p) {
+    orderKey_ = programs.passProgram(ProgramCache::TileOrderKey);
+    orderBatch_ = programs.passProgram(ProgramCache::TileOrderBatch);
+    orderPrefix_ = programs.passProgram(ProgramCache::TileOrderPrefix);
+    orderAdd_ = programs.passProgram(ProgramCache::TileOrderAdd);
+    const uint32_t progs[8] = {emit_, count_, scan_, scatter_, orderKey_, orderBatch_, orderPrefix_, orderAdd_};
+    Uniforms* uniforms[8] = {&emitU_, &countU_, &scanU_, &scatterU_, &orderKeyU_, &orderBatchU_, &orderPrefixU_, &orderAddU_};
+    for (int p = 0; p < 8; ++p) {
         Uniforms& u = *uniforms[p];
         u = Uniforms{};
         if (!progs[p]) continue;
@@ -61,6 +98,10 @@ void TileSort::bind(const ProgramCache& programs) {
         u.blocks = glGetUniformLocation(progs[p], "uBlocks");
         u.length = glGetUniformLocation(progs[p], "uLength");
         u.rows = glGetUniformLocation(progs[p], "uRows");
+        u.eye = glGetUniformLocation(progs[p], "uEye");
+        u.forward = glGetUniformLocation(progs[p], "uForward");
+        u.backToFront = glGetUniformLocation(progs[p], "uBackToFront");
+        u.batchCount = glGetUniformLocation(progs[p], "uBatchCount");
     }
     GLint64 bytes = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &bytes);
@@ -99,24 +140,117 @@ void TileSort::ensureBuffer(uint32_t* buffer, size_t* capacity, size_t bytes) {
     glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(grown), nullptr, GL_DYNAMIC_COPY);
 }
 
-uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs) {
-    if (!ok() || !fits(bins)) return 0;
+void TileSort::radixPass(uint32_t count, int shift, int from) {
+    const int rows = rowsFor(count);
+    const uint32_t blockPairs = kGroup * uint32_t(rows);
+    const uint32_t blocks = (count + blockPairs - 1) / blockPairs;
+    const uint32_t histogramLength = blocks * (1u << kDigitBits);
+    ensureBuffer(&histogram_, &histogramCapacity_, size_t(histogramLength) * 4);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kHistogram, histogram_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeysIn, keys_[from]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEntriesIn, entries_[from]);
+    // Count and scatter: one group a block, over the digit at `shift`.
+    auto overBlocks = [&](uint32_t program, const Uniforms& u) {
+        glUseProgram(program);
+        glUniform1i(u.pairCount, int(count));
+        glUniform1i(u.shift, shift);
+        glUniform1i(u.blocks, int(blocks));
+        glUniform1i(u.rows, rows);
+        dispatch(blocks, u.groupsX);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    };
+    overBlocks(count_, countU_);
+    glUseProgram(scan_);
+    glUniform1i(scanU_.length, int(histogramLength));
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeysOut, keys_[from ^ 1]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEntriesOut, entries_[from ^ 1]);
+    overBlocks(scatter_, scatterU_);
+}
+
+void TileSort::orderParticles(uint32_t n, const DepthOrder& order) {
+    constexpr int kInstances = 3, kOrdered = 3, kSums = 4;
+    constexpr uint32_t kPrefixBlock = 1024;  // cs_particles_tile_sort.glsl's particles a prefix group adds up
+    // 1. Each particle's key (its depth's bits, ascending: front to back; 0 in a batch drawn in
+    // pool order) and its place in the words (the sort's payload), in keys_/entries_[0].
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleBinding, particles_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, keys_[0]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, entries_[0]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstances, order.instances);
+    glUseProgram(orderKey_);
+    glUniform1i(orderKeyU_.particleCount, int(n));
+    glUniform3f(orderKeyU_.eye, order.eye.x, order.eye.y, order.eye.z);
+    glUniform3f(orderKeyU_.forward, order.forward.x, order.forward.y, order.forward.z);
+    glUniform1ui(orderKeyU_.backToFront, order.backToFront);
+    dispatch((n + kGroup - 1) / kGroup, orderKeyU_.groupsX);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    // 2. Sorted by depth (the radix passes are stable: equal depths keep the words' order, the
+    // reverse of the pool's, as the CPU's list has them), then by batch, the last batch first.
+    int from = 0;
+    if (order.backToFront != 0) {
+        for (int shift = 0; shift < 32; shift += kDigitBits, from ^= 1) radixPass(n, shift, from);
+    }
+    if (order.batchCount > 1) {
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleBinding, particles_);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, keys_[from]);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, entries_[from]);
+        glUseProgram(orderBatch_);
+        glUniform1i(orderBatchU_.particleCount, int(n));
+        glUniform1i(orderBatchU_.batchCount, order.batchCount);
+        dispatch((n + kGroup - 1) / kGroup, orderBatchU_.groupsX);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        for (int shift = 0; (order.batchCount - 1) >> shift; shift += kDigitBits, from ^= 1) radixPass(n, shift, from);
+    }
+    // 3. The words in that order, each with its first pair: the counts added up in blocks, the
+    // blocks' sums scanned, each block's first added on.
+    ensureBuffer(&ordered_, &orderedCapacity_, size_t(n) * 16);
+    const uint32_t prefixGroups = (n + kPrefixBlock - 1) / kPrefixBlock;
+    ensureBuffer(&histogram_, &histogramCapacity_, size_t(prefixGroups) * 4);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleBinding, particles_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, entries_[from]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOrdered, ordered_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSums, histogram_);
+    glUseProgram(orderPrefix_);
+    glUniform1i(orderPrefixU_.particleCount, int(n));
+    dispatch(prefixGroups, orderPrefixU_.groupsX);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glUseProgram(scan_);
+    glUniform1i(scanU_.length, int(prefixGroups));
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glUseProgram(orderAdd_);
+    glUniform1i(orderAddU_.particleCount, int(n));
+    dispatch((n + kGroup - 1) / kGroup, orderAddU_.groupsX);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    gGpuOrderedViews.fetch_add(1, std::memory_order_relaxed);
+}
+
+uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs, const DepthOrder* order) {
+    if (!ok() || !fits(bins) || (order && !orderOk())) return 0;
     const uint32_t pairs = bins.entryCount;
     const uint32_t particleCount = uint32_t(bins.particles.size() / 4);
-    ensureBuffer(&keys_[0], &keysCapacity_[0], size_t(pairs) * 4);
-    ensureBuffer(&entries_[0], &entriesCapacity_[0], size_t(pairs) * 4);
+    // The particles' sort goes through the pairs' buffers first.
+    const size_t keyBytes = size_t(order ? std::max(pairs, particleCount) : pairs) * 4;
+    ensureBuffer(&keys_[0], &keysCapacity_[0], keyBytes);
+    ensureBuffer(&entries_[0], &entriesCapacity_[0], keyBytes);
     if (pairs == 0 || particleCount == 0) return entries_[0];
     // Whatever read these buffers before (the last view's tile pass) is done with them.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-    // 1. The pairs, in particle order.
+    // 1. The particles (in front-to-back order: the CPU's, or order's), then the pairs in that order.
     ensureBuffer(&particles_, &particlesCapacity_, bins.particles.size() * 4);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, particles_);
     const size_t particleBytes = bins.particles.size() * 4;
     if (!copyMappedInPieces(GL_SHADER_STORAGE_BUFFER, bins.particles.data(), particleBytes, jobs)) {
         glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(particleBytes), bins.particles.data());
     }
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleBinding, particles_);
+    if (order) {
+        ensureBuffer(&keys_[1], &keysCapacity_[1], keyBytes);
+        ensureBuffer(&entries_[1], &entriesCapacity_[1], keyBytes);
+        orderParticles(particleCount, *order);
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleBinding, order ? ordered_ : particles_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, keys_[0]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, entries_[0]);
     glUseProgram(emit_);
@@ -126,41 +260,13 @@ uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs) {
     dispatch((pairs + kGroup - 1) / kGroup, emitU_.groupsX);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-    // 2. The radix passes, from keys_/entries_[0] to [1] and back.
+    // 2. The radix passes by tile, from keys_/entries_[0] to [1] and back.
     const int passCount = passes(bins.tilesX * bins.tilesY);
     if (passCount == 0) return entries_[0];
     ensureBuffer(&keys_[1], &keysCapacity_[1], size_t(pairs) * 4);
     ensureBuffer(&entries_[1], &entriesCapacity_[1], size_t(pairs) * 4);
-    const int rows = rowsFor(pairs);
-    const uint32_t blockPairs = kGroup * uint32_t(rows);
-    const uint32_t blocks = (pairs + blockPairs - 1) / blockPairs;
-    const uint32_t histogramLength = blocks * (1u << kDigitBits);
-    ensureBuffer(&histogram_, &histogramCapacity_, size_t(histogramLength) * 4);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kHistogram, histogram_);
-    // Count and scatter: one group a block, over the pairs' digit at `shift`.
-    auto overBlocks = [&](uint32_t program, const Uniforms& u, int shift) {
-        glUseProgram(program);
-        glUniform1i(u.pairCount, int(pairs));
-        glUniform1i(u.shift, shift);
-        glUniform1i(u.blocks, int(blocks));
-        glUniform1i(u.rows, rows);
-        dispatch(blocks, u.groupsX);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    };
     int from = 0;
-    for (int pass = 0; pass < passCount; ++pass, from ^= 1) {
-        const int shift = pass * kDigitBits;
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeysIn, keys_[from]);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEntriesIn, entries_[from]);
-        overBlocks(count_, countU_, shift);
-        glUseProgram(scan_);
-        glUniform1i(scanU_.length, int(histogramLength));
-        glDispatchCompute(1, 1, 1);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeysOut, keys_[from ^ 1]);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEntriesOut, entries_[from ^ 1]);
-        overBlocks(scatter_, scatterU_, shift);
-    }
+    for (int pass = 0; pass < passCount; ++pass, from ^= 1) radixPass(pairs, pass * kDigitBits, from);
     return entries_[from];
 }
 

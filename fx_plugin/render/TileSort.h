@@ -11,10 +11,21 @@
 // particles); on the H200 that was 37 ms a frame against the tiled pass's 25 ms (docs/results.md,
 // session 24).
 //
+// The particles' front-to-back order too, where the view's list was built without its CPU sort
+// (DrawList::orderPending, for views of at least orderLimit() particles): run() with a DepthOrder
+// keys each particle by its batch and its depth (worked out as the CPU does, `precise`), sorts the
+// keys with the same radix passes (eight for the depth, one or two for the batch where there are
+// several) and adds the particles' pair counts up in that order (a scan in blocks of 1,024): the
+// pairs and lists are then those of the sorted list, bit for bit (TileSortTest), their entries
+// naming the particles where the unsorted list holds them. What the CPU saves: the radix sort and
+// the gather of the draw list, about half its time (bench_draw, docs/results.md session 29).
+//
 // GL state: run() binds shader storage buffers 0-4 and a program; the caller puts them back
 // (TiledPath's ComputeBindingsScope). Context current.
 #include <cstddef>
 #include <cstdint>
+
+#include <glm/glm.hpp>
 
 #include "ProgramCache.h"
 #include "TileBins.h"
@@ -29,6 +40,27 @@ public:
     static constexpr int kMaxRows = 16;            ///< rows of a block at most
     static constexpr int kDigitBits = 4;           ///< cs_particles_tile_sort.glsl's bits of the tile a pass
 
+    /// What run() needs to put the particles of an unsorted list (DrawList::orderPending) in
+    /// front-to-back order: the buffer holding its instances (two vec4 each, InstanceStream's
+    /// ParticleInstance), the view's eye and viewForward, the batches drawn back to front (a bit
+    /// per batch of TileBins' entries) and the batch count.
+    struct DepthOrder {
+        uint32_t instances = 0;
+        glm::vec3 eye{0.0f}, forward{0.0f, 0.0f, -1.0f};
+        uint32_t backToFront = 0;
+        int batchCount = 1;
+    };
+    /// The GPU sorts a view's particles (DrawList::orderPending) from this many particles on:
+    /// below it the CPU's sort costs less than the GPU's passes. The environment's
+    /// CUBEFX_TILED_GPU_ORDER (a whole number of particles; 0: every view) or setOrderLimit()'s
+    /// where either is set; else kOrderParticles, on a software rasterizer never (UINT32_MAX).
+    static constexpr uint32_t kOrderParticles = 32768;
+    static uint32_t orderLimit(bool softwareRasterizer);
+    static void setOrderLimit(uint32_t particles);
+    static void resetOrderLimit();  ///< back to the environment's, or the defaults
+    static const char* orderLimitProblem();  ///< what was wrong with CUBEFX_TILED_GPU_ORDER, or null
+    static uint64_t gpuOrderedViews();      ///< views run() ordered, since the process started
+
     TileSort() = default;
     ~TileSort();
     TileSort(const TileSort&) = delete;
@@ -38,6 +70,8 @@ public:
     /// the context's largest shader storage block. Context current.
     void bind(const ProgramCache& programs);
     bool ok() const { return emit_ && count_ && scan_ && scatter_; }
+    /// ok() and the order's four programs built.
+    bool orderOk() const { return ok() && orderKey_ && orderBatch_ && orderPrefix_ && orderAdd_; }
     /// Whether run() can take `bins` (its pairs fit a shader storage block of the context).
     bool fits(const TileBins& bins) const;
     /// Writes and sorts the pairs of `bins` (binParticles with Fill::Pairs); returns the buffer
@@ -45,7 +79,9 @@ public:
     /// !fits()). The buffer is the sort's own, valid until the next run(). Ends with a shader
     /// storage barrier.
     /// With `jobs`, the particles' words are copied into the mapped buffer on the host's threads.
-    uint32_t run(const TileBins& bins, const Jobs& jobs = Jobs());
+    /// With `order` (orderOk() only, else 0), bins of an unsorted list, binned as it lies: the
+    /// particles are put in front-to-back order first (above).
+    uint32_t run(const TileBins& bins, const Jobs& jobs = Jobs(), const DepthOrder* order = nullptr);
 
     /// The radix passes a view of `tileCount` tiles takes.
     static int passes(int tileCount);
@@ -63,14 +99,21 @@ public:
     static void ensureBuffer(uint32_t* buffer, size_t* capacity, size_t bytes);
 
 private:
-    uint32_t emit_ = 0, count_ = 0, scan_ = 0, scatter_ = 0;
     struct Uniforms {
         int groupsX = -1, particleCount = -1, tilesX = -1, pairCount = -1, shift = -1, blocks = -1, length = -1,
-            rows = -1;
+            rows = -1, eye = -1, forward = -1, backToFront = -1, batchCount = -1;
     };
-    Uniforms emitU_, countU_, scanU_, scatterU_;
-    uint32_t particles_ = 0, keys_[2] = {}, entries_[2] = {}, histogram_ = 0;
-    size_t particlesCapacity_ = 0, keysCapacity_[2] = {}, entriesCapacity_[2] = {}, histogramCapacity_ = 0;
+    // One radix pass over `count` keys_/entries_[from] into [from ^ 1] by kDigitBits at `shift`.
+    void radixPass(uint32_t count, int shift, int from);
+    // Sorts the particles (order) and writes them, with their first pairs, to ordered_.
+    void orderParticles(uint32_t particleCount, const DepthOrder& order);
+
+    uint32_t emit_ = 0, count_ = 0, scan_ = 0, scatter_ = 0;
+    uint32_t orderKey_ = 0, orderBatch_ = 0, orderPrefix_ = 0, orderAdd_ = 0;
+    Uniforms emitU_, countU_, scanU_, scatterU_, orderKeyU_, orderBatchU_, orderPrefixU_, orderAddU_;
+    uint32_t particles_ = 0, keys_[2] = {}, entries_[2] = {}, histogram_ = 0, ordered_ = 0;
+    size_t particlesCapacity_ = 0, keysCapacity_[2] = {}, entriesCapacity_[2] = {}, histogramCapacity_ = 0,
+           orderedCapacity_ = 0;
     int64_t maxBlockBytes_ = 0;
 };
 

@@ -220,7 +220,11 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
         !sort_.fits(record->bins)) {
         return false;
     }
-    if (record->bins.entryCount <= cpuListLimit(software_)) writeEntries(&record->bins, jobs);
+    // An unsorted list's lists can only come from the GPU, which sorts its particles first.
+    if (record->list.orderPending && !sort_.orderOk()) return false;
+    if (!record->list.orderPending && record->bins.entryCount <= cpuListLimit(software_)) {
+        writeEntries(&record->bins, jobs);
+    }
     const Target color = frame.sceneColor();
     narrowDepthRead(frame, tilesBound(record->bins, view.width, view.height), view.width, view.height);
     const Target opacity = lit ? record->opacity : Target{};  // lit smoke's opacity map, where there is one
@@ -271,26 +275,36 @@ void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Targe
     ComputeBindingsScope bindings;
     ensureObjects(view.width, view.height);
 
-    // The bins: each tile's list (written on the CPU when declared, else written and sorted on the
-    // GPU: TileSort.h), the tiles, the instances.
+    // The instances, the bins' lists (written on the CPU when declared, else written and sorted on
+    // the GPU: TileSort.h, which reads the instances where it sorts the particles too) and tiles.
+    // They go to storage buffers of the pass's own, kept (not orphaned) and written through a
+    // mapping on the host's threads. Through the raster path's vertex buffer, orphaned each frame
+    // and read here by compute, the H200's driver gave the CPU a store it writes slowly: 2.25 ms
+    // for the 8 MB of 256,000 particles, where the sort's 4 MB take 0.25 ms.
+    const int count = v.list.particleCount();
+    fillStorage(&instanceBuffer_, &instanceCapacity_, v.list.instances.data(), size_t(count) * sizeof(ParticleInstance),
+                draw_.jobs());
     uint32_t entries = 0;
     if (!bins.entries.empty()) {
         fillStorage(&entryBuffer_, &entryCapacity_, bins.entries.data(), bins.entries.size() * sizeof(uint32_t), draw_.jobs());
         entries = entryBuffer_;
         gCpuListViews.fetch_add(1, std::memory_order_relaxed);
     } else {
-        entries = sort_.run(bins, draw_.jobs());
+        TileSort::DepthOrder order;
+        if (v.list.orderPending) {
+            order.instances = instanceBuffer_;
+            order.eye = view.eye;
+            order.forward = viewForward(view);
+            order.batchCount = int(v.list.batches.size());
+            for (int b = 0; b < order.batchCount; ++b) {
+                if (v.list.batches[size_t(b)].backToFront) order.backToFront |= 1u << b;
+            }
+        }
+        entries = sort_.run(bins, draw_.jobs(), v.list.orderPending ? &order : nullptr);
         gGpuSortedViews.fetch_add(1, std::memory_order_relaxed);
     }
     if (!entries) return;
-    // The tiles and the instances go to storage buffers of the pass's own, kept (not orphaned) and
-    // written through a mapping on the host's threads. Through the raster path's vertex buffer,
-    // orphaned each frame and read here by compute, the H200's driver gave the CPU a store it
-    // writes slowly: 2.25 ms for the 8 MB of 256,000 particles, where the sort's 4 MB take 0.25 ms.
     fillStorage(&tileBuffer_, &tileCapacity_, bins.tiles.data(), bins.tiles.size() * sizeof(uint32_t), draw_.jobs());
-    const int count = v.list.particleCount();
-    fillStorage(&instanceBuffer_, &instanceCapacity_, v.list.instances.data(), size_t(count) * sizeof(ParticleInstance),
-                draw_.jobs());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceBinding, instanceBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEntryBinding, entries);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBinding, tileBuffer_);

@@ -9,7 +9,8 @@
 // (binParticles, TileBins.h: each particle into the tiles its bound touches, front to back). The
 // pass writes each tile's list on the GPU (TileSort.h: a pair per particle and tile, sorted by
 // tile, stably); a view of at most cpuListLimit() entries (none by default on a GPU) gets its lists
-// written on the CPU instead (writeEntries). It then sets each particle up once (a compute dispatch, one invocation per particle: what the vertex shader works
+// written on the CPU instead (writeEntries). A view of many particles (ordersOnGpu) comes with its
+// list unsorted (DrawList::orderPending) and the GPU sorts its particles back to front first. It then sets each particle up once (a compute dispatch, one invocation per particle: what the vertex shader works
 // out), then dispatches one work group per tile that holds particles (one invocation per pixel:
 // one scene-depth fetch per pixel, the particles' records read in order, the blend in registers,
 // stopped once the pixel is opaque) into the plugin's own RGBA16F image, and draws those tiles
@@ -102,6 +103,14 @@ public:
     }
     /// Whether this view can be drawn tiled (the rule above; no GL).
     static bool canDraw(const ParticleView& view);
+    /// Whether a view of `particles` particles drawn here has them sorted back to front on the GPU
+    /// (TileSort::DepthOrder): the order's programs built, the GPU writes the lists (cpuListLimit()
+    /// 0) and at least TileSort::orderLimit() particles. The renderer builds such a view's list
+    /// without its CPU sort (DrawList::orderPending); declare() takes either.
+    bool ordersOnGpu(int particles) const {
+        return sort_.orderOk() && cpuListLimit(software_) == 0 && particles > 0 &&
+               uint32_t(particles) >= TileSort::orderLimit(software_);
+    }
 
     /// Bins the view's particles and declares its pass; false (nothing declared) where a particle
     /// has no bound, the lists would not fit a shader storage block or a lit batch finds no lit

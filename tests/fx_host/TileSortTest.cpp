@@ -7,8 +7,12 @@
 //    pairs than one block and a histogram longer than the scan group (1,024
 //    words: over 65,536 pairs), and a second run on the same buffers with fewer pairs;
 //  - the words themselves, without GL: pairs written row by row in particle order and sorted
-//    stably by tile are the lists (what the shaders do, done on the CPU).
+//    stably by tile are the lists (what the shaders do, done on the CPU);
+//  - the particles of an unsorted list (TileSort::DepthOrder) sorted on the GPU first: the lists
+//    of the list DrawListBuilder::order sorts on the CPU, bit for bit, each entry naming the same
+//    particle, with equal depths, -0 and +0, several batches (one drawn unsorted) and one batch.
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -16,6 +20,7 @@
 
 #include "FxTestHost.h"
 #include "render/ShaderLoader.h"
+#include "render/DrawList.h"
 #include "render/TileSort.h"
 
 namespace fxtest {
@@ -105,10 +110,11 @@ protected:
 
 TEST_F(TileSortTest, SortedEntriesAreTheCpuListsBitForBit) {
     std::vector<std::string> errors;
-    ASSERT_EQ(programs.build(fx::ProgramCache::tileSortKeys(), &errors), 4) << (errors.empty() ? "" : errors[0]);
+    ASSERT_EQ(programs.build(fx::ProgramCache::tileSortKeys(), &errors), 8) << (errors.empty() ? "" : errors[0]);
     fx::TileSort sort;
     sort.bind(programs);
     ASSERT_TRUE(sort.ok());
+    ASSERT_TRUE(sort.orderOk());
     int sortedAtLeastOncePastOneBlock = 0, longestHistogram = 0;
     for (int round = 0; round < 8; ++round) {
         const int rows = round / 2 == 0 ? 0 : round / 2 == 1 ? 1 : round / 2 == 2 ? 3 : fx::TileSort::kMaxRows;
@@ -156,6 +162,120 @@ TEST_F(TileSortTest, SortedEntriesAreTheCpuListsBitForBit) {
     EXPECT_EQ(fx::TileSort::passes(8160), 4);
     EXPECT_EQ(fx::TileSort::passes(65536), 4);
     EXPECT_EQ(fx::TileSort::passes(65537), 5);
+}
+
+// The particles of a list built without its order, sorted on the GPU (TileSort::DepthOrder): the
+// lists are those of the same list sorted on the CPU (DrawListBuilder::order), each entry the
+// same particle where the unsorted list holds it (its life is its number), in every batch mix.
+TEST_F(TileSortTest, ParticlesSortedOnTheGpuGiveTheCpuOrdersLists) {
+    std::vector<std::string> errors;
+    ASSERT_EQ(programs.build(fx::ProgramCache::tileSortKeys(), &errors), 8) << (errors.empty() ? "" : errors[0]);
+    fx::TileSort sort;
+    sort.bind(programs);
+    ASSERT_TRUE(sort.orderOk());
+    uint32_t instances = 0;
+    glGenBuffers(1, &instances);
+    const uint64_t orderedBefore = fx::TileSort::gpuOrderedViews();
+    int runs = 0;
+    for (const Case& c : kCases) {
+        for (int mix = 0; mix < 3; ++mix) {
+            SCOPED_TRACE(testing::Message() << c.width << "x" << c.height << ", mix " << mix);
+            Scene s = sceneOf(c.particles, c.largest, 11 + unsigned(mix));
+            const int n = int(s.particles.size());
+            for (int i = 0; i < n; ++i) {
+                fx::ParticleInstance& p = s.particles[size_t(i)];
+                if (i % 7 == 3) p = s.particles[size_t(i - 1)];  // equal depths (the same place)
+                p.life = float(i);                               // which particle it is
+            }
+            // Two spheres across the near plane (in every tile) at depths +0 and -0: 0.1 m either
+            // side of the eye, square to the view axis (whose x is 0: the products' signs differ).
+            const fx::ViewInfo view = viewOf(c.width, c.height);
+            const int zeros = s.ranges[2].first + 1;
+            for (int j = 0; j < 2; ++j) {
+                fx::ParticleInstance& p = s.particles[size_t(zeros + j)];
+                p.x = view.eye.x + (j == 0 ? 0.1f : -0.1f);
+                p.y = view.eye.y;
+                p.z = view.eye.z;
+                p.size = 1.0f;
+            }
+            const glm::vec3 forward = fx::viewForward(view);
+            float depths[2];
+            for (int j = 0; j < 2; ++j) {
+                const fx::ParticleInstance& p = s.particles[size_t(zeros + j)];
+                depths[j] = (p.x - view.eye.x) * forward.x + (p.y - view.eye.y) * forward.y + (p.z - view.eye.z) * forward.z;
+            }
+            ASSERT_EQ(depths[0], 0.0f);
+            ASSERT_EQ(depths[1], 0.0f);
+            ASSERT_NE(std::signbit(depths[0]), std::signbit(depths[1])) << "a +0 and a -0";
+            // The -0 first in the pool: front to back the tie keeps the later one first, where a
+            // key of -0's own bits would put the -0 first.
+            if (!std::signbit(depths[0])) std::swap(s.particles[size_t(zeros)].x, s.particles[size_t(zeros + 1)].x);
+            fx::DrawList list;
+            list.instances.resize(size_t(n));
+            std::copy(s.particles.begin(), s.particles.end(), list.instances.begin());
+            // mix 0: three batches, the middle one additive; 1: all three back to front; 2: one batch.
+            std::vector<fx::TileBins::Range> ranges = s.ranges;
+            if (mix == 2) ranges = {{0, n, false}};
+            for (size_t b = 0; b < ranges.size(); ++b) {
+                fx::DrawBatch batch;
+                batch.first = ranges[b].first;
+                batch.count = ranges[b].count;
+                batch.technique = ranges[b].sphere ? fx::Technique::Spherical : fx::Technique::Soft;
+                batch.backToFront = !(mix == 0 && b == 1);
+                list.batches.push_back(batch);
+            }
+            list.orderPending = true;
+            const int batchCount = int(ranges.size());
+            // The GPU: the unsorted list binned as it lies.
+            fx::TileBins words;
+            ASSERT_TRUE(fx::binParticles(view, list.instances.data(), ranges.data(), batchCount, nullptr, &words,
+                                         fx::Jobs(), fx::TileBins::Fill::Pairs));
+            glBindBuffer(kShaderStorageBuffer, instances);
+            glBufferData(kShaderStorageBuffer, GLsizeiptr(size_t(n) * sizeof(fx::ParticleInstance)), list.instances.data(),
+                         0x88E0 /* GL_STREAM_DRAW */);
+            fx::TileSort::DepthOrder order;
+            order.instances = instances;
+            order.eye = view.eye;
+            order.forward = fx::viewForward(view);
+            order.batchCount = batchCount;
+            for (int b = 0; b < batchCount; ++b) order.backToFront |= list.batches[size_t(b)].backToFront ? 1u << b : 0u;
+            const uint32_t buffer = sort.run(words, fx::Jobs(), &order);
+            ASSERT_NE(buffer, 0u);
+            std::vector<uint32_t> got(words.entryCount);
+            glBindBuffer(kShaderStorageBuffer, buffer);
+            glGetBufferSubData(kShaderStorageBuffer, 0, GLsizeiptr(got.size() * 4), got.data());
+            glBindBuffer(kShaderStorageBuffer, 0);
+            // The CPU: the same list sorted, binned with its lists; each entry renamed to the
+            // particle's place in the unsorted list.
+            fx::DrawListBuilder builder;
+            fx::DrawList sorted = list;
+            builder.order(view, &sorted);
+            fx::TileBins lists;
+            ASSERT_TRUE(fx::binParticles(view, sorted.instances.data(), ranges.data(), batchCount, nullptr, &lists));
+            ASSERT_EQ(lists.entries.size(), got.size());
+            ASSERT_GT(got.size(), 0u);
+            constexpr uint32_t kIndex = (1u << fx::TileBins::kBatchShift) - 1u;
+            size_t differ = 0, moved = 0;
+            for (size_t e = 0; e < got.size(); ++e) {
+                const uint32_t want = lists.entries[e];
+                const uint32_t particle = uint32_t(sorted.instances[want & kIndex].life);
+                differ += got[e] != ((want & ~kIndex) | particle) ? 1 : 0;
+                moved += (want & kIndex) != particle ? 1 : 0;
+            }
+            EXPECT_EQ(differ, 0u) << "of " << got.size() << " entries";
+            EXPECT_GT(moved, got.size() / 4) << "the sort moved too few particles to prove it";
+            ++runs;
+        }
+    }
+    glDeleteBuffers(1, &instances);
+    EXPECT_EQ(fx::TileSort::gpuOrderedViews(), orderedBefore + uint64_t(runs));
+    // The limit: never on a software rasterizer, kOrderParticles elsewhere, setOrderLimit's where set.
+    EXPECT_EQ(fx::TileSort::orderLimit(true), UINT32_MAX);
+    EXPECT_EQ(fx::TileSort::orderLimit(false), fx::TileSort::kOrderParticles);
+    fx::TileSort::setOrderLimit(5);
+    EXPECT_EQ(fx::TileSort::orderLimit(true), 5u);
+    fx::TileSort::resetOrderLimit();
+    EXPECT_EQ(fx::TileSort::orderLimit(false), fx::TileSort::kOrderParticles);
 }
 
 }  // namespace tile_sort_test

@@ -20,6 +20,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "FxTestHost.h"
+#include "render/TileSort.h"
 #include "render/TiledPath.h"
 
 namespace fxtest {
@@ -133,12 +134,19 @@ TEST_F(TiledPathTest, TiledFramesMatchRasterisedOnes) {
 
 // A view's lists, written on the CPU (a software rasterizer's default up to
 // kSoftwareCpuListEntries: these tests run on one) or sorted on the GPU (TileSort: a GPU's default,
-// kCpuListEntries 0), are the same lists: the frames are equal bit for bit, for each technique, and
-// the counters say which way each frame went.
+// kCpuListEntries 0), are the same lists, and so are those of a list whose particles the GPU sorted
+// back to front (TileSort::orderLimit 0; a GPU's default from kOrderParticles): the frames are
+// equal bit for bit, for each technique, coloured by life so that the order shows, and the
+// counters say which way each frame went.
 TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
     struct LimitBack {
-        ~LimitBack() { fx::TiledPath::resetCpuListLimit(); }
+        ~LimitBack() {
+            fx::TiledPath::resetCpuListLimit();
+            fx::TileSort::resetOrderLimit();
+        }
     } limitBack;
+    direct.desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(1.0f, 0.1f, 0.1f, 0.9f)},
+                                      fx::ColorStop{1.0f, glm::vec4(0.1f, 0.2f, 1.0f, 0.6f)}};
     ASSERT_TRUE(fx::TiledPath::softwareRasterizer(reinterpret_cast<const char*>(glGetString(GL_RENDERER))));
     ASSERT_EQ(fx::TiledPath::cpuListLimit(true), fx::TiledPath::kSoftwareCpuListEntries);
     ASSERT_EQ(fx::TiledPath::cpuListLimit(false), fx::TiledPath::kCpuListEntries);
@@ -163,12 +171,25 @@ TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
         EXPECT_TRUE(graph.ran(fx::TiledPath::kPass));
         EXPECT_EQ(fx::TiledPath::cpuListViews(), cpu + 1) << "a small view's lists are the CPU's on llvmpipe";
         EXPECT_EQ(fx::TiledPath::gpuSortedViews(), gpu);
+        const uint64_t ordered = fx::TileSort::gpuOrderedViews();
         fx::TiledPath::setCpuListLimit(0);
         const Image sorted = draw(direct, graph, scene, view, true);
         EXPECT_EQ(fx::TiledPath::cpuListViews(), cpu + 1);
         EXPECT_EQ(fx::TiledPath::gpuSortedViews(), gpu + 1) << "with the limit at 0 the GPU sorts";
+        EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered) << "llvmpipe: the CPU sorts the particles";
+        fx::TileSort::setOrderLimit(0);
+        const Image gpuOrdered = draw(direct, graph, scene, view, true);
+        EXPECT_EQ(fx::TiledPath::gpuSortedViews(), gpu + 2);
+        EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered + 1) << "with the order limit at 0 the GPU sorts them";
         fx::TiledPath::resetCpuListLimit();
+        fx::TileSort::resetOrderLimit();
         EXPECT_EQ(maxAbsDiff(byDefault, sorted), 0);
+        EXPECT_EQ(maxAbsDiff(byDefault, gpuOrdered), 0);
+        // The same particles in pool order look different: the order is in the picture.
+        direct.desc.render.sortBackToFront = false;
+        const Image unsorted = draw(direct, graph, scene, view, true);
+        direct.desc.render.sortBackToFront = true;
+        EXPECT_GT(maxAbsDiff(byDefault, unsorted), 20);
         int smoke = 0;
         for (int y = 0; y < kH; ++y) {
             for (int x = 0; x < kW; ++x) smoke += byDefault.at(x, y)[0] > 60 ? 1 : 0;
@@ -314,6 +335,28 @@ TEST_F(TiledPathTest, ViewsItCannotDrawAreDrawnAsWithoutIt) {
     const Image tiled = draw(direct, graph, scene, ortho, true);
     EXPECT_FALSE(graph.ran(fx::TiledPath::kPass));
     EXPECT_EQ(maxAbsDiff(plain, tiled), 0);
+    // Where the GPU would sort the particles (limits at 0) the list comes unsorted, and the
+    // raster path it goes to sorts it on the CPU first: the same frame. The nearer puff is first in
+    // the pool and of another colour: drawn unsorted, the frame would differ.
+    direct.desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(1.0f, 0.1f, 0.1f, 0.9f)},
+                                      fx::ColorStop{1.0f, glm::vec4(0.1f, 0.2f, 1.0f, 0.9f)}};
+    direct.set({HandParticle{glm::vec3(0.0f, 1.5f, 3.0f), 3.0f, 0.1f}, HandParticle{glm::vec3(0.5f, 1.5f, -1.0f), 4.0f, 0.9f}});
+    const Image sortedPlain = draw(direct, graph, scene, ortho, false);
+    direct.desc.render.sortBackToFront = false;
+    const Image unsortedPlain = draw(direct, graph, scene, ortho, false);
+    direct.desc.render.sortBackToFront = true;
+    EXPECT_GT(maxAbsDiff(sortedPlain, unsortedPlain), 20) << "the order shows in the picture";
+    fx::TiledPath::setCpuListLimit(0);
+    fx::TileSort::setOrderLimit(0);
+    draw(direct, graph, scene, view, true);  // a perspective view: the tiled programs are built
+    EXPECT_TRUE(graph.ran(fx::TiledPath::kPass));
+    const uint64_t ordered = fx::TileSort::gpuOrderedViews();
+    const Image deferred = draw(direct, graph, scene, ortho, true);
+    fx::TiledPath::resetCpuListLimit();
+    fx::TileSort::resetOrderLimit();
+    EXPECT_FALSE(graph.ran(fx::TiledPath::kPass));
+    EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered);
+    EXPECT_EQ(maxAbsDiff(sortedPlain, deferred), 0);
 }
 
 // Tiling::Auto, the default: rasterised on a software rasterizer (this context: llvmpipe), as

@@ -82,6 +82,53 @@ TEST(ParallelBuild, EachReactionComesOutAsBuiltAlone) {
     }
 }
 
+// A list built without its back-to-front sort (deferOrder, for the tiled path's GPU sort) holds
+// each batch's visible particles in pool order and says so; order() then makes it the sorted
+// build bit for bit, however the pieces run, in one batch of three that is drawn unsorted.
+TEST(ParallelBuild, DeferredOrderPutInPlaceIsTheSortedBuild) {
+    const Scene a(60000), b(30000);
+    const fx::ParticleBatch batches[3] = {a.batch(true), b.batch(false), b.batch(true)};
+    for (HowRun how : kRuns) {
+        JobHost host(how);
+        fx::DrawListBuilder builder;
+        fx::DrawList sorted, deferred, poolOrder;
+        builder.build(a.view, batches, 3, fx::Technique::FromReaction, ~0u, &sorted, fx::Jobs(&host));
+        const fx::ParticleBatch unsortedA = a.batch(false);
+        fx::DrawListBuilder other;
+        other.build(a.view, &unsortedA, 1, fx::Technique::FromReaction, ~0u, &poolOrder);
+        ASSERT_EQ(poolOrder.particleCount(), sorted.batches[0].count);
+        EXPECT_FALSE(sorted.orderPending);
+        for (int round = 0; round < 2; ++round) {
+            builder.build(a.view, batches, 3, fx::Technique::FromReaction, ~0u, &deferred, fx::Jobs(&host), true);
+            EXPECT_TRUE(deferred.orderPending);
+            ASSERT_EQ(deferred.particleCount(), sorted.particleCount());
+            ASSERT_EQ(deferred.batches.size(), 3u);
+            EXPECT_TRUE(deferred.batches[0].backToFront);
+            EXPECT_FALSE(deferred.batches[1].backToFront);
+            EXPECT_TRUE(deferred.batches[2].backToFront);
+            // Pool order: the first batch is what drawing a's pool unsorted gives, not the sorted one.
+            EXPECT_EQ(std::memcmp(deferred.instances.data(), poolOrder.instances.data(),
+                                  size_t(poolOrder.particleCount()) * sizeof(fx::ParticleInstance)), 0);
+            EXPECT_NE(std::memcmp(deferred.instances.data(), sorted.instances.data(),
+                                  size_t(poolOrder.particleCount()) * sizeof(fx::ParticleInstance)), 0);
+            builder.order(a.view, &deferred, fx::Jobs(&host));
+            EXPECT_FALSE(deferred.orderPending);
+            EXPECT_EQ(std::memcmp(deferred.instances.data(), sorted.instances.data(),
+                                  size_t(sorted.particleCount()) * sizeof(fx::ParticleInstance)), 0)
+                << "how " << int(how) << ", round " << round;
+            builder.order(a.view, &deferred, fx::Jobs(&host));  // nothing pending: nothing moves
+            EXPECT_EQ(std::memcmp(deferred.instances.data(), sorted.instances.data(),
+                                  size_t(sorted.particleCount()) * sizeof(fx::ParticleInstance)), 0);
+        }
+    }
+    // Additive alone: no order is pending.
+    fx::DrawListBuilder builder;
+    fx::DrawList list;
+    builder.build(b.view, &batches[1], 1, fx::Technique::FromReaction, ~0u, &list, fx::Jobs(), true);
+    EXPECT_GT(list.particleCount(), 0);
+    EXPECT_FALSE(list.orderPending);
+}
+
 TEST(ParallelBuild, SmallPoolsNeverReachTheHost) {
     const Scene s(3000);
     const fx::ParticleBatch batch = s.batch(true);

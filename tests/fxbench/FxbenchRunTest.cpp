@@ -239,11 +239,15 @@ TEST(Fxbench, LitTiledModesDrawTheLitPictureInTheTiledPass) {
 // CUBEFX_TILED_CPU_LISTS (TiledPath::cpuListLimit): 0 has the GPU sort the lists of a view the CPU
 // lists by default on llvmpipe (a software rasterizer's default; a GPU's is the GPU's sort); the
 // picture is the same byte for byte, and the sort's dispatches show in the pass's shader
-// invocations. A value that is not a number is reported and ignored.
+// invocations. A value that is not a number is reported and ignored. The same for
+// CUBEFX_TILED_GPU_ORDER (TileSort::orderLimit): 0, with the GPU's lists, has the GPU sort the
+// particles back to front too.
 TEST(Fxbench, TiledListsFromTheCpuOrTheGpuSortGiveTheSamePicture) {
     std::map<std::string, std::string> png;
     std::map<std::string, double> shaded;
-    for (const std::string env : {"", "CUBEFX_TILED_CPU_LISTS=0 ", "CUBEFX_TILED_CPU_LISTS=12x "}) {
+    const std::string gpuOrder = "CUBEFX_TILED_CPU_LISTS=0 CUBEFX_TILED_GPU_ORDER=0 ", badOrder = "CUBEFX_TILED_GPU_ORDER=1e5 ";
+    for (const std::string& env : {std::string(), std::string("CUBEFX_TILED_CPU_LISTS=0 "),
+                                  std::string("CUBEFX_TILED_CPU_LISTS=12x "), gpuOrder, badOrder}) {
         SCOPED_TRACE(env);
         const std::string json = tempPath("lists.json"), images = tempPath("lists_images");
         const RunOutput r = cubetest::runCommand(env + std::string(CUBE_TEST_BIN_DIR) +
@@ -254,6 +258,8 @@ TEST(Fxbench, TiledListsFromTheCpuOrTheGpuSortGiveTheSamePicture) {
         ASSERT_EQ(r.status, 0) << r.output;
         const bool bad = env.find("12x") != std::string::npos;
         EXPECT_EQ(r.output.find("CUBEFX_TILED_CPU_LISTS is not a whole number") != std::string::npos, bad) << r.output;
+        EXPECT_EQ(r.output.find("CUBEFX_TILED_GPU_ORDER is not a whole number") != std::string::npos, env == badOrder)
+            << r.output;
         const YAML::Node run = YAML::Load(readFile(json));
         const YAML::Node m = modeNode(run, "soft+tiled");
         ASSERT_TRUE(m["passes_shaded"]["chase.particles_tiled"]) << "the context counts compute invocations";
@@ -268,6 +274,12 @@ TEST(Fxbench, TiledListsFromTheCpuOrTheGpuSortGiveTheSamePicture) {
     EXPECT_EQ(png[byDefault], png[bad]);
     EXPECT_GT(shaded[sorted], shaded[byDefault] + 1024.0) << "the sort's passes (a scan of 1,024 each) did not run";
     EXPECT_EQ(shaded[bad], shaded[byDefault]) << "an unreadable value keeps the default";
+    // The particles sorted back to front on the GPU (TileSort::DepthOrder): the same picture, and
+    // the order's passes ran (eight radix passes over the particles, each with a scan of 1,024).
+    EXPECT_EQ(png[byDefault], png[gpuOrder]) << "the same order, the same picture";
+    EXPECT_GT(shaded[gpuOrder], shaded[sorted] + 8 * 1024.0) << "the order's passes did not run";
+    EXPECT_EQ(png[byDefault], png[badOrder]);
+    EXPECT_EQ(shaded[badOrder], shaded[byDefault]);
 }
 
 // Per particle pass, the samples it wrote: their sum is particle_fragments; quarter res's
