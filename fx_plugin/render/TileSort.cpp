@@ -33,14 +33,14 @@ int64_t orderLimitFromEnvironment() {
     for (const char* c = v; *c; ++c) {
         if (*c < '0' || *c > '9') {
             gOrderLimitProblem = "fx: CUBEFX_TILED_GPU_ORDER is not a whole number of particles; the tiled path "
-                                 "keeps its default (the GPU sorts views of 32768 particles or more)";
+                                 "keeps its default (the GPU sorts views of 16384 particles or more)";
             return -1;
         }
         n = std::min<uint64_t>(n * 10 + uint64_t(*c - '0'), UINT32_MAX);
     }
     return int64_t(n);
 }
-static_assert(TileSort::kOrderParticles == 32768, "the message above names the default");
+static_assert(TileSort::kOrderParticles == 16384, "the message above names the default");
 const int64_t gOrderLimitFromEnvironment = orderLimitFromEnvironment();
 std::atomic<int64_t> gOrderLimit{gOrderLimitFromEnvironment};  // -1: the defaults
 std::atomic<uint64_t> gGpuOrderedViews{0};

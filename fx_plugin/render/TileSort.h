@@ -18,7 +18,8 @@
 // several) and adds the particles' pair counts up in that order (a scan in blocks of 1,024): the
 // pairs and lists are then those of the sorted list, bit for bit (TileSortTest), their entries
 // naming the particles where the unsorted list holds them. What the CPU saves: the radix sort and
-// the gather of the draw list, about half its time (bench_draw, docs/results.md session 29).
+// the gather of the draw list (bench_draw, 256,000 particles: 10.9 -> 4.4 ms on one thread; on
+// the H200 the tiled frame's declare 6.6 -> 3.1 ms, docs/results.md session 29).
 //
 // GL state: run() binds shader storage buffers 0-4 and a program; the caller puts them back
 // (TiledPath's ComputeBindingsScope). Context current.
@@ -50,11 +51,14 @@ public:
         uint32_t backToFront = 0;
         int batchCount = 1;
     };
-    /// The GPU sorts a view's particles (DrawList::orderPending) from this many particles on:
-    /// below it the CPU's sort costs less than the GPU's passes. The environment's
-    /// CUBEFX_TILED_GPU_ORDER (a whole number of particles; 0: every view) or setOrderLimit()'s
-    /// where either is set; else kOrderParticles, on a software rasterizer never (UINT32_MAX).
-    static constexpr uint32_t kOrderParticles = 32768;
+    /// The GPU sorts a view's particles (DrawList::orderPending) from this many particles on.
+    /// H200 (docs/results.md, session 29): the GPU's order costs the pass 0.11-0.13 ms up to
+    /// 64,000 particles, 0.36 ms at 256,000; the CPU's sort and gather cost the declare
+    /// 0.16-0.82 ms at 16,000 particles (two rounds), 1.3 ms at 64,000, 3.5 ms at 256,000 (16
+    /// threads). The environment's CUBEFX_TILED_GPU_ORDER (a whole number of particles; 0: every
+    /// view) or setOrderLimit()'s where either is set; else kOrderParticles, on a software
+    /// rasterizer never (UINT32_MAX).
+    static constexpr uint32_t kOrderParticles = 16384;
     static uint32_t orderLimit(bool softwareRasterizer);
     static void setOrderLimit(uint32_t particles);
     static void resetOrderLimit();  ///< back to the environment's, or the defaults
