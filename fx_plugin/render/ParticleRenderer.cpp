@@ -180,11 +180,12 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     uint32_t usable = wasReady ? draw_.programs().usableTechniques(quarterRes) & mine : mine;
     // A view the tiled path will likely draw, of enough particles, is sorted back to front on the
     // GPU (TileSort.h): its list is built without the CPU's sort, which order() below does where
-    // another path draws it after all.
+    // another path draws it after all (spheres under an orthographic projection; a view it cannot
+    // bin), at the cost of a copy of the list.
     int alive = 0;
     for (int b = 0; b < batchCount; ++b) alive += batches[b].pool ? batches[b].pool->alive() : 0;
-    const bool deferOrder = !(options.quarterRes && options.quarterResAlways) && tiled_.ordersOnGpu(alive) &&
-                            TiledPath::wanted(options);
+    const bool deferOrder = !(options.quarterRes && options.quarterResAlways) && batchCount <= TiledPath::kMaxBatches &&
+                            TiledPath::flatW(view.proj) && tiled_.ordersOnGpu(alive) && TiledPath::wanted(options);
     builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list, config_.jobs,
                    deferOrder);
     if (record->list.particleCount() == 0) return 0;

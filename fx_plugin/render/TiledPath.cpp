@@ -182,13 +182,17 @@ void TiledPath::bind(const ProgramCache& programs) {
     }
 }
 
+bool TiledPath::flatW(const glm::mat4& p) {
+    return p[0][3] == 0.0f && p[1][3] == 0.0f && p[0][0] * p[1][1] - p[1][0] * p[0][1] != 0.0f;
+}
+
 bool TiledPath::canDraw(const ParticleView& v) {
     if (v.list.batches.size() > size_t(kMaxBatches)) return false;
     const glm::mat4& p = v.view.proj;
     // Billboards: a projection whose w does not depend on x and y (perspective, orthographic).
     // Spheres: a perspective one whose x and y are not mixed (their rays' slopes, as the raster
     // path's vertex shader has them).
-    const bool flatW = p[0][3] == 0.0f && p[1][3] == 0.0f && p[0][0] * p[1][1] - p[1][0] * p[0][1] != 0.0f;
+    const bool flatW = TiledPath::flatW(p);
     const bool perspective = flatW && p[0][1] == 0.0f && p[1][0] == 0.0f && p[2][3] == -1.0f && p[3][3] == 0.0f;
     for (const DrawBatch& b : v.list.batches) {
         const bool billboard = b.technique == Technique::Hard || b.technique == Technique::Soft;

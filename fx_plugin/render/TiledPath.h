@@ -103,6 +103,8 @@ public:
     }
     /// Whether this view can be drawn tiled (the rule above; no GL).
     static bool canDraw(const ParticleView& view);
+    /// Whether `proj`'s w does not depend on x and y: what canDraw asks of every view.
+    static bool flatW(const glm::mat4& proj);
     /// Whether a view of `particles` particles drawn here has them sorted back to front on the GPU
     /// (TileSort::DepthOrder): the order's programs built, the GPU writes the lists (cpuListLimit()
     /// 0) and at least TileSort::orderLimit() particles. The renderer builds such a view's list
