@@ -150,7 +150,11 @@ void tileBinsBench(benchmark::State& state, float size) {
     const fx::BillboardReach reach = benchReach(s.view);
     const fx::TileBins::Range range{0, list.particleCount(), false};
     fx::TileBins bins;
-    const fx::TileBins::Fill fill = state.range(2) ? fx::TileBins::Fill::Pairs : fx::TileBins::Fill::Entries;
+    // range(2): 0 the lists (Entries), 1 the GPU's words (Pairs), 2 the words without first entries
+    // (Ranges: the GPU orders the particles).
+    const fx::TileBins::Fill fill = state.range(2) == 2 ? fx::TileBins::Fill::Ranges
+                                    : state.range(2)    ? fx::TileBins::Fill::Pairs
+                                                        : fx::TileBins::Fill::Entries;
     for (auto _ : state) {
         fx::binParticles(s.view, list.instances.data(), &range, 1, &reach, &bins, fx::Jobs(&host), fill);
         benchmark::DoNotOptimize(bins.entries.data());
@@ -210,7 +214,7 @@ BENCHMARK(BM_DrawListBuild)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 BENCHMARK(BM_ScreenRect)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 BENCHMARK(BM_ScreenRectBox)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 BENCHMARK(BM_ScreenRectTrimmed)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
-BENCHMARK(BM_TileBins)->ArgsProduct({{1000, 16000, 256000, 1000000}, threadCounts(), {0, 1}})->UseRealTime();
+BENCHMARK(BM_TileBins)->ArgsProduct({{1000, 16000, 256000, 1000000}, threadCounts(), {0, 1, 2}})->UseRealTime();
 BENCHMARK(BM_TileBinsLarge)->ArgsProduct({{300, 1000}, {1, 2}, {0, 1}})->UseRealTime();
 BENCHMARK(BM_InstanceCopy)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 

@@ -126,7 +126,7 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
     }
     out->entryCount = uint32_t(total);
     // Each particle's first entry: its piece's, then its own count added up in the piece.
-    jobs.run(pieces, [&](uint32_t piece) {
+    if (fill != TileBins::Fill::Ranges) jobs.run(pieces, [&](uint32_t piece) {
         uint32_t first = pieceFirst[piece];
         for (size_t k = pieces.begin(piece); k < pieces.end(piece); ++k) {
             const uint32_t count = words[k * 4 + 2];

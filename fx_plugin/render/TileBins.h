@@ -21,8 +21,10 @@ struct TileBins {
         bool sphere = false;       ///< spheres: bounded as Footprint::Box, the reach table not used
     };
     /// What binParticles writes besides the counts: the lists (Entries), or only what the GPU
-    /// writes them from (Pairs: `particles`).
-    enum class Fill : uint8_t { Entries, Pairs };
+    /// writes them from (Pairs: `particles`); Ranges: `particles` with each one's entry count in
+    /// place of its first entry, for the GPU that orders the particles itself and adds the counts up
+    /// in its order (TileSort::DepthOrder).
+    enum class Fill : uint8_t { Entries, Pairs, Ranges };
     /// Per particle, front to back, four words: its tile range (tx0 | tx1 << 16, ty0 | ty1 << 16;
     /// tx0 > tx1 where it touches none), its first entry in pair order (the entries of the
     /// particles before it added up) and its entry. The GPU writes a pair (tile, entry) for every

@@ -83,8 +83,9 @@ public:
     /// !fits()). The buffer is the sort's own, valid until the next run(). Ends with a shader
     /// storage barrier.
     /// With `jobs`, the particles' words are copied into the mapped buffer on the host's threads.
-    /// With `order` (orderOk() only, else 0), bins of an unsorted list, binned as it lies: the
-    /// particles are put in front-to-back order first (above).
+    /// With `order` (orderOk() only, else 0), bins of an unsorted list, binned as it lies
+    /// (Fill::Ranges, or Pairs: the first entries are not read): the particles are put in
+    /// front-to-back order first (above).
     uint32_t run(const TileBins& bins, const Jobs& jobs = Jobs(), const DepthOrder* order = nullptr);
 
     /// The radix passes a view of `tileCount` tiles takes.

@@ -220,7 +220,7 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
     }
     const BillboardReach reach = draw_.billboardReach(*record, false);
     if (!binParticles(view, record->list.instances.data(), ranges, batchCount, &reach, &record->bins, jobs,
-                      TileBins::Fill::Pairs) ||
+                      record->list.orderPending ? TileBins::Fill::Ranges : TileBins::Fill::Pairs) ||
         !sort_.fits(record->bins)) {
         return false;
     }

@@ -229,7 +229,18 @@ TEST_F(TileSortTest, ParticlesSortedOnTheGpuGiveTheCpuOrdersLists) {
             // The GPU: the unsorted list binned as it lies.
             fx::TileBins words;
             ASSERT_TRUE(fx::binParticles(view, list.instances.data(), ranges.data(), batchCount, nullptr, &words,
-                                         fx::Jobs(), fx::TileBins::Fill::Pairs));
+                                         fx::Jobs(), fx::TileBins::Fill::Ranges));
+            // Ranges: each particle's own entry count where Pairs has its first entry.
+            uint64_t counted = 0;
+            for (size_t k = 0; k < words.particles.size() / 4; ++k) {
+                const uint32_t* w = &words.particles[k * 4];
+                const uint32_t tiles = (w[0] & 0xffffu) > (w[0] >> 16)
+                                           ? 0u
+                                           : ((w[0] >> 16) - (w[0] & 0xffffu) + 1) * ((w[1] >> 16) - (w[1] & 0xffffu) + 1);
+                ASSERT_EQ(w[2], tiles) << "particle " << k;
+                counted += w[2];
+            }
+            EXPECT_EQ(counted, uint64_t(words.entryCount));
             glBindBuffer(kShaderStorageBuffer, instances);
             glBufferData(kShaderStorageBuffer, GLsizeiptr(size_t(n) * sizeof(fx::ParticleInstance)), list.instances.data(),
                          0x88E0 /* GL_STREAM_DRAW */);
