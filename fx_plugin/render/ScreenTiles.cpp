@@ -66,9 +66,9 @@ PieceBound boundPiece(const FootprintMath& math, const ViewInfo& view, bool flat
         if (!plainPerspective(P)) {
             for (int j = 0; j < n; ++j) b[j] = math.general(instances[first + j]);
         } else if (flat) {
-            for (int j = 0; j < n; ++j) b[j] = math.perspective<true>(instances[first + j]);
+            math.perspectiveRun<true>(instances + first, n, b);
         } else {
-            for (int j = 0; j < n; ++j) b[j] = math.perspective<false>(instances[first + j]);
+            math.perspectiveRun<false>(instances + first, n, b);
         }
         for (int j = 0; j < n; ++j) {
             const Bounds& q = b[j];

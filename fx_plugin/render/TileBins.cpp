@@ -13,6 +13,7 @@ using namespace footprint;
 
 namespace {
 constexpr int kTileSize = ScreenTiles::kTileSize;
+constexpr int kChunk = 256;  // particles bounded before their tiles are marked
 }  // namespace
 
 bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const TileBins::Range* batches,
@@ -44,17 +45,6 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
         n += std::max(batches[batchCount - 1 - j].count, 0);
     }
     orderStart[batchCount] = n;
-    // Walks k over [k0, k1) with its entry (instance | batch << kBatchShift).
-    auto walk = [&](size_t k0, size_t k1, auto&& f) {
-        int j = 0;
-        while (j < batchCount && size_t(orderStart[j + 1]) <= k0) ++j;
-        for (size_t k = k0; k < k1; ++k) {
-            while (size_t(orderStart[j + 1]) <= k) ++j;
-            const int b = batchCount - 1 - j;
-            const int i = batches[b].first + batches[b].count - 1 - (int(k) - orderStart[j]);
-            f(k, i, uint32_t(i) | (uint32_t(b) << TileBins::kBatchShift));
-        }
-    };
     const int tileCount = tilesX * tilesY;
     const FootprintMath flat(view, true, reach), box(view, false, nullptr, 0.5f);
     const bool perspective = plainPerspective(view.proj);
@@ -75,45 +65,67 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
     jobs.run(pieces, [&](uint32_t piece) {
         int32_t* grid = &out->grids[piece * gridSize];
         uint64_t sum = 0;
-        walk(pieces.begin(piece), pieces.end(piece), [&](size_t k, int i, uint32_t entry) {
-            const bool sphere = batches[entry >> TileBins::kBatchShift].sphere;
+        Bounds bounds[kChunk];
+        // A stretch of k at a time that lies in one batch and one chunk: its instances are
+        // contiguous (k counts them down), so their bounds come four at a time (perspectiveRun)
+        // in instance order, read back in k order.
+        size_t k = pieces.begin(piece);
+        const size_t end = pieces.end(piece);
+        int j = 0;
+        while (k < end) {
+            while (size_t(orderStart[j + 1]) <= k) ++j;
+            const size_t stretchEnd = std::min({end, size_t(orderStart[j + 1]), k + size_t(kChunk)});
+            const int len = int(stretchEnd - k);
+            const int b = batchCount - 1 - j;
+            const int iHigh = batches[b].first + batches[b].count - 1 - (int(k) - orderStart[j]);
+            const ParticleInstance* stretch = instances + (iHigh - len + 1);  // instance iHigh - t is bounds[len - 1 - t]
+            const bool sphere = batches[b].sphere;
             const FootprintMath& math = sphere ? box : flat;
-            const ParticleInstance& p = instances[i];
-            const Bounds q = !perspective ? math.general(p) : sphere ? math.perspective<false>(p) : math.perspective<true>(p);
-            uint32_t* word = &words[k * 4];
-            word[0] = word[1] = 1u;  // tx0 1 > tx1 0: none
-            word[2] = 0;
-            word[3] = entry;
-            int r[4];
-            if (q.state == Bounds::Unbounded) {
-                if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.size))) {
-                    failed[piece] = true;
-                    return;
-                }
-                // A sphere across the near plane (a billboard has one depth: never): every tile.
-                r[0] = 0;
-                r[1] = tilesX - 1;
-                r[2] = 0;
-                r[3] = tilesY - 1;
-            } else if (q.state == Bounds::Behind || q.x1 < -1.0f || q.y1 < -1.0f || q.x0 > float(w) + 1.0f ||
-                       q.y0 > float(h) + 1.0f) {
-                return;
+            if (!perspective) {
+                for (int t = 0; t < len; ++t) bounds[t] = math.general(stretch[t]);
+            } else if (sphere) {
+                math.perspectiveRun<false>(stretch, len, bounds);
             } else {
-                auto tileOf = [](float pixel, int tiles) {
-                    const float t = pixel * (1.0f / float(kTileSize));
-                    return int(std::min(std::max(t, 0.0f), float(tiles - 1)));
-                };
-                r[0] = tileOf(q.x0 - 1.0f, tilesX);
-                r[1] = tileOf(q.x1 + 1.0f, tilesX);
-                r[2] = tileOf(q.y0 - 1.0f, tilesY);
-                r[3] = tileOf(q.y1 + 1.0f, tilesY);
+                math.perspectiveRun<true>(stretch, len, bounds);
             }
-            word[0] = uint32_t(r[0]) | uint32_t(r[1]) << 16;
-            word[1] = uint32_t(r[2]) | uint32_t(r[3]) << 16;
-            word[2] = uint32_t((r[1] - r[0] + 1) * (r[3] - r[2] + 1));
-            sum += word[2];
-            markTiles(grid, tilesX, r[0], r[1], r[2], r[3]);
-        });
+            for (int t = 0; t < len; ++t, ++k) {
+                const Bounds& q = bounds[len - 1 - t];
+                const ParticleInstance& p = stretch[len - 1 - t];
+                uint32_t* word = &words[k * 4];
+                word[0] = word[1] = 1u;  // tx0 1 > tx1 0: none
+                word[2] = 0;
+                word[3] = uint32_t(iHigh - t) | (uint32_t(b) << TileBins::kBatchShift);
+                int r[4];
+                if (q.state == Bounds::Unbounded) {
+                    if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.size))) {
+                        failed[piece] = true;
+                        return;
+                    }
+                    // A sphere across the near plane (a billboard has one depth: never): every tile.
+                    r[0] = 0;
+                    r[1] = tilesX - 1;
+                    r[2] = 0;
+                    r[3] = tilesY - 1;
+                } else if (q.state == Bounds::Behind || q.x1 < -1.0f || q.y1 < -1.0f || q.x0 > float(w) + 1.0f ||
+                           q.y0 > float(h) + 1.0f) {
+                    continue;
+                } else {
+                    auto tileOf = [](float pixel, int tiles) {
+                        const float tile = pixel * (1.0f / float(kTileSize));
+                        return int(std::min(std::max(tile, 0.0f), float(tiles - 1)));
+                    };
+                    r[0] = tileOf(q.x0 - 1.0f, tilesX);
+                    r[1] = tileOf(q.x1 + 1.0f, tilesX);
+                    r[2] = tileOf(q.y0 - 1.0f, tilesY);
+                    r[3] = tileOf(q.y1 + 1.0f, tilesY);
+                }
+                word[0] = uint32_t(r[0]) | uint32_t(r[1]) << 16;
+                word[1] = uint32_t(r[2]) | uint32_t(r[3]) << 16;
+                word[2] = uint32_t((r[1] - r[0] + 1) * (r[3] - r[2] + 1));
+                sum += word[2];
+                markTiles(grid, tilesX, r[0], r[1], r[2], r[3]);
+            }
+        }
         pieceEntries[piece] = sum;
     });
     uint64_t total = 0;

@@ -6,11 +6,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <random>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/FootprintMath.h"
 #include "render/ScreenTiles.h"
 #include "render/TileBins.h"
 
@@ -278,6 +281,96 @@ TEST(ScreenTiles, FootprintPixelsAddUpAndDecideQuarterRes) {
     EXPECT_TRUE(near.whole);
     EXPECT_TRUE(std::isinf(near.footprintPixels));
     EXPECT_TRUE(quarterResPays(near, tiles));
+}
+
+// FootprintMath::perspectiveRun (four particles at a time where SSE2 exists) against
+// perspective<Flat> one at a time: every field of every bound the same bits, for ordinary
+// particles and for the extreme ones (not a number or infinite in each component, at and behind
+// the near plane, at the eye with -0 and +0, sizes 0, negative, tiny and huge), billboards with
+// and without a reach table and spheres, under a finite and an infinite reversed-Z far plane.
+TEST(ScreenTiles, FourAtATimeGiveTheBoundsOneAtATimeGives) {
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    std::vector<ParticleInstance> particles;
+    for (int i = 0; i < 4000; ++i) {
+        ParticleInstance p;
+        p.x = 30.0f * u(rng);
+        p.y = 1.0f + 10.0f * u(rng);
+        p.z = 6.0f - 60.0f * (0.5f + 0.5f * u(rng));  // some behind the eye at z 6
+        p.size = std::exp2(6.0f * u(rng));
+        p.frame = 2.0f + 2.5f * u(rng);
+        particles.push_back(p);
+    }
+    const float odd[] = {0.0f, -0.0f, nan, inf, -inf, 1e-30f, -1e-30f, 1e30f, -1e30f, 6.0f, 5.9f, 6.1f, 1e-6f};
+    for (size_t i = 0; i < particles.size(); ++i) {
+        ParticleInstance& p = particles[i];
+        const float v = odd[i % (sizeof odd / sizeof odd[0])];
+        switch ((i / 7) % 9) {
+            case 0: p.x = v; break;
+            case 1: p.y = v; break;
+            case 2: p.z = v; break;
+            case 3: p.size = v; break;
+            case 4: p.frame = v; break;
+            case 5: p.x = 0.0f, p.y = 1.5f, p.z = v; break;  // on the view axis, at the eye and near plane
+            default: break;
+        }
+    }
+    BillboardReach reach;
+    reach.lodScale = 40.0f;
+    reach.buckets = 5;
+    for (size_t e = 0; e < reach.table.size(); ++e) reach.table[e] = 0.5f + 0.02f * float(e % 11);
+    for (int projection = 0; projection < 2; ++projection) {
+        ViewInfo view = testView();
+        if (projection == 1) {
+            // Reversed-Z with an infinite far plane: clip z = near, clip w = -z.
+            view.proj = glm::perspective(glm::radians(75.0f), float(kW) / float(kH), view.nearPlane, view.farPlane);
+            view.proj[2][2] = 0.0f;
+            view.proj[3][2] = view.nearPlane;
+        }
+        for (int kind = 0; kind < 3; ++kind) {
+            const footprint::FootprintMath math(view, kind != 2, kind == 1 ? &reach : nullptr, kind == 2 ? 0.5f : footprint::kQuadReach);
+            ASSERT_TRUE(footprint::plainPerspective(view.proj));
+            // Odd offsets and lengths: runs that end in a partial group of four.
+            for (int first = 0; first < 7; first += 3) {
+                const int n = int(particles.size()) - first - kind;
+                std::vector<footprint::Bounds> runs(static_cast<size_t>(n));
+                if (kind == 2) {
+                    math.perspectiveRun<false>(particles.data() + first, n, runs.data());
+                } else {
+                    math.perspectiveRun<true>(particles.data() + first, n, runs.data());
+                }
+                int bounded = 0, unbounded = 0, behind = 0;
+                for (int i = 0; i < n; ++i) {
+                    const ParticleInstance& p = particles[size_t(first + i)];
+                    const footprint::Bounds one = kind == 2 ? math.perspective<false>(p) : math.perspective<true>(p);
+                    const footprint::Bounds& run = runs[size_t(i)];
+                    // The same bits, or both not a number (which NaN comes out of inf - inf is the
+                    // compiler's choice of operand order; no caller reads an unbounded one's pixels).
+                    auto same = [](float a, float b) {
+                        return std::memcmp(&a, &b, sizeof a) == 0 || (std::isnan(a) && std::isnan(b));
+                    };
+                    bool equal = one.state == run.state;
+                    const float* a = &one.x0;
+                    const float* b = &run.x0;
+                    for (int f = 0; f < 4; ++f) equal = equal && same(a[f], b[f]) && same(one.box[f], run.box[f]);
+                    ASSERT_TRUE(equal)
+                        << "projection " << projection << ", kind " << kind << ", particle " << first + i << " ("
+                        << p.x << ", " << p.y << ", " << p.z << ", size " << p.size << ", frame " << p.frame
+                        << "): x0 " << one.x0 << " / " << run.x0 << ", x1 " << one.x1 << " / " << run.x1 << ", y0 "
+                        << one.y0 << " / " << run.y0 << ", y1 " << one.y1 << " / " << run.y1 << ", state " << one.state
+                        << " / " << run.state;
+                    bounded += one.state == footprint::Bounds::Bounded;
+                    unbounded += one.state == footprint::Bounds::Unbounded;
+                    behind += one.state == footprint::Bounds::Behind;
+                }
+                // The cases are all there: not a vacuous comparison.
+                EXPECT_GT(bounded, n / 3);
+                EXPECT_GT(unbounded, 50);
+                EXPECT_GT(behind, 50);
+            }
+        }
+    }
 }
 
 TEST(ScreenTiles, ASteadyFrameReusesTheBuffers) {
