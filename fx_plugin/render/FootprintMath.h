@@ -139,14 +139,30 @@ struct FootprintMath {
     }
 
 #if FX_FOOTPRINT_SSE2
-    // perspective<Flat> of p[0 .. 3], a particle a lane: the same operations in the same order
-    // (x86-64 has no fused multiply-add without -mfma, so neither side contracts), negation as a
-    // sign flip, std::min(a, b) as _mm_min_ps(b, a) and std::max(a, b) as _mm_max_ps(b, a) (the
-    // same operand returned for equal values and NaN): the same bits as four calls
-    // (ScreenTilesTest's FourAtATime... test). What it saves: the divisions and the products four
-    // at a time, about half of the bins' per-particle time (bench_draw BM_TileBins).
+    // perspective<Flat> of four particles, a particle a lane: the pixels (tight: the trimmed
+    // polygon's where a reach table applies, else the quad's, as `box`) and, as four-bit masks,
+    // which lanes are not finite, wholly behind the near plane or reaching it (state(): in that
+    // order of precedence).
+    struct Lanes {
+        __m128 x0, x1, y0, y1;
+        __m128 box[4];
+        int notFinite, behind, reaching;
+        int state(int lane) const {
+            const int bit = 1 << lane;
+            return notFinite & bit ? Bounds::Unbounded
+                   : behind & bit  ? Bounds::Behind
+                   : reaching & bit ? Bounds::Unbounded
+                                    : Bounds::Bounded;
+        }
+    };
+
+    // The same operations as perspective<Flat> in the same order, lane by lane (x86-64 has no
+    // fused multiply-add without -mfma, so neither side contracts), negation as a sign flip,
+    // std::min(a, b) as _mm_min_ps(b, a) and std::max(a, b) as _mm_max_ps(b, a) (the same operand
+    // returned for equal values and NaN): the same bits as four calls (ScreenTilesTest's
+    // FourAtATime... test). What it saves: the divisions and the products four at a time.
     template <bool Flat>
-    void perspective4(const ParticleInstance* p, Bounds* out) const {
+    Lanes perspectiveLanes(const ParticleInstance* p) const {
         __m128 px = _mm_loadu_ps(&p[0].x), py = _mm_loadu_ps(&p[1].x), pz = _mm_loadu_ps(&p[2].x),
                ps = _mm_loadu_ps(&p[3].x);
         _MM_TRANSPOSE4_PS(px, py, pz, ps);  // now x, y, z and size of the four
@@ -163,64 +179,74 @@ struct FootprintMath {
         const __m128 one = _mm_set1_ps(1.0f);
         const __m128 nearInv = _mm_div_ps(one, neg(_mm_add_ps(c[2], depthExtent)));
         const __m128 farInv = Flat ? nearInv : _mm_div_ps(one, neg(_mm_sub_ps(c[2], depthExtent)));
-        __m128 lo[2], hi[2];
+        const __m128 half = _mm_set1_ps(0.5f), width = _mm_set1_ps(float(w)), height = _mm_set1_ps(float(h));
+        auto toPixels = [&](__m128 ndc, __m128 size) { return _mm_mul_ps(_mm_add_ps(_mm_mul_ps(ndc, half), half), size); };
+        Lanes out;
         for (int a = 0; a < 2; ++a) {
             const __m128 scale = _mm_set1_ps(P[a][a]), shift = _mm_set1_ps(P[3][a]), offset = _mm_set1_ps(P[2][a]);
             const __m128 lowEdge = _mm_add_ps(_mm_mul_ps(scale, _mm_sub_ps(c[a], radius)), shift);
             const __m128 highEdge = _mm_add_ps(_mm_mul_ps(scale, _mm_add_ps(c[a], radius)), shift);
+            __m128 lo, hi;
             if (Flat) {
-                lo[a] = _mm_sub_ps(_mm_mul_ps(lowEdge, nearInv), offset);
-                hi[a] = _mm_sub_ps(_mm_mul_ps(highEdge, nearInv), offset);
+                lo = _mm_sub_ps(_mm_mul_ps(lowEdge, nearInv), offset);
+                hi = _mm_sub_ps(_mm_mul_ps(highEdge, nearInv), offset);
             } else {
-                lo[a] = _mm_sub_ps(_mm_min_ps(_mm_mul_ps(lowEdge, farInv), _mm_mul_ps(lowEdge, nearInv)), offset);
-                hi[a] = _mm_sub_ps(_mm_max_ps(_mm_mul_ps(highEdge, farInv), _mm_mul_ps(highEdge, nearInv)), offset);
+                lo = _mm_sub_ps(_mm_min_ps(_mm_mul_ps(lowEdge, farInv), _mm_mul_ps(lowEdge, nearInv)), offset);
+                hi = _mm_sub_ps(_mm_max_ps(_mm_mul_ps(highEdge, farInv), _mm_mul_ps(highEdge, nearInv)), offset);
             }
+            out.box[a * 2] = toPixels(lo, a == 0 ? width : height);
+            out.box[a * 2 + 1] = toPixels(hi, a == 0 ? width : height);
         }
-        const __m128 half = _mm_set1_ps(0.5f), width = _mm_set1_ps(float(w)), height = _mm_set1_ps(float(h));
-        auto toPixels = [&](__m128 ndc, __m128 size) { return _mm_mul_ps(_mm_add_ps(_mm_mul_ps(ndc, half), half), size); };
-        alignas(16) float box[4][4], tight[4][4];  // x0, x1, y0, y1 of the four
-        _mm_store_ps(box[0], toPixels(lo[0], width));
-        _mm_store_ps(box[1], toPixels(hi[0], width));
-        _mm_store_ps(box[2], toPixels(lo[1], height));
-        _mm_store_ps(box[3], toPixels(hi[1], height));
         // state(): not finite (exponent all ones) -> Unbounded; behind; reaching the near plane.
         const __m128i exponent = _mm_set1_epi32(0x7f800000);
         auto infinite = [&](__m128 v) { return _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(v), exponent), exponent); };
-        const int notFinite = _mm_movemask_ps(_mm_castsi128_ps(
+        out.notFinite = _mm_movemask_ps(_mm_castsi128_ps(
             _mm_or_si128(_mm_or_si128(infinite(c[0]), infinite(c[1])), _mm_or_si128(infinite(c[2]), infinite(radius)))));
         const __m128 nearZ = neg(_mm_set1_ps(nearPlane));
-        const int behind = _mm_movemask_ps(_mm_cmpge_ps(_mm_sub_ps(c[2], depthExtent), nearZ));
-        const int reaching = _mm_movemask_ps(_mm_cmpge_ps(_mm_add_ps(c[2], depthExtent), nearZ));
-        const bool tighter = Flat && reach;
-        if (tighter) {
-            // The trimmed polygon's reach: the table lookup a lane at a time, the rest four at once.
-            const __m128 depth = _mm_max_ps(_mm_set1_ps(nearPlane), neg(c[2]));
-            const __m128 texels = _mm_div_ps(_mm_mul_ps(_mm_set1_ps(reach->lodScale), depth), _mm_max_ps(_mm_set1_ps(1e-6f), ps));
-            alignas(16) float t[4];
-            _mm_store_ps(t, texels);
-            // Into a register lane by lane: four scalar stores read back as one vector would stall
-            // the load (no store forwarding; a sixth of the bound's time in perf).
-            const __m128 reachOf = _mm_setr_ps(reach->at(p[0].frame, t[0]), reach->at(p[1].frame, t[1]),
-                                               reach->at(p[2].frame, t[2]), reach->at(p[3].frame, t[3]));
-            const __m128 tightRadius = _mm_mul_ps(reachOf, ps);
-            for (int a = 0; a < 2; ++a) {
-                const __m128 scale = _mm_set1_ps(P[a][a]), shift = _mm_set1_ps(P[3][a]), offset = _mm_set1_ps(P[2][a]);
-                const __m128 size = a == 0 ? width : height;
-                const __m128 l = _mm_sub_ps(_mm_mul_ps(_mm_add_ps(_mm_mul_ps(scale, _mm_sub_ps(c[a], tightRadius)), shift), nearInv), offset);
-                const __m128 u = _mm_sub_ps(_mm_mul_ps(_mm_add_ps(_mm_mul_ps(scale, _mm_add_ps(c[a], tightRadius)), shift), nearInv), offset);
-                _mm_store_ps(tight[a * 2], toPixels(l, size));
-                _mm_store_ps(tight[a * 2 + 1], toPixels(u, size));
-            }
+        out.behind = _mm_movemask_ps(_mm_cmpge_ps(_mm_sub_ps(c[2], depthExtent), nearZ));
+        out.reaching = _mm_movemask_ps(_mm_cmpge_ps(_mm_add_ps(c[2], depthExtent), nearZ));
+        if (!(Flat && reach)) {
+            out.x0 = out.box[0];
+            out.x1 = out.box[1];
+            out.y0 = out.box[2];
+            out.y1 = out.box[3];
+            return out;
         }
-        const float(*bound)[4] = tighter ? tight : box;
+        // The trimmed polygon's reach: the table lookup a lane at a time, the rest four at once.
+        const __m128 depth = _mm_max_ps(_mm_set1_ps(nearPlane), neg(c[2]));
+        const __m128 texels = _mm_div_ps(_mm_mul_ps(_mm_set1_ps(reach->lodScale), depth), _mm_max_ps(_mm_set1_ps(1e-6f), ps));
+        alignas(16) float t[4];
+        _mm_store_ps(t, texels);
+        // Into a register lane by lane: four scalar stores read back as one vector would stall the
+        // load (no store forwarding; a sixth of the bound's time in perf).
+        const __m128 reachOf = _mm_setr_ps(reach->at(p[0].frame, t[0]), reach->at(p[1].frame, t[1]),
+                                           reach->at(p[2].frame, t[2]), reach->at(p[3].frame, t[3]));
+        const __m128 tightRadius = _mm_mul_ps(reachOf, ps);
+        __m128 tight[4];
+        for (int a = 0; a < 2; ++a) {
+            const __m128 scale = _mm_set1_ps(P[a][a]), shift = _mm_set1_ps(P[3][a]), offset = _mm_set1_ps(P[2][a]);
+            const __m128 size = a == 0 ? width : height;
+            const __m128 l = _mm_sub_ps(_mm_mul_ps(_mm_add_ps(_mm_mul_ps(scale, _mm_sub_ps(c[a], tightRadius)), shift), nearInv), offset);
+            const __m128 u = _mm_sub_ps(_mm_mul_ps(_mm_add_ps(_mm_mul_ps(scale, _mm_add_ps(c[a], tightRadius)), shift), nearInv), offset);
+            tight[a * 2] = toPixels(l, size);
+            tight[a * 2 + 1] = toPixels(u, size);
+        }
+        out.x0 = tight[0];
+        out.x1 = tight[1];
+        out.y0 = tight[2];
+        out.y1 = tight[3];
+        return out;
+    }
+
+    // perspective<Flat> of p[0 .. 3] (perspectiveLanes) as four Bounds.
+    template <bool Flat>
+    void perspective4(const ParticleInstance* p, Bounds* out) const {
+        const Lanes q = perspectiveLanes<Flat>(p);
+        alignas(16) float v[8][4];
+        const __m128 rows[8] = {q.x0, q.x1, q.y0, q.y1, q.box[0], q.box[1], q.box[2], q.box[3]};
+        for (int r = 0; r < 8; ++r) _mm_store_ps(v[r], rows[r]);
         for (int k = 0; k < 4; ++k) {
-            const int bit = 1 << k;
-            const int st = notFinite & bit ? Bounds::Unbounded
-                           : behind & bit  ? Bounds::Behind
-                           : reaching & bit ? Bounds::Unbounded
-                                            : Bounds::Bounded;
-            out[k] = Bounds{bound[0][k], bound[1][k], bound[2][k], bound[3][k], st,
-                            {box[0][k], box[1][k], box[2][k], box[3][k]}};
+            out[k] = Bounds{v[0][k], v[1][k], v[2][k], v[3][k], q.state(k), {v[4][k], v[5][k], v[6][k], v[7][k]}};
         }
     }
 #endif
@@ -247,6 +273,58 @@ struct FootprintMath {
         }
         return pixels(plo, phi, st);
     }
+};
+
+// The tiled path's bins (TileBins.cpp): the kTileSize tiles a bound grown by a pixel touches,
+// clamped to the view's tilesX x tilesY. Range: r = tx0, tx1, ty0, ty1; None: wholly behind the
+// near plane or more than a pixel off the view; Unbounded: no bound (the caller decides: a sphere
+// across the near plane is in every tile, a particle that is not finite fails the view).
+struct TileRangeOf {
+    enum What : uint8_t { None, Range, Unbounded };
+    int w, h, tilesX, tilesY;
+
+    static int tileOf(float pixel, int tiles) {
+        // The float clamp first: a bound far off screen must not overflow the int; clamped to 0
+        // and up, truncation is the floor.
+        const float t = pixel * (1.0f / float(ScreenTiles::kTileSize));  // exact: a power of two
+        return int(std::min(std::max(t, 0.0f), float(tiles - 1)));
+    }
+    uint8_t operator()(const Bounds& q, int32_t* r) const {
+        if (q.state == Bounds::Unbounded) return Unbounded;
+        if (q.state == Bounds::Behind || q.x1 < -1.0f || q.y1 < -1.0f || q.x0 > float(w) + 1.0f || q.y0 > float(h) + 1.0f) {
+            return None;
+        }
+        r[0] = tileOf(q.x0 - 1.0f, tilesX);
+        r[1] = tileOf(q.x1 + 1.0f, tilesX);
+        r[2] = tileOf(q.y0 - 1.0f, tilesY);
+        r[3] = tileOf(q.y1 + 1.0f, tilesY);
+        return Range;
+    }
+#if FX_FOOTPRINT_SSE2
+    // The same for four lanes (FootprintMath::perspectiveLanes), the same bits: std::max(t, 0) as
+    // _mm_max_ps(0, t), std::min(t, last) as _mm_min_ps(last, t), truncation as _mm_cvttps_epi32.
+    void operator()(const FootprintMath::Lanes& q, int32_t (*r)[4], uint8_t* what) const {
+        const __m128 one = _mm_set1_ps(1.0f), zero = _mm_setzero_ps();
+        const __m128 inv = _mm_set1_ps(1.0f / float(ScreenTiles::kTileSize));
+        const __m128 lastX = _mm_set1_ps(float(tilesX - 1)), lastY = _mm_set1_ps(float(tilesY - 1));
+        auto tiles = [&](__m128 pixel, __m128 last) {
+            return _mm_castsi128_ps(_mm_cvttps_epi32(_mm_min_ps(last, _mm_max_ps(zero, _mm_mul_ps(pixel, inv)))));
+        };
+        __m128 r0 = tiles(_mm_sub_ps(q.x0, one), lastX), r1 = tiles(_mm_add_ps(q.x1, one), lastX);
+        __m128 r2 = tiles(_mm_sub_ps(q.y0, one), lastY), r3 = tiles(_mm_add_ps(q.y1, one), lastY);
+        _MM_TRANSPOSE4_PS(r0, r1, r2, r3);  // a lane's four tiles per register
+        const __m128 minusOne = _mm_set1_ps(-1.0f);
+        const int off = _mm_movemask_ps(_mm_or_ps(
+            _mm_or_ps(_mm_cmplt_ps(q.x1, minusOne), _mm_cmplt_ps(q.y1, minusOne)),
+            _mm_or_ps(_mm_cmpgt_ps(q.x0, _mm_set1_ps(float(w) + 1.0f)), _mm_cmpgt_ps(q.y0, _mm_set1_ps(float(h) + 1.0f)))));
+        const __m128 lanes[4] = {r0, r1, r2, r3};
+        for (int k = 0; k < 4; ++k) {
+            const int state = q.state(k);
+            what[k] = state == Bounds::Unbounded ? Unbounded : state == Bounds::Behind || (off >> k & 1) ? None : Range;
+            _mm_storeu_ps(reinterpret_cast<float*>(r[k]), lanes[k]);
+        }
+    }
+#endif
 };
 
 // Marks the tiles [tx0, tx1] x [ty0, ty1] in the (tilesX + 1) x (tilesY + 1) difference grid: four

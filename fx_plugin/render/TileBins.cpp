@@ -65,10 +65,12 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
     jobs.run(pieces, [&](uint32_t piece) {
         int32_t* grid = &out->grids[piece * gridSize];
         uint64_t sum = 0;
-        Bounds bounds[kChunk];
+        int32_t ranges[kChunk][4];
+        uint8_t what[kChunk];
+        const TileRangeOf rangeOf{w, h, tilesX, tilesY};
         // A stretch of k at a time that lies in one batch and one chunk: its instances are
-        // contiguous (k counts them down), so their bounds come four at a time (perspectiveRun)
-        // in instance order, read back in k order.
+        // contiguous (k counts them down), so their tile ranges come four at a time
+        // (perspectiveLanes) in instance order, read back in k order.
         size_t k = pieces.begin(piece);
         const size_t end = pieces.end(piece);
         int j = 0;
@@ -78,25 +80,32 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
             const int len = int(stretchEnd - k);
             const int b = batchCount - 1 - j;
             const int iHigh = batches[b].first + batches[b].count - 1 - (int(k) - orderStart[j]);
-            const ParticleInstance* stretch = instances + (iHigh - len + 1);  // instance iHigh - t is bounds[len - 1 - t]
+            const ParticleInstance* stretch = instances + (iHigh - len + 1);  // instance iHigh - t is [len - 1 - t]
             const bool sphere = batches[b].sphere;
             const FootprintMath& math = sphere ? box : flat;
+            int t = 0;
             if (!perspective) {
-                for (int t = 0; t < len; ++t) bounds[t] = math.general(stretch[t]);
-            } else if (sphere) {
-                math.perspectiveRun<false>(stretch, len, bounds);
-            } else {
-                math.perspectiveRun<true>(stretch, len, bounds);
+                for (; t < len; ++t) what[t] = rangeOf(math.general(stretch[t]), ranges[t]);
             }
-            for (int t = 0; t < len; ++t, ++k) {
-                const Bounds& q = bounds[len - 1 - t];
-                const ParticleInstance& p = stretch[len - 1 - t];
+#if FX_FOOTPRINT_SSE2
+            for (; t + 4 <= len; t += 4) {
+                rangeOf(sphere ? math.perspectiveLanes<false>(stretch + t) : math.perspectiveLanes<true>(stretch + t),
+                        ranges + t, what + t);
+            }
+#endif
+            for (; t < len; ++t) {
+                what[t] = rangeOf(sphere ? math.perspective<false>(stretch[t]) : math.perspective<true>(stretch[t]), ranges[t]);
+            }
+            for (t = 0; t < len; ++t, ++k) {
+                const int at = len - 1 - t;
                 uint32_t* word = &words[k * 4];
                 word[0] = word[1] = 1u;  // tx0 1 > tx1 0: none
                 word[2] = 0;
                 word[3] = uint32_t(iHigh - t) | (uint32_t(b) << TileBins::kBatchShift);
-                int r[4];
-                if (q.state == Bounds::Unbounded) {
+                if (what[at] == TileRangeOf::None) continue;
+                int32_t* r = ranges[at];
+                if (what[at] == TileRangeOf::Unbounded) {
+                    const ParticleInstance& p = stretch[at];
                     if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.size))) {
                         failed[piece] = true;
                         return;
@@ -106,18 +115,6 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
                     r[1] = tilesX - 1;
                     r[2] = 0;
                     r[3] = tilesY - 1;
-                } else if (q.state == Bounds::Behind || q.x1 < -1.0f || q.y1 < -1.0f || q.x0 > float(w) + 1.0f ||
-                           q.y0 > float(h) + 1.0f) {
-                    continue;
-                } else {
-                    auto tileOf = [](float pixel, int tiles) {
-                        const float tile = pixel * (1.0f / float(kTileSize));
-                        return int(std::min(std::max(tile, 0.0f), float(tiles - 1)));
-                    };
-                    r[0] = tileOf(q.x0 - 1.0f, tilesX);
-                    r[1] = tileOf(q.x1 + 1.0f, tilesX);
-                    r[2] = tileOf(q.y0 - 1.0f, tilesY);
-                    r[3] = tileOf(q.y1 + 1.0f, tilesY);
                 }
                 word[0] = uint32_t(r[0]) | uint32_t(r[1]) << 16;
                 word[1] = uint32_t(r[2]) | uint32_t(r[3]) << 16;

@@ -287,7 +287,8 @@ TEST(ScreenTiles, FootprintPixelsAddUpAndDecideQuarterRes) {
 // perspective<Flat> one at a time: every field of every bound the same bits, for ordinary
 // particles and for the extreme ones (not a number or infinite in each component, at and behind
 // the near plane, at the eye with -0 and +0, sizes 0, negative, tiny and huge), billboards with
-// and without a reach table and spheres, under a finite and an infinite reversed-Z far plane.
+// and without a reach table and spheres, under a finite and an infinite reversed-Z far plane; and
+// the tile ranges the bins take from them (TileRangeOf), four lanes against one.
 TEST(ScreenTiles, FourAtATimeGiveTheBoundsOneAtATimeGives) {
     std::mt19937 rng(29);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
@@ -364,6 +365,27 @@ TEST(ScreenTiles, FourAtATimeGiveTheBoundsOneAtATimeGives) {
                     unbounded += one.state == footprint::Bounds::Unbounded;
                     behind += one.state == footprint::Bounds::Behind;
                 }
+#if FX_FOOTPRINT_SSE2
+                // The bins' tile ranges of four lanes against one at a time (what, and the range
+                // where there is one).
+                const footprint::TileRangeOf rangeOf{kW, kH, (kW + 15) / 16, (kH + 15) / 16};
+                int ranges = 0;
+                for (int i = 0; i + 4 <= n; i += 4) {
+                    const ParticleInstance* four = particles.data() + first + i;
+                    int32_t lanes[4][4];
+                    uint8_t what[4];
+                    rangeOf(kind == 2 ? math.perspectiveLanes<false>(four) : math.perspectiveLanes<true>(four), lanes, what);
+                    for (int k = 0; k < 4; ++k) {
+                        int32_t r[4];
+                        const uint8_t one = rangeOf(runs[size_t(i + k)], r);
+                        ASSERT_EQ(one, what[k]) << "particle " << first + i + k;
+                        if (one != footprint::TileRangeOf::Range) continue;
+                        ++ranges;
+                        for (int e = 0; e < 4; ++e) ASSERT_EQ(r[e], lanes[k][e]) << "particle " << first + i + k;
+                    }
+                }
+                EXPECT_GT(ranges, n / 4);
+#endif
                 // The cases are all there: not a vacuous comparison.
                 EXPECT_GT(bounded, n / 3);
                 EXPECT_GT(unbounded, 50);
