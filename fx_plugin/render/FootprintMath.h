@@ -11,14 +11,7 @@
 
 #include "ScreenTiles.h"
 
-// Four particles at a time where the target has SSE2 (every x86-64 compiler, and 32-bit MSVC with
-// /arch:SSE2), one at a time elsewhere: the same bits either way (FootprintMath::perspective4).
-#if defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
-#include <emmintrin.h>
-#define FX_FOOTPRINT_SSE2 1
-#else
-#define FX_FOOTPRINT_SSE2 0
-#endif
+#include "base/Sse2.h"
 
 namespace fx {
 namespace footprint {
@@ -132,13 +125,13 @@ struct FootprintMath {
     template <bool Flat>
     void perspectiveRun(const ParticleInstance* p, int n, Bounds* out) const {
         int j = 0;
-#if FX_FOOTPRINT_SSE2
+#if FX_SSE2
         for (; j + 4 <= n; j += 4) perspective4<Flat>(p + j, out + j);
 #endif
         for (; j < n; ++j) out[j] = perspective<Flat>(p[j]);
     }
 
-#if FX_FOOTPRINT_SSE2
+#if FX_SSE2
     // perspective<Flat> of four particles, a particle a lane: the pixels (tight: the trimmed
     // polygon's where a reach table applies, else the quad's, as `box`) and, as four-bit masks,
     // which lanes are not finite, wholly behind the near plane or reaching it (state(): in that
@@ -300,7 +293,7 @@ struct TileRangeOf {
         r[3] = tileOf(q.y1 + 1.0f, tilesY);
         return Range;
     }
-#if FX_FOOTPRINT_SSE2
+#if FX_SSE2
     // The same for four lanes (FootprintMath::perspectiveLanes), the same bits: std::max(t, 0) as
     // _mm_max_ps(0, t), std::min(t, last) as _mm_min_ps(last, t), truncation as _mm_cvttps_epi32.
     void operator()(const FootprintMath::Lanes& q, int32_t (*r)[4], uint8_t* what) const {

@@ -87,7 +87,7 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
             if (!perspective) {
                 for (; t < len; ++t) what[t] = rangeOf(math.general(stretch[t]), ranges[t]);
             }
-#if FX_FOOTPRINT_SSE2
+#if FX_SSE2
             for (; t + 4 <= len; t += 4) {
                 rangeOf(sphere ? math.perspectiveLanes<false>(stretch + t) : math.perspectiveLanes<true>(stretch + t),
                         ranges + t, what + t);

@@ -7,6 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include "base/Sse2.h"
+
 namespace fx {
 
 class ViewFrustum {
@@ -31,14 +33,46 @@ public:
             !std::isfinite(radius)) {
             return false;
         }
-        const glm::vec3 v = glm::vec3(view_ * glm::vec4(centre, 1.0f));
+        // In view space: row r of view_ times (centre, 1), as (V0 x + V1 y) + (V2 z + V3).
+        glm::vec3 v;
+        for (int r = 0; r < 3; ++r) {
+            v[r] = (view_[0][r] * centre.x + view_[1][r] * centre.y) + (view_[2][r] * centre.z + view_[3][r]);
+        }
         const float depth = -v.z;
         if (depth + radius < near_ || depth - radius > far_) return false;
         for (const glm::vec4& p : sides_) {
-            if (glm::dot(glm::vec3(p), v) + p.w < -radius) return false;
+            if (((p.x * v.x + p.y * v.y) + p.z * v.z) + p.w < -radius) return false;
         }
         return true;
     }
+
+#if FX_SSE2
+    /// intersectsSphere of four spheres (centres x, y, z and radii r, a sphere a lane) as a mask,
+    /// bit k for lane k: the same operations in the same order, so the same answers
+    /// (DrawListOrderTest's FourSpheresAtATime... test).
+    int intersectsSpheres4(__m128 x, __m128 y, __m128 z, __m128 r) const {
+        const __m128i exponent = _mm_set1_epi32(0x7f800000);
+        auto infinite = [&](__m128 a) { return _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(a), exponent), exponent); };
+        const int notFinite = _mm_movemask_ps(_mm_castsi128_ps(
+            _mm_or_si128(_mm_or_si128(infinite(x), infinite(y)), _mm_or_si128(infinite(z), infinite(r)))));
+        __m128 v[3];
+        for (int row = 0; row < 3; ++row) {
+            v[row] = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(view_[0][row]), x), _mm_mul_ps(_mm_set1_ps(view_[1][row]), y)),
+                                _mm_add_ps(_mm_mul_ps(_mm_set1_ps(view_[2][row]), z), _mm_set1_ps(view_[3][row])));
+        }
+        const __m128 sign = _mm_set1_ps(-0.0f);
+        const __m128 depth = _mm_xor_ps(v[2], sign), minusR = _mm_xor_ps(r, sign);
+        __m128 out = _mm_or_ps(_mm_cmplt_ps(_mm_add_ps(depth, r), _mm_set1_ps(near_)),
+                               _mm_cmpgt_ps(_mm_sub_ps(depth, r), _mm_set1_ps(far_)));
+        for (const glm::vec4& p : sides_) {
+            const __m128 d = _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(p.x), v[0]), _mm_mul_ps(_mm_set1_ps(p.y), v[1])),
+                                                   _mm_mul_ps(_mm_set1_ps(p.z), v[2])),
+                                        _mm_set1_ps(p.w));
+            out = _mm_or_ps(out, _mm_cmplt_ps(d, minusR));
+        }
+        return ~(_mm_movemask_ps(out) | notFinite) & 15;
+    }
+#endif
 
 private:
     glm::mat4 view_;

@@ -365,7 +365,7 @@ TEST(ScreenTiles, FourAtATimeGiveTheBoundsOneAtATimeGives) {
                     unbounded += one.state == footprint::Bounds::Unbounded;
                     behind += one.state == footprint::Bounds::Behind;
                 }
-#if FX_FOOTPRINT_SSE2
+#if FX_SSE2
                 // The bins' tile ranges of four lanes against one at a time (what, and the range
                 // where there is one).
                 const footprint::TileRangeOf rangeOf{kW, kH, (kW + 15) / 16, (kH + 15) / 16};
