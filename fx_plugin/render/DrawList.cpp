@@ -32,6 +32,7 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
     // The distance slice (ViewInfo::slice): the centre's distance along the view axis, -z_view,
     // which orders particles as the back-to-front sort does; a particle lies wholly in one slice.
     const bool sliced = !view.slice.everything();
+    [[maybe_unused]] const bool lanes = fourLanes();
     const glm::vec4 viewZRow(view.view[0][2], view.view[1][2], view.view[2][2], view.view[3][2]);
     auto viewDistance = [&](float px, float py, float pz) {
         return -(viewZRow.x * px + viewZRow.y * py + viewZRow.z * pz + viewZRow.w);
@@ -85,7 +86,7 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
             // Four particles a lane each (an unsliced view): the tests and the instances in
             // registers, each visible one stored as two vectors; the same list as the loop below
             // (ViewFrustum::intersectsSpheres4, DrawListOrderTest).
-            if (!sliced) {
+            if (!sliced && lanes) {
                 const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f), halfDiagonal = _mm_set1_ps(kHalfDiagonal);
                 const __m128 eye[3] = {_mm_set1_ps(view.eye.x), _mm_set1_ps(view.eye.y), _mm_set1_ps(view.eye.z)};
                 const __m128 ahead[3] = {_mm_set1_ps(forward.x), _mm_set1_ps(forward.y), _mm_set1_ps(forward.z)};

@@ -120,17 +120,6 @@ struct FootprintMath {
         return b;
     }
 
-    // perspective<Flat> of particles [0, n) into out[0, n): four at a time where SSE2 exists
-    // (perspective4), the rest one by one.
-    template <bool Flat>
-    void perspectiveRun(const ParticleInstance* p, int n, Bounds* out) const {
-        int j = 0;
-#if FX_SSE2
-        for (; j + 4 <= n; j += 4) perspective4<Flat>(p + j, out + j);
-#endif
-        for (; j < n; ++j) out[j] = perspective<Flat>(p[j]);
-    }
-
 #if FX_SSE2
     // perspective<Flat> of four particles, a particle a lane: the pixels (tight: the trimmed
     // polygon's where a reach table applies, else the quad's, as `box`) and, as four-bit masks,
@@ -231,17 +220,6 @@ struct FootprintMath {
         return out;
     }
 
-    // perspective<Flat> of p[0 .. 3] (perspectiveLanes) as four Bounds.
-    template <bool Flat>
-    void perspective4(const ParticleInstance* p, Bounds* out) const {
-        const Lanes q = perspectiveLanes<Flat>(p);
-        alignas(16) float v[8][4];
-        const __m128 rows[8] = {q.x0, q.x1, q.y0, q.y1, q.box[0], q.box[1], q.box[2], q.box[3]};
-        for (int r = 0; r < 8; ++r) _mm_store_ps(v[r], rows[r]);
-        for (int k = 0; k < 4; ++k) {
-            out[k] = Bounds{v[0][k], v[1][k], v[2][k], v[3][k], q.state(k), {v[4][k], v[5][k], v[6][k], v[7][k]}};
-        }
-    }
 #endif
 
     // Any other projection: the footprint's corners (8, or 4 for a flat square) projected.
@@ -268,13 +246,14 @@ struct FootprintMath {
     }
 };
 
-// The tiled path's bins (TileBins.cpp): the kTileSize tiles a bound grown by a pixel touches,
-// clamped to the view's tilesX x tilesY. Range: r = tx0, tx1, ty0, ty1; None: wholly behind the
-// near plane or more than a pixel off the view; Unbounded: no bound (the caller decides: a sphere
-// across the near plane is in every tile, a particle that is not finite fails the view).
+// The kTileSize tiles a bound grown by `border` pixels touches, clamped to the view's tilesX x
+// tilesY: the tiled path's bins (TileBins.cpp, a pixel) and screenRect's tiles (kTileBorder).
+// Range: r = tx0, tx1, ty0, ty1; None: wholly behind the near plane or more than `border` pixels
+// off the view; Unbounded: no bound (the caller decides: a sphere across the near plane is in
+// every tile, a particle that is not finite fails the view).
 struct TileRangeOf {
     enum What : uint8_t { None, Range, Unbounded };
-    int w, h, tilesX, tilesY;
+    int w, h, tilesX, tilesY, border;
 
     static int tileOf(float pixel, int tiles) {
         // The float clamp first: a bound far off screen must not overflow the int; clamped to 0
@@ -284,32 +263,33 @@ struct TileRangeOf {
     }
     uint8_t operator()(const Bounds& q, int32_t* r) const {
         if (q.state == Bounds::Unbounded) return Unbounded;
-        if (q.state == Bounds::Behind || q.x1 < -1.0f || q.y1 < -1.0f || q.x0 > float(w) + 1.0f || q.y0 > float(h) + 1.0f) {
+        const float b = float(border);
+        if (q.state == Bounds::Behind || q.x1 < -b || q.y1 < -b || q.x0 > float(w + border) || q.y0 > float(h + border)) {
             return None;
         }
-        r[0] = tileOf(q.x0 - 1.0f, tilesX);
-        r[1] = tileOf(q.x1 + 1.0f, tilesX);
-        r[2] = tileOf(q.y0 - 1.0f, tilesY);
-        r[3] = tileOf(q.y1 + 1.0f, tilesY);
+        r[0] = tileOf(q.x0 - b, tilesX);
+        r[1] = tileOf(q.x1 + b, tilesX);
+        r[2] = tileOf(q.y0 - b, tilesY);
+        r[3] = tileOf(q.y1 + b, tilesY);
         return Range;
     }
 #if FX_SSE2
     // The same for four lanes (FootprintMath::perspectiveLanes), the same bits: std::max(t, 0) as
     // _mm_max_ps(0, t), std::min(t, last) as _mm_min_ps(last, t), truncation as _mm_cvttps_epi32.
     void operator()(const FootprintMath::Lanes& q, int32_t (*r)[4], uint8_t* what) const {
-        const __m128 one = _mm_set1_ps(1.0f), zero = _mm_setzero_ps();
+        const __m128 grow = _mm_set1_ps(float(border)), zero = _mm_setzero_ps();
         const __m128 inv = _mm_set1_ps(1.0f / float(ScreenTiles::kTileSize));
         const __m128 lastX = _mm_set1_ps(float(tilesX - 1)), lastY = _mm_set1_ps(float(tilesY - 1));
         auto tiles = [&](__m128 pixel, __m128 last) {
             return _mm_castsi128_ps(_mm_cvttps_epi32(_mm_min_ps(last, _mm_max_ps(zero, _mm_mul_ps(pixel, inv)))));
         };
-        __m128 r0 = tiles(_mm_sub_ps(q.x0, one), lastX), r1 = tiles(_mm_add_ps(q.x1, one), lastX);
-        __m128 r2 = tiles(_mm_sub_ps(q.y0, one), lastY), r3 = tiles(_mm_add_ps(q.y1, one), lastY);
+        __m128 r0 = tiles(_mm_sub_ps(q.x0, grow), lastX), r1 = tiles(_mm_add_ps(q.x1, grow), lastX);
+        __m128 r2 = tiles(_mm_sub_ps(q.y0, grow), lastY), r3 = tiles(_mm_add_ps(q.y1, grow), lastY);
         _MM_TRANSPOSE4_PS(r0, r1, r2, r3);  // a lane's four tiles per register
-        const __m128 minusOne = _mm_set1_ps(-1.0f);
+        const __m128 before = _mm_set1_ps(-float(border));
         const int off = _mm_movemask_ps(_mm_or_ps(
-            _mm_or_ps(_mm_cmplt_ps(q.x1, minusOne), _mm_cmplt_ps(q.y1, minusOne)),
-            _mm_or_ps(_mm_cmpgt_ps(q.x0, _mm_set1_ps(float(w) + 1.0f)), _mm_cmpgt_ps(q.y0, _mm_set1_ps(float(h) + 1.0f)))));
+            _mm_or_ps(_mm_cmplt_ps(q.x1, before), _mm_cmplt_ps(q.y1, before)),
+            _mm_or_ps(_mm_cmpgt_ps(q.x0, _mm_set1_ps(float(w + border))), _mm_cmpgt_ps(q.y0, _mm_set1_ps(float(h + border))))));
         const __m128 lanes[4] = {r0, r1, r2, r3};
         for (int k = 0; k < 4; ++k) {
             const int state = q.state(k);

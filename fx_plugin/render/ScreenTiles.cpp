@@ -57,18 +57,81 @@ PieceBound boundPiece(const FootprintMath& math, const ViewInfo& view, bool flat
     PieceBound r;
     const int w = view.width, h = view.height;
     const glm::mat4& P = view.proj;
-    double boxPixels = 0.0;  // summed in a register
+    double boxPixels = 0.0;  // summed in a register, in particle order
+    const TileRangeOf rangeOf{w, h, tilesX, tilesY, kTileBorder};
+    const bool marking = grid && tilesX > 0 && tilesY > 0;
+    size_t first = begin;
+#if FX_SSE2
+    if (plainPerspective(P) && fourLanes()) {
+        // Four particles a lane each (perspectiveLanes, TileRangeOf): the rect as four running
+        // minima and maxima (exact, so their order does not matter: no bounded lane holds a NaN),
+        // the boxes' pixels added in particle order as below, the tiles marked lane by lane.
+        const __m128 zero = _mm_setzero_ps(), width = _mm_set1_ps(float(w)), height = _mm_set1_ps(float(h));
+        __m128 lo[2] = {_mm_set1_ps(1e30f), _mm_set1_ps(1e30f)}, hi[2] = {_mm_set1_ps(-1e30f), _mm_set1_ps(-1e30f)};
+        int anyBounded = 0;
+        for (; first + 4 <= end; first += 4) {
+            const FootprintMath::Lanes q =
+                flat ? math.perspectiveLanes<true>(instances + first) : math.perspectiveLanes<false>(instances + first);
+            if (q.notFinite | (q.reaching & ~q.behind)) {  // a lane with no bound to trust, or at the near plane
+                r.unbounded = true;
+                return r;
+            }
+            const int bounded = ~(q.behind | q.reaching) & 15;  // the rest: wholly behind the near plane, clipped
+            if (!bounded) continue;
+            anyBounded |= bounded;
+            const __m128i bits = _mm_and_si128(_mm_set1_epi32(bounded), _mm_setr_epi32(1, 2, 4, 8));
+            const __m128 lane = _mm_castsi128_ps(_mm_cmpeq_epi32(bits, _mm_setr_epi32(1, 2, 4, 8)));
+            auto where = [&](__m128 v, __m128 otherwise) { return _mm_or_ps(_mm_and_ps(lane, v), _mm_andnot_ps(lane, otherwise)); };
+            lo[0] = _mm_min_ps(lo[0], where(q.x0, lo[0]));
+            lo[1] = _mm_min_ps(lo[1], where(q.y0, lo[1]));
+            hi[0] = _mm_max_ps(hi[0], where(q.x1, hi[0]));
+            hi[1] = _mm_max_ps(hi[1], where(q.y1, hi[1]));
+            // std::max(0, b) as _mm_max_ps(b, 0), std::min(w, b) as _mm_min_ps(b, w): the same bits.
+            const __m128 cx0 = _mm_max_ps(q.box[0], zero), cx1 = _mm_min_ps(q.box[1], width);
+            const __m128 cy0 = _mm_max_ps(q.box[2], zero), cy1 = _mm_min_ps(q.box[3], height);
+            const int inside = _mm_movemask_ps(_mm_and_ps(_mm_cmpgt_ps(cx1, cx0), _mm_cmpgt_ps(cy1, cy0))) & bounded;
+            if (inside) {
+                alignas(16) float dx[4], dy[4];
+                _mm_store_ps(dx, _mm_sub_ps(cx1, cx0));
+                _mm_store_ps(dy, _mm_sub_ps(cy1, cy0));
+                for (int k = 0; k < 4; ++k) {
+                    if (inside >> k & 1) boxPixels += double(dx[k]) * double(dy[k]);
+                }
+            }
+            if (!marking) continue;
+            int32_t ranges[4][4];
+            uint8_t what[4];
+            rangeOf(q, ranges, what);
+            for (int k = 0; k < 4; ++k) {
+                if (what[k] == TileRangeOf::Range) markTiles(grid, tilesX, ranges[k][0], ranges[k][1], ranges[k][2], ranges[k][3]);
+            }
+        }
+        alignas(16) float l0[4], l1[4], h0[4], h1[4];
+        _mm_store_ps(l0, lo[0]);
+        _mm_store_ps(l1, lo[1]);
+        _mm_store_ps(h0, hi[0]);
+        _mm_store_ps(h1, hi[1]);
+        for (int k = 0; k < 4; ++k) {
+            r.lo[0] = std::min(r.lo[0], l0[k]);
+            r.lo[1] = std::min(r.lo[1], l1[k]);
+            r.hi[0] = std::max(r.hi[0], h0[k]);
+            r.hi[1] = std::max(r.hi[1], h1[k]);
+        }
+        r.any = anyBounded != 0;
+    }
+#endif
+    // One at a time: the rest of a run of four, a projection that is not a plain perspective one,
+    // a target without SSE2. The arithmetic first, a chunk at a time, with no branch on the
+    // particle; then what each bound means, in order.
     Bounds b[kChunk];
-    for (size_t first = begin; first < end; first += kChunk) {
+    for (; first < end; first += kChunk) {
         const int n = int(std::min<size_t>(kChunk, end - first));
-        // The arithmetic first, for a chunk at a time, with no branch on the particle; then what
-        // each bound means, in order.
         if (!plainPerspective(P)) {
             for (int j = 0; j < n; ++j) b[j] = math.general(instances[first + j]);
         } else if (flat) {
-            math.perspectiveRun<true>(instances + first, n, b);
+            for (int j = 0; j < n; ++j) b[j] = math.perspective<true>(instances[first + j]);
         } else {
-            math.perspectiveRun<false>(instances + first, n, b);
+            for (int j = 0; j < n; ++j) b[j] = math.perspective<false>(instances[first + j]);
         }
         for (int j = 0; j < n; ++j) {
             const Bounds& q = b[j];
@@ -85,17 +148,9 @@ PieceBound boundPiece(const FootprintMath& math, const ViewInfo& view, bool flat
             const float cx0 = std::max(0.0f, q.box[0]), cx1 = std::min(float(w), q.box[1]);
             const float cy0 = std::max(0.0f, q.box[2]), cy1 = std::min(float(h), q.box[3]);
             if (cx1 > cx0 && cy1 > cy0) boxPixels += double(cx1 - cx0) * double(cy1 - cy0);
-            if (!grid || tilesX <= 0 || tilesY <= 0) continue;
-            // The particle's pixels grown by the border, as a tile range clamped to the view (the
-            // float clamp first: a bound far off screen must not overflow the int; clamped to 0
-            // and up, truncation is the floor).
-            auto tileOf = [](float pixel, int border, int tileCount) {
-                const float t = (pixel + float(border)) * (1.0f / float(kTileSize));  // exact: a power of two
-                return int(std::min(std::max(t, 0.0f), float(tileCount - 1)));
-            };
-            if (q.x1 < -kTileBorder || q.y1 < -kTileBorder || q.x0 > w + kTileBorder || q.y0 > h + kTileBorder) continue;
-            markTiles(grid, tilesX, tileOf(q.x0, -kTileBorder, tilesX), tileOf(q.x1, kTileBorder, tilesX),
-                      tileOf(q.y0, -kTileBorder, tilesY), tileOf(q.y1, kTileBorder, tilesY));
+            if (!marking) continue;
+            int32_t range[4];
+            if (rangeOf(q, range) == TileRangeOf::Range) markTiles(grid, tilesX, range[0], range[1], range[2], range[3]);
         }
     }
     r.boxPixels = boxPixels;

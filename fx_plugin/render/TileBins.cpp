@@ -67,7 +67,8 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
         uint64_t sum = 0;
         int32_t ranges[kChunk][4];
         uint8_t what[kChunk];
-        const TileRangeOf rangeOf{w, h, tilesX, tilesY};
+        const TileRangeOf rangeOf{w, h, tilesX, tilesY, 1};  // grown by a pixel
+        [[maybe_unused]] const bool lanes = fourLanes();
         // A stretch of k at a time that lies in one batch and one chunk: its instances are
         // contiguous (k counts them down), so their tile ranges come four at a time
         // (perspectiveLanes) in instance order, read back in k order.
@@ -88,7 +89,7 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
                 for (; t < len; ++t) what[t] = rangeOf(math.general(stretch[t]), ranges[t]);
             }
 #if FX_SSE2
-            for (; t + 4 <= len; t += 4) {
+            for (; lanes && t + 4 <= len; t += 4) {
                 rangeOf(sphere ? math.perspectiveLanes<false>(stretch + t) : math.perspectiveLanes<true>(stretch + t),
                         ranges + t, what + t);
             }

@@ -283,114 +283,190 @@ TEST(ScreenTiles, FootprintPixelsAddUpAndDecideQuarterRes) {
     EXPECT_TRUE(quarterResPays(near, tiles));
 }
 
-// FootprintMath::perspectiveRun (four particles at a time where SSE2 exists) against
-// perspective<Flat> one at a time: every field of every bound the same bits, for ordinary
-// particles and for the extreme ones (not a number or infinite in each component, at and behind
-// the near plane, at the eye with -0 and +0, sizes 0, negative, tiny and huge), billboards with
-// and without a reach table and spheres, under a finite and an infinite reversed-Z far plane; and
-// the tile ranges the bins take from them (TileRangeOf), four lanes against one.
-TEST(ScreenTiles, FourAtATimeGiveTheBoundsOneAtATimeGives) {
+// Particles for the four-lane tests: ordinary ones and extreme ones (not a number or infinite in
+// each component, at and behind the near plane, at the eye with -0 and +0, sizes 0, negative,
+// tiny and huge, frames out of range), in front of testView()'s camera at (0, 1.5, 6) and around it.
+std::vector<ParticleInstance> oddParticles(int count, bool finite) {
     std::mt19937 rng(29);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
     std::vector<ParticleInstance> particles;
-    for (int i = 0; i < 4000; ++i) {
+    for (int i = 0; i < count; ++i) {
         ParticleInstance p;
-        p.x = 30.0f * u(rng);
-        p.y = 1.0f + 10.0f * u(rng);
-        p.z = 6.0f - 60.0f * (0.5f + 0.5f * u(rng));  // some behind the eye at z 6
-        p.size = std::exp2(6.0f * u(rng));
+        // Finite: 6-66 m ahead, at most 8 m across, so no sphere reaches the near plane and the
+        // bound is not the whole view. Else around the eye at z 6 too, up to 64 m across.
+        p.x = (finite ? 8.0f : 30.0f) * u(rng);
+        p.y = 1.0f + (finite ? 3.0f : 10.0f) * u(rng);
+        p.z = finite ? -60.0f * (0.5f + 0.5f * u(rng)) : 6.0f - 60.0f * (0.5f + 0.5f * u(rng));
+        p.size = std::exp2((finite ? 3.0f : 6.0f) * u(rng));
         p.frame = 2.0f + 2.5f * u(rng);
         particles.push_back(p);
     }
     const float odd[] = {0.0f, -0.0f, nan, inf, -inf, 1e-30f, -1e-30f, 1e30f, -1e30f, 6.0f, 5.9f, 6.1f, 1e-6f};
+    const size_t odds = finite ? 2 : sizeof odd / sizeof odd[0];
     for (size_t i = 0; i < particles.size(); ++i) {
         ParticleInstance& p = particles[i];
-        const float v = odd[i % (sizeof odd / sizeof odd[0])];
+        const float v = odd[i % odds];
         switch ((i / 7) % 9) {
             case 0: p.x = v; break;
             case 1: p.y = v; break;
-            case 2: p.z = v; break;
+            case 2: p.z = finite ? v - 5.0f : v; break;  // finite: no particle at the near plane
             case 3: p.size = v; break;
             case 4: p.frame = v; break;
-            case 5: p.x = 0.0f, p.y = 1.5f, p.z = v; break;  // on the view axis, at the eye and near plane
+            case 5: if (!finite) p.x = 0.0f, p.y = 1.5f, p.z = v; break;  // on the view axis, at the eye and near plane
             default: break;
         }
     }
+    return particles;
+}
+
+// testView(), or (1) the same with a reversed-Z infinite far plane (clip z = near, clip w = -z).
+ViewInfo fourLaneView(int projection) {
+    ViewInfo view = testView();
+    if (projection == 1) {
+        view.proj = glm::perspective(glm::radians(75.0f), float(kW) / float(kH), view.nearPlane, view.farPlane);
+        view.proj[2][2] = 0.0f;
+        view.proj[3][2] = view.nearPlane;
+    }
+    return view;
+}
+
+BillboardReach fourLaneReach() {
     BillboardReach reach;
     reach.lodScale = 40.0f;
     reach.buckets = 5;
     for (size_t e = 0; e < reach.table.size(); ++e) reach.table[e] = 0.5f + 0.02f * float(e % 11);
+    return reach;
+}
+
+// Turns the four-lane paths off for a scope.
+struct OneLane {
+    OneLane() { setFourLanes(false); }
+    ~OneLane() { setFourLanes(true); }
+};
+
+// FootprintMath::perspectiveLanes (four particles a lane each, where SSE2 exists) against
+// perspective<Flat> one at a time: every field of every bound the same bits, for the odd particles
+// above, billboards with and without a reach table and spheres, under a finite and an infinite
+// reversed-Z far plane; and the tile ranges taken from them (TileRangeOf, grown by a pixel as the
+// bins do and by kTileBorder as screenRect does), four lanes against one.
+TEST(ScreenTiles, FourAtATimeGiveTheBoundsOneAtATimeGives) {
+#if FX_SSE2
+    const std::vector<ParticleInstance> particles = oddParticles(4000, false);
+    const BillboardReach reach = fourLaneReach();
     for (int projection = 0; projection < 2; ++projection) {
-        ViewInfo view = testView();
-        if (projection == 1) {
-            // Reversed-Z with an infinite far plane: clip z = near, clip w = -z.
-            view.proj = glm::perspective(glm::radians(75.0f), float(kW) / float(kH), view.nearPlane, view.farPlane);
-            view.proj[2][2] = 0.0f;
-            view.proj[3][2] = view.nearPlane;
-        }
+        const ViewInfo view = fourLaneView(projection);
+        ASSERT_TRUE(footprint::plainPerspective(view.proj));
         for (int kind = 0; kind < 3; ++kind) {
-            const footprint::FootprintMath math(view, kind != 2, kind == 1 ? &reach : nullptr, kind == 2 ? 0.5f : footprint::kQuadReach);
-            ASSERT_TRUE(footprint::plainPerspective(view.proj));
-            // Odd offsets and lengths: runs that end in a partial group of four.
-            for (int first = 0; first < 7; first += 3) {
-                const int n = int(particles.size()) - first - kind;
-                std::vector<footprint::Bounds> runs(static_cast<size_t>(n));
-                if (kind == 2) {
-                    math.perspectiveRun<false>(particles.data() + first, n, runs.data());
-                } else {
-                    math.perspectiveRun<true>(particles.data() + first, n, runs.data());
-                }
-                int bounded = 0, unbounded = 0, behind = 0;
-                for (int i = 0; i < n; ++i) {
-                    const ParticleInstance& p = particles[size_t(first + i)];
+            const footprint::FootprintMath math(view, kind != 2, kind == 1 ? &reach : nullptr,
+                                                kind == 2 ? 0.5f : footprint::kQuadReach);
+            int bounded = 0, unbounded = 0, behind = 0, ranges[2] = {0, 0};
+            for (size_t i = 0; i + 4 <= particles.size(); i += 4) {
+                const footprint::FootprintMath::Lanes q =
+                    kind == 2 ? math.perspectiveLanes<false>(&particles[i]) : math.perspectiveLanes<true>(&particles[i]);
+                alignas(16) float v[8][4];
+                const __m128 rows[8] = {q.x0, q.x1, q.y0, q.y1, q.box[0], q.box[1], q.box[2], q.box[3]};
+                for (int r = 0; r < 8; ++r) _mm_store_ps(v[r], rows[r]);
+                for (int k = 0; k < 4; ++k) {
+                    const ParticleInstance& p = particles[i + size_t(k)];
                     const footprint::Bounds one = kind == 2 ? math.perspective<false>(p) : math.perspective<true>(p);
-                    const footprint::Bounds& run = runs[size_t(i)];
                     // The same bits, or both not a number (which NaN comes out of inf - inf is the
                     // compiler's choice of operand order; no caller reads an unbounded one's pixels).
                     auto same = [](float a, float b) {
                         return std::memcmp(&a, &b, sizeof a) == 0 || (std::isnan(a) && std::isnan(b));
                     };
-                    bool equal = one.state == run.state;
-                    const float* a = &one.x0;
-                    const float* b = &run.x0;
-                    for (int f = 0; f < 4; ++f) equal = equal && same(a[f], b[f]) && same(one.box[f], run.box[f]);
-                    ASSERT_TRUE(equal)
-                        << "projection " << projection << ", kind " << kind << ", particle " << first + i << " ("
-                        << p.x << ", " << p.y << ", " << p.z << ", size " << p.size << ", frame " << p.frame
-                        << "): x0 " << one.x0 << " / " << run.x0 << ", x1 " << one.x1 << " / " << run.x1 << ", y0 "
-                        << one.y0 << " / " << run.y0 << ", y1 " << one.y1 << " / " << run.y1 << ", state " << one.state
-                        << " / " << run.state;
+                    const float ones[8] = {one.x0, one.x1, one.y0, one.y1, one.box[0], one.box[1], one.box[2], one.box[3]};
+                    bool equal = one.state == q.state(k);
+                    for (int f = 0; f < 8; ++f) equal = equal && same(ones[f], v[f][k]);
+                    ASSERT_TRUE(equal) << "projection " << projection << ", kind " << kind << ", particle " << i + k
+                                       << " (" << p.x << ", " << p.y << ", " << p.z << ", size " << p.size << ", frame "
+                                       << p.frame << "): x0 " << one.x0 << " / " << v[0][k] << ", x1 " << one.x1 << " / "
+                                       << v[1][k] << ", y0 " << one.y0 << " / " << v[2][k] << ", y1 " << one.y1 << " / "
+                                       << v[3][k] << ", state " << one.state << " / " << q.state(k);
                     bounded += one.state == footprint::Bounds::Bounded;
                     unbounded += one.state == footprint::Bounds::Unbounded;
                     behind += one.state == footprint::Bounds::Behind;
                 }
-#if FX_SSE2
-                // The bins' tile ranges of four lanes against one at a time (what, and the range
-                // where there is one).
-                const footprint::TileRangeOf rangeOf{kW, kH, (kW + 15) / 16, (kH + 15) / 16};
-                int ranges = 0;
-                for (int i = 0; i + 4 <= n; i += 4) {
-                    const ParticleInstance* four = particles.data() + first + i;
+                for (int b = 0; b < 2; ++b) {
+                    const footprint::TileRangeOf rangeOf{kW, kH, (kW + 15) / 16, (kH + 15) / 16,
+                                                         b == 0 ? 1 : ScreenTiles::kTileBorder};
                     int32_t lanes[4][4];
                     uint8_t what[4];
-                    rangeOf(kind == 2 ? math.perspectiveLanes<false>(four) : math.perspectiveLanes<true>(four), lanes, what);
+                    rangeOf(q, lanes, what);
                     for (int k = 0; k < 4; ++k) {
+                        const ParticleInstance& p = particles[i + size_t(k)];
                         int32_t r[4];
-                        const uint8_t one = rangeOf(runs[size_t(i + k)], r);
-                        ASSERT_EQ(one, what[k]) << "particle " << first + i + k;
+                        const uint8_t one = rangeOf(kind == 2 ? math.perspective<false>(p) : math.perspective<true>(p), r);
+                        ASSERT_EQ(one, what[k]) << "particle " << i + k << ", border " << rangeOf.border;
                         if (one != footprint::TileRangeOf::Range) continue;
-                        ++ranges;
-                        for (int e = 0; e < 4; ++e) ASSERT_EQ(r[e], lanes[k][e]) << "particle " << first + i + k;
+                        ++ranges[b];
+                        for (int e = 0; e < 4; ++e) ASSERT_EQ(r[e], lanes[k][e]) << "particle " << i + k;
                     }
                 }
-                EXPECT_GT(ranges, n / 4);
-#endif
-                // The cases are all there: not a vacuous comparison.
-                EXPECT_GT(bounded, n / 3);
-                EXPECT_GT(unbounded, 50);
-                EXPECT_GT(behind, 50);
             }
+            // The cases are all there: not a vacuous comparison.
+            EXPECT_GT(bounded, 1000);
+            EXPECT_GT(unbounded, 50);
+            EXPECT_GT(behind, 50);
+            EXPECT_GT(ranges[0], 500);
+            EXPECT_GT(ranges[1], 500);
+        }
+    }
+#else
+    GTEST_SKIP() << "no SSE2 on this target: the bounds run one particle at a time only";
+#endif
+}
+
+// screenRect and binParticles with their four lanes against the same calls with one: the rect,
+// the footprint pixels, the tile runs, the bins' words, tiles and counts, the same bits. Finite
+// particles (with an unbounded one both give the whole view / refuse the view), runs of lengths
+// that end in partial groups of four, two batches of billboards and one of spheres.
+TEST(ScreenTiles, ScreenRectAndBinsAreTheSameWithOneLane) {
+    const std::vector<ParticleInstance> particles = oddParticles(3001, true);
+    const BillboardReach reach = fourLaneReach();
+    for (int projection = 0; projection < 2; ++projection) {
+        const ViewInfo view = fourLaneView(projection);
+        for (int kind = 0; kind < 3; ++kind) {
+            const Footprint footprint = kind == 2 ? Footprint::Box : Footprint::Billboard;
+            const BillboardReach* r = kind == 1 ? &reach : nullptr;
+            for (int count : {3001, 1002, 7}) {
+                ScreenTiles four, one;
+                const ScreenRect a = screenRect(view, particles.data(), count, &four, footprint, Jobs(), r);
+                ScreenRect b;
+                {
+                    OneLane off;
+                    b = screenRect(view, particles.data(), count, &one, footprint, Jobs(), r);
+                }
+                EXPECT_EQ(a.x0, b.x0);
+                EXPECT_EQ(a.x1, b.x1);
+                EXPECT_EQ(a.y0, b.y0);
+                EXPECT_EQ(a.y1, b.y1);
+                EXPECT_EQ(a.whole, b.whole);
+                EXPECT_EQ(std::memcmp(&a.footprintPixels, &b.footprintPixels, sizeof(double)), 0)
+                    << a.footprintPixels << " / " << b.footprintPixels;
+                EXPECT_EQ(four.vertices, one.vertices);
+                EXPECT_EQ(four.pixels, one.pixels);
+                // Not a vacuous comparison: a rect inside the view, and tiles.
+                if (count == 7) {
+                    EXPECT_FALSE(a.whole);
+                }
+                EXPECT_GT(four.runs(), 3);
+            }
+        }
+        const TileBins::Range batches[3] = {{0, 1000, false}, {1000, 1001, true}, {2001, 1000, false}};
+        for (TileBins::Fill fill : {TileBins::Fill::Entries, TileBins::Fill::Pairs, TileBins::Fill::Ranges}) {
+            TileBins four, one;
+            ASSERT_TRUE(binParticles(view, particles.data(), batches, 3, &reach, &four, Jobs(), fill));
+            {
+                OneLane off;
+                ASSERT_TRUE(binParticles(view, particles.data(), batches, 3, &reach, &one, Jobs(), fill));
+            }
+            EXPECT_GT(four.entryCount, 3000u);
+            EXPECT_EQ(four.entryCount, one.entryCount);
+            EXPECT_EQ(four.particles, one.particles);
+            EXPECT_EQ(four.entries, one.entries);
+            EXPECT_EQ(four.tiles, one.tiles);
+            EXPECT_EQ(four.cover.vertices, one.cover.vertices);
         }
     }
 }
