@@ -235,12 +235,7 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
         boxPixels += q.boxPixels;
         any = any || q.any;
     }
-    if (tiles) {
-        for (uint32_t s = 1; s < pieces.count; ++s) {
-            const int32_t* add = tiles->pieceGrids.data() + gridCells * (s - 1);
-            for (size_t c = 0; c < gridCells; ++c) tiles->grid[c] += add[c];
-        }
-    }
+    if (tiles && pieces.count > 1) addGrids(tiles->grid.data(), tiles->pieceGrids.data(), gridCells, pieces.count - 1, jobs);
     r.footprintPixels = boxPixels;
     if (!any) {
         r.whole = false;  // nothing in front of the camera: an empty rect, no tiles

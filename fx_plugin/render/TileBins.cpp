@@ -59,11 +59,17 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
     // its ranges' corners +-1 in its own grid (summed below into each tile's count: a large
     // particle costs no more than a small one).
     const Pieces pieces = splitWork(size_t(n), 8192, 16);
-    out->grids.assign(std::max<size_t>(pieces.count, 1) * gridSize, 0);
+    // Each piece zeroes its own grid (below, on its thread); with no pieces the one grid is zeroed here.
+    if (pieces.count == 0) {
+        out->grids.assign(gridSize, 0);
+    } else {
+        out->grids.resize(pieces.count * gridSize);
+    }
     bool failed[HostAdapter::kMaxTasks] = {};
     uint64_t pieceEntries[HostAdapter::kMaxTasks] = {};
     jobs.run(pieces, [&](uint32_t piece) {
         int32_t* grid = &out->grids[piece * gridSize];
+        std::fill(grid, grid + gridSize, 0);
         uint64_t sum = 0;
         int32_t ranges[kChunk][4];
         uint8_t what[kChunk];
@@ -147,10 +153,7 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
 
     // 2. Each tile's count: the grids added up, then summed along the rows and down the columns.
     int32_t* grid = out->grids.data();
-    for (uint32_t piece = 1; piece < pieces.count; ++piece) {
-        const int32_t* other = &out->grids[piece * gridSize];
-        for (size_t c = 0; c < gridSize; ++c) grid[c] += other[c];
-    }
+    if (pieces.count > 1) addGrids(grid, grid + gridSize, gridSize, pieces.count - 1, jobs);
     out->counts.assign(size_t(tileCount), 0);
     int32_t* counts = out->counts.data();
     for (int ty = 0; ty < tilesY; ++ty) {
