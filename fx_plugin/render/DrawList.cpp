@@ -59,7 +59,10 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
         // sorting the whole pool and gathering through its order read every stream at random.
         // The radix sort is stable, so the order is the one sorting the pool would give. Each
         // piece of the pool writes its visible particles at its own offset in culled_ (no piece
-        // waits for another); the pieces' counts then place them in the list, in pool order.
+        // waits for another); the pieces' counts then place them in the list, in pool order. A
+        // batch drawn unsorted (or whose order the GPU works out) goes into the list directly:
+        // each piece tests its particles first, then writes the visible ones at its place there
+        // (bench_draw BM_DrawListBuildJobs/N/T/1: the copy through culled_ was a third of it).
         DrawBatch batch;
         batch.first = static_cast<int>(out->instances.size());
         const bool sort = in.sortBackToFront && !deferOrder;
@@ -77,40 +80,56 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
         const Pieces pieces = splitWork(size_t(alive), kCullGrain, HostAdapter::kMaxTasks);
         pieceDrawn_.assign(pieces.count, 0u);
         pieceFirst_.assign(pieces.count, 0u);
-        jobs.run(pieces, [&](uint32_t piece) {
-            ParticleInstance* drawn = culled_.data();
-            float* depth = depth_.data();
-            size_t k = pieces.begin(piece), i = k;
+        // One piece of the pool: tests each particle (or takes keepIn's answers, an earlier call's
+        // keepOut), keeps the answers in keepOut, and writes each visible particle's instance to
+        // `to` (and its depth to `depthTo`) one after another. Returns how many are visible.
+        auto cullPiece = [&](uint32_t piece, uint8_t* keepOut, const uint8_t* keepIn, ParticleInstance* to,
+                             float* depthTo) {
+            size_t k = 0, i = pieces.begin(piece);
             const size_t e = pieces.end(piece);
 #if FX_SSE2
             // Four particles a lane each (an unsliced view): the tests and the instances in
             // registers, each visible one stored as two vectors; the same list as the loop below
-            // (ViewFrustum::intersectsSpheres4, DrawListOrderTest).
+            // (ViewFrustum::intersectsSpheres4, DrawListOrderTest). keepOut/keepIn hold a group's
+            // four answers as bits at its first particle.
             if (!sliced && lanes) {
                 const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f), halfDiagonal = _mm_set1_ps(kHalfDiagonal);
                 const __m128 eye[3] = {_mm_set1_ps(view.eye.x), _mm_set1_ps(view.eye.y), _mm_set1_ps(view.eye.z)};
                 const __m128 ahead[3] = {_mm_set1_ps(forward.x), _mm_set1_ps(forward.y), _mm_set1_ps(forward.z)};
+                static constexpr uint8_t kBits[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
                 for (; i + 4 <= e; i += 4) {
-                    const __m128 s4 = _mm_loadu_ps(size + i), f4 = _mm_loadu_ps(fade + i);
-                    int keep = _mm_movemask_ps(_mm_and_ps(_mm_cmpgt_ps(s4, zero), _mm_cmpgt_ps(f4, zero)));
+                    int keep;
+                    if (keepIn) {
+                        keep = keepIn[i];
+                    } else {
+                        keep = _mm_movemask_ps(_mm_and_ps(_mm_cmpgt_ps(_mm_loadu_ps(size + i), zero),
+                                                          _mm_cmpgt_ps(_mm_loadu_ps(fade + i), zero)));
+                        if (keep) {
+                            keep &= frustum.intersectsSpheres4(_mm_loadu_ps(x + i), _mm_loadu_ps(y + i), _mm_loadu_ps(z + i),
+                                                               _mm_mul_ps(_mm_loadu_ps(size + i), halfDiagonal));
+                        }
+                        if (keepOut) keepOut[i] = uint8_t(keep);
+                    }
                     if (!keep) continue;
+                    if (!to) {
+                        k += kBits[keep];
+                        continue;
+                    }
                     const __m128 x4 = _mm_loadu_ps(x + i), y4 = _mm_loadu_ps(y + i), z4 = _mm_loadu_ps(z + i);
-                    keep &= frustum.intersectsSpheres4(x4, y4, z4, _mm_mul_ps(s4, halfDiagonal));
-                    if (!keep) continue;
                     uint32_t frames4;
                     std::memcpy(&frames4, frame + i, 4);
                     const __m128i bytes = _mm_cvtsi32_si128(int(frames4));
                     const __m128i frameInts =
                         _mm_and_si128(_mm_unpacklo_epi16(_mm_unpacklo_epi8(bytes, _mm_setzero_si128()), _mm_setzero_si128()),
                                       _mm_set1_epi32(3));
-                    __m128 a0 = x4, a1 = y4, a2 = z4, a3 = s4;
-                    __m128 b0 = _mm_loadu_ps(life + i), b1 = _mm_loadu_ps(rotation + i), b2 = _mm_min_ps(f4, one),
-                           b3 = _mm_cvtepi32_ps(frameInts);
+                    __m128 a0 = x4, a1 = y4, a2 = z4, a3 = _mm_loadu_ps(size + i);
+                    __m128 b0 = _mm_loadu_ps(life + i), b1 = _mm_loadu_ps(rotation + i),
+                           b2 = _mm_min_ps(_mm_loadu_ps(fade + i), one), b3 = _mm_cvtepi32_ps(frameInts);
                     _MM_TRANSPOSE4_PS(a0, a1, a2, a3);  // x, y, z, size of each
                     _MM_TRANSPOSE4_PS(b0, b1, b2, b3);  // life, rotation, fade, frame of each
                     const __m128 firstHalf[4] = {a0, a1, a2, a3}, secondHalf[4] = {b0, b1, b2, b3};
                     alignas(16) float depth4[4];
-                    if (sort) {
+                    if (depthTo) {
                         // ((x - eye.x) forward.x + (y - eye.y) forward.y) + (z - eye.z) forward.z
                         const __m128 d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_sub_ps(x4, eye[0]), ahead[0]),
                                                                _mm_mul_ps(_mm_sub_ps(y4, eye[1]), ahead[1])),
@@ -119,48 +138,83 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
                     }
                     for (int lane = 0; lane < 4; ++lane) {
                         if (!(keep >> lane & 1)) continue;
-                        _mm_storeu_ps(&drawn[k].x, firstHalf[lane]);
-                        _mm_storeu_ps(&drawn[k].life, secondHalf[lane]);
-                        if (sort) depth[k] = depth4[lane];
+                        _mm_storeu_ps(&to[k].x, firstHalf[lane]);
+                        _mm_storeu_ps(&to[k].life, secondHalf[lane]);
+                        if (depthTo) depthTo[k] = depth4[lane];
                         ++k;
                     }
                 }
             }
 #endif
             for (; i < e; ++i) {
-                if (!(size[i] > 0.0f) || !(fade[i] > 0.0f)) continue;  // also drops NaN
-                if (!frustum.intersectsSphere(glm::vec3(x[i], y[i], z[i]), size[i] * kHalfDiagonal)) {
-                    continue;
+                bool visible;
+                if (keepIn) {
+                    visible = keepIn[i] != 0;
+                } else {
+                    visible = size[i] > 0.0f && fade[i] > 0.0f &&  // also drops NaN
+                              frustum.intersectsSphere(glm::vec3(x[i], y[i], z[i]), size[i] * kHalfDiagonal) &&
+                              (!sliced || view.slice.contains(viewDistance(x[i], y[i], z[i])));
+                    if (keepOut) keepOut[i] = uint8_t(visible);
                 }
-                if (sliced && !view.slice.contains(viewDistance(x[i], y[i], z[i]))) continue;
-                ParticleInstance& p = drawn[k];
-                p.x = x[i];
-                p.y = y[i];
-                p.z = z[i];
-                p.size = size[i];
-                p.life = life[i];
-                p.rotation = rotation[i];
-                p.fade = fade[i] < 1.0f ? fade[i] : 1.0f;
-                p.frame = float(frame[i] & 3u);
-                if (sort) {
-                    depth[k] = (x[i] - view.eye.x) * forward.x + (y[i] - view.eye.y) * forward.y +
-                               (z[i] - view.eye.z) * forward.z;
+                if (!visible) continue;
+                if (to) {
+                    ParticleInstance& p = to[k];
+                    p.x = x[i];
+                    p.y = y[i];
+                    p.z = z[i];
+                    p.size = size[i];
+                    p.life = life[i];
+                    p.rotation = rotation[i];
+                    p.fade = fade[i] < 1.0f ? fade[i] : 1.0f;
+                    p.frame = float(frame[i] & 3u);
+                    if (depthTo) {
+                        depthTo[k] = (x[i] - view.eye.x) * forward.x + (y[i] - view.eye.y) * forward.y +
+                                     (z[i] - view.eye.z) * forward.z;
+                    }
                 }
                 ++k;
             }
-            pieceDrawn_[piece] = uint32_t(k - pieces.begin(piece));
-        });
-        uint32_t drawnCount = 0;
-        for (uint32_t s = 0; s < pieces.count; ++s) {
-            pieceFirst_[s] = drawnCount;
-            drawnCount += pieceDrawn_[s];
-        }
+            return uint32_t(k);
+        };
         const size_t first = out->instances.size();
-        out->instances.resize(first + drawnCount);
-        ParticleInstance* const listed = out->instances.data() + first;
-        if (drawnCount == 0) {
-            // Nothing visible: no batch (and no copy from or into an empty array).
-        } else if (sort) {
+        ParticleInstance* listed = nullptr;
+        uint32_t drawnCount = 0;
+        auto place = [&]() {
+            for (uint32_t s = 0; s < pieces.count; ++s) {
+                pieceFirst_[s] = drawnCount;
+                drawnCount += pieceDrawn_[s];
+            }
+        };
+        if (sort) {
+            // Each piece's visible particles at its pool offset in culled_, with their depths.
+            jobs.run(pieces, [&](uint32_t piece) {
+                const size_t at = pieces.begin(piece);
+                pieceDrawn_[piece] = cullPiece(piece, nullptr, nullptr, culled_.data() + at, depth_.data() + at);
+            });
+            place();
+            out->instances.resize(first + drawnCount);
+            listed = out->instances.data() + first;
+        } else if (pieces.count <= 1) {
+            // One piece: straight into the list, sized for the whole pool and cut to what is
+            // visible (a NoInitVector: neither writes the elements).
+            out->instances.resize(first + size_t(alive));
+            if (pieces.count == 1) pieceDrawn_[0] = cullPiece(0, nullptr, nullptr, out->instances.data() + first, nullptr);
+            place();
+            out->instances.resize(first + drawnCount);
+            listed = out->instances.data() + first;
+        } else {
+            // Several: each piece's answers first (keep_), then, with every piece's place in the
+            // list known, each writes its visible particles there: no copy through culled_.
+            if (keep_.size() < capacity) keep_.resize(capacity);
+            jobs.run(pieces, [&](uint32_t piece) { pieceDrawn_[piece] = cullPiece(piece, keep_.data(), nullptr, nullptr, nullptr); });
+            place();
+            out->instances.resize(first + drawnCount);
+            listed = out->instances.data() + first;
+            jobs.run(pieces, [&](uint32_t piece) {
+                if (pieceDrawn_[piece] > 0) cullPiece(piece, nullptr, keep_.data(), listed + pieceFirst_[piece], nullptr);
+            });
+        }
+        if (sort && drawnCount > 0) {
             // The depths without the gaps (and where each came from), sorted; then gathered.
             jobs.run(pieces, [&](uint32_t piece) {
                 const size_t from = pieces.begin(piece), n = pieceDrawn_[piece], to = pieceFirst_[piece];
@@ -175,12 +229,6 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
                 for (size_t k = gather.begin(piece), e = gather.end(piece); k < e; ++k) {
                     listed[k] = culled_[order.indices[k]];
                 }
-            });
-        } else {
-            jobs.run(pieces, [&](uint32_t piece) {
-                if (pieceDrawn_[piece] == 0) return;
-                std::memcpy(listed + pieceFirst_[piece], culled_.data() + pieces.begin(piece),
-                            pieceDrawn_[piece] * sizeof(ParticleInstance));
             });
         }
         batch.count = static_cast<int>(out->instances.size()) - batch.first;

@@ -93,7 +93,8 @@ public:
 
 private:
     ParticleSorter sorter_;                   // the batch being built's order
-    NoInitVector<ParticleInstance> culled_;   // its visible particles, each piece's at its pool offset
+    NoInitVector<ParticleInstance> culled_;   // a sorted batch's visible particles, each piece's at its pool offset
+    NoInitVector<uint8_t> keep_;              // an unsorted batch's answers per particle (per four: bits)
     NoInitVector<float> depth_;               // their depths along the view axis, likewise
     NoInitVector<float> packedDepth_;         // the depths without the gaps between pieces
     NoInitVector<uint32_t> packedAt_;         // where each of those lies in culled_
