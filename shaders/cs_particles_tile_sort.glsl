@@ -26,6 +26,24 @@ uniform int uGroupsX;  // groups per row of the dispatch (a row holds at most 65
 
 uint groupIndex() { return gl_WorkGroupID.y * uint(uGroupsX) + gl_WorkGroupID.x; }
 
+#if defined(FX_TILE_ORDER_KEY) || defined(FX_TILE_ORDER_BATCH) || defined(FX_TILE_ORDER_PREFIX)
+// The words of an unsorted list's particles (TileBins::particles with Fill::Ranges, binned as the
+// list lies, front to back): two a particle, its tile range. Its entry (instance | batch << 26)
+// comes from its place k (TileBins::orderStart, batchLast): in the j-th batch from the back, the
+// batch's last instance first.
+layout(std430, binding = 0) readonly buffer Particles { uvec2 uRanges[]; };
+uniform int uBatchCount;
+uniform int uOrderStart[65];
+uniform int uBatchLast[64];
+
+uint entryOf(uint k) {
+    int j = 0;
+    while (j + 1 < uBatchCount && uint(uOrderStart[j + 1]) <= k) ++j;
+    int b = uBatchCount - 1 - j;
+    return uint(uBatchLast[b] - (int(k) - uOrderStart[j])) | (uint(b) << 26u);
+}
+#endif
+
 #if defined(FX_TILE_EMIT)
 layout(local_size_x = 256) in;
 // Per particle, front to back (TileBins::particles): tx0 | tx1 << 16, ty0 | ty1 << 16, first pair, entry.
@@ -165,8 +183,6 @@ void main() {
 
 #elif defined(FX_TILE_ORDER_KEY)
 layout(local_size_x = 256) in;
-// The words of an unsorted list's particles (TileBins::particles, binned as the list lies).
-layout(std430, binding = 0) readonly buffer Particles { uvec4 uParticles[]; };
 layout(std430, binding = 1) writeonly buffer KeysOut { uint uKeysOut[]; };
 layout(std430, binding = 2) writeonly buffer EntriesOut { uint uEntriesOut[]; };
 // InstanceStream's ParticleInstance: (x, y, z, size), (life, rotation, fade, frame).
@@ -184,7 +200,7 @@ uniform uint uBackToFront;  // a bit per batch drawn back to front
 void main() {
     uint k = groupIndex() * kGroup + gl_LocalInvocationID.x;
     if (k >= uint(uParticleCount)) return;
-    uint entry = uParticles[k].w;
+    uint entry = entryOf(k);
     uint key = 0u;
     if (((uBackToFront >> (entry >> 26u)) & 1u) != 0u) {
         vec3 p = uInstances[(entry & 0x3ffffffu) * 2u].xyz;
@@ -199,22 +215,19 @@ void main() {
 
 #elif defined(FX_TILE_ORDER_BATCH)
 layout(local_size_x = 256) in;
-layout(std430, binding = 0) readonly buffer Particles { uvec4 uParticles[]; };
 layout(std430, binding = 1) writeonly buffer KeysOut { uint uKeysOut[]; };
 layout(std430, binding = 2) readonly buffer EntriesIn { uint uEntriesIn[]; };
 uniform int uParticleCount;
-uniform int uBatchCount;
 
 // Each particle's key becomes its batch, the last first (TileBins' front-to-back order).
 void main() {
     uint s = groupIndex() * kGroup + gl_LocalInvocationID.x;
     if (s >= uint(uParticleCount)) return;
-    uKeysOut[s] = uint(uBatchCount - 1) - (uParticles[uEntriesIn[s]].w >> 26u);
+    uKeysOut[s] = uint(uBatchCount - 1) - (entryOf(uEntriesIn[s]) >> 26u);
 }
 
 #elif defined(FX_TILE_ORDER_PREFIX)
 layout(local_size_x = 256) in;
-layout(std430, binding = 0) readonly buffer Particles { uvec4 uParticles[]; };
 layout(std430, binding = 2) readonly buffer EntriesIn { uint uEntriesIn[]; };  // the sorted places
 layout(std430, binding = 3) writeonly buffer Ordered { uvec4 uOrdered[]; };
 layout(std430, binding = 4) writeonly buffer Sums { uint uSums[]; };
@@ -222,23 +235,26 @@ uniform int uParticleCount;
 shared uint sSums[256];
 
 // A particle's pairs: its tile range's tiles (none where tx0 > tx1).
-uint pairsOf(uvec4 w) {
+uint pairsOf(uvec2 w) {
     uint x0 = w.x & 0xffffu, x1 = w.x >> 16u, y0 = w.y & 0xffffu, y1 = w.y >> 16u;
     return x0 > x1 ? 0u : (x1 - x0 + 1u) * (y1 - y0 + 1u);
 }
 
-// Each group: 1,024 sorted places, four per invocation; their words in order, each with its first
-// pair within the group, and the group's sum.
+// Each group: 1,024 sorted places, four per invocation; their ranges in order, each with its first
+// pair within the group and its entry, and the group's sum.
 void main() {
     uint lane = gl_LocalInvocationID.x;
     uint first = groupIndex() * 1024u + lane * 4u;
     uint n = uint(uParticleCount);
-    uvec4 words[4];
+    uvec2 words[4];
+    uint entries[4];
     uint counts[4];
     uint sum = 0u;
     for (int j = 0; j < 4; ++j) {
         uint s = first + uint(j);
-        words[j] = s < n ? uParticles[uEntriesIn[s]] : uvec4(1u, 1u, 0u, 0u);
+        uint k = s < n ? uEntriesIn[s] : 0u;
+        words[j] = s < n ? uRanges[k] : uvec2(1u, 1u);
+        entries[j] = s < n ? entryOf(k) : 0u;
         counts[j] = s < n ? pairsOf(words[j]) : 0u;
         sum += counts[j];
     }
@@ -253,7 +269,7 @@ void main() {
     uint running = sSums[lane] - sum;
     for (int j = 0; j < 4; ++j) {
         uint s = first + uint(j);
-        if (s < n) uOrdered[s] = uvec4(words[j].x, words[j].y, running, words[j].w);
+        if (s < n) uOrdered[s] = uvec4(words[j].x, words[j].y, running, entries[j]);
         running += counts[j];
     }
     if (lane == 255u) uSums[groupIndex()] = sSums[255];

@@ -38,19 +38,23 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
     if (top >= (1 << TileBins::kBatchShift)) return false;
     // Front-to-back order k: the last batch's last particle first. orderStart[j]: the first k of
     // the j-th batch from the back.
-    int orderStart[(1 << (32 - TileBins::kBatchShift)) + 1];
+    int32_t* orderStart = out->orderStart;
     int n = 0;
     for (int j = 0; j < batchCount; ++j) {
         orderStart[j] = n;
         n += std::max(batches[batchCount - 1 - j].count, 0);
+        out->batchLast[batchCount - 1 - j] = batches[batchCount - 1 - j].first + batches[batchCount - 1 - j].count - 1;
     }
     orderStart[batchCount] = n;
+    out->batchCount = batchCount;
+    const int stride = fill == TileBins::Fill::Ranges ? 2 : 4;
+    out->wordsPerParticle = stride;
     const int tileCount = tilesX * tilesY;
     const FootprintMath flat(view, true, reach), box(view, false, nullptr, 0.5f);
     const bool perspective = plainPerspective(view.proj);
     out->tilesX = tilesX;
     out->tilesY = tilesY;
-    out->particles.resize(size_t(n) * 4);
+    out->particles.resize(size_t(n) * size_t(stride));
     uint32_t* words = out->particles.data();
     const size_t gridWidth = size_t(tilesX) + 1, gridSize = gridWidth * (size_t(tilesY) + 1);
 
@@ -105,10 +109,12 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
             }
             for (t = 0; t < len; ++t, ++k) {
                 const int at = len - 1 - t;
-                uint32_t* word = &words[k * 4];
+                uint32_t* word = &words[k * size_t(stride)];
                 word[0] = word[1] = 1u;  // tx0 1 > tx1 0: none
-                word[2] = 0;
-                word[3] = uint32_t(iHigh - t) | (uint32_t(b) << TileBins::kBatchShift);
+                if (stride == 4) {
+                    word[2] = 0;
+                    word[3] = uint32_t(iHigh - t) | (uint32_t(b) << TileBins::kBatchShift);
+                }
                 if (what[at] == TileRangeOf::None) continue;
                 int32_t* r = ranges[at];
                 if (what[at] == TileRangeOf::Unbounded) {
@@ -125,8 +131,9 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
                 }
                 word[0] = uint32_t(r[0]) | uint32_t(r[1]) << 16;
                 word[1] = uint32_t(r[2]) | uint32_t(r[3]) << 16;
-                word[2] = uint32_t((r[1] - r[0] + 1) * (r[3] - r[2] + 1));
-                sum += word[2];
+                const uint32_t count = uint32_t((r[1] - r[0] + 1) * (r[3] - r[2] + 1));
+                if (stride == 4) word[2] = count;  // the first entry once the counts are added up
+                sum += count;
                 markTiles(grid, tilesX, r[0], r[1], r[2], r[3]);
             }
         }
@@ -191,6 +198,7 @@ void writeEntries(TileBins* bins, const Jobs& jobs) {
     // 4. The entries, front to back (k order), in bands of tile rows, each band into its own tiles
     // (it reads every particle's range: cheap beside its entries). A band per 8,192 entries, up to
     // 16: the writes go to scattered tiles, about 4-6 ns an entry on one thread (bench_draw).
+    if (bins->wordsPerParticle != 4) return;  // Fill::Ranges: no entries to write them from
     const int tilesX = bins->tilesX, n = int(bins->particles.size() / 4);
     const uint32_t* words = bins->particles.data();
     int32_t* counts = bins->counts.data();

@@ -21,16 +21,24 @@ struct TileBins {
         bool sphere = false;       ///< spheres: bounded as Footprint::Box, the reach table not used
     };
     /// What binParticles writes besides the counts: the lists (Entries), or only what the GPU
-    /// writes them from (Pairs: `particles`); Ranges: `particles` with each one's entry count in
-    /// place of its first entry, for the GPU that orders the particles itself and adds the counts up
-    /// in its order (TileSort::DepthOrder).
+    /// writes them from (Pairs: `particles`); Ranges: `particles` with only each one's tile range
+    /// (two words), for the GPU that orders the particles itself, works each one's entry out from
+    /// its place (orderStart, batchLast) and adds the counts up in its order (TileSort::DepthOrder):
+    /// half the bytes written here and uploaded.
     enum class Fill : uint8_t { Entries, Pairs, Ranges };
-    /// Per particle, front to back, four words: its tile range (tx0 | tx1 << 16, ty0 | ty1 << 16;
-    /// tx0 > tx1 where it touches none), its first entry in pair order (the entries of the
-    /// particles before it added up) and its entry. The GPU writes a pair (tile, entry) for every
-    /// tile of a range, row by row, and sorts them by tile keeping that order (TileSort.h): the
-    /// sorted entries are `entries`.
+    /// Per particle, front to back, wordsPerParticle words: its tile range (tx0 | tx1 << 16,
+    /// ty0 | ty1 << 16; tx0 > tx1 where it touches none), then (Entries, Pairs) its first entry in
+    /// pair order (the entries of the particles before it added up) and its entry. The GPU writes
+    /// a pair (tile, entry) for every tile of a range, row by row, and sorts them by tile keeping
+    /// that order (TileSort.h): the sorted entries are `entries`.
     std::vector<uint32_t> particles;
+    int wordsPerParticle = 4;  ///< 4, or 2 for Fill::Ranges
+    /// The entry of particle k (front to back): in the j-th batch from the back, the first k at or
+    /// past orderStart[j]; its batch b = batchCount - 1 - j; its instance batchLast[b] - (k -
+    /// orderStart[j]) (the batch's last instance first).
+    int batchCount = 0;
+    int32_t orderStart[(1 << (32 - kBatchShift)) + 1] = {};
+    int32_t batchLast[1 << (32 - kBatchShift)] = {};
     std::vector<uint32_t> entries;  ///< per tile, front to back (Fill::Entries only)
     std::vector<uint32_t> tiles;    ///< per tile holding particles: tile x, tile y, first entry, count
     ScreenTiles cover;              ///< those tiles as runs (the composite's draw)
@@ -52,7 +60,7 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
                   int batchCount, const BillboardReach* reach, TileBins* out, const Jobs& jobs = Jobs(),
                   TileBins::Fill fill = TileBins::Fill::Entries);
 
-/// The lists of a Fill::Pairs result written here after all (`entries`, what Fill::Entries gives
+/// The lists of a Fill::Pairs (or Entries) result written here after all (`entries`, what Fill::Entries gives
 /// and TileSort writes on the GPU): where they are few, writing them costs the CPU less than the
 /// GPU's sort costs its fixed passes (TiledPath::kCpuListEntries). Once per binParticles: its
 /// `counts` are the cursors. In bands of tile rows through `jobs`.

@@ -102,6 +102,8 @@ void TileSort::bind(const ProgramCache& programs) {
         u.forward = glGetUniformLocation(progs[p], "uForward");
         u.backToFront = glGetUniformLocation(progs[p], "uBackToFront");
         u.batchCount = glGetUniformLocation(progs[p], "uBatchCount");
+        u.orderStart = glGetUniformLocation(progs[p], "uOrderStart");
+        u.batchLast = glGetUniformLocation(progs[p], "uBatchLast");
     }
     GLint64 bytes = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &bytes);
@@ -169,7 +171,14 @@ void TileSort::radixPass(uint32_t count, int shift, int from) {
     overBlocks(scatter_, scatterU_);
 }
 
-void TileSort::orderParticles(uint32_t n, const DepthOrder& order) {
+void TileSort::orderParticles(uint32_t n, const DepthOrder& order, const TileBins& bins) {
+    // Each particle's entry from its place (TileBins::orderStart, batchLast), in every program
+    // that reads one.
+    auto setBatches = [&](const Uniforms& u) {
+        glUniform1i(u.batchCount, bins.batchCount);
+        glUniform1iv(u.orderStart, bins.batchCount + 1, bins.orderStart);
+        glUniform1iv(u.batchLast, bins.batchCount, bins.batchLast);
+    };
     constexpr int kInstances = 3, kOrdered = 3, kSums = 4;
     constexpr uint32_t kPrefixBlock = 1024;  // cs_particles_tile_sort.glsl's particles a prefix group adds up
     // 1. Each particle's key (its depth's bits, ascending: front to back; 0 in a batch drawn in
@@ -183,6 +192,7 @@ void TileSort::orderParticles(uint32_t n, const DepthOrder& order) {
     glUniform3f(orderKeyU_.eye, order.eye.x, order.eye.y, order.eye.z);
     glUniform3f(orderKeyU_.forward, order.forward.x, order.forward.y, order.forward.z);
     glUniform1ui(orderKeyU_.backToFront, order.backToFront);
+    setBatches(orderKeyU_);
     dispatch((n + kGroup - 1) / kGroup, orderKeyU_.groupsX);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     // 2. Sorted by depth (the radix passes are stable: equal depths keep the words' order, the
@@ -197,7 +207,7 @@ void TileSort::orderParticles(uint32_t n, const DepthOrder& order) {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, entries_[from]);
         glUseProgram(orderBatch_);
         glUniform1i(orderBatchU_.particleCount, int(n));
-        glUniform1i(orderBatchU_.batchCount, order.batchCount);
+        setBatches(orderBatchU_);
         dispatch((n + kGroup - 1) / kGroup, orderBatchU_.groupsX);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         for (int shift = 0; (order.batchCount - 1) >> shift; shift += kDigitBits, from ^= 1) radixPass(n, shift, from);
@@ -213,6 +223,7 @@ void TileSort::orderParticles(uint32_t n, const DepthOrder& order) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSums, histogram_);
     glUseProgram(orderPrefix_);
     glUniform1i(orderPrefixU_.particleCount, int(n));
+    setBatches(orderPrefixU_);
     dispatch(prefixGroups, orderPrefixU_.groupsX);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     glUseProgram(scan_);
@@ -229,7 +240,9 @@ void TileSort::orderParticles(uint32_t n, const DepthOrder& order) {
 uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs, const DepthOrder* order) {
     if (!ok() || !fits(bins) || (order && !orderOk())) return 0;
     const uint32_t pairs = bins.entryCount;
-    const uint32_t particleCount = uint32_t(bins.particles.size() / 4);
+    // The words of the particles: four each, or (Fill::Ranges, only with an order) two.
+    if (bins.wordsPerParticle != (order ? 2 : 4) || (order && order->batchCount != bins.batchCount)) return 0;
+    const uint32_t particleCount = uint32_t(bins.particles.size() / size_t(bins.wordsPerParticle));
     // The particles' sort goes through the pairs' buffers first.
     const size_t keyBytes = size_t(order ? std::max(pairs, particleCount) : pairs) * 4;
     ensureBuffer(&keys_[0], &keysCapacity_[0], keyBytes);
@@ -248,7 +261,7 @@ uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs, const DepthOrder*
     if (order) {
         ensureBuffer(&keys_[1], &keysCapacity_[1], keyBytes);
         ensureBuffer(&entries_[1], &entriesCapacity_[1], keyBytes);
-        orderParticles(particleCount, *order);
+        orderParticles(particleCount, *order, bins);
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleBinding, order ? ordered_ : particles_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, keys_[0]);

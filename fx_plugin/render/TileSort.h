@@ -83,9 +83,9 @@ public:
     /// !fits()). The buffer is the sort's own, valid until the next run(). Ends with a shader
     /// storage barrier.
     /// With `jobs`, the particles' words are copied into the mapped buffer on the host's threads.
-    /// With `order` (orderOk() only, else 0), bins of an unsorted list, binned as it lies
-    /// (Fill::Ranges, or Pairs: the first entries are not read): the particles are put in
-    /// front-to-back order first (above).
+    /// With `order` (orderOk() only, else 0), bins of an unsorted list, binned as it lies with
+    /// Fill::Ranges (two words a particle; else 0): the particles are put in front-to-back order
+    /// first (above). Without, bins of four words a particle (Pairs).
     uint32_t run(const TileBins& bins, const Jobs& jobs = Jobs(), const DepthOrder* order = nullptr);
 
     /// The radix passes a view of `tileCount` tiles takes.
@@ -106,12 +106,12 @@ public:
 private:
     struct Uniforms {
         int groupsX = -1, particleCount = -1, tilesX = -1, pairCount = -1, shift = -1, blocks = -1, length = -1,
-            rows = -1, eye = -1, forward = -1, backToFront = -1, batchCount = -1;
+            rows = -1, eye = -1, forward = -1, backToFront = -1, batchCount = -1, orderStart = -1, batchLast = -1;
     };
     // One radix pass over `count` keys_/entries_[from] into [from ^ 1] by kDigitBits at `shift`.
     void radixPass(uint32_t count, int shift, int from);
     // Sorts the particles (order) and writes them, with their first pairs, to ordered_.
-    void orderParticles(uint32_t particleCount, const DepthOrder& order);
+    void orderParticles(uint32_t particleCount, const DepthOrder& order, const TileBins& bins);
 
     uint32_t emit_ = 0, count_ = 0, scan_ = 0, scatter_ = 0;
     uint32_t orderKey_ = 0, orderBatch_ = 0, orderPrefix_ = 0, orderAdd_ = 0;

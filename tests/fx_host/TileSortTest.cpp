@@ -230,15 +230,16 @@ TEST_F(TileSortTest, ParticlesSortedOnTheGpuGiveTheCpuOrdersLists) {
             fx::TileBins words;
             ASSERT_TRUE(fx::binParticles(view, list.instances.data(), ranges.data(), batchCount, nullptr, &words,
                                          fx::Jobs(), fx::TileBins::Fill::Ranges));
-            // Ranges: each particle's own entry count where Pairs has its first entry.
+            // Ranges: each particle's tile range only, two words (its entry is its place's); the
+            // ranges' tiles add up to the entries.
+            ASSERT_EQ(words.wordsPerParticle, 2);
+            ASSERT_EQ(words.particles.size(), size_t(n) * 2);
             uint64_t counted = 0;
-            for (size_t k = 0; k < words.particles.size() / 4; ++k) {
-                const uint32_t* w = &words.particles[k * 4];
-                const uint32_t tiles = (w[0] & 0xffffu) > (w[0] >> 16)
-                                           ? 0u
-                                           : ((w[0] >> 16) - (w[0] & 0xffffu) + 1) * ((w[1] >> 16) - (w[1] & 0xffffu) + 1);
-                ASSERT_EQ(w[2], tiles) << "particle " << k;
-                counted += w[2];
+            for (size_t k = 0; k < words.particles.size() / 2; ++k) {
+                const uint32_t* w = &words.particles[k * 2];
+                counted += (w[0] & 0xffffu) > (w[0] >> 16)
+                               ? 0u
+                               : ((w[0] >> 16) - (w[0] & 0xffffu) + 1) * ((w[1] >> 16) - (w[1] & 0xffffu) + 1);
             }
             EXPECT_EQ(counted, uint64_t(words.entryCount));
             glBindBuffer(kShaderStorageBuffer, instances);
