@@ -13,12 +13,15 @@
 //                         tiles its trimmed bound touches, front to back) on T job threads (T = 1:
 //                         the pieces on the calling thread). F = 0: Fill::Entries, the lists
 //                         written here (the reference); F = 1: Fill::Pairs, what the tiled path
-//                         runs (bounds, counts and first entries; the GPU writes the lists)
+//                         runs (bounds, counts and first entries; the GPU writes the lists);
+//                         F = 2: Fill::Ranges, a view whose particles the GPU orders (two words a
+//                         particle: the tile range)
 //   BM_TileBinsLarge/N/T/F  the same with every particle 8 m across (the fill scene's kind: a few
 //                         hundred particles over thousands of tiles each)
 //   BM_InstanceCopy/N     reference: memcpy of the N instances (32 N bytes read and written)
-//   BM_DrawListBuildJobs/N/T, BM_ScreenRectJobs/N/T
-//                         the build and the bound through the host's job system
+//   BM_DrawListBuildJobs/N/T/D, BM_ScreenRectJobs/N/T
+//                         the build (D = 1: without the back-to-front sort, deferOrder, what a view
+//                         the GPU orders takes) and the bound through the host's job system
 //                         (HostAdapter::parallelFor) on the engine's cube::JobSystem of T threads
 //                         (T = 1: the pieces on the calling thread, what a host without one pays;
 //                         T is 1, 2 and, where the machine has more, all its hardware threads)
