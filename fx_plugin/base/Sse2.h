@@ -16,6 +16,17 @@
 #define FX_SSE2 0
 #endif
 
+// The four-lane helpers are long enough that compilers call them rather than inline them into
+// their loops, keeping their vectors in memory across the call; forced inline they stay in
+// registers (bench_draw BM_TileBins, BM_ScreenRect).
+#if defined(__GNUC__) || defined(__clang__)
+#define FX_LANES_INLINE inline __attribute__((always_inline))
+#elif defined(_MSC_VER)
+#define FX_LANES_INLINE __forceinline
+#else
+#define FX_LANES_INLINE inline
+#endif
+
 namespace fx {
 
 inline std::atomic<bool>& fourLanesSwitch() {

@@ -144,7 +144,7 @@ struct FootprintMath {
     // returned for equal values and NaN): the same bits as four calls (ScreenTilesTest's
     // FourAtATime... test). What it saves: the divisions and the products four at a time.
     template <bool Flat>
-    Lanes perspectiveLanes(const ParticleInstance* p) const {
+    FX_LANES_INLINE Lanes perspectiveLanes(const ParticleInstance* p) const {
         __m128 px = _mm_loadu_ps(&p[0].x), py = _mm_loadu_ps(&p[1].x), pz = _mm_loadu_ps(&p[2].x),
                ps = _mm_loadu_ps(&p[3].x);
         _MM_TRANSPOSE4_PS(px, py, pz, ps);  // now x, y, z and size of the four
@@ -276,7 +276,7 @@ struct TileRangeOf {
 #if FX_SSE2
     // The same for four lanes (FootprintMath::perspectiveLanes), the same bits: std::max(t, 0) as
     // _mm_max_ps(0, t), std::min(t, last) as _mm_min_ps(last, t), truncation as _mm_cvttps_epi32.
-    void operator()(const FootprintMath::Lanes& q, int32_t (*r)[4], uint8_t* what) const {
+    FX_LANES_INLINE void operator()(const FootprintMath::Lanes& q, int32_t (*r)[4], uint8_t* what) const {
         const __m128 grow = _mm_set1_ps(float(border)), zero = _mm_setzero_ps();
         const __m128 inv = _mm_set1_ps(1.0f / float(ScreenTiles::kTileSize));
         const __m128 lastX = _mm_set1_ps(float(tilesX - 1)), lastY = _mm_set1_ps(float(tilesY - 1));
