@@ -15,18 +15,34 @@ using namespace footprint;
 
 constexpr int kTileSize = ScreenTiles::kTileSize, kTileBorder = ScreenTiles::kTileBorder;
 
-// The difference grid summed into coverage, row by row, as horizontal runs of covered tiles.
-void tileRuns(ScreenTiles* tiles, int tilesX, int tilesY, int w, int h) {
+// The tiles any mark can lie in: every particle's range is inside the range of the union of
+// their bounds (TileRangeOf is monotone), so rows above by0 and columns left of bx0 hold no mark
+// and the grid's sums start there; the marks reach row by1 + 1 and column bx1 + 1.
+struct TileBox {
+    int bx0 = 0, bx1 = -1, by0 = 0, by1 = -1;
+};
+
+// The difference grid summed into coverage, row by row, as horizontal runs of covered tiles,
+// inside `box` (outside it every tile's coverage is 0). The column sums go four cells at a time.
+void tileRuns(ScreenTiles* tiles, int tilesX, const TileBox& box, int w, int h) {
     const int stride = tilesX + 1;
-    std::vector<int32_t>& g = tiles->grid;
-    for (int ty = 0; ty < tilesY; ++ty) {
-        int32_t* row = g.data() + ty * stride;
-        if (ty > 0) {
+    int32_t* g = tiles->grid.data();
+    for (int ty = box.by0; ty <= box.by1; ++ty) {
+        int32_t* row = g + ty * stride;
+        if (ty > box.by0) {
             const int32_t* above = row - stride;
-            for (int tx = 0; tx < stride; ++tx) row[tx] += above[tx];  // column sums so far
+            int tx = box.bx0;
+#if FX_SSE2
+            for (; tx + 4 <= box.bx1 + 1; tx += 4) {  // column sums so far; integers, any grouping
+                const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(above + tx));
+                const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row + tx));
+                _mm_storeu_si128(reinterpret_cast<__m128i*>(row + tx), _mm_add_epi32(a, b));
+            }
+#endif
+            for (; tx <= box.bx1; ++tx) row[tx] += above[tx];
         }
         int32_t run = 0;  // the row's running sum: the coverage of tile tx
-        for (int tx = 0; tx < tilesX;) {
+        for (int tx = box.bx0; tx <= box.bx1;) {
             run += row[tx];
             if (run <= 0) {
                 ++tx;
@@ -34,11 +50,22 @@ void tileRuns(ScreenTiles* tiles, int tilesX, int tilesY, int w, int h) {
             }
             int end = tx + 1;
             int32_t next = run;
-            while (end < tilesX && (next += row[end]) > 0) ++end;
+            while (end <= box.bx1 && (next += row[end]) > 0) ++end;
             addRun(tiles, tx * kTileSize, ty * kTileSize, std::min(w, end * kTileSize), std::min(h, (ty + 1) * kTileSize));
-            run = next;  // the coverage of tile `end` (0 or less), or past the row's end
+            run = next;  // the coverage of tile `end` (0 or less), or past the box
             tx = end + 1;
         }
+    }
+}
+
+// Zeroes what the marks and the sums of `box` wrote, so the grid is all zero again
+// (ScreenTiles::gridClean) and the next bound need not clear the whole of it.
+void cleanGrid(ScreenTiles* tiles, int tilesX, int tilesY, const TileBox& box) {
+    const int stride = tilesX + 1;
+    const int x1 = std::min(box.bx1 + 1, tilesX), y1 = std::min(box.by1 + 1, tilesY);
+    for (int ty = box.by0; ty <= y1; ++ty) {
+        int32_t* row = tiles->grid.data() + ty * stride;
+        std::fill(row + box.bx0, row + x1 + 1, 0);
     }
 }
 
@@ -188,18 +215,21 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
     // (the first piece's is tiles->grid): at most 16, so the grids stay small beside the work.
     const Pieces pieces = splitWork(size_t(std::max(count, 0)), 16384, 16);
     const size_t gridCells = size_t(std::max(0, (tilesX + 1) * (tilesY + 1)));
+    bool wasClean = false;
     if (tiles) {
         tiles->vertices.clear();
         tiles->pixels = 0;
         tiles->viewWidth = w;
         tiles->viewHeight = h;
-        // Zeroed by its piece below, with the others' (cleared twice, it was a tenth of a 1,000
-        // particle bound: bench_draw BM_ScreenRect/1000).
-        if (pieces.count > 0) {
+        // All zero where the last bound cleaned up after itself (gridClean, and the same size);
+        // else zeroed by its piece below, with the others'.
+        if (tiles->grid.size() != gridCells) {
+            tiles->gridClean = false;
             tiles->grid.resize(gridCells);
-        } else {
-            tiles->grid.assign(gridCells, 0);
         }
+        wasClean = tiles->gridClean;
+        if (pieces.count == 0 && !wasClean) std::fill(tiles->grid.begin(), tiles->grid.end(), 0);
+        tiles->gridClean = pieces.count == 0;  // else not until cleanGrid below: an early return leaves marks
         if (pieces.count > 1) tiles->pieceGrids.resize(gridCells * (pieces.count - 1));
     }
     auto wholeView = [&]() {
@@ -217,7 +247,7 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
         int32_t* grid = nullptr;
         if (tiles) {
             grid = piece == 0 ? tiles->grid.data() : tiles->pieceGrids.data() + gridCells * (piece - 1);
-            std::fill(grid, grid + gridCells, 0);
+            if (piece > 0 || !wasClean) std::fill(grid, grid + gridCells, 0);
         }
         parts[piece] = boundPiece(math, view, footprint == Footprint::Billboard, instances, pieces.begin(piece),
                                   pieces.end(piece), grid, tilesX, tilesY);
@@ -237,7 +267,22 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
     }
     if (tiles && pieces.count > 1) addGrids(tiles->grid.data(), tiles->pieceGrids.data(), gridCells, pieces.count - 1, jobs);
     r.footprintPixels = boxPixels;
+    // The tiles the marks lie in (none without a bounded particle): cleaned on every way out.
+    TileBox box;
+    if (tiles && any && tilesX > 0 && tilesY > 0) {
+        const Bounds all{lo[0], hi[0], lo[1], hi[1], Bounds::Bounded, {}};
+        int32_t range[4];
+        if (TileRangeOf{w, h, tilesX, tilesY, kTileBorder}(all, range) == TileRangeOf::Range) {
+            box = TileBox{range[0], range[1], range[2], range[3]};
+        }
+    }
+    auto clean = [&]() {
+        if (!tiles) return;
+        cleanGrid(tiles, tilesX, tilesY, box);
+        tiles->gridClean = true;
+    };
     if (!any) {
+        clean();
         r.whole = false;  // nothing in front of the camera: an empty rect, no tiles
         return r;
     }
@@ -249,10 +294,12 @@ ScreenRect screenRect(const ViewInfo& view, const ParticleInstance* instances, i
     if (r.x1 <= r.x0 || r.y1 <= r.y0) {
         r.x0 = r.x1 = r.y0 = r.y1 = 0;
         r.whole = false;
+        clean();
         return r;  // no tiles either: every bound was off screen
     }
     r.whole = r.x0 == 0 && r.y0 == 0 && r.x1 == w && r.y1 == h;
-    if (tiles) tileRuns(tiles, tilesX, tilesY, w, h);
+    if (tiles) tileRuns(tiles, tilesX, box, w, h);
+    clean();
     return r;
 }
 

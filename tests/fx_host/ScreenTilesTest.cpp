@@ -491,6 +491,92 @@ TEST(ScreenTiles, ASteadyFrameReusesTheBuffers) {
     EXPECT_EQ(tiles.grid.data(), grid) << "the second frame reallocated the grid";
 }
 
+// The grid is zeroed after each bound only where its particles reached (gridClean), not cleared
+// whole before the next: a ScreenTiles kept across bounds of different smoke (a cluster moving,
+// nothing in front, bounds only just off the view, a particle at the near plane, a larger view,
+// enough particles for several pieces) gives what a new one gives every time, and is all zero
+// after each. Leaving out the clean-up, or a row or column of it, fails here.
+TEST(ScreenTiles, AKeptGridGivesWhatANewOneGives) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    auto cloud = [&](int count, float cx, float cy, float cz, float spread, float size) {
+        std::vector<ParticleInstance> out{size_t(count), ParticleInstance{}};
+        for (ParticleInstance& p : out) {
+            p.x = cx + spread * u(rng);
+            p.y = cy + spread * u(rng);
+            p.z = cz + spread * u(rng);
+            p.size = size * (1.25f + u(rng));
+        }
+        return out;
+    };
+    const ViewInfo small = testView();
+    ViewInfo large = testView();
+    large.width = 3 * kW + 5;  // not a whole number of tiles
+    large.height = 2 * kH + 9;
+    struct Step {
+        const ViewInfo* view;
+        std::vector<ParticleInstance> particles;
+    };
+    std::vector<ParticleInstance> edge;  // around the left edge, many just outside the view
+    for (int i = 0; i < 400; ++i) {
+        ParticleInstance p;
+        p.z = -2.0f - 20.0f * (0.5f + 0.5f * u(rng));
+        p.x = -(6.0f - p.z) * 0.78f - 0.3f * u(rng);  // the frustum's left plane, about
+        p.y = 1.0f + 2.0f * u(rng);
+        p.size = 0.05f + 0.05f * (1.0f + u(rng));
+        edge.push_back(p);
+    }
+    std::vector<ParticleInstance> nearPlane = cloud(50, 0.0f, 1.0f, 0.0f, 1.0f, 0.3f);
+    nearPlane[17].z = 5.95f;
+    nearPlane[17].x = 0.0f;
+    nearPlane[17].y = 1.5f;
+    const std::vector<Step> steps = {
+        {&small, cloud(300, -2.0f, 1.0f, 0.0f, 1.0f, 0.3f)},
+        {&small, cloud(300, 2.0f, 2.0f, -3.0f, 1.0f, 0.3f)},
+        {&small, cloud(40, 0.0f, 1.0f, 20.0f, 1.0f, 0.3f)},  // behind the eye: nothing
+        {&small, cloud(200, 0.0f, 0.0f, 0.0f, 0.5f, 0.2f)},
+        {&small, edge},
+        {&small, cloud(100, 1.0f, 1.0f, -2.0f, 3.0f, 0.5f)},
+        {&small, nearPlane},
+        {&small, cloud(100, -1.0f, 0.5f, -1.0f, 1.0f, 0.4f)},
+        {&large, cloud(300, 3.0f, 0.0f, -4.0f, 2.0f, 0.3f)},
+        {&large, cloud(40000, 0.0f, 1.0f, -10.0f, 6.0f, 0.2f)},  // several pieces
+        {&large, cloud(500, -4.0f, 2.0f, -6.0f, 1.0f, 0.3f)},
+        {&small, oddParticles(3001, true)},
+        {&small, cloud(60, 0.5f, 1.5f, 0.0f, 0.2f, 0.1f)},
+    };
+    ScreenTiles kept;
+    int withRuns = 0, edgeRuns = -1, unboundedSteps = 0;
+    for (size_t i = 0; i < steps.size(); ++i) {
+        const Step& step = steps[i];
+        for (Footprint footprint : {Footprint::Billboard, Footprint::Box}) {
+            const int count = int(step.particles.size());
+            ScreenTiles fresh;
+            const ScreenRect a = screenRect(*step.view, step.particles.data(), count, &kept, footprint);
+            const ScreenRect b = screenRect(*step.view, step.particles.data(), count, &fresh, footprint);
+            EXPECT_EQ(a.x0, b.x0) << "step " << i;
+            EXPECT_EQ(a.y0, b.y0) << "step " << i;
+            EXPECT_EQ(a.x1, b.x1) << "step " << i;
+            EXPECT_EQ(a.y1, b.y1) << "step " << i;
+            EXPECT_EQ(a.whole, b.whole) << "step " << i;
+            EXPECT_EQ(kept.vertices, fresh.vertices) << "step " << i;
+            EXPECT_EQ(kept.pixels, fresh.pixels) << "step " << i;
+            const bool unbounded = std::isinf(a.footprintPixels);  // the near plane: the grid left as it was
+            unboundedSteps += unbounded ? 1 : 0;
+            EXPECT_EQ(kept.gridClean, !unbounded) << "step " << i;
+            if (!unbounded) {
+                EXPECT_TRUE(std::all_of(kept.grid.begin(), kept.grid.end(), [](int32_t c) { return c == 0; }))
+                    << "step " << i << ": the grid was left with marks";
+            }
+            withRuns += kept.runs() > 0 && !a.whole ? 1 : 0;
+            if (i == 4 && footprint == Footprint::Billboard) edgeRuns = kept.runs();
+        }
+    }
+    EXPECT_GE(withRuns, 16) << "most steps bound smoke on part of the view";
+    EXPECT_GT(edgeRuns, 0) << "the edge step reaches into the view";
+    EXPECT_EQ(unboundedSteps, 1) << "the cube at the near plane";
+}
+
 
 // binParticles (the tiled path): every particle is in each tile its bound touches and in no tile
 // farther than a pixel past it, each tile's list runs front to back (the last batch's last
