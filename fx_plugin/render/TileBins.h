@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ScreenTiles.h"
+#include "base/NoInitVector.h"
 
 namespace fx {
 
@@ -31,7 +32,9 @@ struct TileBins {
     /// pair order (the entries of the particles before it added up) and its entry. The GPU writes
     /// a pair (tile, entry) for every tile of a range, row by row, and sorts them by tile keeping
     /// that order (TileSort.h): the sorted entries are `entries`.
-    std::vector<uint32_t> particles;
+    /// (Every word is written by binParticles: not zeroed first, 1-2 MB at 256,000 particles that
+    /// the one thread would otherwise clear before the pieces start.)
+    NoInitVector<uint32_t> particles;
     int wordsPerParticle = 4;  ///< 4, or 2 for Fill::Ranges
     /// The entry of particle k (front to back): in the j-th batch from the back, the first k at or
     /// past orderStart[j]; its batch b = batchCount - 1 - j; its instance batchLast[b] - (k -
