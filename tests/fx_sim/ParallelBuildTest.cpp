@@ -39,7 +39,7 @@ TEST(ParallelBuild, DrawListIsTheSerialOneHoweverThePiecesRun) {
             EXPECT_EQ(list.batches[1].first, list.batches[0].count);
         }
         EXPECT_GT(host.calls, 0) << int(how);
-        EXPECT_GE(host.largest, 8u) << "120000 particles in pieces of 8192";
+        EXPECT_GE(host.largest, 16u) << "120000 particles in pieces of 2048";
     }
 }
 
@@ -276,6 +276,30 @@ TEST(ParallelBuild, AViewThatSeesNothingGivesAnEmptyList) {
 // The tiled path's bins (binParticles) in pieces: the same entries, tiles and runs as one
 // thread's, bit for bit, however the pieces run; many small particles (pieces of the particles)
 // and a few that cover much of the view (pieces of nearly equal entries), billboards and spheres.
+// A view of 16,000 particles (the tiled sweep's second point) goes to the host's threads in
+// pieces of about 2,048, the cull and the bins alike: with pieces of 8,192 it was one piece, all
+// of it on the calling thread. The same list and bins as serially.
+TEST(ParallelBuild, SixteenThousandParticlesAreSharedOut) {
+    const Scene s(16000);
+    const fx::ParticleBatch batch = s.batch(false);
+    fx::DrawListBuilder builder;
+    fx::DrawList list;
+    JobHost cullHost(HowRun::Threads);
+    builder.build(s.view, &batch, 1, fx::Technique::FromReaction, ~0u, &list, fx::Jobs(&cullHost));
+    expectDrawn(s, list, s.reference(false));
+    EXPECT_EQ(cullHost.largest, 7u) << "16000 particles in pieces of 2048 or more";
+    const fx::TileBins::Range range{0, list.particleCount(), false};
+    ASSERT_GT(list.particleCount(), 10000);
+    fx::TileBins serial, shared;
+    ASSERT_TRUE(fx::binParticles(s.view, list.instances.data(), &range, 1, nullptr, &serial));
+    JobHost binHost(HowRun::Threads);
+    ASSERT_TRUE(fx::binParticles(s.view, list.instances.data(), &range, 1, nullptr, &shared, fx::Jobs(&binHost)));
+    EXPECT_GE(binHost.largest, uint32_t(list.particleCount() / 2048));  // the bins, then the lists in bands
+    EXPECT_EQ(shared.entries, serial.entries);
+    EXPECT_EQ(shared.tiles, serial.tiles);
+    EXPECT_EQ(shared.cover.vertices, serial.cover.vertices);
+}
+
 TEST(ParallelBuild, TileBinsInPiecesAreTheSerialOnes) {
     const Scene s(120000);
     const fx::ParticleBatch batches[2] = {s.batch(false), s.batch(true)};
