@@ -49,6 +49,9 @@ variants = {
     "sphere-no-chord": [("fs_particles_spherical.glsl",
                          "float coverage = texel.a * visible * nearFadeFactor(0.5 * (z0 + z1));",
                          "float coverage = texel.a;")],
+    # The composite as before FX_GATHER_FARTHEST: every smoky pixel reads its full-resolution
+    # depth, not only those whose footprint's gathered depths span an edge. The same picture.
+    "composite-full-depth": [("fs_particles_composite.glsl", "#if defined(FX_GATHER_FARTHEST)", "#if 0")],
     # The composite without its edge test: plain bilinear (one fetch a pixel).
     "composite-no-edges": [("fs_particles_composite.glsl", "#if defined(FX_COMPOSITE_BILINEAR)", "#if 1")],
     # The scene depth read with texelFetch instead of textureLod through the nearest sampler: the
@@ -102,7 +105,7 @@ PY
 }
 
 # The variants that only try a cheaper way to the same picture.
-same_picture=(depth-texelfetch discard-empty soft-fetch-empty hard-16-ops sphere-empty-before-fetch)
+same_picture=(depth-texelfetch discard-empty soft-fetch-empty hard-16-ops sphere-empty-before-fetch composite-full-depth)
 
 # fxbench over the modes the variants touch, with the shaders of variant $2 of the copies in $1
 # ("now": the shaders built into fxbench); the rest: fxbench options.

@@ -17,6 +17,9 @@
 //   - smoke, no depth edge: 3, the bilinear colour, the pixel's depth, the four low-res depths in
 //     one textureGather (FX_GATHER: ProgramCache defines it where the context has
 //     ARB_texture_gather; else four texelFetch).
+//   - smoke, where the gathered farthest depths (FX_GATHER_FARTHEST, ARB_gpu_shader5) show no
+//     edge: 3, the bilinear colour and two gathers of the half-res depth (nearest and farthest),
+//     and no read of the full-resolution depth; elsewhere 1 more, then the cases below.
 //   - a depth edge: 5. The kept texels' weights are split by row: a row's kept texels are none,
 //     one or both, and one bilinear fetch at that row's centre line, its x moved to the kept
 //     texels' weighted centre, returns exactly their renormalised blend.
@@ -55,6 +58,23 @@ void main() {
 #if defined(FX_COMPOSITE_BILINEAR)
     oColor = bilinear;
 #else
+#if defined(FX_GATHER_FARTHEST)
+    // No edge in the footprint, told from the half-res depth alone: this pixel's own 2x2 block is
+    // one of the four taps, so its full-res depth lies between their nearest and farthest; where
+    // those are within the threshold of the nearest, every tap is within it of this pixel's depth
+    // (|low - full| <= farthest - nearest <= threshold * nearest <= threshold * full), which is the
+    // test below, passed. Then the bilinear colour, with no read of the full-resolution depth: a
+    // GPU fetches it only for pixels near a depth edge. (0.9999: the two shaders decode the same
+    // depths, but a compiler may round them apart by an ulp; those pixels take the test below.)
+    vec2 corner = (floor(lowPos) + 1.0) * uInvLow;
+    vec4 nearest4 = textureGather(uHalfDepth, corner, 0), farthest4 = textureGather(uHalfDepth, corner, 1);
+    float nearest = min(min(nearest4.x, nearest4.y), min(nearest4.z, nearest4.w));
+    float farthest = max(max(farthest4.x, farthest4.y), max(farthest4.z, farthest4.w));
+    if (farthest - nearest <= 0.9999 * uDepthThreshold * nearest) {
+        oColor = bilinear;
+        return;
+    }
+#endif
     // This pixel's depth texel, read at its centre through the nearest sampler (the texel
     // texelFetch reads, which a CPU rasteriser bounds-checks lane by lane); nothing drawn: 3.0e38.
     float full = linearSceneDepth(textureLod(uSceneDepth, gl_FragCoord.xy * uDepthUv.zw + uDepthUv.xy, 0.0).r);

@@ -121,6 +121,11 @@ std::string ProgramCache::Key::defines() const {
     const bool gathers = program == DepthDownsample || program == Composite || program == CompositeBilinear ||
                          program == MegaComposite;
     if (gathers && FXGLAD_GL_ARB_texture_gather) d += "#extension GL_ARB_texture_gather : require\n#define FX_GATHER 1\n";
+    // The depth-aware composite gathers the footprint's farthest depths too (a component other
+    // than red: ARB_gpu_shader5) and reads the full-resolution depth only where they span an edge.
+    if (program == Composite && FXGLAD_GL_ARB_texture_gather && FXGLAD_GL_ARB_gpu_shader5) {
+        d += "#extension GL_ARB_gpu_shader5 : require\n#define FX_GATHER_FARTHEST 1\n";
+    }
     d += sourceOf(*this).defines;
     if (halfRes) d += "#define FX_HALF_RES_DEPTH 1\n";
     if (powerSteps >= 0) d += "#define FX_POWER_STEPS " + std::to_string(powerSteps) + "\n";

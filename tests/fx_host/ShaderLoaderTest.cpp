@@ -115,20 +115,31 @@ TEST_F(ShaderLoaderTest, EveryParticleProgramBuilds) {
 
 // The quarter-res downsample and the composites gather their four depths where the context has
 // ARB_texture_gather, and only they declare it (an #extension the driver does not know is a
-// warning on the host's debug output). Every context the suite runs them in has it, but for the
-// run that hides it (QuarterResTest.WithoutTextureGather, tests/CMakeLists.txt).
+// warning on the host's debug output); the depth-aware composite gathers the farthest depths too
+// (FX_GATHER_FARTHEST) where it has ARB_gpu_shader5 as well. Every context the suite runs them in
+// has both, but for the runs that hide one (QuarterResTest.WithoutTextureGather and
+// .WithoutGpuShader5, tests/CMakeLists.txt).
 TEST_F(ShaderLoaderTest, TheQuarterResProgramsGatherWhereTheContextCan) {
     TestHostAdapter host;
     DirectParticles direct(&host);  // loads the plugin's GL entry points and extension flags
-    bool listed = false;
+    bool listed = false, shader5 = false;
     GLint count = 0;
     glGetIntegerv(GL_NUM_EXTENSIONS, &count);
     for (GLint i = 0; i < count; ++i) {
         const char* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i)));
         listed = listed || (name && std::string(name) == "GL_ARB_texture_gather");
+        shader5 = shader5 || (name && std::string(name) == "GL_ARB_gpu_shader5");
     }
     if (!std::getenv("MESA_EXTENSION_OVERRIDE")) {
         EXPECT_TRUE(listed);
+        EXPECT_TRUE(shader5);
+    }
+    using PC = fx::ProgramCache;
+    for (PC::Program program : {PC::DepthDownsample, PC::Composite, PC::CompositeBilinear, PC::MegaComposite}) {
+        const std::string defines = PC::Key::of(program).defines();
+        const bool farthest = program == PC::Composite && listed && shader5;
+        EXPECT_EQ(defines.find("#define FX_GATHER_FARTHEST 1") != std::string::npos, farthest) << defines;
+        EXPECT_EQ(defines.find("GL_ARB_gpu_shader5") != std::string::npos, farthest) << defines;
     }
     using PC = fx::ProgramCache;
     for (PC::Program program : {PC::DepthDownsample, PC::Composite, PC::CompositeBilinear, PC::MegaComposite}) {
