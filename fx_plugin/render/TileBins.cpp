@@ -65,17 +65,19 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
     // 16,000 particles is seven, which a host's threads share (BM_TileBins/16000/2: 0.71-0.73 x
     // the time of 8,192-particle pieces, which made it one).
     const Pieces pieces = splitWork(size_t(n), 2048, 16);
-    // Each piece zeroes its own grid (below, on its thread); with no pieces the one grid is zeroed here.
-    if (pieces.count == 0) {
-        out->grids.assign(gridSize, 0);
-    } else {
-        out->grids.resize(pieces.count * gridSize);
-    }
+    // Each piece zeroes its own grid (below, on its thread), but for the first where the last bins
+    // left it zero (cleanCells; cleaned after step 2): then nothing is cleared over the whole view
+    // for a small view's few tiles. Each piece also keeps the box of the tiles it marked.
+    if (out->grids.size() < size_t(pieces.count) * gridSize) out->grids.resize(size_t(pieces.count) * gridSize);
+    const bool firstClean = out->cleanCells >= gridSize;
+    out->cleanCells = 0;  // until cleaned below: a failed or refused view leaves marks
     bool failed[HostAdapter::kMaxTasks] = {};
     uint64_t pieceEntries[HostAdapter::kMaxTasks] = {};
+    int32_t pieceBox[HostAdapter::kMaxTasks][4];  // tx0, tx1, ty0, ty1 of its marks; tx0 > tx1: none
     jobs.run(pieces, [&](uint32_t piece) {
         int32_t* grid = &out->grids[piece * gridSize];
-        std::fill(grid, grid + gridSize, 0);
+        if (piece > 0 || !firstClean) std::fill(grid, grid + gridSize, 0);
+        int32_t marked[4] = {INT32_MAX, -1, INT32_MAX, -1};
         uint64_t sum = 0;
         int32_t ranges[kChunk][4];
         uint8_t what[kChunk];
@@ -137,9 +139,14 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
                 if (stride == 4) word[2] = count;  // the first entry once the counts are added up
                 sum += count;
                 markTiles(grid, tilesX, r[0], r[1], r[2], r[3]);
+                marked[0] = std::min(marked[0], r[0]);
+                marked[1] = std::max(marked[1], r[1]);
+                marked[2] = std::min(marked[2], r[2]);
+                marked[3] = std::max(marked[3], r[3]);
             }
         }
         pieceEntries[piece] = sum;
+        std::copy(marked, marked + 4, pieceBox[piece]);
     });
     uint64_t total = 0;
     uint32_t pieceFirst[HostAdapter::kMaxTasks] = {};
@@ -153,36 +160,61 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
     // Each particle's first entry: its piece's, then its own count added up in the piece.
     if (fill != TileBins::Fill::Ranges) jobs.run(pieces, [&](uint32_t piece) {
         uint32_t first = pieceFirst[piece];
-        for (size_t k = pieces.begin(piece); k < pieces.end(piece); ++k) {
+        for (size_t k = pieces.begin(piece), end = pieces.end(piece); k < end; ++k) {
             const uint32_t count = words[k * 4 + 2];
             words[k * 4 + 2] = first;
             first += count;
         }
     });
 
-    // 2. Each tile's count: the grids added up, then summed along the rows and down the columns.
+    // 2. Each tile's count: the grids added up, then summed along the rows and down the columns,
+    // inside the box of every mark (outside it every count is 0, and nothing reads those cells:
+    // step 3 and writeEntries visit only tiles of the ranges); then the first grid zeroed there
+    // (the marks reach one row and one column past the box).
     int32_t* grid = out->grids.data();
     if (pieces.count > 1) addGrids(grid, grid + gridSize, gridSize, pieces.count - 1, jobs);
-    out->counts.assign(size_t(tileCount), 0);
+    int bx0 = INT32_MAX, bx1 = -1, by0 = INT32_MAX, by1 = -1;
+    for (uint32_t piece = 0; piece < pieces.count; ++piece) {
+        bx0 = std::min(bx0, pieceBox[piece][0]);
+        bx1 = std::max(bx1, pieceBox[piece][1]);
+        by0 = std::min(by0, pieceBox[piece][2]);
+        by1 = std::max(by1, pieceBox[piece][3]);
+    }
+    if (out->counts.size() < size_t(tileCount)) out->counts.resize(size_t(tileCount));
     int32_t* counts = out->counts.data();
-    for (int ty = 0; ty < tilesY; ++ty) {
+    for (int ty = by0; ty <= by1; ++ty) {
         int32_t row = 0;
-        for (int tx = 0; tx < tilesX; ++tx) {
-            row += grid[size_t(ty) * gridWidth + size_t(tx)];
-            counts[ty * tilesX + tx] = row + (ty > 0 ? counts[(ty - 1) * tilesX + tx] : 0);
+        const int32_t* marks = grid + size_t(ty) * gridWidth;
+        int32_t* line = counts + ty * tilesX;
+        for (int tx = bx0; tx <= bx1; ++tx) {
+            row += marks[tx];
+            line[tx] = row + (ty > by0 ? line[tx - tilesX] : 0);
         }
     }
+    for (int ty = std::min(by0, tilesY); ty <= std::min(by1 + 1, tilesY); ++ty) {
+        std::fill(grid + size_t(ty) * gridWidth + size_t(bx0), grid + size_t(ty) * gridWidth + size_t(std::min(bx1 + 1, tilesX)) + 1, 0);
+    }
+    out->cleanCells = gridSize;
 
     // 3. Each tile's first entry (its cursor from now on), the tiles with particles and their runs
     // for the composite.
     int32_t sum = 0;
-    for (int ty = 0; ty < tilesY; ++ty) {
+    size_t listed = 0;
+    if (by1 >= by0) out->tiles.resize(size_t(by1 - by0 + 1) * size_t(bx1 - bx0 + 1) * 4);  // at most; cut below
+    uint32_t* tileWords = out->tiles.data();
+    for (int ty = by0; ty <= by1; ++ty) {
         int runStart = -1;
-        for (int tx = 0; tx <= tilesX; ++tx) {
-            const int32_t tileEntries = tx < tilesX ? counts[ty * tilesX + tx] : 0;
+        int32_t* line = counts + ty * tilesX;
+        for (int tx = bx0; tx <= bx1 + 1; ++tx) {
+            const int32_t tileEntries = tx <= bx1 ? line[tx] : 0;
             if (tileEntries > 0) {
-                out->tiles.insert(out->tiles.end(), {uint32_t(tx), uint32_t(ty), uint32_t(sum), uint32_t(tileEntries)});
-                counts[ty * tilesX + tx] = sum;
+                uint32_t* t = tileWords + listed;
+                t[0] = uint32_t(tx);
+                t[1] = uint32_t(ty);
+                t[2] = uint32_t(sum);
+                t[3] = uint32_t(tileEntries);
+                listed += 4;
+                line[tx] = sum;
                 sum += tileEntries;
                 if (runStart < 0) runStart = tx;
             } else if (runStart >= 0) {
@@ -192,6 +224,7 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
             }
         }
     }
+    out->tiles.resize(listed);
     if (fill == TileBins::Fill::Entries) writeEntries(out, jobs);
     return true;
 }

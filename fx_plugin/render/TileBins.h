@@ -43,12 +43,15 @@ struct TileBins {
     int32_t orderStart[(1 << (32 - kBatchShift)) + 1] = {};
     int32_t batchLast[1 << (32 - kBatchShift)] = {};
     std::vector<uint32_t> entries;  ///< per tile, front to back (Fill::Entries only)
-    std::vector<uint32_t> tiles;    ///< per tile holding particles: tile x, tile y, first entry, count
+    NoInitVector<uint32_t> tiles;   ///< per tile holding particles: tile x, tile y, first entry, count
     ScreenTiles cover;              ///< those tiles as runs (the composite's draw)
     uint32_t entryCount = 0;        ///< the entries of every tile (and the pairs)
     int tilesX = 0, tilesY = 0;     ///< the view's tiles
-    std::vector<int32_t> counts;    ///< scratch: per tile of the view its entries, then its first
+    /// Scratch: per tile of the view its entries, then its first (only the tiles inside the box
+    /// of every particle's range are written; no other is read).
+    NoInitVector<int32_t> counts;
     std::vector<int32_t> grids;     ///< scratch: per piece of the particles, +-1 at its ranges' corners
+    size_t cleanCells = 0;          ///< the first cells of `grids` known to be 0 (binParticles cleans them)
     int tileCount() const { return int(tiles.size() / 4); }
 };
 

@@ -496,18 +496,25 @@ TEST(ScreenTiles, ASteadyFrameReusesTheBuffers) {
 // nothing in front, bounds only just off the view, a particle at the near plane, a larger view,
 // enough particles for several pieces) gives what a new one gives every time, and is all zero
 // after each. Leaving out the clean-up, or a row or column of it, fails here.
+// `count` particles around (cx, cy, cz), within `spread` on each axis, of sizes 0.25-2.25 `size`.
+std::vector<ParticleInstance> cloudOf(std::mt19937& rng, int count, float cx, float cy, float cz, float spread,
+                                      float size) {
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    std::vector<ParticleInstance> out{size_t(count), ParticleInstance{}};
+    for (ParticleInstance& p : out) {
+        p.x = cx + spread * u(rng);
+        p.y = cy + spread * u(rng);
+        p.z = cz + spread * u(rng);
+        p.size = size * (1.25f + u(rng));
+    }
+    return out;
+}
+
 TEST(ScreenTiles, AKeptGridGivesWhatANewOneGives) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     auto cloud = [&](int count, float cx, float cy, float cz, float spread, float size) {
-        std::vector<ParticleInstance> out{size_t(count), ParticleInstance{}};
-        for (ParticleInstance& p : out) {
-            p.x = cx + spread * u(rng);
-            p.y = cy + spread * u(rng);
-            p.z = cz + spread * u(rng);
-            p.size = size * (1.25f + u(rng));
-        }
-        return out;
+        return cloudOf(rng, count, cx, cy, cz, spread, size);
     };
     const ViewInfo small = testView();
     ViewInfo large = testView();
@@ -647,6 +654,69 @@ TEST(TileBins, EveryParticleIsInTheTilesItsBoundTouchesFrontToBack) {
         for (int c : rasterise(bins.cover, &insideView)) ASSERT_LE(c, 1);
         EXPECT_TRUE(insideView);
     }
+}
+
+// The bins keep their first grid zero between calls (TileBins::cleanCells) and sum and walk only
+// the box of the particles' ranges: TileBins kept across views of different smoke (clusters
+// moving, a larger view, enough particles for several pieces, a view refused for a particle with
+// no bound, nothing on screen) give what new ones give, every Fill, every time.
+TEST(TileBins, KeptBinsGiveWhatNewOnesGive) {
+    std::mt19937 rng(5);
+    const ViewInfo small = testView();
+    ViewInfo large = testView();
+    large.width = 2 * kW + 7;
+    large.height = 3 * kH + 3;
+    struct Step {
+        const ViewInfo* view;
+        std::vector<ParticleInstance> particles;
+        bool refused;
+    };
+    std::vector<ParticleInstance> noBound = cloudOf(rng, 3000, 1.0f, 1.0f, -3.0f, 2.0f, 0.2f);
+    noBound[2500].y = std::numeric_limits<float>::infinity();  // after the first piece's marks
+    // Small clusters inside the view (none reaches its last row or column, where a mark left
+    // behind would never be read), at different places; their boxes overlap one another's edges.
+    const std::vector<Step> steps = {
+        {&small, cloudOf(rng, 200, -1.5f, 1.5f, -4.0f, 0.4f, 0.05f), false},
+        {&small, cloudOf(rng, 300, 1.0f, 0.5f, -4.0f, 0.4f, 0.05f), false},
+        {&small, cloudOf(rng, 300, -0.5f, 1.0f, -4.0f, 0.6f, 0.05f), false},
+        {&small, noBound, true},
+        {&small, cloudOf(rng, 50, 0.5f, 1.5f, -5.0f, 0.3f, 0.05f), false},
+        {&small, cloudOf(rng, 80, 0.0f, 0.8f, -4.0f, 0.3f, 0.05f), false},
+        {&large, cloudOf(rng, 9000, 0.0f, 1.0f, -6.0f, 1.5f, 0.05f), false},  // several pieces
+        {&large, cloudOf(rng, 100, 1.0f, 0.5f, -4.0f, 0.5f, 0.05f), false},
+        {&small, cloudOf(rng, 40, 0.0f, 1.0f, 20.0f, 1.0f, 0.3f), false},  // behind the eye: nothing
+        {&small, cloudOf(rng, 400, -0.5f, 1.2f, -4.0f, 0.8f, 0.05f), false},
+    };
+    int withTiles = 0, lastRow = -1;
+    for (TileBins::Fill fill : {TileBins::Fill::Entries, TileBins::Fill::Pairs, TileBins::Fill::Ranges}) {
+        TileBins kept;
+        for (size_t i = 0; i < steps.size(); ++i) {
+            const Step& step = steps[i];
+            const int n = int(step.particles.size());
+            const TileBins::Range batches[2] = {{0, n / 3, false}, {n / 3, n - n / 3, true}};
+            TileBins fresh;
+            const bool a = binParticles(*step.view, step.particles.data(), batches, 2, nullptr, &kept, Jobs(), fill);
+            const bool b = binParticles(*step.view, step.particles.data(), batches, 2, nullptr, &fresh, Jobs(), fill);
+            ASSERT_EQ(a, !step.refused) << "step " << i;
+            ASSERT_EQ(b, a) << "step " << i;
+            if (!a) continue;
+            EXPECT_EQ(kept.entryCount, fresh.entryCount) << "step " << i;
+            EXPECT_EQ(kept.particles, fresh.particles) << "step " << i;
+            EXPECT_EQ(kept.entries, fresh.entries) << "step " << i;
+            EXPECT_EQ(kept.tiles, fresh.tiles) << "step " << i;
+            EXPECT_EQ(kept.cover.vertices, fresh.cover.vertices) << "step " << i;
+            withTiles += kept.tileCount() > 0 ? 1 : 0;
+            for (int t = 0; t < kept.tileCount(); ++t) lastRow = std::max(lastRow, int(kept.tiles[size_t(t) * 4 + 1]));
+            if (step.view == &small) {
+                for (int t = 0; t < kept.tileCount(); ++t) {
+                    EXPECT_LT(int(kept.tiles[size_t(t) * 4 + 1]), kept.tilesY - 1) << "step " << i;
+                    EXPECT_LT(int(kept.tiles[size_t(t) * 4]), kept.tilesX - 1) << "step " << i;
+                }
+            }
+        }
+    }
+    EXPECT_EQ(withTiles, 3 * 8) << "every step but the refused one and the one behind the eye bins tiles";
+    EXPECT_LT(lastRow, large.height / ScreenTiles::kTileSize) << "no step's smoke reaches the view's last row";
 }
 
 TEST(TileBins, AParticleWithNoBoundOrTooManyBatchesRefuseTheView) {
