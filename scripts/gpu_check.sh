@@ -9,8 +9,10 @@
 # Into $OUT: run-all.sh's data.tgz and img.tgz.* (standard, fill, overdraw, 4K, the particle sweep,
 # the drive through both depth paths) and parts.tgz (shader_parts.sh's runs and their log, a
 # particle sweep of the tiled modes: parts/tiled_sweep.json, and the tiled path's list limit in
-# three settings: parts/lists_*.json; lit smoke rasterised and tiled: parts/lit_*.json). Back
-# here: tar xzf parts.tgz -C /tmp && scripts/shader_parts.sh --table /tmp/parts
+# three settings: parts/lists_*.json; lit smoke rasterised and tiled: parts/lit_*.json; where
+# bench_draw was packed too, its bins, cull and bound on the host's threads: parts/bench_draw.json).
+# Back here: tar xzf parts.tgz -C /tmp && scripts/shader_parts.sh --table /tmp/parts
+# (With bench_draw: ../shared/gpu/pack.sh build fxbench cube_game bench_sim bench_draw.)
 set -u
 cd "$(dirname "$0")/.."
 out=${OUT:-/tmp/gpu-out}
@@ -55,5 +57,15 @@ for size in 1920x1080 3840x2160; do
       --json "$out/parts/lit_${size}.json" > "$out/parts/lit_${size}.txt" 2>&1
   echo "lit $size rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
 done
+# The view's CPU work on the GPU host's threads (session 31: the cull and bins of 16,000 particles
+# in seven pieces, not one; the bound in three): bench_draw's job-system rows, 1 thread to all.
+if [ -x .gpu/bin/bench_draw ]; then
+  s=$(date +%s)
+  timeout 120 bash .gpu/run-egl.sh bench_draw \
+      --benchmark_filter='BM_TileBins/(16000|256000)/|BM_DrawListBuildJobs/(16000|256000)/|BM_ScreenRectJobs/(16000|256000)/' \
+      --benchmark_min_time=0.1 --benchmark_out="$out/parts/bench_draw.json" --benchmark_out_format=json \
+      > "$out/parts/bench_draw.txt" 2>&1
+  echo "bench_draw rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+fi
 tar czf "$out/parts.tgz" -C "$out" parts parts.log && rm -rf "$out/parts" "$out/parts.log"
 ls -la "$out"
