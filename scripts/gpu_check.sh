@@ -9,7 +9,8 @@
 # Into $OUT: run-all.sh's data.tgz and img.tgz.* (standard, fill, overdraw, 4K, the particle sweep,
 # the drive through both depth paths) and parts.tgz (shader_parts.sh's runs and their log, a
 # particle sweep of the tiled modes: parts/tiled_sweep.json, and the tiled path's list limit in
-# three settings: parts/lists_*.json; lit smoke rasterised and tiled: parts/lit_*.json; where
+# three settings: parts/lists_*.json; lit smoke rasterised and tiled: parts/lit_*.json; the tiled
+# path's bins deferred into its pass or not: parts/defer_*.json; where
 # bench_draw was packed too, its bins, cull and bound on the host's threads: parts/bench_draw.json).
 # Back here: tar xzf parts.tgz -C /tmp && scripts/shader_parts.sh --table /tmp/parts
 # (With bench_draw: ../shared/gpu/pack.sh build fxbench cube_game bench_sim bench_draw.)
@@ -35,6 +36,19 @@ timeout 150 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 --sweep 
     --frames 6 --error-frames 0 --modes hard,soft,soft+tiled,spherical,spherical+tiled \
     --json "$out/parts/tiled_sweep.json" > "$out/parts/tiled_sweep.txt" 2>&1
 echo "tiled sweep rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+# Deferred bins (session 32, TiledPath::deferBins): a view the GPU orders binned in its pass, after the
+# scene, the particles' order and their records went to the GPU, against binned while declared
+# (CUBEFX_TILED_DEFER_BINS=0), in alternating processes. Compare the frames: the pass's GPU time now
+# also holds whatever the GPU idles while the CPU bins, so "outside" alone would flatter it.
+s=$(date +%s)
+for round in 1 2; do
+  for d in 0 1; do
+    CUBEFX_TILED_DEFER_BINS=$d timeout 90 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 \
+        --sweep particles=64000,256000 --frames 8 --error-frames 0 --modes hard,soft+tiled \
+        --json "$out/parts/defer_${d}_${round}.json" > "$out/parts/defer_${d}_${round}.txt" 2>&1
+    echo "defer bins $d round $round rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+  done
+done
 # Where the tiled path's lists stop being the CPU's (TiledPath::kCpuListEntries, 0 by default since
 # session 28): the GPU sort always (0), the old default, and the CPU's up to 4 M entries, in the scenes
 # whose lists are long (fill at 1080p: about 520,000 entries; standard at 4K: about 277,000).

@@ -30,17 +30,22 @@ void FullResPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleVie
     addPassReading(frame, kPass, {depth, opacity}, color,
                    [this, record, depth, decode, color, opacity](PassContext& ctx) {
                        if (!targetsFitView(ctx, record->view, color, depth, sizeMismatch_)) return;
-                       GlStateGuard guard(record->view.depth);  // z-tested against the host's z-buffer
-                       DebugGroup group(kPass);
-                       ctx.bindForDraw(color);
-                       DrawInputs in;
-                       in.clip = HostClip::current();
-                       const TextureRef depthRef = depth.valid() ? ctx.texture(depth, 0) : TextureRef{};
-                       in.sceneDepth = depthRef.name;
-                       in.depthDecode = decode.placedFor(depthRef, record->view, true);  // drawn into sceneColor
-                       in.opacity = opacity.valid() ? ctx.texture(opacity, 0).name : 0;
-                       draw_.draw(*record, in);
+                       execute(ctx, *record, color, depth, decode, opacity);
                    });
+}
+
+void FullResPath::execute(PassContext& ctx, const ParticleView& view, Target color, Target depth,
+                          const SceneDepthDecode& decode, Target opacity) {
+    GlStateGuard guard(view.view.depth);  // z-tested against the host's z-buffer
+    DebugGroup group(kPass);
+    ctx.bindForDraw(color);
+    DrawInputs in;
+    in.clip = HostClip::current();
+    const TextureRef depthRef = depth.valid() ? ctx.texture(depth, 0) : TextureRef{};
+    in.sceneDepth = depthRef.name;
+    in.depthDecode = decode.placedFor(depthRef, view.view, true);  // drawn into sceneColor
+    in.opacity = opacity.valid() ? ctx.texture(opacity, 0).name : 0;
+    draw_.draw(view, in);
 }
 
 }  // namespace fx

@@ -21,6 +21,11 @@ public:
 
     /// Declares the view's pass.
     void declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& view);
+    /// What the declared pass runs: the view drawn into `color` (inside its own guard), reading
+    /// `depth` (decoded by `decode`) and lit smoke's `opacity` where valid. Also the tiled path's
+    /// fallback (TiledPath::declare), in a pass that declared the same reads and write.
+    void execute(PassContext& ctx, const ParticleView& view, Target color, Target depth,
+                 const SceneDepthDecode& decode, Target opacity);
 
 private:
     ParticleDraw& draw_;

@@ -251,8 +251,15 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     if (!quarterRes && tiled && tiled_.ok()) {
         // The GPU sorts the particles where ordersOnGpu says so; else the order goes in here.
         if (!tiled_.ordersOnGpu(record->list.particleCount())) builder_.order(view, &record->list, config_.jobs);
-        // False for a view it cannot bin (a particle with no bound): that one falls through to full res.
-        if (tiled_.declare(frame, record, config_.jobs)) return record->list.particleCount();
+        // False for a view it cannot bin (a particle with no bound): that one falls through to
+        // full res. A view binned in its pass falls back there: its order put in place, then the
+        // full-resolution draw.
+        auto fallback = [this, record](PassContext& ctx, Target color, Target depth, const SceneDepthDecode& decode,
+                                       Target opacity) {
+            builder_.order(record->view, &record->list, config_.jobs);
+            fullRes_.execute(ctx, *record, color, depth, decode, opacity);
+        };
+        if (tiled_.declare(frame, record, config_.jobs, fallback)) return record->list.particleCount();
     }
     builder_.order(view, &record->list, config_.jobs);  // nothing where the order is in place
     if (quarterRes) {

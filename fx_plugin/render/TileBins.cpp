@@ -16,6 +16,25 @@ constexpr int kTileSize = ScreenTiles::kTileSize;
 constexpr int kChunk = 256;  // particles bounded before their tiles are marked
 }  // namespace
 
+int placeBatches(const TileBins::Range* batches, int batchCount, TileBins* out) {
+    if (batchCount < 0 || batchCount > (1 << (32 - TileBins::kBatchShift))) return -1;
+    int top = 0;
+    for (int b = 0; b < batchCount; ++b) top = std::max(top, batches[b].first + batches[b].count);
+    if (top >= (1 << TileBins::kBatchShift)) return -1;
+    // Front-to-back order k: the last batch's last particle first. orderStart[j]: the first k of
+    // the j-th batch from the back.
+    int n = 0;
+    for (int j = 0; j < batchCount; ++j) {
+        const TileBins::Range& batch = batches[batchCount - 1 - j];
+        out->orderStart[j] = n;
+        n += std::max(batch.count, 0);
+        out->batchLast[batchCount - 1 - j] = batch.first + batch.count - 1;
+    }
+    out->orderStart[batchCount] = n;
+    out->batchCount = batchCount;
+    return n;
+}
+
 bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const TileBins::Range* batches,
                   int batchCount, const BillboardReach* reach, TileBins* out, const Jobs& jobs,
                   TileBins::Fill fill) {
@@ -33,20 +52,9 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
     if (batchCount > (1 << (32 - TileBins::kBatchShift))) return false;
     if (tilesX <= 0 || tilesY <= 0) return true;  // an empty view: no tiles
     if (tilesX > 0xffff || tilesY > 0xffff) return false;  // a range's 16 bit halves
-    int top = 0;
-    for (int b = 0; b < batchCount; ++b) top = std::max(top, batches[b].first + batches[b].count);
-    if (top >= (1 << TileBins::kBatchShift)) return false;
-    // Front-to-back order k: the last batch's last particle first. orderStart[j]: the first k of
-    // the j-th batch from the back.
-    int32_t* orderStart = out->orderStart;
-    int n = 0;
-    for (int j = 0; j < batchCount; ++j) {
-        orderStart[j] = n;
-        n += std::max(batches[batchCount - 1 - j].count, 0);
-        out->batchLast[batchCount - 1 - j] = batches[batchCount - 1 - j].first + batches[batchCount - 1 - j].count - 1;
-    }
-    orderStart[batchCount] = n;
-    out->batchCount = batchCount;
+    const int n = placeBatches(batches, batchCount, out);
+    if (n < 0) return false;
+    const int32_t* orderStart = out->orderStart;
     const int stride = fill == TileBins::Fill::Ranges ? 2 : 4;
     out->wordsPerParticle = stride;
     const int tileCount = tilesX * tilesY;

@@ -66,6 +66,12 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
                   int batchCount, const BillboardReach* reach, TileBins* out, const Jobs& jobs = Jobs(),
                   TileBins::Fill fill = TileBins::Fill::Entries);
 
+/// The front-to-back places of `batches` in `out` (orderStart, batchLast, batchCount), the first
+/// thing binParticles writes: the GPU's order of the particles (TileSort::sortParticles) needs no
+/// more, so it can start before the bins (TiledPath's deferred bins). Returns the particles, or -1
+/// past binParticles' limits (more than 64 batches, an instance at 2^26 or beyond).
+int placeBatches(const TileBins::Range* batches, int batchCount, TileBins* out);
+
 /// The lists of a Fill::Pairs (or Entries) result written here after all (`entries`, what Fill::Entries gives
 /// and TileSort writes on the GPU): where they are few, writing them costs the CPU less than the
 /// GPU's sort costs its fixed passes (TiledPath::kCpuListEntries). Once per binParticles: its

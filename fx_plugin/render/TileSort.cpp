@@ -44,6 +44,7 @@ static_assert(TileSort::kOrderParticles == 16384, "the message above names the d
 const int64_t gOrderLimitFromEnvironment = orderLimitFromEnvironment();
 std::atomic<int64_t> gOrderLimit{gOrderLimitFromEnvironment};  // -1: the defaults
 std::atomic<uint64_t> gGpuOrderedViews{0};
+std::atomic<int64_t> gBlockLimit{0};  // setBlockLimit: 0, the context's
 
 // `groups` work groups in rows of at most 65,535 (the least GL_MAX_COMPUTE_WORK_GROUP_COUNT),
 // the row length in the program's uGroupsX.
@@ -69,7 +70,9 @@ uint64_t TileSort::gpuOrderedViews() { return gGpuOrderedViews.load(std::memory_
 TileSort::~TileSort() {
     // The renderer deletes its GL objects with the context current (~ParticleRenderer).
     if (!privateGlContextCurrent()) return;
-    const uint32_t buffers[7] = {particles_, keys_[0], keys_[1], entries_[0], entries_[1], histogram_, ordered_};
+    const uint32_t buffers[11] = {particles_,    keys_[0],      keys_[1],       entries_[0],
+                                  entries_[1],   histogram_,    ordered_,       orderKeys_[0],
+                                  orderKeys_[1], orderPlaces_[0], orderPlaces_[1]};
     for (uint32_t b : buffers) {
         if (b) glDeleteBuffers(1, &b);
     }
@@ -126,10 +129,14 @@ int TileSort::rowsFor(uint32_t pairs) {
 void TileSort::setRows(int rows) { gRows.store(rows >= 1 && rows <= kMaxRows ? rows : 0, std::memory_order_relaxed); }
 
 bool TileSort::fits(const TileBins& bins) const {
+    const int64_t limit = gBlockLimit.load(std::memory_order_relaxed);
+    const int64_t maxBytes = limit > 0 ? std::min(limit, maxBlockBytes_) : maxBlockBytes_;
     const int64_t pairBytes = int64_t(bins.entryCount) * 4;
     const int64_t particleBytes = int64_t(bins.particles.size()) * 4;
-    return pairBytes <= maxBlockBytes_ && particleBytes <= maxBlockBytes_;
+    return pairBytes <= maxBytes && particleBytes <= maxBytes;
 }
+
+void TileSort::setBlockLimit(int64_t bytes) { gBlockLimit.store(std::max<int64_t>(bytes, 0), std::memory_order_relaxed); }
 
 void TileSort::ensureBuffer(uint32_t* buffer, size_t* capacity, size_t bytes) {
     if (!*buffer) glGenBuffers(1, buffer);
@@ -142,15 +149,15 @@ void TileSort::ensureBuffer(uint32_t* buffer, size_t* capacity, size_t bytes) {
     glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(grown), nullptr, GL_DYNAMIC_COPY);
 }
 
-void TileSort::radixPass(uint32_t count, int shift, int from) {
+void TileSort::radixPass(uint32_t count, int shift, const uint32_t keys[2], const uint32_t entries[2], int from) {
     const int rows = rowsFor(count);
     const uint32_t blockPairs = kGroup * uint32_t(rows);
     const uint32_t blocks = (count + blockPairs - 1) / blockPairs;
     const uint32_t histogramLength = blocks * (1u << kDigitBits);
     ensureBuffer(&histogram_, &histogramCapacity_, size_t(histogramLength) * 4);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kHistogram, histogram_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeysIn, keys_[from]);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEntriesIn, entries_[from]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeysIn, keys[from]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEntriesIn, entries[from]);
     // Count and scatter: one group a block, over the digit at `shift`.
     auto overBlocks = [&](uint32_t program, const Uniforms& u) {
         glUseProgram(program);
@@ -166,64 +173,85 @@ void TileSort::radixPass(uint32_t count, int shift, int from) {
     glUniform1i(scanU_.length, int(histogramLength));
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeysOut, keys_[from ^ 1]);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEntriesOut, entries_[from ^ 1]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeysOut, keys[from ^ 1]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEntriesOut, entries[from ^ 1]);
     overBlocks(scatter_, scatterU_);
 }
 
-void TileSort::orderParticles(uint32_t n, const DepthOrder& order, const TileBins& bins) {
-    // Each particle's entry from its place (TileBins::orderStart, batchLast), in every program
-    // that reads one.
-    auto setBatches = [&](const Uniforms& u) {
-        glUniform1i(u.batchCount, bins.batchCount);
-        glUniform1iv(u.orderStart, bins.batchCount + 1, bins.orderStart);
-        glUniform1iv(u.batchLast, bins.batchCount, bins.batchLast);
-    };
-    constexpr int kInstances = 3, kOrdered = 3, kSums = 4;
-    constexpr uint32_t kPrefixBlock = 1024;  // cs_particles_tile_sort.glsl's particles a prefix group adds up
+namespace {
+// Each particle's entry from its place (TileBins::orderStart, batchLast), in every program of the
+// order that reads one.
+void setBatches(const TileBins& places, int batchCountUniform, int orderStartUniform, int batchLastUniform) {
+    glUniform1i(batchCountUniform, places.batchCount);
+    glUniform1iv(orderStartUniform, places.batchCount + 1, places.orderStart);
+    glUniform1iv(batchLastUniform, places.batchCount, places.batchLast);
+}
+}  // namespace
+
+void TileSort::sortParticles(uint32_t n, const DepthOrder& order, const TileBins& places) {
+    sorted_ = false;
+    if (!orderOk() || n == 0) return;
+    constexpr int kInstances = 3;
+    for (int i = 0; i < 2; ++i) {
+        ensureBuffer(&orderKeys_[i], &orderKeysCapacity_[i], size_t(n) * 4);
+        ensureBuffer(&orderPlaces_[i], &orderPlacesCapacity_[i], size_t(n) * 4);
+    }
+    // Whatever read these buffers before (the last view's order) is done with them.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     // 1. Each particle's key (its depth's bits, ascending: front to back; 0 in a batch drawn in
-    // pool order) and its place in the words (the sort's payload), in keys_/entries_[0].
+    // pool order) and its place in the words (the sort's payload), in orderKeys_/orderPlaces_[0].
+    // (The programs declare the words' block, which these two do not read: a store bound anyway.)
+    ensureBuffer(&particles_, &particlesCapacity_, 16);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleBinding, particles_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, keys_[0]);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, entries_[0]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, orderKeys_[0]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, orderPlaces_[0]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstances, order.instances);
     glUseProgram(orderKey_);
     glUniform1i(orderKeyU_.particleCount, int(n));
     glUniform3f(orderKeyU_.eye, order.eye.x, order.eye.y, order.eye.z);
     glUniform3f(orderKeyU_.forward, order.forward.x, order.forward.y, order.forward.z);
     glUniform1ui(orderKeyU_.backToFront, order.backToFront);
-    setBatches(orderKeyU_);
+    setBatches(places, orderKeyU_.batchCount, orderKeyU_.orderStart, orderKeyU_.batchLast);
     dispatch((n + kGroup - 1) / kGroup, orderKeyU_.groupsX);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     // 2. Sorted by depth (the radix passes are stable: equal depths keep the words' order, the
     // reverse of the pool's, as the CPU's list has them), then by batch, the last batch first.
     int from = 0;
     if (order.backToFront != 0) {
-        for (int shift = 0; shift < 32; shift += kDigitBits, from ^= 1) radixPass(n, shift, from);
+        for (int shift = 0; shift < 32; shift += kDigitBits, from ^= 1) radixPass(n, shift, orderKeys_, orderPlaces_, from);
     }
     if (order.batchCount > 1) {
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleBinding, particles_);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, keys_[from]);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, entries_[from]);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, orderKeys_[from]);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, orderPlaces_[from]);
         glUseProgram(orderBatch_);
         glUniform1i(orderBatchU_.particleCount, int(n));
-        setBatches(orderBatchU_);
+        setBatches(places, orderBatchU_.batchCount, orderBatchU_.orderStart, orderBatchU_.batchLast);
         dispatch((n + kGroup - 1) / kGroup, orderBatchU_.groupsX);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        for (int shift = 0; (order.batchCount - 1) >> shift; shift += kDigitBits, from ^= 1) radixPass(n, shift, from);
+        for (int shift = 0; (order.batchCount - 1) >> shift; shift += kDigitBits, from ^= 1) {
+            radixPass(n, shift, orderKeys_, orderPlaces_, from);
+        }
     }
-    // 3. The words in that order, each with its first pair: the counts added up in blocks, the
-    // blocks' sums scanned, each block's first added on.
+    sorted_ = true;
+    sortedCount_ = n;
+    sortedFrom_ = from;
+}
+
+void TileSort::orderParticles(uint32_t n, const TileBins& bins) {
+    constexpr int kOrdered = 3, kSums = 4;
+    constexpr uint32_t kPrefixBlock = 1024;  // cs_particles_tile_sort.glsl's particles a prefix group adds up
+    // 3. The words in the sorted order, each with its first pair: the counts added up in blocks,
+    // the blocks' sums scanned, each block's first added on.
     ensureBuffer(&ordered_, &orderedCapacity_, size_t(n) * 16);
     const uint32_t prefixGroups = (n + kPrefixBlock - 1) / kPrefixBlock;
     ensureBuffer(&histogram_, &histogramCapacity_, size_t(prefixGroups) * 4);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleBinding, particles_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, entries_[from]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, orderPlaces_[sortedFrom_]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOrdered, ordered_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSums, histogram_);
     glUseProgram(orderPrefix_);
     glUniform1i(orderPrefixU_.particleCount, int(n));
-    setBatches(orderPrefixU_);
+    setBatches(bins, orderPrefixU_.batchCount, orderPrefixU_.orderStart, orderPrefixU_.batchLast);
     dispatch(prefixGroups, orderPrefixU_.groupsX);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     glUseProgram(scan_);
@@ -238,13 +266,14 @@ void TileSort::orderParticles(uint32_t n, const DepthOrder& order, const TileBin
 }
 
 uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs, const DepthOrder* order) {
+    const bool sorted = sorted_;
+    sorted_ = false;  // taken here (or dropped: a view that is not drawn)
     if (!ok() || !fits(bins) || (order && !orderOk())) return 0;
     const uint32_t pairs = bins.entryCount;
     // The words of the particles: four each, or (Fill::Ranges, only with an order) two.
     if (bins.wordsPerParticle != (order ? 2 : 4) || (order && order->batchCount != bins.batchCount)) return 0;
     const uint32_t particleCount = uint32_t(bins.particles.size() / size_t(bins.wordsPerParticle));
-    // The particles' sort goes through the pairs' buffers first.
-    const size_t keyBytes = size_t(order ? std::max(pairs, particleCount) : pairs) * 4;
+    const size_t keyBytes = size_t(pairs) * 4;
     ensureBuffer(&keys_[0], &keysCapacity_[0], keyBytes);
     ensureBuffer(&entries_[0], &entriesCapacity_[0], keyBytes);
     if (pairs == 0 || particleCount == 0) return entries_[0];
@@ -259,9 +288,9 @@ uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs, const DepthOrder*
         glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(particleBytes), bins.particles.data());
     }
     if (order) {
-        ensureBuffer(&keys_[1], &keysCapacity_[1], keyBytes);
-        ensureBuffer(&entries_[1], &entriesCapacity_[1], keyBytes);
-        orderParticles(particleCount, *order, bins);
+        if (!sorted || sortedCount_ != particleCount) sortParticles(particleCount, *order, bins);
+        sorted_ = false;
+        orderParticles(particleCount, bins);
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleBinding, order ? ordered_ : particles_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, keys_[0]);
@@ -279,7 +308,7 @@ uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs, const DepthOrder*
     ensureBuffer(&keys_[1], &keysCapacity_[1], size_t(pairs) * 4);
     ensureBuffer(&entries_[1], &entriesCapacity_[1], size_t(pairs) * 4);
     int from = 0;
-    for (int pass = 0; pass < passCount; ++pass, from ^= 1) radixPass(pairs, pass * kDigitBits, from);
+    for (int pass = 0; pass < passCount; ++pass, from ^= 1) radixPass(pairs, pass * kDigitBits, keys_, entries_, from);
     return entries_[from];
 }
 

@@ -87,6 +87,17 @@ public:
     /// Fill::Ranges (two words a particle; else 0): the particles are put in front-to-back order
     /// first (above). Without, bins of four words a particle (Pairs).
     uint32_t run(const TileBins& bins, const Jobs& jobs = Jobs(), const DepthOrder* order = nullptr);
+    /// The first half of run() with `order`, which needs no bins: each particle's key and the
+    /// radix passes over them (orderOk() only). `places`: the bins' orderStart, batchLast and
+    /// batchCount (placeBatches). Issued before the bins are worked out, the GPU sorts while the
+    /// CPU bins (TiledPath's deferred bins); the next run() with an order of `particleCount`
+    /// particles goes on from it instead of sorting again. dropOrder() forgets it (a view that
+    /// was not drawn after all).
+    void sortParticles(uint32_t particleCount, const DepthOrder& order, const TileBins& places);
+    void dropOrder() { sorted_ = false; }
+    /// Caps the largest shader storage block fits() allows below the context's (bytes; 0: the
+    /// context's own): a context with small blocks, for tests.
+    static void setBlockLimit(int64_t bytes);
 
     /// The radix passes a view of `tileCount` tiles takes.
     static int passes(int tileCount);
@@ -108,10 +119,10 @@ private:
         int groupsX = -1, particleCount = -1, tilesX = -1, pairCount = -1, shift = -1, blocks = -1, length = -1,
             rows = -1, eye = -1, forward = -1, backToFront = -1, batchCount = -1, orderStart = -1, batchLast = -1;
     };
-    // One radix pass over `count` keys_/entries_[from] into [from ^ 1] by kDigitBits at `shift`.
-    void radixPass(uint32_t count, int shift, int from);
-    // Sorts the particles (order) and writes them, with their first pairs, to ordered_.
-    void orderParticles(uint32_t particleCount, const DepthOrder& order, const TileBins& bins);
+    // One radix pass over `count` keys[from]/entries[from] into [from ^ 1] by kDigitBits at `shift`.
+    void radixPass(uint32_t count, int shift, const uint32_t keys[2], const uint32_t entries[2], int from);
+    // Writes the sorted particles (sortParticles), with their first pairs, to ordered_.
+    void orderParticles(uint32_t particleCount, const TileBins& bins);
 
     uint32_t emit_ = 0, count_ = 0, scan_ = 0, scatter_ = 0;
     uint32_t orderKey_ = 0, orderBatch_ = 0, orderPrefix_ = 0, orderAdd_ = 0;
@@ -119,6 +130,13 @@ private:
     uint32_t particles_ = 0, keys_[2] = {}, entries_[2] = {}, histogram_ = 0, ordered_ = 0;
     size_t particlesCapacity_ = 0, keysCapacity_[2] = {}, entriesCapacity_[2] = {}, histogramCapacity_ = 0,
            orderedCapacity_ = 0;
+    // The particles' sort (sortParticles): keys and places of their own, so that the pairs'
+    // buffers, sized once the bins are known, can grow after it without losing its result.
+    uint32_t orderKeys_[2] = {}, orderPlaces_[2] = {};
+    size_t orderKeysCapacity_[2] = {}, orderPlacesCapacity_[2] = {};
+    bool sorted_ = false;           // sortParticles ran and no run() has taken it yet
+    uint32_t sortedCount_ = 0;      // its particles
+    int sortedFrom_ = 0;            // the sorted places: orderPlaces_[sortedFrom_]
     int64_t maxBlockBytes_ = 0;
 };
 

@@ -12,6 +12,7 @@
 
 #include "ComputeBindings.h"
 #include "GlStateGuard.h"
+#include "ImmediateFrame.h"
 #include "PassDeclaration.h"
 #include "SceneDepthSource.h"
 
@@ -51,7 +52,21 @@ int64_t cpuListLimitFromEnvironment() {
 static_assert(TiledPath::kSoftwareCpuListEntries == 131072, "the message above names the default");
 const int64_t gCpuListLimitFromEnvironment = cpuListLimitFromEnvironment();
 std::atomic<int64_t> gCpuListLimit{gCpuListLimitFromEnvironment};  // -1: the defaults
-std::atomic<uint64_t> gCpuListViews{0}, gGpuSortedViews{0};
+std::atomic<uint64_t> gCpuListViews{0}, gGpuSortedViews{0}, gDeferredBinViews{0}, gDeferredFallbacks{0};
+
+// CUBEFX_TILED_DEFER_BINS, read once: 0 bins every view when it is declared, 1 (or unset) defers
+// them where deferBins() says; anything else is reported and ignored.
+const char* gDeferBinsProblem = nullptr;
+int deferBinsFromEnvironment() {
+    const char* v = std::getenv("CUBEFX_TILED_DEFER_BINS");
+    if (!v || !*v) return -1;
+    if (std::strcmp(v, "0") == 0 || std::strcmp(v, "1") == 0) return v[0] - '0';
+    gDeferBinsProblem = "fx: CUBEFX_TILED_DEFER_BINS is neither 0 nor 1; the tiled path keeps its default (the "
+                        "bins of a view the GPU orders are worked out in its pass)";
+    return -1;
+}
+const int gDeferBinsFromEnvironment = deferBinsFromEnvironment();
+std::atomic<int> gDeferBins{gDeferBinsFromEnvironment};  // -1: the default (on)
 
 // render.near_fade as the shaders' line in depth (ParticleDraw's nearFadeMap).
 glm::vec2 nearFadeMap(float fade, float nearPlane) {
@@ -104,6 +119,12 @@ void TiledPath::resetCpuListLimit() { gCpuListLimit.store(gCpuListLimitFromEnvir
 const char* TiledPath::cpuListLimitProblem() { return gCpuListLimitProblem; }
 uint64_t TiledPath::cpuListViews() { return gCpuListViews.load(std::memory_order_relaxed); }
 uint64_t TiledPath::gpuSortedViews() { return gGpuSortedViews.load(std::memory_order_relaxed); }
+bool TiledPath::deferBins() { return gDeferBins.load(std::memory_order_relaxed) != 0; }
+void TiledPath::setDeferBins(bool on) { gDeferBins.store(on ? 1 : 0, std::memory_order_relaxed); }
+void TiledPath::resetDeferBins() { gDeferBins.store(gDeferBinsFromEnvironment, std::memory_order_relaxed); }
+const char* TiledPath::deferBinsProblem() { return gDeferBinsProblem; }
+uint64_t TiledPath::deferredBinViews() { return gDeferredBinViews.load(std::memory_order_relaxed); }
+uint64_t TiledPath::deferredFallbacks() { return gDeferredFallbacks.load(std::memory_order_relaxed); }
 
 bool TiledPath::softwareRasterizer(const char* renderer) {
     if (!renderer) return false;
@@ -201,7 +222,8 @@ bool TiledPath::canDraw(const ParticleView& v) {
     return flatW;
 }
 
-bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& record, const Jobs& jobs) {
+bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& record, const Jobs& jobs,
+                        Fallback fallback) {
     const ViewInfo& view = record->view;
     // Hard particles are cut against the scene depth too: the pass reads it whatever the batches
     // (a host that hands none in gets the full-resolution pass).
@@ -212,33 +234,52 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
     bool lit = false;
     for (const DrawBatch& batch : record->list.batches) lit = lit || litBatch(*record, batch);
     if (lit && !litOk()) return false;
-    TileBins::Range ranges[kMaxBatches];
-    const int batchCount = int(record->list.batches.size());
-    for (int b = 0; b < batchCount; ++b) {
-        const DrawBatch& batch = record->list.batches[size_t(b)];
-        ranges[b] = {batch.first, batch.count, batch.technique == Technique::Spherical};
-    }
-    const BillboardReach reach = draw_.billboardReach(*record, false);
-    if (!binParticles(view, record->list.instances.data(), ranges, batchCount, &reach, &record->bins, jobs,
-                      record->list.orderPending ? TileBins::Fill::Ranges : TileBins::Fill::Pairs) ||
-        !sort_.fits(record->bins)) {
-        return false;
-    }
     // An unsorted list's lists can only come from the GPU, which sorts its particles first.
     if (record->list.orderPending && !sort_.orderOk()) return false;
-    if (!record->list.orderPending && record->bins.entryCount <= cpuListLimit(software_)) {
-        writeEntries(&record->bins, jobs);
+    // The bins of a view the GPU orders wait for the pass (see deferBins()); the immediate path
+    // (renderView) bins here, where its scene depth copy is narrowed to them.
+    const bool deferred = record->list.orderPending && fallback && deferBins() && !dynamic_cast<ImmediateFrame*>(&frame);
+    if (!deferred) {
+        TileBins::Range ranges[kMaxBatches];
+        const int batchCount = batchRanges(*record, ranges);
+        const BillboardReach reach = draw_.billboardReach(*record, false);
+        if (!binParticles(view, record->list.instances.data(), ranges, batchCount, &reach, &record->bins, jobs,
+                          record->list.orderPending ? TileBins::Fill::Ranges : TileBins::Fill::Pairs) ||
+            !sort_.fits(record->bins)) {
+            return false;
+        }
+        if (!record->list.orderPending && record->bins.entryCount <= cpuListLimit(software_)) {
+            writeEntries(&record->bins, jobs);
+        }
+        narrowDepthRead(frame, tilesBound(record->bins, view.width, view.height), view.width, view.height);
     }
     const Target color = frame.sceneColor();
-    narrowDepthRead(frame, tilesBound(record->bins, view.width, view.height), view.width, view.height);
     const Target opacity = lit ? record->opacity : Target{};  // lit smoke's opacity map, where there is one
-    addPassReading(frame, kPass, {depth, opacity}, color, [this, record, depth, decode, color, opacity](PassContext& ctx) {
-        if (!targetsFitView(ctx, record->view, color, depth, sizeMismatch_)) return;
-        GlStateGuard guard;  // nothing z-tested: the compute shader compares depths itself
-        DebugGroup group(kPass);
-        run(ctx, *record, color, depth, decode, opacity);
-    });
+    addPassReading(frame, kPass, {depth, opacity}, color,
+                   [this, record, depth, decode, color, opacity, deferred, fallback](PassContext& ctx) {
+                       if (!targetsFitView(ctx, record->view, color, depth, sizeMismatch_)) return;
+                       bool drawn = true;
+                       {
+                           GlStateGuard guard;  // nothing z-tested: the compute shader compares depths itself
+                           DebugGroup group(kPass);
+                           drawn = run(ctx, *record, color, depth, decode, opacity, deferred);
+                       }
+                       if (drawn) return;
+                       // Bins the pass could not take after all: the raster path, as declare() would
+                       // have sent the view to had it binned it.
+                       gDeferredFallbacks.fetch_add(1, std::memory_order_relaxed);
+                       fallback(ctx, color, depth, decode, opacity);
+                   });
     return true;
+}
+
+int TiledPath::batchRanges(const ParticleView& v, TileBins::Range* ranges) {
+    const int batchCount = int(v.list.batches.size());
+    for (int b = 0; b < batchCount; ++b) {
+        const DrawBatch& batch = v.list.batches[size_t(b)];
+        ranges[b] = {batch.first, batch.count, batch.technique == Technique::Spherical};
+    }
+    return batchCount;
 }
 
 void TiledPath::ensureObjects(int width, int height) {
@@ -268,51 +309,42 @@ void TiledPath::ensureObjects(int width, int height) {
     }
 }
 
-void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Target depth, const SceneDepthDecode& decode,
-                    Target opacity) {
-    const TileBins& bins = v.bins;
+bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target depth, const SceneDepthDecode& decode,
+                    Target opacity, bool deferred) {
+    TileBins& bins = v.bins;
     const ViewInfo& view = v.view;
-    if (bins.tileCount() == 0 || !ok()) return;
+    if ((!deferred && bins.tileCount() == 0) || !ok()) return true;
     bool lit = false;
     for (const DrawBatch& batch : v.list.batches) lit = lit || litBatch(v, batch);
-    if (lit && !litOk()) return;  // declare() said so; a reload since may have lost them
+    if (lit && !litOk()) return true;  // declare() said so; a reload since may have lost them
     ComputeBindingsScope bindings;
     ensureObjects(view.width, view.height);
 
-    // The instances, the bins' lists (written on the CPU when declared, else written and sorted on
-    // the GPU: TileSort.h, which reads the instances where it sorts the particles too) and tiles.
-    // They go to storage buffers of the pass's own, kept (not orphaned) and written through a
+    // The instances, and below the bins' lists and tiles. They go to storage buffers of the pass's own, kept (not orphaned) and written through a
     // mapping on the host's threads. Through the raster path's vertex buffer, orphaned each frame
     // and read here by compute, the H200's driver gave the CPU a store it writes slowly: 2.25 ms
     // for the 8 MB of 256,000 particles, where the sort's 4 MB take 0.25 ms.
     const int count = v.list.particleCount();
+    if (deferred) glFlush();  // the scene's passes to the GPU while the CPU copies (and bins, below)
     fillStorage(&instanceBuffer_, &instanceCapacity_, v.list.instances.data(), size_t(count) * sizeof(ParticleInstance),
                 draw_.jobs());
-    uint32_t entries = 0;
-    if (!bins.entries.empty()) {
-        fillStorage(&entryBuffer_, &entryCapacity_, bins.entries.data(), bins.entries.size() * sizeof(uint32_t), draw_.jobs());
-        entries = entryBuffer_;
-        gCpuListViews.fetch_add(1, std::memory_order_relaxed);
-    } else {
-        TileSort::DepthOrder order;
-        if (v.list.orderPending) {
-            order.instances = instanceBuffer_;
-            order.eye = view.eye;
-            order.forward = viewForward(view);
-            order.batchCount = int(v.list.batches.size());
-            for (int b = 0; b < order.batchCount; ++b) {
-                if (v.list.batches[size_t(b)].backToFront) order.backToFront |= 1u << b;
-            }
+    TileSort::DepthOrder order;
+    if (v.list.orderPending) {
+        order.instances = instanceBuffer_;
+        order.eye = view.eye;
+        order.forward = viewForward(view);
+        order.batchCount = int(v.list.batches.size());
+        for (int b = 0; b < order.batchCount; ++b) {
+            if (v.list.batches[size_t(b)].backToFront) order.backToFront |= 1u << b;
         }
-        entries = sort_.run(bins, draw_.jobs(), v.list.orderPending ? &order : nullptr);
-        gGpuSortedViews.fetch_add(1, std::memory_order_relaxed);
     }
-    if (!entries) return;
-    fillStorage(&tileBuffer_, &tileCapacity_, bins.tiles.data(), bins.tiles.size() * sizeof(uint32_t), draw_.jobs());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceBinding, instanceBuffer_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEntryBinding, entries);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBinding, tileBuffer_);
-    glBindImageTexture(kAccumImage, accum_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    // Deferred bins: the particles' order, which needs none, goes to the GPU first.
+    TileBins::Range ranges[kMaxBatches];
+    const int batchCount = batchRanges(v, ranges);
+    if (deferred) {
+        if (placeBatches(ranges, batchCount, &bins) < 0) return false;
+        sort_.sortParticles(uint32_t(count), order, bins);
+    }
 
     // What the pass reads.
     ColorRampTexture& ramp = draw_.ramp();
@@ -326,6 +358,7 @@ void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Targe
     if (depthRef.name) sceneDepthBarrier(decode);
 
     // 1. Each particle's record, once (the vertex shader's work).
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceBinding, instanceBuffer_);
     const size_t recordBytes = size_t(count) * kRecordBytes;
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, recordBuffer_);
     if (recordBytes > recordCapacity_) {
@@ -421,6 +454,45 @@ void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Targe
         glUniform1i(u.groupsX, groupsX);
         glDispatchCompute(GLuint(groupsX), GLuint((groups + groupsX - 1) / groupsX), 1);
     }
+
+    // Deferred bins, now that the GPU has the scene, the records and the particles' order to work
+    // on: flushed, so that it does while the host's threads bin.
+    if (deferred) {
+        glFlush();
+        const BillboardReach reach = draw_.billboardReach(v, false);
+        if (!binParticles(view, v.list.instances.data(), ranges, batchCount, &reach, &bins, draw_.jobs(),
+                          TileBins::Fill::Ranges) ||
+            !sort_.fits(bins)) {
+            sort_.dropOrder();
+            return false;
+        }
+        gDeferredBinViews.fetch_add(1, std::memory_order_relaxed);
+        if (bins.tileCount() == 0) {
+            sort_.dropOrder();
+            return true;  // nothing on screen
+        }
+    }
+
+    // The bins' lists (written on the CPU when declared, else written and sorted on the GPU:
+    // TileSort.h, which reads the instances where it sorts the particles too) and tiles.
+    uint32_t entries = 0;
+    if (!bins.entries.empty()) {
+        fillStorage(&entryBuffer_, &entryCapacity_, bins.entries.data(), bins.entries.size() * sizeof(uint32_t), draw_.jobs());
+        entries = entryBuffer_;
+        gCpuListViews.fetch_add(1, std::memory_order_relaxed);
+    } else {
+        entries = sort_.run(bins, draw_.jobs(), v.list.orderPending ? &order : nullptr);
+        gGpuSortedViews.fetch_add(1, std::memory_order_relaxed);
+    }
+    if (!entries) return true;
+    fillStorage(&tileBuffer_, &tileCapacity_, bins.tiles.data(), bins.tiles.size() * sizeof(uint32_t), draw_.jobs());
+    // The sort bound its own buffers to these bindings.
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceBinding, instanceBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEntryBinding, entries);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBinding, tileBuffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRecordBinding, recordBuffer_);
+    if (lit) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightBinding, lightBuffer_);
+    glBindImageTexture(kAccumImage, accum_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     // The records for the tiles; and the image's stores after the last view's composite read it
     // (split screen: one image for every view).
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -464,6 +536,7 @@ void TiledPath::run(PassContext& ctx, const ParticleView& v, Target color, Targe
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(bins.cover.vertices.size() * sizeof(float)), bins.cover.vertices.data(),
                  GL_STREAM_DRAW);
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(bins.cover.vertices.size() / 2));
+    return true;
 }
 
 }  // namespace fx

@@ -10,8 +10,9 @@
 // pass writes each tile's list on the GPU (TileSort.h: a pair per particle and tile, sorted by
 // tile, stably); a view of at most cpuListLimit() entries (none by default on a GPU) gets its lists
 // written on the CPU instead (writeEntries). A view of many particles (ordersOnGpu) comes with its
-// list unsorted (DrawList::orderPending) and the GPU sorts its particles back to front first. It then sets each particle up once (a compute dispatch, one invocation per particle: what the vertex shader works
-// out), then dispatches one work group per tile that holds particles (one invocation per pixel:
+// list unsorted (DrawList::orderPending), the GPU sorts its particles back to front first, and
+// its bins wait for the pass (deferBins()). The pass sets each particle up once (a compute
+// dispatch, one invocation per particle: what the vertex shader works out), then dispatches one work group per tile that holds particles (one invocation per pixel:
 // one scene-depth fetch per pixel, the particles' records read in order, the blend in registers,
 // stopped once the pixel is opaque) into the plugin's own RGBA16F image, and draws those tiles
 // onto sceneColor blended (ONE, ONE_MINUS_SRC_ALPHA): one blend per covered pixel instead of one
@@ -39,6 +40,7 @@
 //
 // GL state: the pass runs in a GlStateGuard; what it touches beyond the guard's rows (shader
 // storage buffer bindings 0-4 and the generic one, image unit 0) it reads first and puts back.
+#include <functional>
 #include <memory>
 
 #include "ParticleDraw.h"
@@ -118,11 +120,39 @@ public:
     /// has no bound, the lists would not fit a shader storage block or a lit batch finds no lit
     /// program: the caller declares the full-resolution pass instead.
     /// `jobs`: the host's job system, for the binning.
-    bool declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& view, const Jobs& jobs = Jobs());
+    /// `fallback`: how the full-resolution pass draws the view into color, reading depth (decoded)
+    /// and opacity, in this pass (it reads and writes what this one declares). Given, a view the
+    /// GPU orders is binned in the pass instead (deferBins()), which calls it where those bins fail.
+    using Fallback = std::function<void(PassContext& ctx, Target color, Target depth, const SceneDepthDecode& decode,
+                                        Target opacity)>;
+    bool declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& view, const Jobs& jobs = Jobs(),
+                 Fallback fallback = nullptr);
+
+    /// Deferred bins. A view the GPU orders (ordersOnGpu, DrawList::orderPending) in a frame graph
+    /// (not the immediate path) is binned when its pass runs, not when it is declared: the pass
+    /// uploads the instances, issues the particles' order and records (which need no bins),
+    /// flushes, and only then bins on the host's threads. The GPU works through the scene's
+    /// passes and those dispatches meanwhile, where a frame that bins while declaring leaves it
+    /// idle until its first pass (fxbench's "declare"; bench_draw: binning 256,000 particles
+    /// takes 1.3 ms on the H200's host's 16 threads, docs/results.md session 29). The picture is
+    /// the same bit for bit (TiledPathTest). Where the bins then fail (a particle with no bound,
+    /// lists past a storage block), the pass draws the view through declare()'s fallback.
+    /// On unless CUBEFX_TILED_DEFER_BINS=0 or setDeferBins(false), for A/B runs on a GPU.
+    static bool deferBins();
+    static void setDeferBins(bool on);
+    static void resetDeferBins();           ///< back to the environment's, or on
+    static const char* deferBinsProblem();  ///< what was wrong with CUBEFX_TILED_DEFER_BINS, or null
+    /// Views binned in their pass, and those of them drawn through the fallback, since the process started.
+    static uint64_t deferredBinViews();
+    static uint64_t deferredFallbacks();
 
 private:
-    void run(PassContext& ctx, const ParticleView& v, Target color, Target depth, const SceneDepthDecode& decode,
-             Target opacity);
+    // Draws the view (bins it first where `deferred`); false where deferred bins failed and
+    // nothing was drawn. Inside the pass's guard.
+    bool run(PassContext& ctx, ParticleView& v, Target color, Target depth, const SceneDepthDecode& decode,
+             Target opacity, bool deferred);
+    // The batches as binParticles takes them; returns their count.
+    static int batchRanges(const ParticleView& v, TileBins::Range* ranges);
     void ensureObjects(int width, int height);
 
     ParticleDraw& draw_;

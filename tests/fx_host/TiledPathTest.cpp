@@ -20,6 +20,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "FxTestHost.h"
+#include "render/FullResPath.h"
 #include "render/TileSort.h"
 #include "render/TiledPath.h"
 
@@ -143,8 +144,11 @@ TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
         ~LimitBack() {
             fx::TiledPath::resetCpuListLimit();
             fx::TileSort::resetOrderLimit();
+            fx::TiledPath::resetDeferBins();
         }
     } limitBack;
+    fx::TiledPath::resetDeferBins();
+    ASSERT_TRUE(fx::TiledPath::deferBins()) << "on by default (CUBEFX_TILED_DEFER_BINS unset)";
     direct.desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(1.0f, 0.1f, 0.1f, 0.9f)},
                                       fx::ColorStop{1.0f, glm::vec4(0.1f, 0.2f, 1.0f, 0.6f)}};
     ASSERT_TRUE(fx::TiledPath::softwareRasterizer(reinterpret_cast<const char*>(glGetString(GL_RENDERER))));
@@ -178,13 +182,22 @@ TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
         EXPECT_EQ(fx::TiledPath::gpuSortedViews(), gpu + 1) << "with the limit at 0 the GPU sorts";
         EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered) << "llvmpipe: the CPU sorts the particles";
         fx::TileSort::setOrderLimit(0);
+        const uint64_t deferred = fx::TiledPath::deferredBinViews();
         const Image gpuOrdered = draw(direct, graph, scene, view, true);
         EXPECT_EQ(fx::TiledPath::gpuSortedViews(), gpu + 2);
         EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered + 1) << "with the order limit at 0 the GPU sorts them";
+        EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 1) << "a view the GPU orders is binned in its pass";
+        // The same view binned while it is declared: the same frame.
+        fx::TiledPath::setDeferBins(false);
+        const Image binnedEarly = draw(direct, graph, scene, view, true);
+        fx::TiledPath::resetDeferBins();
+        EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 1);
+        EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered + 2);
         fx::TiledPath::resetCpuListLimit();
         fx::TileSort::resetOrderLimit();
         EXPECT_EQ(maxAbsDiff(byDefault, sorted), 0);
         EXPECT_EQ(maxAbsDiff(byDefault, gpuOrdered), 0);
+        EXPECT_EQ(maxAbsDiff(byDefault, binnedEarly), 0);
         // The same particles in pool order look different: the order is in the picture.
         direct.desc.render.sortBackToFront = false;
         const Image unsorted = draw(direct, graph, scene, view, true);
@@ -357,6 +370,61 @@ TEST_F(TiledPathTest, ViewsItCannotDrawAreDrawnAsWithoutIt) {
     EXPECT_FALSE(graph.ran(fx::TiledPath::kPass));
     EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered);
     EXPECT_EQ(maxAbsDiff(sortedPlain, deferred), 0);
+}
+
+// Bins worked out in the pass (TiledPath::deferBins) that the pass cannot take (here: lists past
+// a storage block capped at 256 bytes, TileSort::setBlockLimit): the pass draws the view as the raster
+// path would, its order put in place first, the frame the same as without the tiled path. Binned
+// while declared (deferBins off), the same view goes to the raster pass from the start.
+TEST_F(TiledPathTest, DeferredBinsThePassCannotTakeDrawTheRasterisedFrame) {
+    struct LimitBack {
+        ~LimitBack() {
+            fx::TiledPath::resetCpuListLimit();
+            fx::TileSort::resetOrderLimit();
+            fx::TiledPath::resetDeferBins();
+            fx::TileSort::setBlockLimit(0);
+        }
+    } limitBack;
+    fx::TiledPath::resetDeferBins();
+    direct.desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(1.0f, 0.1f, 0.1f, 0.9f)},
+                                      fx::ColorStop{1.0f, glm::vec4(0.1f, 0.2f, 1.0f, 0.6f)}};
+    direct.set(ringOfPuffs(0.5f, 0.9f));
+    TestFrameGraph graph(kW, kH, true, true);
+    TestScene scene = reversedGround();
+    fx::ViewInfo view = makeView(glm::vec3(0.0f, 2.5f, 6.0f), glm::vec3(0.0f, 0.5f, -1.0f), kW, kH);
+    useReversedZ(&view);
+    const Image raster = draw(direct, graph, scene, view, false);
+    fx::TiledPath::setCpuListLimit(0);
+    fx::TileSort::setOrderLimit(0);
+    const Image tiled = draw(direct, graph, scene, view, true);
+    EXPECT_TRUE(graph.ran(fx::TiledPath::kPass));
+    EXPECT_GT(maxAbsDiff(raster, tiled), 0) << "the tiled frame rounds differently: the fallback below shows";
+    EXPECT_LE(maxAbsDiff(raster, tiled), kTolerance);
+
+    fx::TileSort::setBlockLimit(256);  // 64 pairs: the ring's puffs take hundreds
+    const uint64_t deferred = fx::TiledPath::deferredBinViews(), fallbacks = fx::TiledPath::deferredFallbacks();
+    const uint64_t ordered = fx::TileSort::gpuOrderedViews();
+    const Image fellBack = draw(direct, graph, scene, view, true);
+    EXPECT_TRUE(graph.ran(fx::TiledPath::kPass)) << "declared tiled: the bins were not known yet";
+    EXPECT_FALSE(graph.ran(fx::FullResPath::kPass));
+    EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred);
+    EXPECT_EQ(fx::TiledPath::deferredFallbacks(), fallbacks + 1);
+    EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered) << "the order begun on the GPU was dropped";
+    EXPECT_EQ(maxAbsDiff(raster, fellBack), 0);
+
+    fx::TiledPath::setDeferBins(false);
+    const Image early = draw(direct, graph, scene, view, true);
+    EXPECT_FALSE(graph.ran(fx::TiledPath::kPass));
+    EXPECT_TRUE(graph.ran(fx::FullResPath::kPass));
+    EXPECT_EQ(fx::TiledPath::deferredFallbacks(), fallbacks + 1);
+    EXPECT_EQ(maxAbsDiff(raster, early), 0);
+
+    // Back under the context's limit the next view is tiled again, its order its own.
+    fx::TileSort::setBlockLimit(0);
+    fx::TiledPath::resetDeferBins();
+    const Image again = draw(direct, graph, scene, view, true);
+    EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 1);
+    EXPECT_EQ(maxAbsDiff(tiled, again), 0);
 }
 
 // Tiling::Auto, the default: rasterised on a software rasterizer (this context: llvmpipe), as
