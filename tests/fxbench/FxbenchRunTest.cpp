@@ -241,13 +241,16 @@ TEST(Fxbench, LitTiledModesDrawTheLitPictureInTheTiledPass) {
 // picture is the same byte for byte, and the sort's dispatches show in the pass's shader
 // invocations. A value that is not a number is reported and ignored. The same for
 // CUBEFX_TILED_GPU_ORDER (TileSort::orderLimit): 0, with the GPU's lists, has the GPU sort the
-// particles back to front too.
+// particles back to front too; such a view is binned in its pass unless CUBEFX_TILED_DEFER_BINS=0
+// (TiledPath::deferBins): the same picture and dispatches either way, and a value other than 0 or 1
+// is reported and ignored.
 TEST(Fxbench, TiledListsFromTheCpuOrTheGpuSortGiveTheSamePicture) {
     std::map<std::string, std::string> png;
     std::map<std::string, double> shaded;
     const std::string gpuOrder = "CUBEFX_TILED_CPU_LISTS=0 CUBEFX_TILED_GPU_ORDER=0 ", badOrder = "CUBEFX_TILED_GPU_ORDER=1e5 ";
+    const std::string binnedEarly = gpuOrder + "CUBEFX_TILED_DEFER_BINS=0 ", badDefer = gpuOrder + "CUBEFX_TILED_DEFER_BINS=yes ";
     for (const std::string& env : {std::string(), std::string("CUBEFX_TILED_CPU_LISTS=0 "),
-                                  std::string("CUBEFX_TILED_CPU_LISTS=12x "), gpuOrder, badOrder}) {
+                                  std::string("CUBEFX_TILED_CPU_LISTS=12x "), gpuOrder, badOrder, binnedEarly, badDefer}) {
         SCOPED_TRACE(env);
         const std::string json = tempPath("lists.json"), images = tempPath("lists_images");
         const RunOutput r = cubetest::runCommand(env + std::string(CUBE_TEST_BIN_DIR) +
@@ -259,6 +262,8 @@ TEST(Fxbench, TiledListsFromTheCpuOrTheGpuSortGiveTheSamePicture) {
         const bool bad = env.find("12x") != std::string::npos;
         EXPECT_EQ(r.output.find("CUBEFX_TILED_CPU_LISTS is not a whole number") != std::string::npos, bad) << r.output;
         EXPECT_EQ(r.output.find("CUBEFX_TILED_GPU_ORDER is not a whole number") != std::string::npos, env == badOrder)
+            << r.output;
+        EXPECT_EQ(r.output.find("CUBEFX_TILED_DEFER_BINS is neither 0 nor 1") != std::string::npos, env == badDefer)
             << r.output;
         const YAML::Node run = YAML::Load(readFile(json));
         const YAML::Node m = modeNode(run, "soft+tiled");
@@ -280,6 +285,10 @@ TEST(Fxbench, TiledListsFromTheCpuOrTheGpuSortGiveTheSamePicture) {
     EXPECT_GT(shaded[gpuOrder], shaded[sorted] + 8 * 1024.0) << "the order's passes did not run";
     EXPECT_EQ(png[byDefault], png[badOrder]);
     EXPECT_EQ(shaded[badOrder], shaded[byDefault]);
+    for (const std::string& env : {binnedEarly, badDefer}) {
+        EXPECT_EQ(png[gpuOrder], png[env]) << env;
+        EXPECT_EQ(shaded[gpuOrder], shaded[env]) << env;
+    }
 }
 
 // Per particle pass, the samples it wrote: their sum is particle_fragments; quarter res's
