@@ -40,7 +40,7 @@ struct Frames {
         EXPECT_TRUE(ok) << err;
         for (int i = 0; ok && i < 90; ++i) game.Update(1.0f / 60.0f);
     }
-    ImageRGBA8 render(int alone, fx::Technique t, bool quarter, bool zbuffer, bool linear) {
+    ImageRGBA8 render(int alone, fx::Technique t, bool quarter, bool zbuffer, bool linear, bool tiled = false) {
         game.options().splitAlone = alone;
         game.options().pluginZBuffer = zbuffer;
         game.options().pluginLinearDepth = linear;
@@ -48,6 +48,7 @@ struct Frames {
         ro.techniqueOverride = t;
         ro.quarterRes = quarter;
         ro.quarterResAlways = quarter;
+        ro.tiling = tiled ? fx::Tiling::On : fx::Tiling::Auto;
         game.specialFX().plugin()->setRenderOptions(ro);
         game.specialFX().plugin()->prepareGl(nullptr);
         game.captureNextFrame();
@@ -83,11 +84,16 @@ TEST(SplitScreen, EachHalfEqualsItsCameraDrawnAloneThroughEveryDepthPath) {
         const char* name;
         fx::Technique technique;
         bool quarter;
+        bool tiled;
     };
-    const Mode modes[] = {{"soft", fx::Technique::Soft, false},
-                          {"spherical", fx::Technique::Spherical, false},
-                          {"soft quarter", fx::Technique::Soft, true},
-                          {"mega", fx::Technique::Mega, false}};
+    // Tiled: on llvmpipe the CPU lists and orders a view; the ctest SplitScreen.TiledOnTheGpusWay
+    // runs this again with the GPU's lists and order, each view then binned in its own pass
+    // (TiledPath::deferBins) on the graph's paths.
+    const Mode modes[] = {{"soft", fx::Technique::Soft, false, false},
+                          {"spherical", fx::Technique::Spherical, false, false},
+                          {"soft quarter", fx::Technique::Soft, true, false},
+                          {"mega", fx::Technique::Mega, false, false},
+                          {"soft tiled", fx::Technique::Soft, false, true}};
     struct Path {
         const char* name;
         bool zbuffer, linear;
@@ -98,10 +104,10 @@ TEST(SplitScreen, EachHalfEqualsItsCameraDrawnAloneThroughEveryDepthPath) {
     for (const Mode& m : modes) {
         for (const Path& p : paths) {
             SCOPED_TRACE(std::string(m.name) + ", " + p.name);
-            const ImageRGBA8 both = split.render(0, m.technique, m.quarter, p.zbuffer, p.linear);
+            const ImageRGBA8 both = split.render(0, m.technique, m.quarter, p.zbuffer, p.linear, m.tiled);
             ASSERT_EQ(both.width, kW);
             for (int half = 0; half < 2; ++half) {
-                const ImageRGBA8 ref = alone.render(half + 1, m.technique, m.quarter, p.zbuffer, p.linear);
+                const ImageRGBA8 ref = alone.render(half + 1, m.technique, m.quarter, p.zbuffer, p.linear, m.tiled);
                 ASSERT_EQ(ref.width, kW / 2);
                 int differing = 0;
                 const int diff = halfDiff(both, half * (kW / 2), ref, &differing);
