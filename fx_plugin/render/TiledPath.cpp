@@ -232,10 +232,11 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
     ComputeBindingsScope bindings;
     ensureObjects(view.width, view.height);
 
-    // The instances, and below the bins' lists and tiles. They go to storage buffers of the pass's own, kept (not orphaned) and written through a
-    // mapping on the host's threads. Through the raster path's vertex buffer, orphaned each frame
-    // and read here by compute, the H200's driver gave the CPU a store it writes slowly: 2.25 ms
-    // for the 8 MB of 256,000 particles, where the sort's 4 MB take 0.25 ms.
+    // The instances (and below, the bins' lists and tiles) go to storage buffers of the pass's
+    // own, kept (not orphaned) and written through a mapping on the host's threads. Through the
+    // raster path's vertex buffer, orphaned each frame and read here by compute, the H200's driver
+    // gave the CPU a store it writes slowly: 2.25 ms for the 8 MB of 256,000 particles, where the
+    // sort's 4 MB take 0.25 ms.
     const int count = v.list.particleCount();
     if (deferred) glFlush();  // the scene's passes to the GPU while the CPU copies (and bins, below)
     fillStorage(&instanceBuffer_, &instanceCapacity_, v.list.instances.data(), size_t(count) * sizeof(ParticleInstance),
