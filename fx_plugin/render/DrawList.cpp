@@ -87,6 +87,11 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
         // `to` (and its depth to `depthTo`) one after another. Returns how many are visible.
         auto cullPiece = [&](uint32_t piece, uint8_t* keepOut, const uint8_t* keepIn, ParticleInstance* to,
                              float* depthTo) {
+            // The streams as locals: the instances' stores (__m128, which may alias anything)
+            // would otherwise have the pointers read from the closure again every four particles.
+            const float *const xs = x, *const ys = y, *const zs = z, *const sizes = size, *const lives = life,
+                        *const rotations = rotation, *const fades = fade;
+            const uint8_t* const frames = frame;
             size_t k = 0, i = pieces.begin(piece);
             const size_t e = pieces.end(piece);
 #if FX_SSE2
@@ -104,11 +109,11 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
                     if (keepIn) {
                         keep = keepIn[i];
                     } else {
-                        keep = _mm_movemask_ps(_mm_and_ps(_mm_cmpgt_ps(_mm_loadu_ps(size + i), zero),
-                                                          _mm_cmpgt_ps(_mm_loadu_ps(fade + i), zero)));
+                        keep = _mm_movemask_ps(_mm_and_ps(_mm_cmpgt_ps(_mm_loadu_ps(sizes + i), zero),
+                                                          _mm_cmpgt_ps(_mm_loadu_ps(fades + i), zero)));
                         if (keep) {
-                            keep &= frustum.intersectsSpheres4(_mm_loadu_ps(x + i), _mm_loadu_ps(y + i), _mm_loadu_ps(z + i),
-                                                               _mm_mul_ps(_mm_loadu_ps(size + i), halfDiagonal));
+                            keep &= frustum.intersectsSpheres4(_mm_loadu_ps(xs + i), _mm_loadu_ps(ys + i), _mm_loadu_ps(zs + i),
+                                                               _mm_mul_ps(_mm_loadu_ps(sizes + i), halfDiagonal));
                         }
                         if (keepOut) keepOut[i] = uint8_t(keep);
                     }
@@ -117,16 +122,16 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
                         k += kBits[keep];
                         continue;
                     }
-                    const __m128 x4 = _mm_loadu_ps(x + i), y4 = _mm_loadu_ps(y + i), z4 = _mm_loadu_ps(z + i);
+                    const __m128 x4 = _mm_loadu_ps(xs + i), y4 = _mm_loadu_ps(ys + i), z4 = _mm_loadu_ps(zs + i);
                     uint32_t frames4;
-                    std::memcpy(&frames4, frame + i, 4);
+                    std::memcpy(&frames4, frames + i, 4);
                     const __m128i bytes = _mm_cvtsi32_si128(int(frames4));
                     const __m128i frameInts =
                         _mm_and_si128(_mm_unpacklo_epi16(_mm_unpacklo_epi8(bytes, _mm_setzero_si128()), _mm_setzero_si128()),
                                       _mm_set1_epi32(3));
-                    __m128 a0 = x4, a1 = y4, a2 = z4, a3 = _mm_loadu_ps(size + i);
-                    __m128 b0 = _mm_loadu_ps(life + i), b1 = _mm_loadu_ps(rotation + i),
-                           b2 = _mm_min_ps(_mm_loadu_ps(fade + i), one), b3 = _mm_cvtepi32_ps(frameInts);
+                    __m128 a0 = x4, a1 = y4, a2 = z4, a3 = _mm_loadu_ps(sizes + i);
+                    __m128 b0 = _mm_loadu_ps(lives + i), b1 = _mm_loadu_ps(rotations + i),
+                           b2 = _mm_min_ps(_mm_loadu_ps(fades + i), one), b3 = _mm_cvtepi32_ps(frameInts);
                     _MM_TRANSPOSE4_PS(a0, a1, a2, a3);  // x, y, z, size of each
                     _MM_TRANSPOSE4_PS(b0, b1, b2, b3);  // life, rotation, fade, frame of each
                     const __m128 firstHalf[4] = {a0, a1, a2, a3}, secondHalf[4] = {b0, b1, b2, b3};
@@ -153,25 +158,25 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
                 if (keepIn) {
                     visible = keepIn[i] != 0;
                 } else {
-                    visible = size[i] > 0.0f && fade[i] > 0.0f &&  // also drops NaN
-                              frustum.intersectsSphere(glm::vec3(x[i], y[i], z[i]), size[i] * kHalfDiagonal) &&
-                              (!sliced || view.slice.contains(viewDistance(x[i], y[i], z[i])));
+                    visible = sizes[i] > 0.0f && fades[i] > 0.0f &&  // also drops NaN
+                              frustum.intersectsSphere(glm::vec3(xs[i], ys[i], zs[i]), sizes[i] * kHalfDiagonal) &&
+                              (!sliced || view.slice.contains(viewDistance(xs[i], ys[i], zs[i])));
                     if (keepOut) keepOut[i] = uint8_t(visible);
                 }
                 if (!visible) continue;
                 if (to) {
                     ParticleInstance& p = to[k];
-                    p.x = x[i];
-                    p.y = y[i];
-                    p.z = z[i];
-                    p.size = size[i];
-                    p.life = life[i];
-                    p.rotation = rotation[i];
-                    p.fade = fade[i] < 1.0f ? fade[i] : 1.0f;
-                    p.frame = float(frame[i] & 3u);
+                    p.x = xs[i];
+                    p.y = ys[i];
+                    p.z = zs[i];
+                    p.size = sizes[i];
+                    p.life = lives[i];
+                    p.rotation = rotations[i];
+                    p.fade = fades[i] < 1.0f ? fades[i] : 1.0f;
+                    p.frame = float(frames[i] & 3u);
                     if (depthTo) {
-                        depthTo[k] = (x[i] - view.eye.x) * forward.x + (y[i] - view.eye.y) * forward.y +
-                                     (z[i] - view.eye.z) * forward.z;
+                        depthTo[k] = (xs[i] - view.eye.x) * forward.x + (ys[i] - view.eye.y) * forward.y +
+                                     (zs[i] - view.eye.z) * forward.z;
                     }
                 }
                 ++k;
