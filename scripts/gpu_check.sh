@@ -36,10 +36,11 @@ timeout 150 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 --sweep 
     --frames 6 --error-frames 0 --modes hard,soft,soft+tiled,spherical,spherical+tiled \
     --json "$out/parts/tiled_sweep.json" > "$out/parts/tiled_sweep.txt" 2>&1
 echo "tiled sweep rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
-# Deferred bins (session 32, TiledPath::deferBins): a view the GPU orders binned in its pass, after the
-# scene, the particles' order and their records went to the GPU, against binned while declared
-# (CUBEFX_TILED_DEFER_BINS=0), in alternating processes. Compare the frames: the pass's GPU time now
-# also holds whatever the GPU idles while the CPU bins, so "outside" alone would flatter it.
+# Deferred bins (sessions 32-33, TiledPath::deferBins): a view the GPU orders binned in its second
+# pass, after the scene, the particles' order and their records went to the GPU in its first
+# (particles_tiled_setup), against binned while declared (CUBEFX_TILED_DEFER_BINS=0), in alternating
+# processes. Compare the frames first; since session 33 the time the GPU idles while the CPU bins
+# falls between the two passes (outside), so "outside" is comparable too.
 s=$(date +%s)
 for round in 1 2; do
   for d in 0 1; do

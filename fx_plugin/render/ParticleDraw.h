@@ -34,6 +34,7 @@ struct ParticleView {
     ScreenRect rect;           ///< quarter res: where the particles can be
     ScreenTiles tiles;         ///< quarter res: the same, as screen tiles
     TileBins bins;             ///< the tiled path: the particles per tile (TiledPath.h)
+    bool tiledSetUp = false;   ///< the tiled path: its first pass of this frame ran (TiledPath::kSetupPass)
     Target opacity;            ///< the opacity map of this frame (invalid: unshadowed)
     glm::mat4 worldToShadow{1.0f};
     bool lit() const { return settings.light.on; }

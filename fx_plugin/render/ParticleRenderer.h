@@ -16,7 +16,9 @@
 //                (RGBA16F), both half x half, created through FrameBuilder::createTarget
 //                (see QuarterResPath.h).
 //   tiled:       "particles_tiled" reads sceneDepth, writes sceneColor (RenderOptions::tiled:
-//                TiledPath.h says where it draws; elsewhere the view is drawn at full res).
+//                TiledPath.h says where it draws; elsewhere the view is drawn at full res);
+//                a view the GPU orders, binned in its passes, "particles_tiled_setup" before it
+//                (the same reads and write: TiledPath::deferBins).
 //
 // GL: loaded by prepare() (Plugin::prepareGl), or else lazily by the first declarePasses() that
 // finds a visible particle (the host has a context current by then; a scene without smoke never

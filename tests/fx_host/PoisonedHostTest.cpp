@@ -9,6 +9,9 @@
 #include <glad/gl.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
 #include <set>
 
 #include "FxTestHost.h"
@@ -38,6 +41,12 @@ const RenderMode kModes[] = {
     {"spherical quarter lit", fx::Technique::Spherical, true, true},
     {"from reactions (stateless sparks too)", fx::Technique::FromReaction},
 };
+
+std::function<void()> allPoisons() {
+    return [] {
+        for (const HostPoison& p : hostPoisons()) p.apply();
+    };
+}
 
 class PoisonedHostTest : public PluginHostTest {
 protected:
@@ -97,16 +106,43 @@ protected:
         return graph.readColor();
     }
 
+    /// Mode `m` set (and prepared, as a host does after changing options: else the first frame
+    /// builds the tiled programs while declaring and orders its particles on the CPU), then its
+    /// frame for the clean host into *clean: false (and a failure) where it changed host state
+    /// or drew nothing, which would leave the poisons proving nothing.
+    bool cleanFrame(const RenderMode& m, Image* clean) {
+        setMode(m);
+        EXPECT_TRUE(plugin->prepareGl(nullptr)) << m.label;
+        const Image bare = render(false);
+        *clean = frame(nullptr);
+        EXPECT_TRUE(problems_.empty()) << m.label << " (clean host):\n" << problems_;
+        EXPECT_GT(maxAbsDiff(*clean, bare), 0) << m.label << ": nothing drawn, the test would prove nothing";
+        return problems_.empty() && maxAbsDiff(*clean, bare) > 0;
+    }
+    /// A frame under each poison, then under all at once: each must equal `clean` and leave the
+    /// host's state as it was. The names of the poisons that reached the image (none, or a
+    /// failure), and the all-at-once frame's max difference in *allAtOnce.
+    std::vector<std::string> poisonedFrames(const RenderMode& m, const Image& clean, int* allAtOnce) {
+        std::vector<std::string> changed;
+        for (const HostPoison& p : hostPoisons()) {
+            const Image img = frame(&p.apply);
+            const int diff = maxAbsDiff(img, clean);
+            EXPECT_TRUE(problems_.empty()) << m.label << ", poisoned " << p.name << ":\n" << problems_;
+            EXPECT_EQ(diff, 0) << m.label << ": poisoned " << p.name << " reached the image";
+            if (diff != 0) changed.push_back(p.name);
+        }
+        const std::function<void()> all = allPoisons();
+        const Image img = frame(&all);
+        *allAtOnce = maxAbsDiff(img, clean);
+        EXPECT_TRUE(problems_.empty()) << m.label << ", all poisons at once:\n" << problems_;
+        EXPECT_EQ(*allAtOnce, 0) << m.label << ": all poisons at once reached the image";
+        return changed;
+    }
+
     std::string problems_;
     HostStateReadback snapshot_;
     int errorsBefore_ = 0;
 };
-
-std::function<void()> allPoisons() {
-    return [] {
-        for (const HostPoison& p : hostPoisons()) p.apply();
-    };
-}
 
 TEST_F(PoisonedHostTest, EveryTechniqueIgnoresEachPoisonedState) {
     const auto& poisons = hostPoisons();
@@ -122,36 +158,42 @@ TEST_F(PoisonedHostTest, EveryTechniqueIgnoresEachPoisonedState) {
     EXPECT_EQ(rows.compatibility > 0, osMesaCompatibilityProfile());
     std::set<std::string> changedImage;
     for (const RenderMode& m : kModes) {
-        setMode(m);
-        const Image bare = render(false);
-        const Image clean = frame(nullptr);
-        ASSERT_TRUE(problems_.empty()) << m.label << " (clean host):\n" << problems_;
-        ASSERT_GT(maxAbsDiff(clean, bare), 0) << m.label << ": nothing drawn, the test would prove nothing";
+        Image clean;
+        ASSERT_TRUE(cleanFrame(m, &clean));
         if (m.tiled) {
             EXPECT_TRUE(graph.ran(fx::TiledPath::kPass)) << m.label << ": the tiled pass did not run";
         }
-        int changed = 0;
-        for (const HostPoison& p : poisons) {
-            const Image img = frame(&p.apply);
-            const int diff = maxAbsDiff(img, clean);
-            EXPECT_TRUE(problems_.empty()) << m.label << ", poisoned " << p.name << ":\n" << problems_;
-            EXPECT_EQ(diff, 0) << m.label << ": poisoned " << p.name << " reached the image";
-            if (diff != 0) {
-                ++changed;
-                changedImage.insert(p.name);
-            }
-        }
-        const std::function<void()> all = allPoisons();
-        const Image img = frame(&all);
-        EXPECT_TRUE(problems_.empty()) << m.label << ", all poisons at once:\n" << problems_;
-        EXPECT_EQ(maxAbsDiff(img, clean), 0) << m.label << ": all poisons at once reached the image";
-        std::printf("[ measured ] %-40s %d of %zu poisons changed the image; all at once: max diff %d\n", m.label,
-                    changed, poisons.size(), maxAbsDiff(img, clean));
+        int allAtOnce = 0;
+        const std::vector<std::string> changed = poisonedFrames(m, clean, &allAtOnce);
+        changedImage.insert(changed.begin(), changed.end());
+        std::printf("[ measured ] %-40s %zu of %zu poisons changed the image; all at once: max diff %d\n", m.label,
+                    changed.size(), poisons.size(), allAtOnce);
     }
     std::string names;
     for (const std::string& n : changedImage) names += "  " + n + "\n";
     std::printf("[ measured ] poisons that changed some technique's image: %zu\n%s", changedImage.size(),
                 names.c_str());
+}
+
+// The tiled path under each poison. Run again by ctest (PoisonedHostTest.TiledOnTheGpusWay, core
+// and compatibility contexts) with the lists and the particles' order on the GPU, as a GPU runs a
+// large view (the plugin library reads that from the environment): its bins then wait for its
+// passes (TiledPath::deferBins), two of them. The same frame as the clean host's, and the host's
+// state back after each pass.
+TEST_F(PoisonedHostTest, TiledViewsIgnoreEachPoisonedStateInOneOrTwoPasses) {
+    auto set = [](const char* name) {
+        const char* v = std::getenv(name);
+        return v && std::string(v) == "0";
+    };
+    const bool gpusWay = set("CUBEFX_TILED_CPU_LISTS") && set("CUBEFX_TILED_GPU_ORDER");
+    for (const RenderMode& m : {modes::kSoftTiled, modes::kSoftLitTiled, modes::kSphericalTiled}) {
+        Image clean;
+        ASSERT_TRUE(cleanFrame(m, &clean));
+        ASSERT_TRUE(graph.ran(fx::TiledPath::kPass)) << m.label;
+        ASSERT_EQ(graph.ran(fx::TiledPath::kSetupPass), gpusWay) << m.label << ": binned in its passes only the GPU's way";
+        int allAtOnce = 0;
+        poisonedFrames(m, clean, &allAtOnce);
+    }
 }
 
 // The immediate path (Plugin::renderView, API 2) under each poison: the host draws its scene into

@@ -253,6 +253,7 @@ void TestFrameGraph::execute() {
     for (size_t k = 0; k < passes_.size(); ++k) {
         if (!alive[k]) continue;
         Pass& p = passes_[k];
+        if (p.plugin && skipPluginPass && skipPluginPass(p.name)) continue;
         const bool check = p.plugin && checkPluginState;
         if (p.plugin && beforePluginPass) beforePluginPass();
         GlStateSnapshot before;

@@ -187,12 +187,27 @@ TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
         EXPECT_EQ(fx::TiledPath::gpuSortedViews(), gpu + 2);
         EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered + 1) << "with the order limit at 0 the GPU sorts them";
         EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 1) << "a view the GPU orders is binned in its pass";
+        // In two passes, the setup first (the instances, the order, the records), then the bins.
+        const std::vector<std::string>& ran = graph.executed();
+        const auto setupAt = std::find(ran.begin(), ran.end(), fx::TiledPath::kSetupPass);
+        ASSERT_NE(setupAt, ran.end());
+        EXPECT_EQ(std::find(ran.begin(), ran.end(), fx::TiledPath::kPass), setupAt + 1);
+        // A host graph that leaves the setup pass out (culled it, or ran another view's between):
+        // the second pass does its work itself, the same frame.
+        graph.skipPluginPass = [](const std::string& name) { return name == fx::TiledPath::kSetupPass; };
+        const Image setUpInTheSecond = draw(direct, graph, scene, view, true);
+        graph.skipPluginPass = nullptr;
+        EXPECT_FALSE(graph.ran(fx::TiledPath::kSetupPass));
+        EXPECT_TRUE(graph.ran(fx::TiledPath::kPass));
+        EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 2);
+        EXPECT_EQ(maxAbsDiff(gpuOrdered, setUpInTheSecond), 0);
         // The same view binned while it is declared: the same frame.
         fx::TiledPath::setDeferBins(false);
         const Image binnedEarly = draw(direct, graph, scene, view, true);
         fx::TiledPath::resetDeferBins();
-        EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 1);
-        EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered + 2);
+        EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 2);
+        EXPECT_FALSE(graph.ran(fx::TiledPath::kSetupPass)) << "one pass for a view binned while declared";
+        EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered + 3);
         fx::TiledPath::resetCpuListLimit();
         fx::TileSort::resetOrderLimit();
         EXPECT_EQ(maxAbsDiff(byDefault, sorted), 0);
