@@ -142,7 +142,8 @@ public:
     /// host's 16 threads, docs/results.md session 29). Two passes, not one, so that the time the
     /// GPU still waits for the bins falls between passes, where a host's GPU timer counts it
     /// outside them (fxbench's "outside"), not inside the second: kPass's own timer query is
-    /// flushed only with its dispatches, after the bins. The picture is the same bit for bit
+    /// flushed with its dispatches, after the bins (unless the driver flushes it on its own
+    /// earlier). The picture is the same bit for bit
     /// (TiledPathTest). Where the bins then fail (a particle with no bound, lists past a storage
     /// block), the second pass draws the view through declare()'s fallback; where the first did
     /// not run just before it for this view, the second does its work too.
