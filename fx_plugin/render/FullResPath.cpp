@@ -12,7 +12,8 @@ namespace fx {
 FullResPath::FullResPath(ParticleDraw& draw, SizeMismatchReport sizeMismatch)
     : draw_(draw), sizeMismatch_(std::move(sizeMismatch)) {}
 
-void FullResPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& record) {
+void FullResPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& record,
+                          std::function<bool()> drawHere) {
     const ViewInfo& view = record->view;
     const Target color = frame.sceneColor();
     const Target opacity = record->opacity;
@@ -28,7 +29,8 @@ void FullResPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleVie
     }
     narrowDepthRead(frame, bound, view.width, view.height);
     addPassReading(frame, kPass, {depth, opacity}, color,
-                   [this, record, depth, decode, color, opacity](PassContext& ctx) {
+                   [this, record, depth, decode, color, opacity, drawHere = std::move(drawHere)](PassContext& ctx) {
+                       if (drawHere && !drawHere()) return;
                        if (!targetsFitView(ctx, record->view, color, depth, sizeMismatch_)) return;
                        execute(ctx, *record, color, depth, decode, opacity);
                    });

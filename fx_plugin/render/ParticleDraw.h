@@ -5,6 +5,7 @@
 // trimmed polygons or full quads. It
 // owns what those draws read but the programs (Renderers' ProgramCache): the atlas and its
 // trimmed shapes, the colour ramps, the instance stream and the scene depth's sampler.
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,6 +34,9 @@ struct ParticleView {
     bool reversedZ = false;    ///< view.depth is ReversedZ
     ScreenRect rect;           ///< quarter res: where the particles can be
     ScreenTiles tiles;         ///< quarter res: the same, as screen tiles
+    /// Whether quarter res draws the view. Pending: chosen by the first of its passes to run
+    /// (QuarterResPath::settle), where a host's frame graph draws a view quarter res may draw.
+    enum class Quarter : uint8_t { No, Yes, Pending } quarter = Quarter::No;
     TileBins bins;             ///< the tiled path: the particles per tile (TiledPath.h)
     bool tiledSetUp = false;   ///< the tiled path: its first pass of this frame ran (TiledPath::kSetupPass)
     Target opacity;            ///< the opacity map of this frame (invalid: unshadowed)

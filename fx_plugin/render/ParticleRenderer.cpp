@@ -227,17 +227,26 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
         TiledPath::canDraw(*record)) {
         if (!toFullRes()) return 0;
     }
-    if (quarterRes) {
-        // Where the smoke can be (the quarter-res passes' fixed costs stay inside it), and whether
-        // its overdraw pays for them; if not, this view is drawn at full res.
-        const BillboardReach reach = draw_.billboardReach(*record, true);
-        record->rect = screenRect(view, record->list.instances.data(), drawn, &record->tiles, footprintOf(record->list),
-                                   config_.jobs, &reach);
+    // Where the smoke can be (the quarter-res passes' fixed costs stay inside it), and whether its
+    // overdraw pays for them; if not, this view is drawn at full res. In a host's frame graph the
+    // choice waits for the view's first pass (QuarterResPath::settle): its passes and the full-res
+    // one are declared, and the bound is worked out while the GPU runs the host's scene instead of
+    // before the host has sent it (on a GPU at 1,000 particles, 65 us of a 1.4 ms frame: docs/
+    // results.md, session 29). Not where full res would draw a list of its own (toFullRes), nor in
+    // renderView's frame, whose depth copy is cut to the rect before any pass runs.
+    const bool waits = quarterRes && !options.quarterResAlways && !dynamic_cast<ImmediateFrame*>(&frame) &&
+                       (draw_.programs().usableTechniques(false) & mine) == usable;
+    if (quarterRes && !waits) {
+        quarter_.bound(*record);
         if (!options.quarterResAlways && !quarterResPays(record->rect, record->tiles) && !toFullRes()) return 0;
     }
+    record->quarter = waits ? ParticleView::Quarter::Pending
+                            : quarterRes ? ParticleView::Quarter::Yes : ParticleView::Quarter::No;
+    const bool pending = record->quarter == ParticleView::Quarter::Pending;
     // Tiled (TiledPath.h): a full-resolution view it can draw, in a context with compute shaders.
     const bool tiled = !quarterRes && TiledPath::wanted(options) && TiledPath::canDraw(*record);
     ensureDrawPrograms(*record, quarterRes, tiled);
+    if (pending) ensureDrawPrograms(*record, false, false);
 
     draw_.ramp().setRows(batches, batchCount);
 
@@ -265,6 +274,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     builder_.order(view, &record->list, config_.jobs);  // nothing where the order is in place
     if (quarterRes) {
         quarter_.declare(frame, record);
+        if (pending) fullRes_.declare(frame, record, [this, record] { return !quarter_.settle(*record); });
     } else {
         fullRes_.declare(frame, record);
     }

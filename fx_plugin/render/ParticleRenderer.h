@@ -13,8 +13,11 @@
 //                             writes sceneColor;
 //   quarter res: "particles_depth_downsample", "particles_quarter", "particles_composite"
 //                with targets "particles_half_depth" (RG32F: min, max) and "particles_half_color"
-//                (RGBA16F), both half x half, created through FrameBuilder::createTarget
-//                (see QuarterResPath.h).
+//                (RGBA8; RGBA16F with spheres), both half x half, created through FrameBuilder::createTarget
+//                (see QuarterResPath.h); where the choice waits for the passes
+//                (ParticleView::quarter Pending: a host's frame graph, quarterResAlways off),
+//                "particles" after them, and the first to run chooses (QuarterResPath::settle):
+//                the passes not chosen return without a GL call.
 //   tiled:       "particles_tiled" reads sceneDepth, writes sceneColor (RenderOptions::tiled:
 //                TiledPath.h says where it draws; elsewhere the view is drawn at full res);
 //                a view the GPU orders, binned in its passes, "particles_tiled_setup" before it

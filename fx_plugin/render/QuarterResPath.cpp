@@ -63,6 +63,7 @@ void QuarterResPath::declare(FrameBuilder& frame, const std::shared_ptr<Particle
     const Target halfColor = frame.createTarget(kColorTarget, colorTargetDesc(halfZ, spheres));
     narrowDepthRead(frame, record->rect, view.width, view.height);
     frame.addPass(kDownsamplePass, {depth}, {halfDepth}, [this, record, depth, decode, halfDepth](PassContext& ctx) {
+        if (!settle(*record)) return;
         // Only what this pass declared may be touched: the scene depth.
         if (!targetsFitView(ctx, record->view, depth, Target{}, sizeMismatch_)) return;
         GlStateGuard guard;
@@ -71,6 +72,7 @@ void QuarterResPath::declare(FrameBuilder& frame, const std::shared_ptr<Particle
     });
     addPassReading(frame, kQuarterPass, {halfDepth, opacity}, halfColor,
                    [this, record, halfDepth, halfColor, halfZ, opacity](PassContext& ctx) {
+                       if (!settle(*record)) return;
                        GlStateGuard guard(record->view.depth);  // z-tested against the half z written here
                        DebugGroup group(kQuarterPass);
                        DrawInputs in;
@@ -83,10 +85,26 @@ void QuarterResPath::declare(FrameBuilder& frame, const std::shared_ptr<Particle
     narrowDepthRead(frame, record->rect, view.width, view.height);
     addPassReading(frame, kCompositePass, {halfColor, halfDepth, depth}, color,
                    [this, record, color, halfColor, halfDepth, depth, decode](PassContext& ctx) {
+                       if (!settle(*record)) return;
                        GlStateGuard guard;
                        DebugGroup group(kCompositePass);
                        composite(ctx, *record, color, halfColor, halfDepth, depth, decode);
                    });
+}
+
+bool QuarterResPath::settle(ParticleView& v) {
+    if (v.quarter == ParticleView::Quarter::Pending) {
+        glFlush();
+        bound(v);
+        v.quarter = quarterResPays(v.rect, v.tiles) ? ParticleView::Quarter::Yes : ParticleView::Quarter::No;
+    }
+    return v.quarter == ParticleView::Quarter::Yes;
+}
+
+void QuarterResPath::bound(ParticleView& v) const {
+    const BillboardReach reach = draw_.billboardReach(v, true);
+    v.rect = screenRect(v.view, v.list.instances.data(), v.list.particleCount(), &v.tiles, footprintOf(v.list),
+                        draw_.jobs(), &reach);
 }
 
 void QuarterResPath::downsampleDepth(PassContext& ctx, const ParticleView& v, Target sceneDepth,

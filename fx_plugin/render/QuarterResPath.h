@@ -5,6 +5,9 @@
 //   particles_depth_downsample  reads sceneDepth                   writes particles_half_depth
 //   particles_quarter           reads particles_half_depth         writes particles_half_color
 //   particles_composite         reads half colour + half depth + sceneDepth, writes sceneColor
+// Whether quarter res draws the view at all (quarterResPays) may wait for these passes: then the
+// first of them to run, or of the full-res pass the caller declares after them, chooses (settle)
+// while the GPU runs what the host queued before, and the passes not chosen do nothing.
 //
 // Downsampled depth: MINIMUM (nearest) of each 2x2 block. With min, thin foreground geometry
 // (poles, barrier tops, a car's roof line) survives in the low-res depth, so the half-res pass
@@ -85,8 +88,15 @@ public:
     bool ok() const { return programs_ && programs_->ok(); }
 
     /// Declares the view's quarter-res passes inside the view's rect and tiles (ParticleView::rect,
-    /// ::tiles: the caller's screenRect).
+    /// ::tiles: the caller's screenRect). Where the choice is pending (ParticleView::quarter), each
+    /// pass settles it first and does nothing where full res was chosen.
     void declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& view);
+    /// True where quarter res draws `view`. A pending choice is made here, once: what the host
+    /// queued goes to the GPU (glFlush), so it runs while the CPU works out the view's rect and
+    /// tiles (screenRect, on the host's threads) and weighs them (quarterResPays).
+    bool settle(ParticleView& view);
+    /// Works out `view`'s rect and tiles (ParticleView::rect, ::tiles) for its quarter-res passes.
+    void bound(ParticleView& view) const;
 
 private:
     // Pass bodies; each runs inside the caller's GlStateGuard and sets the state it needs. All

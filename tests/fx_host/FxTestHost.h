@@ -168,6 +168,10 @@ public:
     const std::vector<std::string>& declared() const { return declared_; }
     const std::vector<std::string>& executed() const { return executed_; }
     bool ran(const std::string& pass) const;
+    /// The plugin's passes that bound a target to draw into (PassContext::bindForDraw): a pass
+    /// that ran and did nothing is not among them.
+    const std::vector<std::string>& drew() const { return drew_; }
+    bool drewIn(const std::string& pass) const;
     int targetsCreated() const { return targetsCreated_; }      ///< createTarget calls
     int targetsAllocated() const { return targetsAllocated_; }  ///< created targets backed by GL
     std::vector<std::string> allocatedTargetNames() const;
@@ -234,7 +238,7 @@ private:
     std::vector<TargetSlot> pool_;              ///< GL targets kept across frames
     std::map<uint32_t, size_t> frameTargets_;   ///< created id -> pool slot (this frame)
     std::vector<std::pair<std::string, fx::TargetDesc>> created_;  ///< id - 3 -> request
-    std::vector<std::string> declared_, executed_, stateMismatches_;
+    std::vector<std::string> declared_, executed_, drew_, stateMismatches_;
     int targetsCreated_ = 0, targetsAllocated_ = 0;
     bool sceneDepthUsed_ = false;
     bool pluginPasses_ = false;

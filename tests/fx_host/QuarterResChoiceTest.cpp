@@ -47,15 +47,18 @@ TEST_F(QuarterResChoiceTest, LightSmokeIsDrawnAtFullResUnlessForced) {
 
     setOptions(true, false);
     const Image chosen = render();
-    EXPECT_TRUE(ran(graph.executed(), "particles")) << puffs << " puffs: full res is cheaper";
-    EXPECT_FALSE(ran(graph.executed(), "particles_quarter"));
+    // The choice waits for the passes: all four are declared, and only the full-res one draws.
+    for (const char* pass : {"particles_depth_downsample", "particles_quarter", "particles_composite", "particles"}) {
+        EXPECT_TRUE(graph.ran(pass)) << pass;
+    }
+    EXPECT_EQ(graph.drew(), std::vector<std::string>{"particles"}) << puffs << " puffs: full res is cheaper";
     EXPECT_EQ(chosen.rgba, full.rgba) << "drawn at full res: the full-res frame, byte for byte";
 
     setOptions(true, true);
     const Image forced = render();
-    EXPECT_TRUE(ran(graph.executed(), "particles_quarter"));
-    EXPECT_TRUE(ran(graph.executed(), "particles_composite"));
-    EXPECT_FALSE(ran(graph.executed(), "particles"));
+    EXPECT_TRUE(graph.drewIn("particles_quarter"));
+    EXPECT_TRUE(graph.drewIn("particles_composite"));
+    EXPECT_FALSE(ran(graph.executed(), "particles")) << "forced: no choice to wait for, no full-res pass";
     EXPECT_GT(maxAbsDiff(forced, full), 0) << "forced: the half-res picture, not the full-res one";
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
@@ -66,9 +69,40 @@ TEST_F(QuarterResChoiceTest, HeavySmokeTakesQuarterRes) {
     setOptions(true, false);
     render();
     ASSERT_GT(plugin->stats().particlesDrawn, 0);
-    EXPECT_TRUE(ran(graph.executed(), "particles_quarter")) << plugin->stats().particlesDrawn << " puffs drawn";
-    EXPECT_TRUE(ran(graph.executed(), "particles_composite"));
-    EXPECT_FALSE(ran(graph.executed(), "particles"));
+    EXPECT_EQ(graph.drew(),
+              (std::vector<std::string>{"particles_depth_downsample", "particles_quarter", "particles_composite"}))
+        << plugin->stats().particlesDrawn << " puffs drawn";
+    EXPECT_TRUE(graph.ran("particles")) << "declared, in case full res had won; it drew nothing";
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+// The choice is made by whichever of the view's passes runs first (QuarterResPath::settle), so a
+// host graph that leaves some out still gets the frame the choice gives: light smoke drawn at full
+// res with every quarter-res pass left out, heavy smoke at quarter res with the full-res pass left
+// out, each byte for byte the frame of a graph that ran them all.
+TEST_F(QuarterResChoiceTest, TheChoiceIsMadeByTheFirstOfTheViewsPassesToRun) {
+    createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
+    auto isQuarterPass = [](const std::string& name) { return name != "particles"; };
+    simulate(1.0f, 6);
+    setOptions(true, false);
+    const Image light = render();
+    ASSERT_EQ(graph.drew(), std::vector<std::string>{"particles"});
+    graph.skipPluginPass = isQuarterPass;
+    const Image lightSkipped = render();
+    graph.skipPluginPass = nullptr;
+    EXPECT_FALSE(graph.ran("particles_depth_downsample") || graph.ran("particles_quarter") || graph.ran("particles_composite"));
+    EXPECT_EQ(graph.drew(), std::vector<std::string>{"particles"});
+    EXPECT_EQ(lightSkipped.rgba, light.rgba);
+
+    simulate(1.0f, 234);
+    const Image heavy = render();
+    ASSERT_TRUE(graph.drewIn("particles_quarter"));
+    graph.skipPluginPass = [](const std::string& name) { return name == "particles"; };
+    const Image heavySkipped = render();
+    graph.skipPluginPass = nullptr;
+    EXPECT_TRUE(graph.drewIn("particles_composite"));
+    EXPECT_EQ(heavySkipped.rgba, heavy.rgba);
+    EXPECT_GT(maxAbsDiff(heavy, light), 0) << "the two frames differ: the smoke grew";
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
@@ -88,13 +122,13 @@ TEST_F(QuarterResChoiceTest, WhereTheTiledPathDrawsTheViewItTakesItOverQuarterRe
     const Image chosen = render();
     EXPECT_TRUE(ran(graph.executed(), "particles_tiled"));
     for (const char* pass : {"particles_quarter", "particles_composite", "particles_depth_downsample", "particles"}) {
-        EXPECT_FALSE(ran(graph.executed(), pass)) << pass;
+        EXPECT_FALSE(graph.ran(pass)) << pass << ": the tiled path's view has no choice to wait for";
     }
     EXPECT_EQ(chosen.rgba, tiled.rgba) << "the tiled frame, byte for byte";
 
     setOptions(true, true, fx::Tiling::On);
     const Image forced = render();
-    EXPECT_TRUE(ran(graph.executed(), "particles_quarter"));
+    EXPECT_TRUE(graph.drewIn("particles_quarter"));
     EXPECT_FALSE(ran(graph.executed(), "particles_tiled"));
     EXPECT_GT(maxAbsDiff(forced, tiled), 0) << "forced: the half-res picture";
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));

@@ -80,7 +80,9 @@ GLuint makeFramebuffer(GLuint colour, GLuint depth, GLuint depthTexture = 0) {
 class TestFrameGraph::Context final : public fx::PassContext {
 public:
     explicit Context(TestFrameGraph& g) : g_(g) {}
+    const std::string* pass = nullptr;  ///< the pass running (TestFrameGraph::drew)
     void bindForDraw(fx::Target t) override {
+        if (pass && (g_.drew_.empty() || g_.drew_.back() != *pass)) g_.drew_.push_back(*pass);
         if (t.id == kSceneColor) {
             glBindFramebuffer(GL_FRAMEBUFFER, g_.colorFbo_);
             glViewport(0, 0, g_.width_, g_.height_);
@@ -151,6 +153,7 @@ void TestFrameGraph::beginFrame() {
     created_.clear();
     declared_.clear();
     executed_.clear();
+    drew_.clear();
     stateMismatches_.clear();
     for (TargetSlot& s : pool_) s.inUse = false;
     targetsCreated_ = targetsAllocated_ = 0;
@@ -180,6 +183,10 @@ void TestFrameGraph::addPass(const char* name, std::initializer_list<fx::Target>
 
 bool TestFrameGraph::ran(const std::string& pass) const {
     return std::find(executed_.begin(), executed_.end(), pass) != executed_.end();
+}
+
+bool TestFrameGraph::drewIn(const std::string& pass) const {
+    return std::find(drew_.begin(), drew_.end(), pass) != drew_.end();
 }
 
 std::vector<std::string> TestFrameGraph::allocatedTargetNames() const {
@@ -258,7 +265,9 @@ void TestFrameGraph::execute() {
         if (p.plugin && beforePluginPass) beforePluginPass();
         GlStateSnapshot before;
         if (check) before = captureGlState();
+        ctx.pass = p.plugin ? &p.name : nullptr;
         p.execute(ctx);
+        ctx.pass = nullptr;
         if (p.plugin && afterPluginPass) afterPluginPass(p.name);
         drainGlErrors(p.name.c_str());
         if (check) {

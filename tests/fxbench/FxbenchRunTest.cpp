@@ -502,8 +502,8 @@ TEST(Fxbench, ParticleSweepYamlSplitsLargeCountsOverReactions) {
 // renders ran.
 TEST(Fxbench, ModeSwitchesBuildNoProgramWhileDeclaringAndPassTimesStayWithTheirMode) {
     const std::string json = tempPath("passes.json");
-    const RunOutput r = runFxbench("--modes hard,soft+quarter,soft --size 48x48 --frames 2 --rounds 2 "
-                                   "--warmup 1 --error-frames 0 --json " + json);
+    const RunOutput r = runFxbench("--modes hard,soft+quarter,soft+quarter-always,soft --size 48x48 --frames 2 "
+                                   "--rounds 2 --warmup 1 --error-frames 0 --json " + json);
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_EQ(r.output.find("built while declaring a frame"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("mix modes"), std::string::npos) << r.output;
@@ -517,16 +517,21 @@ TEST(Fxbench, ModeSwitchesBuildNoProgramWhileDeclaringAndPassTimesStayWithTheirM
     auto has = [](const std::vector<std::string>& names, const std::string& pass) {
         return std::find(names.begin(), names.end(), pass) != names.end();
     };
-    const std::vector<std::string> hard = passes("hard"), quarter = passes("soft+quarter"), soft = passes("soft");
+    const std::vector<std::string> hard = passes("hard"), quarter = passes("soft+quarter"),
+                                   always = passes("soft+quarter-always"), soft = passes("soft");
     for (const char* pass : {"chase.particles_quarter", "chase.particles_composite", "chase.particles_depth_downsample"}) {
         SCOPED_TRACE(pass);
         EXPECT_TRUE(has(quarter, pass));
+        EXPECT_TRUE(has(always, pass));
         EXPECT_FALSE(has(hard, pass));
         EXPECT_FALSE(has(soft, pass));
     }
     EXPECT_TRUE(has(hard, "chase.particles"));
     EXPECT_TRUE(has(soft, "chase.particles"));
-    EXPECT_FALSE(has(quarter, "chase.particles"));
+    // soft+quarter chooses per view when its passes run, so it declares the full-res pass too;
+    // forced quarter res has no choice to make.
+    EXPECT_TRUE(has(quarter, "chase.particles"));
+    EXPECT_FALSE(has(always, "chase.particles"));
 }
 
 // --threads N reaches the game: the report header and the JSON give the job system's real count.

@@ -66,7 +66,10 @@ struct RenderOptions {
     /// less than full res (the smoke overlaps itself enough to pay for the composite), else that
     /// view is drawn at full res (since API 2.1; before, every view at quarter res). A view the
     /// tiled path draws (`tiling`) is drawn there instead: it costs less than quarter res in every
-    /// scene measured (since 2026-11-28).
+    /// scene measured (since 2026-11-28). In a host's frame graph such a view declares the three
+    /// quarter-res passes and the full-res "particles" pass; the first of them to run makes the
+    /// choice, after the host's scene went to the GPU, and the passes not chosen draw nothing
+    /// (since 2026-11-28; renderView chooses before its passes, as before).
     bool quarterRes = false;
     bool bilinearUpsample = false; ///< quarter-res composite with plain bilinear (for comparison only)
     /// With quarterRes: every view at quarter res, also where full res is cheaper (the 2.0
