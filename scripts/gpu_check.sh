@@ -10,7 +10,8 @@
 # the drive through both depth paths) and parts.tgz (shader_parts.sh's runs and their log, a
 # particle sweep of the tiled modes: parts/tiled_sweep.json, and the tiled path's list limit in
 # three settings: parts/lists_*.json; lit smoke rasterised and tiled: parts/lit_*.json; the tiled
-# path's bins deferred into its pass or not: parts/defer_*.json; where
+# path's bins deferred into its pass or not: parts/defer_*.json; quarter res's choice in its pass or
+# while declared: parts/choice_*.json; where
 # bench_draw was packed too, its bins, cull and bound on the host's threads: parts/bench_draw.json).
 # Back here: tar xzf parts.tgz -C /tmp && scripts/shader_parts.sh --table /tmp/parts
 # (With bench_draw: ../shared/gpu/pack.sh build fxbench cube_game bench_sim bench_draw.)
@@ -48,6 +49,19 @@ for round in 1 2; do
         --sweep particles=64000,256000 --frames 8 --error-frames 0 --modes hard,soft+tiled \
         --json "$out/parts/defer_${d}_${round}.json" > "$out/parts/defer_${d}_${round}.txt" 2>&1
     echo "defer bins $d round $round rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+  done
+done
+# Quarter res's choice in the view's first pass (session 34, QuarterResPath::choiceInPass), after the
+# scene went to the GPU, against chosen while declared (CUBEFX_QUARTER_CHOICE_IN_PASS=0), in
+# alternating processes: #36's soft+quarter / soft at 1,000 particles (1.058 in session 29, the
+# bound's 65 us of CPU before any GPU work) and a point where quarter res pays.
+s=$(date +%s)
+for round in 1 2; do
+  for c in 0 1; do
+    CUBEFX_QUARTER_CHOICE_IN_PASS=$c timeout 60 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 \
+        --sweep particles=1000,64000 --frames 20 --error-frames 0 --modes hard,soft,soft+quarter \
+        --json "$out/parts/choice_${c}_${round}.json" > "$out/parts/choice_${c}_${round}.txt" 2>&1
+    echo "quarter choice in pass $c round $round rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
   done
 done
 # Where the tiled path's lists stop being the CPU's (TiledPath::kCpuListEntries, 0 by default since

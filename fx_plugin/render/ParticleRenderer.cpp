@@ -85,6 +85,7 @@ bool ParticleRenderer::ensureLoaded() {
     if (const char* problem = TiledPath::cpuListLimitProblem()) log(LogLevel::Warning, problem);
     if (const char* problem = TileSort::orderLimitProblem()) log(LogLevel::Warning, problem);
     if (const char* problem = TiledPath::deferBinsProblem()) log(LogLevel::Warning, problem);
+    if (const char* problem = QuarterResPath::choiceInPassProblem()) log(LogLevel::Warning, problem);
     if (!config_.shaderDir.empty()) shaderStamp_ = shaderStamp(config_.shaderDir);
     state_ = State::Ready;
     return true;
@@ -234,7 +235,8 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     // before the host has sent it (on a GPU at 1,000 particles, 65 us of a 1.4 ms frame: docs/
     // results.md, session 29). Not where full res would draw a list of its own (toFullRes), nor in
     // renderView's frame, whose depth copy is cut to the rect before any pass runs.
-    const bool waits = quarterRes && !options.quarterResAlways && !dynamic_cast<ImmediateFrame*>(&frame) &&
+    const bool waits = quarterRes && !options.quarterResAlways && QuarterResPath::choiceInPass() &&
+                       !dynamic_cast<ImmediateFrame*>(&frame) &&
                        (draw_.programs().usableTechniques(false) & mine) == usable;
     if (quarterRes && !waits) {
         quarter_.bound(*record);

@@ -1,5 +1,8 @@
 #include "QuarterResPath.h"
 
+#include <atomic>
+#include <cstdlib>
+#include <cstring>
 #include <utility>
 
 #include "render/PrivateGl.h"
@@ -27,6 +30,20 @@ void endDepthOnly(GLenum func) {
     glDepthMask(GL_FALSE);
     glDepthFunc(func);
 }
+
+// CUBEFX_QUARTER_CHOICE_IN_PASS, read once: 0 chooses every view while it is declared, 1 (or
+// unset) leaves the choice to the passes where it can; anything else is reported and ignored.
+const char* gChoiceInPassProblem = nullptr;
+int choiceInPassFromEnvironment() {
+    const char* v = std::getenv("CUBEFX_QUARTER_CHOICE_IN_PASS");
+    if (!v || !*v) return -1;
+    if (std::strcmp(v, "0") == 0 || std::strcmp(v, "1") == 0) return v[0] - '0';
+    gChoiceInPassProblem = "fx: CUBEFX_QUARTER_CHOICE_IN_PASS is neither 0 nor 1; quarter res keeps its default "
+                           "(a frame graph's view chooses in its first pass)";
+    return -1;
+}
+const int gChoiceInPassFromEnvironment = choiceInPassFromEnvironment();
+std::atomic<int> gChoiceInPass{gChoiceInPassFromEnvironment};  // -1: the default (on)
 
 TargetDesc targetDesc(float scale, TargetFormat format, bool linearFilter, bool depth) {
     TargetDesc d;
@@ -91,6 +108,13 @@ void QuarterResPath::declare(FrameBuilder& frame, const std::shared_ptr<Particle
                        composite(ctx, *record, color, halfColor, halfDepth, depth, decode);
                    });
 }
+
+bool QuarterResPath::choiceInPass() { return gChoiceInPass.load(std::memory_order_relaxed) != 0; }
+void QuarterResPath::setChoiceInPass(bool on) { gChoiceInPass.store(on ? 1 : 0, std::memory_order_relaxed); }
+void QuarterResPath::resetChoiceInPass() {
+    gChoiceInPass.store(gChoiceInPassFromEnvironment, std::memory_order_relaxed);
+}
+const char* QuarterResPath::choiceInPassProblem() { return gChoiceInPassProblem; }
 
 bool QuarterResPath::settle(ParticleView& v) {
     if (v.quarter == ParticleView::Quarter::Pending) {

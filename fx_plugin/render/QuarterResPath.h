@@ -98,6 +98,14 @@ public:
     /// Works out `view`'s rect and tiles (ParticleView::rect, ::tiles) for its quarter-res passes.
     void bound(ParticleView& view) const;
 
+    /// Whether a host's frame graph may leave the choice to the passes (settle). On unless
+    /// CUBEFX_QUARTER_CHOICE_IN_PASS=0 or setChoiceInPass(false): then every view chooses while
+    /// declared, as before 2026-11-28, for A/B runs on a GPU.
+    static bool choiceInPass();
+    static void setChoiceInPass(bool on);
+    static void resetChoiceInPass();           ///< back to the environment's, or on
+    static const char* choiceInPassProblem();  ///< what was wrong with CUBEFX_QUARTER_CHOICE_IN_PASS, or null
+
 private:
     // Pass bodies; each runs inside the caller's GlStateGuard and sets the state it needs. All
     // work inside the view's rect only (scissor, with a 2-texel border at half resolution): the

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "FxTestHost.h"
+#include "render/QuarterResPath.h"
 
 namespace fxtest {
 namespace quarter_res_choice_test {  // named: the fx_host tests build as unity batches
@@ -103,6 +104,31 @@ TEST_F(QuarterResChoiceTest, TheChoiceIsMadeByTheFirstOfTheViewsPassesToRun) {
     EXPECT_TRUE(graph.drewIn("particles_composite"));
     EXPECT_EQ(heavySkipped.rgba, heavy.rgba);
     EXPECT_GT(maxAbsDiff(heavy, light), 0) << "the two frames differ: the smoke grew";
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+// QuarterResPath::setChoiceInPass(false) (CUBEFX_QUARTER_CHOICE_IN_PASS=0) chooses while the view
+// is declared, as before 2026-11-28: one path's passes only, the same frames byte for byte.
+TEST_F(QuarterResChoiceTest, ChosenWhileDeclaredWhereThePassesMayNotChoose) {
+    createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");
+    struct Reset {
+        ~Reset() { fx::QuarterResPath::resetChoiceInPass(); }
+    } reset;
+    for (int steps : {6, 234}) {
+        SCOPED_TRACE(steps);
+        simulate(1.0f, steps);
+        setOptions(true, false);
+        fx::QuarterResPath::setChoiceInPass(true);
+        const Image inPass = render();
+        const bool quarter = graph.drewIn("particles_quarter");
+        EXPECT_EQ(quarter, steps > 6) << "light smoke at full res, heavy at quarter res";
+        fx::QuarterResPath::setChoiceInPass(false);
+        const Image declared = render();
+        EXPECT_EQ(graph.ran("particles"), !quarter);
+        EXPECT_EQ(graph.ran("particles_quarter"), quarter);
+        EXPECT_EQ(graph.ran("particles_depth_downsample"), quarter);
+        EXPECT_EQ(declared.rgba, inPass.rgba);
+    }
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 

@@ -534,6 +534,40 @@ TEST(Fxbench, ModeSwitchesBuildNoProgramWhileDeclaringAndPassTimesStayWithTheirM
     EXPECT_FALSE(has(always, "chase.particles"));
 }
 
+// soft+quarter leaves the choice to the view's passes by default (QuarterResPath::choiceInPass):
+// CUBEFX_QUARTER_CHOICE_IN_PASS=0 chooses while declaring, as before, for A/B runs on a GPU. The
+// same picture byte for byte; the passes the frame ran show which way it chose; a value other than
+// 0 or 1 is reported and ignored.
+TEST(Fxbench, QuarterResChoiceInThePassOrWhileDeclaredGivesTheSamePicture) {
+    std::map<std::string, std::string> png;
+    const std::string declared = "CUBEFX_QUARTER_CHOICE_IN_PASS=0 ", bad = "CUBEFX_QUARTER_CHOICE_IN_PASS=maybe ";
+    for (const std::string& env : {std::string(), declared, bad}) {
+        SCOPED_TRACE(env);
+        const std::string json = tempPath("choice.json"), images = tempPath("choice_images");
+        const RunOutput r = cubetest::runCommand(env + std::string(CUBE_TEST_BIN_DIR) +
+                                                     "/fxbench --scenario standard --modes soft+quarter --size 160x96 "
+                                                     "--frames 2 --rounds 1 --warmup 1 --error-frames 1 --json " +
+                                                     json + " --images " + images + " 2>&1",
+                                                 -1);
+        ASSERT_EQ(r.status, 0) << r.output;
+        EXPECT_EQ(r.output.find("CUBEFX_QUARTER_CHOICE_IN_PASS is neither 0 nor 1") != std::string::npos, env == bad)
+            << r.output;
+        const YAML::Node passes = modeNode(YAML::Load(readFile(json)), "soft+quarter")["passes_ms"];
+        const bool full = bool(passes["chase.particles"]), quarter = bool(passes["chase.particles_quarter"]);
+        if (env == declared) {
+            EXPECT_NE(full, quarter) << "chosen while declared: one path's passes only";
+        } else {
+            EXPECT_TRUE(full && quarter) << "chosen in the passes: both paths' passes declared";
+        }
+        png[env] = readFile(images + "/standard_soft-quarter.png");
+        EXPECT_GT(png[env].size(), 1000u);
+        std::filesystem::remove(json);
+        std::filesystem::remove_all(images);
+    }
+    EXPECT_EQ(png[declared], png[std::string()]) << "the same picture either way";
+    EXPECT_EQ(png[bad], png[std::string()]);
+}
+
 // --threads N reaches the game: the report header and the JSON give the job system's real count.
 TEST(Fxbench, ThreadsFlagSizesTheJobSystemAndTheReportSaysSo) {
     const std::string json = tempPath("threads.json");
