@@ -240,11 +240,9 @@ typedef struct fxRenderOptions {
      * fields above only). How hard and soft billboards are rasterised (fx::ParticleShape):
      * FX_SHAPE_TRIMMED (0) a tight polygon per atlas frame, FX_SHAPE_QUAD the full quad. */
     int particleShape;
-    /* API 2.1: with quarterRes, 0 = per view, quarter res only where the smoke's overdraw pays for
-     * the composite (else that view at full resolution); else every view at quarter res (the 2.0
-     * behaviour, for comparisons). A 2.0 host's size leaves it as it is (0 unless set). With 0, a
-     * frame builder's view declares the quarter-res passes and the full-res one, and the first of
-     * them to run chooses; those not chosen draw nothing (since 2026-11-28). */
+    /* API 2.1: with quarterRes, 0 = per view, quarter res only where the smoke's overdraw pays
+     * (a frame builder's view declares both paths' passes and the first to run chooses, since
+     * 2026-11-28); else all views at it, as 2.0. A 2.0 host's size leaves it (0 unless set). */
     fxBool quarterResAlways;
     /* API 2.3 (a 2.0-2.2 size leaves it): 1 = hard, soft and spherical particles (lit too) shaded
      * per 16 px tile by a compute shader where the context has one; 0 = as tiling says. API 2.4 (older
