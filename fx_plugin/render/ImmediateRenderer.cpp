@@ -6,6 +6,7 @@
 #include "PrivateGl.h"
 #include "Renderers.h"
 #include "ShaderLoader.h"
+#include "sim/ReactionRuntime.h"
 
 #include <string>
 
@@ -214,6 +215,13 @@ ErrorCode ImmediateRenderer::render(Renderers& renderers, const std::vector<Reac
     setup.copyZBuffer = [this, w, h, depthFormat, samples, drawFramebuffer, vx, vy](const DepthRegion& region) {
         return depth_.copyFramebufferDepth(uint32_t(drawFramebuffer), vx, vy, w, h, depthFormat, samples, region);
     };
+    // What the host drew goes to the GPU before the CPU culls, sorts, bounds and bins the particles
+    // (a driver may hold it until its next flush): the GPU draws the host's scene meanwhile, as a
+    // frame graph's scene runs under the work its passes do (QuarterResPath::settle, TiledPath).
+    // Not without a live particle: a scene without smoke costs the host no flush.
+    bool anyParticle = false;
+    for (const ReactionRuntime& r : runtimes) anyParticle = anyParticle || r.stateless() || r.pool().alive() > 0;
+    if (anyParticle) glFlush();
     pool_.beginFrame();
     ImmediateFrame frame(pool_, std::move(setup));
     int declaredDrawn = 0;

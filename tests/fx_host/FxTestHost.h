@@ -44,6 +44,9 @@ bool resizeDefaultFramebuffer(int width, int height);
 
 /// Context + glad + the debug callback, once per process. Tests call it in SetUp.
 bool ensureGl(std::string* error);
+/// glFlush calls the plugin made since the process started, or -1 where its GL table was not
+/// filled by these tests' loaders (ensureGl, TestHostAdapter), which count them.
+int pluginFlushes();
 /// GL errors seen since the last reset: glGetError codes drained by drainGlErrors() plus
 /// KHR_debug messages of HIGH or MEDIUM severity.
 int glErrorCount();

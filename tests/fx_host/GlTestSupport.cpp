@@ -41,13 +41,32 @@ void GLAD_API_PTR onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum s
     g_log += '\n';
 }
 
+
+// The plugin's glFlush, counted (pluginFlushes): its GL table gets this wrapper in its place.
+int g_pluginFlushes = 0;
+bool g_countingFlushes = false;
+void(GLAD_API_PTR* g_realFlush)() = nullptr;
+void GLAD_API_PTR countingFlush() {
+    ++g_pluginFlushes;
+    g_realFlush();
+}
+
+// The entry points the plugin's private GL table is filled from (ensureGl, TestHostAdapter).
 void* procAddressAsPointer(const char* name) {
-    return reinterpret_cast<void*>(osMesaProcAddress()(name));
+    void* p = reinterpret_cast<void*>(osMesaProcAddress()(name));
+    if (p && std::string(name) == "glFlush") {
+        g_realFlush = reinterpret_cast<void(GLAD_API_PTR*)()>(p);
+        g_countingFlushes = true;
+        return reinterpret_cast<void*>(&countingFlush);
+    }
+    return p;
 }
 
 }  // namespace
 
 void* TestHostAdapter::getProcAddress(const char* name) { return procAddressAsPointer(name); }
+
+int pluginFlushes() { return g_countingFlushes ? g_pluginFlushes : -1; }
 
 bool ensureGl(std::string* error) {
     static bool loaded = false;

@@ -333,6 +333,24 @@ TEST_F(ImmediateRendererTest, FrameWithoutVisibleParticlesAllocatesAndCopiesNoth
     EXPECT_EQ(immediate->depthLinearizations(), 0);
 }
 
+// With particles alive, renderView sends what the host drew to the GPU (glFlush) before it culls,
+// sorts and bounds them, so the GPU draws the host's scene meanwhile: one flush a call. Without a
+// live particle it does not flush.
+TEST_F(ImmediateRendererTest, LiveSmokeSendsTheHostsSceneToTheGpuFirst) {
+    setMode(kModes[1]);
+    ASSERT_EQ(drawImmediate(graph.colorFramebuffer(), immediateView(Source::BoundFramebuffer)), fx::ErrorCode::None);
+    const int before = pluginFlushes();
+    if (before < 0) GTEST_SKIP() << "the plugin's GL table was loaded through another host in this process";
+    ASSERT_EQ(drawImmediate(graph.colorFramebuffer(), immediateView(Source::BoundFramebuffer)), fx::ErrorCode::None);
+    ASSERT_FALSE(immediate->lastPasses().empty());
+    EXPECT_EQ(pluginFlushes() - before, 1);
+    createPlugin(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml");  // nothing emitted yet
+    const int idle = pluginFlushes();
+    ASSERT_EQ(drawImmediate(graph.colorFramebuffer(), immediateView(Source::BoundFramebuffer)), fx::ErrorCode::None);
+    EXPECT_TRUE(immediate->lastPasses().empty());
+    EXPECT_EQ(pluginFlushes(), idle);
+}
+
 TEST_F(ImmediateRendererTest, DepthIsCopiedOnlyWhenAPassReadsIt) {
     setMode(kModes[0]);  // hard: the z-buffer test alone, no pass reads the scene depth
     ASSERT_EQ(drawImmediate(graph.colorFramebuffer(), immediateView(Source::BoundFramebuffer)), fx::ErrorCode::None);
