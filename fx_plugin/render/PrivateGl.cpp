@@ -32,7 +32,7 @@ const Needed kCore[] = {
     FX_NEEDED(glDeleteVertexArrays), FX_NEEDED(glDepthFunc), FX_NEEDED(glDepthMask), FX_NEEDED(glDepthRange),
     FX_NEEDED(glDetachShader), FX_NEEDED(glDisable), FX_NEEDED(glDisablei), FX_NEEDED(glDrawArrays),
     FX_NEEDED(glDrawArraysInstanced), FX_NEEDED(glDrawBuffer), FX_NEEDED(glDrawBuffers), FX_NEEDED(glEnable),
-    FX_NEEDED(glEnablei), FX_NEEDED(glEnableVertexAttribArray), FX_NEEDED(glFramebufferRenderbuffer),
+    FX_NEEDED(glEnablei), FX_NEEDED(glEnableVertexAttribArray), FX_NEEDED(glFlush), FX_NEEDED(glFramebufferRenderbuffer),
     FX_NEEDED(glFramebufferTexture2D), FX_NEEDED(glGenBuffers), FX_NEEDED(glGenerateMipmap),
     FX_NEEDED(glGenFramebuffers), FX_NEEDED(glGenRenderbuffers), FX_NEEDED(glGenSamplers), FX_NEEDED(glGenTextures),
     FX_NEEDED(glGenVertexArrays), FX_NEEDED(glGetBooleani_v), FX_NEEDED(glGetBooleanv), FX_NEEDED(glGetDoublev),
