@@ -10,6 +10,11 @@
 //     (SCAN: each block's first place for each digit); the block writes each pair to its digit's
 //     place plus the pairs of that digit before it in the block (SCATTER). Stable, so after the
 //     last pass each tile's pairs are in particle order: front to back, the CPU's lists bit for bit.
+//   FX_TILE_BOUND, FX_TILE_LIST: the bins themselves (TileSort::binOnGpu, for a view whose particles
+//     the GPU orders): each particle's tile range as binParticles (TileBins.cpp) works it out, the
+//     same operations in the same order (FootprintMath.h), and its corners marked in a difference
+//     grid (BOUND, one invocation per particle); then one group adds the grid up into each tile's
+//     count and lists the tiles that hold particles, row-major, each with its first entry (LIST).
 //   FX_TILE_ORDER_KEY, FX_TILE_ORDER_BATCH, FX_TILE_ORDER_PREFIX, FX_TILE_ORDER_ADD: the particles
 //     of a list built without its back-to-front sort (TileSort::DepthOrder) put in front-to-back
 //     order before the emit: a key per particle (its depth's bits), the radix passes above over
@@ -26,12 +31,16 @@ uniform int uGroupsX;  // groups per row of the dispatch (a row holds at most 65
 
 uint groupIndex() { return gl_WorkGroupID.y * uint(uGroupsX) + gl_WorkGroupID.x; }
 
-#if defined(FX_TILE_ORDER_KEY) || defined(FX_TILE_ORDER_BATCH) || defined(FX_TILE_ORDER_PREFIX)
+#if defined(FX_TILE_ORDER_KEY) || defined(FX_TILE_ORDER_BATCH) || defined(FX_TILE_ORDER_PREFIX) || defined(FX_TILE_BOUND)
 // The words of an unsorted list's particles (TileBins::particles with Fill::Ranges, binned as the
 // list lies, front to back): two a particle, its tile range. Its entry (instance | batch << 26)
 // comes from its place k (TileBins::orderStart, batchLast): in the j-th batch from the back, the
-// batch's last instance first.
+// batch's last instance first. FX_TILE_BOUND writes them (the GPU's bins), the others read them.
+#ifdef FX_TILE_BOUND
+layout(std430, binding = 0) writeonly buffer Particles { uvec2 uRanges[]; };
+#else
 layout(std430, binding = 0) readonly buffer Particles { uvec2 uRanges[]; };
+#endif
 uniform int uBatchCount;
 uniform int uOrderStart[65];
 uniform int uBatchLast[64];
@@ -285,5 +294,226 @@ void main() {
     uint s = groupIndex() * kGroup + gl_LocalInvocationID.x;
     if (s >= uint(uParticleCount)) return;
     uOrdered[s].z += uSums[s >> 10u];
+}
+#elif defined(FX_TILE_BOUND)
+layout(local_size_x = 256) in;
+// InstanceStream's ParticleInstance: (x, y, z, size), (life, rotation, fade, frame).
+layout(std430, binding = 3) readonly buffer Instances { vec4 uInstances[]; };
+// [0]: 1 where a particle has no bound (not finite: the view is drawn another way), [1] [2] [3]:
+// LIST's; from kGridStart on the (uTiles.x + 1) x (uTiles.y + 1) difference grid, zero on entry.
+layout(std430, binding = 4) buffer Grid { int uGrid[]; };
+const int kGridStart = 4;
+uniform int uParticleCount;
+uniform uint uSphereBatches;    // a bit per batch drawn as spheres (Footprint::Box of half-size 0.5)
+uniform mat4 uView;
+uniform mat4 uProj;
+uniform float uNearPlane;
+uniform ivec2 uViewSize;
+uniform ivec2 uTiles;
+uniform int uPerspective;       // plainPerspective(uProj)
+uniform float uReachLodScale;   // BillboardReach::lodScale; 0: no table (the quads' reach)
+uniform int uReachBuckets;
+uniform float uReach[40];       // BillboardReach::table: (TrimmedShapes::kFrames + 1) rows of 8
+
+// BillboardReach::at.
+float reachAt(float frame, float texelsPerPixel) {
+    precise float f = frame + 0.5;
+    int row = f >= 0.0 && f < 4.0 ? int(f) : 4;
+    uint bits = floatBitsToUint(texelsPerPixel);
+    int e = int((bits >> 23u) & 0xffu) - 127;
+    int bucket = e + 1 + ((bits & 0x7fffffu) > 0x3504f3u ? 1 : 0);
+    return uReach[row * 8 + min(max(bucket, 0), uReachBuckets - 1)];
+}
+
+bool finite(float v) { return !isinf(v) && !isnan(v); }
+
+// NDC to pixels (footprint::toPixel).
+float toPixel(float ndc, int size) {
+    precise float p = (ndc * 0.5 + 0.5) * float(size);
+    return p;
+}
+
+// TileRangeOf::tileOf.
+int tileOf(float pixel, int tiles) {
+    precise float t = pixel * (1.0 / 16.0);
+    return int(min(max(t, 0.0), float(tiles - 1)));
+}
+
+void main() {
+    uint k = groupIndex() * kGroup + gl_LocalInvocationID.x;
+    if (k >= uint(uParticleCount)) return;
+    uint entry = entryOf(k);
+    uint instance = entry & 0x3ffffffu;
+    vec4 p = uInstances[instance * 2u];
+    float frame = uInstances[instance * 2u + 1u].w;
+    bool billboard = ((uSphereBatches >> (entry >> 26u)) & 1u) == 0u;
+    // FootprintMath::centre, then perspective<Flat> or general, then state().
+    precise vec3 c;
+    c.x = uView[0][0] * p.x + uView[1][0] * p.y + uView[2][0] * p.z + uView[3][0];
+    c.y = uView[0][1] * p.x + uView[1][1] * p.y + uView[2][1] * p.z + uView[3][1];
+    c.z = uView[0][2] * p.x + uView[1][2] * p.y + uView[2][2] * p.z + uView[3][2];
+    precise float radius = (billboard ? 0.71 : 0.5) * p.w;
+    precise float depthExtent = billboard ? 0.0 : radius;
+    // 0 bounded, 1 behind, 2 unbounded.
+    int state;
+    if (!(finite(c.x) && finite(c.y) && finite(c.z) && finite(radius))) {
+        state = 2;
+    } else {
+        precise float back = c.z - depthExtent, front = c.z + depthExtent;
+        state = back >= -uNearPlane ? 1 : front >= -uNearPlane ? 2 : 0;
+    }
+    precise float plo[2], phi[2];
+    if (uPerspective != 0) {
+        precise float nearInv = 1.0 / -(c.z + depthExtent);
+        precise float farInv = billboard ? nearInv : 1.0 / -(c.z - depthExtent);
+        for (int a = 0; a < 2; ++a) {
+            precise float lowEdge = uProj[a][a] * (c[a] - radius) + uProj[3][a];
+            precise float highEdge = uProj[a][a] * (c[a] + radius) + uProj[3][a];
+            if (billboard) {
+                plo[a] = lowEdge * nearInv - uProj[2][a];
+                phi[a] = highEdge * nearInv - uProj[2][a];
+            } else {
+                plo[a] = min(lowEdge * nearInv, lowEdge * farInv) - uProj[2][a];
+                phi[a] = max(highEdge * nearInv, highEdge * farInv) - uProj[2][a];
+            }
+        }
+        if (billboard && uReachLodScale > 0.0) {
+            // The trimmed polygon's reach (BillboardReach), about the same centre.
+            precise float depth = max(-c.z, uNearPlane);
+            precise float texels = uReachLodScale * depth / max(p.w, 1e-6);
+            precise float tight = reachAt(frame, texels) * p.w;
+            for (int a = 0; a < 2; ++a) {
+                plo[a] = (uProj[a][a] * (c[a] - tight) + uProj[3][a]) * nearInv - uProj[2][a];
+                phi[a] = (uProj[a][a] * (c[a] + tight) + uProj[3][a]) * nearInv - uProj[2][a];
+            }
+        }
+    } else {
+        plo[0] = plo[1] = 1e30;
+        phi[0] = phi[1] = -1e30;
+        if (state == 0) {
+            int corners = depthExtent > 0.0 ? 8 : 4;
+            for (int corner = 0; corner < corners; ++corner) {
+                precise vec3 q = c + vec3((corner & 1) != 0 ? radius : -radius, (corner & 2) != 0 ? radius : -radius,
+                                          (corner & 4) != 0 ? depthExtent : -depthExtent);
+                // glm's mat4 * vec4: (m0 x + m1 y) + (m2 z + m3 w), w = 1.
+                precise vec4 clip = (uProj[0] * q.x + uProj[1] * q.y) + (uProj[2] * q.z + uProj[3]);
+                for (int a = 0; a < 2; ++a) {
+                    precise float ndc = clip[a] / clip.w;
+                    plo[a] = min(plo[a], ndc);
+                    phi[a] = max(phi[a], ndc);
+                }
+            }
+        }
+    }
+    precise float x0 = toPixel(plo[0], uViewSize.x), x1 = toPixel(phi[0], uViewSize.x);
+    precise float y0 = toPixel(plo[1], uViewSize.y), y1 = toPixel(phi[1], uViewSize.y);
+    // TileRangeOf, grown by a pixel.
+    ivec4 r;
+    if (state == 2) {
+        if (!(finite(p.x) && finite(p.y) && finite(p.z) && finite(p.w))) {
+            uGrid[0] = 1;
+            uRanges[k] = uvec2(1u, 1u);
+            return;
+        }
+        r = ivec4(0, uTiles.x - 1, 0, uTiles.y - 1);  // a sphere across the near plane: every tile
+    } else if (state == 1 || x1 < -1.0 || y1 < -1.0 || x0 > float(uViewSize.x + 1) || y0 > float(uViewSize.y + 1)) {
+        uRanges[k] = uvec2(1u, 1u);  // tx0 1 > tx1 0: none
+        return;
+    } else {
+        r = ivec4(tileOf(x0 - 1.0, uTiles.x), tileOf(x1 + 1.0, uTiles.x), tileOf(y0 - 1.0, uTiles.y),
+                  tileOf(y1 + 1.0, uTiles.y));
+    }
+    uRanges[k] = uvec2(uint(r.x) | (uint(r.y) << 16u), uint(r.z) | (uint(r.w) << 16u));
+    int stride = uTiles.x + 1;
+    atomicAdd(uGrid[kGridStart + r.z * stride + r.x], 1);
+    atomicAdd(uGrid[kGridStart + r.z * stride + r.y + 1], -1);
+    atomicAdd(uGrid[kGridStart + (r.w + 1) * stride + r.x], -1);
+    atomicAdd(uGrid[kGridStart + (r.w + 1) * stride + r.y + 1], 1);
+}
+
+#elif defined(FX_TILE_LIST)
+layout(local_size_x = 1024) in;
+// BOUND's grid, read back by the CPU: [1] the entries (0x7fffffff where they pass 2^31 - 1), [2]
+// the tiles listed, [3] 1 where the entries passed 2^31 - 1, | 2 where a particle had no bound
+// (BOUND's [0], zeroed here with the grid for the next view).
+layout(std430, binding = 4) coherent buffer Grid { int uGrid[]; };
+// The tiles that hold particles, row-major: (tile x, tile y, first entry, entry count).
+layout(std430, binding = 1) writeonly buffer Listed { uvec4 uListed[]; };
+uniform ivec2 uTiles;
+const int kGridStart = 4;
+shared uint sTiles[1024];
+shared uint sEntries[1024];
+
+// Inclusive sums over the group's lanes, saturating at 2^31 (entries past 2^31 - 1 fail the view).
+uint scan(uint value, bool entries) {
+    uint lane = gl_LocalInvocationID.x;
+    if (entries) sEntries[lane] = value; else sTiles[lane] = value;
+    barrier();
+    for (uint offset = 1u; offset < 1024u; offset <<= 1u) {
+        uint before = lane >= offset ? (entries ? sEntries[lane - offset] : sTiles[lane - offset]) : 0u;
+        barrier();
+        if (entries) sEntries[lane] = min(sEntries[lane] + before, 0x80000000u);
+        else sTiles[lane] += before;
+        barrier();
+    }
+    return entries ? sEntries[lane] : sTiles[lane];
+}
+
+void main() {
+    uint lane = gl_LocalInvocationID.x;
+    int tx = uTiles.x, ty = uTiles.y, stride = tx + 1;
+    // 1. Each row summed along, then each column down: each tile's count (binParticles' step 2).
+    for (int y = int(lane); y < ty; y += 1024) {
+        int row = 0;
+        for (int x = 0; x < tx; ++x) {
+            row += uGrid[kGridStart + y * stride + x];
+            uGrid[kGridStart + y * stride + x] = row;
+        }
+    }
+    memoryBarrierBuffer();
+    barrier();
+    for (int x = int(lane); x < tx; x += 1024) {
+        int column = 0;
+        for (int y = 0; y < ty; ++y) {
+            column += uGrid[kGridStart + y * stride + x];
+            uGrid[kGridStart + y * stride + x] = column;
+        }
+    }
+    memoryBarrierBuffer();
+    barrier();
+    // 2. The tiles with entries in row-major order, a stretch a lane: its tiles and entries, the
+    // lanes' sums scanned, then each stretch listed from its first place.
+    uint count = uint(tx * ty);
+    uint stretch = (count + 1023u) / 1024u;
+    uint begin = min(lane * stretch, count), end = min(begin + stretch, count);
+    uint tiles = 0u, entries = 0u;
+    for (uint t = begin; t < end; ++t) {
+        int c = uGrid[kGridStart + int(t / uint(tx)) * stride + int(t % uint(tx))];
+        if (c > 0) {
+            ++tiles;
+            entries = min(entries + uint(c), 0x80000000u);
+        }
+    }
+    uint tileEnd = scan(tiles, false);
+    uint entryEnd = scan(entries, true);
+    uint place = tileEnd - tiles, first = entryEnd - entries;
+    for (uint t = begin; t < end; ++t) {
+        int c = uGrid[kGridStart + int(t / uint(tx)) * stride + int(t % uint(tx))];
+        if (c > 0) {
+            uListed[place++] = uvec4(t % uint(tx), t / uint(tx), first, uint(c));
+            first = min(first + uint(c), 0x80000000u);
+        }
+    }
+    if (lane == 1023u) {
+        uGrid[1] = int(min(entryEnd, 0x7fffffffu));
+        uGrid[2] = int(tileEnd);
+        uGrid[3] = (entryEnd >= 0x80000000u ? 1 : 0) | (uGrid[0] != 0 ? 2 : 0);
+        uGrid[0] = 0;
+    }
+    memoryBarrierBuffer();
+    barrier();
+    // 3. The grid back to zero (every cell BOUND may have marked: one row and one column past).
+    uint cells = uint(stride * (ty + 1));
+    for (uint i = lane; i < cells; i += 1024u) uGrid[kGridStart + int(i)] = 0;
 }
 #endif

@@ -85,6 +85,7 @@ bool ParticleRenderer::ensureLoaded() {
     if (const char* problem = TiledPath::cpuListLimitProblem()) log(LogLevel::Warning, problem);
     if (const char* problem = TileSort::orderLimitProblem()) log(LogLevel::Warning, problem);
     if (const char* problem = TiledPath::deferBinsProblem()) log(LogLevel::Warning, problem);
+    if (const char* problem = TiledPath::gpuBinsProblem()) log(LogLevel::Warning, problem);
     if (const char* problem = QuarterResPath::choiceInPassProblem()) log(LogLevel::Warning, problem);
     if (!config_.shaderDir.empty()) shaderStamp_ = shaderStamp(config_.shaderDir);
     state_ = State::Ready;

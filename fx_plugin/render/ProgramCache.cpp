@@ -50,6 +50,8 @@ constexpr Source kSources[ProgramCache::VariantCount + ProgramCache::ProgramCoun
     {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_ORDER_BATCH 1\n"},
     {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_ORDER_PREFIX 1\n"},
     {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_ORDER_ADD 1\n"},
+    {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_BOUND 1\n"},
+    {"cs_particles_tile_sort.glsl", "", "#define FX_TILE_LIST 1\n"},
 };
 
 const Source& sourceOf(const ProgramCache::Key& key) {
@@ -242,8 +244,11 @@ std::vector<ProgramCache::Key> ProgramCache::tiledKeys() {
     std::vector<Key> keys = {Key::of(TiledSetup), Key::of(TiledShade), Key::of(TiledComposite),
                              Key::of(TiledSetupLit), Key::of(TiledShadeLit)};
     for (const Key& k : tileSortKeys()) keys.push_back(k);
+    for (const Key& k : tileBinKeys()) keys.push_back(k);
     return keys;
 }
+
+std::vector<ProgramCache::Key> ProgramCache::tileBinKeys() { return {Key::of(TileBound), Key::of(TileList)}; }
 
 std::vector<ProgramCache::Key> ProgramCache::tileSortKeys() {
     return {Key::of(TileEmit),     Key::of(TileSortCount),  Key::of(TileSortScan),    Key::of(TileSortScatter),

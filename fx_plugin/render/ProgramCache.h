@@ -106,6 +106,8 @@ public:
         TileOrderBatch,     ///< the same, FX_TILE_ORDER_BATCH
         TileOrderPrefix,    ///< the same, FX_TILE_ORDER_PREFIX
         TileOrderAdd,       ///< the same, FX_TILE_ORDER_ADD
+        TileBound,          ///< the same, FX_TILE_BOUND (the GPU's bins: TileSort::binOnGpu)
+        TileList,           ///< the same, FX_TILE_LIST
         ProgramCount
     };
 
@@ -184,13 +186,15 @@ public:
     /// Adds (once each) the keys a batch of `technique` with `contrastPower` draws with, lit and
     /// unlit, on a quarter-res target or not (drawKey).
     static void addDrawKeys(Technique technique, float contrastPower, bool quarterRes, std::vector<Key>* keys);
-    /// The tiled path's thirteen programs (TiledPath.h: unlit and lit, with tileSortKeys): what
+    /// The tiled path's fifteen programs (TiledPath.h: unlit and lit, with tileSortKeys and tileBinKeys): what
     /// prepareGl adds while it is on, in a context with compute shaders (lit too, as
     /// techniqueKeys: a host may set a scene light at any time).
     static std::vector<Key> tiledKeys();
     /// The eight that write the tiled path's lists (TileSort.h): the four of the lists, then the
     /// four that sort the particles of a list built without its order.
     static std::vector<Key> tileSortKeys();
+    /// The two that bin a view's particles on the GPU (TileSort::binOnGpu).
+    static std::vector<Key> tileBinKeys();
     /// `contrastPower` picks between the two soft programs (see above).
     static Variant variantFor(Technique technique, bool quarterRes, float contrastPower = 1.0f);
     /// contrast_power = whole + half / 2 with whole in [0, 16], half 0 or 1: true and the split.

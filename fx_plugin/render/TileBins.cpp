@@ -44,6 +44,7 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
     out->particles.clear();
     out->tiles.clear();
     out->entryCount = 0;
+    out->gpuParticles = 0;
     out->tilesX = out->tilesY = 0;
     out->cover.vertices.clear();
     out->cover.pixels = 0;
@@ -235,6 +236,27 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
     out->tiles.resize(listed);
     if (fill == TileBins::Fill::Entries) writeEntries(out, jobs);
     return true;
+}
+
+void coverTiles(TileBins* bins, int width, int height) {
+    ScreenTiles& cover = bins->cover;
+    cover.vertices.clear();
+    cover.pixels = 0;
+    cover.viewWidth = width;
+    cover.viewHeight = height;
+    const uint32_t* t = bins->tiles.data();
+    const size_t n = bins->tiles.size() / 4;
+    for (size_t i = 0; i < n;) {
+        // A run: the tiles of one row whose x follow on (binParticles' step 3 ends it at the
+        // first tile with no entries).
+        const uint32_t ty = t[i * 4 + 1], x0 = t[i * 4];
+        size_t j = i + 1;
+        while (j < n && t[j * 4 + 1] == ty && t[j * 4] == t[(j - 1) * 4] + 1) ++j;
+        const int endX = int(t[(j - 1) * 4]) + 1;
+        addRun(&cover, int(x0) * kTileSize, int(ty) * kTileSize, std::min(width, endX * kTileSize),
+               std::min(height, (int(ty) + 1) * kTileSize));
+        i = j;
+    }
 }
 
 void writeEntries(TileBins* bins, const Jobs& jobs) {

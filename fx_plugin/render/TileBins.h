@@ -46,6 +46,9 @@ struct TileBins {
     NoInitVector<uint32_t> tiles;   ///< per tile holding particles: tile x, tile y, first entry, count
     ScreenTiles cover;              ///< those tiles as runs (the composite's draw)
     uint32_t entryCount = 0;        ///< the entries of every tile (and the pairs)
+    /// Binned on the GPU (TileSort::binOnGpu, readGpuBins): this many particles' words (two each,
+    /// Fill::Ranges) lie in the sort's own buffer, not in `particles` (empty); 0 otherwise.
+    uint32_t gpuParticles = 0;
     int tilesX = 0, tilesY = 0;     ///< the view's tiles
     /// Scratch: per tile of the view its entries, then its first (only the tiles inside the box
     /// of every particle's range are written; no other is read).
@@ -65,6 +68,11 @@ struct TileBins {
 bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const TileBins::Range* batches,
                   int batchCount, const BillboardReach* reach, TileBins* out, const Jobs& jobs = Jobs(),
                   TileBins::Fill fill = TileBins::Fill::Entries);
+
+/// The composite's runs (`cover`) of `bins->tiles` (row-major, as binParticles lists them): each
+/// row's neighbouring tiles as one run, the same vertices binParticles gives. For bins whose tiles
+/// came from the GPU (TileSort::readGpuBins).
+void coverTiles(TileBins* bins, int width, int height);
 
 /// The front-to-back places of `batches` in `out` (orderStart, batchLast, batchCount), the first
 /// thing binParticles writes: the GPU's order of the particles (TileSort::sortParticles) needs no

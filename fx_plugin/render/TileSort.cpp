@@ -4,7 +4,10 @@
 #include <atomic>
 #include <climits>
 #include <cstdlib>
+#include <cstring>
+#include <vector>
 
+#include "FootprintMath.h"
 #include "InstanceStream.h"
 #include "render/PrivateGl.h"
 
@@ -70,9 +73,9 @@ uint64_t TileSort::gpuOrderedViews() { return gGpuOrderedViews.load(std::memory_
 TileSort::~TileSort() {
     // The renderer deletes its GL objects with the context current (~ParticleRenderer).
     if (!privateGlContextCurrent()) return;
-    const uint32_t buffers[11] = {particles_,    keys_[0],      keys_[1],       entries_[0],
-                                  entries_[1],   histogram_,    ordered_,       orderKeys_[0],
-                                  orderKeys_[1], orderPlaces_[0], orderPlaces_[1]};
+    const uint32_t buffers[12] = {particles_,    keys_[0],      keys_[1],        entries_[0],
+                                  entries_[1],   histogram_,    ordered_,        orderKeys_[0],
+                                  orderKeys_[1], orderPlaces_[0], orderPlaces_[1], grid_};
     for (uint32_t b : buffers) {
         if (b) glDeleteBuffers(1, &b);
     }
@@ -108,6 +111,29 @@ void TileSort::bind(const ProgramCache& programs) {
         u.orderStart = glGetUniformLocation(progs[p], "uOrderStart");
         u.batchLast = glGetUniformLocation(progs[p], "uBatchLast");
     }
+    bound_ = programs.passProgram(ProgramCache::TileBound);
+    list_ = programs.passProgram(ProgramCache::TileList);
+    for (uint32_t program : {bound_, list_}) {
+        BinUniforms& u = program == bound_ ? boundU_ : listU_;
+        u = BinUniforms{};
+        if (!program) continue;
+        u.groupsX = glGetUniformLocation(program, "uGroupsX");
+        u.particleCount = glGetUniformLocation(program, "uParticleCount");
+        u.batchCount = glGetUniformLocation(program, "uBatchCount");
+        u.orderStart = glGetUniformLocation(program, "uOrderStart");
+        u.batchLast = glGetUniformLocation(program, "uBatchLast");
+        u.sphereBatches = glGetUniformLocation(program, "uSphereBatches");
+        u.view = glGetUniformLocation(program, "uView");
+        u.proj = glGetUniformLocation(program, "uProj");
+        u.nearPlane = glGetUniformLocation(program, "uNearPlane");
+        u.viewSize = glGetUniformLocation(program, "uViewSize");
+        u.tiles = glGetUniformLocation(program, "uTiles");
+        u.perspective = glGetUniformLocation(program, "uPerspective");
+        u.reachLodScale = glGetUniformLocation(program, "uReachLodScale");
+        u.reachBuckets = glGetUniformLocation(program, "uReachBuckets");
+        u.reach = glGetUniformLocation(program, "uReach");
+    }
+    binnedParticles_ = 0;
     GLint64 bytes = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &bytes);
     maxBlockBytes_ = bytes;
@@ -132,7 +158,7 @@ bool TileSort::fits(const TileBins& bins) const {
     const int64_t limit = gBlockLimit.load(std::memory_order_relaxed);
     const int64_t maxBytes = limit > 0 ? std::min(limit, maxBlockBytes_) : maxBlockBytes_;
     const int64_t pairBytes = int64_t(bins.entryCount) * 4;
-    const int64_t particleBytes = int64_t(bins.particles.size()) * 4;
+    const int64_t particleBytes = (int64_t(bins.particles.size()) + int64_t(bins.gpuParticles) * 2) * 4;
     return pairBytes <= maxBytes && particleBytes <= maxBytes;
 }
 
@@ -270,9 +296,12 @@ uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs, const DepthOrder*
     sorted_ = false;  // taken here (or dropped: a view that is not drawn)
     if (!ok() || !fits(bins) || (order && !orderOk())) return 0;
     const uint32_t pairs = bins.entryCount;
-    // The words of the particles: four each, or (Fill::Ranges, only with an order) two.
+    // The words of the particles: four each, or (Fill::Ranges, only with an order) two; binned on
+    // the GPU (with an order only), already in particles_.
     if (bins.wordsPerParticle != (order ? 2 : 4) || (order && order->batchCount != bins.batchCount)) return 0;
-    const uint32_t particleCount = uint32_t(bins.particles.size() / size_t(bins.wordsPerParticle));
+    if (bins.gpuParticles > 0 && !order) return 0;
+    const uint32_t particleCount = bins.gpuParticles > 0 ? bins.gpuParticles
+                                                         : uint32_t(bins.particles.size() / size_t(bins.wordsPerParticle));
     const size_t keyBytes = size_t(pairs) * 4;
     ensureBuffer(&keys_[0], &keysCapacity_[0], keyBytes);
     ensureBuffer(&entries_[0], &entriesCapacity_[0], keyBytes);
@@ -281,11 +310,13 @@ uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs, const DepthOrder*
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
     // 1. The particles (in front-to-back order: the CPU's, or order's), then the pairs in that order.
-    ensureBuffer(&particles_, &particlesCapacity_, bins.particles.size() * 4);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, particles_);
-    const size_t particleBytes = bins.particles.size() * 4;
-    if (!copyMappedInPieces(GL_SHADER_STORAGE_BUFFER, bins.particles.data(), particleBytes, jobs)) {
-        glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(particleBytes), bins.particles.data());
+    if (bins.gpuParticles == 0) {
+        ensureBuffer(&particles_, &particlesCapacity_, bins.particles.size() * 4);
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, particles_);
+        const size_t particleBytes = bins.particles.size() * 4;
+        if (!copyMappedInPieces(GL_SHADER_STORAGE_BUFFER, bins.particles.data(), particleBytes, jobs)) {
+            glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(particleBytes), bins.particles.data());
+        }
     }
     if (order) {
         if (!sorted || sortedCount_ != particleCount) sortParticles(particleCount, *order, bins);
@@ -310,6 +341,102 @@ uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs, const DepthOrder*
     int from = 0;
     for (int pass = 0; pass < passCount; ++pass, from ^= 1) radixPass(pairs, pass * kDigitBits, keys_, entries_, from);
     return entries_[from];
+}
+
+bool TileSort::binOnGpu(const ViewInfo& view, uint32_t instances, uint32_t particleCount, uint32_t sphereBatches,
+                        const BillboardReach& reach, const TileBins& places, uint32_t* tileBuffer, size_t* tileCapacity) {
+    binnedParticles_ = 0;
+    constexpr int kTile = ScreenTiles::kTileSize;
+    const int tilesX = (view.width + kTile - 1) / kTile, tilesY = (view.height + kTile - 1) / kTile;
+    if (!binsOk() || particleCount == 0 || tilesX <= 0 || tilesY <= 0 || tilesX > 0xffff || tilesY > 0xffff ||
+        places.batchCount > 32) {
+        return false;
+    }
+    constexpr int kParticles = 0, kTiles = 1, kInstances = 3, kGrid = 4;
+    // The grid: four words of header, then (tilesX + 1) x (tilesY + 1) cells, zero (LIST leaves
+    // them so; a new store is made zero).
+    const size_t gridBytes = (4 + size_t(tilesX + 1) * size_t(tilesY + 1)) * 4;
+    if (!grid_) glGenBuffers(1, &grid_);
+    if (gridBytes > gridCapacity_) {
+        gridCapacity_ = gridBytes;
+        const std::vector<int32_t> zeros(gridBytes / 4, 0);
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, grid_);
+        glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(gridBytes), zeros.data(), GL_DYNAMIC_COPY);
+    }
+    ensureBuffer(&particles_, &particlesCapacity_, size_t(particleCount) * 8);
+    ensureBuffer(tileBuffer, tileCapacity, size_t(tilesX) * size_t(tilesY) * 16);
+    // Whatever read these buffers before (the last view's lists and tiles) is done with them.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticles, particles_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstances, instances);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGrid, grid_);
+    glUseProgram(bound_);
+    const BinUniforms& u = boundU_;
+    glUniform1i(u.particleCount, int(particleCount));
+    setBatches(places, u.batchCount, u.orderStart, u.batchLast);
+    glUniform1ui(u.sphereBatches, sphereBatches);
+    glUniformMatrix4fv(u.view, 1, GL_FALSE, &view.view[0][0]);
+    glUniformMatrix4fv(u.proj, 1, GL_FALSE, &view.proj[0][0]);
+    glUniform1f(u.nearPlane, view.nearPlane);
+    glUniform2i(u.viewSize, view.width, view.height);
+    glUniform2i(u.tiles, tilesX, tilesY);
+    const bool perspective = footprint::plainPerspective(view.proj);
+    glUniform1i(u.perspective, perspective ? 1 : 0);
+    static_assert(BillboardReach::kRows * BillboardReach::kEntries == 40, "cs_particles_tile_sort.glsl's uReach[40]");
+    static_assert(BillboardReach::kEntries == 8, "its rows of 8");
+    glUniform1f(u.reachLodScale, reach.lodScale > 0.0f && reach.buckets > 0 ? reach.lodScale : 0.0f);
+    glUniform1i(u.reachBuckets, std::max(reach.buckets, 1));
+    glUniform1fv(u.reach, BillboardReach::kRows * BillboardReach::kEntries, reach.table.data());
+    dispatch((particleCount + kGroup - 1) / kGroup, u.groupsX);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTiles, *tileBuffer);
+    glUseProgram(list_);
+    glUniform2i(listU_.tiles, tilesX, tilesY);
+    glDispatchCompute(1, 1, 1);
+    // The tiles for the shade, the header for the CPU's read.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    binnedParticles_ = particleCount;
+    binnedTiles_ = *tileBuffer;
+    binnedTilesX_ = tilesX;
+    binnedTilesY_ = tilesY;
+    binnedWidth_ = view.width;
+    binnedHeight_ = view.height;
+    return true;
+}
+
+bool TileSort::readGpuBins(TileBins* bins) {
+    const uint32_t n = binnedParticles_;
+    binnedParticles_ = 0;
+    if (n == 0 || !grid_) return false;
+    // The header: LIST's entries, tiles and what failed.
+    int32_t header[4] = {};
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, grid_);
+    const void* mapped = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, sizeof header, GL_MAP_READ_BIT);
+    if (!mapped) return false;
+    std::memcpy(header, mapped, sizeof header);
+    glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+    if (header[3] != 0 || header[1] < 0 || header[2] < 0 || int64_t(header[2]) > int64_t(binnedTilesX_) * binnedTilesY_) {
+        return false;
+    }
+    bins->particles.clear();
+    bins->entries.clear();
+    bins->wordsPerParticle = 2;
+    bins->gpuParticles = n;
+    bins->entryCount = uint32_t(header[1]);
+    bins->tilesX = binnedTilesX_;
+    bins->tilesY = binnedTilesY_;
+    // The tiles, for the composite's runs (the shade reads them where they are).
+    bins->tiles.resize(size_t(header[2]) * 4);
+    if (header[2] > 0) {
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, binnedTiles_);
+        const size_t bytes = bins->tiles.size() * 4;
+        mapped = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(bytes), GL_MAP_READ_BIT);
+        if (!mapped) return false;
+        std::memcpy(bins->tiles.data(), mapped, bytes);
+        glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+    }
+    coverTiles(bins, binnedWidth_, binnedHeight_);
+    return true;
 }
 
 }  // namespace fx

@@ -95,6 +95,24 @@ public:
     /// was not drawn after all).
     void sortParticles(uint32_t particleCount, const DepthOrder& order, const TileBins& places);
     void dropOrder() { sorted_ = false; }
+    /// The bins on the GPU as well (FX_TILE_BOUND, FX_TILE_LIST): their two programs built too.
+    bool binsOk() const { return orderOk() && bound_ && list_; }
+    /// Issues the bins of an unsorted list (what binParticles gives with Fill::Ranges, bit for bit
+    /// where the GPU's division rounds as the CPU's): each of `particleCount` particles placed as
+    /// `places` (placeBatches) bounded from `instances` (a buffer of ParticleInstance: the list's),
+    /// its two words written into the sort's own buffer, where run() takes them, and its tiles
+    /// counted; then the tiles that hold particles listed into `*tileBuffer` (grown as
+    /// ensureBuffer grows, to the view's tiles). `sphereBatches`: a bit per batch drawn as spheres;
+    /// `reach`: the billboards' (lodScale 0: their quads). No CPU work per particle: readGpuBins,
+    /// called once the GPU has had other work to do meanwhile, waits for the result. False (nothing
+    /// issued) where !binsOk(), the view has no tiles or more than 65,535 a side, or over 32 batches.
+    bool binOnGpu(const ViewInfo& view, uint32_t instances, uint32_t particleCount, uint32_t sphereBatches,
+                  const BillboardReach& reach, const TileBins& places, uint32_t* tileBuffer, size_t* tileCapacity);
+    /// binOnGpu's result, read back (a wait for the GPU): `bins` gets its entryCount, tilesX/Y, tiles
+    /// (as binParticles lists them), cover (coverTiles) and gpuParticles, its particles emptied: the
+    /// words stay on the GPU. False where nothing was issued, a particle had no bound (not finite:
+    /// the view is drawn another way, as binParticles' false) or the entries pass 2^31 - 1.
+    bool readGpuBins(TileBins* bins);
     /// Caps the largest shader storage block fits() allows below the context's (bytes; 0: the
     /// context's own): a context with small blocks, for tests.
     static void setBlockLimit(int64_t bytes);
@@ -124,6 +142,18 @@ private:
     // Writes the sorted particles (sortParticles), with their first pairs, to ordered_.
     void orderParticles(uint32_t particleCount, const TileBins& bins);
 
+    struct BinUniforms {
+        int groupsX = -1, particleCount = -1, batchCount = -1, orderStart = -1, batchLast = -1, sphereBatches = -1,
+            view = -1, proj = -1, nearPlane = -1, viewSize = -1, tiles = -1, perspective = -1, reachLodScale = -1,
+            reachBuckets = -1, reach = -1;
+    };
+    uint32_t bound_ = 0, list_ = 0;
+    BinUniforms boundU_, listU_;
+    uint32_t grid_ = 0;             // BOUND's difference grid after a header of four words (LIST's result)
+    size_t gridCapacity_ = 0;
+    uint32_t binnedTiles_ = 0;      // binOnGpu's tile buffer, until readGpuBins
+    int binnedTilesX_ = 0, binnedTilesY_ = 0, binnedWidth_ = 0, binnedHeight_ = 0;
+    uint32_t binnedParticles_ = 0;  // 0: nothing issued
     uint32_t emit_ = 0, count_ = 0, scan_ = 0, scatter_ = 0;
     uint32_t orderKey_ = 0, orderBatch_ = 0, orderPrefix_ = 0, orderAdd_ = 0;
     Uniforms emitU_, countU_, scanU_, scatterU_, orderKeyU_, orderBatchU_, orderPrefixU_, orderAddU_;

@@ -31,7 +31,8 @@ static_assert(kLitAtlasUnit < GlStateGuard::kTextureUnits, "a unit the guard put
 static_assert(kShapeBinding < ComputeBindingsScope::kBindings, "a binding ComputeBindingsScope puts back");
 static_assert(kAccumImage == ComputeBindingsScope::kImage, "the image unit ComputeBindingsScope puts back");
 
-std::atomic<uint64_t> gCpuListViews{0}, gGpuSortedViews{0}, gDeferredBinViews{0}, gDeferredFallbacks{0};
+std::atomic<uint64_t> gCpuListViews{0}, gGpuSortedViews{0}, gDeferredBinViews{0}, gDeferredFallbacks{0},
+    gGpuBinnedViews{0};
 
 // render.near_fade as the shaders' line in depth (ParticleDraw's nearFadeMap).
 glm::vec2 nearFadeMap(float fade, float nearPlane) {
@@ -78,6 +79,7 @@ uint64_t TiledPath::cpuListViews() { return gCpuListViews.load(std::memory_order
 uint64_t TiledPath::gpuSortedViews() { return gGpuSortedViews.load(std::memory_order_relaxed); }
 uint64_t TiledPath::deferredBinViews() { return gDeferredBinViews.load(std::memory_order_relaxed); }
 uint64_t TiledPath::deferredFallbacks() { return gDeferredFallbacks.load(std::memory_order_relaxed); }
+uint64_t TiledPath::gpuBinnedViews() { return gGpuBinnedViews.load(std::memory_order_relaxed); }
 
 bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& record, const Jobs& jobs,
                         Fallback fallback) {
@@ -189,6 +191,7 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
     const bool setUp = stage == Stage::Tiles && v.tiledSetUp && setUpView_ == &v;
     v.tiledSetUp = false;
     setUpView_ = nullptr;
+    if (!setUp) gpuBinned_ = false;
     if ((!deferred && bins.tileCount() == 0) || !ok()) return true;
     bool lit = false;
     for (const DrawBatch& batch : v.list.batches) lit = lit || litBatch(v, batch);
@@ -334,6 +337,16 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
         glDispatchCompute(GLuint(groupsX), GLuint((groups + groupsX - 1) / groupsX), 1);
     }
 
+    // The GPU's bins (gpuBins()), queued behind the order and the records: the next pass reads
+    // back what they found.
+    if (deferred && !setUp && gpuBins() && sort_.binsOk()) {
+        uint32_t spheres = 0;
+        for (int b = 0; b < batchCount; ++b) spheres |= ranges[b].sphere ? 1u << b : 0u;
+        const BillboardReach reach = draw_.billboardReach(v, false);
+        gpuBinned_ = sort_.binOnGpu(view, instanceBuffer_, uint32_t(count), spheres, reach, bins, &tileBuffer_,
+                                    &tileCapacity_);
+    }
+
     if (stage == Stage::Setup) {
         // The first pass's work to the GPU, which does it while the host's threads bin in the next.
         glFlush();
@@ -346,10 +359,18 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
     // on: flushed (by the first pass, or here), so that it does while the host's threads bin.
     if (deferred) {
         if (!setUp) glFlush();
-        const BillboardReach reach = draw_.billboardReach(v, false);
-        if (!binParticles(view, v.list.instances.data(), ranges, batchCount, &reach, &bins, draw_.jobs(),
-                          TileBins::Fill::Ranges) ||
-            !sort_.fits(bins)) {
+        bool binned = false;
+        if (gpuBinned_) {
+            // Read back from the GPU's bins (a wait for what it had queued before them).
+            binned = sort_.readGpuBins(&bins);
+            if (binned) gGpuBinnedViews.fetch_add(1, std::memory_order_relaxed);
+        } else {
+            const BillboardReach reach = draw_.billboardReach(v, false);
+            binned = binParticles(view, v.list.instances.data(), ranges, batchCount, &reach, &bins, draw_.jobs(),
+                                  TileBins::Fill::Ranges);
+        }
+        gpuBinned_ = false;
+        if (!binned || !sort_.fits(bins)) {
             sort_.dropOrder();
             return false;
         }
@@ -372,7 +393,9 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
         gGpuSortedViews.fetch_add(1, std::memory_order_relaxed);
     }
     if (!entries) return true;
-    fillStorage(&tileBuffer_, &tileCapacity_, bins.tiles.data(), bins.tiles.size() * sizeof(uint32_t), draw_.jobs());
+    if (bins.gpuParticles == 0) {  // the GPU's bins listed their tiles there already
+        fillStorage(&tileBuffer_, &tileCapacity_, bins.tiles.data(), bins.tiles.size() * sizeof(uint32_t), draw_.jobs());
+    }
     // The sort bound its own buffers to these bindings.
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceBinding, instanceBuffer_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEntryBinding, entries);

@@ -155,6 +155,22 @@ public:
     /// Views binned in their pass, and those of them drawn through the fallback, since the process started.
     static uint64_t deferredBinViews();
     static uint64_t deferredFallbacks();
+    /// The GPU's bins. A view binned in its pass is bounded and counted by the GPU
+    /// (TileSort::binOnGpu: FX_TILE_BOUND, FX_TILE_LIST), issued in the first pass with the
+    /// particles' order and records, instead of on the host's threads in the second; the second
+    /// reads back how many entries and which tiles (readGpuBins: a wait, for what the GPU had queued)
+    /// and goes on as before. What the CPU saves: every per-particle step of the bins (on the H200's
+    /// 16 threads 1.3 ms at 256,000 particles, docs/results.md session 29) and the upload of their
+    /// words. The lists are binParticles' bit for bit where the GPU's division rounds as the CPU's
+    /// (llvmpipe: TileSortTest), and the picture is the same either way: a bound a rounding off
+    /// moves at most a tile of the pixel it is grown by, where the particle draws nothing.
+    /// On unless CUBEFX_TILED_GPU_BINS=0 or setGpuBins(false), for A/B runs on a GPU; without its
+    /// two programs (TileSort::binsOk) the host's threads bin as before.
+    static bool gpuBins();
+    static void setGpuBins(bool on);
+    static void resetGpuBins();           ///< back to the environment's, or on
+    static const char* gpuBinsProblem();  ///< what was wrong with CUBEFX_TILED_GPU_BINS, or null
+    static uint64_t gpuBinnedViews();     ///< views the GPU binned, since the process started
 
 private:
     // What run() does of a view: all of it in one pass (Whole, its bins made while declaring);
@@ -172,6 +188,7 @@ private:
     ParticleDraw& draw_;
     SizeMismatchReport sizeMismatch_;
     const ParticleView* setUpView_ = nullptr;  ///< the view whose Setup stage ran last, until a stage runs again
+    bool gpuBinned_ = false;  ///< that Setup stage (or this Tiles stage) issued the GPU's bins
     uint32_t setup_ = 0, shade_ = 0, composite_ = 0, setupLit_ = 0, shadeLit_ = 0;
     bool software_ = false;  ///< the context is a software rasterizer (bind()): cpuListLimit's default
     struct ShadeUniforms {

@@ -49,7 +49,26 @@ int deferBinsFromEnvironment() {
 const int gDeferBinsFromEnvironment = deferBinsFromEnvironment();
 std::atomic<int> gDeferBins{gDeferBinsFromEnvironment};  // -1: the default (on)
 
+// CUBEFX_TILED_GPU_BINS, read once: 0 bins a deferred view on the host's threads, 1 (or unset) on
+// the GPU where its programs built; anything else is reported and ignored.
+const char* gGpuBinsProblem = nullptr;
+int gpuBinsFromEnvironment() {
+    const char* v = std::getenv("CUBEFX_TILED_GPU_BINS");
+    if (!v || !*v) return -1;
+    if (std::strcmp(v, "0") == 0 || std::strcmp(v, "1") == 0) return v[0] - '0';
+    gGpuBinsProblem = "fx: CUBEFX_TILED_GPU_BINS is neither 0 nor 1; the tiled path keeps its default (the GPU "
+                      "bins the views whose particles it orders)";
+    return -1;
+}
+const int gGpuBinsFromEnvironment = gpuBinsFromEnvironment();
+std::atomic<int> gGpuBins{gGpuBinsFromEnvironment};  // -1: the default (on)
+
 }  // namespace
+
+bool TiledPath::gpuBins() { return gGpuBins.load(std::memory_order_relaxed) != 0; }
+void TiledPath::setGpuBins(bool on) { gGpuBins.store(on ? 1 : 0, std::memory_order_relaxed); }
+void TiledPath::resetGpuBins() { gGpuBins.store(gGpuBinsFromEnvironment, std::memory_order_relaxed); }
+const char* TiledPath::gpuBinsProblem() { return gGpuBinsProblem; }
 
 uint32_t TiledPath::cpuListLimit(bool softwareRasterizer) {
     const int64_t set = gCpuListLimit.load(std::memory_order_relaxed);

@@ -290,5 +290,139 @@ TEST_F(TileSortTest, ParticlesSortedOnTheGpuGiveTheCpuOrdersLists) {
     EXPECT_EQ(fx::TileSort::orderLimit(false), fx::TileSort::kOrderParticles);
 }
 
+// The bins on the GPU (TileSort::binOnGpu, readGpuBins): what binParticles gives with Fill::Ranges,
+// bit for bit on this rasterizer: the entry count, the tiles and their runs, and (through run()
+// with the particles' order) the lists. Perspective views with and without a reach table (frames
+// 0-3 and out of range, buckets clamped both ways), an orthographic one (the corners' path), a
+// sphere across the near plane, particles off the view and behind it; then a view with nothing
+// on it, a particle that is not finite (refused, as binParticles refuses it), and the same
+// buffers reused by a smaller view after a larger one.
+TEST_F(TileSortTest, BinnedOnTheGpuAsOnTheCpu) {
+    std::vector<std::string> errors;
+    std::vector<fx::ProgramCache::Key> keys = fx::ProgramCache::tileSortKeys();
+    for (const fx::ProgramCache::Key& k : fx::ProgramCache::tileBinKeys()) keys.push_back(k);
+    ASSERT_EQ(programs.build(keys, &errors), 10) << (errors.empty() ? "" : errors[0]);
+    fx::TileSort sort;
+    sort.bind(programs);
+    ASSERT_TRUE(sort.binsOk());
+    uint32_t instances = 0, tiles = 0;
+    size_t tileCapacity = 0;
+    glGenBuffers(1, &instances);
+    fx::BillboardReach reach;
+    reach.lodScale = 0.37f;
+    reach.buckets = 5;
+    for (size_t i = 0; i < reach.table.size(); ++i) reach.table[i] = 0.25f + 0.01f * float(i);
+    int compared = 0;
+    for (int variant = 0; variant < 4; ++variant) {
+        for (int ci = int(std::size(kCases)) - 1; ci >= 0; --ci) {  // large first: the buffers then shrink
+            const Case& c = kCases[ci];
+            SCOPED_TRACE(testing::Message() << c.width << "x" << c.height << ", variant " << variant);
+            Scene s = sceneOf(c.particles, c.largest, 23 + unsigned(variant));
+            const int n = int(s.particles.size());
+            for (int i = 0; i < n; ++i) s.particles[size_t(i)].frame = float(i % 6) - (i % 11 == 0 ? 1.7f : 0.0f);
+            fx::ViewInfo view = viewOf(c.width, c.height);
+            if (variant == 2) {
+                view.proj = glm::ortho(-8.0f, 8.0f, -6.0f, 6.0f, 0.1f, 500.0f);
+                s.ranges[2].sphere = false;  // the tiled path draws spheres under perspective only
+            }
+            const fx::BillboardReach* withReach = variant == 1 || variant == 3 ? &reach : nullptr;
+            fx::TileBins cpu;
+            ASSERT_TRUE(fx::binParticles(view, s.particles.data(), s.ranges.data(), 3, withReach, &cpu, fx::Jobs(),
+                                         fx::TileBins::Fill::Ranges));
+            glBindBuffer(kShaderStorageBuffer, instances);
+            glBufferData(kShaderStorageBuffer, GLsizeiptr(size_t(n) * sizeof(fx::ParticleInstance)), s.particles.data(),
+                         0x88E0 /* GL_STREAM_DRAW */);
+            fx::TileBins gpu;
+            ASSERT_EQ(fx::placeBatches(s.ranges.data(), 3, &gpu), n);
+            const uint32_t spheres = s.ranges[2].sphere ? 4u : 0u;
+            const fx::BillboardReach none;
+            ASSERT_TRUE(sort.binOnGpu(view, instances, uint32_t(n), spheres, withReach ? reach : none, gpu, &tiles,
+                                      &tileCapacity));
+            ASSERT_TRUE(sort.readGpuBins(&gpu));
+            EXPECT_EQ(gpu.gpuParticles, uint32_t(n));
+            EXPECT_TRUE(gpu.particles.empty());
+            EXPECT_EQ(gpu.entryCount, cpu.entryCount);
+            EXPECT_EQ(gpu.tilesX, cpu.tilesX);
+            EXPECT_EQ(gpu.tilesY, cpu.tilesY);
+            EXPECT_EQ(gpu.tiles, cpu.tiles);
+            EXPECT_EQ(gpu.cover.vertices, cpu.cover.vertices);
+            EXPECT_EQ(gpu.cover.pixels, cpu.cover.pixels);
+            ASSERT_GT(cpu.tileCount(), 0);
+            ASSERT_FALSE(sort.readGpuBins(&gpu)) << "read once";
+            // The lists from either bins, through the particles' order on the GPU.
+            fx::TileSort::DepthOrder order;
+            order.instances = instances;
+            order.eye = view.eye;
+            order.forward = fx::viewForward(view);
+            order.batchCount = 3;
+            order.backToFront = 5u;
+            auto listsOf = [&](const fx::TileBins& bins) {
+                std::vector<uint32_t> got(bins.entryCount);
+                const uint32_t buffer = sort.run(bins, fx::Jobs(), &order);
+                EXPECT_NE(buffer, 0u);
+                if (!buffer) return got;
+                glBindBuffer(kShaderStorageBuffer, buffer);
+                glGetBufferSubData(kShaderStorageBuffer, 0, GLsizeiptr(got.size() * 4), got.data());
+                glBindBuffer(kShaderStorageBuffer, 0);
+                return got;
+            };
+            // The GPU's words first: the CPU's upload would overwrite them.
+            ASSERT_TRUE(sort.binOnGpu(view, instances, uint32_t(n), spheres, withReach ? reach : none, gpu, &tiles,
+                                      &tileCapacity));
+            ASSERT_TRUE(sort.readGpuBins(&gpu));
+            const std::vector<uint32_t> fromGpu = listsOf(gpu);
+            const std::vector<uint32_t> fromCpu = listsOf(cpu);
+            EXPECT_TRUE(fromGpu == fromCpu) << fromGpu.size() << " entries against " << fromCpu.size();
+            // The shade's tiles, where the GPU listed them.
+            std::vector<uint32_t> listed(gpu.tiles.size());
+            glBindBuffer(kShaderStorageBuffer, tiles);
+            glGetBufferSubData(kShaderStorageBuffer, 0, GLsizeiptr(listed.size() * 4), listed.data());
+            glBindBuffer(kShaderStorageBuffer, 0);
+            EXPECT_TRUE(std::equal(listed.begin(), listed.end(), cpu.tiles.begin()));
+            ++compared;
+        }
+    }
+    EXPECT_EQ(compared, 4 * int(std::size(kCases)));
+    // Nothing on the view: no tiles, no entries.
+    {
+        Scene s = sceneOf(300, 2.0f, 3);
+        for (fx::ParticleInstance& p : s.particles) p.z = 40.0f;  // behind the camera
+        const fx::ViewInfo view = viewOf(640, 480);
+        glBindBuffer(kShaderStorageBuffer, instances);
+        glBufferData(kShaderStorageBuffer, GLsizeiptr(s.particles.size() * sizeof(fx::ParticleInstance)),
+                     s.particles.data(), 0x88E0);
+        fx::TileBins gpu;
+        ASSERT_EQ(fx::placeBatches(s.ranges.data(), 3, &gpu), 300);
+        ASSERT_TRUE(sort.binOnGpu(view, instances, 300u, 4u, fx::BillboardReach{}, gpu, &tiles, &tileCapacity));
+        ASSERT_TRUE(sort.readGpuBins(&gpu));
+        EXPECT_EQ(gpu.entryCount, 0u);
+        EXPECT_EQ(gpu.tileCount(), 0);
+        EXPECT_TRUE(gpu.cover.vertices.empty());
+        // One not finite: refused, and the next view is binned as before (the flag is not kept).
+        s = sceneOf(300, 2.0f, 4);
+        s.particles[17].size = std::nanf("");
+        glBindBuffer(kShaderStorageBuffer, instances);
+        glBufferData(kShaderStorageBuffer, GLsizeiptr(s.particles.size() * sizeof(fx::ParticleInstance)),
+                     s.particles.data(), 0x88E0);
+        ASSERT_TRUE(sort.binOnGpu(view, instances, 300u, 4u, fx::BillboardReach{}, gpu, &tiles, &tileCapacity));
+        EXPECT_FALSE(sort.readGpuBins(&gpu));
+        fx::TileBins cpu;
+        EXPECT_FALSE(fx::binParticles(view, s.particles.data(), s.ranges.data(), 3, nullptr, &cpu, fx::Jobs(),
+                                      fx::TileBins::Fill::Ranges));
+        s.particles[17].size = 0.5f;
+        glBindBuffer(kShaderStorageBuffer, instances);
+        glBufferData(kShaderStorageBuffer, GLsizeiptr(s.particles.size() * sizeof(fx::ParticleInstance)),
+                     s.particles.data(), 0x88E0);
+        ASSERT_TRUE(fx::binParticles(view, s.particles.data(), s.ranges.data(), 3, nullptr, &cpu, fx::Jobs(),
+                                     fx::TileBins::Fill::Ranges));
+        ASSERT_TRUE(sort.binOnGpu(view, instances, 300u, 4u, fx::BillboardReach{}, gpu, &tiles, &tileCapacity));
+        ASSERT_TRUE(sort.readGpuBins(&gpu));
+        EXPECT_EQ(gpu.entryCount, cpu.entryCount);
+        EXPECT_EQ(gpu.tiles, cpu.tiles);
+    }
+    glDeleteBuffers(1, &instances);
+    glDeleteBuffers(1, &tiles);
+}
+
 }  // namespace tile_sort_test
 }  // namespace fxtest

@@ -145,10 +145,13 @@ TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
             fx::TiledPath::resetCpuListLimit();
             fx::TileSort::resetOrderLimit();
             fx::TiledPath::resetDeferBins();
+            fx::TiledPath::resetGpuBins();
         }
     } limitBack;
     fx::TiledPath::resetDeferBins();
+    fx::TiledPath::resetGpuBins();
     ASSERT_TRUE(fx::TiledPath::deferBins()) << "on by default (CUBEFX_TILED_DEFER_BINS unset)";
+    ASSERT_TRUE(fx::TiledPath::gpuBins()) << "on by default (CUBEFX_TILED_GPU_BINS unset)";
     direct.desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(1.0f, 0.1f, 0.1f, 0.9f)},
                                       fx::ColorStop{1.0f, glm::vec4(0.1f, 0.2f, 1.0f, 0.6f)}};
     ASSERT_TRUE(fx::TiledPath::softwareRasterizer(reinterpret_cast<const char*>(glGetString(GL_RENDERER))));
@@ -182,8 +185,9 @@ TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
         EXPECT_EQ(fx::TiledPath::gpuSortedViews(), gpu + 1) << "with the limit at 0 the GPU sorts";
         EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered) << "llvmpipe: the CPU sorts the particles";
         fx::TileSort::setOrderLimit(0);
-        const uint64_t deferred = fx::TiledPath::deferredBinViews();
+        const uint64_t deferred = fx::TiledPath::deferredBinViews(), gpuBinned = fx::TiledPath::gpuBinnedViews();
         const Image gpuOrdered = draw(direct, graph, scene, view, true);
+        EXPECT_EQ(fx::TiledPath::gpuBinnedViews(), gpuBinned + 1) << "the GPU bins a view binned in its pass";
         EXPECT_EQ(fx::TiledPath::gpuSortedViews(), gpu + 2);
         EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered + 1) << "with the order limit at 0 the GPU sorts them";
         EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 1) << "a view the GPU orders is binned in its pass";
@@ -200,14 +204,24 @@ TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
         EXPECT_FALSE(graph.ran(fx::TiledPath::kSetupPass));
         EXPECT_TRUE(graph.ran(fx::TiledPath::kPass));
         EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 2);
+        EXPECT_EQ(fx::TiledPath::gpuBinnedViews(), gpuBinned + 2);
         EXPECT_EQ(maxAbsDiff(gpuOrdered, setUpInTheSecond), 0);
+        // Binned in its pass on the host's threads instead (CUBEFX_TILED_GPU_BINS=0): the same frame.
+        fx::TiledPath::setGpuBins(false);
+        const Image binnedOnCpu = draw(direct, graph, scene, view, true);
+        fx::TiledPath::resetGpuBins();
+        EXPECT_TRUE(graph.ran(fx::TiledPath::kSetupPass));
+        EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 3);
+        EXPECT_EQ(fx::TiledPath::gpuBinnedViews(), gpuBinned + 2) << "the host's threads binned it";
+        EXPECT_EQ(maxAbsDiff(gpuOrdered, binnedOnCpu), 0);
         // The same view binned while it is declared: the same frame.
         fx::TiledPath::setDeferBins(false);
         const Image binnedEarly = draw(direct, graph, scene, view, true);
         fx::TiledPath::resetDeferBins();
-        EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 2);
+        EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 3);
+        EXPECT_EQ(fx::TiledPath::gpuBinnedViews(), gpuBinned + 2);
         EXPECT_FALSE(graph.ran(fx::TiledPath::kSetupPass)) << "one pass for a view binned while declared";
-        EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered + 3);
+        EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered + 4);
         fx::TiledPath::resetCpuListLimit();
         fx::TileSort::resetOrderLimit();
         EXPECT_EQ(maxAbsDiff(byDefault, sorted), 0);

@@ -242,15 +242,19 @@ TEST(Fxbench, LitTiledModesDrawTheLitPictureInTheTiledPass) {
 // invocations. A value that is not a number is reported and ignored. The same for
 // CUBEFX_TILED_GPU_ORDER (TileSort::orderLimit): 0, with the GPU's lists, has the GPU sort the
 // particles back to front too; such a view is binned in its pass unless CUBEFX_TILED_DEFER_BINS=0
-// (TiledPath::deferBins): the same picture and dispatches either way, and a value other than 0 or 1
-// is reported and ignored.
+// (TiledPath::deferBins): the same picture either way, and a value other than 0 or 1 is reported
+// and ignored. Binned in its pass, the GPU bins it (TiledPath::gpuBins: its bound and list
+// dispatches show in the invocations) unless CUBEFX_TILED_GPU_BINS=0, whose dispatches are then
+// those of the view binned while declared; the same picture, and a bad value reported and ignored.
 TEST(Fxbench, TiledListsFromTheCpuOrTheGpuSortGiveTheSamePicture) {
     std::map<std::string, std::string> png;
     std::map<std::string, double> shaded;
     const std::string gpuOrder = "CUBEFX_TILED_CPU_LISTS=0 CUBEFX_TILED_GPU_ORDER=0 ", badOrder = "CUBEFX_TILED_GPU_ORDER=1e5 ";
     const std::string binnedEarly = gpuOrder + "CUBEFX_TILED_DEFER_BINS=0 ", badDefer = gpuOrder + "CUBEFX_TILED_DEFER_BINS=yes ";
+    const std::string cpuBinned = gpuOrder + "CUBEFX_TILED_GPU_BINS=0 ", badGpuBins = gpuOrder + "CUBEFX_TILED_GPU_BINS=2 ";
     for (const std::string& env : {std::string(), std::string("CUBEFX_TILED_CPU_LISTS=0 "),
-                                  std::string("CUBEFX_TILED_CPU_LISTS=12x "), gpuOrder, badOrder, binnedEarly, badDefer}) {
+                                  std::string("CUBEFX_TILED_CPU_LISTS=12x "), gpuOrder, badOrder, binnedEarly, badDefer,
+                                  cpuBinned, badGpuBins}) {
         SCOPED_TRACE(env);
         const std::string json = tempPath("lists.json"), images = tempPath("lists_images");
         const RunOutput r = cubetest::runCommand(env + std::string(CUBE_TEST_BIN_DIR) +
@@ -265,11 +269,13 @@ TEST(Fxbench, TiledListsFromTheCpuOrTheGpuSortGiveTheSamePicture) {
             << r.output;
         EXPECT_EQ(r.output.find("CUBEFX_TILED_DEFER_BINS is neither 0 nor 1") != std::string::npos, env == badDefer)
             << r.output;
+        EXPECT_EQ(r.output.find("CUBEFX_TILED_GPU_BINS is neither 0 nor 1") != std::string::npos, env == badGpuBins)
+            << r.output;
         const YAML::Node run = YAML::Load(readFile(json));
         const YAML::Node m = modeNode(run, "soft+tiled");
         ASSERT_TRUE(m["passes_shaded"]["chase.particles_tiled"]) << "the context counts compute invocations";
         // A view binned in its pass has two (TiledPath::kSetupPass first): their invocations together.
-        const bool deferred = env == gpuOrder || env == badDefer;
+        const bool deferred = env == gpuOrder || env == badDefer || env == cpuBinned || env == badGpuBins;
         EXPECT_EQ(bool(m["passes_shaded"]["chase.particles_tiled_setup"]), deferred);
         shaded[env] = 0.0;
         for (const char* pass : {"chase.particles_tiled", "chase.particles_tiled_setup"}) {
@@ -295,10 +301,13 @@ TEST(Fxbench, TiledListsFromTheCpuOrTheGpuSortGiveTheSamePicture) {
     EXPECT_GT(shaded[gpuOrder], shaded[sorted] + 8 * 1024.0) << "the order's passes did not run";
     EXPECT_EQ(png[byDefault], png[badOrder]);
     EXPECT_EQ(shaded[badOrder], shaded[byDefault]);
-    for (const std::string& env : {binnedEarly, badDefer}) {
-        EXPECT_EQ(png[gpuOrder], png[env]) << env;
-        EXPECT_EQ(shaded[gpuOrder], shaded[env]) << env;
-    }
+    for (const std::string& env : {binnedEarly, badDefer, cpuBinned, badGpuBins}) EXPECT_EQ(png[gpuOrder], png[env]) << env;
+    EXPECT_EQ(shaded[gpuOrder], shaded[badDefer]);
+    EXPECT_EQ(shaded[gpuOrder], shaded[badGpuBins]);
+    // Binned on the host's threads, in the pass or while declared: the same dispatches; the GPU's
+    // bins add a bound per particle and one list group of 1,024.
+    EXPECT_EQ(shaded[cpuBinned], shaded[binnedEarly]);
+    EXPECT_GT(shaded[gpuOrder], shaded[cpuBinned] + 1024.0) << "the GPU's bins did not run";
 }
 
 // Per particle pass, the samples it wrote: their sum is particle_fragments; quarter res's
