@@ -10,7 +10,8 @@
 # the drive through both depth paths) and parts.tgz (shader_parts.sh's runs and their log, a
 # particle sweep of the tiled modes: parts/tiled_sweep.json, and the tiled path's list limit in
 # three settings: parts/lists_*.json; lit smoke rasterised and tiled: parts/lit_*.json; the tiled
-# path's bins deferred into its pass or not: parts/defer_*.json; quarter res's choice in its pass or
+# path's bins while declared, in its pass on the host's threads or by the GPU: parts/bins_*.json;
+# quarter res's choice in its pass or
 # while declared: parts/choice_*.json; where
 # bench_draw was packed too, its bins, cull and bound on the host's threads: parts/bench_draw.json).
 # Back here: tar xzf parts.tgz -C /tmp && scripts/shader_parts.sh --table /tmp/parts
@@ -37,18 +38,24 @@ timeout 150 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 --sweep 
     --frames 6 --error-frames 0 --modes hard,soft,soft+tiled,spherical,spherical+tiled \
     --json "$out/parts/tiled_sweep.json" > "$out/parts/tiled_sweep.txt" 2>&1
 echo "tiled sweep rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
-# Deferred bins (sessions 32-33, TiledPath::deferBins): a view the GPU orders binned in its second
-# pass, after the scene, the particles' order and their records went to the GPU in its first
-# (particles_tiled_setup), against binned while declared (CUBEFX_TILED_DEFER_BINS=0), in alternating
-# processes. Compare the frames first; since session 33 the time the GPU idles while the CPU bins
-# falls between the two passes (outside), so "outside" is comparable too.
+# Where a view the GPU orders is binned (sessions 32-35): while declared on the host's threads
+# (CUBEFX_TILED_DEFER_BINS=0), in its second pass on the host's threads (CUBEFX_TILED_GPU_BINS=0),
+# or by the GPU, queued in its first pass behind the order and the records and read back in the
+# second (the default since session 35, TiledPath::gpuBins), in alternating processes. Compare the
+# frames first; since session 33 the time the GPU idles while the CPU bins falls between the two
+# passes (outside), so "outside" is comparable too; the GPU's read-back wait falls there as well.
 s=$(date +%s)
 for round in 1 2; do
-  for d in 0 1; do
-    CUBEFX_TILED_DEFER_BINS=$d timeout 90 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 \
-        --sweep particles=64000,256000 --frames 8 --error-frames 0 --modes hard,soft+tiled \
-        --json "$out/parts/defer_${d}_${round}.json" > "$out/parts/defer_${d}_${round}.txt" 2>&1
-    echo "defer bins $d round $round rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+  for way in declared cpu gpu; do
+    case $way in
+      declared) env="CUBEFX_TILED_DEFER_BINS=0" ;;
+      cpu) env="CUBEFX_TILED_GPU_BINS=0" ;;
+      gpu) env="CUBEFX_TILED_GPU_BINS=1" ;;
+    esac
+    env $env timeout 90 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 \
+        --sweep particles=16000,64000,256000 --frames 8 --error-frames 0 --modes hard,soft+tiled \
+        --json "$out/parts/bins_${way}_${round}.json" > "$out/parts/bins_${way}_${round}.txt" 2>&1
+    echo "bins $way round $round rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
   done
 done
 # Quarter res's choice in the view's first pass (session 34, QuarterResPath::choiceInPass), after the

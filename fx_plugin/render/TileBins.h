@@ -3,7 +3,9 @@
 // bounds touch, each tile's list front to back. The CPU bounds the particles and counts each
 // tile's entries (O(particles + tiles)); the lists themselves, O(entries), are written by the GPU
 // (TileSort.h) from `particles`, or here where a caller asks for them (Fill::Entries: the
-// reference the GPU's are tested against, and bench_draw's).
+// reference the GPU's are tested against, and bench_draw's). A view whose particles the GPU orders
+// is bounded and counted there too (TileSort::binOnGpu: Fill::Ranges' words and tiles, bit for
+// bit where the GPU's division rounds as the CPU's).
 #include <cstdint>
 #include <vector>
 

@@ -21,7 +21,11 @@
 // the gather of the draw list (bench_draw, 256,000 particles: 10.9 -> 4.4 ms on one thread; on
 // the H200 the tiled frame's declare 6.6 -> 3.1 ms, docs/results.md session 29).
 //
-// GL state: run() binds shader storage buffers 0-4 and a program; the caller puts them back
+// The bins themselves, for a view whose particles the GPU orders (binOnGpu, readGpuBins): each
+// particle's tile range and each tile's count worked out here too (FX_TILE_BOUND, FX_TILE_LIST),
+// the CPU reading back only the entry count and the tiles.
+//
+// GL state: run() and binOnGpu() bind shader storage buffers 0-4 and a program; the caller puts them back
 // (TiledPath's ComputeBindingsScope). Context current.
 #include <cstddef>
 #include <cstdint>

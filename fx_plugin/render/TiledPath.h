@@ -13,7 +13,7 @@
 // tile, stably); a view of at most cpuListLimit() entries (none by default on a GPU) gets its lists
 // written on the CPU instead (writeEntries). A view of many particles (ordersOnGpu) comes with its
 // list unsorted (DrawList::orderPending), the GPU sorts its particles back to front first, and
-// its bins wait for the pass (deferBins()). The pass sets each particle up once (a compute
+// its bins wait for the pass (deferBins()), where the GPU works them out (gpuBins()). The pass sets each particle up once (a compute
 // dispatch, one invocation per particle: what the vertex shader works out), then dispatches one work group per tile that holds particles (one invocation per pixel:
 // one scene-depth fetch per pixel, the particles' records read in order, the blend in registers,
 // stopped once the pixel is opaque) into the plugin's own RGBA16F image, and draws those tiles
@@ -135,8 +135,8 @@ public:
     /// Deferred bins. A view the GPU orders (ordersOnGpu, DrawList::orderPending) in a frame graph
     /// (not the immediate path) is binned when its passes run, not when it is declared: its first
     /// pass (kSetupPass) uploads the instances, issues the particles' order and records (which
-    /// need no bins) and flushes; the second (kPass) bins on the host's threads, then writes the
-    /// lists and shades the tiles. The GPU works through the scene's passes and those dispatches
+    /// need no bins) and flushes; the second (kPass) bins on the host's threads (or reads back the
+    /// GPU's bins, gpuBins()), then writes the lists and shades the tiles. The GPU works through the scene's passes and those dispatches
     /// meanwhile, where a frame that bins while declaring leaves it idle until its first pass
     /// (fxbench's "declare"; bench_draw: binning 256,000 particles takes 1.3 ms on the H200's
     /// host's 16 threads, docs/results.md session 29). Two passes, not one, so that the time the
