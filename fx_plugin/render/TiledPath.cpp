@@ -95,9 +95,13 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
     if (lit && !litOk()) return false;
     // An unsorted list's lists can only come from the GPU, which sorts its particles first.
     if (record->list.orderPending && !sort_.orderOk()) return false;
-    // The bins of a view the GPU orders wait for the pass (see deferBins()); the immediate path
-    // (renderView) bins here, where its scene depth copy is narrowed to them.
-    const bool deferred = record->list.orderPending && fallback && deferBins() && !dynamic_cast<ImmediateFrame*>(&frame);
+    // The bins of a view the GPU orders wait for the pass (see deferBins()). The immediate path
+    // (renderView) bins here where the host's threads bin it, so that its copy of the scene depth
+    // is narrowed to them; where the GPU bins it (gpuBins()) it waits too, and the copy is the
+    // view's (the bins are known only once the passes run).
+    const bool immediate = dynamic_cast<ImmediateFrame*>(&frame) != nullptr;
+    const bool deferred =
+        record->list.orderPending && fallback && deferBins() && (!immediate || (gpuBins() && sort_.binsOk()));
     if (!deferred) {
         TileBins::Range ranges[kMaxBatches];
         const int batchCount = batchRanges(*record, ranges);

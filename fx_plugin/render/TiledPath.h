@@ -133,7 +133,7 @@ public:
                  Fallback fallback = nullptr);
 
     /// Deferred bins. A view the GPU orders (ordersOnGpu, DrawList::orderPending) in a frame graph
-    /// (not the immediate path) is binned when its passes run, not when it is declared: its first
+    /// (in the immediate path only where the GPU bins it, gpuBins()) is binned when its passes run, not when it is declared: its first
     /// pass (kSetupPass) uploads the instances, issues the particles' order and records (which
     /// need no bins) and flushes; the second (kPass) bins on the host's threads (or reads back the
     /// GPU's bins, gpuBins()), then writes the lists and shades the tiles. The GPU works through the scene's passes and those dispatches
@@ -164,8 +164,10 @@ public:
     /// words. The lists are binParticles' bit for bit where the GPU's division rounds as the CPU's
     /// (llvmpipe: TileSortTest), and the picture is the same either way: a bound a rounding off
     /// moves at most a tile of the pixel it is grown by, where the particle draws nothing.
-    /// On unless CUBEFX_TILED_GPU_BINS=0 or setGpuBins(false), for A/B runs on a GPU; without its
-    /// two programs (TileSort::binsOk) the host's threads bin as before.
+    /// renderView's views too (its scene depth copy then covers the view: the bins are known only
+    /// once the passes run; on the host's threads they are binned while declared, the copy narrowed
+    /// to them). On unless CUBEFX_TILED_GPU_BINS=0 or setGpuBins(false), for A/B runs on a GPU;
+    /// without its two programs (TileSort::binsOk) the host's threads bin as before.
     static bool gpuBins();
     static void setGpuBins(bool on);
     static void resetGpuBins();           ///< back to the environment's, or on

@@ -17,6 +17,7 @@
 #include "../../fx_plugin/render/ImmediateFrame.h"
 #include "../../fx_plugin/render/ImmediateRenderer.h"
 #include "../../fx_plugin/render/SceneDepthSource.h"
+#include "../../fx_plugin/render/TiledPath.h"
 
 namespace fxtest {
 namespace immediate {  // named: the fx_host tests build as unity batches
@@ -227,6 +228,50 @@ TEST_F(ImmediateRendererTest, DepthIsMadeOnlyWhereThePassesReadIt) {
         EXPECT_GE(psnr(image, reference), kDepthSourceMinPsnr);
         std::printf("  %-10s region [%d, %d) x [%d, %d) of %dx%d (%.0f %%), max |diff| %d/255\n", m.label, r.x0, r.x1,
                     r.y0, r.y1, W, H, 100.0 * area / (W * H), maxAbsDiff(image, reference));
+    }
+}
+
+// renderView's tiled views whose particles the GPU orders (forced here: llvmpipe orders on the
+// CPU) are binned by the GPU in their passes (TiledPath::gpuBins), and the depth they read is then
+// the whole view's (the bins are known only once the passes run); on the host's threads they are
+// binned while declared, the copy narrowed to them. The same picture either way, and the frame
+// graph's bit for bit where the host hands in its linear depth.
+TEST_F(ImmediateRendererTest, TiledViewsTheGpuOrdersAreBinnedByTheGpu) {
+    struct Back {
+        ~Back() {
+            fx::TiledPath::resetCpuListLimit();
+            fx::TileSort::resetOrderLimit();
+            fx::TiledPath::resetGpuBins();
+        }
+    } back;
+    fx::TiledPath::setCpuListLimit(0);
+    fx::TileSort::setOrderLimit(0);
+    HostTarget host24(kW, kH, GL_DEPTH_COMPONENT24);
+    for (const RenderMode& m : {kModes[6], kModes[7], kModes[8]}) {
+        SCOPED_TRACE(m.label);
+        setMode(m);
+        const Image reference = render(true);
+        ASSERT_GT(plugin->stats().particlesDrawn, 0);
+        const GLuint linear = graphLinearDepth();
+        Image images[2], copied[2];
+        bool whole[2] = {};
+        for (int gpu = 1; gpu >= 0; --gpu) {
+            fx::TiledPath::setGpuBins(gpu == 1);
+            const uint64_t binned = fx::TiledPath::gpuBinnedViews(), deferred = fx::TiledPath::deferredBinViews();
+            ASSERT_EQ(drawImmediate(graph.colorFramebuffer(), immediateView(Source::LinearR32F, linear)),
+                      fx::ErrorCode::None);
+            images[gpu] = graph.readColor();
+            EXPECT_EQ(fx::TiledPath::gpuBinnedViews(), binned + uint64_t(gpu)) << "gpu " << gpu;
+            EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + uint64_t(gpu)) << "binned in its pass only by the GPU";
+            ASSERT_EQ(drawImmediate(host24.fbo, immediateView(Source::BoundFramebuffer)), fx::ErrorCode::None);
+            copied[gpu] = readFramebuffer(host24.fbo, kW, kH);
+            whole[gpu] = immediate->lastDepthRegion().whole;
+        }
+        EXPECT_EQ(maxAbsDiff(images[1], reference), 0) << "bit for bit with the same linear depth";
+        EXPECT_EQ(maxAbsDiff(images[0], reference), 0);
+        EXPECT_EQ(maxAbsDiff(copied[1], copied[0]), 0) << "the whole view's depth or the bins' part of it";
+        EXPECT_LE(maxAbsDiff(copied[1], reference), kDepthSourceTolerance);
+        EXPECT_TRUE(whole[1]) << "binned by the GPU: the whole view's depth";
     }
 }
 
