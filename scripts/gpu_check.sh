@@ -11,6 +11,7 @@
 # particle sweep of the tiled modes: parts/tiled_sweep.json, and the tiled path's list limit in
 # three settings: parts/lists_*.json; lit smoke rasterised and tiled: parts/lit_*.json; the tiled
 # path's bins while declared, in its pass on the host's threads or by the GPU: parts/bins_*.json;
+# the tiled pass's GPU time by stage at 64,000 and 256,000 particles: parts/stages.txt;
 # quarter res's choice in its pass or
 # while declared: parts/choice_*.json; where
 # bench_draw was packed too, its bins, cull and bound on the host's threads: parts/bench_draw.json).
@@ -58,6 +59,15 @@ for round in 1 2; do
     echo "bins $way round $round rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
   done
 done
+# Where the tiled pass's GPU time goes at scale (TiledStageTimes, session 35): each stage of a view
+# binned in its pass timed with GL_TIMESTAMP queries, the medians of 64 views in the log line
+# "fx: tiled stages, GPU ms": order, records, bins, wait, emit, pair sort, shade, composite.
+s=$(date +%s)
+CUBEFX_TILED_STAGE_TIMES=1 timeout 90 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 \
+    --sweep particles=64000,256000 --frames 66 --rounds 1 --warmup 2 --error-frames 0 --modes soft+tiled \
+    > "$out/parts/stages.txt" 2>&1
+echo "stage times rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+grep "tiled stages" "$out/parts/stages.txt" | tee -a "$out/parts.log"
 # Quarter res's choice in the view's first pass (session 34, QuarterResPath::choiceInPass), after the
 # scene went to the GPU, against chosen while declared (CUBEFX_QUARTER_CHOICE_IN_PASS=0), in
 # alternating processes: #36's soft+quarter / soft at 1,000 particles (1.058 in session 29, the

@@ -31,6 +31,7 @@ ParticleRenderer::ParticleRenderer(RendererConfig config, ProgramCache& programs
       fullRes_(draw_, sizeMismatchTo(config_.errors)),
       quarter_(draw_, sizeMismatchTo(config_.errors)),
       tiled_(draw_, sizeMismatchTo(config_.errors)) {
+    tiled_.setStageLog([this](const std::string& line) { log(LogLevel::Info, line); });
     draw_.setJobs(config_.jobs);
 }
 

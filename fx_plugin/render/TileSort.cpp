@@ -291,7 +291,8 @@ void TileSort::orderParticles(uint32_t n, const TileBins& bins) {
     gGpuOrderedViews.fetch_add(1, std::memory_order_relaxed);
 }
 
-uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs, const DepthOrder* order) {
+uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs, const DepthOrder* order,
+                       const std::function<void()>& afterEmit) {
     const bool sorted = sorted_;
     sorted_ = false;  // taken here (or dropped: a view that is not drawn)
     if (!ok() || !fits(bins) || (order && !orderOk())) return 0;
@@ -332,6 +333,7 @@ uint32_t TileSort::run(const TileBins& bins, const Jobs& jobs, const DepthOrder*
     glUniform1i(emitU_.tilesX, bins.tilesX);
     dispatch((pairs + kGroup - 1) / kGroup, emitU_.groupsX);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    if (afterEmit) afterEmit();
 
     // 2. The radix passes by tile, from keys_/entries_[0] to [1] and back.
     const int passCount = passes(bins.tilesX * bins.tilesY);

@@ -29,6 +29,7 @@
 // (TiledPath's ComputeBindingsScope). Context current.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 
 #include <glm/glm.hpp>
 
@@ -90,7 +91,9 @@ public:
     /// With `order` (orderOk() only, else 0), bins of an unsorted list, binned as it lies with
     /// Fill::Ranges (two words a particle; else 0): the particles are put in front-to-back order
     /// first (above). Without, bins of four words a particle (Pairs).
-    uint32_t run(const TileBins& bins, const Jobs& jobs = Jobs(), const DepthOrder* order = nullptr);
+    /// `afterEmit` (TiledStageTimes): called once the pairs are written, before their radix passes.
+    uint32_t run(const TileBins& bins, const Jobs& jobs = Jobs(), const DepthOrder* order = nullptr,
+                 const std::function<void()>& afterEmit = nullptr);
     /// The first half of run() with `order`, which needs no bins: each particle's key and the
     /// radix passes over them (orderOk() only). `places`: the bins' orderStart, batchLast and
     /// batchCount (placeBatches). Issued before the bins are worked out, the GPU sorts while the

@@ -229,7 +229,9 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
     const int batchCount = batchRanges(v, ranges);
     if (deferred && !setUp) {
         if (placeBatches(ranges, batchCount, &bins) < 0) return false;
+        stageTimes_.begin(uint32_t(count));
         sort_.sortParticles(uint32_t(count), order, bins);
+        stageTimes_.mark(TiledStageTimes::Ordered);
     }
 
     // What the pass reads.
@@ -339,6 +341,7 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
         const int groupsX = std::min(groups, 65535);  // the least GL_MAX_COMPUTE_WORK_GROUP_COUNT
         glUniform1i(u.groupsX, groupsX);
         glDispatchCompute(GLuint(groupsX), GLuint((groups + groupsX - 1) / groupsX), 1);
+        if (deferred) stageTimes_.mark(TiledStageTimes::Recorded);
     }
 
     // The GPU's bins (gpuBins()), queued behind the order and the records: the next pass reads
@@ -350,6 +353,7 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
         gpuBinned_ = sort_.binOnGpu(view, instanceBuffer_, uint32_t(count), spheres, reach, bins, &tileBuffer_,
                                     &tileCapacity_);
     }
+    if (deferred && !setUp) stageTimes_.mark(TiledStageTimes::Binned);
 
     if (stage == Stage::Setup) {
         // The first pass's work to the GPU, which does it while the host's threads bin in the next.
@@ -379,6 +383,7 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
             return false;
         }
         gDeferredBinViews.fetch_add(1, std::memory_order_relaxed);
+        stageTimes_.mark(TiledStageTimes::TilesStart);
         if (bins.tileCount() == 0) {
             sort_.dropOrder();
             return true;  // nothing on screen
@@ -393,7 +398,9 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
         entries = entryBuffer_;
         gCpuListViews.fetch_add(1, std::memory_order_relaxed);
     } else {
-        entries = sort_.run(bins, draw_.jobs(), v.list.orderPending ? &order : nullptr);
+        entries = sort_.run(bins, draw_.jobs(), v.list.orderPending ? &order : nullptr,
+                            [this] { stageTimes_.mark(TiledStageTimes::Emitted); });
+        stageTimes_.mark(TiledStageTimes::Sorted);
         gGpuSortedViews.fetch_add(1, std::memory_order_relaxed);
     }
     if (!entries) return true;
@@ -430,6 +437,7 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
         glUniform1i(u.groupsX, groupsX);
         glDispatchCompute(GLuint(groupsX), GLuint(groupsY), 1);
     }
+    stageTimes_.mark(TiledStageTimes::Shaded);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
     // The covered tiles onto sceneColor.
@@ -450,6 +458,11 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(bins.cover.vertices.size() * sizeof(float)), bins.cover.vertices.data(),
                  GL_STREAM_DRAW);
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(bins.cover.vertices.size() / 2));
+    if (deferred) {
+        stageTimes_.end();
+        const std::string report = stageTimes_.takeReport();
+        if (!report.empty() && stageLog_) stageLog_(report);
+    }
     return true;
 }
 

@@ -48,6 +48,7 @@
 #include "ParticleDraw.h"
 #include "RendererConfig.h"
 #include "TileSort.h"
+#include "TiledStageTimes.h"
 
 namespace fx {
 
@@ -173,6 +174,8 @@ public:
     static void resetGpuBins();           ///< back to the environment's, or on
     static const char* gpuBinsProblem();  ///< what was wrong with CUBEFX_TILED_GPU_BINS, or null
     static uint64_t gpuBinnedViews();     ///< views the GPU binned, since the process started
+    /// Where TiledStageTimes' reports go (the renderer's log); none: not reported.
+    void setStageLog(std::function<void(const std::string&)> log) { stageLog_ = std::move(log); }
 
 private:
     // What run() does of a view: all of it in one pass (Whole, its bins made while declaring);
@@ -191,6 +194,8 @@ private:
     SizeMismatchReport sizeMismatch_;
     const ParticleView* setUpView_ = nullptr;  ///< the view whose Setup stage ran last, until a stage runs again
     bool gpuBinned_ = false;  ///< that Setup stage (or this Tiles stage) issued the GPU's bins
+    TiledStageTimes stageTimes_;  ///< CUBEFX_TILED_STAGE_TIMES=1: a deferred view's GPU time by stage
+    std::function<void(const std::string&)> stageLog_;
     uint32_t setup_ = 0, shade_ = 0, composite_ = 0, setupLit_ = 0, shadeLit_ = 0;
     bool software_ = false;  ///< the context is a software rasterizer (bind()): cpuListLimit's default
     struct ShadeUniforms {

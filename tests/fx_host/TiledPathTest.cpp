@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,7 @@
 #include "render/FullResPath.h"
 #include "render/TileSort.h"
 #include "render/TiledPath.h"
+#include "render/TiledStageTimes.h"
 
 namespace fxtest {
 namespace tiled_path_test {  // named: the fx_host tests build as unity batches
@@ -238,6 +241,58 @@ TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
         }
         EXPECT_GT(smoke, kW * kH / 10) << "too little smoke: the comparison would prove little";
     }
+}
+
+// CUBEFX_TILED_STAGE_TIMES=1 (TiledStageTimes::set): a view binned in its pass is timed stage by
+// stage with GL_TIMESTAMP queries, read a few views later without a stall and reported as medians
+// in the renderer's log, each of the eight stages named with a time of 0 or more (llvmpipe's
+// timestamps say nothing more); off, nothing is reported; a view binned while declared is not
+// timed.
+TEST_F(TiledPathTest, StageTimesAreLoggedForViewsBinnedInTheirPass) {
+    struct Back {
+        ~Back() {
+            fx::TiledPath::resetCpuListLimit();
+            fx::TileSort::resetOrderLimit();
+            fx::TiledStageTimes::reset();
+            fx::TiledStageTimes::setReportEvery(64);
+        }
+    } back;
+    direct.set(ringOfPuffs(0.5f, 0.9f));
+    TestFrameGraph graph(kW, kH, true, true);
+    TestScene scene = reversedGround();
+    fx::ViewInfo view = makeView(glm::vec3(0.0f, 2.5f, 6.0f), glm::vec3(0.0f, 0.5f, -1.0f), kW, kH);
+    useReversedZ(&view);
+    auto reports = [&] {
+        std::vector<std::string> lines;
+        for (const std::string& m : host.messages()) {
+            if (m.find("fx: tiled stages, GPU ms") != std::string::npos) lines.push_back(m);
+        }
+        return lines;
+    };
+    fx::TiledPath::setCpuListLimit(0);
+    fx::TileSort::setOrderLimit(0);
+    fx::TiledStageTimes::setReportEvery(3);
+    fx::TiledStageTimes::set(false);
+    for (int frame = 0; frame < 8; ++frame) draw(direct, graph, scene, view, true);
+    EXPECT_TRUE(graph.ran(fx::TiledPath::kSetupPass));
+    EXPECT_TRUE(reports().empty()) << "off by default";
+    fx::TiledStageTimes::set(true);
+    for (int frame = 0; frame < 12; ++frame) draw(direct, graph, scene, view, true);
+    const std::vector<std::string> lines = reports();
+    ASSERT_GE(lines.size(), 2u) << "12 views, a report every 3 (read a few views late)";
+    for (const std::string& line : lines) {
+        EXPECT_NE(line.find("median of 3 views, 24 particles"), std::string::npos) << line;
+        for (const char* stage : fx::TiledStageTimes::kStageNames) {
+            const size_t at = line.find(std::string(" ") + stage + " ");
+            ASSERT_NE(at, std::string::npos) << stage << " in " << line;
+            EXPECT_GE(std::atof(line.c_str() + at + std::strlen(stage) + 2), 0.0) << line;
+        }
+    }
+    // Binned while declared (one pass): not timed.
+    fx::TiledPath::setDeferBins(false);
+    for (int frame = 0; frame < 8; ++frame) draw(direct, graph, scene, view, true);
+    fx::TiledPath::resetDeferBins();
+    EXPECT_EQ(reports().size(), lines.size());
 }
 
 // Each blend mode, with linear fog, billboards and spheres: the tint, the fog's colour and the
