@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# A session's whole GPU check in one device call (about four minutes of device time on
-# an H200: ../shared/gpu/run-all.sh's tables, then scripts/shader_parts.sh's runs), so a lent
-# machine's fifteen minutes hold it with room for a rerun. It needs no python3 there.
+# A session's whole GPU check in one device call (../shared/gpu/run-all.sh's tables, then the
+# blocks below, most wanted first, each started only while the call has time left: at most about
+# ten minutes of device time, so a lent machine's fifteen hold it). It needs no python3 there.
 # Here, after a build:
 #   ../shared/gpu/pack.sh && scripts/shader_parts.sh --prepare .gpu/parts
 # The device call, with .gpu carried along:
@@ -25,93 +25,140 @@ if [ ! -f .gpu/run-all.sh ] || [ ! -f .gpu/parts/variants ]; then
     echo "gpu_check.sh: pack first: ../shared/gpu/pack.sh && scripts/shader_parts.sh --prepare .gpu/parts" >&2
     exit 1
 fi
-bash .gpu/run-all.sh
-s=$(date +%s)
-FXBENCH="bash .gpu/run-egl.sh fxbench" timeout 300 bash scripts/shader_parts.sh --run .gpu/parts "$out/parts" \
-    --backend egl --size 1920x1080 > "$out/parts.log" 2>&1
-echo "shader_parts rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
-# The tiled compute path (TiledPath.h) against the raster one as the particle count grows: run-all's
-# tables have the tiled modes at their scenes' counts, its sweep not. 256,000: where session 24's
-# CPU binning (37 ms outside the passes) bounded it; since session 25 the GPU writes the lists.
+# The blocks run in the order below, most wanted first, each only while the call has time left:
+# the run tool stops a command at 600 s, and what is not packed by then does not come back (the
+# tables of run-all.sh are packed by it). A block starts only before kBudget seconds.
+start=$(date +%s)
+kBudget=${GPU_CHECK_BUDGET:-470}
 mkdir -p "$out/parts"
-s=$(date +%s)
-timeout 150 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 --sweep particles=1000,16000,64000,256000 \
-    --frames 6 --error-frames 0 --modes hard,soft,soft+tiled,spherical,spherical+tiled \
-    --json "$out/parts/tiled_sweep.json" > "$out/parts/tiled_sweep.txt" 2>&1
-echo "tiled sweep rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
-# Where a view the GPU orders is binned (sessions 32-35): while declared on the host's threads
-# (CUBEFX_TILED_DEFER_BINS=0), in its second pass on the host's threads (CUBEFX_TILED_GPU_BINS=0),
-# or by the GPU, queued in its first pass behind the order and the records and read back in the
-# second (the default since session 35, TiledPath::gpuBins), in alternating processes. Compare the
-# frames first; since session 33 the time the GPU idles while the CPU bins falls between the two
-# passes (outside), so "outside" is comparable too; the GPU's read-back wait falls there as well.
-s=$(date +%s)
-for round in 1 2; do
-  for way in declared cpu gpu; do
-    case $way in
-      declared) env="CUBEFX_TILED_DEFER_BINS=0" ;;
-      cpu) env="CUBEFX_TILED_GPU_BINS=0" ;;
-      gpu) env="CUBEFX_TILED_GPU_BINS=1" ;;
-    esac
-    env $env timeout 90 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 \
-        --sweep particles=16000,64000,256000 --frames 8 --error-frames 0 --modes hard,soft+tiled \
-        --json "$out/parts/bins_${way}_${round}.json" > "$out/parts/bins_${way}_${round}.txt" 2>&1
-    echo "bins $way round $round rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
-  done
-done
-# Where the tiled pass's GPU time goes at scale (TiledStageTimes, session 35): each stage of a view
-# binned in its pass timed with GL_TIMESTAMP queries, the medians of 64 views in the log line
-# "fx: tiled stages, GPU ms": order, records, bins, wait, emit, pair sort, shade, composite.
-s=$(date +%s)
-CUBEFX_TILED_STAGE_TIMES=1 timeout 90 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 \
-    --sweep particles=64000,256000 --frames 66 --rounds 1 --warmup 2 --error-frames 0 --modes soft+tiled \
-    > "$out/parts/stages.txt" 2>&1
-echo "stage times rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
-grep "tiled stages" "$out/parts/stages.txt" | tee -a "$out/parts.log"
-# Quarter res's choice in the view's first pass (session 34, QuarterResPath::choiceInPass), after the
-# scene went to the GPU, against chosen while declared (CUBEFX_QUARTER_CHOICE_IN_PASS=0), in
-# alternating processes: #36's soft+quarter / soft at 1,000 particles (1.058 in session 29, the
-# bound's 65 us of CPU before any GPU work) and a point where quarter res pays.
-s=$(date +%s)
-for round in 1 2; do
-  for c in 0 1; do
-    CUBEFX_QUARTER_CHOICE_IN_PASS=$c timeout 60 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 \
-        --sweep particles=1000,64000 --frames 20 --error-frames 0 --modes hard,soft,soft+quarter \
-        --json "$out/parts/choice_${c}_${round}.json" > "$out/parts/choice_${c}_${round}.txt" 2>&1
-    echo "quarter choice in pass $c round $round rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
-  done
-done
-# Where the tiled path's lists stop being the CPU's (TiledPath::kCpuListEntries, 0 by default since
-# session 28): the GPU sort always (0), the old default, and the CPU's up to 4 M entries, in the scenes
-# whose lists are long (fill at 1080p: about 520,000 entries; standard at 4K: about 277,000).
-s=$(date +%s)
-for lim in 0 131072 4194304; do
-  for sc in "fill 1920x1080" "standard 3840x2160"; do
-    set -- $sc
-    CUBEFX_TILED_CPU_LISTS=$lim timeout 60 bash .gpu/run-egl.sh fxbench --backend egl --scenario "$1" --size "$2" \
-        --frames 10 --error-frames 0 --modes hard,soft+tiled,spherical+tiled \
-        --json "$out/parts/lists_${1}_${lim}.json" > "$out/parts/lists_${1}_${lim}.txt" 2>&1
-    echo "lists $1 $2 limit $lim rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
-  done
-done
-# Lit smoke, rasterised and tiled (the game's drive lights its smoke, and Tiling::Auto now tiles it
-# on a GPU): the standard scene at 1080p and 4K.
-s=$(date +%s)
-for size in 1920x1080 3840x2160; do
-  timeout 60 bash .gpu/run-egl.sh fxbench --backend egl --scenario standard --size "$size" --frames 10 \
-      --error-frames 0 --modes hard,soft-lit,soft-lit+tiled,spherical-lit,spherical-lit+tiled \
-      --json "$out/parts/lit_${size}.json" > "$out/parts/lit_${size}.txt" 2>&1
-  echo "lit $size rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
-done
-# The view's CPU work on the GPU host's threads (session 31: the cull and bins of 16,000 particles
-# in seven pieces, not one; the bound in three): bench_draw's job-system rows, 1 thread to all.
-if [ -x .gpu/bin/bench_draw ]; then
-  s=$(date +%s)
-  timeout 120 bash .gpu/run-egl.sh bench_draw \
-      --benchmark_filter='BM_TileBins/(16000|256000)/|BM_DrawListBuildJobs/(16000|256000)/|BM_ScreenRectJobs/(16000|256000)/' \
-      --benchmark_min_time=0.1 --benchmark_out="$out/parts/bench_draw.json" --benchmark_out_format=json \
-      > "$out/parts/bench_draw.txt" 2>&1
-  echo "bench_draw rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
-fi
-tar czf "$out/parts.tgz" -C "$out" parts parts.log && rm -rf "$out/parts" "$out/parts.log"
+: > "$out/parts.log"
+pack() {
+    [ -d "$out/parts" ] || return 0
+    tar czf "$out/parts.tgz" -C "$out" parts parts.log && rm -rf "$out/parts" "$out/parts.log"
+}
+trap pack EXIT
+block() {
+    local elapsed=$(( $(date +%s) - start ))
+    if [ "$elapsed" -ge "$kBudget" ]; then
+        echo "skipped $1: ${elapsed}s of ${kBudget}s gone" | tee -a "$out/parts.log"
+        return 0
+    fi
+    "$1"
+}
+shader_parts_runs() {
+    s=$(date +%s)
+    local limit=$(( 570 - ($(date +%s) - start) ))
+    [ "$limit" -le 300 ] || limit=300
+    FXBENCH="bash .gpu/run-egl.sh fxbench" timeout "$limit" bash scripts/shader_parts.sh --run .gpu/parts "$out/parts" \
+        --backend egl --size 1920x1080 >> "$out/parts.log" 2>&1
+    echo "shader_parts rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+}
+tiled_sweep() {
+    # The tiled compute path (TiledPath.h) against the raster one as the particle count grows: run-all's
+    # tables have the tiled modes at their scenes' counts, its sweep not. 256,000: where session 24's
+    # CPU binning (37 ms outside the passes) bounded it; since session 25 the GPU writes the lists.
+    s=$(date +%s)
+    timeout 150 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 --sweep particles=1000,16000,64000,256000 \
+        --frames 6 --error-frames 0 --modes hard,soft,soft+tiled,spherical,spherical+tiled \
+        --json "$out/parts/tiled_sweep.json" > "$out/parts/tiled_sweep.txt" 2>&1
+    echo "tiled sweep rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+}
+bins_ab() {
+    # Where a view the GPU orders is binned (sessions 32-35): while declared on the host's threads
+    # (CUBEFX_TILED_DEFER_BINS=0), in its second pass on the host's threads (CUBEFX_TILED_GPU_BINS=0),
+    # or by the GPU, queued in its first pass behind the order and the records and read back in the
+    # second (the default since session 35, TiledPath::gpuBins), in alternating processes. Compare the
+    # frames first; since session 33 the time the GPU idles while the CPU bins falls between the two
+    # passes (outside), so "outside" is comparable too; the GPU's read-back wait falls there as well.
+    s=$(date +%s)
+    for round in 1 2; do
+      for way in declared cpu gpu; do
+        case $way in
+          declared) env="CUBEFX_TILED_DEFER_BINS=0" ;;
+          cpu) env="CUBEFX_TILED_GPU_BINS=0" ;;
+          gpu) env="CUBEFX_TILED_GPU_BINS=1" ;;
+        esac
+        env $env timeout 90 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 \
+            --sweep particles=16000,64000,256000 --frames 8 --error-frames 0 --modes hard,soft+tiled \
+            --json "$out/parts/bins_${way}_${round}.json" > "$out/parts/bins_${way}_${round}.txt" 2>&1
+        echo "bins $way round $round rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+      done
+    done
+}
+stage_times() {
+    # Where the tiled pass's GPU time goes at scale (TiledStageTimes, session 35): each stage of a view
+    # binned in its pass timed with GL_TIMESTAMP queries, the medians of 64 views in the log line
+    # "fx: tiled stages, GPU ms": order, records, bins, wait, emit, pair sort, shade, composite.
+    s=$(date +%s)
+    CUBEFX_TILED_STAGE_TIMES=1 timeout 90 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 \
+        --sweep particles=64000,256000 --frames 66 --rounds 1 --warmup 2 --error-frames 0 --modes soft+tiled \
+        > "$out/parts/stages.txt" 2>&1
+    echo "stage times rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+    grep "tiled stages" "$out/parts/stages.txt" | tee -a "$out/parts.log"
+}
+choice_ab() {
+    # Quarter res's choice in the view's first pass (session 34, QuarterResPath::choiceInPass), after the
+    # scene went to the GPU, against chosen while declared (CUBEFX_QUARTER_CHOICE_IN_PASS=0), in
+    # alternating processes: #36's soft+quarter / soft at 1,000 particles (1.058 in session 29, the
+    # bound's 65 us of CPU before any GPU work) and a point where quarter res pays.
+    s=$(date +%s)
+    for round in 1 2; do
+      for c in 0 1; do
+        CUBEFX_QUARTER_CHOICE_IN_PASS=$c timeout 60 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 \
+            --sweep particles=1000,64000 --frames 20 --error-frames 0 --modes hard,soft,soft+quarter \
+            --json "$out/parts/choice_${c}_${round}.json" > "$out/parts/choice_${c}_${round}.txt" 2>&1
+        echo "quarter choice in pass $c round $round rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+      done
+    done
+}
+list_limits() {
+    # Where the tiled path's lists stop being the CPU's (TiledPath::kCpuListEntries, 0 by default since
+    # session 28): the GPU sort always (0), the old default, and the CPU's up to 4 M entries, in the scenes
+    # whose lists are long (fill at 1080p: about 520,000 entries; standard at 4K: about 277,000).
+    s=$(date +%s)
+    for lim in 0 131072 4194304; do
+      for sc in "fill 1920x1080" "standard 3840x2160"; do
+        set -- $sc
+        CUBEFX_TILED_CPU_LISTS=$lim timeout 60 bash .gpu/run-egl.sh fxbench --backend egl --scenario "$1" --size "$2" \
+            --frames 10 --error-frames 0 --modes hard,soft+tiled,spherical+tiled \
+            --json "$out/parts/lists_${1}_${lim}.json" > "$out/parts/lists_${1}_${lim}.txt" 2>&1
+        echo "lists $1 $2 limit $lim rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+      done
+    done
+}
+lit_smoke() {
+    # Lit smoke, rasterised and tiled (the game's drive lights its smoke, and Tiling::Auto now tiles it
+    # on a GPU): the standard scene at 1080p and 4K.
+    s=$(date +%s)
+    for size in 1920x1080 3840x2160; do
+      timeout 60 bash .gpu/run-egl.sh fxbench --backend egl --scenario standard --size "$size" --frames 10 \
+          --error-frames 0 --modes hard,soft-lit,soft-lit+tiled,spherical-lit,spherical-lit+tiled \
+          --json "$out/parts/lit_${size}.json" > "$out/parts/lit_${size}.txt" 2>&1
+      echo "lit $size rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+    done
+}
+bench_draw_rows() {
+    # The view's CPU work on the GPU host's threads (session 31: the cull and bins of 16,000 particles
+    # in seven pieces, not one; the bound in three): bench_draw's job-system rows, 1 thread to all.
+    if [ -x .gpu/bin/bench_draw ]; then
+      s=$(date +%s)
+      timeout 120 bash .gpu/run-egl.sh bench_draw \
+          --benchmark_filter='BM_TileBins/(16000|256000)/|BM_DrawListBuildJobs/(16000|256000)/|BM_ScreenRectJobs/(16000|256000)/' \
+          --benchmark_min_time=0.1 --benchmark_out="$out/parts/bench_draw.json" --benchmark_out_format=json \
+          > "$out/parts/bench_draw.txt" 2>&1
+      echo "bench_draw rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+    fi
+}
+
+bash .gpu/run-all.sh
+block bins_ab
+block stage_times
+block choice_ab
+block tiled_sweep
+block shader_parts_runs
+block list_limits
+block lit_smoke
+block bench_draw_rows
+pack
+trap - EXIT
 ls -la "$out"
