@@ -356,15 +356,17 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
     if (deferred && !setUp) stageTimes_.mark(TiledStageTimes::Binned);
 
     if (stage == Stage::Setup) {
-        // The first pass's work to the GPU, which does it while the host's threads bin in the next.
+        // The first pass's work to the GPU, which does it while the next pass waits for its bins
+        // (or, without the GPU's, while the host's threads bin them there).
         glFlush();
         v.tiledSetUp = true;
         setUpView_ = &v;
         return true;
     }
 
-    // Deferred bins, now that the GPU has the scene, the records and the particles' order to work
-    // on: flushed (by the first pass, or here), so that it does while the host's threads bin.
+    // Deferred bins, now that the GPU has the scene, the particles' order, their records and (where
+    // it bins them) the bins to work on: flushed (by the first pass, or here), so that it does
+    // while the host's threads bin, or until the read-back below.
     if (deferred) {
         if (!setUp) glFlush();
         bool binned = false;
@@ -398,9 +400,10 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
         entries = entryBuffer_;
         gCpuListViews.fetch_add(1, std::memory_order_relaxed);
     } else {
-        entries = sort_.run(bins, draw_.jobs(), v.list.orderPending ? &order : nullptr,
-                            [this] { stageTimes_.mark(TiledStageTimes::Emitted); });
-        stageTimes_.mark(TiledStageTimes::Sorted);
+        entries = sort_.run(bins, draw_.jobs(), v.list.orderPending ? &order : nullptr, [this, deferred] {
+            if (deferred) stageTimes_.mark(TiledStageTimes::Emitted);
+        });
+        if (deferred) stageTimes_.mark(TiledStageTimes::Sorted);
         gGpuSortedViews.fetch_add(1, std::memory_order_relaxed);
     }
     if (!entries) return true;
@@ -437,7 +440,7 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
         glUniform1i(u.groupsX, groupsX);
         glDispatchCompute(GLuint(groupsX), GLuint(groupsY), 1);
     }
-    stageTimes_.mark(TiledStageTimes::Shaded);
+    if (deferred) stageTimes_.mark(TiledStageTimes::Shaded);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
     // The covered tiles onto sceneColor.
