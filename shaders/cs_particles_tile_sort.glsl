@@ -13,8 +13,9 @@
 //   FX_TILE_BOUND, FX_TILE_LIST: the bins themselves (TileSort::binOnGpu, for a view whose particles
 //     the GPU orders): each particle's tile range as binParticles (TileBins.cpp) works it out, the
 //     same operations in the same order (FootprintMath.h), and its corners marked in a difference
-//     grid (BOUND, one invocation per particle); then one group adds the grid up into each tile's
-//     count and lists the tiles that hold particles, row-major, each with its first entry (LIST).
+//     grid (BOUND, one invocation per particle); then the grid is added up into each tile's count
+//     (LIST's first two phases: a group per row, then per column) and one group lists the tiles
+//     that hold particles, row-major, each with its first entry (its third).
 //   FX_TILE_ORDER_KEY, FX_TILE_ORDER_BATCH, FX_TILE_ORDER_PREFIX, FX_TILE_ORDER_ADD: the particles
 //     of a list built without its back-to-front sort (TileSort::DepthOrder) put in front-to-back
 //     order before the emit: a key per particle (its depth's bits), the radix passes above over
@@ -440,9 +441,34 @@ layout(std430, binding = 4) coherent buffer Grid { int uGrid[]; };
 // The tiles that hold particles, row-major: (tile x, tile y, first entry, entry count).
 layout(std430, binding = 1) writeonly buffer Listed { uvec4 uListed[]; };
 uniform ivec2 uTiles;
+uniform int uPhase;  // 0: the rows (a group each), 1: the columns (a group each), 2: the list (one group)
 const int kGridStart = 4;
 shared uint sTiles[1024];
 shared uint sEntries[1024];
+shared int sLine[1024];
+
+// Inclusive sums in place along one line of the grid (`length` cells from `first`, `step` apart),
+// a stretch a lane: each lane's sum, the lanes' sums scanned, each stretch's running sums written.
+void sumLine(int first, int step, int length) {
+    uint lane = gl_LocalInvocationID.x;
+    int stretch = (length + 1023) / 1024;
+    int begin = min(int(lane) * stretch, length), end = min(begin + stretch, length);
+    int sum = 0;
+    for (int i = begin; i < end; ++i) sum += uGrid[kGridStart + first + i * step];
+    sLine[lane] = sum;
+    barrier();
+    for (uint offset = 1u; offset < 1024u; offset <<= 1u) {
+        int before = lane >= offset ? sLine[lane - offset] : 0;
+        barrier();
+        sLine[lane] += before;
+        barrier();
+    }
+    int running = sLine[lane] - sum;
+    for (int i = begin; i < end; ++i) {
+        running += uGrid[kGridStart + first + i * step];
+        uGrid[kGridStart + first + i * step] = running;
+    }
+}
 
 // Inclusive sums over the group's lanes, saturating at 2^31 (entries past 2^31 - 1 fail the view).
 uint scan(uint value, bool entries) {
@@ -462,26 +488,17 @@ uint scan(uint value, bool entries) {
 void main() {
     uint lane = gl_LocalInvocationID.x;
     int tx = uTiles.x, ty = uTiles.y, stride = tx + 1;
-    // 1. Each row summed along, then each column down: each tile's count (binParticles' step 2).
-    for (int y = int(lane); y < ty; y += 1024) {
-        int row = 0;
-        for (int x = 0; x < tx; ++x) {
-            row += uGrid[kGridStart + y * stride + x];
-            uGrid[kGridStart + y * stride + x] = row;
-        }
+    // 1. Each row summed along (a group a row), then each column down (a group a column): each
+    // tile's count (binParticles' step 2), every line at once instead of one lane's loop each.
+    if (uPhase == 0) {
+        sumLine(int(gl_WorkGroupID.x) * stride, 1, tx);
+        return;
     }
-    memoryBarrierBuffer();
-    barrier();
-    for (int x = int(lane); x < tx; x += 1024) {
-        int column = 0;
-        for (int y = 0; y < ty; ++y) {
-            column += uGrid[kGridStart + y * stride + x];
-            uGrid[kGridStart + y * stride + x] = column;
-        }
+    if (uPhase == 1) {
+        sumLine(int(gl_WorkGroupID.x), stride, ty);
+        return;
     }
-    memoryBarrierBuffer();
-    barrier();
-    // 2. The tiles with entries in row-major order, a stretch a lane: its tiles and entries, the
+    // 2. (One group.) The tiles with entries in row-major order, a stretch a lane: its tiles and entries, the
     // lanes' sums scanned, then each stretch listed from its first place.
     uint count = uint(tx * ty);
     uint stretch = (count + 1023u) / 1024u;

@@ -132,6 +132,7 @@ void TileSort::bind(const ProgramCache& programs) {
         u.reachLodScale = glGetUniformLocation(program, "uReachLodScale");
         u.reachBuckets = glGetUniformLocation(program, "uReachBuckets");
         u.reach = glGetUniformLocation(program, "uReach");
+        u.phase = glGetUniformLocation(program, "uPhase");
     }
     binnedParticles_ = 0;
     GLint64 bytes = 0;
@@ -394,6 +395,16 @@ bool TileSort::binOnGpu(const ViewInfo& view, uint32_t instances, uint32_t parti
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTiles, *tileBuffer);
     glUseProgram(list_);
     glUniform2i(listU_.tiles, tilesX, tilesY);
+    // The grid summed along every row at once (a group each), then down every column, then the
+    // tiles listed by one group: a single group's lanes walking whole rows and columns one cell
+    // after another would put the grid's every cell in one chain of memory round trips.
+    glUniform1i(listU_.phase, 0);
+    glDispatchCompute(GLuint(tilesY), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glUniform1i(listU_.phase, 1);
+    glDispatchCompute(GLuint(tilesX), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glUniform1i(listU_.phase, 2);
     glDispatchCompute(1, 1, 1);
     // The tiles for the shade, the header for the CPU's read.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);

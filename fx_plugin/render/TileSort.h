@@ -152,7 +152,7 @@ private:
     struct BinUniforms {
         int groupsX = -1, particleCount = -1, batchCount = -1, orderStart = -1, batchLast = -1, sphereBatches = -1,
             view = -1, proj = -1, nearPlane = -1, viewSize = -1, tiles = -1, perspective = -1, reachLodScale = -1,
-            reachBuckets = -1, reach = -1;
+            reachBuckets = -1, reach = -1, phase = -1;
     };
     uint32_t bound_ = 0, list_ = 0;
     BinUniforms boundU_, listU_;

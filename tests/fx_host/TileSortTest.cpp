@@ -294,8 +294,8 @@ TEST_F(TileSortTest, ParticlesSortedOnTheGpuGiveTheCpuOrdersLists) {
 // bit for bit on this rasterizer: the entry count, the tiles and their runs, and (through run()
 // with the particles' order) the lists. Perspective views with and without a reach table (frames
 // 0-3 and out of range, buckets clamped both ways), an orthographic one (the corners' path), a
-// sphere across the near plane, particles off the view and behind it; then a view with nothing
-// on it, a particle that is not finite (refused, as binParticles refuses it), and the same
+// sphere across the near plane, particles off the view and behind it; views whose rows or columns
+// are longer than a group of the grid's sums; then a view with nothing on it, a particle that is not finite (refused, as binParticles refuses it), and the same
 // buffers reused by a smaller view after a larger one.
 TEST_F(TileSortTest, BinnedOnTheGpuAsOnTheCpu) {
     std::vector<std::string> errors;
@@ -383,6 +383,25 @@ TEST_F(TileSortTest, BinnedOnTheGpuAsOnTheCpu) {
         }
     }
     EXPECT_EQ(compared, 4 * int(std::size(kCases)));
+    // Rows and columns longer than a group (1,025 tiles: two cells a lane in the grid's sums).
+    for (const glm::ivec2 size : {glm::ivec2(16400, 32), glm::ivec2(32, 16400)}) {
+        SCOPED_TRACE(testing::Message() << size.x << "x" << size.y);
+        Scene s = sceneOf(3000, 3.0f, 31);
+        const fx::ViewInfo view = viewOf(size.x, size.y);
+        fx::TileBins cpu, gpu;
+        ASSERT_TRUE(fx::binParticles(view, s.particles.data(), s.ranges.data(), 3, nullptr, &cpu, fx::Jobs(),
+                                     fx::TileBins::Fill::Ranges));
+        ASSERT_GT(cpu.tileCount(), 0);
+        glBindBuffer(kShaderStorageBuffer, instances);
+        glBufferData(kShaderStorageBuffer, GLsizeiptr(s.particles.size() * sizeof(fx::ParticleInstance)),
+                     s.particles.data(), 0x88E0);
+        ASSERT_EQ(fx::placeBatches(s.ranges.data(), 3, &gpu), 3000);
+        ASSERT_TRUE(sort.binOnGpu(view, instances, 3000u, 4u, fx::BillboardReach{}, gpu, &tiles, &tileCapacity));
+        ASSERT_TRUE(sort.readGpuBins(&gpu));
+        EXPECT_EQ(gpu.entryCount, cpu.entryCount);
+        EXPECT_EQ(gpu.tiles, cpu.tiles);
+        EXPECT_EQ(gpu.cover.vertices, cpu.cover.vertices);
+    }
     // Nothing on the view: no tiles, no entries.
     {
         Scene s = sceneOf(300, 2.0f, 3);
