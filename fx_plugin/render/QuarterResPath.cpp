@@ -1,10 +1,8 @@
 #include "QuarterResPath.h"
 
-#include <atomic>
-#include <cstdlib>
-#include <cstring>
 #include <utility>
 
+#include "base/EnvSwitch.h"
 #include "render/PrivateGl.h"
 
 #include "GlStateGuard.h"
@@ -31,19 +29,11 @@ void endDepthOnly(GLenum func) {
     glDepthFunc(func);
 }
 
-// CUBEFX_QUARTER_CHOICE_IN_PASS, read once: 0 chooses every view while it is declared, 1 (or
-// unset) leaves the choice to the passes where it can; anything else is reported and ignored.
-const char* gChoiceInPassProblem = nullptr;
-int choiceInPassFromEnvironment() {
-    const char* v = std::getenv("CUBEFX_QUARTER_CHOICE_IN_PASS");
-    if (!v || !*v) return -1;
-    if (std::strcmp(v, "0") == 0 || std::strcmp(v, "1") == 0) return v[0] - '0';
-    gChoiceInPassProblem = "fx: CUBEFX_QUARTER_CHOICE_IN_PASS is neither 0 nor 1; quarter res keeps its default "
-                           "(a frame graph's view chooses in its first pass)";
-    return -1;
-}
-const int gChoiceInPassFromEnvironment = choiceInPassFromEnvironment();
-std::atomic<int> gChoiceInPass{gChoiceInPassFromEnvironment};  // -1: the default (on)
+// CUBEFX_QUARTER_CHOICE_IN_PASS (EnvSwitch.h): 0 chooses every view while it is declared, 1 (or
+// unset) leaves the choice to the passes where it can.
+EnvSwitch gChoiceInPass("CUBEFX_QUARTER_CHOICE_IN_PASS",
+                        "fx: CUBEFX_QUARTER_CHOICE_IN_PASS is neither 0 nor 1; quarter res keeps its default (a frame "
+                        "graph's view chooses in its first pass)");
 
 TargetDesc targetDesc(float scale, TargetFormat format, bool linearFilter, bool depth) {
     TargetDesc d;
@@ -109,12 +99,10 @@ void QuarterResPath::declare(FrameBuilder& frame, const std::shared_ptr<Particle
                    });
 }
 
-bool QuarterResPath::choiceInPass() { return gChoiceInPass.load(std::memory_order_relaxed) != 0; }
-void QuarterResPath::setChoiceInPass(bool on) { gChoiceInPass.store(on ? 1 : 0, std::memory_order_relaxed); }
-void QuarterResPath::resetChoiceInPass() {
-    gChoiceInPass.store(gChoiceInPassFromEnvironment, std::memory_order_relaxed);
-}
-const char* QuarterResPath::choiceInPassProblem() { return gChoiceInPassProblem; }
+bool QuarterResPath::choiceInPass() { return gChoiceInPass.on(); }
+void QuarterResPath::setChoiceInPass(bool on) { gChoiceInPass.set(on); }
+void QuarterResPath::resetChoiceInPass() { gChoiceInPass.reset(); }
+const char* QuarterResPath::choiceInPassProblem() { return gChoiceInPass.problem(); }
 
 bool QuarterResPath::settle(ParticleView& v) {
     if (v.quarter == ParticleView::Quarter::Pending) {

@@ -205,35 +205,29 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
     }
     out->cleanCells = gridSize;
 
-    // 3. Each tile's first entry (its cursor from now on), the tiles with particles and their runs
-    // for the composite.
+    // 3. Each tile's first entry (its cursor from now on), the tiles with particles, and their runs
+    // for the composite (coverTiles).
     int32_t sum = 0;
     size_t listed = 0;
     if (by1 >= by0) out->tiles.resize(size_t(by1 - by0 + 1) * size_t(bx1 - bx0 + 1) * 4);  // at most; cut below
     uint32_t* tileWords = out->tiles.data();
     for (int ty = by0; ty <= by1; ++ty) {
-        int runStart = -1;
         int32_t* line = counts + ty * tilesX;
-        for (int tx = bx0; tx <= bx1 + 1; ++tx) {
-            const int32_t tileEntries = tx <= bx1 ? line[tx] : 0;
-            if (tileEntries > 0) {
-                uint32_t* t = tileWords + listed;
-                t[0] = uint32_t(tx);
-                t[1] = uint32_t(ty);
-                t[2] = uint32_t(sum);
-                t[3] = uint32_t(tileEntries);
-                listed += 4;
-                line[tx] = sum;
-                sum += tileEntries;
-                if (runStart < 0) runStart = tx;
-            } else if (runStart >= 0) {
-                addRun(&out->cover, runStart * kTileSize, ty * kTileSize, std::min(w, tx * kTileSize),
-                       std::min(h, (ty + 1) * kTileSize));
-                runStart = -1;
-            }
+        for (int tx = bx0; tx <= bx1; ++tx) {
+            const int32_t tileEntries = line[tx];
+            if (tileEntries <= 0) continue;
+            uint32_t* t = tileWords + listed;
+            t[0] = uint32_t(tx);
+            t[1] = uint32_t(ty);
+            t[2] = uint32_t(sum);
+            t[3] = uint32_t(tileEntries);
+            listed += 4;
+            line[tx] = sum;
+            sum += tileEntries;
         }
     }
     out->tiles.resize(listed);
+    coverTiles(out, w, h);
     if (fill == TileBins::Fill::Entries) writeEntries(out, jobs);
     return true;
 }
@@ -247,8 +241,7 @@ void coverTiles(TileBins* bins, int width, int height) {
     const uint32_t* t = bins->tiles.data();
     const size_t n = bins->tiles.size() / 4;
     for (size_t i = 0; i < n;) {
-        // A run: the tiles of one row whose x follow on (binParticles' step 3 ends it at the
-        // first tile with no entries).
+        // A run: the tiles of one row whose x follow on.
         const uint32_t ty = t[i * 4 + 1], x0 = t[i * 4];
         size_t j = i + 1;
         while (j < n && t[j * 4 + 1] == ty && t[j * 4] == t[(j - 1) * 4] + 1) ++j;

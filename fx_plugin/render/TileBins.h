@@ -72,8 +72,8 @@ bool binParticles(const ViewInfo& view, const ParticleInstance* instances, const
                   TileBins::Fill fill = TileBins::Fill::Entries);
 
 /// The composite's runs (`cover`) of `bins->tiles` (row-major, as binParticles lists them): each
-/// row's neighbouring tiles as one run, the same vertices binParticles gives. For bins whose tiles
-/// came from the GPU (TileSort::readGpuBins).
+/// row's neighbouring tiles as one run, on a view of width x height. binParticles ends with it, and
+/// TileSort::readGpuBins for the tiles the GPU listed.
 void coverTiles(TileBins* bins, int width, int height);
 
 /// The front-to-back places of `batches` in `out` (orderStart, batchLast, batchCount), the first

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "base/EnvSwitch.h"
 #include "render/PrivateGl.h"
 
 namespace fx {
@@ -35,40 +36,20 @@ static_assert(TiledPath::kSoftwareCpuListEntries == 131072, "the message above n
 const int64_t gCpuListLimitFromEnvironment = cpuListLimitFromEnvironment();
 std::atomic<int64_t> gCpuListLimit{gCpuListLimitFromEnvironment};  // -1: the defaults
 
-// CUBEFX_TILED_DEFER_BINS, read once: 0 bins every view when it is declared, 1 (or unset) defers
-// them where deferBins() says; anything else is reported and ignored.
-const char* gDeferBinsProblem = nullptr;
-int deferBinsFromEnvironment() {
-    const char* v = std::getenv("CUBEFX_TILED_DEFER_BINS");
-    if (!v || !*v) return -1;
-    if (std::strcmp(v, "0") == 0 || std::strcmp(v, "1") == 0) return v[0] - '0';
-    gDeferBinsProblem = "fx: CUBEFX_TILED_DEFER_BINS is neither 0 nor 1; the tiled path keeps its default (the "
-                        "bins of a view the GPU orders are worked out in its pass)";
-    return -1;
-}
-const int gDeferBinsFromEnvironment = deferBinsFromEnvironment();
-std::atomic<int> gDeferBins{gDeferBinsFromEnvironment};  // -1: the default (on)
-
-// CUBEFX_TILED_GPU_BINS, read once: 0 bins a deferred view on the host's threads, 1 (or unset) on
-// the GPU where its programs built; anything else is reported and ignored.
-const char* gGpuBinsProblem = nullptr;
-int gpuBinsFromEnvironment() {
-    const char* v = std::getenv("CUBEFX_TILED_GPU_BINS");
-    if (!v || !*v) return -1;
-    if (std::strcmp(v, "0") == 0 || std::strcmp(v, "1") == 0) return v[0] - '0';
-    gGpuBinsProblem = "fx: CUBEFX_TILED_GPU_BINS is neither 0 nor 1; the tiled path keeps its default (the GPU "
-                      "bins the views whose particles it orders)";
-    return -1;
-}
-const int gGpuBinsFromEnvironment = gpuBinsFromEnvironment();
-std::atomic<int> gGpuBins{gGpuBinsFromEnvironment};  // -1: the default (on)
+// The A/B switches (EnvSwitch.h): deferred bins and the GPU's bins.
+EnvSwitch gDeferBins("CUBEFX_TILED_DEFER_BINS",
+                     "fx: CUBEFX_TILED_DEFER_BINS is neither 0 nor 1; the tiled path keeps its default (the bins of a "
+                     "view the GPU orders are worked out in its pass)");
+EnvSwitch gGpuBins("CUBEFX_TILED_GPU_BINS",
+                   "fx: CUBEFX_TILED_GPU_BINS is neither 0 nor 1; the tiled path keeps its default (the GPU bins the "
+                   "views whose particles it orders)");
 
 }  // namespace
 
-bool TiledPath::gpuBins() { return gGpuBins.load(std::memory_order_relaxed) != 0; }
-void TiledPath::setGpuBins(bool on) { gGpuBins.store(on ? 1 : 0, std::memory_order_relaxed); }
-void TiledPath::resetGpuBins() { gGpuBins.store(gGpuBinsFromEnvironment, std::memory_order_relaxed); }
-const char* TiledPath::gpuBinsProblem() { return gGpuBinsProblem; }
+bool TiledPath::gpuBins() { return gGpuBins.on(); }
+void TiledPath::setGpuBins(bool on) { gGpuBins.set(on); }
+void TiledPath::resetGpuBins() { gGpuBins.reset(); }
+const char* TiledPath::gpuBinsProblem() { return gGpuBins.problem(); }
 
 uint32_t TiledPath::cpuListLimit(bool softwareRasterizer) {
     const int64_t set = gCpuListLimit.load(std::memory_order_relaxed);
@@ -78,10 +59,10 @@ uint32_t TiledPath::cpuListLimit(bool softwareRasterizer) {
 void TiledPath::setCpuListLimit(uint32_t entries) { gCpuListLimit.store(int64_t(entries), std::memory_order_relaxed); }
 void TiledPath::resetCpuListLimit() { gCpuListLimit.store(gCpuListLimitFromEnvironment, std::memory_order_relaxed); }
 const char* TiledPath::cpuListLimitProblem() { return gCpuListLimitProblem; }
-bool TiledPath::deferBins() { return gDeferBins.load(std::memory_order_relaxed) != 0; }
-void TiledPath::setDeferBins(bool on) { gDeferBins.store(on ? 1 : 0, std::memory_order_relaxed); }
-void TiledPath::resetDeferBins() { gDeferBins.store(gDeferBinsFromEnvironment, std::memory_order_relaxed); }
-const char* TiledPath::deferBinsProblem() { return gDeferBinsProblem; }
+bool TiledPath::deferBins() { return gDeferBins.on(); }
+void TiledPath::setDeferBins(bool on) { gDeferBins.set(on); }
+void TiledPath::resetDeferBins() { gDeferBins.reset(); }
+const char* TiledPath::deferBinsProblem() { return gDeferBins.problem(); }
 bool TiledPath::softwareRasterizer(const char* renderer) {
     if (!renderer) return false;
     for (const char* name : {"llvmpipe", "softpipe", "Software Rasterizer", "SwiftShader", "Basic Render Driver"}) {
