@@ -19,9 +19,14 @@
 //   BM_TileBinsLarge/N/T/F  the same with every particle 8 m across (the fill scene's kind: a few
 //                         hundred particles over thousands of tiles each)
 //   BM_InstanceCopy/N     reference: memcpy of the N instances (32 N bytes read and written)
+//   BM_GatherJobs/N/T     DrawList::gatherInto of a list built with D = 2 (the tiled pass writing
+//                         the instances into its mapped buffer; D = 1 left the pass a copy of the
+//                         list instead, which BM_CopyJobs/N/T times: the pieces copyMappedInPieces
+//                         makes)
 //   BM_DrawListBuildJobs/N/T/D, BM_ScreenRectJobs/N/T
 //                         the build (D = 1: without the back-to-front sort, deferOrder, what a view
-//                         the GPU orders takes) and the bound through the host's job system
+//                         the GPU orders took until session 36; D = 2: without the gather as well,
+//                         deferGather, what it takes now) and the bound through the host's job system
 //                         (HostAdapter::parallelFor) on the engine's cube::JobSystem of T threads
 //                         (T = 1: the pieces on the calling thread, what a host without one pays;
 //                         T is 1, 2 and, where the machine has more, all its hardware threads)
@@ -172,7 +177,7 @@ void BM_TileBins(benchmark::State& state) { tileBinsBench(state, 0.0f); }
 void BM_TileBinsLarge(benchmark::State& state) { tileBinsBench(state, 8.0f); }
 
 // range(2): 1 builds without the back-to-front sort (deferOrder: what the tiled path's GPU order
-// leaves the CPU).
+// leaves the CPU), 2 without the gather either (deferGather).
 void BM_DrawListBuildJobs(benchmark::State& state) {
     Scene s(int(state.range(0)));
     bench::JobsHost host(int(state.range(1)));
@@ -180,10 +185,53 @@ void BM_DrawListBuildJobs(benchmark::State& state) {
     fx::DrawListBuilder builder;
     fx::DrawList list;
     for (auto _ : state) {
-        builder.build(s.view, &batch, 1, fx::Technique::FromReaction, kAll, &list, fx::Jobs(&host), state.range(2) != 0);
+        builder.build(s.view, &batch, 1, fx::Technique::FromReaction, kAll, &list, fx::Jobs(&host), state.range(2) != 0,
+                      state.range(2) == 2);
         benchmark::DoNotOptimize(list.instances.data());
+        benchmark::DoNotOptimize(list.pendingKeep.data());
     }
     state.SetItemsProcessed(int64_t(state.iterations()) * state.range(0));
+}
+
+void BM_GatherJobs(benchmark::State& state) {
+    Scene s(int(state.range(0)));
+    bench::JobsHost host(int(state.range(1)));
+    const fx::ParticleBatch batch = s.batch();
+    fx::DrawListBuilder builder;
+    fx::DrawList list;
+    builder.build(s.view, &batch, 1, fx::Technique::FromReaction, kAll, &list, fx::Jobs(&host), true, true);
+    std::vector<fx::ParticleInstance> to(size_t(list.particleCount()));
+    for (auto _ : state) {
+        list.gatherInto(to.data(), fx::Jobs(&host));
+        benchmark::DoNotOptimize(to.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * list.particleCount());
+    state.SetBytesProcessed(int64_t(state.iterations()) * list.particleCount() * int64_t(sizeof(fx::ParticleInstance)));
+}
+
+void BM_CopyJobs(benchmark::State& state) {
+    Scene s(int(state.range(0)));
+    bench::JobsHost host(int(state.range(1)));
+    const fx::ParticleBatch batch = s.batch();
+    fx::DrawListBuilder builder;
+    fx::DrawList list;
+    builder.build(s.view, &batch, 1, fx::Technique::FromReaction, kAll, &list, fx::Jobs(&host), true);
+    std::vector<fx::ParticleInstance> to(size_t(list.particleCount()));
+    const size_t bytes = size_t(list.particleCount()) * sizeof(fx::ParticleInstance);
+    const fx::Pieces pieces = fx::splitWork(bytes, 512 * 1024, 16);  // copyMappedInPieces's
+    const fx::Jobs jobs(&host);
+    for (auto _ : state) {
+        jobs.run(pieces, [&](uint32_t piece) {
+            const size_t first = pieces.begin(piece);
+            std::memcpy(reinterpret_cast<char*>(to.data()) + first,
+                        reinterpret_cast<const char*>(list.instances.data()) + first, pieces.end(piece) - first);
+        });
+        benchmark::DoNotOptimize(to.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * list.particleCount());
+    state.SetBytesProcessed(int64_t(state.iterations()) * int64_t(bytes));
 }
 
 void BM_ScreenRectJobs(benchmark::State& state) {
@@ -211,7 +259,9 @@ std::vector<int64_t> threadCounts() {
     if (all > 2) t.push_back(all);
     return t;
 }
-BENCHMARK(BM_DrawListBuildJobs)->ArgsProduct({{16000, 256000, 1000000}, threadCounts(), {0, 1}})->UseRealTime();
+BENCHMARK(BM_DrawListBuildJobs)->ArgsProduct({{16000, 256000, 1000000}, threadCounts(), {0, 1, 2}})->UseRealTime();
+BENCHMARK(BM_GatherJobs)->ArgsProduct({{16000, 256000, 1000000}, threadCounts()})->UseRealTime();
+BENCHMARK(BM_CopyJobs)->ArgsProduct({{16000, 256000, 1000000}, threadCounts()})->UseRealTime();
 BENCHMARK(BM_ScreenRectJobs)->ArgsProduct({{16000, 256000, 1000000}, threadCounts()})->UseRealTime();
 BENCHMARK(BM_DrawListBuild)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);
 BENCHMARK(BM_ScreenRect)->Arg(1000)->Arg(16000)->Arg(256000)->Arg(1000000);

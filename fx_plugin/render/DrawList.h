@@ -59,13 +59,45 @@ struct DrawList {
     /// sort them on the GPU (TileSort.h). Every other consumer needs the order in place.
     bool orderPending = false;
 
+    /// Built with deferGather: the particles are culled, counted and placed in the list (each
+    /// batch's first and count are final) but not yet written: `instances` stays empty until
+    /// settle() writes them there, and gatherInto() writes them anywhere else (the tiled path:
+    /// straight into its mapped storage buffer, saving the list the copy on the way). Both read
+    /// the pools the list was built from, unchanged since: the plugin settles every list a pass
+    /// still holds before it steps, fires or reloads a reaction (Renderers::settleLists), so a
+    /// pass draws the particles as they were declared.
+    bool gatherPending() const { return !pending.empty(); }
+    /// Writes the pending particles into `instances` (nothing where none are pending): the list
+    /// build() without deferGather gives, bit for bit.
+    void settle(const Jobs& jobs = Jobs());
+    /// The pending particles into `to` (particleCount() of them), as settle() writes them.
+    void gatherInto(ParticleInstance* to, const Jobs& jobs = Jobs()) const;
+
     void clear() {
         instances.clear();
         batches.clear();
         needsSceneDepth = false;
         orderPending = false;
+        pending.clear();
+        pendingKeep.clear();
+        pendingPieceFirst.clear();
+        pendingCount = 0;
     }
-    int particleCount() const { return static_cast<int>(instances.size()); }
+    int particleCount() const { return gatherPending() ? pendingCount : static_cast<int>(instances.size()); }
+
+    /// A batch whose visible particles are not yet written (gatherPending): the pool's particles
+    /// [0, alive) in the pieces build() culled them in (splitWork(alive)), each piece's answers in
+    /// pendingKeep from keepAt on (per four particles, bits at the first, where `grouped`), its
+    /// visible ones going to list position first + pendingPieceFirst[pieceAt + piece].
+    struct PendingBatch {
+        const ParticlePool* pool = nullptr;
+        uint32_t alive = 0, first = 0, keepAt = 0, pieceAt = 0;
+        bool grouped = false;
+    };
+    std::vector<PendingBatch> pending;
+    NoInitVector<uint8_t> pendingKeep;
+    std::vector<uint32_t> pendingPieceFirst;
+    int pendingCount = 0;
 };
 
 /// The technique a reaction is drawn with under `override`.
@@ -84,11 +116,14 @@ public:
     /// `jobs`: the host's job system for pools of tens of thousands of particles (culled, sorted
     /// and gathered in pieces); the list is the same bit for bit with or without it.
     /// `deferOrder`: leave the back-to-front sort out (DrawList::orderPending).
+    /// `deferGather` (with deferOrder only): leave the writing of the particles out too
+    /// (DrawList::gatherPending); the list is then only counted.
     void build(const ViewInfo& view, const ParticleBatch* batches, int batchCount,
                Technique techniqueOverride, uint32_t usableTechniques, DrawList* out,
-               const Jobs& jobs = Jobs(), bool deferOrder = false);
+               const Jobs& jobs = Jobs(), bool deferOrder = false, bool deferGather = false);
     /// Puts a deferred order in place: `list` as build() without deferOrder gives it, bit for
-    /// bit. Nothing where no order is pending. `view`: the view it was built for.
+    /// bit (a pending gather settled first). Nothing where no order is pending. `view`: the view
+    /// it was built for.
     void order(const ViewInfo& view, DrawList* list, const Jobs& jobs = Jobs());
 
 private:

@@ -158,6 +158,17 @@ void ParticleRenderer::ensureDrawPrograms(const ParticleView& record, bool quart
     reportLoadErrors(errors);
 }
 
+void ParticleRenderer::settleLists() {
+    for (const std::shared_ptr<ParticleView>& record : records_) {
+        if (!record->list.gatherPending()) continue;
+        if (record.use_count() > 1) {
+            record->list.settle(config_.jobs);
+        } else {
+            record->list.clear();  // no pass left to draw it (culled, or ran and released)
+        }
+    }
+}
+
 int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
                                     int batchCount, const FrameSettings& settings) {
     // The opacity map declareShadowPasses declared for this frame (taken now: a Target is valid
@@ -190,8 +201,13 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     for (int b = 0; b < batchCount; ++b) alive += batches[b].pool ? batches[b].pool->alive() : 0;
     const bool deferOrder = !(options.quarterRes && options.quarterResAlways) && batchCount <= TiledPath::kMaxBatches &&
                             TiledPath::flatW(view.proj) && tiled_.ordersOnGpu(alive) && TiledPath::wanted(options);
+    // Such a view's particles are only culled and counted here, where the GPU bins them too: the
+    // tiled path's first pass writes them straight into its storage buffer (DrawList::gatherPending),
+    // while the GPU runs the host's scene. Every other way settles the list first (below,
+    // TiledPath::declare, DrawListBuilder::order).
+    const bool deferGather = deferOrder && TiledPath::gpuBins();
     builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list, config_.jobs,
-                   deferOrder);
+                   deferOrder, deferGather);
     if (record->list.particleCount() == 0) return 0;
     if (!wasReady) {
         if (!ensureLoaded()) return 0;
@@ -199,7 +215,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
         if ((draw_.programs().usableTechniques(quarterRes) & mine) != usable) {
             usable = draw_.programs().usableTechniques(quarterRes) & mine;
             builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list, config_.jobs,
-                           deferOrder);
+                           deferOrder, deferGather);
         }
     }
     if (options.quarterRes && !quarterRes && !quarterFallbackLogged_) {
@@ -215,7 +231,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
         if ((draw_.programs().usableTechniques(false) & mine) == usable) return true;
         usable = draw_.programs().usableTechniques(false) & mine;
         builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list, config_.jobs,
-                       deferOrder);
+                       deferOrder, deferGather);
         return record->list.particleCount() > 0;
     };
     // Quarter res is weighed against the full-resolution raster pass. Where the tiled path draws
@@ -241,6 +257,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
                        !dynamic_cast<ImmediateFrame*>(&frame) &&
                        (draw_.programs().usableTechniques(false) & mine) == usable;
     if (quarterRes && !waits) {
+        record->list.settle(config_.jobs);
         quarter_.bound(*record);
         if (!options.quarterResAlways && !quarterResPays(record->rect, record->tiles) && !toFullRes()) return 0;
     }

@@ -77,10 +77,15 @@ public:
     ParticleRenderer& operator=(const ParticleRenderer&) = delete;
 
     /// Declares this view's particle passes (or none) under the frame's `settings` and returns
-    /// how many particles they draw. `batches` must stay valid for this call only (instances are
-    /// copied out).
+    /// how many particles they draw. `batches` must stay valid for this call only; the pools they
+    /// name must stay unchanged until the passes ran or settleLists() was called (a view the GPU
+    /// bins leaves the writing of its particles to its first pass: DrawList::gatherPending).
     int declarePasses(const ViewInfo& view, FrameBuilder& frame, const ParticleBatch* batches,
                       int batchCount, const FrameSettings& settings);
+    /// Before any pool changes (the plugin: a step, a fire, a reload): each list a declared pass
+    /// still holds whose gather is pending is written now, from the pools as they were declared;
+    /// one no pass holds any more is dropped. The passes then draw what was declared.
+    void settleLists();
 
     /// Loads GL resources now (Plugin::prepareGl) and builds every program the options can reach
     /// (ProgramCache::techniqueKeys) and the soft programs of the contrast powers in `powerSteps`

@@ -65,6 +65,9 @@ public:
     /// appended to `out`, false.
     bool reload(Diagnostics* out);
 
+    /// The plugin, before any reaction's particles change: ParticleRenderer::settleLists.
+    void settleLists() { billboards_.settleLists(); }
+
     /// The immediate path (Plugin::renderView): its render() declares through declare().
     ImmediateRenderer& immediate() { return immediate_; }
     const ParticleRenderer& billboards() const { return billboards_; }

@@ -32,7 +32,32 @@ static_assert(kShapeBinding < ComputeBindingsScope::kBindings, "a binding Comput
 static_assert(kAccumImage == ComputeBindingsScope::kImage, "the image unit ComputeBindingsScope puts back");
 
 std::atomic<uint64_t> gCpuListViews{0}, gGpuSortedViews{0}, gDeferredBinViews{0}, gDeferredFallbacks{0},
-    gGpuBinnedViews{0};
+    gGpuBinnedViews{0}, gGatheredViews{0};
+
+// The list's instances into the storage buffer `*buffer` (grown as TileSort::ensureBuffer grows
+// it): a pending gather (DrawList::gatherPending) straight into its mapped store, in the pieces
+// the cull made, on the host's threads; else, or where the map fails or loses its store, a copy
+// of the written list (fillStorage).
+void fillInstances(uint32_t* buffer, size_t* capacity, DrawList& list, const Jobs& jobs) {
+    const size_t bytes = size_t(list.particleCount()) * sizeof(ParticleInstance);
+    if (list.gatherPending()) {
+        TileSort::ensureBuffer(buffer, capacity, bytes);
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, *buffer);
+        void* mapped = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(bytes),
+                                        GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
+        if (mapped) {
+            list.gatherInto(static_cast<ParticleInstance*>(mapped), jobs);
+            if (glUnmapBuffer(GL_SHADER_STORAGE_BUFFER) == GL_TRUE) {
+                gGatheredViews.fetch_add(1, std::memory_order_relaxed);
+                return;
+            }
+        } else {
+            glGetError();  // the refusal the map raised (out of memory): taken back, as copyMappedInPieces does
+        }
+        list.settle(jobs);
+    }
+    fillStorage(buffer, capacity, list.instances.data(), bytes, jobs);
+}
 
 // render.near_fade as the shaders' line in depth (ParticleDraw's nearFadeMap).
 glm::vec2 nearFadeMap(float fade, float nearPlane) {
@@ -80,6 +105,7 @@ uint64_t TiledPath::gpuSortedViews() { return gGpuSortedViews.load(std::memory_o
 uint64_t TiledPath::deferredBinViews() { return gDeferredBinViews.load(std::memory_order_relaxed); }
 uint64_t TiledPath::deferredFallbacks() { return gDeferredFallbacks.load(std::memory_order_relaxed); }
 uint64_t TiledPath::gpuBinnedViews() { return gGpuBinnedViews.load(std::memory_order_relaxed); }
+uint64_t TiledPath::gatheredViews() { return gGatheredViews.load(std::memory_order_relaxed); }
 
 bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>& record, const Jobs& jobs,
                         Fallback fallback) {
@@ -102,6 +128,9 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
     const bool immediate = dynamic_cast<ImmediateFrame*>(&frame) != nullptr;
     const bool deferred =
         record->list.orderPending && fallback && deferBins() && (!immediate || (gpuBins() && sort_.binsOk()));
+    // A list whose gather is pending (ParticleRenderer: where the GPU bins) waits for the first
+    // pass only where that pass takes it (run(), fillInstances) and nothing before it reads it.
+    if (!(deferred && gpuBins() && sort_.binsOk())) record->list.settle(jobs);
     if (!deferred) {
         TileBins::Range ranges[kMaxBatches];
         const int batchCount = batchRanges(*record, ranges);
@@ -204,15 +233,15 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
     ensureObjects(view.width, view.height);
 
     // The instances (and below, the bins' lists and tiles) go to storage buffers of the pass's
-    // own, kept (not orphaned) and written through a mapping on the host's threads. Through the
+    // own, kept (not orphaned) and written through a mapping on the host's threads (the
+    // instances gathered from the pools there where the list left that to the pass). Through the
     // raster path's vertex buffer, orphaned each frame and read here by compute, the H200's driver
     // gave the CPU a store it writes slowly: 2.25 ms for the 8 MB of 256,000 particles, where the
     // sort's 4 MB take 0.25 ms.
     const int count = v.list.particleCount();
     if (!setUp) {
-        if (deferred) glFlush();  // the scene's passes to the GPU while the CPU copies (and bins, in the next pass)
-        fillStorage(&instanceBuffer_, &instanceCapacity_, v.list.instances.data(), size_t(count) * sizeof(ParticleInstance),
-                    draw_.jobs());
+        if (deferred) glFlush();  // the scene's passes to the GPU while the CPU writes (and bins, in the next pass)
+        fillInstances(&instanceBuffer_, &instanceCapacity_, v.list, draw_.jobs());
     }
     TileSort::DepthOrder order;
     if (v.list.orderPending) {
@@ -375,6 +404,7 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
             binned = sort_.readGpuBins(&bins);
             if (binned) gGpuBinnedViews.fetch_add(1, std::memory_order_relaxed);
         } else {
+            v.list.settle(draw_.jobs());  // where the GPU's bins could not be issued after all
             const BillboardReach reach = draw_.billboardReach(v, false);
             binned = binParticles(view, v.list.instances.data(), ranges, batchCount, &reach, &bins, draw_.jobs(),
                                   TileBins::Fill::Ranges);

@@ -174,6 +174,9 @@ public:
     static void resetGpuBins();           ///< back to the environment's, or on
     static const char* gpuBinsProblem();  ///< what was wrong with CUBEFX_TILED_GPU_BINS, or null
     static uint64_t gpuBinnedViews();     ///< views the GPU binned, since the process started
+    /// Views whose instances the first pass gathered from the pools straight into its mapped
+    /// storage buffer (DrawList::gatherPending: those the GPU bins), since the process started.
+    static uint64_t gatheredViews();
     /// Where TiledStageTimes' reports go (the renderer's log); none: not reported.
     void setStageLog(std::function<void(const std::string&)> log) { stageLog_ = std::move(log); }
 

@@ -110,7 +110,12 @@ int PluginImpl::reactionParticlesAlive(int index) const {
     return runtimes_[size_t(index)].pool().alive();
 }
 
+void PluginImpl::settleDrawLists() {
+    if (renderers_) renderers_->settleLists();
+}
+
 void PluginImpl::adoptCurrentSet() {
+    settleDrawLists();  // the runtimes move, and some go
     const ReactionSet& set = library_.current();
     std::vector<ReactionRuntime> next;
     next.reserve(set.reactions.size());
@@ -174,6 +179,7 @@ ErrorCode PluginImpl::continueReaction(int index, float dt, float* currentVehicl
         return errors_.refuse(ErrorCode::InvalidValue, "continueReaction",
                               "dt = " + std::to_string(dt) + " s; expected a finite value >= 0");
     }
+    settleDrawLists();
     std::array<WheelContact, ReactionRuntime::kMaxWheels> wheels;
     const int count = glm::clamp(host_->wheelCount(), 0, ReactionRuntime::kMaxWheels);
     for (int i = 0; i < count; ++i) wheels[static_cast<size_t>(i)] = host_->wheel(i);
@@ -296,6 +302,7 @@ ErrorCode PluginImpl::fireReaction(const std::string& name, const glm::vec3& poi
     if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z)) {
         return errors_.refuse(ErrorCode::InvalidValue, "fireReaction", "non-finite point; expected world metres");
     }
+    settleDrawLists();
     int fired = 0;
     for (ReactionRuntime& r : runtimes_) {
         const std::string& n = r.name();

@@ -103,6 +103,9 @@ public:
 private:
     /// Builds runtimes for the library's current set, moving over those that keep their pool.
     void adoptCurrentSet();
+    /// Before any particle changes (a step, a fire, a reload): what a declared pass still holds of
+    /// the pools is written out first (Renderers::settleLists), so it draws what was declared.
+    void settleDrawLists();
     void logDiagnostics(const Diagnostics& diags, const char* what);
 
     HostAdapter* host_;

@@ -6,6 +6,7 @@
 #include <glad/gl.h>
 
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,8 @@
 #include <limits>
 
 #include "FxTestHost.h"
+#include "render/TileSort.h"
+#include "render/TiledPath.h"
 
 namespace fxtest {
 namespace {
@@ -239,6 +242,50 @@ TEST_F(ContractTest, AReversedZHostGetsTheSamePicture) {
     // Without the convention the plugin would test LEQUAL against a buffer cleared to 0 and
     // draw nothing: the picture must really contain the smoke.
     EXPECT_GT(countDiffering(reversedImage, without, 2), smoke * 9 / 10);
+}
+
+// A host that steps or reloads the reactions after declaring a view, before its passes run, gets
+// the particles as they were declared: rasterised, tiled, and tiled where the GPU orders and bins
+// the view, whose first pass writes the particles from the pools (DrawList::gatherPending: the
+// plugin writes them out before the pools change). The next frame shows the step.
+TEST_F(ContractTest, ParticlesChangedBetweenDeclaringAndThePassesDrawAsDeclared) {
+    struct LimitBack {
+        ~LimitBack() {
+            fx::TileSort::resetOrderLimit();
+            fx::TiledPath::resetCpuListLimit();
+        }
+    } limitBack;
+    for (int way = 0; way < 3; ++way) {
+        SCOPED_TRACE(way == 0 ? "rasterised" : way == 1 ? "tiled" : "tiled, the GPU's order and bins");
+        ASSERT_TRUE(plugin = create());
+        simulate(*plugin, host, 60);
+        fx::RenderOptions o;
+        o.tiling = way == 0 ? fx::Tiling::Off : fx::Tiling::On;
+        ASSERT_EQ(plugin->setRenderOptions(o), fx::ErrorCode::None);
+        if (way == 2) {  // what a GPU does from 16,384 particles on
+            fx::TileSort::setOrderLimit(0);
+            fx::TiledPath::setCpuListLimit(0);
+        } else {
+            fx::TileSort::setOrderLimit(UINT32_MAX);  // the CPU orders, whatever the environment says
+        }
+        const Image declared = render(plugin.get(), view);
+        const uint64_t gathered = fx::TiledPath::gatheredViews();
+        renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) {
+            plugin->declarePasses(view, f);
+            simulate(*plugin, host, 20);
+        });
+        EXPECT_EQ(maxAbsDiff(declared, graph.readColor()), 0) << "stepped after declaring";
+        const Image stepped = render(plugin.get(), view);
+        EXPECT_GT(countDiffering(declared, stepped, 2), 100) << "the step shows in the next frame";
+        renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) {
+            plugin->declarePasses(view, f);
+            ASSERT_TRUE(plugin->loadReactions(CUBE_SOURCE_DIR "/reactions/burnout_smoke.yaml", nullptr));
+            simulate(*plugin, host, 20);
+        });
+        EXPECT_EQ(maxAbsDiff(stepped, graph.readColor()), 0) << "reloaded and stepped after declaring";
+        EXPECT_EQ(fx::TiledPath::gatheredViews(), gathered + (way == 2 ? 1 : 0))
+            << "the first pass wrote the particles of the frame nothing changed under";
+    }
 }
 
 TEST_F(ContractTest, EmbeddedShadersAndAtlasDrawWhatTheFilesDraw) {

@@ -189,8 +189,11 @@ TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
         EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered) << "llvmpipe: the CPU sorts the particles";
         fx::TileSort::setOrderLimit(0);
         const uint64_t deferred = fx::TiledPath::deferredBinViews(), gpuBinned = fx::TiledPath::gpuBinnedViews();
+        const uint64_t gathered = fx::TiledPath::gatheredViews();
         const Image gpuOrdered = draw(direct, graph, scene, view, true);
         EXPECT_EQ(fx::TiledPath::gpuBinnedViews(), gpuBinned + 1) << "the GPU bins a view binned in its pass";
+        EXPECT_EQ(fx::TiledPath::gatheredViews(), gathered + 1)
+            << "its particles are written from the pool into the pass's buffer, not while declared";
         EXPECT_EQ(fx::TiledPath::gpuSortedViews(), gpu + 2);
         EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered + 1) << "with the order limit at 0 the GPU sorts them";
         EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 1) << "a view the GPU orders is binned in its pass";
@@ -208,23 +211,40 @@ TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
         EXPECT_TRUE(graph.ran(fx::TiledPath::kPass));
         EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 2);
         EXPECT_EQ(fx::TiledPath::gpuBinnedViews(), gpuBinned + 2);
+        EXPECT_EQ(fx::TiledPath::gatheredViews(), gathered + 2) << "by the second pass";
         EXPECT_EQ(maxAbsDiff(gpuOrdered, setUpInTheSecond), 0);
+        // The pool changed after the view was declared, before its passes ran, the renderer told
+        // first (the plugin does so before a step, a fire or a reload): the view as declared.
+        const std::vector<HandParticle> elsewhere = ringOfPuffs(1.5f, 0.4f);
+        renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) {
+            drawn = direct.declare(view, f);
+            direct.renderer.settleLists();
+            direct.set(elsewhere);
+        });
+        EXPECT_EQ(fx::TiledPath::gatheredViews(), gathered + 2) << "written when the renderer was told";
+        EXPECT_EQ(maxAbsDiff(gpuOrdered, graph.readColor()), 0);
+        const Image changed = draw(direct, graph, scene, view, true);
+        EXPECT_GT(maxAbsDiff(gpuOrdered, changed), 20) << "the change shows in the next frame";
+        EXPECT_EQ(fx::TiledPath::gatheredViews(), gathered + 3);
+        direct.set(puffs);
         // Binned in its pass on the host's threads instead (CUBEFX_TILED_GPU_BINS=0): the same frame.
         fx::TiledPath::setGpuBins(false);
         const Image binnedOnCpu = draw(direct, graph, scene, view, true);
         fx::TiledPath::resetGpuBins();
         EXPECT_TRUE(graph.ran(fx::TiledPath::kSetupPass));
-        EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 3);
-        EXPECT_EQ(fx::TiledPath::gpuBinnedViews(), gpuBinned + 2) << "the host's threads binned it";
+        EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 5);
+        EXPECT_EQ(fx::TiledPath::gpuBinnedViews(), gpuBinned + 4) << "the host's threads binned it";
+        EXPECT_EQ(fx::TiledPath::gatheredViews(), gathered + 3) << "and the list was written while declared";
         EXPECT_EQ(maxAbsDiff(gpuOrdered, binnedOnCpu), 0);
         // The same view binned while it is declared: the same frame.
         fx::TiledPath::setDeferBins(false);
         const Image binnedEarly = draw(direct, graph, scene, view, true);
         fx::TiledPath::resetDeferBins();
-        EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 3);
-        EXPECT_EQ(fx::TiledPath::gpuBinnedViews(), gpuBinned + 2);
+        EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 5);
+        EXPECT_EQ(fx::TiledPath::gpuBinnedViews(), gpuBinned + 4);
+        EXPECT_EQ(fx::TiledPath::gatheredViews(), gathered + 3);
         EXPECT_FALSE(graph.ran(fx::TiledPath::kSetupPass)) << "one pass for a view binned while declared";
-        EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered + 4);
+        EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered + 6);
         fx::TiledPath::resetCpuListLimit();
         fx::TileSort::resetOrderLimit();
         EXPECT_EQ(maxAbsDiff(byDefault, sorted), 0);

@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <cstring>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "DrawListScene.h"
 #include "JobHosts.h"
 #include "../../fx_plugin/render/ScreenTiles.h"
 #include "../../fx_plugin/render/TileBins.h"
+#include "../../fx_plugin/base/Sse2.h"
 
 namespace {
 
@@ -127,6 +129,79 @@ TEST(ParallelBuild, DeferredOrderPutInPlaceIsTheSortedBuild) {
     builder.build(b.view, &batches[1], 1, fx::Technique::FromReaction, ~0u, &list, fx::Jobs(), true);
     EXPECT_GT(list.particleCount(), 0);
     EXPECT_FALSE(list.orderPending);
+}
+
+// A list built with its gather deferred too (deferGather, for the tiled path to write the
+// particles straight into its storage buffer) is only counted: the batches' places and counts are
+// final, nothing is written, and gatherInto() or settle() then write what the build without it
+// writes, bit for bit: pools of several pieces and of one, one whose particles are all culled,
+// however the pieces run, four particles at a time or one, and for a sliced view (one at a time).
+// order() settles first. A build without it after one with it leaves nothing pending.
+TEST(ParallelBuild, DeferredGatherWritesTheDeferredOrderList) {
+    Scene a(60000), b(30000), small(1500), hidden(5000);
+    for (int i = 0; i < hidden.pool.alive(); ++i) hidden.pool.stream(fx::ParticlePool::PosZ)[i] = 50.0f;  // behind
+    const fx::ParticleBatch batches[5] = {a.batch(true), hidden.batch(true), b.batch(false), small.batch(true),
+                                          b.batch(true)};
+    struct LanesBack {
+        ~LanesBack() { fx::setFourLanes(true); }
+    } lanesBack;
+    for (int variant = 0; variant < 3; ++variant) {
+        fx::setFourLanes(variant != 1);
+        fx::ViewInfo view = a.view;
+        if (variant == 2) view.slice = fx::DistanceSlice{5.0f, 60.0f};
+        for (HowRun how : kRuns) {
+            SCOPED_TRACE("variant " + std::to_string(variant) + ", how " + std::to_string(int(how)));
+            JobHost host(how);
+            fx::DrawListBuilder builder;
+            fx::DrawList written, pending, sorted;
+            builder.build(view, batches, 5, fx::Technique::FromReaction, ~0u, &written, fx::Jobs(&host), true);
+            builder.build(view, batches, 5, fx::Technique::FromReaction, ~0u, &sorted, fx::Jobs(&host));
+            ASSERT_GT(written.particleCount(), 40000);
+            for (int round = 0; round < 2; ++round) {
+                builder.build(view, batches, 5, fx::Technique::FromReaction, ~0u, &pending, fx::Jobs(&host), true, true);
+                ASSERT_TRUE(pending.gatherPending());
+                EXPECT_TRUE(pending.instances.empty()) << "nothing written while declaring";
+                EXPECT_TRUE(pending.orderPending);
+                ASSERT_EQ(pending.particleCount(), written.particleCount());
+                ASSERT_EQ(pending.batches.size(), written.batches.size());
+                EXPECT_EQ(pending.batches.size(), 4u) << "the hidden pool has no batch";
+                for (size_t k = 0; k < written.batches.size(); ++k) {
+                    EXPECT_EQ(pending.batches[k].first, written.batches[k].first) << k;
+                    EXPECT_EQ(pending.batches[k].count, written.batches[k].count) << k;
+                }
+                const size_t bytes = size_t(written.particleCount()) * sizeof(fx::ParticleInstance);
+                std::vector<fx::ParticleInstance> to(size_t(written.particleCount()) + 1);
+                std::memset(static_cast<void*>(to.data()), 0xAB, (to.size()) * sizeof(fx::ParticleInstance));
+                const fx::ParticleInstance past = to.back();
+                pending.gatherInto(to.data(), fx::Jobs(&host));
+                EXPECT_EQ(std::memcmp(to.data(), written.instances.data(), bytes), 0);
+                EXPECT_EQ(std::memcmp(&to.back(), &past, sizeof past), 0) << "nothing written past the list";
+                EXPECT_TRUE(pending.gatherPending()) << "gatherInto leaves the list pending";
+                if (round == 0) {
+                    pending.settle(fx::Jobs(&host));
+                    EXPECT_FALSE(pending.gatherPending());
+                    ASSERT_EQ(pending.particleCount(), written.particleCount());
+                    EXPECT_EQ(std::memcmp(pending.instances.data(), written.instances.data(), bytes), 0);
+                    pending.settle(fx::Jobs(&host));  // nothing pending: nothing moves
+                    EXPECT_EQ(std::memcmp(pending.instances.data(), written.instances.data(), bytes), 0);
+                }
+                builder.order(view, &pending, fx::Jobs(&host));
+                EXPECT_FALSE(pending.gatherPending());
+                ASSERT_EQ(pending.particleCount(), sorted.particleCount());
+                EXPECT_EQ(std::memcmp(pending.instances.data(), sorted.instances.data(), bytes), 0);
+            }
+            builder.build(view, batches, 5, fx::Technique::FromReaction, ~0u, &pending, fx::Jobs(&host), true, false);
+            EXPECT_FALSE(pending.gatherPending());
+            EXPECT_EQ(std::memcmp(pending.instances.data(), written.instances.data(),
+                                  size_t(written.particleCount()) * sizeof(fx::ParticleInstance)), 0);
+        }
+    }
+    // Without deferOrder there is nothing to defer: the list is written.
+    fx::DrawListBuilder builder;
+    fx::DrawList list;
+    builder.build(a.view, batches, 1, fx::Technique::FromReaction, ~0u, &list, fx::Jobs(), false, true);
+    EXPECT_FALSE(list.gatherPending());
+    EXPECT_GT(list.particleCount(), 0);
 }
 
 TEST(ParallelBuild, SmallPoolsNeverReachTheHost) {
