@@ -39,6 +39,9 @@ struct ParticleView {
     enum class Quarter : uint8_t { No, Yes, Pending } quarter = Quarter::No;
     TileBins bins;             ///< the tiled path: the particles per tile (TiledPath.h)
     bool tiledSetUp = false;   ///< the tiled path: its first pass of this frame ran (TiledPath::kSetupPass)
+    /// The view's last pass ran (the tiled path's particles_tiled, the one that may leave the list's
+    /// gather pending): ParticleRenderer::settleLists drops a pending gather then, not writes it.
+    bool drawn = false;
     Target opacity;            ///< the opacity map of this frame (invalid: unshadowed)
     glm::mat4 worldToShadow{1.0f};
     bool lit() const { return settings.light.on; }

@@ -161,10 +161,14 @@ void ParticleRenderer::ensureDrawPrograms(const ParticleView& record, bool quart
 void ParticleRenderer::settleLists() {
     for (const std::shared_ptr<ParticleView>& record : records_) {
         if (!record->list.gatherPending()) continue;
-        if (record.use_count() > 1) {
+        if (record.use_count() > 1 && !record->drawn) {
             record->list.settle(config_.jobs);
+            ++listsSettled_;
         } else {
-            record->list.clear();  // no pass left to draw it (culled, or ran and released)
+            // No pass left to draw it: culled and released, or drawn (a host's graph may hold its
+            // passes until the next frame, as the engine's does). A pass the host runs again
+            // after this draws nothing.
+            record->list.clear();
         }
     }
 }
@@ -186,6 +190,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     record->view.name = "";  // the host's string is not ours to keep
     record->settings = settings;
     record->reversedZ = view.depth == DepthConvention::ReversedZ;
+    record->drawn = false;
 
     // Until something is visible nothing is loaded: a scene without smoke never compiles a shader.
     const uint32_t mine = techniquesDrawnBy(DrawnBy::Billboards);

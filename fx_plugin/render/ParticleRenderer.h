@@ -86,6 +86,8 @@ public:
     /// still holds whose gather is pending is written now, from the pools as they were declared;
     /// one no pass holds any more is dropped. The passes then draw what was declared.
     void settleLists();
+    /// Lists settleLists() wrote out (those it dropped not counted), since the renderer was made.
+    uint64_t listsSettled() const { return listsSettled_; }
 
     /// Loads GL resources now (Plugin::prepareGl) and builds every program the options can reach
     /// (ProgramCache::techniqueKeys) and the soft programs of the contrast powers in `powerSteps`
@@ -147,6 +149,7 @@ private:
     uint64_t shaderStamp_ = 0;  ///< shaderStamp() when the running programs were built
     DrawListBuilder builder_;
     std::vector<std::shared_ptr<ParticleView>> records_;
+    uint64_t listsSettled_ = 0;
     std::vector<std::shared_ptr<SmokeOpacityMap::Casters>> opacityRecords_;  ///< one per map until its pass ran
 };
 

@@ -168,11 +168,13 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
                            DebugGroup group(kPass);
                            drawn = run(ctx, *record, color, depth, decode, opacity, deferred ? Stage::Tiles : Stage::Whole);
                        }
-                       if (drawn) return;
-                       // Bins the pass could not take after all: the raster path, as declare() would
-                       // have sent the view to had it binned it.
-                       gDeferredFallbacks.fetch_add(1, std::memory_order_relaxed);
-                       fallback(ctx, color, depth, decode, opacity);
+                       if (!drawn) {
+                           // Bins the pass could not take after all: the raster path, as declare()
+                           // would have sent the view to had it binned it.
+                           gDeferredFallbacks.fetch_add(1, std::memory_order_relaxed);
+                           fallback(ctx, color, depth, decode, opacity);
+                       }
+                       record->drawn = true;
                    });
     return true;
 }
@@ -225,7 +227,7 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
     v.tiledSetUp = false;
     setUpView_ = nullptr;
     if (!setUp) gpuBinned_ = false;
-    if ((!deferred && bins.tileCount() == 0) || !ok()) return true;
+    if ((!deferred && bins.tileCount() == 0) || !ok() || v.list.particleCount() == 0) return true;
     bool lit = false;
     for (const DrawBatch& batch : v.list.batches) lit = lit || litBatch(v, batch);
     if (lit && !litOk()) return true;  // declare() said so; a reload since may have lost them

@@ -216,16 +216,21 @@ TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
         // The pool changed after the view was declared, before its passes ran, the renderer told
         // first (the plugin does so before a step, a fire or a reload): the view as declared.
         const std::vector<HandParticle> elsewhere = ringOfPuffs(1.5f, 0.4f);
+        const uint64_t settled = direct.renderer.listsSettled();
         renderFrame(graph, scene, view, [&](fx::FrameBuilder& f) {
             drawn = direct.declare(view, f);
             direct.renderer.settleLists();
             direct.set(elsewhere);
         });
+        EXPECT_EQ(direct.renderer.listsSettled(), settled + 1);
         EXPECT_EQ(fx::TiledPath::gatheredViews(), gathered + 2) << "written when the renderer was told";
         EXPECT_EQ(maxAbsDiff(gpuOrdered, graph.readColor()), 0);
         const Image changed = draw(direct, graph, scene, view, true);
         EXPECT_GT(maxAbsDiff(gpuOrdered, changed), 20) << "the change shows in the next frame";
         EXPECT_EQ(fx::TiledPath::gatheredViews(), gathered + 3);
+        // The graph holds that frame's passes until its next frame; they ran: nothing to write.
+        direct.renderer.settleLists();
+        EXPECT_EQ(direct.renderer.listsSettled(), settled + 1);
         direct.set(puffs);
         // Binned in its pass on the host's threads instead (CUBEFX_TILED_GPU_BINS=0): the same frame.
         fx::TiledPath::setGpuBins(false);
