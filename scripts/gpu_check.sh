@@ -10,7 +10,8 @@
 # the drive through both depth paths) and parts.tgz (shader_parts.sh's runs and their log, a
 # particle sweep of the tiled modes: parts/tiled_sweep.json, and the tiled path's list limit in
 # three settings: parts/lists_*.json; lit smoke rasterised and tiled: parts/lit_*.json; the tiled
-# path's bins while declared, in its pass on the host's threads or by the GPU: parts/bins_*.json;
+# path's bins while declared, in its pass on the host's threads or by the GPU, the last with the
+# particles written while declared or in the pass: parts/bins_{declared,cpu,list,gpu}_*.json;
 # the tiled pass's GPU time by stage at 64,000 and 256,000 particles: parts/stages.txt;
 # quarter res's choice in its pass or
 # while declared: parts/choice_*.json; where
@@ -70,12 +71,16 @@ bins_ab() {
     # second (the default since session 35, TiledPath::gpuBins), in alternating processes. Compare the
     # frames first; since session 33 the time the GPU idles while the CPU bins falls between the two
     # passes (outside), so "outside" is comparable too; the GPU's read-back wait falls there as well.
+    # With the GPU's bins, the particles written while declared and copied in the first pass
+    # (CUBEFX_TILED_GATHER_IN_PASS=0, way "list") or written by that pass from the pools (the
+    # default since session 36): compare cpu_declare_ms and the frames of "list" and "gpu".
     s=$(date +%s)
     for round in 1 2; do
-      for way in declared cpu gpu; do
+      for way in declared cpu list gpu; do
         case $way in
           declared) env="CUBEFX_TILED_DEFER_BINS=0" ;;
           cpu) env="CUBEFX_TILED_GPU_BINS=0" ;;
+          list) env="CUBEFX_TILED_GATHER_IN_PASS=0" ;;
           gpu) env="CUBEFX_TILED_GPU_BINS=1" ;;
         esac
         env $env timeout 90 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 \

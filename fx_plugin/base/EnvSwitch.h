@@ -2,8 +2,8 @@
 // A switch a GPU session sets from the environment for an A/B run without a rebuild (on by default):
 // the variable read once, when the library loads; "0" turns it off, "1" or unset leaves it on, and
 // anything else is kept as a problem for the renderer to log once and ignored. Tests set and reset
-// it. (TiledPath's CUBEFX_TILED_DEFER_BINS and CUBEFX_TILED_GPU_BINS, QuarterResPath's
-// CUBEFX_QUARTER_CHOICE_IN_PASS.)
+// it. (TiledPath's CUBEFX_TILED_DEFER_BINS, CUBEFX_TILED_GPU_BINS and CUBEFX_TILED_GATHER_IN_PASS,
+// QuarterResPath's CUBEFX_QUARTER_CHOICE_IN_PASS.)
 #include <atomic>
 #include <cstdlib>
 #include <cstring>

@@ -87,6 +87,7 @@ bool ParticleRenderer::ensureLoaded() {
     if (const char* problem = TileSort::orderLimitProblem()) log(LogLevel::Warning, problem);
     if (const char* problem = TiledPath::deferBinsProblem()) log(LogLevel::Warning, problem);
     if (const char* problem = TiledPath::gpuBinsProblem()) log(LogLevel::Warning, problem);
+    if (const char* problem = TiledPath::gatherInPassProblem()) log(LogLevel::Warning, problem);
     if (const char* problem = QuarterResPath::choiceInPassProblem()) log(LogLevel::Warning, problem);
     if (!config_.shaderDir.empty()) shaderStamp_ = shaderStamp(config_.shaderDir);
     state_ = State::Ready;
@@ -210,7 +211,7 @@ int ParticleRenderer::declarePasses(const ViewInfo& view, FrameBuilder& frame, c
     // tiled path's first pass writes them straight into its storage buffer (DrawList::gatherPending),
     // while the GPU runs the host's scene. Every other way settles the list first (below,
     // TiledPath::declare, DrawListBuilder::order).
-    const bool deferGather = deferOrder && TiledPath::gpuBins();
+    const bool deferGather = deferOrder && TiledPath::gpuBins() && TiledPath::gatherInPass();
     builder_.build(view, batches, batchCount, options.techniqueOverride, usable, &record->list, config_.jobs,
                    deferOrder, deferGather);
     if (record->list.particleCount() == 0) return 0;

@@ -174,8 +174,15 @@ public:
     static void resetGpuBins();           ///< back to the environment's, or on
     static const char* gpuBinsProblem();  ///< what was wrong with CUBEFX_TILED_GPU_BINS, or null
     static uint64_t gpuBinnedViews();     ///< views the GPU binned, since the process started
-    /// Views whose instances the first pass gathered from the pools straight into its mapped
-    /// storage buffer (DrawList::gatherPending: those the GPU bins), since the process started.
+    /// The particles of a view the GPU bins written in its first pass: declaring only culls and
+    /// counts them (DrawList::gatherPending), and the pass writes them from the pools straight
+    /// into its mapped storage buffer (fillInstances) instead of copying the list declaring wrote.
+    /// On unless CUBEFX_TILED_GATHER_IN_PASS=0 or setGatherInPass(false), for A/B runs on a GPU.
+    static bool gatherInPass();
+    static void setGatherInPass(bool on);
+    static void resetGatherInPass();           ///< back to the environment's, or on
+    static const char* gatherInPassProblem();  ///< what was wrong with CUBEFX_TILED_GATHER_IN_PASS, or null
+    /// Views whose particles their first pass wrote so, since the process started.
     static uint64_t gatheredViews();
     /// Where TiledStageTimes' reports go (the renderer's log); none: not reported.
     void setStageLog(std::function<void(const std::string&)> log) { stageLog_ = std::move(log); }

@@ -36,17 +36,24 @@ static_assert(TiledPath::kSoftwareCpuListEntries == 131072, "the message above n
 const int64_t gCpuListLimitFromEnvironment = cpuListLimitFromEnvironment();
 std::atomic<int64_t> gCpuListLimit{gCpuListLimitFromEnvironment};  // -1: the defaults
 
-// The A/B switches (EnvSwitch.h): deferred bins and the GPU's bins.
+// The A/B switches (EnvSwitch.h): deferred bins, the GPU's bins, the gather in the pass.
 EnvSwitch gDeferBins("CUBEFX_TILED_DEFER_BINS",
                      "fx: CUBEFX_TILED_DEFER_BINS is neither 0 nor 1; the tiled path keeps its default (the bins of a "
                      "view the GPU orders are worked out in its pass)");
 EnvSwitch gGpuBins("CUBEFX_TILED_GPU_BINS",
                    "fx: CUBEFX_TILED_GPU_BINS is neither 0 nor 1; the tiled path keeps its default (the GPU bins the "
                    "views whose particles it orders)");
+EnvSwitch gGatherInPass("CUBEFX_TILED_GATHER_IN_PASS",
+                        "fx: CUBEFX_TILED_GATHER_IN_PASS is neither 0 nor 1; the tiled path keeps its default (the "
+                        "particles of a view the GPU bins are written in its first pass)");
 
 }  // namespace
 
 bool TiledPath::gpuBins() { return gGpuBins.on(); }
+bool TiledPath::gatherInPass() { return gGatherInPass.on(); }
+void TiledPath::setGatherInPass(bool on) { gGatherInPass.set(on); }
+void TiledPath::resetGatherInPass() { gGatherInPass.reset(); }
+const char* TiledPath::gatherInPassProblem() { return gGatherInPass.problem(); }
 void TiledPath::setGpuBins(bool on) { gGpuBins.set(on); }
 void TiledPath::resetGpuBins() { gGpuBins.reset(); }
 const char* TiledPath::gpuBinsProblem() { return gGpuBins.problem(); }

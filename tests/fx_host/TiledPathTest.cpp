@@ -149,10 +149,13 @@ TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
             fx::TileSort::resetOrderLimit();
             fx::TiledPath::resetDeferBins();
             fx::TiledPath::resetGpuBins();
+            fx::TiledPath::resetGatherInPass();
         }
     } limitBack;
     fx::TiledPath::resetDeferBins();
     fx::TiledPath::resetGpuBins();
+    fx::TiledPath::resetGatherInPass();
+    ASSERT_TRUE(fx::TiledPath::gatherInPass()) << "on by default (CUBEFX_TILED_GATHER_IN_PASS unset)";
     ASSERT_TRUE(fx::TiledPath::deferBins()) << "on by default (CUBEFX_TILED_DEFER_BINS unset)";
     ASSERT_TRUE(fx::TiledPath::gpuBins()) << "on by default (CUBEFX_TILED_GPU_BINS unset)";
     direct.desc.particle.colorRamp = {fx::ColorStop{0.0f, glm::vec4(1.0f, 0.1f, 0.1f, 0.9f)},
@@ -232,24 +235,30 @@ TEST_F(TiledPathTest, ListsWrittenOnTheCpuOrSortedOnTheGpuGiveTheSameFrame) {
         direct.renderer.settleLists();
         EXPECT_EQ(direct.renderer.listsSettled(), settled + 1);
         direct.set(puffs);
+        // CUBEFX_TILED_GATHER_IN_PASS=0: the list is written while declared; the same frame.
+        fx::TiledPath::setGatherInPass(false);
+        const Image listCopied = draw(direct, graph, scene, view, true);
+        fx::TiledPath::resetGatherInPass();
+        EXPECT_EQ(fx::TiledPath::gatheredViews(), gathered + 3);
+        EXPECT_EQ(maxAbsDiff(gpuOrdered, listCopied), 0);
         // Binned in its pass on the host's threads instead (CUBEFX_TILED_GPU_BINS=0): the same frame.
         fx::TiledPath::setGpuBins(false);
         const Image binnedOnCpu = draw(direct, graph, scene, view, true);
         fx::TiledPath::resetGpuBins();
         EXPECT_TRUE(graph.ran(fx::TiledPath::kSetupPass));
-        EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 5);
-        EXPECT_EQ(fx::TiledPath::gpuBinnedViews(), gpuBinned + 4) << "the host's threads binned it";
+        EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 6);
+        EXPECT_EQ(fx::TiledPath::gpuBinnedViews(), gpuBinned + 5) << "the host's threads binned it";
         EXPECT_EQ(fx::TiledPath::gatheredViews(), gathered + 3) << "and the list was written while declared";
         EXPECT_EQ(maxAbsDiff(gpuOrdered, binnedOnCpu), 0);
         // The same view binned while it is declared: the same frame.
         fx::TiledPath::setDeferBins(false);
         const Image binnedEarly = draw(direct, graph, scene, view, true);
         fx::TiledPath::resetDeferBins();
-        EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 5);
-        EXPECT_EQ(fx::TiledPath::gpuBinnedViews(), gpuBinned + 4);
+        EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + 6);
+        EXPECT_EQ(fx::TiledPath::gpuBinnedViews(), gpuBinned + 5);
         EXPECT_EQ(fx::TiledPath::gatheredViews(), gathered + 3);
         EXPECT_FALSE(graph.ran(fx::TiledPath::kSetupPass)) << "one pass for a view binned while declared";
-        EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered + 6);
+        EXPECT_EQ(fx::TileSort::gpuOrderedViews(), ordered + 7);
         fx::TiledPath::resetCpuListLimit();
         fx::TileSort::resetOrderLimit();
         EXPECT_EQ(maxAbsDiff(byDefault, sorted), 0);

@@ -246,15 +246,19 @@ TEST(Fxbench, LitTiledModesDrawTheLitPictureInTheTiledPass) {
 // and ignored. Binned in its pass, the GPU bins it (TiledPath::gpuBins: its bound and list
 // dispatches show in the invocations) unless CUBEFX_TILED_GPU_BINS=0, whose dispatches are then
 // those of the view binned while declared; the same picture, and a bad value reported and ignored.
+// So too CUBEFX_TILED_GATHER_IN_PASS=0 (TiledPath::gatherInPass: such a view's particles written
+// while declared, not in its first pass): the same picture and dispatches.
 TEST(Fxbench, TiledListsFromTheCpuOrTheGpuSortGiveTheSamePicture) {
     std::map<std::string, std::string> png;
     std::map<std::string, double> shaded;
     const std::string gpuOrder = "CUBEFX_TILED_CPU_LISTS=0 CUBEFX_TILED_GPU_ORDER=0 ", badOrder = "CUBEFX_TILED_GPU_ORDER=1e5 ";
     const std::string binnedEarly = gpuOrder + "CUBEFX_TILED_DEFER_BINS=0 ", badDefer = gpuOrder + "CUBEFX_TILED_DEFER_BINS=yes ";
     const std::string cpuBinned = gpuOrder + "CUBEFX_TILED_GPU_BINS=0 ", badGpuBins = gpuOrder + "CUBEFX_TILED_GPU_BINS=2 ";
+    const std::string listCopied = gpuOrder + "CUBEFX_TILED_GATHER_IN_PASS=0 ",
+                      badGather = gpuOrder + "CUBEFX_TILED_GATHER_IN_PASS=on ";
     for (const std::string& env : {std::string(), std::string("CUBEFX_TILED_CPU_LISTS=0 "),
                                   std::string("CUBEFX_TILED_CPU_LISTS=12x "), gpuOrder, badOrder, binnedEarly, badDefer,
-                                  cpuBinned, badGpuBins}) {
+                                  cpuBinned, badGpuBins, listCopied, badGather}) {
         SCOPED_TRACE(env);
         const std::string json = tempPath("lists.json"), images = tempPath("lists_images");
         const RunOutput r = cubetest::runCommand(env + std::string(CUBE_TEST_BIN_DIR) +
@@ -271,11 +275,14 @@ TEST(Fxbench, TiledListsFromTheCpuOrTheGpuSortGiveTheSamePicture) {
             << r.output;
         EXPECT_EQ(r.output.find("CUBEFX_TILED_GPU_BINS is neither 0 nor 1") != std::string::npos, env == badGpuBins)
             << r.output;
+        EXPECT_EQ(r.output.find("CUBEFX_TILED_GATHER_IN_PASS is neither 0 nor 1") != std::string::npos, env == badGather)
+            << r.output;
         const YAML::Node run = YAML::Load(readFile(json));
         const YAML::Node m = modeNode(run, "soft+tiled");
         ASSERT_TRUE(m["passes_shaded"]["chase.particles_tiled"]) << "the context counts compute invocations";
         // A view binned in its pass has two (TiledPath::kSetupPass first): their invocations together.
-        const bool deferred = env == gpuOrder || env == badDefer || env == cpuBinned || env == badGpuBins;
+        const bool deferred = env == gpuOrder || env == badDefer || env == cpuBinned || env == badGpuBins ||
+                              env == listCopied || env == badGather;
         EXPECT_EQ(bool(m["passes_shaded"]["chase.particles_tiled_setup"]), deferred);
         shaded[env] = 0.0;
         for (const char* pass : {"chase.particles_tiled", "chase.particles_tiled_setup"}) {
@@ -301,9 +308,13 @@ TEST(Fxbench, TiledListsFromTheCpuOrTheGpuSortGiveTheSamePicture) {
     EXPECT_GT(shaded[gpuOrder], shaded[sorted] + 8 * 1024.0) << "the order's passes did not run";
     EXPECT_EQ(png[byDefault], png[badOrder]);
     EXPECT_EQ(shaded[badOrder], shaded[byDefault]);
-    for (const std::string& env : {binnedEarly, badDefer, cpuBinned, badGpuBins}) EXPECT_EQ(png[gpuOrder], png[env]) << env;
+    for (const std::string& env : {binnedEarly, badDefer, cpuBinned, badGpuBins, listCopied, badGather}) {
+        EXPECT_EQ(png[gpuOrder], png[env]) << env;
+    }
     EXPECT_EQ(shaded[gpuOrder], shaded[badDefer]);
     EXPECT_EQ(shaded[gpuOrder], shaded[badGpuBins]);
+    EXPECT_EQ(shaded[gpuOrder], shaded[listCopied]) << "where the particles are written changes no dispatch";
+    EXPECT_EQ(shaded[gpuOrder], shaded[badGather]);
     // Binned on the host's threads, in the pass or while declared: the same dispatches; the GPU's
     // bins add a bound per particle and one list group of 1,024.
     EXPECT_EQ(shaded[cpuBinned], shaded[binnedEarly]);
