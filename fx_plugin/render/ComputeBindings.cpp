@@ -1,5 +1,6 @@
 #include "ComputeBindings.h"
 
+#include "DrawList.h"
 #include "InstanceStream.h"
 #include "TileSort.h"
 #include "render/PrivateGl.h"
@@ -46,6 +47,25 @@ void fillStorage(uint32_t* buffer, size_t* capacity, const void* data, size_t by
     if (bytes > 0 && !copyMappedInPieces(GL_SHADER_STORAGE_BUFFER, data, bytes, jobs)) {
         glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(bytes), data);
     }
+}
+
+bool fillInstances(uint32_t* buffer, size_t* capacity, DrawList& list, const Jobs& jobs) {
+    const size_t bytes = size_t(list.particleCount()) * sizeof(ParticleInstance);
+    if (list.gatherPending()) {
+        TileSort::ensureBuffer(buffer, capacity, bytes);
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, *buffer);
+        void* mapped = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(bytes),
+                                        GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
+        if (mapped) {
+            list.gatherInto(static_cast<ParticleInstance*>(mapped), jobs);
+            if (glUnmapBuffer(GL_SHADER_STORAGE_BUFFER) == GL_TRUE) return true;
+        } else {
+            glGetError();  // the refusal the map raised (out of memory): taken back, as copyMappedInPieces does
+        }
+        list.settle(jobs);
+    }
+    fillStorage(buffer, capacity, list.instances.data(), bytes, jobs);
+    return false;
 }
 
 }  // namespace fx

@@ -35,4 +35,11 @@ private:
 /// GL_SHADER_STORAGE_BUFFER.
 void fillStorage(uint32_t* buffer, size_t* capacity, const void* data, size_t bytes, const Jobs& jobs);
 
+struct DrawList;
+/// Fills `*buffer` as fillStorage does with the list's instances. A pending gather
+/// (DrawList::gatherPending) is written from the pools straight into the mapped store, in the
+/// pieces the cull made, on the host's threads: true. Else, or where the map fails or loses its
+/// store (the list then settled), a copy of the written list: false.
+bool fillInstances(uint32_t* buffer, size_t* capacity, DrawList& list, const Jobs& jobs);
+
 }  // namespace fx

@@ -34,31 +34,6 @@ static_assert(kAccumImage == ComputeBindingsScope::kImage, "the image unit Compu
 std::atomic<uint64_t> gCpuListViews{0}, gGpuSortedViews{0}, gDeferredBinViews{0}, gDeferredFallbacks{0},
     gGpuBinnedViews{0}, gGatheredViews{0};
 
-// The list's instances into the storage buffer `*buffer` (grown as TileSort::ensureBuffer grows
-// it): a pending gather (DrawList::gatherPending) straight into its mapped store, in the pieces
-// the cull made, on the host's threads; else, or where the map fails or loses its store, a copy
-// of the written list (fillStorage).
-void fillInstances(uint32_t* buffer, size_t* capacity, DrawList& list, const Jobs& jobs) {
-    const size_t bytes = size_t(list.particleCount()) * sizeof(ParticleInstance);
-    if (list.gatherPending()) {
-        TileSort::ensureBuffer(buffer, capacity, bytes);
-        glBindBuffer(GL_SHADER_STORAGE_BUFFER, *buffer);
-        void* mapped = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(bytes),
-                                        GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
-        if (mapped) {
-            list.gatherInto(static_cast<ParticleInstance*>(mapped), jobs);
-            if (glUnmapBuffer(GL_SHADER_STORAGE_BUFFER) == GL_TRUE) {
-                gGatheredViews.fetch_add(1, std::memory_order_relaxed);
-                return;
-            }
-        } else {
-            glGetError();  // the refusal the map raised (out of memory): taken back, as copyMappedInPieces does
-        }
-        list.settle(jobs);
-    }
-    fillStorage(buffer, capacity, list.instances.data(), bytes, jobs);
-}
-
 // render.near_fade as the shaders' line in depth (ParticleDraw's nearFadeMap).
 glm::vec2 nearFadeMap(float fade, float nearPlane) {
     return fade > 0.0f ? glm::vec2(1.0f / fade, -nearPlane / fade) : glm::vec2(0.0f, 1.0f);
@@ -243,7 +218,9 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
     const int count = v.list.particleCount();
     if (!setUp) {
         if (deferred) glFlush();  // the scene's passes to the GPU while the CPU writes (and bins, in the next pass)
-        fillInstances(&instanceBuffer_, &instanceCapacity_, v.list, draw_.jobs());
+        if (fillInstances(&instanceBuffer_, &instanceCapacity_, v.list, draw_.jobs())) {
+            gGatheredViews.fetch_add(1, std::memory_order_relaxed);
+        }
     }
     TileSort::DepthOrder order;
     if (v.list.orderPending) {
