@@ -8,7 +8,9 @@
 //  - order: back to front (sim/ParticleSorter, over the particles left after culling) for
 //    reactions that need it (ReactionRuntime::needsSorting: sorted alpha blending), pool order
 //    otherwise (additive); with deferOrder the back-to-front sort is left out (DrawList::orderPending)
-//    for the tiled path to do on the GPU (TileSort.h), or order() to do later;
+//    for the tiled path to do on the GPU (TileSort.h), or order() to do later, and with deferGather
+//    the writing of the particles too (DrawList::gatherPending), for the tiled path's first pass to
+//    do straight into its storage buffer, or settle() to do later;
 //    reactions are drawn in reaction order (no sorting across reactions);
 //  - technique: RenderOptions::techniqueOverride, else the reaction's render.technique;
 //    batches whose technique is not in the caller's usable mask are left out (each renderer
