@@ -258,11 +258,13 @@ TEST_F(ImmediateRendererTest, TiledViewsTheGpuOrdersAreBinnedByTheGpu) {
         for (int gpu = 1; gpu >= 0; --gpu) {
             fx::TiledPath::setGpuBins(gpu == 1);
             const uint64_t binned = fx::TiledPath::gpuBinnedViews(), deferred = fx::TiledPath::deferredBinViews();
+            const uint64_t gathered = fx::TiledPath::gatheredViews();
             ASSERT_EQ(drawImmediate(graph.colorFramebuffer(), immediateView(Source::LinearR32F, linear)),
                       fx::ErrorCode::None);
             images[gpu] = graph.readColor();
             EXPECT_EQ(fx::TiledPath::gpuBinnedViews(), binned + uint64_t(gpu)) << "gpu " << gpu;
             EXPECT_EQ(fx::TiledPath::deferredBinViews(), deferred + uint64_t(gpu)) << "binned in its pass only by the GPU";
+            EXPECT_EQ(fx::TiledPath::gatheredViews(), gathered + uint64_t(gpu)) << "its particles written by its pass";
             ASSERT_EQ(drawImmediate(host24.fbo, immediateView(Source::BoundFramebuffer)), fx::ErrorCode::None);
             copied[gpu] = readFramebuffer(host24.fbo, kW, kH);
             whole[gpu] = immediate->lastDepthRegion().whole;
