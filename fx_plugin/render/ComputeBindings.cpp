@@ -54,13 +54,9 @@ bool fillInstances(uint32_t* buffer, size_t* capacity, DrawList& list, const Job
     if (list.gatherPending()) {
         TileSort::ensureBuffer(buffer, capacity, bytes);
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, *buffer);
-        void* mapped = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(bytes),
-                                        GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
-        if (mapped) {
-            list.gatherInto(static_cast<ParticleInstance*>(mapped), jobs);
-            if (glUnmapBuffer(GL_SHADER_STORAGE_BUFFER) == GL_TRUE) return true;
-        } else {
-            glGetError();  // the refusal the map raised (out of memory): taken back, as copyMappedInPieces does
+        if (writeMapped(GL_SHADER_STORAGE_BUFFER, bytes,
+                        [&](void* mapped) { list.gatherInto(static_cast<ParticleInstance*>(mapped), jobs); })) {
+            return true;
         }
         list.settle(jobs);
     }

@@ -12,21 +12,28 @@ constexpr GLuint kCornerAttrib = 0, kPosSizeAttrib = 1, kLifeRotFadeFrameAttrib 
 
 }  // namespace
 
-bool copyMappedInPieces(uint32_t target, const void* data, size_t bytes, const Jobs& jobs) {
-    const Pieces pieces = splitWork(bytes, 512 * 1024, 16);
-    if (!jobs.parallel() || pieces.count <= 1) return false;
+bool writeMapped(uint32_t target, size_t bytes, const std::function<void(void*)>& write) {
     void* mapped = glMapBufferRange(GLenum(target), 0, GLsizeiptr(bytes), GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
     if (!mapped) {
         glGetError();  // the refusal this call raised (out of memory): taken back, as documented
         return false;
     }
-    jobs.run(pieces, [&](uint32_t piece) {
-        const size_t first = pieces.begin(piece);
-        std::memcpy(static_cast<char*>(mapped) + first, static_cast<const char*>(data) + first, pieces.end(piece) - first);
-    });
+    write(mapped);
     // False: the store was lost while mapped (GL says it may be, on a display change); the caller
     // fills it again.
     return glUnmapBuffer(GLenum(target)) == GL_TRUE;
+}
+
+bool copyMappedInPieces(uint32_t target, const void* data, size_t bytes, const Jobs& jobs) {
+    const Pieces pieces = splitWork(bytes, 512 * 1024, 16);
+    if (!jobs.parallel() || pieces.count <= 1) return false;
+    return writeMapped(target, bytes, [&](void* mapped) {
+        jobs.run(pieces, [&](uint32_t piece) {
+            const size_t first = pieces.begin(piece);
+            std::memcpy(static_cast<char*>(mapped) + first, static_cast<const char*>(data) + first,
+                        pieces.end(piece) - first);
+        });
+    });
 }
 
 InstanceStream::~InstanceStream() {

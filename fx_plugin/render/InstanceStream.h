@@ -10,6 +10,7 @@
 // range with bindRange() (GL 3.3 has no base-instance draw).
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 
 #include "base/ParallelFor.h"
 
@@ -25,6 +26,11 @@ struct ParticleInstance {
     float frame = 0.0f;                  ///< atlas frame 0..3
 };
 static_assert(sizeof(ParticleInstance) == 32, "the vertex layout assumes 8 packed floats");
+
+/// Maps the first `bytes` of the buffer bound to `target` for writing (the old contents
+/// invalidated), hands `write` the pointer, and unmaps. False where the map fails (its GL error
+/// taken back) or the store was lost while mapped: the caller fills the buffer another way.
+bool writeMapped(uint32_t target, size_t bytes, const std::function<void(void*)>& write);
 
 /// Fills the start of the buffer bound to `target` with `bytes` of `data`, mapped (the old contents
 /// invalidated) and copied in pieces of 512 KB on the host's threads: with a job system and more
