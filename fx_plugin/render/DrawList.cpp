@@ -233,7 +233,7 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
             }
             return uint32_t(k);
         };
-        ParticleInstance* at = nullptr;  // where the batch's particles go, once written
+        ParticleInstance* at = nullptr;  // a sorted batch's place in the list, where its gather writes
         uint32_t drawnCount = 0;
         auto place = [&]() {
             for (uint32_t s = 0; s < pieces.count; ++s) {
@@ -241,26 +241,7 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
                 drawnCount += pieceDrawn_[s];
             }
         };
-        if (pend) {
-            // Each piece's answers, kept with the list; the particles are written later
-            // (DrawList::settle, gatherInto) from the same pool.
-            const size_t keepAt = out->pendingKeep.size();
-            out->pendingKeep.resize(keepAt + size_t(alive));
-            uint8_t* const keep = out->pendingKeep.data() + keepAt;
-            jobs.run(pieces, [&](uint32_t piece) { pieceDrawn_[piece] = cullPiece(piece, keep, nullptr, nullptr); });
-            place();
-            if (drawnCount > 0) {
-                DrawList::PendingBatch p;
-                p.pool = &pool;
-                p.alive = uint32_t(alive);
-                p.first = uint32_t(listed);
-                p.keepAt = uint32_t(keepAt);
-                p.pieceAt = uint32_t(out->pendingPieceFirst.size());
-                p.grouped = grouped;
-                out->pendingPieceFirst.insert(out->pendingPieceFirst.end(), pieceFirst_.begin(), pieceFirst_.end());
-                out->pending.push_back(p);
-            }
-        } else if (sort) {
+        if (sort) {
             // Each piece's visible particles at its pool offset in culled_, with their depths.
             jobs.run(pieces, [&](uint32_t piece) {
                 const size_t from = pieces.begin(piece);
@@ -269,7 +250,7 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
             place();
             out->instances.resize(size_t(listed) + drawnCount);
             at = out->instances.data() + listed;
-        } else if (pieces.count <= 1) {
+        } else if (pieces.count <= 1 && !pend) {
             // One piece: straight into the list, sized for the whole pool and cut to what is
             // visible (a NoInitVector: neither writes the elements).
             out->instances.resize(size_t(listed) + size_t(alive));
@@ -277,18 +258,43 @@ void DrawListBuilder::build(const ViewInfo& view, const ParticleBatch* batches, 
             place();
             out->instances.resize(size_t(listed) + drawnCount);
         } else {
-            // Several: each piece's answers first (keep_), then, with every piece's place in the
-            // list known, each writes its visible particles there: no copy through culled_.
-            if (keep_.size() < capacity) keep_.resize(capacity);
-            jobs.run(pieces, [&](uint32_t piece) { pieceDrawn_[piece] = cullPiece(piece, keep_.data(), nullptr, nullptr); });
+            // Several pieces: each piece's answers first, then, with every piece's place in the
+            // list known, each writes its visible particles there: no copy through culled_. With
+            // deferGather the answers are kept with the list, and the writing is left to whoever
+            // takes it (DrawList::settle, gatherInto), from the same pool.
+            size_t keepAt = 0;
+            uint8_t* keep = nullptr;
+            if (pend) {
+                keepAt = out->pendingKeep.size();
+                out->pendingKeep.resize(keepAt + size_t(alive));
+                keep = out->pendingKeep.data() + keepAt;
+            } else {
+                if (keep_.size() < capacity) keep_.resize(capacity);
+                keep = keep_.data();
+            }
+            jobs.run(pieces, [&](uint32_t piece) { pieceDrawn_[piece] = cullPiece(piece, keep, nullptr, nullptr); });
             place();
-            out->instances.resize(size_t(listed) + drawnCount);
-            ParticleInstance* const to = out->instances.data() + listed;
-            jobs.run(pieces, [&](uint32_t piece) {
-                if (pieceDrawn_[piece] > 0) {
-                    gatherKept(streams, pieces.begin(piece), pieces.end(piece), grouped, keep_.data(), to + pieceFirst_[piece]);
+            if (pend) {
+                if (drawnCount > 0) {
+                    DrawList::PendingBatch p;
+                    p.pool = &pool;
+                    p.alive = uint32_t(alive);
+                    p.first = uint32_t(listed);
+                    p.keepAt = uint32_t(keepAt);
+                    p.pieceAt = uint32_t(out->pendingPieceFirst.size());
+                    p.grouped = grouped;
+                    out->pendingPieceFirst.insert(out->pendingPieceFirst.end(), pieceFirst_.begin(), pieceFirst_.end());
+                    out->pending.push_back(p);
                 }
-            });
+            } else {
+                out->instances.resize(size_t(listed) + drawnCount);
+                ParticleInstance* const to = out->instances.data() + listed;
+                jobs.run(pieces, [&](uint32_t piece) {
+                    if (pieceDrawn_[piece] > 0) {
+                        gatherKept(streams, pieces.begin(piece), pieces.end(piece), grouped, keep, to + pieceFirst_[piece]);
+                    }
+                });
+            }
         }
         if (sort && drawnCount > 0) {
             // The depths without the gaps (and where each came from), sorted; then gathered.
