@@ -15,7 +15,8 @@
 # the tiled pass's GPU time by stage at 64,000 and 256,000 particles: parts/stages.txt;
 # quarter res's choice in its pass or
 # while declared: parts/choice_*.json; where
-# bench_draw was packed too, its bins, cull and bound on the host's threads: parts/bench_draw.json).
+# bench_draw was packed too, its bins, cull, bound and the tiled pass's gather and copy on the host's
+# threads: parts/bench_draw.json).
 # Back here: tar xzf parts.tgz -C /tmp && scripts/shader_parts.sh --table /tmp/parts
 # (With bench_draw: ../shared/gpu/pack.sh build fxbench cube_game bench_sim bench_draw.)
 set -u
@@ -46,6 +47,17 @@ block() {
     fi
     "$1"
 }
+# One fxbench run into parts/NAME.json and parts/NAME.txt under `timeout LIMIT`, then its rc and the
+# block's seconds so far into parts.log. Environment settings (VAR=value) go before the options.
+fx_part() {
+    local name=$1 limit=$2
+    shift 2
+    local vars=()
+    while [ $# -gt 0 ] && [[ $1 != -* ]]; do vars+=("$1"); shift; done
+    env ${vars[@]+"${vars[@]}"} timeout "$limit" bash .gpu/run-egl.sh fxbench --backend egl "$@" \
+        --json "$out/parts/$name.json" > "$out/parts/$name.txt" 2>&1
+    echo "$name rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+}
 shader_parts_runs() {
     s=$(date +%s)
     local limit=$(( 570 - ($(date +%s) - start) ))
@@ -59,10 +71,8 @@ tiled_sweep() {
     # tables have the tiled modes at their scenes' counts, its sweep not. 256,000: where session 24's
     # CPU binning (37 ms outside the passes) bounded it; since session 25 the GPU writes the lists.
     s=$(date +%s)
-    timeout 150 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 --sweep particles=1000,16000,64000,256000 \
-        --frames 6 --error-frames 0 --modes hard,soft,soft+tiled,spherical,spherical+tiled \
-        --json "$out/parts/tiled_sweep.json" > "$out/parts/tiled_sweep.txt" 2>&1
-    echo "tiled sweep rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+    fx_part tiled_sweep 150 --size 1920x1080 --sweep particles=1000,16000,64000,256000 \
+        --frames 6 --error-frames 0 --modes hard,soft,soft+tiled,spherical,spherical+tiled
 }
 bins_ab() {
     # Where a view the GPU orders is binned (sessions 32-35): while declared on the host's threads
@@ -83,10 +93,8 @@ bins_ab() {
           list) env="CUBEFX_TILED_GATHER_IN_PASS=0" ;;
           gpu) env="CUBEFX_TILED_GPU_BINS=1" ;;
         esac
-        env $env timeout 90 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 \
-            --sweep particles=16000,64000,256000 --frames 8 --error-frames 0 --modes hard,soft+tiled \
-            --json "$out/parts/bins_${way}_${round}.json" > "$out/parts/bins_${way}_${round}.txt" 2>&1
-        echo "bins $way round $round rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+        fx_part "bins_${way}_${round}" 90 "$env" --size 1920x1080 \
+            --sweep particles=16000,64000,256000 --frames 8 --error-frames 0 --modes hard,soft+tiled
       done
     done
 }
@@ -95,10 +103,8 @@ stage_times() {
     # binned in its pass timed with GL_TIMESTAMP queries, the medians of 64 views in the log line
     # "fx: tiled stages, GPU ms": order, records, bins, wait, emit, pair sort, shade, composite.
     s=$(date +%s)
-    CUBEFX_TILED_STAGE_TIMES=1 timeout 90 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 \
-        --sweep particles=64000,256000 --frames 66 --rounds 1 --warmup 2 --error-frames 0 --modes soft+tiled \
-        > "$out/parts/stages.txt" 2>&1
-    echo "stage times rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+    fx_part stages 90 CUBEFX_TILED_STAGE_TIMES=1 --size 1920x1080 \
+        --sweep particles=64000,256000 --frames 66 --rounds 1 --warmup 2 --error-frames 0 --modes soft+tiled
     grep "tiled stages" "$out/parts/stages.txt" | tee -a "$out/parts.log"
 }
 choice_ab() {
@@ -109,10 +115,8 @@ choice_ab() {
     s=$(date +%s)
     for round in 1 2; do
       for c in 0 1; do
-        CUBEFX_QUARTER_CHOICE_IN_PASS=$c timeout 60 bash .gpu/run-egl.sh fxbench --backend egl --size 1920x1080 \
-            --sweep particles=1000,64000 --frames 20 --error-frames 0 --modes hard,soft,soft+quarter \
-            --json "$out/parts/choice_${c}_${round}.json" > "$out/parts/choice_${c}_${round}.txt" 2>&1
-        echo "quarter choice in pass $c round $round rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+        fx_part "choice_${c}_${round}" 60 "CUBEFX_QUARTER_CHOICE_IN_PASS=$c" --size 1920x1080 \
+            --sweep particles=1000,64000 --frames 20 --error-frames 0 --modes hard,soft,soft+quarter
       done
     done
 }
@@ -124,10 +128,8 @@ list_limits() {
     for lim in 0 131072 4194304; do
       for sc in "fill 1920x1080" "standard 3840x2160"; do
         set -- $sc
-        CUBEFX_TILED_CPU_LISTS=$lim timeout 60 bash .gpu/run-egl.sh fxbench --backend egl --scenario "$1" --size "$2" \
-            --frames 10 --error-frames 0 --modes hard,soft+tiled,spherical+tiled \
-            --json "$out/parts/lists_${1}_${lim}.json" > "$out/parts/lists_${1}_${lim}.txt" 2>&1
-        echo "lists $1 $2 limit $lim rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+        fx_part "lists_${1}_${lim}" 60 "CUBEFX_TILED_CPU_LISTS=$lim" --scenario "$1" --size "$2" \
+            --frames 10 --error-frames 0 --modes hard,soft+tiled,spherical+tiled
       done
     done
 }
@@ -136,10 +138,8 @@ lit_smoke() {
     # on a GPU): the standard scene at 1080p and 4K.
     s=$(date +%s)
     for size in 1920x1080 3840x2160; do
-      timeout 60 bash .gpu/run-egl.sh fxbench --backend egl --scenario standard --size "$size" --frames 10 \
-          --error-frames 0 --modes hard,soft-lit,soft-lit+tiled,spherical-lit,spherical-lit+tiled \
-          --json "$out/parts/lit_${size}.json" > "$out/parts/lit_${size}.txt" 2>&1
-      echo "lit $size rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
+      fx_part "lit_${size}" 60 --scenario standard --size "$size" --frames 10 \
+          --error-frames 0 --modes hard,soft-lit,soft-lit+tiled,spherical-lit,spherical-lit+tiled
     done
 }
 bench_draw_rows() {
@@ -148,7 +148,7 @@ bench_draw_rows() {
     if [ -x .gpu/bin/bench_draw ]; then
       s=$(date +%s)
       timeout 120 bash .gpu/run-egl.sh bench_draw \
-          --benchmark_filter='BM_TileBins/(16000|256000)/|BM_DrawListBuildJobs/(16000|256000)/|BM_ScreenRectJobs/(16000|256000)/' \
+          --benchmark_filter='BM_TileBins/(16000|256000)/|BM_DrawListBuildJobs/(16000|256000)/|BM_ScreenRectJobs/(16000|256000)/|BM_(Gather|Copy)Jobs/(16000|256000)/' \
           --benchmark_min_time=0.1 --benchmark_out="$out/parts/bench_draw.json" --benchmark_out_format=json \
           > "$out/parts/bench_draw.txt" 2>&1
       echo "bench_draw rc=$? $(( $(date +%s) - s ))s" | tee -a "$out/parts.log"
