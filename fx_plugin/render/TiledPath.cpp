@@ -102,10 +102,10 @@ bool TiledPath::declare(FrameBuilder& frame, const std::shared_ptr<ParticleView>
     // view's (the bins are known only once the passes run).
     const bool immediate = dynamic_cast<ImmediateFrame*>(&frame) != nullptr;
     const bool deferred =
-        record->list.orderPending && fallback && deferBins() && (!immediate || (gpuBins() && sort_.binsOk()));
+        record->list.orderPending && fallback && deferBins() && (!immediate || binsOnGpu());
     // A list whose gather is pending (ParticleRenderer: where the GPU bins) waits for the first
     // pass only where that pass takes it (run(), fillInstances) and nothing before it reads it.
-    if (!(deferred && gpuBins() && sort_.binsOk())) record->list.settle(jobs);
+    if (!(deferred && binsOnGpu())) record->list.settle(jobs);
     if (!deferred) {
         TileBins::Range ranges[kMaxBatches];
         const int batchCount = batchRanges(*record, ranges);
@@ -354,7 +354,7 @@ bool TiledPath::run(PassContext& ctx, ParticleView& v, Target color, Target dept
 
     // The GPU's bins (gpuBins()), queued behind the order and the records: the next pass reads
     // back what they found.
-    if (deferred && !setUp && gpuBins() && sort_.binsOk()) {
+    if (deferred && !setUp && binsOnGpu()) {
         uint32_t spheres = 0;
         for (int b = 0; b < batchCount; ++b) spheres |= ranges[b].sphere ? 1u << b : 0u;
         const BillboardReach reach = draw_.billboardReach(v, false);

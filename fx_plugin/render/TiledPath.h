@@ -198,6 +198,8 @@ private:
              Target opacity, Stage stage);
     // The batches as binParticles takes them; returns their count.
     static int batchRanges(const ParticleView& v, TileBins::Range* ranges);
+    // A view binned in its pass is binned by the GPU: switched on (gpuBins()) and its programs built.
+    bool binsOnGpu() const { return gpuBins() && sort_.binsOk(); }
     void ensureObjects(int width, int height);
 
     ParticleDraw& draw_;
