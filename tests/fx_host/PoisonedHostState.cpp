@@ -11,15 +11,35 @@ namespace {
 
 namespace phg = poisoned_host_gl;
 
+// The poisons' own objects are made the first time a poison applies, which may be after other
+// poisons (all at once): what making them binds is put back, and the unpack buffer is not used.
 GLuint ownBuffer() {  // bound to GL_PIXEL_PACK_BUFFER by a poison: too small for any read-back
     static GLuint b = 0;
     if (!b) {
+        GLint saved = 0;
+        glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &saved);
         glGenBuffers(1, &b);
         glBindBuffer(GL_PIXEL_PACK_BUFFER, b);
         glBufferData(GL_PIXEL_PACK_BUFFER, 16, nullptr, GL_STREAM_READ);
-        glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+        glBindBuffer(GL_PIXEL_PACK_BUFFER, GLuint(saved));
     }
     return b;
+}
+
+GLuint ownTexture() {  // 4 x 4 RGBA8, contents undefined
+    static GLuint t = 0;
+    if (!t) {
+        GLint texture = 0, unpack = 0;
+        glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
+        glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpack);
+        glGenTextures(1, &t);
+        glBindTexture(GL_TEXTURE_2D, t);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);  // null then means no data, not offset 0 of the buffer
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, GLuint(unpack));
+        glBindTexture(GL_TEXTURE_2D, GLuint(texture));
+    }
+    return t;
 }
 
 std::vector<HostPoison> buildPoisons() {
@@ -68,16 +88,7 @@ std::vector<HostPoison> buildPoisons() {
             glBindBufferRange(phg::kShaderStorageBuffer, 5, ownBuffer(), 0, 16);
             glBindBuffer(phg::kShaderStorageBuffer, ownBuffer());
         });
-        add("image unit 0", [] {
-            static GLuint t = 0;
-            if (!t) {
-                glGenTextures(1, &t);
-                glBindTexture(GL_TEXTURE_2D, t);
-                glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-                glBindTexture(GL_TEXTURE_2D, 0);
-            }
-            phg::compat().bindImageTexture(0, t, 0, GL_FALSE, 0, phg::kReadWrite, phg::kRgba8);
-        });
+        add("image unit 0", [] { phg::compat().bindImageTexture(0, ownTexture(), 0, GL_FALSE, 0, phg::kReadWrite, phg::kRgba8); });
     }
     enable("depth clamp", GL_DEPTH_CLAMP);
     if (compatProfile) {
