@@ -46,9 +46,10 @@ cat >"$work/foreign/host.cpp" <<'CPP'
 int main() { return fxApiVersion() == fx::kApiVersion ? 0 : 1; }
 CPP
 # This build only has to configure, compile and link: -O0 without debug info, the cheapest compile
-# (the standalone build below is the optimized one that renders).
+# (the standalone build below is the optimized one that renders), and as a unity build, as large
+# engines compile their own and their plugins' sources (on two cores 15 s, against 39 s file by file).
 cmake -S "$work/foreign" -B "$work/foreign/b" -DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O0" \
-      "-DCMAKE_C_FLAGS_DEBUG=-O0" >"$work/foreign-configure.log"
+      "-DCMAKE_C_FLAGS_DEBUG=-O0" -DCMAKE_UNITY_BUILD=ON >"$work/foreign-configure.log"
 cmake --build "$work/foreign/b" -j"$(nproc)" --target foreign_host >"$work/foreign-build.log"
 "$work/foreign/b/foreign_host"
 rm -rf "$work/foreign"
@@ -64,7 +65,10 @@ grep -q "fx_plugin" "$work/only/Makefile" || { echo "package_test: FAIL: no fx_p
 rm -rf "$work/only"
 
 log "standalone plugin build (cmake -S fx_plugin)"
-cmake -S "$copy/fx_plugin" -B "$work/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >"$work/configure.log"
+# A unity build too (on two cores 36 s, against 69 s file by file): the main build compiles every
+# file of the plugin on its own, which is what proves each one includes what it uses.
+cmake -S "$copy/fx_plugin" -B "$work/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_UNITY_BUILD=ON \
+      >"$work/configure.log"
 cmake --build "$work/build" -j"$(nproc)" >"$work/build.log"
 cmake --install "$work/build" --prefix "$work/prefix" >"$work/install.log"
 rm -rf "$copy" "$work/build"
