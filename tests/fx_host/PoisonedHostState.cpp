@@ -26,17 +26,31 @@ GLuint ownBuffer() {  // bound to GL_PIXEL_PACK_BUFFER by a poison: too small fo
     return b;
 }
 
+// `upload` run with GL's default unpack state, whatever earlier poisons set, which is then put
+// back: no unpack buffer (a null pointer is then no data, not offset 0 of the buffer), and
+// alignment 4, no skips, no swaps (Mesa 22's bitmap unpack with GL_UNPACK_SKIP_PIXELS 3 corrupts
+// its heap: ASan sees it).
+template <class F>
+void withDefaultUnpack(F&& upload) {
+    const GLenum unpack[] = {GL_PIXEL_UNPACK_BUFFER_BINDING, GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST,
+                             GL_UNPACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS};
+    GLint saved[7] = {};
+    for (int i = 0; i < 7; ++i) glGetIntegerv(unpack[i], &saved[i]);
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    for (int i = 1; i < 7; ++i) glPixelStorei(unpack[i], unpack[i] == GL_UNPACK_ALIGNMENT ? 4 : 0);
+    upload();
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, GLuint(saved[0]));
+    for (int i = 1; i < 7; ++i) glPixelStorei(unpack[i], saved[i]);
+}
+
 GLuint ownTexture() {  // 4 x 4 RGBA8, contents undefined
     static GLuint t = 0;
     if (!t) {
-        GLint texture = 0, unpack = 0;
+        GLint texture = 0;
         glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
-        glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpack);
         glGenTextures(1, &t);
         glBindTexture(GL_TEXTURE_2D, t);
-        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);  // null then means no data, not offset 0 of the buffer
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, GLuint(unpack));
+        withDefaultUnpack([] { glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr); });
         glBindTexture(GL_TEXTURE_2D, GLuint(texture));
     }
     return t;
@@ -151,18 +165,8 @@ std::vector<HostPoison> buildPoisons() {
     add("alpha test (GREATER 0.5)", [] { glEnable(phg::kAlphaTest); phg::compat().alphaFunc(GL_GREATER, 0.5f); }, true);
     add("alpha func / ref", [] { phg::compat().alphaFunc(GL_LESS, 0.25f); }, true);
     add("polygon stipple (empty pattern)", [] {
-        // The pattern is unpacked with GL's default unpack state, whatever earlier poisons set
-        // (Mesa 22's bitmap unpack with GL_UNPACK_SKIP_PIXELS 3 corrupts its heap: ASan sees it).
         static const GLubyte empty[128] = {};
-        const GLenum unpack[] = {GL_PIXEL_UNPACK_BUFFER_BINDING, GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST,
-                                 GL_UNPACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS};
-        GLint saved[7] = {};
-        for (int i = 0; i < 7; ++i) glGetIntegerv(unpack[i], &saved[i]);
-        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-        for (int i = 1; i < 7; ++i) glPixelStorei(unpack[i], unpack[i] == GL_UNPACK_ALIGNMENT ? 4 : 0);
-        phg::compat().polygonStipple(empty);
-        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, GLuint(saved[0]));
-        for (int i = 1; i < 7; ++i) glPixelStorei(unpack[i], saved[i]);
+        withDefaultUnpack([] { phg::compat().polygonStipple(empty); });
         glEnable(phg::kPolygonStipple);
     }, true);
     add("user clip plane 0 (clips everything)", [] {

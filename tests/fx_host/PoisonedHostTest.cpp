@@ -71,6 +71,7 @@ protected:
     PoisonedHostTest() : PluginHostTest(kW, kH) {}
     void SetUp() override {
         PluginHostTest::SetUp();
+        single_ = singlePoisons();
         resetHostState();
         createPlugin(CUBE_SOURCE_DIR "/reactions");
         prepare(nullptr);
@@ -142,7 +143,7 @@ protected:
     /// failure), and the all-at-once frame's max difference in *allAtOnce.
     std::vector<std::string> poisonedFrames(const RenderMode& m, const Image& clean, int* allAtOnce) {
         std::vector<std::string> changed;
-        for (const HostPoison* p : singlePoisons()) {
+        for (const HostPoison* p : single_) {
             const Image img = frame(&p->apply);
             const int diff = maxAbsDiff(img, clean);
             EXPECT_TRUE(problems_.empty()) << m.label << ", poisoned " << p->name << ":\n" << problems_;
@@ -157,6 +158,7 @@ protected:
         return changed;
     }
 
+    std::vector<const HostPoison*> single_;  // singlePoisons(), once the context is made (SetUp)
     std::string problems_;
     HostStateReadback snapshot_;
     int errorsBefore_ = 0;
@@ -168,7 +170,7 @@ TEST_F(PoisonedHostTest, EveryTechniqueIgnoresEachPoisonedState) {
     for (const HostPoison& p : poisons) compat += p.compatibility;
     std::printf("[ measured ] %s context: %zu poisoned states (%zu core, %d compatibility-only), %zu of them one at a time\n",
                 osMesaCompatibilityProfile() ? "compatibility" : "core", poisons.size(), poisons.size() - size_t(compat),
-                compat, singlePoisons().size());
+                compat, single_.size());
     EXPECT_EQ(compat > 0, osMesaCompatibilityProfile()) << "the compatibility context's run checks its own poisons";
     const fx::PinnedGlStateCount rows = fx::pinnedGlStateCount();
     std::printf("[ measured ] the plugin's guard: %d rows (%d core, %d compatibility-only)\n",
@@ -186,7 +188,7 @@ TEST_F(PoisonedHostTest, EveryTechniqueIgnoresEachPoisonedState) {
         const std::vector<std::string> changed = poisonedFrames(m, clean, &allAtOnce);
         changedImage.insert(changed.begin(), changed.end());
         std::printf("[ measured ] %-40s %zu of %zu poisons changed the image; all at once: max diff %d\n", m.label,
-                    changed.size(), singlePoisons().size(), allAtOnce);
+                    changed.size(), single_.size(), allAtOnce);
     }
     std::string names;
     for (const std::string& n : changedImage) names += "  " + n + "\n";
@@ -249,7 +251,7 @@ TEST_F(PoisonedHostTest, TheImmediatePathIgnoresEachPoisonedState) {
         ASSERT_TRUE(problems_.empty()) << m.label << " (clean host):\n" << problems_;
         ASSERT_GT(maxAbsDiff(clean, render(false)), 0) << m.label << ": nothing drawn, the test would prove nothing";
         int changed = 0;
-        for (const HostPoison* p : singlePoisons()) {
+        for (const HostPoison* p : single_) {
             const Image img = immediateFrame(&p->apply);
             EXPECT_TRUE(problems_.empty()) << m.label << ", poisoned " << p->name << ":\n" << problems_;
             EXPECT_EQ(maxAbsDiff(img, clean), 0) << m.label << ": poisoned " << p->name << " reached the image";
@@ -260,7 +262,7 @@ TEST_F(PoisonedHostTest, TheImmediatePathIgnoresEachPoisonedState) {
         EXPECT_TRUE(problems_.empty()) << m.label << ", all poisons at once:\n" << problems_;
         EXPECT_EQ(maxAbsDiff(img, clean), 0) << m.label << ": all poisons at once reached the image";
         std::printf("[ measured ] renderView %-28s %d of %zu poisons changed the image; all at once: max diff %d\n",
-                    m.label, changed, singlePoisons().size(), maxAbsDiff(img, clean));
+                    m.label, changed, single_.size(), maxAbsDiff(img, clean));
     }
 }
 
@@ -271,7 +273,7 @@ TEST_F(PoisonedHostTest, PrepareGlUnderEachPoisonUploadsTheSameData) {
     setMode(soft);
     const Image clean = frame(nullptr);
     ASSERT_TRUE(problems_.empty()) << problems_;
-    std::vector<const HostPoison*> list = singlePoisons();
+    std::vector<const HostPoison*> list = single_;
     const HostPoison all{"all at once", false, allPoisons()};
     list.push_back(&all);
     int changed = 0;
