@@ -9,7 +9,9 @@ cd "$(dirname "$0")/.."
 CUBE_WITH_CLANG=1 bash scripts/deps.sh
 seconds="${FUZZ_SECONDS:-60}"
 build=build-fuzz
-CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCUBE_FUZZ=ON >/dev/null
+# Line tables only (-g1: a report's file:line) and a unity build: on two cores 175 s -> 80 s.
+CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCUBE_FUZZ=ON -DCMAKE_UNITY_BUILD=ON \
+      "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" >/dev/null
 cmake --build "$build" -j"$(nproc)" --target fuzz_reactions fuzz_scene fuzz_legacy fuzz_capi
 
 work=$(mktemp -d)
