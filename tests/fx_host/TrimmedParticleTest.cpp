@@ -73,9 +73,12 @@ TEST(TrimmedShapes, EverySampledTexelWithAlphaLiesInsideItsPolygonAtEveryRotatio
             const int topLevel = std::min(b, atlas.maxLevel);
             for (float angle : {0.0f, 0.4f, 1.3f, 2.9f, -2.2f}) {
                 // The shader's transform: polygon corners turned by -angle into sprite space; a
-                // texture point p sits at rotate2(p, -angle) in the same space.
-                std::array<glm::vec2, fx::TrimmedShapes::kMaxVertices> turned{};
+                // texture point p sits at rotate2(p, -angle) in the same space. Each edge's start
+                // and direction once per angle (the same floats as worked out per point).
+                std::array<glm::vec2, fx::TrimmedShapes::kMaxVertices> turned{}, edge{};
                 for (int i = 0; i < fx::TrimmedShapes::kMaxVertices; ++i) turned[size_t(i)] = rotate2(poly[size_t(i)], -angle);
+                for (int v = 0; v < n; ++v) edge[size_t(v)] = glm::normalize(turned[size_t((v + 1) % n)] - turned[size_t(v)]);
+                const float sinA = std::sin(-angle), cosA = std::cos(-angle);
                 for (int j = 0; j <= steps; ++j) {
                     for (int i = 0; i <= steps; ++i) {
                         const glm::vec2 p(-1.0f + 2.0f * float(i) / float(steps), -1.0f + 2.0f * float(j) / float(steps));
@@ -85,11 +88,10 @@ TEST(TrimmedShapes, EverySampledTexelWithAlphaLiesInsideItsPolygonAtEveryRotatio
                         if (!any) continue;
                         ++supported;
                         // 1e-5 of the quad's half size: float rounding of the turned corners.
-                        const glm::vec2 q = rotate2(p, -angle);
+                        const glm::vec2 q(cosA * p.x - sinA * p.y, sinA * p.x + cosA * p.y);  // rotate2(p, -angle)
                         bool inside = true;
                         for (int v = 0; v < n && inside; ++v) {
-                            const glm::vec2 a = turned[size_t(v)], c = turned[size_t((v + 1) % n)];
-                            const glm::vec2 e = glm::normalize(c - a);
+                            const glm::vec2 a = turned[size_t(v)], e = edge[size_t(v)];
                             inside = e.x * (q.y - a.y) - e.y * (q.x - a.x) >= -1e-5f;
                         }
                         ASSERT_TRUE(inside) << "frame " << f << " bucket " << b << " angle " << angle
