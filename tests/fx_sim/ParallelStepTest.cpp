@@ -2,7 +2,9 @@
 // pieces and its dead retired afterwards, and the pool ends the same bit for bit, slot for slot, as
 // the one-thread step leaves it, through deaths, the turbulent midpoint step and any way the host
 // runs the pieces (JobHosts.h).
+#include <algorithm>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -34,12 +36,6 @@ fx::ReactionDesc burstDesc(bool turbulent) {
     return d;
 }
 
-void stepBoth(fx::ReactionRuntime& serial, fx::ReactionRuntime& pieces, const fx::Jobs& jobs, float amount) {
-    const glm::vec3 point(0.0f, 0.5f, 0.0f), wind(0.5f, 0.0f, 0.2f);
-    serial.step(kDt, nullptr, 0, amount, point, wind);
-    pieces.step(kDt, nullptr, 0, amount, point, wind, jobs);
-}
-
 // Every stream of every live slot, and the frames, compared byte for byte.
 void expectSamePool(const fx::ParticlePool& a, const fx::ParticlePool& b, int step) {
     ASSERT_EQ(a.alive(), b.alive()) << "step " << step;
@@ -52,22 +48,36 @@ void expectSamePool(const fx::ParticlePool& a, const fx::ParticlePool& b, int st
 }
 
 TEST(ParallelStep, PiecesLeaveThePoolAsOneThreadDoesThroughDeaths) {
+    // One pool stepped on the calling thread, and beside it one per way a host runs the pieces,
+    // each compared with it after every step.
+    const glm::vec3 point(0.0f, 0.5f, 0.0f), wind(0.5f, 0.0f, 0.2f);
     for (bool turbulent : {false, true}) {
+        fx::ReactionRuntime serial(burstDesc(turbulent));
+        std::vector<std::unique_ptr<JobHost>> hosts;
+        std::vector<std::unique_ptr<fx::ReactionRuntime>> pieces;
         for (HowRun how : kRuns) {
-            JobHost host(how);
-            fx::ReactionRuntime serial(burstDesc(turbulent)), pieces(burstDesc(turbulent));
-            stepBoth(serial, pieces, fx::Jobs(&host), 1.0f);  // the burst
-            ASSERT_GT(serial.pool().alive(), 32768);  // at least two pieces
-            const int callsAfterBurst = host.calls;
-            int minAlive = serial.pool().alive();
-            for (int step = 1; step < 20; ++step) {
-                stepBoth(serial, pieces, fx::Jobs(&host), 0.0f);
-                expectSamePool(serial.pool(), pieces.pool(), step);
-                minAlive = std::min(minAlive, serial.pool().alive());
-            }
-            EXPECT_GT(host.calls, callsAfterBurst) << "the steps went through the host's job system";
-            EXPECT_LT(minAlive, 10000) << "most of the burst died on the way: the retiring was exercised";
+            hosts.push_back(std::make_unique<JobHost>(how));
+            pieces.push_back(std::make_unique<fx::ReactionRuntime>(burstDesc(turbulent)));
         }
+        std::vector<int> callsAfterBurst;
+        int minAlive = 0;
+        for (int step = 0; step < 20; ++step) {
+            const float amount = step == 0 ? 1.0f : 0.0f;  // the burst, then only deaths
+            serial.step(kDt, nullptr, 0, amount, point, wind);
+            for (size_t k = 0; k < pieces.size(); ++k) {
+                pieces[k]->step(kDt, nullptr, 0, amount, point, wind, fx::Jobs(hosts[k].get()));
+                expectSamePool(serial.pool(), pieces[k]->pool(), step);
+                if (step == 0) callsAfterBurst.push_back(hosts[k]->calls);
+            }
+            if (step == 0) {
+                ASSERT_GT(serial.pool().alive(), 32768);  // at least two pieces
+            }
+            minAlive = step == 0 ? serial.pool().alive() : std::min(minAlive, serial.pool().alive());
+        }
+        for (size_t k = 0; k < pieces.size(); ++k) {
+            EXPECT_GT(hosts[k]->calls, callsAfterBurst[k]) << "way " << k << ": the steps went through the host's job system";
+        }
+        EXPECT_LT(minAlive, 10000) << "most of the burst died on the way: the retiring was exercised";
     }
 }
 
