@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The whole test suite built with AddressSanitizer + UndefinedBehaviorSanitizer (gcc), run
 # through ctest (the soak is left to the normal build: 20,000 frames under ASan adds nothing the
-# shorter GL tests don't already cover). Mesa's own allocations (llvmpipe's JIT and driver
+# shorter GL tests don't already cover; so are the package tests, which build the plugin their
+# own way, and the measurement scripts' tests, label "scripts": tests/CMakeLists.txt). Mesa's own allocations (llvmpipe's JIT and driver
 # caches) are outside our code: LeakSanitizer suppressions for them live in scripts/lsan.supp.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,4 +25,4 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # through one of them (tests/fx_host/PoisonedHostTest.cpp, poisonStride); the suite takes them all.
 export CUBE_FX_HOST_POISON_STRIDE=4
 cd "$build"
-ctest --output-on-failure -j"$(nproc)" -LE "soak|package" "$@"
+ctest --output-on-failure -j"$(nproc)" -LE "soak|package|scripts" "$@"
