@@ -2,8 +2,9 @@
 # The whole test suite built with AddressSanitizer + UndefinedBehaviorSanitizer (gcc), run
 # through ctest (the soak is left to the normal build: 20,000 frames under ASan adds nothing the
 # shorter GL tests don't already cover; so are the package tests, which build the plugin their
-# own way, and the measurement scripts' tests, label "scripts": tests/CMakeLists.txt). Mesa's own allocations (llvmpipe's JIT and driver
-# caches) are outside our code: LeakSanitizer suppressions for them live in scripts/lsan.supp.
+# own way, and the measurement scripts' tests, label "scripts": tests/CMakeLists.txt). Mesa's own
+# allocations (llvmpipe's JIT and driver caches) are outside our code: LeakSanitizer suppressions
+# for them live in scripts/lsan.supp.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh

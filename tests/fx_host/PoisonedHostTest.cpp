@@ -89,6 +89,7 @@ protected:
     void SetUp() override {
         PluginHostTest::SetUp();
         single_ = singlePoisons();
+        stride_ = poisonStride();
         resetHostState();
         createPlugin(CUBE_SOURCE_DIR "/reactions");
         prepare(nullptr);
@@ -157,7 +158,7 @@ protected:
     }
     /// The poisons that go alone through technique `turn` of a test's `turns` (poisonStride).
     std::vector<const HostPoison*> aloneIn(int turn, int turns) const {
-        const size_t stride = size_t(std::min(poisonStride(), std::max(turns, 1)));
+        const size_t stride = size_t(std::min(stride_, std::max(turns, 1)));
         std::vector<const HostPoison*> list;
         for (size_t i = 0; i < single_.size(); ++i) {
             if (i % stride == size_t(turn) % stride) list.push_back(single_[i]);
@@ -187,6 +188,7 @@ protected:
     }
 
     std::vector<const HostPoison*> single_;  // singlePoisons(), once the context is made (SetUp)
+    int stride_ = 1;                          // poisonStride()
     std::string problems_;
     HostStateReadback snapshot_;
     int errorsBefore_ = 0;
@@ -312,8 +314,8 @@ TEST_F(PoisonedHostTest, PrepareGlUnderEachPoisonUploadsTheSameData) {
     setMode(soft);
     const Image clean = frame(nullptr);
     ASSERT_TRUE(problems_.empty()) << problems_;
-    std::vector<const HostPoison*> list;  // one technique: under the sanitizers one poison in four
-    for (size_t i = 0; i < single_.size(); i += size_t(poisonStride())) list.push_back(single_[i]);
+    // One technique: the first turn of as many as the stride has (under the sanitizers one in four).
+    std::vector<const HostPoison*> list = aloneIn(0, stride_);
     const HostPoison all{"all at once", false, allPoisons()};
     list.push_back(&all);
     int changed = 0;

@@ -49,10 +49,9 @@ AtlasPixels embeddedAtlas() {
     return a;
 }
 
-glm::vec2 rotate2(glm::vec2 v, float angle) {
-    const float s = std::sin(angle), c = std::cos(angle);
-    return {c * v.x - s * v.y, s * v.x + c * v.y};
-}
+/// v turned by the angle whose sine and cosine are s and c.
+glm::vec2 rotate2(glm::vec2 v, float s, float c) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
+glm::vec2 rotate2(glm::vec2 v, float angle) { return rotate2(v, std::sin(angle), std::cos(angle)); }
 
 TEST(TrimmedShapes, EverySampledTexelWithAlphaLiesInsideItsPolygonAtEveryRotation) {
     const AtlasPixels atlas = embeddedAtlas();
@@ -78,7 +77,7 @@ TEST(TrimmedShapes, EverySampledTexelWithAlphaLiesInsideItsPolygonAtEveryRotatio
                 std::array<glm::vec2, fx::TrimmedShapes::kMaxVertices> turned{}, edge{};
                 for (int i = 0; i < fx::TrimmedShapes::kMaxVertices; ++i) turned[size_t(i)] = rotate2(poly[size_t(i)], -angle);
                 for (int v = 0; v < n; ++v) edge[size_t(v)] = glm::normalize(turned[size_t((v + 1) % n)] - turned[size_t(v)]);
-                const float sinA = std::sin(-angle), cosA = std::cos(-angle);
+                const float sinA = std::sin(-angle), cosA = std::cos(-angle);  // rotate2(p, -angle)
                 for (int j = 0; j <= steps; ++j) {
                     for (int i = 0; i <= steps; ++i) {
                         const glm::vec2 p(-1.0f + 2.0f * float(i) / float(steps), -1.0f + 2.0f * float(j) / float(steps));
@@ -88,7 +87,7 @@ TEST(TrimmedShapes, EverySampledTexelWithAlphaLiesInsideItsPolygonAtEveryRotatio
                         if (!any) continue;
                         ++supported;
                         // 1e-5 of the quad's half size: float rounding of the turned corners.
-                        const glm::vec2 q(cosA * p.x - sinA * p.y, sinA * p.x + cosA * p.y);  // rotate2(p, -angle)
+                        const glm::vec2 q = rotate2(p, sinA, cosA);
                         bool inside = true;
                         for (int v = 0; v < n && inside; ++v) {
                             const glm::vec2 a = turned[size_t(v)], e = edge[size_t(v)];
