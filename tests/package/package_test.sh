@@ -66,8 +66,11 @@ rm -rf "$work/only"
 
 log "standalone plugin build (cmake -S fx_plugin)"
 # A unity build too (on two cores 36 s, against 69 s file by file): the main build compiles every
-# file of the plugin on its own, which is what proves each one includes what it uses.
+# file of the plugin on its own, which is what proves each one includes what it uses. At -O1 with
+# debug info (the source-path check below needs the debug info; what is checked here is the
+# package, not the code's speed): 42 -> 33 s on two cores.
 cmake -S "$copy/fx_plugin" -B "$work/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_UNITY_BUILD=ON \
+      "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g -DNDEBUG" \
       >"$work/configure.log"
 cmake --build "$work/build" -j"$(nproc)" >"$work/build.log"
 cmake --install "$work/build" --prefix "$work/prefix" >"$work/install.log"
